@@ -1,0 +1,33 @@
+"""algkin: closed forms of planar mechanisms by elimination.
+
+>>> import algkin
+>>> result = algkin.derive("chebyshev-lambda", outputs=["B"])
+>>> [branch.label for branch in result.branches]
+['left', 'right']
+>>> result.verification.passed
+True
+"""
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "load_scene",
+    "compile_scene",
+    "derive",
+    "curve",
+    "verify",
+    "catalog_names",
+    "AlgkinError",
+]
+
+from .errors import AlgkinError
+from .scene import catalog_names, compile_scene, load_scene
+
+
+def __getattr__(name):
+    # The pipeline pulls in the elimination and verification layers: load on first use.
+    if name in ("derive", "curve", "verify"):
+        from . import pipeline
+
+        return getattr(pipeline, name)
+    raise AttributeError(f"module 'algkin' has no attribute {name!r}")

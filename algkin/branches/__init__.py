@@ -1,0 +1,7 @@
+"""Closed-form branches per assembly mode, with geometric labels and discriminants."""
+
+from .assembly import check_assembly
+from .closed_form import Branch, closed_forms, reduce_on_circles
+from .curve import circularity, top_form
+
+__all__ = ["Branch", "closed_forms", "reduce_on_circles", "check_assembly", "circularity", "top_form"]

@@ -1,0 +1,29 @@
+"""Where a scene's chosen branch can assemble: its discriminants on a grid of inputs."""
+
+import numpy as np
+import sympy
+
+from ..errors import SceneError
+from ..system import symbol
+
+__all__ = ["check_assembly", "GRID"]
+
+GRID = 721
+
+
+def check_assembly(compiled, branches):
+    """Raise SceneError naming the dyad whose discriminant is negative on the whole range."""
+    chosen = next(b for b in branches if b.selected)
+    defaults = {symbol(n): v for n, v in compiled.parameter_values.items()}
+    angles = {}
+    for name, (c, s) in compiled.system.inputs.items():
+        spec = compiled.scene.inputs[name]
+        grid = np.linspace(float(spec.to_radians(spec.lo)), float(spec.to_radians(spec.hi)), GRID)
+        angles[symbol(c)], angles[symbol(s)] = np.cos(grid), np.sin(grid)
+    args = list(angles)
+    for point, disc in chosen.discriminants.items():
+        values = sympy.lambdify(args, disc.xreplace(defaults), "numpy")(*angles.values())
+        with np.errstate(invalid="ignore"):
+            if not np.any(np.broadcast_to(values, (GRID,)) >= 0):
+                raise SceneError(compiled.scene.source, f"points.{point}",
+                                 "can never assemble: the two circles never meet over the input range")

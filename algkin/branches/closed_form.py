@@ -1,0 +1,101 @@
+"""Closed-form branches of a compiled scene, labelled geometrically, paired by construction.
+
+A dyad's point is ``X = P + a*d + sigma*h*rot90(d)`` with ``d = Q - P``,
+``a = (l1**2 - l2**2 + |d|**2) / (2|d|**2)`` and ``h = sqrt(disc) / (2|d|**2)``, where
+``disc = ((l1+l2)**2 - |d|**2) * (|d|**2 - (l1-l2)**2)``. Since
+``cross(d, X - P) = sigma*h*|d|**2``, ``sigma = +1`` is the point left of P -> Q: the
+label is the geometry, not the sign in a quadratic formula. Both coordinates come from
+the one expression, so they are paired by construction.
+
+>>> from algkin.scene import load_scene, compile_scene
+>>> branches = closed_forms(compile_scene(load_scene("chebyshev-lambda"), ["B"]))
+>>> [b.label for b in branches]
+['left', 'right']
+>>> branches[0].values["B_x"]
+c_angle/2 + s_angle*sqrt((20 - 4*c_angle)*(4*c_angle + 5))/(2*(5 - 4*c_angle)) + 1
+"""
+
+import itertools
+from dataclasses import dataclass
+
+import sympy
+
+from ..system import symbol
+
+__all__ = ["Branch", "closed_forms", "reduce_on_circles"]
+
+
+@dataclass(frozen=True)
+class Branch:
+    """One assembly mode: its labels, the closed form of every unknown, where it is real."""
+
+    label: str
+    labels: dict  # dyad point -> 'left' / 'right'
+    values: dict  # unknown -> sympy expression in inputs' c_*, s_* and parameters
+    discriminants: dict  # dyad point -> expression that must be >= 0
+    selected: bool  # the branch the scene file asks for
+
+    @property
+    def valid_when(self):
+        return " & ".join(f"({d} >= 0)" for d in self.discriminants.values()) or "True"
+
+    def to_json(self):
+        return {
+            "label": self.label,
+            "labels": dict(self.labels),
+            "values": {k: str(v) for k, v in self.values.items()},
+            "valid_when": self.valid_when,
+            "discriminants": {k: str(v) for k, v in self.discriminants.items()},
+            "selected": self.selected,
+        }
+
+
+def reduce_on_circles(expr, inputs):
+    """Normal form of a polynomial modulo ``c**2 + s**2 - 1`` for each input (s**2 -> 1 - c**2)."""
+    expr = sympy.expand(expr)
+    if not expr.is_polynomial():
+        return expr
+    for c, s in inputs:
+        expr = sympy.expand(sympy.rem(expr, s**2 + c**2 - 1, s)) if expr.has(s) else expr
+    return expr
+
+
+def _dyad_closed_form(dyad, substitution, sigma, inputs):
+    reduce = lambda e: reduce_on_circles(e.xreplace(substitution), inputs)  # noqa: E731
+    px, py = (reduce(v) for v in dyad.base_p)
+    qx, qy = (reduce(v) for v in dyad.base_q)
+    dx, dy = reduce(qx - px), reduce(qy - py)
+    dist2 = reduce(dx**2 + dy**2)
+    l1, l2 = dyad.lengths
+    along = sympy.cancel((l1**2 - l2**2 + dist2) / (2 * dist2))
+    disc = sympy.factor_terms(reduce((l1 + l2) ** 2 - dist2)) * sympy.factor_terms(reduce(dist2 - (l1 - l2) ** 2))
+    across = sigma * (sympy.sqrt(disc) / 2) / dist2
+    return (px + along * dx - across * dy, py + along * dy + across * dx), disc
+
+
+def closed_forms(compiled):
+    """Every branch (all label combinations of the dyads) of ``compiled``."""
+    inputs = [tuple(symbol(v) for v in pair) for pair in compiled.system.inputs.values()]
+    dyads = compiled.dyads
+    branches = []
+    for labels in itertools.product(("left", "right"), repeat=len(dyads)):
+        substitution, discriminants = {}, {}
+        for dyad, label in zip(dyads, labels):
+            (x, y), disc = _dyad_closed_form(dyad, substitution, 1 if label == "left" else -1, inputs)
+            substitution[symbol(dyad.unknowns[0])] = x
+            substitution[symbol(dyad.unknowns[1])] = y
+            discriminants[dyad.point] = disc
+        values = {u: substitution[symbol(u)] for d in dyads for u in d.unknowns}
+        for unknown, definition in compiled.definitions.items():
+            values[unknown] = _output_value(definition, substitution, inputs)
+        chosen = dict(zip((d.point for d in dyads), labels))
+        label = labels[0] if len(labels) == 1 else " ".join(f"{p}:{l}" for p, l in chosen.items())
+        selected = all(chosen[d.point] == d.branch for d in dyads)
+        branches.append(Branch(label or "unique", chosen, values, discriminants, selected))
+    return branches
+
+
+def _output_value(definition, substitution, inputs):
+    if definition.is_Pow and definition.exp == sympy.Rational(1, 2):
+        return sympy.sqrt(reduce_on_circles(definition.base.xreplace(substitution), inputs))
+    return sympy.expand(reduce_on_circles(definition, inputs).xreplace(substitution), deep=False)

@@ -1,0 +1,179 @@
+"""The ``algkin`` command line (SPEC §3): readable reports, or one JSON document with --json.
+
+Exit codes: 0 done, 1 a computation failed or a check did not hold, 2 bad input.
+"""
+
+import argparse
+import json
+import sys
+
+from .errors import AlgkinError, SceneError, UsageError
+
+__all__ = ["main"]
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse with a one-line error and exit code 2."""
+
+    def error(self, message):
+        raise UsageError("arguments", " ".join(sys.argv[1:]), message)
+
+
+def _common(parser, method=True):
+    parser.add_argument("scene", help="catalog name or path of a scene file")
+    parser.add_argument("--json", action="store_true", help="one JSON document on stdout")
+    if method:
+        parser.add_argument("--method", default="resultant", help="elimination method: resultant, groebner")
+        parser.add_argument("--backend", default="flint", help="polynomial backend: flint, sympy")
+        parser.add_argument("--param", action="append", default=[], help="keep this parameter symbolic")
+        parser.add_argument("--samples", type=int, default=40, help="verification samples")
+        parser.add_argument("--seed", type=int, default=0, help="verification seed")
+
+
+def build_parser():
+    parser = _Parser(prog="algkin", description="Closed forms of planar mechanisms by elimination.")
+    commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
+    listing = commands.add_parser("list", help="the catalog")
+    listing.add_argument("--json", action="store_true")
+    show = commands.add_parser("show", help="the scene and the system it compiles to")
+    _common(show, method=False)
+    show.add_argument("--outputs", nargs="+", help="outputs (names, points, dist(P, Q), P.x)")
+    show.add_argument("--param", action="append", default=[])
+    derive = commands.add_parser("derive", help="eliminants, closed-form branches, verification")
+    _common(derive)
+    derive.add_argument("--outputs", nargs="+")
+    curve = commands.add_parser("curve", help="implicit trajectory curve of a point")
+    _common(curve)
+    curve.add_argument("--point", required=True)
+    verify = commands.add_parser("verify", help="closed forms against independent numeric solutions")
+    _common(verify)
+    verify.add_argument("--outputs", nargs="+")
+    return parser
+
+
+def _emit(args, document, report):
+    if args.json:
+        json.dump(document, sys.stdout, indent=2, sort_keys=False)
+        sys.stdout.write("\n")
+    else:
+        sys.stdout.write(report(document) + "\n")
+
+
+def _cmd_list(args):
+    from .scene import catalog_names, load_scene
+
+    scenes = [load_scene(n) for n in catalog_names()]
+    document = {"scenes": [{"name": s.name, "description": s.description} for s in scenes]}
+    _emit(args, document, lambda d: "\n".join(f"{s['name']:24} {s['description']}" for s in d["scenes"]))
+    return 0
+
+
+def _cmd_show(args):
+    from .scene import compile_scene, load_scene
+
+    scene = load_scene(args.scene)
+    compiled = compile_scene(scene, args.outputs, args.param)
+    document = {
+        "scene": scene.name,
+        "description": scene.description,
+        "points": {n: type(c).__name__.lower() for n, c in scene.points.items()},
+        "outputs": {n: list(v) for n, v in compiled.outputs.items()},
+        "inputs": {n: {"cos": c, "sin": s} for n, (c, s) in compiled.system.inputs.items()},
+        "system": compiled.system.to_json(),
+    }
+    _emit(args, document, _report_show)
+    return 0
+
+
+def _report_show(d):
+    lines = [f"scene {d['scene']}: {d['description']}",
+             "points: " + ", ".join(f"{n} ({k})" for n, k in d["points"].items()),
+             "unknowns: " + ", ".join(d["system"]["unknowns"]),
+             "parameters: " + (", ".join(d["system"]["parameters"]) or "none (all exact)"),
+             "inputs: " + ", ".join(f"{n} as ({v['cos']}, {v['sin']})" for n, v in d["inputs"].items()),
+             "equations (= 0):"]
+    lines += [f"  {eq}" for eq in d["system"]["equations"]]
+    return "\n".join(lines)
+
+
+def _cmd_derive(args):
+    from .pipeline import derive
+
+    result = derive(args.scene, args.outputs, args.method, args.backend, args.param, args.samples, args.seed)
+    document = result.to_json()
+    _emit(args, document, _report_derive)
+    return 0 if result.verification.passed else 1
+
+
+def _verification_line(v):
+    verdict = "passed" if v["passed"] else "FAILED"
+    line = (f"verification {verdict}: {v['compared']} branch values on {v['samples']} samples, "
+            f"max abs error {v['max_abs_error']:.2e}")
+    return "\n".join([line] + [f"  {f}" for f in v["failures"]])
+
+
+def _timings_line(t):
+    return "timings: " + ", ".join(f"{k} {v * 1e3:.1f} ms" for k, v in t.items())
+
+
+def _report_derive(d):
+    lines = [f"scene {d['scene']}  (method {d['method']}, backend {d['backend']})", "eliminants:"]
+    for unknown, poly in d["eliminants"].items():
+        figures = d["eliminant_figures"][unknown]
+        lines.append(f"  {unknown}: {poly}")
+        lines.append(f"      degree {figures['degree']}, {figures['terms']} terms, "
+                     f"dropped {len(figures['dropped_factors'])} extraneous factor(s)")
+    lines.append("branches:")
+    for branch in d["branches"]:
+        mark = "  (scene's choice)" if branch["selected"] else ""
+        lines.append(f"  [{branch['label']}]{mark} valid when {branch['valid_when']}")
+        lines += [f"      {u} = {v}" for u, v in branch["values"].items()]
+    lines += [_verification_line(d["verification"]), _timings_line(d["timings"])]
+    return "\n".join(lines)
+
+
+def _cmd_curve(args):
+    from .pipeline import curve
+
+    result = curve(args.scene, args.point, args.method, args.backend, args.param, args.samples, args.seed)
+    document = result.to_json()
+    _emit(args, document, _report_curve)
+    return 0 if result.verification.passed else 1
+
+
+def _report_curve(d):
+    lines = [f"curve of {d['point']} in {d['scene']}  (method {d['method']}, backend {d['backend']})",
+             f"  {d['curve']} = 0",
+             f"degree {d['degree']}, circularity {d['circularity']}, "
+             f"{'irreducible' if d['irreducible'] else 'reducible'}, {d['terms']} terms",
+             f"dropped {len(d['dropped_factors'])} extraneous factor(s):"]
+    lines += [f"  {f}" for f in d["dropped_factors"]]
+    lines += [_verification_line(d["verification"]), _timings_line(d["timings"])]
+    return "\n".join(lines)
+
+
+def _cmd_verify(args):
+    from .pipeline import derive
+
+    result = derive(args.scene, args.outputs, args.method, args.backend, args.param, args.samples, args.seed)
+    document = {"scene": result.compiled.scene.name, "verification": result.verification.to_json(),
+                "branches": [b.label for b in result.branches], "timings": result.timings}
+    _emit(args, document, lambda d: f"scene {d['scene']}, branches {', '.join(d['branches'])}\n"
+                                     + _verification_line(d["verification"]))
+    return 0 if result.verification.passed else 1
+
+
+COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
+            "verify": _cmd_verify}
+
+
+def main(argv=None):
+    try:
+        args = build_parser().parse_args(argv)
+        return COMMANDS[args.command](args)
+    except (SceneError, UsageError) as err:
+        print(f"algkin: error: {err}", file=sys.stderr)
+        return 2
+    except AlgkinError as err:
+        print(f"algkin: failed: {err}", file=sys.stderr)
+        return 1

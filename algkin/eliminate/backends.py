@@ -1,0 +1,161 @@
+"""Polynomial arithmetic backends: python-flint (default, fast) and sympy (the seeds' tool).
+
+Both expose the same small set of operations on opaque polynomial objects, so every
+elimination method runs on either. Polynomials enter and leave as sympy expressions
+through ``algkin.system.convert``.
+"""
+
+import math
+
+import flint
+import sympy
+
+from ..system import symbol
+from ..system.convert import flint_context, to_flint, to_flint_integer, to_sympy
+
+__all__ = ["FlintBackend", "SympyBackend", "BACKENDS"]
+
+
+class FlintBackend:
+    """python-flint ``fmpq_mpoly``: resultants, factoring and Buchberger in C."""
+
+    name = "flint"
+
+    def __init__(self, names):
+        self.names = tuple(names)
+        self.ctx = flint_context(self.names, "lex")
+
+    def from_sympy(self, expr):
+        return to_flint(expr, self.ctx)
+
+    def to_sympy(self, poly):
+        return to_sympy(poly, self.ctx)
+
+    def variables(self, poly):
+        return {n for n, d in zip(self.names, poly.degrees()) if d > 0}
+
+    def degree(self, poly, var):
+        return int(poly.degrees()[self.names.index(var)])
+
+    def total_degree(self, poly):
+        return int(poly.total_degree())
+
+    def nterms(self, poly):
+        return len(poly)
+
+    def coefficient_bits(self, poly):
+        return max((int(c.p).bit_length() + int(c.q).bit_length() for c in poly.coeffs()), default=0)
+
+    def is_zero(self, poly):
+        return poly.is_zero()
+
+    def resultant(self, f, g, var):
+        return f.resultant(g, var)
+
+    def factors(self, poly):
+        _, factors = poly.factor()
+        return [f for f, _ in factors]
+
+    def gcd(self, f, g):
+        return f.gcd(g)
+
+    def scale(self, poly, numerator, denominator):
+        return poly * flint.fmpq(numerator, denominator)
+
+    def substitute(self, poly, var, value):
+        gens = list(self.ctx.gens())
+        gens[self.names.index(var)] = value
+        return poly.compose(*gens)
+
+    def terms(self, poly):
+        """``(exponents, numerator, denominator)`` per term, for evaluation at witnesses."""
+        return [(m, int(c.p), int(c.q)) for m, c in zip(poly.monoms(), poly.coeffs())]
+
+    def primitive(self, poly):
+        """Integer coefficients with gcd 1, positive leading coefficient (lex)."""
+        if poly.is_zero():
+            return poly
+        coeffs = poly.coeffs()
+        lcm = math.lcm(*(int(c.q) for c in coeffs))
+        gcd = math.gcd(*(int(c.p) for c in coeffs))
+        scaled = poly * flint.fmpq(lcm, gcd)
+        return -scaled if scaled.coeffs()[0] < 0 else scaled
+
+    def groebner_lex(self, polys, order):
+        """Reduced lex Gröbner basis with variables ordered as ``order`` (first is largest)."""
+        zctx = flint.fmpz_mpoly_ctx.get(tuple(order), "lex")
+        qctx = flint_context(order, "lex")
+        moved = [to_flint_integer(to_flint(self.to_sympy(p), qctx), zctx) for p in polys]
+        basis = flint.fmpz_mpoly_vec(moved, zctx).buchberger_naive().autoreduction()
+        return [self.from_sympy(to_sympy(g, zctx)) for g in basis]
+
+
+class SympyBackend:
+    """sympy ``Poly`` over QQ: the reference the seeds used, for comparison."""
+
+    name = "sympy"
+
+    def __init__(self, names):
+        self.names = tuple(names)
+        self.gens = [symbol(n) for n in self.names]
+
+    def from_sympy(self, expr):
+        expr = sympy.sympify(expr).xreplace({sympy.Symbol(n): g for n, g in zip(self.names, self.gens)})
+        return sympy.Poly(expr, *self.gens, domain=sympy.QQ)
+
+    def to_sympy(self, poly):
+        return poly.as_expr()
+
+    def variables(self, poly):
+        return {n for n, d in zip(self.names, poly.degree_list()) if d > 0}
+
+    def degree(self, poly, var):
+        return poly.degree(self.gens[self.names.index(var)])
+
+    def total_degree(self, poly):
+        return poly.total_degree()
+
+    def nterms(self, poly):
+        return len(poly.terms())
+
+    def coefficient_bits(self, poly):
+        return max((int(c.p).bit_length() + int(c.q).bit_length() for c in poly.coeffs()), default=0)
+
+    def is_zero(self, poly):
+        return poly.is_zero
+
+    def resultant(self, f, g, var):
+        gen = self.gens[self.names.index(var)]
+        result = sympy.resultant(f.as_expr(), g.as_expr(), gen)
+        return self.from_sympy(result)
+
+    def factors(self, poly):
+        _, factors = poly.factor_list()
+        return [f for f, _ in factors]
+
+    def gcd(self, f, g):
+        return f.gcd(g)
+
+    def scale(self, poly, numerator, denominator):
+        return poly * sympy.Rational(numerator, denominator)
+
+    def substitute(self, poly, var, value):
+        return self.from_sympy(poly.as_expr().xreplace({self.gens[self.names.index(var)]: value.as_expr()}))
+
+    def terms(self, poly):
+        return [(m, int(c.p), int(c.q)) for m, c in poly.terms()]
+
+    def primitive(self, poly):
+        if poly.is_zero:
+            return poly
+        _, prim = poly.clear_denoms(convert=True)[1].primitive()
+        prim = prim.to_field()
+        return -prim if prim.LC() < 0 else prim
+
+    def groebner_lex(self, polys, order):
+        gens = [symbol(n) for n in order]
+        basis = sympy.groebner([p.as_expr() for p in polys], *gens, order="lex", domain=sympy.QQ)
+        return [self.from_sympy(g) for g in basis.exprs]
+
+
+BACKENDS = {"flint": FlintBackend, "sympy": SympyBackend}

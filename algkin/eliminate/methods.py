@@ -1,0 +1,99 @@
+"""Elimination methods: chains of resultants, and lex Gröbner bases.
+
+Both run on any backend of ``backends.BACKENDS`` and share the same preparation
+(substituting variables defined linearly, dropping equations that alone hold a variable
+to eliminate) and the same factor selection at witnesses.
+"""
+
+from ..errors import ComputationError
+from .select import select_factors
+
+__all__ = ["METHODS", "prepare", "resultant_chain", "groebner_basis"]
+
+
+def _linear_definition(backend, poly, var):
+    """``value`` with ``var = value`` if ``poly`` is ``k*var + rest`` (k a number), else None."""
+    if backend.degree(poly, var) != 1:
+        return None
+    rest = backend.substitute(poly, var, backend.from_sympy(0))
+    linear = poly - rest
+    if backend.nterms(linear) != 1 or backend.total_degree(linear) != 1:
+        return None
+    (_, numerator, denominator), = backend.terms(linear)
+    return backend.scale(rest, -denominator, numerator)
+
+
+def prepare(backend, polys, eliminate, log):
+    """Substitute linearly defined variables; drop equations alone in holding a variable."""
+    polys = [p for p in polys if not backend.is_zero(p)]
+    changed = True
+    while changed:
+        changed = False
+        for var in eliminate:
+            holders = [p for p in polys if var in backend.variables(p)]
+            if len(holders) == 1:
+                polys.remove(holders[0])
+                log.append(("dropped-alone", var))
+                changed = True
+                continue
+            for poly in holders:
+                value = _linear_definition(backend, poly, var)
+                if value is not None:
+                    polys = [backend.substitute(p, var, value) for p in polys if p is not poly]
+                    log.append(("substituted", var))
+                    changed = True
+                    break
+    return polys
+
+
+def _squarefree_kept(backend, poly, witnesses, dropped):
+    kept, lost = select_factors(backend, backend.factors(poly), witnesses)
+    dropped.extend(lost)
+    if not kept:
+        raise ComputationError("every factor of an intermediate resultant was dropped")
+    product = kept[0]
+    for factor in kept[1:]:
+        product = product * factor
+    return product
+
+
+def resultant_chain(backend, polys, eliminate, witnesses, dropped, log):
+    """Eliminate one variable at a time by Sylvester resultants against a pivot."""
+    remaining = [v for v in eliminate]
+    while remaining:
+        def cost(var):
+            holders = [p for p in polys if var in backend.variables(p)]
+            return (len(holders), min((backend.degree(p, var) for p in holders), default=0))
+
+        var = min(remaining, key=cost)
+        remaining.remove(var)
+        holders = [p for p in polys if var in backend.variables(p)]
+        others = [p for p in polys if var not in backend.variables(p)]
+        if len(holders) <= 1:
+            polys = others
+            continue
+        pivot = min(holders, key=lambda p: (backend.degree(p, var), backend.nterms(p)))
+        for poly in holders:
+            if poly is pivot:
+                continue
+            result = backend.resultant(pivot, poly, var)
+            if backend.is_zero(result):
+                raise ComputationError(f"resultant in {var} vanished: the equations share a factor")
+            if not backend.variables(result):
+                raise ComputationError(f"resultant in {var} is a non-zero constant: the system is inconsistent")
+            others.append(_squarefree_kept(backend, result, witnesses, dropped))
+        log.append(("resultant", var))
+        polys = others
+    return polys
+
+
+def groebner_basis(backend, polys, eliminate, witnesses, dropped, log):
+    """The elimination ideal's generators from a lex basis, eliminated variables first."""
+    keep = [n for n in backend.names if n not in eliminate]
+    order = [n for n in eliminate] + keep
+    basis = backend.groebner_lex(polys, order)
+    log.append(("groebner", len(basis)))
+    return [g for g in basis if not (backend.variables(g) & set(eliminate))]
+
+
+METHODS = {"resultant": resultant_chain, "groebner": groebner_basis}

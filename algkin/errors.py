@@ -1,0 +1,51 @@
+"""One exception root for algkin; each subclass also derives from the builtin that fits.
+
+Messages name the argument (or file and element) and the offending value, on one line,
+so the command line can print them as they are.
+
+>>> err = SceneError("lambda.toml", "points.B.lengths", "length must be positive, got -1")
+>>> str(err)
+'lambda.toml: points.B.lengths: length must be positive, got -1'
+>>> isinstance(err, ValueError) and isinstance(err, AlgkinError)
+True
+"""
+
+__all__ = [
+    "AlgkinError",
+    "SceneError",
+    "UsageError",
+    "BudgetExceeded",
+    "ComputationError",
+]
+
+
+class AlgkinError(Exception):
+    """Root of every error algkin raises on purpose."""
+
+
+class SceneError(AlgkinError, ValueError):
+    """A scene file or scene element is malformed; names the source and the element."""
+
+    def __init__(self, source, element, message):
+        self.source = source
+        self.element = element
+        self.message = message
+        where = f"{source}: {element}" if element else str(source)
+        super().__init__(f"{where}: {message}")
+
+
+class UsageError(AlgkinError, ValueError):
+    """An argument (method name, parameter name, range...) is not acceptable."""
+
+    def __init__(self, argument, value, message):
+        self.argument = argument
+        self.value = value
+        super().__init__(f"{argument}={value!r}: {message}")
+
+
+class BudgetExceeded(AlgkinError, RuntimeError):
+    """A computation went past its time or size budget and was stopped."""
+
+
+class ComputationError(AlgkinError, ArithmeticError):
+    """The algebra could not be completed (inconsistent system, failed selection...)."""

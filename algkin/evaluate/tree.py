@@ -1,0 +1,76 @@
+"""Evaluate a sympy expression tree in any number type: balls, mpmath, floats, arrays.
+
+Only what closed forms contain is accepted: sums, products, integer powers, square
+roots, rationals and named variables. Shared subexpressions are evaluated once.
+
+>>> import sympy
+>>> x = sympy.Symbol("x")
+>>> evaluate(sympy.sqrt(x**2 + 9) - sympy.Rational(1, 2), {"x": 4}, FLOAT)
+4.5
+>>> print(evaluate(sympy.sqrt(x), {"x": ARB.number(2, 1)}, ARB))
+[1.41421356237309...]
+"""
+
+import math
+from dataclasses import dataclass
+from typing import Callable
+
+import flint
+import mpmath
+import sympy
+
+__all__ = ["evaluate", "NumberKind", "ARB", "MPMATH", "FLOAT"]
+
+
+@dataclass(frozen=True)
+class NumberKind:
+    """How to make a rational and take a square root in one number type."""
+
+    name: str
+    number: Callable  # (numerator, denominator) -> value
+    sqrt: Callable
+
+
+ARB = NumberKind("arb", lambda p, q: flint.arb(flint.fmpq(p, q)), lambda v: v.sqrt())
+MPMATH = NumberKind("mpmath", lambda p, q: mpmath.mpf(p) / q, mpmath.sqrt)
+FLOAT = NumberKind("float", lambda p, q: p / q, math.sqrt)
+
+
+def evaluate(expr, values, kind):
+    """Value of ``expr`` with variables from ``values`` (name -> number) in ``kind``."""
+    memo = {}
+
+    def walk(node):
+        if node in memo:
+            return memo[node]
+        if node.is_Symbol:
+            result = values[node.name]
+        elif node.is_Rational:
+            result = kind.number(int(node.p), int(node.q))
+        elif node.is_Add:
+            args = [walk(a) for a in node.args]
+            result = args[0]
+            for a in args[1:]:
+                result = result + a
+        elif node.is_Mul:
+            args = [walk(a) for a in node.args]
+            result = args[0]
+            for a in args[1:]:
+                result = result * a
+        elif node.is_Pow:
+            result = _power(walk(node.base), node.exp, kind)
+        else:
+            raise TypeError(f"cannot evaluate {type(node).__name__} in {node}")
+        memo[node] = result
+        return result
+
+    return walk(sympy.sympify(expr))
+
+
+def _power(base, exponent, kind):
+    if exponent.is_Integer:
+        return base ** int(exponent) if exponent > 0 else kind.number(1, 1) / base ** int(-exponent)
+    if exponent.is_Rational and exponent.q == 2:
+        root = kind.sqrt(base)
+        return root ** int(exponent.p) if exponent > 0 else kind.number(1, 1) / root ** int(-exponent.p)
+    raise TypeError(f"cannot evaluate the power {exponent}")

@@ -1,0 +1,254 @@
+"""scene -> system -> elimination -> closed-form branches -> verification.
+
+>>> result = curve("chebyshev-lambda", "P")
+>>> result.degree, result.circularity, result.irreducible, result.verification.passed
+(6, 3, True, True)
+"""
+
+import time
+from dataclasses import dataclass
+from fractions import Fraction
+import math
+
+import flint
+import sympy
+
+from .branches import check_assembly, circularity, closed_forms
+from .eliminate import eliminate
+from .errors import UsageError
+from .evaluate import ARB, evaluate
+from .scene import Scene, compile_scene, load_scene
+from .system import symbol
+from .verify import verify_branches
+
+__all__ = ["derive", "curve", "Derivation", "CurveResult", "witnesses"]
+
+WITNESS_BITS = 256
+WITNESSES_PER_BRANCH = 3
+
+
+@dataclass
+class Derivation:
+    """What ``derive`` found for a scene: system, eliminants, branches, verification."""
+
+    compiled: object
+    method: str
+    backend: str
+    eliminations: dict  # unknown -> Elimination
+    branches: list
+    verification: object
+    timings: dict
+
+    def to_json(self):
+        system = self.compiled.system
+        return {
+            "scene": self.compiled.scene.name,
+            "method": self.method,
+            "backend": self.backend,
+            "inputs": {n: {"cos": c, "sin": s} for n, (c, s) in system.inputs.items()},
+            "system": system.to_json(),
+            "outputs": {n: list(v) for n, v in self.compiled.outputs.items()},
+            "eliminants": {u: str(e.polynomial) for u, e in self.eliminations.items()},
+            "eliminant_figures": {u: _figures(e) for u, e in self.eliminations.items()},
+            "branches": [b.to_json() for b in self.branches],
+            "verification": self.verification.to_json(),
+            "timings": self.timings,
+        }
+
+
+@dataclass
+class CurveResult:
+    """The implicit curve of a point: polynomial, figures, dropped factors, verification."""
+
+    compiled: object
+    point: str
+    variables: tuple
+    elimination: object
+    degree: int
+    circularity: int
+    irreducible: bool
+    verification: object
+    timings: dict
+
+    def to_json(self):
+        return {
+            "scene": self.compiled.scene.name,
+            "point": self.point,
+            "variables": list(self.variables),
+            "parameters": list(self.compiled.system.parameters),
+            "method": self.elimination.method,
+            "backend": self.elimination.backend,
+            "curve": str(self.elimination.polynomial),
+            "degree": self.degree,
+            "circularity": self.circularity,
+            "irreducible": self.irreducible,
+            "terms": self.elimination.terms,
+            "coefficient_bits": self.elimination.bits,
+            "dropped_factors": [str(f) for f in self.elimination.dropped],
+            "verification": self.verification.to_json(),
+            "timings": self.timings,
+        }
+
+
+def _figures(elimination):
+    return {
+        "degree": elimination.degree,
+        "terms": elimination.terms,
+        "coefficient_bits": elimination.bits,
+        "dropped_factors": [str(f) for f in elimination.dropped],
+    }
+
+
+def _scene(scene):
+    return scene if isinstance(scene, Scene) else load_scene(scene)
+
+
+def _tangent_samples(spec, count):
+    """Rational tangent half-angles spread over the input's range (exact points on the circle)."""
+    lo, hi = float(spec.to_radians(spec.lo)), float(spec.to_radians(spec.hi))
+    values = []
+    for k in range(4 * count):
+        angle = lo + (k + 0.5) / (4 * count) * (hi - lo)
+        if abs(math.cos(angle / 2)) > 0.02:
+            values.append(Fraction(math.tan(angle / 2)).limit_denominator(97))
+    # Interleave so that the first few samples already spread over the range.
+    return values[::4] + values[1::4] + values[2::4] + values[3::4]
+
+
+def witnesses(compiled, branches):
+    """Per branch, configurations in ball arithmetic at exact rational inputs."""
+    spread = {n: _tangent_samples(compiled.scene.inputs[n], WITNESSES_PER_BRANCH * 3)
+              for n in compiled.system.inputs}
+    groups = []
+    with flint.ctx.workprec(WITNESS_BITS):
+        for branch in branches:
+            group = []
+            for k in range(len(next(iter(spread.values()), [None]))):
+                point = _witness(compiled, branch, spread, k)
+                if point is not None:
+                    group.append(point)
+                if len(group) == WITNESSES_PER_BRANCH:
+                    break
+            groups.append(group)
+    return groups
+
+
+def _witness(compiled, branch, spread, k):
+    values = {}
+    for name, (c, s) in compiled.system.inputs.items():
+        t = spread[name][k]
+        values[c] = ARB.number((1 - t * t).numerator * (1 + t * t).denominator,
+                               (1 - t * t).denominator * (1 + t * t).numerator)
+        values[s] = ARB.number((2 * t).numerator * (1 + t * t).denominator,
+                               (2 * t).denominator * (1 + t * t).numerator)
+    for n in compiled.system.parameters:
+        default = Fraction(str(compiled.parameter_values[n]))
+        shifted = default * (1 + Fraction(k + 1, 211)) if default else Fraction(k + 1, 211)
+        values[n] = ARB.number(shifted.numerator, shifted.denominator)
+    for disc in branch.discriminants.values():
+        if not evaluate(disc, values, ARB) > 0:
+            return None
+    for unknown, expr in branch.values.items():
+        values[unknown] = evaluate(expr, values, ARB)
+        if not values[unknown].is_finite():
+            return None
+    return values
+
+
+def _verify(compiled, branches, samples, seed, polynomials):
+    system = compiled.system
+    defaults = {symbol(n): compiled.parameter_values[n] for n in system.parameters}
+    inputs = {n: (float(i.to_radians(i.lo)), float(i.to_radians(i.hi)))
+              for n, i in compiled.scene.inputs.items() if n in system.inputs}
+    return verify_branches(
+        system,
+        [(i.point, i.expr.xreplace(defaults), i.positive, i.negative) for i in compiled.indicators],
+        [(b.labels, {u: v.xreplace(defaults) for u, v in b.values.items()},
+          {p: d.xreplace(defaults) for p, d in b.discriminants.items()}) for b in branches],
+        inputs,
+        {n: compiled.parameter_values[n] for n in system.parameters},
+        samples=samples,
+        seed=seed,
+        polynomials={n: p.xreplace(defaults) for n, p in polynomials.items()},
+    )
+
+
+def _fixed_parameter_system(compiled):
+    """The system with symbolic parameters at their defaults (for numeric solving)."""
+    system = compiled.system
+    defaults = {symbol(n): compiled.parameter_values[n] for n in system.parameters}
+    return type(system)(system.unknowns, (), system.inputs,
+                        tuple(sympy.expand(e.xreplace(defaults)) for e in system.equations),
+                        system.nonnegative)
+
+
+def derive(scene, outputs=None, method="resultant", backend="flint", params=(), samples=40, seed=0):
+    """Eliminants, closed-form branches and their verification for ``outputs`` of ``scene``."""
+    timings = {}
+    start = time.perf_counter()
+    compiled = compile_scene(_scene(scene), outputs, params)
+    timings["compile"] = time.perf_counter() - start
+    mark = time.perf_counter()
+    branches = closed_forms(compiled)
+    check_assembly(compiled, branches)
+    groups = witnesses(compiled, branches)
+    timings["branches"] = time.perf_counter() - mark
+    mark = time.perf_counter()
+    system = compiled.system
+    unknown_symbols = {symbol(u) for u in system.unknowns}
+    equations = [e for e in system.equations if e.free_symbols & unknown_symbols]
+    keep_always = list(system.input_variables) + list(system.parameters)
+    eliminations = {
+        u: eliminate(equations, [v for v in system.unknowns if v != u], [u] + keep_always,
+                     method=method, backend=backend, witnesses=groups)
+        for u in system.unknowns
+    }
+    timings["eliminate"] = time.perf_counter() - mark
+    mark = time.perf_counter()
+    verification = _verify_fixed(compiled, branches, samples, seed,
+                                 {u: e.polynomial for u, e in eliminations.items()})
+    timings["verify"] = time.perf_counter() - mark
+    timings["total"] = time.perf_counter() - start
+    return Derivation(compiled, method, backend, eliminations, branches, verification, timings)
+
+
+def _verify_fixed(compiled, branches, samples, seed, polynomials):
+    fixed = type(compiled)(**{**vars(compiled), "system": _fixed_parameter_system(compiled)})
+    return _verify(fixed, branches, samples, seed, polynomials) if samples else _verify_skipped(samples)
+
+
+def _verify_skipped(samples):
+    from .verify import Verification
+
+    return Verification(samples, 0.0, True)
+
+
+def curve(scene, point, method="resultant", backend="flint", params=(), samples=40, seed=0):
+    """The implicit curve ``F(point_x, point_y) = 0`` traced by ``point``."""
+    scene = _scene(scene)
+    if point not in scene.points:
+        raise UsageError("--point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
+    timings = {}
+    start = time.perf_counter()
+    compiled = compile_scene(scene, [point], params)
+    timings["compile"] = time.perf_counter() - start
+    mark = time.perf_counter()
+    branches = closed_forms(compiled)
+    check_assembly(compiled, branches)
+    groups = witnesses(compiled, branches)
+    timings["branches"] = time.perf_counter() - mark
+    mark = time.perf_counter()
+    system = compiled.system
+    variables = (f"{point}_x", f"{point}_y")
+    others = [u for u in system.unknowns if u not in variables] + list(system.input_variables)
+    result = eliminate(system.equations, others, list(variables) + list(system.parameters),
+                       method=method, backend=backend, witnesses=groups)
+    timings["eliminate"] = time.perf_counter() - mark
+    x, y = (symbol(v) for v in variables)
+    figures = (sympy.Poly(result.polynomial, x, y).total_degree(), circularity(result.polynomial, x, y))
+    mark = time.perf_counter()
+    verification = _verify_fixed(compiled, branches, samples, seed, {"curve": result.polynomial})
+    timings["verify"] = time.perf_counter() - mark
+    timings["total"] = time.perf_counter() - start
+    return CurveResult(compiled, point, variables, result, figures[0], figures[1],
+                       len(result.factors) == 1, verification, timings)

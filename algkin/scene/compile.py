@@ -1,0 +1,194 @@
+"""Compile a scene into an exact polynomial system holding only what the outputs need.
+
+Explicit points (fixed, crank, frame) are substituted as polynomials; only implicit
+points (dyads) and the asked-for outputs become unknowns.
+
+>>> from algkin.scene import load_scene
+>>> compiled = compile_scene(load_scene("arm-string"), ["AB"])
+>>> compiled.system.unknowns
+('AB',)
+>>> compiled.system.equations[0]
+AB**2 + 56000*c_theta + 280000*s_theta - 288900
+"""
+
+from dataclasses import dataclass
+
+import sympy
+
+from ..errors import SceneError, UsageError
+from ..system import System, symbol
+from .constructions import Builder
+from .load import parse_output
+
+__all__ = ["Compiled", "DyadSpec", "compile_scene"]
+
+
+@dataclass(frozen=True)
+class DyadSpec:
+    """A compiled dyad: its unknowns, base coordinates and lengths in system variables."""
+
+    point: str
+    unknowns: tuple
+    base_p: tuple
+    base_q: tuple
+    lengths: tuple
+    branch: str
+
+
+@dataclass(frozen=True)
+class Compiled:
+    """A scene compiled for some outputs: the system plus what branches need to know."""
+
+    scene: object
+    system: System
+    coordinates: dict  # needed point -> (x, y) in system variables
+    dyads: tuple  # DyadSpec, in construction order
+    indicators: tuple  # constructions.Indicator, one per dyad
+    definitions: dict  # output unknown -> its value in other variables (sqrt for distances)
+    outputs: dict  # output name -> unknown names standing for it
+    parameter_values: dict  # every scene parameter -> exact default
+    symbolic: tuple  # parameters kept symbolic
+
+
+def _resolve_outputs(scene, requested):
+    outputs = []
+    for text in requested or list(scene.outputs):
+        if text in scene.outputs:
+            outputs.append(scene.outputs[text])
+            continue
+        output = parse_output(text, text, scene.points, scene.source, "--outputs")
+        if output.kind == "dist":
+            output = type(output)(f"dist_{output.points[0]}_{output.points[1]}", *list(vars(output).values())[1:])
+        outputs.append(output)
+    if not outputs:
+        raise SceneError(scene.source, "outputs", "the scene has no outputs; name some with --outputs")
+    return outputs
+
+
+def _needed_points(scene, outputs):
+    needed, stack = set(), [p for o in outputs for p in o.points]
+    while stack:
+        name = stack.pop()
+        if name not in needed:
+            needed.add(name)
+            stack.extend(scene.points[name].references)
+    return [name for name in _construction_order(scene) if name in needed]
+
+
+def _construction_order(scene):
+    order, seen = [], set()
+
+    def visit(name):
+        if name not in seen:
+            seen.add(name)
+            for ref in scene.points[name].references:
+                visit(ref)
+            order.append(name)
+
+    for name in scene.points:
+        visit(name)
+    return order
+
+
+def _parameter_values(scene, symbolic):
+    for name in symbolic:
+        if name not in scene.parameters:
+            known = ", ".join(scene.parameters) or "none"
+            raise UsageError("--param", name, f"not a parameter of {scene.name} (parameters: {known})")
+    symbols = scene.parameter_symbols()
+    defaults, substitution = {}, {}
+    for name, default in scene.parameters.items():
+        defaults[name] = default.xreplace(defaults_subs(defaults, symbols))
+        if name not in symbolic:
+            substitution[symbols[name]] = defaults[name]
+    return defaults, substitution
+
+
+def defaults_subs(defaults, symbols):
+    """Substitution of every already-resolved parameter by its default."""
+    return {symbols[n]: v for n, v in defaults.items()}
+
+
+def compile_scene(scene, outputs=None, params=()):
+    """Compile ``scene`` for ``outputs`` (names, point names, ``dist(P, Q)``, ``P.x``).
+
+    Parameters named in ``params`` stay symbolic; the others take their exact defaults.
+    """
+    symbolic = tuple(params)
+    defaults, substitution = _parameter_values(scene, symbolic)
+    outputs = _resolve_outputs(scene, outputs)
+    points = _needed_points(scene, outputs)
+    used_inputs = {scene.points[p].input for p in points if hasattr(scene.points[p], "input")}
+    inputs = {n: i.symbols for n, i in scene.inputs.items() if n in used_inputs}
+    builder = Builder(inputs)
+    coords = {}
+    for name in points:
+        construction = _substituted(scene.points[name], substitution)
+        _check_lengths(scene, name, construction)
+        coords[name] = tuple(sympy.expand(v) for v in construction.build(name, coords, builder))
+    definitions, output_unknowns, nonnegative = _output_equations(outputs, coords, builder)
+    equations = [sympy.expand(eq) for eq in builder.equations]
+    equations += [c**2 + s**2 - 1 for c, s in inputs.values()]
+    used = set().union(*(eq.free_symbols for eq in equations)) if equations else set()
+    system = System(
+        unknowns=tuple(str(u) for u in builder.unknowns),
+        parameters=tuple(p for p in symbolic if symbol(p) in used),
+        inputs={n: (str(c), str(s)) for n, (c, s) in inputs.items()},
+        equations=tuple(equations),
+        nonnegative=tuple(nonnegative),
+    )
+    dyads = tuple(
+        DyadSpec(name, (f"{name}_x", f"{name}_y"), coords[d.bases[0]], coords[d.bases[1]],
+                 tuple(l.xreplace(substitution) for l in d.lengths), d.branch)
+        for name, d in builder.dyads.items()
+    )
+    return Compiled(scene, system, coords, dyads, tuple(builder.indicators), definitions,
+                    output_unknowns, defaults, symbolic)
+
+
+def _substituted(construction, substitution):
+    fields = {k: _subs(v, substitution) for k, v in vars(construction).items()}
+    return type(construction)(**fields)
+
+
+def _subs(value, substitution):
+    if isinstance(value, sympy.Basic):
+        return value.xreplace(substitution)
+    if isinstance(value, tuple):
+        return tuple(_subs(v, substitution) for v in value)
+    return value
+
+
+def _check_lengths(scene, name, construction):
+    lengths = getattr(construction, "lengths", None) or (getattr(construction, "length", None),)
+    for length in lengths:
+        if length is not None and length.is_number and not length > 0:
+            raise SceneError(scene.source, f"points.{name}", f"length must be positive, got {length}")
+
+
+def _output_equations(outputs, coords, builder):
+    definitions, output_unknowns, nonnegative = {}, {}, []
+    implicit = {str(u) for u in builder.unknowns}
+    for output in outputs:
+        if output.kind == "dist":
+            (px, py), (qx, qy) = coords[output.points[0]], coords[output.points[1]]
+            square = sympy.expand((px - qx) ** 2 + (py - qy) ** 2)
+            unknown = builder.unknown(output.name)
+            builder.equations.append(unknown**2 - square)
+            definitions[output.name] = sympy.sqrt(square)
+            nonnegative.append(output.name)
+            output_unknowns[output.name] = (output.name,)
+            continue
+        axes = {"point": "xy", "x": "x", "y": "y"}[output.kind]
+        point = output.points[0]
+        names = []
+        for axis in axes:
+            name = f"{point}_{axis}"
+            value = coords[point]["xy".index(axis)]
+            if name not in implicit:
+                builder.equations.append(builder.unknown(name) - value)
+                implicit.add(name)
+                definitions[name] = value
+            names.append(name)
+        output_unknowns[output.name] = tuple(names)
+    return definitions, output_unknowns, nonnegative

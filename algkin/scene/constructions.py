@@ -1,0 +1,129 @@
+"""The constructions a scene's points are built with: one small class each.
+
+Each construction knows the points it refers to and how it turns into polynomial
+terms: an *explicit* point is a polynomial in earlier coordinates; an *implicit* point
+(dyad) brings two unknowns, two equations and a branch indicator whose sign is the
+geometric label.
+"""
+
+from dataclasses import dataclass
+
+import sympy
+
+__all__ = ["Fixed", "Crank", "Dyad", "Frame", "CONSTRUCTIONS", "Builder", "Indicator"]
+
+
+@dataclass(frozen=True)
+class Indicator:
+    """Sign of ``expr`` names the branch: > 0 is ``positive``, < 0 is ``negative``."""
+
+    point: str
+    expr: sympy.Expr
+    positive: str
+    negative: str
+    chosen: str
+
+
+class Builder:
+    """Collects unknowns, equations and branch indicators while a scene compiles."""
+
+    def __init__(self, inputs):
+        self.inputs = inputs  # input name -> (cos symbol, sin symbol)
+        self.unknowns = []
+        self.equations = []
+        self.indicators = []
+        self.dyads = {}
+
+    def unknown(self, name):
+        symbol = sympy.Symbol(name, real=True)
+        self.unknowns.append(symbol)
+        return symbol
+
+
+def _rot90(v):
+    return (-v[1], v[0])
+
+
+@dataclass(frozen=True)
+class Fixed:
+    """``fixed = [x, y]``: a ground point."""
+
+    x: sympy.Expr
+    y: sympy.Expr
+    references = ()
+
+    def build(self, name, coords, builder):
+        return (self.x, self.y)
+
+
+@dataclass(frozen=True)
+class Crank:
+    """``crank = P, length = L, input = t, phase = k*90``: ``P + L*(cos(t+phase), sin(t+phase))``."""
+
+    center: str
+    length: sympy.Expr
+    input: str
+    quarter_turns: int  # phase as a multiple of 90 degrees, so cos and sin stay exact
+
+    @property
+    def references(self):
+        return (self.center,)
+
+    def build(self, name, coords, builder):
+        c, s = builder.inputs[self.input]
+        cos_phase, sin_phase = [(1, 0), (0, 1), (-1, 0), (0, -1)][self.quarter_turns % 4]
+        px, py = coords[self.center]
+        return (
+            px + self.length * (cos_phase * c - sin_phase * s),
+            py + self.length * (sin_phase * c + cos_phase * s),
+        )
+
+
+@dataclass(frozen=True)
+class Dyad:
+    """``dyad = [P, Q], lengths = [l1, l2], branch = left/right``: two circles meet."""
+
+    bases: tuple
+    lengths: tuple
+    branch: str
+    labels = ("left", "right")
+
+    @property
+    def references(self):
+        return self.bases
+
+    def build(self, name, coords, builder):
+        (px, py), (qx, qy) = coords[self.bases[0]], coords[self.bases[1]]
+        x, y = builder.unknown(f"{name}_x"), builder.unknown(f"{name}_y")
+        l1, l2 = self.lengths
+        builder.equations += [
+            (x - px) ** 2 + (y - py) ** 2 - l1**2,
+            (x - qx) ** 2 + (y - qy) ** 2 - l2**2,
+        ]
+        # cross(Q - P, X - P) > 0: X lies left of the directed line P -> Q.
+        cross = (qx - px) * (y - py) - (qy - py) * (x - px)
+        builder.indicators.append(Indicator(name, cross, "left", "right", self.branch))
+        builder.dyads[name] = self
+        return (x, y)
+
+
+@dataclass(frozen=True)
+class Frame:
+    """``frame = [P, Q], at = [u, v]``: ``P + u*(Q-P) + v*rot90(Q-P)``, rigid with bar PQ."""
+
+    bases: tuple
+    at: tuple
+
+    @property
+    def references(self):
+        return self.bases
+
+    def build(self, name, coords, builder):
+        (px, py), (qx, qy) = coords[self.bases[0]], coords[self.bases[1]]
+        d = (qx - px, qy - py)
+        n = _rot90(d)
+        u, v = self.at
+        return (px + u * d[0] + v * n[0], py + u * d[1] + v * n[1])
+
+
+CONSTRUCTIONS = {"fixed": Fixed, "crank": Crank, "dyad": Dyad, "frame": Frame}

@@ -1,0 +1,181 @@
+"""The scene files' tiny expression language, parsed without eval.
+
+Numbers (integers, decimals, exponents, all read exactly), names, ``+ - * / **``,
+parentheses and ``sqrt(...)``. The result is a sympy expression built from sympy
+constructors directly, so nothing in a scene file is ever executed.
+
+>>> parse("0.1 + 1/5")
+3/10
+>>> parse("sqrt(b**2 + 9)", {"b": 4})
+5
+>>> parse("-2**2")
+-4
+>>> parse("__import__(1)")
+Traceback (most recent call last):
+...
+ValueError: unknown function '__import__' (only sqrt)
+"""
+
+import re
+from fractions import Fraction
+
+import sympy
+
+__all__ = ["parse", "exact_number", "MAX_EXPRESSION_LENGTH"]
+
+MAX_EXPRESSION_LENGTH = 500
+MAX_DEPTH = 40
+MAX_EXPONENT = 64
+
+_TOKEN = re.compile(
+    r"\s*(?:(?P<num>(?:\d[\d_]*(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)"
+    r"|(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<op>\*\*|[-+*/(),]))"
+)
+
+
+def exact_number(text):
+    """The exact rational a decimal literal spells: ``exact_number('0.1')`` is 1/10.
+
+    >>> exact_number("2.5e-1")
+    1/4
+    """
+    try:
+        value = Fraction(str(text).replace("_", ""))
+    except (ValueError, ZeroDivisionError):
+        raise ValueError(f"not a finite number: {text!r}") from None
+    return sympy.Rational(value.numerator, value.denominator)
+
+
+def _tokenize(text):
+    tokens, pos = [], 0
+    text = text.rstrip()
+    while pos < len(text):
+        match = _TOKEN.match(text, pos)
+        if not match or match.end() == pos:
+            raise ValueError(f"unexpected character {text[pos:].strip()[:1]!r} at {pos}")
+        kind = match.lastgroup
+        tokens.append((kind, match.group(kind)))
+        pos = match.end()
+    return tokens
+
+
+class _Parser:
+    def __init__(self, tokens, names):
+        self.tokens = tokens
+        self.pos = 0
+        self.names = names
+        self.depth = 0
+
+    def peek(self):
+        return self.tokens[self.pos] if self.pos < len(self.tokens) else (None, None)
+
+    def take(self, op=None):
+        kind, value = self.peek()
+        if kind is None:
+            raise ValueError("unexpected end of expression")
+        if op is not None and value != op:
+            raise ValueError(f"expected {op!r}, found {value!r}")
+        self.pos += 1
+        return kind, value
+
+    def expr(self):
+        value = self.term()
+        while self.peek()[1] in ("+", "-"):
+            op = self.take()[1]
+            rhs = self.term()
+            value = value + rhs if op == "+" else value - rhs
+        return value
+
+    def term(self):
+        value = self.unary()
+        while self.peek()[1] in ("*", "/"):
+            op = self.take()[1]
+            rhs = self.unary()
+            if op == "/":
+                if rhs == 0:
+                    raise ValueError("division by zero")
+                value = value / rhs
+            else:
+                value = value * rhs
+        return value
+
+    def unary(self):
+        if self.peek()[1] in ("+", "-"):
+            op = self.take()[1]
+            value = self.nested(self.unary)
+            return -value if op == "-" else value
+        return self.power()
+
+    def power(self):
+        base = self.atom()
+        if self.peek()[1] == "**":
+            self.take()
+            exponent = self.nested(self.unary)
+            if not (exponent.is_Integer and abs(exponent) <= MAX_EXPONENT):
+                raise ValueError(
+                    f"exponent must be an integer of size at most {MAX_EXPONENT}, got {exponent}"
+                )
+            if base == 0 and exponent < 0:
+                raise ValueError("division by zero")
+            return base**exponent
+        return base
+
+    def nested(self, rule):
+        self.depth += 1
+        if self.depth > MAX_DEPTH:
+            raise ValueError(f"expression nested deeper than {MAX_DEPTH}")
+        try:
+            return rule()
+        finally:
+            self.depth -= 1
+
+    def atom(self):
+        kind, value = self.take()
+        if kind == "num":
+            return exact_number(value)
+        if kind == "name":
+            if self.peek()[1] == "(":
+                return self.call(value)
+            if value not in self.names:
+                known = ", ".join(sorted(self.names)) or "none"
+                raise ValueError(f"unknown name {value!r} (known: {known})")
+            return self.names[value]
+        if value == "(":
+            inner = self.nested(self.expr)
+            self.take(")")
+            return inner
+        raise ValueError(f"unexpected {value!r}")
+
+    def call(self, function):
+        if function != "sqrt":
+            raise ValueError(f"unknown function {function!r} (only sqrt)")
+        self.take("(")
+        argument = self.nested(self.expr)
+        self.take(")")
+        if argument.is_number and argument < 0:
+            raise ValueError(f"sqrt of a negative number {argument}")
+        return sympy.sqrt(argument)
+
+
+def parse(text, names=None):
+    """Parse ``text`` (a string, int, or exact float literal) into a sympy expression.
+
+    ``names`` maps the allowed names to their values (symbols or numbers). Raises
+    ValueError with a one-line message on anything outside the language.
+    """
+    if isinstance(text, bool):
+        raise ValueError(f"expected a number or expression, got {text!r}")
+    if isinstance(text, int):
+        return sympy.Integer(text)
+    if not isinstance(text, str):
+        raise ValueError(f"expected a number or expression, got {type(text).__name__}")
+    if len(text) > MAX_EXPRESSION_LENGTH:
+        raise ValueError(f"expression longer than {MAX_EXPRESSION_LENGTH} characters")
+    tokens = _tokenize(text)
+    if not tokens:
+        raise ValueError("empty expression")
+    parser = _Parser(tokens, names or {})
+    value = parser.expr()
+    if parser.pos != len(tokens):
+        raise ValueError(f"unexpected {parser.peek()[1]!r} after a complete expression")
+    return value

@@ -1,0 +1,292 @@
+"""Load scene files (TOML): validated element by element, nothing executed.
+
+>>> scene = load_scene("chebyshev-lambda")
+>>> list(scene.points)
+['O', 'D', 'A', 'B', 'P']
+>>> load_scene_text('[points]\\nA = { fixed = [0, "q"] }', "bad.toml")
+Traceback (most recent call last):
+...
+algkin.errors.SceneError: bad.toml: points.A.fixed: unknown name 'q' (known: none)
+"""
+
+import os
+import re
+
+try:
+    import tomllib
+except ModuleNotFoundError:  # Python 3.10
+    import tomli as tomllib
+
+import sympy
+
+from ..errors import SceneError
+from .constructions import CONSTRUCTIONS, Crank, Dyad, Fixed, Frame
+from .expr import exact_number, parse
+from .model import Input, Output, Scene
+
+__all__ = ["load_scene", "load_scene_text", "catalog_names", "MAX_SCENE_BYTES"]
+
+MAX_SCENE_BYTES = 256 * 1024
+_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
+_CATALOG = os.path.join(os.path.dirname(os.path.dirname(__file__)), "catalog")
+_TOP_KEYS = {"name", "description", "parameters", "inputs", "points", "outputs"}
+_EXTRA_KEYS = {
+    "fixed": set(),
+    "crank": {"length", "input", "phase"},
+    "dyad": {"lengths", "branch"},
+    "frame": {"at"},
+}
+
+
+class _FloatText(str):
+    """A TOML float kept as the text it spells, so that 0.1 stays 1/10."""
+
+
+def catalog_names():
+    """Names of the scenes shipped in the catalog."""
+    return sorted(f[:-5] for f in os.listdir(_CATALOG) if f.endswith(".toml"))
+
+
+def load_scene(name_or_path):
+    """Load a catalog scene by name, or a scene file by path."""
+    path = str(name_or_path)
+    if not os.path.exists(path):
+        if path in catalog_names():
+            path = os.path.join(_CATALOG, path + ".toml")
+        else:
+            known = ", ".join(catalog_names())
+            raise SceneError(path, "", f"no such file and no catalog scene of that name (catalog: {known})")
+    if os.path.isdir(path):
+        raise SceneError(path, "", "is a directory, not a scene file")
+    if os.path.getsize(path) > MAX_SCENE_BYTES:
+        raise SceneError(path, "", f"file larger than {MAX_SCENE_BYTES} bytes")
+    with open(path, "rb") as handle:
+        data = handle.read(MAX_SCENE_BYTES + 1)
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as err:
+        raise SceneError(path, "", f"not UTF-8 text ({err.reason} at byte {err.start})") from None
+    label = os.path.basename(path) if path.startswith(_CATALOG) else path
+    return load_scene_text(text, label)
+
+
+def load_scene_text(text, source="<scene>"):
+    """Parse and validate a scene given as TOML text; ``source`` names it in errors."""
+    if len(text.encode("utf-8")) > MAX_SCENE_BYTES:
+        raise SceneError(source, "", f"text larger than {MAX_SCENE_BYTES} bytes")
+    try:
+        data = tomllib.loads(text, parse_float=_FloatText)
+    except tomllib.TOMLDecodeError as err:
+        raise SceneError(source, "", f"TOML syntax error: {err}") from None
+    return _Loader(source).scene(data)
+
+
+class _Loader:
+    def __init__(self, source):
+        self.source = source
+        self.names = {}
+
+    def fail(self, element, message):
+        raise SceneError(self.source, element, message)
+
+    def table(self, data, key, element):
+        value = data.get(key, {})
+        if not isinstance(value, dict):
+            self.fail(element, f"expected a table, got {type(value).__name__}")
+        return value
+
+    def expr(self, value, element):
+        if isinstance(value, _FloatText):
+            try:
+                return exact_number(value)
+            except ValueError as err:
+                self.fail(element, str(err))
+        try:
+            return parse(value, self.names)
+        except ValueError as err:
+            self.fail(element, str(err))
+
+    def identifier(self, name, element):
+        if not _NAME.match(name):
+            self.fail(element, f"name {name!r} is not an identifier (letters, digits, _)")
+        return name
+
+    def scene(self, data):
+        unknown = set(data) - _TOP_KEYS
+        if unknown:
+            self.fail(sorted(unknown)[0], f"unknown key (expected one of {', '.join(sorted(_TOP_KEYS))})")
+        name = data.get("name", os.path.splitext(os.path.basename(self.source))[0])
+        description = data.get("description", "")
+        if not isinstance(name, str) or not isinstance(description, str):
+            self.fail("name", "name and description must be strings")
+        parameters = self.parameters(self.table(data, "parameters", "parameters"))
+        inputs = self.inputs(self.table(data, "inputs", "inputs"))
+        points = self.points(self.table(data, "points", "points"), inputs)
+        outputs = self.outputs(self.table(data, "outputs", "outputs"), points, inputs, parameters)
+        return Scene(name, description, parameters, inputs, points, outputs, self.source)
+
+    def parameters(self, table):
+        defaults = {}
+        for name, value in table.items():
+            element = f"parameters.{name}"
+            self.identifier(name, element)
+            if name.startswith(("c_", "s_")):
+                self.fail(element, "names starting with c_ or s_ are kept for input angles")
+            # A default may use the parameters above it; the name itself stays a symbol.
+            defaults[name] = self.expr(value, element)
+            self.names[name] = sympy.Symbol(name, real=True)
+        return defaults
+
+    def inputs(self, table):
+        inputs = {}
+        for name, spec in table.items():
+            element = f"inputs.{name}"
+            self.identifier(name, element)
+            if name in self.names:
+                self.fail(element, f"input {name!r} has the name of a parameter")
+            if not isinstance(spec, dict):
+                self.fail(element, "expected a table like { range = [0, 360], unit = \"deg\" }")
+            extra = set(spec) - {"range", "unit"}
+            if extra:
+                self.fail(f"{element}.{sorted(extra)[0]}", "unknown key (expected range, unit)")
+            unit = spec.get("unit", "deg")
+            if unit not in ("deg", "rad"):
+                self.fail(f"{element}.unit", f"unit must be 'deg' or 'rad', got {unit!r}")
+            bounds = spec.get("range", [0, 360] if unit == "deg" else [0, "6283185307/1000000000"])
+            if not isinstance(bounds, list) or len(bounds) != 2:
+                self.fail(f"{element}.range", "expected [lo, hi]")
+            lo, hi = (self.number(b, f"{element}.range") for b in bounds)
+            if not lo < hi:
+                self.fail(f"{element}.range", f"empty range [{lo}, {hi}]")
+            inputs[name] = Input(name, lo, hi, unit)
+        return inputs
+
+    def number(self, value, element):
+        saved, self.names = self.names, {}
+        try:
+            value = self.expr(value, element)
+        finally:
+            self.names = saved
+        if not value.is_Rational:
+            self.fail(element, f"expected a rational number, got {value}")
+        return value
+
+    def pair(self, spec, key, element):
+        value = spec.get(key)
+        if not isinstance(value, list) or len(value) != 2:
+            self.fail(f"{element}.{key}", f"expected a list of two, got {value!r}")
+        return value
+
+    def point_ref(self, value, element, names):
+        if not isinstance(value, str) or value not in names:
+            self.fail(element, f"unknown point {value!r}")
+        return value
+
+    def positive(self, value, element):
+        expr = self.expr(value, element)
+        if expr.is_number and not expr > 0:
+            self.fail(element, f"length must be positive, got {expr}")
+        return expr
+
+    def points(self, table, inputs):
+        names = set(table)
+        points = {}
+        for name, spec in table.items():
+            element = f"points.{name}"
+            self.identifier(name, element)
+            if not isinstance(spec, dict):
+                self.fail(element, "expected a table such as { fixed = [0, 0] }")
+            kinds = [k for k in spec if k in CONSTRUCTIONS]
+            if len(kinds) != 1:
+                self.fail(element, f"needs exactly one of {', '.join(CONSTRUCTIONS)}, found {kinds or 'none'}")
+            kind = kinds[0]
+            extra = set(spec) - {kind} - _EXTRA_KEYS[kind]
+            if extra:
+                self.fail(f"{element}.{sorted(extra)[0]}", f"unknown key for a {kind} point")
+            points[name] = getattr(self, kind)(spec, f"{element}", names, inputs)
+        self.check_acyclic(points)
+        return points
+
+    def fixed(self, spec, element, names, inputs):
+        x, y = self.pair(spec, "fixed", element)
+        return Fixed(self.expr(x, f"{element}.fixed"), self.expr(y, f"{element}.fixed"))
+
+    def crank(self, spec, element, names, inputs):
+        center = self.point_ref(spec["crank"], f"{element}.crank", names)
+        if "length" not in spec:
+            self.fail(f"{element}.length", "a crank needs a length")
+        length = self.positive(spec["length"], f"{element}.length")
+        name = spec.get("input")
+        if name not in inputs:
+            self.fail(f"{element}.input", f"unknown input {name!r} (inputs: {', '.join(inputs) or 'none'})")
+        phase = self.number(spec.get("phase", 0), f"{element}.phase")
+        quarter = phase / 90 if inputs[name].unit == "deg" else phase
+        if not quarter.is_Integer or (inputs[name].unit == "rad" and phase != 0):
+            self.fail(f"{element}.phase", f"phase must be a multiple of 90 degrees (0 in radians), got {phase}")
+        return Crank(center, length, name, int(quarter))
+
+    def dyad(self, spec, element, names, inputs):
+        bases = tuple(self.point_ref(p, f"{element}.dyad", names) for p in self.pair(spec, "dyad", element))
+        if bases[0] == bases[1]:
+            self.fail(f"{element}.dyad", f"the two base points must differ, got {bases[0]!r} twice")
+        lengths = tuple(self.positive(v, f"{element}.lengths") for v in self.pair(spec, "lengths", element))
+        branch = spec.get("branch", "left")
+        if branch not in Dyad.labels:
+            self.fail(f"{element}.branch", f"branch must be 'left' or 'right', got {branch!r}")
+        return Dyad(bases, lengths, branch)
+
+    def frame(self, spec, element, names, inputs):
+        bases = tuple(self.point_ref(p, f"{element}.frame", names) for p in self.pair(spec, "frame", element))
+        if bases[0] == bases[1]:
+            self.fail(f"{element}.frame", f"the two base points must differ, got {bases[0]!r} twice")
+        at = tuple(self.expr(v, f"{element}.at") for v in self.pair(spec, "at", element))
+        return Frame(bases, at)
+
+    def check_acyclic(self, points):
+        state = {}
+
+        def visit(name, path):
+            if state.get(name) == "done":
+                return
+            if state.get(name) == "active":
+                cycle = " -> ".join(path[path.index(name):] + [name])
+                self.fail(f"points.{name}", f"points depend on each other in a cycle: {cycle}")
+            state[name] = "active"
+            for ref in points[name].references:
+                visit(ref, path + [name])
+            state[name] = "done"
+
+        for name in points:
+            visit(name, [])
+
+    def outputs(self, table, points, inputs, parameters):
+        outputs = {}
+        taken = set(points) | set(inputs) | set(parameters)
+        for name, text in table.items():
+            element = f"outputs.{name}"
+            self.identifier(name, element)
+            if not isinstance(text, str):
+                self.fail(element, "expected a string such as \"P\", \"dist(A, B)\" or \"P.x\"")
+            outputs[name] = parse_output(name, text, points, self.source, element)
+            if outputs[name].kind == "dist" and name in taken:
+                self.fail(element, f"a distance output needs a name of its own, {name!r} is taken")
+        return outputs
+
+
+_DIST = re.compile(r"^\s*dist\(\s*(\w+)\s*,\s*(\w+)\s*\)\s*$")
+_COORD = re.compile(r"^\s*(\w+)\.([xy])\s*$")
+
+
+def parse_output(name, text, points, source="<scene>", element=None):
+    """Read an output string: a point name, ``dist(P, Q)``, ``P.x`` or ``P.y``."""
+    element = element or f"outputs.{name}"
+    if match := _DIST.match(text):
+        kind, refs = "dist", match.groups()
+    elif match := _COORD.match(text):
+        kind, refs = match.group(2), (match.group(1),)
+    else:
+        kind, refs = "point", (text.strip(),)
+    for ref in refs:
+        if ref not in points:
+            raise SceneError(source, element, f"unknown point {ref!r} in {text!r}")
+    return Output(name, kind, tuple(refs), text)

@@ -1,0 +1,63 @@
+"""The one crossing between sympy and python-flint: convert in, compute, convert out.
+
+>>> import sympy
+>>> x, y = sympy.symbols("x y")
+>>> ctx = flint_context(["x", "y"])
+>>> p = to_flint(x**2 - y/3, ctx)
+>>> p
+x^2 - 1/3*y
+>>> to_sympy(p * p, ctx)
+x**4 - 2*x**2*y/3 + y**2/9
+"""
+
+import math
+
+import flint
+import sympy
+
+from .core import symbol
+
+__all__ = ["flint_context", "to_flint", "to_sympy", "to_flint_integer", "fmpq_to_rational"]
+
+
+def flint_context(names, ordering="lex"):
+    """A python-flint rational polynomial context over ``names`` (order matters for lex)."""
+    return flint.fmpq_mpoly_ctx.get(tuple(names), ordering)
+
+
+def _sympy_dict(expr, names):
+    gens = [symbol(n) for n in names]
+    # Poly matches generators by identity, so rebuild the expression on algkin's symbols.
+    expr = sympy.sympify(expr).xreplace({sympy.Symbol(n): g for n, g in zip(names, gens)})
+    return sympy.Poly(expr, *gens, domain=sympy.QQ).as_dict()
+
+
+def to_flint(expr, ctx):
+    """A sympy polynomial (expression or Poly) as an ``fmpq_mpoly`` in ``ctx``."""
+    names = [str(n) for n in ctx.names()]
+    terms = _sympy_dict(expr.as_expr() if isinstance(expr, sympy.Poly) else expr, names)
+    return ctx.from_dict({m: flint.fmpq(int(c.numerator), int(c.denominator)) for m, c in terms.items()})
+
+
+def to_flint_integer(poly, ctx):
+    """An ``fmpq_mpoly`` with denominators cleared, as an ``fmpz_mpoly`` in ``ctx``."""
+    terms = poly.to_dict()
+    if not terms:
+        return ctx.from_dict({})
+    lcm = math.lcm(*(int(c.q) for c in terms.values()))
+    return ctx.from_dict({m: int(c.p) * (lcm // int(c.q)) for m, c in terms.items()})
+
+
+def fmpq_to_rational(value):
+    """A python-flint rational (or integer) as a sympy Rational."""
+    value = flint.fmpq(value)
+    return sympy.Rational(int(value.p), int(value.q))
+
+
+def to_sympy(poly, ctx):
+    """An ``fmpq_mpoly`` or ``fmpz_mpoly`` of ``ctx`` as a sympy expression."""
+    gens = [symbol(str(n)) for n in ctx.names()]
+    terms = {m: fmpq_to_rational(c) for m, c in poly.to_dict().items()}
+    if not terms:
+        return sympy.Integer(0)
+    return sympy.Poly.from_dict(terms, *gens, domain=sympy.QQ).as_expr()

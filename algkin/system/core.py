@@ -1,0 +1,71 @@
+"""Exact polynomial systems: equations over QQ in named variables, nothing about mechanisms.
+
+>>> import sympy
+>>> x, c, s = sympy.symbols("x c s")
+>>> system = System(unknowns=("x",), parameters=(), inputs={"t": ("c", "s")},
+...                 equations=(x**2 - c, c**2 + s**2 - 1))
+>>> system.variables
+('x', 'c', 's')
+>>> system.to_json()["equations"]
+['x**2 - c', 'c**2 + s**2 - 1']
+"""
+
+from dataclasses import dataclass, field
+
+import sympy
+
+from ..errors import ComputationError
+
+__all__ = ["System", "symbol", "variables_of"]
+
+
+def symbol(name):
+    """The sympy symbol algkin uses for a variable name (real, so sqrt(x**2) simplifies)."""
+    return sympy.Symbol(name, real=True)
+
+
+def variables_of(expr):
+    """Names of the free symbols of ``expr``, sorted."""
+    return sorted(str(s) for s in expr.free_symbols)
+
+
+@dataclass(frozen=True)
+class System:
+    """Polynomial equations ``= 0`` with exact rational coefficients.
+
+    ``unknowns`` are solved for; ``inputs`` map an input name to its ``(cos, sin)``
+    variable pair, tied by ``cos**2 + sin**2 - 1`` among the equations; ``parameters``
+    are symbolic dimensions; ``nonnegative`` lists unknowns known to be >= 0 (distances).
+    """
+
+    unknowns: tuple
+    parameters: tuple
+    inputs: dict
+    equations: tuple
+    nonnegative: tuple = field(default=())
+
+    def __post_init__(self):
+        known = set(self.variables)
+        for eq in self.equations:
+            stray = set(variables_of(eq)) - known
+            if stray:
+                raise ComputationError(f"equation {eq} uses undeclared variables {sorted(stray)}")
+            gens = [symbol(v) for v in self.variables] or [symbol("_")]
+            if sympy.Poly(eq, *gens).domain not in (sympy.ZZ, sympy.QQ):
+                raise ComputationError(f"equation {eq} has coefficients outside the rationals")
+
+    @property
+    def input_variables(self):
+        return tuple(v for pair in self.inputs.values() for v in pair)
+
+    @property
+    def variables(self):
+        return tuple(self.unknowns) + self.input_variables + tuple(self.parameters)
+
+    def to_json(self):
+        return {
+            "unknowns": list(self.unknowns),
+            "parameters": list(self.parameters),
+            "inputs": {name: {"cos": c, "sin": s} for name, (c, s) in self.inputs.items()},
+            "equations": [str(eq) for eq in self.equations],
+        }
