@@ -19,7 +19,7 @@ from .errors import UsageError
 from .evaluate import ARB, evaluate
 from .scene import Scene, compile_scene, load_scene
 from .system import symbol
-from .verify import verify_branches
+from .verify import Verification, verify_branches
 
 __all__ = ["derive", "curve", "Derivation", "CurveResult", "witnesses"]
 
@@ -156,30 +156,27 @@ def _witness(compiled, branch, spread, k):
 
 
 def _verify(compiled, branches, samples, seed, polynomials):
+    """Independent check, with symbolic parameters at their defaults."""
+    if not samples:
+        return Verification(0, 0.0, True)
     system = compiled.system
     defaults = {symbol(n): compiled.parameter_values[n] for n in system.parameters}
+    fixed = type(system)(system.unknowns, (), system.inputs,
+                         tuple(sympy.expand(e.xreplace(defaults)) for e in system.equations),
+                         system.nonnegative)
     inputs = {n: (float(i.to_radians(i.lo)), float(i.to_radians(i.hi)))
               for n, i in compiled.scene.inputs.items() if n in system.inputs}
     return verify_branches(
-        system,
+        fixed,
         [(i.point, i.expr.xreplace(defaults), i.positive, i.negative) for i in compiled.indicators],
         [(b.labels, {u: v.xreplace(defaults) for u, v in b.values.items()},
           {p: d.xreplace(defaults) for p, d in b.discriminants.items()}) for b in branches],
         inputs,
-        {n: compiled.parameter_values[n] for n in system.parameters},
+        {},
         samples=samples,
         seed=seed,
         polynomials={n: p.xreplace(defaults) for n, p in polynomials.items()},
     )
-
-
-def _fixed_parameter_system(compiled):
-    """The system with symbolic parameters at their defaults (for numeric solving)."""
-    system = compiled.system
-    defaults = {symbol(n): compiled.parameter_values[n] for n in system.parameters}
-    return type(system)(system.unknowns, (), system.inputs,
-                        tuple(sympy.expand(e.xreplace(defaults)) for e in system.equations),
-                        system.nonnegative)
 
 
 def derive(scene, outputs=None, method="resultant", backend="flint", params=(), samples=40, seed=0):
@@ -205,22 +202,11 @@ def derive(scene, outputs=None, method="resultant", backend="flint", params=(), 
     }
     timings["eliminate"] = time.perf_counter() - mark
     mark = time.perf_counter()
-    verification = _verify_fixed(compiled, branches, samples, seed,
+    verification = _verify(compiled, branches, samples, seed,
                                  {u: e.polynomial for u, e in eliminations.items()})
     timings["verify"] = time.perf_counter() - mark
     timings["total"] = time.perf_counter() - start
     return Derivation(compiled, method, backend, eliminations, branches, verification, timings)
-
-
-def _verify_fixed(compiled, branches, samples, seed, polynomials):
-    fixed = type(compiled)(**{**vars(compiled), "system": _fixed_parameter_system(compiled)})
-    return _verify(fixed, branches, samples, seed, polynomials) if samples else _verify_skipped(samples)
-
-
-def _verify_skipped(samples):
-    from .verify import Verification
-
-    return Verification(samples, 0.0, True)
 
 
 def curve(scene, point, method="resultant", backend="flint", params=(), samples=40, seed=0):
@@ -247,7 +233,7 @@ def curve(scene, point, method="resultant", backend="flint", params=(), samples=
     x, y = (symbol(v) for v in variables)
     figures = (sympy.Poly(result.polynomial, x, y).total_degree(), circularity(result.polynomial, x, y))
     mark = time.perf_counter()
-    verification = _verify_fixed(compiled, branches, samples, seed, {"curve": result.polynomial})
+    verification = _verify(compiled, branches, samples, seed, {"curve": result.polynomial})
     timings["verify"] = time.perf_counter() - mark
     timings["total"] = time.perf_counter() - start
     return CurveResult(compiled, point, variables, result, figures[0], figures[1],

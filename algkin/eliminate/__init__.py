@@ -54,6 +54,14 @@ def _lookup(table, kind, name):
     return table[name]
 
 
+def _consistent(engine, polys):
+    """Drop zero polynomials; a non-zero constant means there is no solution at all."""
+    polys = [p for p in polys if not engine.is_zero(p)]
+    if any(not engine.variables(p) for p in polys):
+        raise ComputationError("the equations are inconsistent: elimination reached a non-zero constant")
+    return polys
+
+
 def eliminate(equations, eliminate, keep, method="resultant", backend="flint", witnesses=()):
     """Eliminate the variables ``eliminate`` from ``equations`` (sympy polynomials over QQ).
 
@@ -65,9 +73,8 @@ def eliminate(equations, eliminate, keep, method="resultant", backend="flint", w
     start = time.perf_counter()
     polys = [engine.from_sympy(eq) for eq in equations]
     log, dropped = [], []
-    polys = prepare(engine, polys, list(eliminate), log)
-    left = run(engine, polys, list(eliminate), witnesses, dropped, log)
-    left = [p for p in left if engine.variables(p)]
+    polys = _consistent(engine, prepare(engine, polys, list(eliminate), log))
+    left = _consistent(engine, run(engine, polys, list(eliminate), witnesses, dropped, log))
     if not left:
         raise ComputationError(f"nothing left after eliminating {', '.join(eliminate)}")
     eliminant = left[0]

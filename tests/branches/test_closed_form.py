@@ -1,0 +1,61 @@
+"""Closed forms of random four-bars against hand geometry (law of cosines), by label."""
+
+import math
+
+from hypothesis import given, settings, strategies as st
+
+from algkin.branches import closed_forms
+from algkin.evaluate import FLOAT, evaluate
+from algkin.scene import compile_scene, load_scene_text
+
+FOUR_BAR = """
+[inputs]
+t = {{ range = [0, 360] }}
+[points]
+O = {{ fixed = [0, 0] }}
+D = {{ fixed = ["{ground}", 0] }}
+A = {{ crank = "O", length = "{crank}", input = "t" }}
+B = {{ dyad = ["A", "D"], lengths = ["{coupler}", "{rocker}"], branch = "left" }}
+[outputs]
+B = "B"
+"""
+
+lengths = st.fractions(min_value=1, max_value=20, max_denominator=16).map(str)
+
+
+def by_cosines(crank, ground, coupler, rocker, theta, side):
+    """B from the triangle A, B, D: angle at A by the law of cosines, turned toward `side`."""
+    ax, ay = crank * math.cos(theta), crank * math.sin(theta)
+    dx, dy = ground - ax, -ay
+    dist = math.hypot(dx, dy)
+    if dist < 1e-6:
+        return None
+    cos_a = (coupler**2 + dist**2 - rocker**2) / (2 * coupler * dist)
+    if not -1 < cos_a < 1:
+        return None
+    angle = math.atan2(dy, dx) + (1 if side == "left" else -1) * math.acos(cos_a)
+    return ax + coupler * math.cos(angle), ay + coupler * math.sin(angle)
+
+
+@settings(max_examples=60)
+@given(lengths, lengths, lengths, lengths, st.floats(0, 2 * math.pi))
+def test_branches_match_the_law_of_cosines(crank, ground, coupler, rocker, theta):
+    text = FOUR_BAR.format(crank=crank, ground=ground, coupler=coupler, rocker=rocker)
+    compiled = compile_scene(load_scene_text(text, "four-bar.toml"))
+    values = {"c_t": math.cos(theta), "s_t": math.sin(theta)}
+    dims = [float(eval_fraction(v)) for v in (crank, ground, coupler, rocker)]
+    for branch in closed_forms(compiled):
+        expected = by_cosines(*dims, theta, branch.label)
+        disc = evaluate(branch.discriminants["B"], values, FLOAT)
+        if expected is None or abs(disc) < 1e-6:
+            continue
+        x = evaluate(branch.values["B_x"], values, FLOAT)
+        y = evaluate(branch.values["B_y"], values, FLOAT)
+        scale = sum(dims)
+        assert abs(x - expected[0]) < 1e-7 * scale and abs(y - expected[1]) < 1e-7 * scale
+
+
+def eval_fraction(text):
+    from fractions import Fraction
+
+    return Fraction(text)
