@@ -12,7 +12,7 @@ the one expression, so they are paired by construction.
 >>> [b.label for b in branches]
 ['left', 'right']
 >>> branches[0].values["B_x"]
-c_angle/2 + s_angle*sqrt((20 - 4*c_angle)*(4*c_angle + 5))/(2*(5 - 4*c_angle)) + 1
+c_angle/2 + s_angle*sqrt((5 - 4*c_angle)*(c_angle + 5))/(5 - 4*c_angle) + 1
 """
 
 import itertools

@@ -8,7 +8,7 @@ points (dyads) and the asked-for outputs become unknowns.
 >>> compiled.system.unknowns
 ('AB',)
 >>> compiled.system.equations[0]
-AB**2 + 56000*c_theta + 280000*s_theta - 288900
+AB**2 - 122500*c_theta**2 + 56000*c_theta - 122500*s_theta**2 + 280000*s_theta - 166400
 """
 
 from dataclasses import dataclass
@@ -99,6 +99,7 @@ def _parameter_values(scene, symbolic):
     defaults, substitution = {}, {}
     for name, default in scene.parameters.items():
         defaults[name] = default.xreplace(defaults_subs(defaults, symbols))
+        _check_finite(scene, f"parameters.{name}", defaults[name])
         if name not in symbolic:
             substitution[symbols[name]] = defaults[name]
     return defaults, substitution
@@ -124,11 +125,15 @@ def compile_scene(scene, outputs=None, params=()):
     coords = {}
     for name in points:
         construction = _substituted(scene.points[name], substitution)
+        for value in vars(construction).values():
+            for item in value if isinstance(value, tuple) else (value,):
+                _check_finite(scene, f"points.{name}", item)
         _check_lengths(scene, name, construction)
         coords[name] = tuple(sympy.expand(v) for v in construction.build(name, coords, builder))
     definitions, output_unknowns, nonnegative = _output_equations(outputs, coords, builder)
     equations = [sympy.expand(eq) for eq in builder.equations]
     equations += [c**2 + s**2 - 1 for c, s in inputs.values()]
+    _check_polynomial(scene, equations, symbolic)
     used = set().union(*(eq.free_symbols for eq in equations)) if equations else set()
     system = System(
         unknowns=tuple(str(u) for u in builder.unknowns),
@@ -157,6 +162,27 @@ def _subs(value, substitution):
     if isinstance(value, tuple):
         return tuple(_subs(v, substitution) for v in value)
     return value
+
+
+_NOT_FINITE = (sympy.zoo, sympy.nan, sympy.oo, -sympy.oo)
+
+
+def _check_finite(scene, element, value):
+    """A value that the parameters' defaults turn into 1/0 or sqrt(-1) is a scene error."""
+    if isinstance(value, sympy.Basic) and (
+        value.has(*_NOT_FINITE) or (value.is_number and value.is_real is False)
+    ):
+        raise SceneError(scene.source, element,
+                         f"not a finite real number with the parameters' default values: {value}")
+
+
+def _check_polynomial(scene, equations, symbolic):
+    """A symbolic parameter under a division or sqrt cannot go into a polynomial system."""
+    for eq in equations:
+        if not eq.is_polynomial(*eq.free_symbols):
+            culprits = [p for p in symbolic if not eq.is_polynomial(symbol(p))] or [""]
+            raise UsageError("--param", culprits[0],
+                             f"{scene.source} is not polynomial in it (keep it exact): {eq} = 0")
 
 
 def _check_lengths(scene, name, construction):

@@ -7,7 +7,7 @@
 >>> system.variables
 ('x', 'c', 's')
 >>> system.to_json()["equations"]
-['x**2 - c', 'c**2 + s**2 - 1']
+['-c + x**2', 'c**2 + s**2 - 1']
 """
 
 from dataclasses import dataclass, field
@@ -50,7 +50,7 @@ class System:
             stray = set(variables_of(eq)) - known
             if stray:
                 raise ComputationError(f"equation {eq} uses undeclared variables {sorted(stray)}")
-            gens = [symbol(v) for v in self.variables] or [symbol("_")]
+            gens = sorted(eq.free_symbols, key=str) or [symbol("_")]
             if sympy.Poly(eq, *gens).domain not in (sympy.ZZ, sympy.QQ):
                 raise ComputationError(f"equation {eq} has coefficients outside the rationals")
 
