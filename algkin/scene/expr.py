@@ -21,11 +21,13 @@ from fractions import Fraction
 
 import sympy
 
-__all__ = ["parse", "exact_number", "MAX_EXPRESSION_LENGTH"]
+__all__ = ["parse", "exact_number", "MAX_EXPRESSION_LENGTH", "MAX_NUMBER_BITS"]
 
 MAX_EXPRESSION_LENGTH = 500
 MAX_DEPTH = 40
 MAX_EXPONENT = 64
+MAX_NUMBER_BITS = 1024  # numerators and denominators, about 308 decimal digits
+_MAX_DECIMAL_EXPONENT = 4 * MAX_NUMBER_BITS  # keeps Fraction("1e...") cheap before the bit check
 
 _TOKEN = re.compile(
     r"\s*(?:(?P<num>(?:\d[\d_]*(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)"
@@ -39,11 +41,31 @@ def exact_number(text):
     >>> exact_number("2.5e-1")
     1/4
     """
+    plain = str(text).replace("_", "")
+    _mantissa, _, exponent = plain.lower().partition("e")
     try:
-        value = Fraction(str(text).replace("_", ""))
+        too_far = bool(exponent) and abs(int(exponent)) > _MAX_DECIMAL_EXPONENT
+        value = None if too_far else Fraction(plain)
     except (ValueError, ZeroDivisionError):
         raise ValueError(f"not a finite number: {text!r}") from None
+    if too_far:
+        raise ValueError(f"decimal exponent out of range (at most {_MAX_DECIMAL_EXPONENT}): {text!r}")
+    _check_size(value.numerator, value.denominator)
     return sympy.Rational(value.numerator, value.denominator)
+
+
+def _check_size(numerator, denominator=1):
+    if max(abs(numerator).bit_length(), abs(denominator).bit_length()) > MAX_NUMBER_BITS:
+        raise ValueError(f"number too large or too precise (more than {MAX_NUMBER_BITS} bits)")
+
+
+def _check_result(value):
+    """Bound what a parse may hand on: numbers of at most MAX_NUMBER_BITS, small powers."""
+    for number in value.atoms(sympy.Rational):
+        _check_size(number.p, number.q)
+    for power in value.atoms(sympy.Pow):
+        if power.exp.is_Rational and abs(power.exp) > MAX_EXPONENT:
+            raise ValueError(f"exponent must be of size at most {MAX_EXPONENT}, got {power.exp}")
 
 
 def _tokenize(text):
@@ -117,6 +139,10 @@ class _Parser:
                 )
             if base == 0 and exponent < 0:
                 raise ValueError("division by zero")
+            if base.is_Rational:  # check before computing: (2**64)**64... grows fast
+                bits = max(base.p.bit_length(), base.q.bit_length()) * abs(int(exponent))
+                if bits > MAX_NUMBER_BITS + abs(int(exponent)):
+                    raise ValueError(f"number too large or too precise (more than {MAX_NUMBER_BITS} bits)")
             return base**exponent
         return base
 
@@ -166,6 +192,7 @@ def parse(text, names=None):
     if isinstance(text, bool):
         raise ValueError(f"expected a number or expression, got {text!r}")
     if isinstance(text, int):
+        _check_size(text)
         return sympy.Integer(text)
     if not isinstance(text, str):
         raise ValueError(f"expected a number or expression, got {type(text).__name__}")
@@ -174,8 +201,10 @@ def parse(text, names=None):
     tokens = _tokenize(text)
     if not tokens:
         raise ValueError("empty expression")
-    parser = _Parser(tokens, names or {})
+    # strict: values are numbers or symbols; a string value would be eval-ed, so it is refused
+    parser = _Parser(tokens, {k: sympy.sympify(v, strict=True) for k, v in (names or {}).items()})
     value = parser.expr()
     if parser.pos != len(tokens):
         raise ValueError(f"unexpected {parser.peek()[1]!r} after a complete expression")
+    _check_result(value)
     return value

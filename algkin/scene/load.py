@@ -78,6 +78,10 @@ def load_scene_text(text, source="<scene>"):
         data = tomllib.loads(text, parse_float=_FloatText)
     except tomllib.TOMLDecodeError as err:
         raise SceneError(source, "", f"TOML syntax error: {err}") from None
+    except ValueError as err:  # tomllib's own int(): more digits than Python converts
+        raise SceneError(source, "", f"TOML value not readable: {str(err).split(';')[0]}") from None
+    except RecursionError:
+        raise SceneError(source, "", "TOML nested too deeply") from None
     return _Loader(source).scene(data)
 
 

@@ -1,0 +1,136 @@
+"""Bad scene files (SPEC §7) through the real command line: exit 2, one line, nothing run.
+
+Each file in ``bad/`` starts with ``# expect: a | b | ...``: words that the error line
+must contain (the element and what is wrong), besides the file's own name.
+"""
+
+import os
+import subprocess
+import sys
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+import pytest
+
+from algkin.scene.load import MAX_SCENE_BYTES
+
+ROOT = Path(__file__).resolve().parents[2]
+BAD = Path(__file__).resolve().parent / "bad"
+FILES = sorted(BAD.glob("*.toml"))
+
+# One file at least for each class that SPEC §7 names.
+CLASSES = {
+    "syntax_error.toml", "unknown_point.toml", "cycle.toml", "missing_input.toml",
+    "negative_length.toml", "zero_length.toml", "never_assembles.toml",
+    "expression_import.toml", "expression_call.toml", "unknown_top_key.toml",
+    "bad_branch.toml",
+}  # plus the oversized file, generated below
+
+
+def run_cli(args, cwd, timeout=120):
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    return subprocess.run(
+        [sys.executable, "-m", "algkin", *map(str, args)],
+        cwd=cwd, env=env, capture_output=True, text=True, timeout=timeout,
+    )
+
+
+def expectations(path):
+    first = path.read_text(encoding="utf-8").splitlines()[0]
+    assert first.startswith("# expect:"), f"{path.name} must start with '# expect: ...'"
+    return [word.strip() for word in first[len("# expect:"):].split("|") if word.strip()]
+
+
+def assert_refused(result, path, words, workdir):
+    assert result.returncode == 2, (result.returncode, result.stderr[-2000:])
+    assert result.stdout == ""
+    assert "Traceback" not in result.stderr
+    lines = result.stderr.splitlines()
+    assert len(lines) == 1, result.stderr
+    line = lines[0]
+    assert path.name in line, line
+    for word in words:
+        assert word.lower() in line.lower(), (word, line)
+    assert sorted(os.listdir(workdir)) == [], "the command wrote into its working directory"
+    for place in (workdir, workdir.parent, path.parent, ROOT):
+        assert not (place / "PWNED").exists()
+
+
+def test_every_class_has_a_file():
+    assert CLASSES <= {f.name for f in FILES}
+
+
+@pytest.fixture(scope="module")
+def derived(tmp_path_factory):
+    """``derive`` on every bad file, run a few at a time in the background; one empty
+    working directory each. Maps a file to a future (result, workdir)."""
+
+    def one(path, workdir):
+        return run_cli(["derive", path], workdir), workdir
+
+    # mktemp is not thread-safe: make the directories here, run in the pool
+    workdirs = {path: tmp_path_factory.mktemp(f"cwd-{path.stem}") for path in FILES}
+    with ThreadPoolExecutor(max_workers=max(2, os.cpu_count() or 1)) as pool:
+        yield {path: pool.submit(one, path, workdirs[path]) for path in FILES}
+
+
+@pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])
+def test_bad_scene_is_refused(path, derived):
+    result, workdir = derived[path].result()
+    assert_refused(result, path, expectations(path), workdir)
+
+
+@pytest.mark.parametrize("command", ["show", "curve"])
+def test_other_commands_refuse_too(command, tmp_path):
+    workdir = tmp_path / "cwd"
+    workdir.mkdir()
+    path = BAD / "expression_import.toml"
+    args = [command, path] + (["--point", "A"] if command == "curve" else [])
+    assert_refused(run_cli(args, workdir), path, expectations(path), workdir)
+
+
+def test_never_assembles_is_refused_by_curve(tmp_path):
+    workdir = tmp_path / "cwd"
+    workdir.mkdir()
+    path = BAD / "never_assembles.toml"
+    result = run_cli(["curve", path, "--point", "C"], workdir)
+    assert_refused(result, path, ["points.C", "assemble"], workdir)
+
+
+def test_oversized_file_is_refused(tmp_path):
+    scenes = tmp_path / "scenes"
+    scenes.mkdir()
+    path = scenes / "oversized.toml"
+    body = '[points]\nO = { fixed = [0, 0] }\n\n[outputs]\nO = "O"\n'
+    padding = "# padding padding padding padding padding padding padding padding\n"
+    path.write_text(body + padding * (MAX_SCENE_BYTES // len(padding) + 2), encoding="utf-8")
+    assert path.stat().st_size > MAX_SCENE_BYTES
+    workdir = tmp_path / "cwd"
+    workdir.mkdir()
+    result = run_cli(["derive", path], workdir)
+    assert_refused(result, path, ["larger", str(MAX_SCENE_BYTES)], workdir)
+
+
+def test_file_that_is_not_text_is_refused(tmp_path):
+    scenes = tmp_path / "scenes"
+    scenes.mkdir()
+    path = scenes / "binary.toml"
+    path.write_bytes(b"\xff\xfe\x00[points]")
+    workdir = tmp_path / "cwd"
+    workdir.mkdir()
+    assert_refused(run_cli(["derive", path], workdir), path, ["UTF-8"], workdir)
+
+
+def test_parameter_that_cannot_stay_symbolic(tmp_path):
+    # With --param a the point O = (1/(a - 400), 0) is rational in a, not polynomial.
+    scenes = tmp_path / "scenes"
+    scenes.mkdir()
+    path = scenes / "rational_in_param.toml"
+    path.write_text(
+        '[parameters]\na = 400\n[inputs]\nt = {}\n[points]\nO = { fixed = ["1/(a - 401)", 0] }\n'
+        'A = { crank = "O", length = 1, input = "t" }\n[outputs]\nd = "A.x"\n',
+        encoding="utf-8",
+    )
+    workdir = tmp_path / "cwd"
+    workdir.mkdir()
+    assert_refused(run_cli(["derive", path, "--param", "a"], workdir), path, ["--param", "'a'"], workdir)

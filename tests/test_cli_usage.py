@@ -1,0 +1,134 @@
+"""The command line's contract (SPEC §3): bad arguments exit 2 with one line on stderr;
+``--json`` is one JSON document; a scene compiles only what the asked-for outputs need."""
+
+import json
+import math
+import os
+import subprocess
+import sys
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+import pytest
+import sympy
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def run_cli(args, cwd, timeout=120):
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    return subprocess.run(
+        [sys.executable, "-m", "algkin", *args],
+        cwd=cwd, env=env, capture_output=True, text=True, timeout=timeout,
+    )
+
+
+# (arguments, words the one error line must contain)
+BAD_USAGE = {
+    "unknown-subcommand": (["frobnicate", "chebyshev-lambda"], ["frobnicate"]),
+    "unknown-method": (["derive", "chebyshev-lambda", "--method", "magic"], ["method", "magic"]),
+    "unknown-backend": (["derive", "chebyshev-lambda", "--backend", "abacus"], ["backend", "abacus"]),
+    "unknown-param": (["derive", "arm-string", "--param", "zz"], ["--param", "zz"]),
+    "unknown-point": (["curve", "chebyshev-lambda", "--point", "Q"], ["--point", "'Q'"]),
+    "point-missing": (["curve", "chebyshev-lambda"], ["--point"]),
+    "unknown-scene": (["show", "no-such-scene"], ["no-such-scene"]),
+    "unknown-output": (["show", "arm-string", "--outputs", "dist(A, Z)"], ["--outputs", "'Z'"]),
+    "no-command": ([], ["command"]),
+    "bad-samples": (["derive", "chebyshev-lambda", "--samples", "many"], ["--samples", "many"]),
+}
+
+GOOD = {
+    "list": ["list", "--json"],
+    "show-arm": ["show", "arm-string", "--outputs", "AB", "--json"],
+    "show-lambda": ["show", "chebyshev-lambda", "--outputs", "B", "--json"],
+}
+
+
+@pytest.fixture(scope="module")
+def runs(tmp_path_factory):
+    """Every command of this file, run in the background, each in an empty directory."""
+
+    def one(args, workdir):
+        return run_cli(args, workdir), workdir
+
+    jobs = {k: a for k, (a, _) in BAD_USAGE.items()} | GOOD
+    # mktemp is not thread-safe: make the directories here, run in the pool
+    workdirs = {k: tmp_path_factory.mktemp(f"cwd-{k}") for k in jobs}
+    with ThreadPoolExecutor(max_workers=max(2, os.cpu_count() or 1)) as pool:
+        yield {k: pool.submit(one, a, workdirs[k]) for k, a in jobs.items()}
+
+
+@pytest.mark.parametrize("key", list(BAD_USAGE))
+def test_bad_usage_exits_2_with_one_line(key, runs):
+    result, workdir = runs[key].result()
+    assert result.returncode == 2, (result.returncode, result.stderr[-2000:])
+    assert result.stdout == ""
+    assert "Traceback" not in result.stderr
+    lines = result.stderr.splitlines()
+    assert len(lines) == 1, result.stderr
+    for word in BAD_USAGE[key][1]:
+        assert word in lines[0], (word, lines[0])
+    assert os.listdir(workdir) == []
+
+
+def good_json(runs, key):
+    result, workdir = runs[key].result()
+    assert result.returncode == 0, result.stderr
+    assert os.listdir(workdir) == []
+    return json.loads(result.stdout)  # the whole of stdout is one JSON document
+
+
+def test_list_json_has_both_catalog_scenes(runs):
+    document = good_json(runs, "list")
+    names = {scene["name"] for scene in document["scenes"]}
+    assert {"arm-string", "chebyshev-lambda"} <= names
+    assert all(isinstance(s["description"], str) and s["description"] for s in document["scenes"])
+
+
+def system_symbols(system):
+    """Every variable name the system mentions, from its lists and its equation strings."""
+    names = set(system["unknowns"]) | set(system["parameters"])
+    for pair in system["inputs"].values():
+        names |= {pair["cos"], pair["sin"]}
+    for equation in system["equations"]:
+        names |= {str(s) for s in sympy.parse_expr(equation).free_symbols}
+    return names
+
+
+def residuals(system, values):
+    return [float(sympy.parse_expr(eq).subs(values)) for eq in system["equations"]]
+
+
+def test_show_ab_leaves_out_the_centre_of_gravity(runs):
+    document = good_json(runs, "show-arm")
+    system = document["system"]
+    names = system_symbols(system)
+    assert not [n for n in names if n.startswith("G_")], names
+    assert names == {"AB", "c_theta", "s_theta"}
+    # By hand: A = 350 (sin t, -cos t), B = (400, -80), AB = |B - A|.
+    for degrees in (0, 37, 90, 150):
+        t = math.radians(degrees)
+        ab = math.hypot(400 - 350 * math.sin(t), -80 + 350 * math.cos(t))
+        values = {"AB": ab, "c_theta": math.cos(t), "s_theta": math.sin(t)}
+        assert all(abs(r) < 1e-6 for r in residuals(system, values))
+        values["AB"] = ab + 1
+        assert any(abs(r) > 1 for r in residuals(system, values))
+
+
+def test_show_b_leaves_out_the_coupler_point(runs):
+    document = good_json(runs, "show-lambda")
+    system = document["system"]
+    names = system_symbols(system)
+    assert "P_x" not in names and "P_y" not in names, names
+    assert names == {"B_x", "B_y", "c_angle", "s_angle"}
+    # By hand: A = (cos t, sin t), D = (2, 0), |AB| = |DB| = 5/2; B is A->D's midpoint
+    # moved along the normal by h = sqrt((5/2)**2 - (|AD|/2)**2) (either side solves).
+    for degrees in (0, 60, 200):
+        t = math.radians(degrees)
+        ax, ay = math.cos(t), math.sin(t)
+        dx, dy = 2 - ax, -ay
+        d = math.hypot(dx, dy)
+        h = math.sqrt(2.5**2 - (d / 2) ** 2)
+        bx, by = ax + dx / 2 - h * dy / d, ay + dy / 2 + h * dx / d
+        values = {"B_x": bx, "B_y": by, "c_angle": ax, "s_angle": ay}
+        assert all(abs(r) < 1e-9 for r in residuals(system, values))
