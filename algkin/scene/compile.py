@@ -11,6 +11,7 @@ points (dyads) and the asked-for outputs become unknowns.
 AB**2 - 122500*c_theta**2 + 56000*c_theta - 122500*s_theta**2 + 280000*s_theta - 166400
 """
 
+import dataclasses
 from dataclasses import dataclass
 
 import sympy
@@ -58,7 +59,7 @@ def _resolve_outputs(scene, requested):
             continue
         output = parse_output(text, text, scene.points, scene.source, "--outputs")
         if output.kind == "dist":
-            output = type(output)(f"dist_{output.points[0]}_{output.points[1]}", *list(vars(output).values())[1:])
+            output = dataclasses.replace(output, name=f"dist_{output.points[0]}_{output.points[1]}")
         outputs.append(output)
     if not outputs:
         raise SceneError(scene.source, "outputs", "the scene has no outputs; name some with --outputs")
