@@ -15,7 +15,7 @@ __all__ = [
     "compile_scene",
     "derive",
     "curve",
-    "verify",
+    "extremum",
     "catalog_names",
     "AlgkinError",
 ]
@@ -26,8 +26,12 @@ from .scene import catalog_names, compile_scene, load_scene
 
 def __getattr__(name):
     # The pipeline pulls in the elimination and verification layers: load on first use.
-    if name in ("derive", "curve", "verify"):
+    if name in ("derive", "curve"):
         from . import pipeline
 
         return getattr(pipeline, name)
+    if name == "extremum":
+        from .extremum import extremum
+
+        return extremum
     raise AttributeError(f"module 'algkin' has no attribute {name!r}")

@@ -48,7 +48,39 @@ def build_parser():
     verify = commands.add_parser("verify", help="closed forms against independent numeric solutions")
     _common(verify)
     verify.add_argument("--outputs", nargs="+")
+    extremum = commands.add_parser("extremum", help="stationary points of an output over the input")
+    extremum.add_argument("scene")
+    extremum.add_argument("--of", required=True, help="a scalar output: distance or coordinate")
+    extremum.add_argument("--range", help="lo:hi in the input's unit")
+    extremum.add_argument("--json", action="store_true")
     return parser
+
+
+def _range(text):
+    try:
+        lo, hi = (float(v) for v in text.split(":"))
+    except ValueError:
+        raise UsageError("--range", text, "expected lo:hi, e.g. 0:180") from None
+    if not lo < hi:
+        raise UsageError("--range", text, "lo must be below hi")
+    return lo, hi
+
+
+def _cmd_extremum(args):
+    from .extremum import extremum
+
+    result = extremum(args.scene, args.of, _range(args.range) if args.range else None)
+    _emit(args, result.to_json(), _report_extremum)
+    return 0
+
+
+def _report_extremum(d):
+    lines = [f"{d['of']} of {d['scene']} over {d['input']} in [{d['range'][0]}, {d['range'][1]}]:"]
+    lines += [f"  {p['kind']:10} {p['value']:.12g} at {p['enclosure_deg']} deg" for p in d["critical_points"]]
+    for key in ("minimum", "maximum"):
+        p = d[key]
+        lines.append(f"{key}: {p['value']:.12g} at {p['input_deg']:.10g} deg ({p['kind']})")
+    return "\n".join(lines)
 
 
 def _emit(args, document, report):
@@ -164,7 +196,7 @@ def _cmd_verify(args):
 
 
 COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
-            "verify": _cmd_verify}
+            "verify": _cmd_verify, "extremum": _cmd_extremum}
 
 
 def main(argv=None):
