@@ -1,8 +1,5 @@
-import os
-
 from hypothesis import settings
 
+# Property tests run algebra of varying cost: no per-example deadline, reproducible blobs.
 settings.register_profile("ci", deadline=None, print_blob=True)
 settings.load_profile("ci")
-
-SEEDS = os.path.join(os.path.dirname(__file__), "..", "..", "shared", "seeds")
