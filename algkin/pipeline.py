@@ -179,17 +179,23 @@ def _verify(compiled, branches, samples, seed, polynomials):
     )
 
 
-def derive(scene, outputs=None, method="resultant", backend="flint", params=(), samples=40, seed=0):
-    """Eliminants, closed-form branches and their verification for ``outputs`` of ``scene``."""
-    timings = {}
+def _compile_and_branch(scene, outputs, params):
+    """The stages derive and curve share: compile, closed forms, assembly check, witnesses."""
     start = time.perf_counter()
-    compiled = compile_scene(_scene(scene), outputs, params)
-    timings["compile"] = time.perf_counter() - start
+    compiled = compile_scene(scene, outputs, params)
+    timings = {"compile": time.perf_counter() - start}
     mark = time.perf_counter()
     branches = closed_forms(compiled)
     check_assembly(compiled, branches)
     groups = witnesses(compiled, branches)
     timings["branches"] = time.perf_counter() - mark
+    return compiled, branches, groups, timings
+
+
+def derive(scene, outputs=None, method="resultant", backend="flint", params=(), samples=40, seed=0):
+    """Eliminants, closed-form branches and their verification for ``outputs`` of ``scene``."""
+    start = time.perf_counter()
+    compiled, branches, groups, timings = _compile_and_branch(_scene(scene), outputs, params)
     mark = time.perf_counter()
     system = compiled.system
     unknown_symbols = {symbol(u) for u in system.unknowns}
@@ -203,7 +209,7 @@ def derive(scene, outputs=None, method="resultant", backend="flint", params=(), 
     timings["eliminate"] = time.perf_counter() - mark
     mark = time.perf_counter()
     verification = _verify(compiled, branches, samples, seed,
-                                 {u: e.polynomial for u, e in eliminations.items()})
+                           {u: e.polynomial for u, e in eliminations.items()})
     timings["verify"] = time.perf_counter() - mark
     timings["total"] = time.perf_counter() - start
     return Derivation(compiled, method, backend, eliminations, branches, verification, timings)
@@ -214,15 +220,8 @@ def curve(scene, point, method="resultant", backend="flint", params=(), samples=
     scene = _scene(scene)
     if point not in scene.points:
         raise UsageError("--point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
-    timings = {}
     start = time.perf_counter()
-    compiled = compile_scene(scene, [point], params)
-    timings["compile"] = time.perf_counter() - start
-    mark = time.perf_counter()
-    branches = closed_forms(compiled)
-    check_assembly(compiled, branches)
-    groups = witnesses(compiled, branches)
-    timings["branches"] = time.perf_counter() - mark
+    compiled, branches, groups, timings = _compile_and_branch(scene, [point], params)
     mark = time.perf_counter()
     system = compiled.system
     variables = (f"{point}_x", f"{point}_y")
