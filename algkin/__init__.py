@@ -11,6 +11,7 @@ True
 __version__ = "0.1.0"
 
 __all__ = [
+    "load",
     "load_scene",
     "compile_scene",
     "derive",
@@ -34,4 +35,8 @@ def __getattr__(name):
         from .extremum import extremum
 
         return extremum
+    if name == "load":
+        from .mechanism import load
+
+        return load
     raise AttributeError(f"module 'algkin' has no attribute {name!r}")

@@ -52,7 +52,17 @@ def build_parser():
     extremum.add_argument("scene")
     extremum.add_argument("--of", required=True, help="a scalar output: distance or coordinate")
     extremum.add_argument("--range", help="lo:hi in the input's unit")
+    extremum.add_argument("--param", action="append", default=[],
+                          help="keep this dimension symbolic: the minimum as a closed form in it")
     extremum.add_argument("--json", action="store_true")
+    plot = commands.add_parser("plot", help="figures: a quantity against the input, its derivative, "
+                                            "its minimum against a dimension")
+    plot.add_argument("scene")
+    plot.add_argument("--of", required=True, help="a scalar output: distance or coordinate")
+    plot.add_argument("--out", required=True, help="the file to write: .png, .svg or .pdf")
+    plot.add_argument("--range", help="lo:hi of the input, in its unit")
+    plot.add_argument("--derivative", action="store_true", help="the slope, with its zero marked")
+    plot.add_argument("--against", help="p=lo:hi: the minimum against the dimension p")
     return parser
 
 
@@ -69,18 +79,79 @@ def _range(text):
 def _cmd_extremum(args):
     from .extremum import extremum
 
-    result = extremum(args.scene, args.of, _range(args.range) if args.range else None)
+    result = extremum(args.scene, args.of, _range(args.range) if args.range else None, params=args.param)
     _emit(args, result.to_json(), _report_extremum)
     return 0
 
 
 def _report_extremum(d):
-    lines = [f"{d['of']} of {d['scene']} over {d['input']} in [{d['range'][0]}, {d['range'][1]}]:"]
+    dims = ", ".join(f"{n} = {v}" for n, v in d["parameters"].items())
+    lines = [f"{d['of']} of {d['scene']} over {d['input']} in [{d['range'][0]:g}, {d['range'][1]:g}] deg"
+             + (f" (at {dims})" if dims else "") + ":"]
     lines += [f"  {p['kind']:10} {p['value']:.12g} at {p['enclosure_deg']} deg" for p in d["critical_points"]]
+    lines += [f"  {'end':10} {p['value']:.12g} at {p['input_deg']:g} deg" for p in d["endpoints"]]
     for key in ("minimum", "maximum"):
         p = d[key]
-        lines.append(f"{key}: {p['value']:.12g} at {p['input_deg']:.10g} deg ({p['kind']})")
+        lines.append(f"{key}: {p['value']:.12g} at {p['input_deg']:.12g} deg ({p['kind']})")
+    if "closed_form" in d:
+        lines += _report_closed_form(d["closed_form"], d["input"])
     return "\n".join(lines)
+
+
+def _report_closed_form(form, name):
+    lines = ["minimum as a closed form:",
+             f"  value = {form['value']}",
+             f"  {name} = {form['input']} deg" + ("  (a range end)" if form["at"] == "endpoint" else ""),
+             "  holds for " + " or ".join(form["valid_when"]) if form["regions"]
+             else "  holds where " + " and ".join(form["valid_when"]) + " (the defaults' cell)"]
+    if len(form["regions"]) > 1:
+        lines.append("  elsewhere:")
+        for region in form["regions"]:
+            where = _interval(region)
+            what = "the minimiser leaves the range; the minimum is at the end" if region["at"] == "endpoint" \
+                else "stationary"
+            lines.append(f"    {where}: {what} {name} = {region['input']} deg, value {region['value']}")
+    return lines
+
+
+def _interval(region):
+    lo, hi = region["from"], region["to"]
+    return f"({'-oo' if lo is None else f'{lo:.12g}'}, {'oo' if hi is None else f'{hi:.12g}'})"
+
+
+def _cmd_plot(args):
+    import pathlib
+
+    from .plot import FORMATS
+
+    out = pathlib.Path(args.out)
+    if out.suffix.lower() not in FORMATS:
+        raise UsageError("--out", args.out, f"unknown figure format; valid: {', '.join(FORMATS)}")
+    if not out.parent.is_dir():
+        raise UsageError("--out", args.out, "its directory does not exist")
+    if args.against and args.derivative:
+        raise UsageError("--against", args.against, "draws the minimum; leave out --derivative")
+    against = _against(args.against) if args.against else None
+    from .mechanism import load
+    from .plot import minimum_figure, quantity_figure, save
+
+    quantity = load(args.scene, [against[0]] if against else []).output(args.of)
+    found = quantity.extremum(_range(args.range) if args.range else None)
+    figure = minimum_figure(quantity, found, *against) if against else \
+        quantity_figure(quantity, found, derivative=args.derivative)
+    print(save(figure, out))
+    return 0
+
+
+def _against(text):
+    name, _, span = text.partition("=")
+    try:
+        lo, hi = _range(span)
+    except UsageError:
+        raise UsageError("--against", text, "expected p=lo:hi, e.g. b=-400:400") from None
+    if not name.isidentifier():
+        raise UsageError("--against", text, "expected p=lo:hi, e.g. b=-400:400")
+    return name, lo, hi
 
 
 def _emit(args, document, report):
@@ -196,7 +267,7 @@ def _cmd_verify(args):
 
 
 COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
-            "verify": _cmd_verify, "extremum": _cmd_extremum}
+            "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot}
 
 
 def main(argv=None):

@@ -5,6 +5,8 @@ import math
 import subprocess
 import sys
 
+import flint
+
 
 def run(*args):
     out = subprocess.run([sys.executable, "-m", "algkin", *args], capture_output=True, text=True)
@@ -25,7 +27,28 @@ def test_minimum_of_ab_by_hand():
     assert abs(d["maximum"]["value"] - math.hypot(400, 350 + 80)) < 1e-9
     assert d["maximum"]["kind"] == "endpoint"
     (point,) = d["critical_points"]
-    assert "+/-" in point["enclosure_deg"]
+    # The certified enclosure holds the exact minimiser, atan2(400, 80) in degrees.
+    with flint.ctx.workprec(200):
+        exact = flint.arb(5).atan() * 180 / flint.arb.pi()
+        assert flint.arb(point["enclosure_deg"]).overlaps(exact)
+        assert flint.arb(point["enclosure_deg"]).rad() < 1e-15
+
+
+def test_closed_forms_from_the_command_line():
+    code, out, err = run("extremum", "arm-string", "--of", "AB", "--param", "b", "--json")
+    assert code == 0, err
+    form = json.loads(out)["closed_form"]
+    assert form["value"] == "sqrt(b**2 + 160000) - 350"
+    assert set(form) >= {"value", "input", "valid_when", "regions"}
+    code, out, err = run("extremum", "arm-string", "--of", "AB", "--param", "a", "--param", "b")
+    assert code == 0, err
+    assert "value = sqrt(a**2 + b**2) - 350" in out
+
+
+def test_minimiser_leaving_the_range_is_said():
+    code, out, err = run("extremum", "arm-string", "--of", "AB", "--param", "b", "--range", "0:90")
+    assert code == 0, err
+    assert "(-oo, 0): the minimiser leaves the range; the minimum is at the end theta = 90 deg" in out
 
 
 def test_bad_range_is_exit_2():

@@ -1,0 +1,281 @@
+"""The minimum (or maximum) as a closed form in symbolic dimensions, and where it holds.
+
+At a parameter point the certified critical points give the minimiser. The factor of
+the stationary polynomial that vanishes there is solved in radicals for
+``t = tan(theta/2)``, and the factor of the *value polynomial* (the resultant in ``t``)
+for the value; of their roots, the one equal to the certified minimiser is kept, its
+square roots denested.
+
+What the minimum is can only change where an *event polynomial* in the parameters
+vanishes: a critical point crosses a range end, appears or leaves the reals
+(discriminants, leading coefficients), or two candidate values meet (resultants of their
+value polynomials, range ends included). With one parameter their certified real roots
+cut the line into intervals; each interval is described at a rational point inside it,
+so the answer says where the minimiser leaves the range and what the minimum is there.
+With more parameters the answer holds where every event polynomial keeps its sign at
+the defaults (in the cell of the defaults).
+"""
+
+from dataclasses import dataclass
+from fractions import Fraction
+import itertools
+
+import flint
+import mpmath
+import sympy
+
+from ..eliminate import eliminate
+from .critical import DIGITS, ROOT_BITS, critical_points, extreme, real_roots
+
+__all__ = ["ClosedForm", "closed_form", "value_factors"]
+
+MATCH = mpmath.mpf(10) ** -20
+
+
+@dataclass
+class ClosedForm:
+    """The extremum in the parameters: value and input (degrees), and where that holds."""
+
+    value: sympy.Expr
+    input: sympy.Expr  # degrees; None when the root has no expression in radicals
+    at: str  # 'stationary' or 'endpoint'
+    input_polynomial: sympy.Expr  # in t = tan(input/2); None at an endpoint
+    valid_when: list  # strings in sympy syntax
+    regions: list  # one parameter: [{from, to, at, input, value}], else []
+
+    def to_json(self):
+        return {"value": _text(self.value), "input": _text(self.input), "at": self.at,
+                "input_polynomial": _text(self.input_polynomial), "valid_when": self.valid_when,
+                "regions": self.regions}
+
+
+def _text(expr):
+    return None if expr is None else str(expr)
+
+
+def value_factors(problem, backend="flint"):
+    """Factors, in ``u`` and the parameters, of the resultant in ``t`` of ``F`` and ``dF/dtheta``."""
+    names = [p.name for p in problem.parameters]
+    factors = eliminate(problem.half_angle(), [problem.t.name], [problem.u.name] + names,
+                        method="resultant", backend=backend).factors
+    return [f for f in factors if f.has(problem.u)]
+
+
+def _numeric(expr, values):
+    """``expr`` at rational parameter ``values``, as an mpmath complex (40 digits)."""
+    number = sympy.N(expr.xreplace(values), DIGITS)
+    if not number.is_finite:
+        return mpmath.mpc(mpmath.nan)
+    real, imag = number.as_real_imag()
+    return mpmath.mpc(mpmath.mpf(str(real)), mpmath.mpf(str(imag)))
+
+
+def _matching_factor(factors, variable, target, values):
+    """The factor (in ``variable``) that vanishes at the number ``target`` for ``values``."""
+    best = None
+    for factor in factors:
+        if not factor.has(variable):
+            continue
+        poly = sympy.Poly(factor.xreplace(values), variable)
+        scale = sum(abs(mpmath.mpf(sympy.N(c, DIGITS))) * abs(target) ** k
+                    for k, c in enumerate(reversed(poly.all_coeffs())))
+        residual = abs(mpmath.polyval([mpmath.mpf(sympy.N(c, DIGITS)) for c in poly.all_coeffs()], target))
+        if scale and residual <= MATCH * scale and (best is None or residual / scale < best[0]):
+            best = (residual / scale, factor)
+    return None if best is None else best[1]
+
+
+def _root_matching(factor, variable, target, values):
+    """The root of ``factor`` in radicals equal to ``target`` at ``values``, denested."""
+    if factor is None or sympy.degree(factor, variable) > 4:
+        return None
+    candidates = []
+    for root in sympy.roots(sympy.Poly(factor, variable)):
+        for form in {root, sympy.sqrtdenest(root), sympy.radsimp(root)}:
+            if abs(_numeric(form, values) - target) <= MATCH * (1 + abs(target)):
+                candidates.append(form)
+    return min(candidates, key=sympy.count_ops, default=None)
+
+
+def _exact_degrees(value):
+    return sympy.Rational(mpmath.nstr(value, 15))
+
+
+def _at_angle(problem, degrees, values):
+    """The closed form at an exact angle, tidied (denested when that is shorter and equal)."""
+    angle = sympy.pi * degrees / 180
+    raw = problem.closed.xreplace({problem.c: sympy.cos(angle), problem.s: sympy.sin(angle)})
+    target = _numeric(raw, values)
+    forms = [f for f in (raw, sympy.sqrtdenest(raw), sympy.radsimp(raw), sympy.factor(raw))
+             if abs(_numeric(f, values) - target) <= MATCH * (1 + abs(target))]
+    return min(forms, key=sympy.count_ops)
+
+
+@dataclass(frozen=True)
+class Description:
+    """What the extremum is at one parameter point, and the polynomials that pin it down."""
+
+    at: str  # 'stationary' or 'endpoint'
+    input: sympy.Expr  # degrees, None without radicals
+    value: sympy.Expr
+    input_factor: sympy.Expr  # the stationary factor in t it is a root of; None at an end
+    value_factor: sympy.Expr  # the polynomial in u its value is a root of
+
+
+def describe(problem, stationary, values_factors, values, best):
+    """The closed form, in the parameters, of the certified extremum ``best`` at ``values``."""
+    turn = 360 * mpmath.floor((best.input_deg + 180) / 360)
+    if best.kind == "endpoint" or abs(best.input_deg - turn + 180) < MATCH:  # t at infinity
+        degrees = _exact_degrees(best.input_deg)
+        end_value = _at_end(degrees, problem.t)(problem.numerator_in_t(problem.eliminant))
+        return Description("endpoint" if best.kind == "endpoint" else "stationary", degrees,
+                           _at_angle(problem, degrees, values), None, end_value)
+    t_star = mpmath.tan(mpmath.radians(best.input_deg) / 2)
+    factor = _matching_factor(stationary, problem.t, t_star, values)
+    root = _root_matching(factor, problem.t, t_star, values)
+    degrees = None if root is None else 360 * sympy.atan(root) / sympy.pi + int(turn)
+    u_factor = _matching_factor(values_factors, problem.u, best.value, values)
+    value = _root_matching(u_factor, problem.u, best.value, values)
+    if value is None and root is not None:
+        value = sympy.sqrtdenest(problem.closed.xreplace(
+            {problem.c: (1 - root**2) / (1 + root**2), problem.s: 2 * root / (1 + root**2)}))
+    return Description("stationary", degrees, value, factor, u_factor)
+
+
+def event_polynomials(problem, stationary, values_factors, ends, own=None):
+    """Polynomials in the parameters whose zeros are the only places the extremum can change.
+
+    With ``own`` (a ``Description``), only the events of that extremum: its critical point
+    crossing a range end or leaving the reals, its value meeting another candidate's.
+    """
+    t, u = problem.t, problem.u
+    eliminant = problem.numerator_in_t(problem.eliminant)
+    end_values = [_at_end(end, t)(eliminant) for end in ends]
+    moving = stationary if own is None else [f for f in (own.input_factor,) if f is not None]
+    events = [_at_end(end, t)(f) for end in ends for f in moving if f.has(t)]
+    for factor in moving:
+        if sympy.degree(factor, t) >= 1:
+            events += [sympy.discriminant(factor, t), sympy.Poly(factor, t).LC()]
+    candidates = [v for v in values_factors + end_values if v.has(u)]
+    valued = candidates if own is None else [own.value_factor]
+    for factor in valued:
+        events += [sympy.discriminant(factor, u), sympy.Poly(factor, u).LC()]
+    events += [sympy.resultant(f, g, u) for f, g in itertools.combinations(candidates, 2)
+               if own is None or own.value_factor in (f, g)]
+    return _event_factors(events, problem.parameters)
+
+
+def _at_end(end, t):
+    """A polynomial in ``t`` -> one without it that vanishes where it vanishes at the angle ``end``.
+
+    180 degrees is ``t`` at infinity: the leading coefficient. Otherwise the resultant
+    with the minimal polynomial of ``tan(end/2)`` (linear at multiples of 90 degrees).
+    """
+    half_turns = sympy.Rational(end) / 360
+    if half_turns.q == 2:
+        return lambda poly: sympy.Poly(poly, t).LC()
+    minimal = sympy.minimal_polynomial(sympy.tan(sympy.pi * half_turns), t)
+    return lambda poly: sympy.resultant(poly, minimal, t)
+
+
+def _event_factors(events, parameters):
+    """Distinct irreducible factors, in the parameters, of the events, minus the sign-definite ones."""
+    found = []
+    for event in events:
+        event = sympy.expand(event)
+        if event == 0 or not event.free_symbols & set(parameters):
+            continue
+        for factor, _ in sympy.factor_list(event)[1]:
+            factor = sympy.expand(factor)
+            if factor.free_symbols and not _sign_definite(factor, parameters):
+                if not any(sympy.expand(factor - g) == 0 or sympy.expand(factor + g) == 0 for g in found):
+                    found.append(factor)
+    return found
+
+
+def _sign_definite(poly, parameters):
+    """Even powers only, coefficients of one sign: it cannot change sign (zero on a set of no extent)."""
+    terms = sympy.Poly(poly, *parameters).terms()
+    sign = 1 if terms[0][1] > 0 else -1
+    return all(all(e % 2 == 0 for e in monomial) and sign * c > 0 for monomial, c in terms)
+
+
+def closed_form(problem, stationary, defaults, lo, hi, largest=False):
+    """The extremum of ``problem`` (parameters symbolic) over ``[lo, hi]`` degrees as a closed form."""
+    values_factors = value_factors(problem)
+
+    def extremum_at(values):
+        fixed = problem.at(values)
+        factors = [sympy.expand(f.xreplace(values)) for f in stationary]
+        best = extreme(critical_points(fixed, factors, lo, hi), largest)
+        return best, describe(problem, stationary, values_factors, values, best)
+
+    with mpmath.workdps(DIGITS):
+        _, here = extremum_at(defaults)
+        if len(problem.parameters) == 1:
+            events = event_polynomials(problem, stationary, values_factors, (lo, hi))
+            regions = _regions(problem, events, extremum_at, defaults)
+            conditions = _interval_conditions(problem.parameters[0], regions, defaults)
+        else:
+            regions = []
+            own = event_polynomials(problem, stationary, values_factors, (lo, hi), here)
+            conditions = _sign_conditions(own, defaults)
+    return ClosedForm(here.value, here.input, here.at, here.input_factor, conditions, regions)
+
+
+def _sign_conditions(events, defaults):
+    conditions = []
+    for event in events:
+        sign = mpmath.sign(_numeric(event, defaults).real)
+        conditions.append(f"{event if sign > 0 else -event} > 0" if sign else f"{event} = 0")
+    return conditions
+
+
+def _interval_conditions(name, regions, defaults):
+    home = next(r for r in regions if _contains(r, defaults[name]))
+    return [_interval_text(name, r["from"], r["to"]) for r in regions
+            if (r["at"], r["input"], r["value"]) == (home["at"], home["input"], home["value"])]
+
+
+def _contains(region, value):
+    return (region["from"] is None or region["from"] <= value) and (region["to"] is None or value <= region["to"])
+
+
+def _interval_text(name, lo, hi):
+    if lo is None and hi is None:
+        return f"every real {name}"
+    if lo is None:
+        return f"{name} < {hi:.15g}"
+    if hi is None:
+        return f"{name} > {lo:.15g}"
+    return f"{lo:.15g} < {name} < {hi:.15g}"
+
+
+def _regions(problem, events, extremum_at, defaults):
+    """Per interval between the events' real roots: where the extremum is and its closed form."""
+    (name,) = problem.parameters
+    with flint.ctx.workprec(ROOT_BITS):
+        cuts = sorted({float(r.mid()) for e in events for r in real_roots(e, name)})
+    bounds = [None] + cuts + [None]
+    regions = []
+    for lo, hi in zip(bounds, bounds[1:]):
+        sample = defaults[name] if len(bounds) == 2 else _inside(lo, hi)
+        best, found = extremum_at({name: sample})
+        at = found.at
+        region = {"from": lo, "to": hi, "at": at, "input": _text(found.input), "value": _text(found.value),
+                  "sample": float(sample), "sample_input_deg": float(best.input_deg),
+                  "sample_value": float(best.value)}
+        if regions and (regions[-1]["at"], regions[-1]["input"], regions[-1]["value"]) == (at, region["input"], region["value"]):
+            regions[-1]["to"] = hi
+        else:
+            regions.append(region)
+    return regions
+
+
+def _inside(lo, hi):
+    """A simple rational strictly between two cuts (either may be None for infinity)."""
+    if lo is None:
+        return sympy.Rational(Fraction(hi - max(1.0, abs(hi))).limit_denominator(1000))
+    if hi is None:
+        return sympy.Rational(Fraction(lo + max(1.0, abs(lo))).limit_denominator(1000))
+    return sympy.Rational(Fraction((lo + hi) / 2).limit_denominator(10**6))

@@ -1,0 +1,133 @@
+"""The seed documents' way of working, done by elimination: load, ask for a quantity, get sympy.
+
+>>> arm = load("arm-string", params=["b"])
+>>> AB = arm.dist("A", "B")
+>>> AB.expr
+sqrt(b**2 - 700*b*cos(theta) - 280000*sin(theta) + 282500)
+>>> round(AB.at(theta=90, b=80), 9)
+94.339811321
+>>> found = AB.extremum(range=(0, 180))
+>>> round(found.minimum.value, 9), round(found.minimum.input_deg, 6)
+(57.921561087, 78.690068)
+>>> found.closed_form.value
+sqrt(b**2 + 160000) - 350
+"""
+
+from functools import cached_property
+
+import mpmath
+import sympy
+
+from .errors import UsageError
+from .evaluate import MPMATH, evaluate
+from .scene import load_scene
+from .system import symbol
+
+__all__ = ["load", "Mechanism", "Quantity"]
+
+
+def load(scene, params=()):
+    """A mechanism from a catalog name, a path or a ``Scene``; ``params`` stay symbolic."""
+    return Mechanism(scene if not isinstance(scene, str) else load_scene(scene), tuple(params))
+
+
+class Mechanism:
+    """A scene with some dimensions symbolic: the place to ask for quantities."""
+
+    def __init__(self, scene, params=()):
+        self.scene = scene
+        self.params = tuple(params)
+
+    @property
+    def parameters(self):
+        """Every dimension with its default (symbolic ones too)."""
+        return dict(self.scene.parameters)
+
+    def dist(self, p, q):
+        """The distance |PQ| as a ``Quantity``."""
+        return Quantity(self, f"dist({p}, {q})")
+
+    def x(self, point):
+        return Quantity(self, f"{point}.x")
+
+    def y(self, point):
+        return Quantity(self, f"{point}.y")
+
+    def output(self, name):
+        """A named output of the scene file (or any output text, e.g. ``"dist(A, B)"``)."""
+        return Quantity(self, name)
+
+    def __repr__(self):
+        return f"Mechanism({self.scene.name!r}, params={list(self.params)})"
+
+
+class Quantity:
+    """A scalar on the motion: closed form in the input angle, its relation, its extremum."""
+
+    def __init__(self, mechanism, text):
+        self.mechanism = mechanism
+        self.text = text
+
+    @cached_property
+    def derivation(self):
+        from .pipeline import derive
+
+        return derive(self.mechanism.scene, [self.text], params=self.mechanism.params, samples=0)
+
+    @cached_property
+    def _problem(self):
+        from .extremum import problem_for
+
+        return problem_for(self.derivation, self.text)
+
+    @property
+    def input(self):
+        """The input angle as a sympy symbol (radians, as in the seed)."""
+        (name,) = self.derivation.compiled.system.inputs
+        return symbol(name)
+
+    def _in_angle(self, expr):
+        problem = self._problem
+        return expr.xreplace({problem.c: sympy.cos(self.input), problem.s: sympy.sin(self.input)})
+
+    @property
+    def expr(self):
+        """The closed form on the scene's chosen branch, in the input angle and symbolic dimensions."""
+        return self._in_angle(self._problem.closed)
+
+    @property
+    def relation(self):
+        """The polynomial the quantity satisfies (= 0), with cos and sin of the input."""
+        return self._in_angle(self._problem.eliminant)
+
+    @property
+    def symbol(self):
+        return self._problem.u
+
+    @property
+    def derivative(self):
+        """d(quantity)/d(input) in radians, from the closed form (for plots, not for extrema)."""
+        return sympy.diff(self.expr, self.input)
+
+    def at(self, **values):
+        """The quantity at an input in degrees (and dimensions), e.g. ``at(theta=90, b=80)``."""
+        (name,) = self.derivation.compiled.system.inputs
+        if name not in values:
+            raise UsageError(name, None, f"give the input {name} in degrees")
+        problem = self._problem
+        with mpmath.workdps(30):
+            angle = mpmath.radians(mpmath.mpf(values[name]))
+            numbers = {problem.c.name: mpmath.cos(angle), problem.s.name: mpmath.sin(angle)}
+            for p in problem.parameters:
+                default = self.derivation.compiled.parameter_values[p.name]
+                numbers[p.name] = mpmath.mpf(str(values.get(p.name, default)))
+            return float(evaluate(problem.closed, numbers, MPMATH))
+
+    def extremum(self, range=None, largest=False):  # noqa: A002 (the seed's word)
+        """Critical points, minimum and maximum; closed forms in the symbolic dimensions."""
+        from .extremum import extremum_of
+
+        return extremum_of(self.derivation, self.text, range, largest)
+
+    def __repr__(self):
+        return f"Quantity({self.text!r} of {self.mechanism.scene.name})"

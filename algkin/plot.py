@@ -1,0 +1,121 @@
+"""The seed documents' figures, drawn from derived closed forms (matplotlib, loaded only here).
+
+Figures are built on ``matplotlib.figure.Figure`` with the Agg canvas, never through
+``pyplot``'s global state, so plotting leaves no backend or style changed.
+
+- ``quantity_figure``: a quantity against the input with its minimum marked, or its
+  derivative with the zero marked (the seed's two plots);
+- ``minimum_figure``: the minimum against a dimension, from the closed form per region,
+  with certified minima at sample dimensions drawn on top (they must lie on the line).
+"""
+
+import mpmath
+import numpy as np
+import sympy
+
+from .errors import AlgkinError, UsageError
+
+__all__ = ["quantity_figure", "minimum_figure", "save", "FORMATS"]
+
+FORMATS = (".png", ".svg", ".pdf")
+
+
+def _figure():
+    try:
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+        from matplotlib.figure import Figure
+    except ImportError:
+        raise AlgkinError("plotting needs matplotlib: pip install 'algkin[plot]'") from None
+    figure = Figure(figsize=(6.4, 4.4), layout="constrained")
+    FigureCanvasAgg(figure)
+    return figure
+
+
+def save(figure, out):
+    """Write ``figure`` to ``out`` (.png, .svg or .pdf)."""
+    figure.savefig(out, dpi=120)
+    return out
+
+
+def _sampler(quantity, expr):
+    """numpy function of degrees for ``expr`` in the input, dimensions at their defaults."""
+    defaults = quantity.derivation.compiled.parameter_values
+    fixed = expr.xreplace({p: sympy.Rational(str(defaults[p.name])) for p in quantity._problem.parameters})
+    return sympy.lambdify(quantity.input, fixed, "numpy")
+
+
+def quantity_figure(quantity, found, derivative=False, points=721):
+    """``quantity`` over the range of ``found`` (an ``Extremum``) with its minimum marked.
+
+    With ``derivative`` the slope d/d(input) (per radian, as the seed computes it) is drawn
+    with its zero at the certified minimiser.
+    """
+    lo, hi = found.range
+    degrees = np.linspace(lo, hi, points)
+    expr = quantity.derivative if derivative else quantity.expr
+    values = np.broadcast_to(_sampler(quantity, expr)(np.radians(degrees)), degrees.shape)
+    best = found.minimum
+    figure = _figure()
+    axes = figure.add_subplot()
+    name, text = quantity.input.name, quantity.text
+    label = f"d {text} / d {name}" if derivative else text
+    axes.plot(degrees, values, color="tab:blue", label=label)
+    mark = 0.0 if derivative else float(best.value)
+    if derivative:
+        axes.axhline(0, color="black", linestyle="--", linewidth=0.8)
+    axes.plot([float(best.input_deg)], [mark], "o", color="red", markersize=7,
+              label=f"minimum of {text}: {float(best.value):.6g} at {float(best.input_deg):.6g}°")
+    axes.annotate(f"[{float(best.input_deg):.2f}°, {mark:.4g}]", (float(best.input_deg), mark),
+                  textcoords="offset points", xytext=(8, 8))
+    axes.set_xlabel(f"{name} (degrees)")
+    axes.set_ylabel(f"{label} (per radian)" if derivative else text)
+    axes.set_title(f"{'Derivative of ' if derivative else ''}{text} in {quantity.mechanism.scene.name}")
+    axes.grid(True)
+    axes.legend()
+    return figure
+
+
+def minimum_figure(quantity, found, parameter, lo, hi, checks=9, points=401):
+    """The minimum of ``quantity`` against ``parameter`` in ``[lo, hi]``, region by region."""
+    form = found.closed_form
+    if form is None or [p.name for p in quantity._problem.parameters] != [parameter]:
+        raise UsageError("--against", parameter, "needs the quantity with exactly that dimension symbolic")
+    symbol = quantity._problem.parameters[0]
+    figure = _figure()
+    axes = figure.add_subplot()
+    grid = np.linspace(lo, hi, points)
+    for region in form.regions:
+        inside = grid[[_within(region, x) for x in grid]]
+        if inside.size and region["value"] is not None:
+            line = sympy.lambdify(symbol, sympy.sympify(region["value"], locals={parameter: symbol}), "numpy")
+            kind = "at a range end" if region["at"] == "endpoint" else "stationary"
+            axes.plot(inside, np.broadcast_to(line(inside), inside.shape),
+                      label=f"{region['value']}  ({kind})")
+        if region["to"] is not None and lo < region["to"] < hi:
+            axes.axvline(region["to"], color="gray", linestyle=":", linewidth=0.8)
+    samples = np.linspace(lo, hi, checks)
+    certified = [_certified_minimum(found, quantity, symbol, x) for x in samples]
+    axes.plot(samples, certified, "o", color="red", markersize=5, label="certified minimum at that value")
+    axes.set_xlabel(parameter)
+    axes.set_ylabel(f"minimum of {quantity.text}")
+    axes.set_title(f"Minimum of {quantity.text} over {quantity.input.name} in "
+                   f"[{found.range[0]:g}°, {found.range[1]:g}°] against {parameter}")
+    axes.grid(True)
+    axes.legend(fontsize="small")
+    return figure
+
+
+def _within(region, x):
+    return (region["from"] is None or region["from"] <= x) and (region["to"] is None or x <= region["to"])
+
+
+def _certified_minimum(found, quantity, symbol, x):
+    """The minimum at one dimension, by the fixed-dimension certified path (independent of the regions)."""
+    from .extremum import critical_points, extreme
+
+    values = {symbol: sympy.Rational(str(x))}
+    problem = found.problem
+    factors = [sympy.expand(f.xreplace(values)) for f in found.stationary]
+    with mpmath.workdps(40):
+        best = extreme(critical_points(problem.at(values), factors, *found.range))
+    return float(best.value)

@@ -1,0 +1,95 @@
+"""Closed forms of the arm's minimum in symbolic dimensions, against hand geometry and brute force."""
+
+import math
+
+import pytest
+import sympy
+from hypothesis import given, settings, strategies as st
+
+from algkin.extremum import extremum
+
+from .arm_by_hand import brute_minimum, hand_minimiser, hand_minimum
+
+a, b = sympy.symbols("a b", real=True)
+
+
+def at(expr_text, **values):
+    expr = sympy.sympify(expr_text, locals={"a": a, "b": b})
+    return float(expr.subs({sympy.Symbol(k, real=True): v for k, v in values.items()}))
+
+
+@pytest.fixture(scope="module")
+def in_b():
+    return extremum("arm-string", "AB", (0, 180), params=["b"]).closed_form
+
+
+@pytest.fixture(scope="module")
+def in_a_b():
+    return extremum("arm-string", "AB", (0, 180), params=["a", "b"]).closed_form
+
+
+def test_value_in_b_is_the_hand_formula(in_b):
+    assert sympy.simplify(in_b.value - (sympy.sqrt(b**2 + 160000) - 350)) == 0
+    assert str(in_b.value) == "sqrt(b**2 + 160000) - 350"
+
+
+def test_minimiser_never_leaves_0_180_for_any_b(in_b):
+    # a = 400 > 0 keeps atan2(a, b) inside (0, 180) for every b.
+    assert in_b.valid_when == ["every real b"]
+    assert [r["at"] for r in in_b.regions] == ["stationary"]
+
+
+@pytest.mark.parametrize("b_value", [-500, -80, -1, 0, 1, 80, 300, 2000])
+def test_closed_form_in_b_against_brute_force_and_hand(in_b, b_value):
+    value, degrees = brute_minimum(400, b_value)
+    assert at(in_b.to_json()["value"], b=b_value) == pytest.approx(value, abs=1e-9)
+    assert at(in_b.to_json()["input"], b=b_value) == pytest.approx(degrees, abs=1e-6)
+    assert at(in_b.to_json()["input"], b=b_value) == pytest.approx(hand_minimiser(400, b_value), abs=1e-9)
+
+
+@settings(max_examples=25)
+@given(st.fractions(min_value=-2000, max_value=2000, max_denominator=50))
+def test_closed_form_in_b_is_the_minimum_everywhere(in_b, b_value):
+    value, _ = brute_minimum(400, float(b_value))
+    assert at(str(in_b.value), b=b_value) == pytest.approx(value, rel=1e-9, abs=1e-9)
+
+
+def test_minimiser_leaving_the_range_is_reported_with_the_endpoint():
+    # Over [0, 90] the minimiser atan2(400, b) leaves the range for b < 0; the minimum is then
+    # at 90 deg, where A = (350, 0): |AB| = sqrt(50**2 + b**2).
+    form = extremum("arm-string", "AB", (0, 90), params=["b"]).closed_form
+    assert form.valid_when == ["b > 0"]
+    below, above = form.regions
+    assert (below["from"], below["to"], below["at"], below["input"]) == (None, 0.0, "endpoint", "90")
+    assert sympy.simplify(sympy.sympify(below["value"], locals={"b": b}) - sympy.sqrt(b**2 + 2500)) == 0
+    assert above["at"] == "stationary" and above["to"] is None
+    for b_value in (-400, -80, -0.5):
+        value, degrees = brute_minimum(400, b_value, 0, 90)
+        assert at(below["value"], b=b_value) == pytest.approx(value, abs=1e-9)
+        assert degrees == pytest.approx(90, abs=1e-6)
+
+
+def test_value_in_a_and_b_is_the_hand_formula(in_a_b):
+    assert sympy.simplify(in_a_b.value - (sympy.sqrt(a**2 + b**2) - 350)) == 0
+    assert in_a_b.at == "stationary"
+
+
+def test_conditions_in_a_and_b_are_the_geometric_ones(in_a_b):
+    # In range needs a > 0 (atan2(a, b) in (0, 180)); |OB| - 350 is the distance only while
+    # B is outside the arm's circle (else it is 350 - |OB|).
+    assert sorted(in_a_b.valid_when) == ["a > 0", "a**2 + b**2 - 122500 > 0"]
+
+
+@pytest.mark.parametrize("a_value, b_value", [(400, 80), (300, -500), (1, 400), (900, 0), (250, -250)])
+def test_closed_form_in_a_b_where_valid(in_a_b, a_value, b_value):
+    value, degrees = brute_minimum(a_value, b_value)
+    assert at(str(in_a_b.value), a=a_value, b=b_value) == pytest.approx(value, abs=1e-9)
+    assert at(str(in_a_b.input), a=a_value, b=b_value) == pytest.approx(degrees, abs=1e-6)
+    assert value == pytest.approx(hand_minimum(a_value, b_value), abs=1e-9)
+
+
+@pytest.mark.parametrize("a_value, b_value", [(-400, 80), (100, 100)])
+def test_conditions_are_needed(in_a_b, a_value, b_value):
+    # a < 0: the minimiser is out of [0, 180]; |OB| < 350: the value is 350 - |OB|.
+    value, _ = brute_minimum(a_value, b_value)
+    assert abs(at(str(in_a_b.value), a=a_value, b=b_value) - value) > 1
