@@ -55,6 +55,9 @@ def build_parser():
     extremum.add_argument("--param", action="append", default=[],
                           help="keep this dimension symbolic: the minimum as a closed form in it")
     extremum.add_argument("--json", action="store_true")
+    toggles = commands.add_parser("toggles", help="input angles where assembly modes meet, certified")
+    toggles.add_argument("scene")
+    toggles.add_argument("--json", action="store_true")
     plot = commands.add_parser("plot", help="figures: a quantity against the input, its derivative, "
                                             "its minimum against a dimension")
     plot.add_argument("scene")
@@ -117,6 +120,28 @@ def _report_closed_form(form, name):
 def _interval(region):
     lo, hi = region["from"], region["to"]
     return f"({'-oo' if lo is None else f'{lo:.12g}'}, {'oo' if hi is None else f'{hi:.12g}'})"
+
+
+def _cmd_toggles(args):
+    from .toggles import toggles
+
+    _emit(args, toggles(args.scene).to_json(), _report_toggles)
+    return 0
+
+
+def _report_toggles(d):
+    lo, hi = d["range"]
+    lines = [f"toggles of {d['scene']} over {d['input']} in [{lo:g}, {hi:g}] deg:"]
+    lines += [f"  {g['kind']:9} {g['point']} at {g['enclosure_deg']} deg (certified)" for g in d["toggles"]]
+    if not d["toggles"]:
+        lines.append("  none: every dyad assembles, in both modes apart, over the whole range")
+    if d["grashof"]:
+        g = d["grashof"]
+        bars = ", ".join(f"{k} {v}" for k, v in g["bars"].items())
+        lines.append(f"four-bar ({bars}): {g['class']} ({g['rule']}: margin {g['margin']})")
+    for artefact in d["artefacts"]:
+        lines.append(f"dropped from disc({artefact['eliminant']}): {artefact['factor']}: {artefact['why']}")
+    return "\n".join(lines)
 
 
 def _cmd_plot(args):
@@ -267,7 +292,8 @@ def _cmd_verify(args):
 
 
 COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
-            "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot}
+            "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot,
+            "toggles": _cmd_toggles}
 
 
 def main(argv=None):

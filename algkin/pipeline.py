@@ -13,7 +13,7 @@ import math
 import flint
 import sympy
 
-from .branches import check_assembly, circularity, closed_forms
+from .branches import certify_label, check_assembly, circularity, closed_forms
 from .eliminate import eliminate
 from .errors import UsageError
 from .evaluate import ARB, evaluate
@@ -21,7 +21,7 @@ from .scene import Scene, compile_scene, load_scene
 from .system import symbol
 from .verify import Verification, verify_branches
 
-__all__ = ["derive", "curve", "Derivation", "CurveResult", "witnesses"]
+__all__ = ["derive", "curve", "Derivation", "CurveResult", "witnesses", "certify_labels"]
 
 WITNESS_BITS = 256
 WITNESSES_PER_BRANCH = 3
@@ -38,6 +38,7 @@ class Derivation:
     branches: list
     verification: object
     timings: dict
+    certified: list = None  # per branch: [{from_deg, to_deg, status}], one-input scenes
 
     def to_json(self):
         system = self.compiled.system
@@ -50,7 +51,7 @@ class Derivation:
             "outputs": {n: list(v) for n, v in self.compiled.outputs.items()},
             "eliminants": {u: str(e.polynomial) for u, e in self.eliminations.items()},
             "eliminant_figures": {u: _figures(e) for u, e in self.eliminations.items()},
-            "branches": [b.to_json() for b in self.branches],
+            "branches": [dict(b.to_json(), certified=c) for b, c in zip(self.branches, self.certified)],
             "verification": self.verification.to_json(),
             "timings": self.timings,
         }
@@ -179,6 +180,18 @@ def _verify(compiled, branches, samples, seed, polynomials):
     )
 
 
+def certify_labels(compiled, branches):
+    """Per branch, the input intervals where its label is certified (dimensions at defaults)."""
+    if len(compiled.system.inputs) != 1:
+        return [None] * len(branches)
+    (name, (c, s)), = compiled.system.inputs.items()
+    spec = compiled.scene.inputs[name]
+    lo, hi = (float(sympy.deg(spec.to_radians(v))) for v in (spec.lo, spec.hi))
+    defaults = {n: ARB.number(Fraction(str(v)).numerator, Fraction(str(v)).denominator)
+                for n, v in compiled.parameter_values.items()}
+    return [certify_label(b, c, s, lo, hi, defaults) for b in branches]
+
+
 def _compile_and_branch(scene, outputs, params):
     """The stages derive and curve share: compile, closed forms, assembly check, witnesses."""
     start = time.perf_counter()
@@ -211,8 +224,11 @@ def derive(scene, outputs=None, method="resultant", backend="flint", params=(), 
     verification = _verify(compiled, branches, samples, seed,
                            {u: e.polynomial for u, e in eliminations.items()})
     timings["verify"] = time.perf_counter() - mark
+    mark = time.perf_counter()
+    certified = certify_labels(compiled, branches)
+    timings["certify"] = time.perf_counter() - mark
     timings["total"] = time.perf_counter() - start
-    return Derivation(compiled, method, backend, eliminations, branches, verification, timings)
+    return Derivation(compiled, method, backend, eliminations, branches, verification, timings, certified)
 
 
 def curve(scene, point, method="resultant", backend="flint", params=(), samples=40, seed=0):

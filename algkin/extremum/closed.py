@@ -25,7 +25,8 @@ import mpmath
 import sympy
 
 from ..eliminate import eliminate
-from .critical import DIGITS, ROOT_BITS, critical_points, extreme, real_roots
+from ..system.convert import real_roots
+from .critical import DIGITS, ROOT_BITS, critical_points, extreme
 
 __all__ = ["ClosedForm", "closed_form", "value_factors"]
 

@@ -17,8 +17,10 @@ import sympy
 from ..eliminate import eliminate
 from ..errors import ComputationError, UsageError
 from ..evaluate import MPMATH, evaluate
+from ..system.angles import half_angle_numerator, tangent_to_degrees
+from ..system.convert import real_roots
 
-__all__ = ["Problem", "CriticalPoint", "critical_points", "extreme", "real_roots",
+__all__ = ["Problem", "CriticalPoint", "critical_points", "extreme",
            "stationary_factors", "ROOT_BITS"]
 
 ROOT_BITS = 128
@@ -51,9 +53,7 @@ class Problem:
         return [self.numerator_in_t(e) for e in (self.eliminant, along)]
 
     def numerator_in_t(self, expr):
-        t = self.t
-        half = {self.c: (1 - t**2) / (1 + t**2), self.s: 2 * t / (1 + t**2)}
-        return sympy.expand(sympy.numer(sympy.together(expr.xreplace(half))))
+        return half_angle_numerator(expr, self.c, self.s, self.t)
 
     def value(self, degrees):
         """The closed form at ``degrees`` (mpmath), nan where it is not real."""
@@ -88,16 +88,6 @@ def stationary_factors(problem, backend="flint"):
         raise ComputationError(f"no stationary condition for {problem.u}: {err}") from None
 
 
-def real_roots(poly, t):
-    """Certified real roots of a univariate rational polynomial in ``t``, as arb balls."""
-    _, coeffs = sympy.Poly(poly, t).clear_denoms()
-    fpoly = flint.fmpz_poly([int(a) for a in reversed(coeffs.all_coeffs())])
-    roots = []
-    for factor, _ in fpoly.factor()[1]:
-        roots += [r.real for r, _ in factor.complex_roots() if r.imag.is_zero()]
-    return roots
-
-
 def critical_points(problem, factors, lo, hi):
     """Stationary points of ``problem`` (fixed dimensions) in ``[lo, hi]`` degrees, then the two ends.
 
@@ -110,7 +100,7 @@ def critical_points(problem, factors, lo, hi):
     found = []
     with flint.ctx.workprec(ROOT_BITS), mpmath.workdps(DIGITS):
         lo, hi = _mp(lo), _mp(hi)
-        balls = [2 * r.atan() * 180 / flint.arb.pi() for p in polys if p.has(problem.t)
+        balls = [tangent_to_degrees(r) for p in polys if p.has(problem.t)
                  for r in real_roots(p, problem.t)]
         balls.append(flint.arb(180))  # t = infinity
         for ball in balls:

@@ -17,7 +17,7 @@ import sympy
 
 from .core import symbol
 
-__all__ = ["flint_context", "to_flint", "to_sympy", "to_flint_integer", "fmpq_to_rational"]
+__all__ = ["flint_context", "to_flint", "to_sympy", "to_flint_integer", "fmpq_to_rational", "real_roots"]
 
 
 def flint_context(names, ordering="lex"):
@@ -61,3 +61,17 @@ def to_sympy(poly, ctx):
     if not terms:
         return sympy.Integer(0)
     return sympy.Poly.from_dict(terms, *gens, domain=sympy.QQ).as_expr()
+
+
+def real_roots(poly, var):
+    """Certified real roots of a univariate rational polynomial in ``var``, as arb balls.
+
+    python-flint factors it over the integers and isolates the roots of each factor
+    (``complex_roots``), at the working precision of ``flint.ctx``.
+    """
+    _, coeffs = sympy.Poly(poly, var).clear_denoms()
+    integer = flint.fmpz_poly([int(a) for a in reversed(coeffs.all_coeffs())])
+    roots = []
+    for factor, _ in integer.factor()[1]:
+        roots += [r.real for r, _ in factor.complex_roots() if r.imag.is_zero()]
+    return roots

@@ -1,0 +1,216 @@
+"""Toggles (dead centres): where a dyad's two assembly modes meet, certified.
+
+A dyad on bases P, Q with lengths l1, l2 toggles where ``|PQ| = l1 + l2`` (*extended*:
+both bars in line, pointing apart) or ``|PQ| = |l1 - l2|`` (*folded*: in line, one over the
+other). ``|PQ|**2`` is a polynomial in the input's ``c, s`` (earlier dyads' unknowns
+eliminated), so each condition becomes, in the half-angle ``t``, a polynomial whose real
+roots python-flint isolates with certified enclosures.
+
+The discriminant of an eliminant (of ``B_y``, say) has more factors than these: where the
+two modes have the same ``y`` but are different points. Those *artefacts* of the
+projection are recognised, with a certificate (ball arithmetic shows the two modes'
+points apart at every real root), and reported as dropped.
+
+>>> result = toggles("chebyshev-lambda")
+>>> result.toggles, result.grashof["class"]
+([], 'crank-rocker')
+"""
+
+from dataclasses import dataclass, field
+
+import flint
+import sympy
+
+from .branches import closed_forms
+from .eliminate import eliminate
+from .errors import UsageError
+from .evaluate import ARB, evaluate
+from .scene import compile_scene, load_scene
+from .scene.constructions import Crank, Dyad, Fixed
+from .system import symbol
+from .system.angles import half_angle_numerator, tangent_to_degrees, vanishes_at_half_turn
+from .system.convert import real_roots
+
+__all__ = ["toggles", "Toggle", "Toggles", "grashof"]
+
+ROOT_BITS = 128
+
+
+@dataclass
+class Toggle:
+    input_deg: float
+    enclosure: object  # arb ball, degrees
+    point: str  # the dyad
+    kind: str  # extended / folded
+
+    def to_json(self):
+        return {"input_deg": self.input_deg, "enclosure_deg": self.enclosure.str(20), "point": self.point,
+                "kind": self.kind, "certified": True}
+
+
+@dataclass
+class Toggles:
+    scene: str
+    input: str
+    range: tuple
+    toggles: list
+    grashof: dict = None
+    artefacts: list = field(default_factory=list)  # dropped discriminant factors, with why
+
+    def to_json(self):
+        return {"scene": self.scene, "input": self.input, "range": list(self.range),
+                "toggles": [t.to_json() for t in self.toggles], "grashof": self.grashof,
+                "artefacts": self.artefacts}
+
+
+def _defaults(compiled):
+    return {symbol(n): compiled.parameter_values[n] for n in compiled.system.parameters}
+
+
+def toggle_conditions(compiled, dyad):
+    """{'extended': poly, 'folded': poly} in the input's c, s (earlier dyads eliminated)."""
+    defaults = _defaults(compiled)
+    (px, py), (qx, qy) = dyad.base_p, dyad.base_q
+    span = (qx - px) ** 2 + (qy - py) ** 2
+    l1, l2 = dyad.lengths
+    conditions = {"extended": (l1 + l2) ** 2 - span, "folded": span - (l1 - l2) ** 2}
+    return {kind: _eliminate_earlier(compiled, sympy.expand(e.xreplace(defaults)), dyad)
+            for kind, e in conditions.items()}
+
+
+def _eliminate_earlier(compiled, condition, dyad):
+    """The condition with earlier dyads' unknowns eliminated (a polynomial in c, s)."""
+    earlier = sorted(str(v) for v in condition.free_symbols if str(v) in compiled.system.unknowns)
+    if not earlier:
+        return condition
+    defaults = _defaults(compiled)
+    equations = [sympy.expand(e.xreplace(defaults)) for e in compiled.system.equations
+                 if {str(v) for v in e.free_symbols} & set(earlier)
+                 and not {str(v) for v in e.free_symbols} & set(dyad.unknowns)]
+    (c, s), = compiled.system.inputs.values()
+    return eliminate([condition] + equations, earlier, [c, s], method="resultant").polynomial
+
+
+def _single_input(compiled):
+    if len(compiled.system.inputs) != 1:
+        raise UsageError("scene", compiled.scene.name, "toggles are computed for one-input scenes")
+    (name, (c, s)), = compiled.system.inputs.items()
+    return name, symbol(c), symbol(s)
+
+
+def toggles(scene):
+    """Every toggle of every dyad of ``scene`` over its input range, certified."""
+    scene = scene if not isinstance(scene, str) else load_scene(scene)
+    dyad_points = [n for n, p in scene.points.items() if isinstance(p, Dyad)]
+    if not dyad_points:
+        raise UsageError("scene", scene.name, "has no dyad, so no assembly modes to meet")
+    compiled = compile_scene(scene, dyad_points)
+    name, c, s = _single_input(compiled)
+    spec = scene.inputs[name]
+    lo, hi = (float(sympy.deg(spec.to_radians(v))) for v in (spec.lo, spec.hi))
+    t = symbol(f"t_{name}")
+    found = []
+    with flint.ctx.workprec(ROOT_BITS):
+        for dyad in compiled.dyads:
+            for kind, condition in toggle_conditions(compiled, dyad).items():
+                for ball in _angles(condition, c, s, t):
+                    found += [Toggle(float(ball.mid()) + turn, ball + turn, dyad.point, kind)
+                              for turn in (-360, 0, 360) if lo <= float(ball.mid()) + turn <= hi]
+        artefacts = _artefacts(compiled, c, s, t)
+    found.sort(key=lambda g: g.input_deg)
+    return Toggles(scene.name, name, (lo, hi), found, grashof(compiled), artefacts)
+
+
+def _angles(condition, c, s, t):
+    """Certified enclosures (degrees) of the angles where ``condition(c, s) = 0``."""
+    balls = [tangent_to_degrees(r) for r in real_roots(half_angle_numerator(condition, c, s, t), t)]
+    if vanishes_at_half_turn(condition, c, s):
+        balls.append(flint.arb(180))
+    return balls
+
+
+def _artefacts(compiled, c, s, t):
+    """Factors of the eliminants' discriminants that are not toggles, with the certificate."""
+    from .pipeline import derive
+
+    derived = derive(compiled.scene, [d.point for d in compiled.dyads], samples=0)
+    geometric = [half_angle_numerator(cond, c, s, t) for d in compiled.dyads
+                 for cond in toggle_conditions(compiled, d).values()]
+    branches = closed_forms(compiled)
+    dropped = []
+    for unknown, elimination in derived.eliminations.items():
+        u = symbol(unknown)
+        if sympy.degree(elimination.polynomial, u) < 2:
+            continue
+        discriminant = sympy.discriminant(elimination.polynomial, u)
+        for factor, _ in sympy.factor_list(sympy.expand(discriminant.xreplace(_defaults(compiled))))[1]:
+            numerator = half_angle_numerator(factor, c, s, t)
+            if not numerator.has(t) or any(sympy.rem(g, numerator, t) == 0 for g in geometric if g.has(t)):
+                continue
+            dropped.append({"eliminant": unknown, "factor": str(factor),
+                            "why": _why_not_a_toggle(compiled, branches, factor, c, s, t)})
+    return dropped
+
+
+def _why_not_a_toggle(compiled, branches, factor, c, s, t):
+    """At every real root of ``factor``, ball arithmetic shows the modes apart or not assembled."""
+    defaults = {k.name: ARB.number(int(sympy.Rational(v).p), int(sympy.Rational(v).q))
+                for k, v in _defaults(compiled).items()}
+    reasons = set()
+    for ball in _angles(factor, c, s, t):
+        angle = ball * flint.arb.pi() / 180
+        values = dict(defaults, **{c.name: angle.cos(), s.name: angle.sin()})
+        reason = _separated(compiled, branches, values)
+        if reason is None:
+            return "undecided: the balls could not separate the modes"
+        reasons.add(reason)
+    return " / ".join(sorted(reasons)) + " (certified)" if reasons else "no real root (certified)"
+
+
+def _separated(compiled, branches, values):
+    discriminants = [evaluate(d, values, ARB) for d in branches[0].discriminants.values()]
+    if any(d < 0 for d in discriminants):
+        return "a dyad cannot assemble there"
+    points = [{u: evaluate(v, values, ARB) for u, v in b.values.items()} for b in branches]
+    for dyad in compiled.dyads:
+        x, y = dyad.unknowns
+        gaps = [(p[x] - q[x]) ** 2 + (p[y] - q[y]) ** 2 for p in points for q in points if p is not q]
+        if not all(g > 0 for g in gaps):
+            return None
+    return "the modes share this coordinate but are apart"
+
+
+def grashof(compiled):
+    """The Grashof class of a four-bar (crank about a ground pivot, dyad on crank tip and ground)."""
+    scene = compiled.scene
+    for dyad in compiled.dyads:
+        construction = scene.points[dyad.point]
+        first, second = (scene.points[p] for p in construction.bases)
+        lengths = construction.lengths
+        if isinstance(first, Fixed) and isinstance(second, Crank):
+            first, second, lengths = second, first, lengths[::-1]
+        if isinstance(first, Crank) and isinstance(second, Fixed) and isinstance(scene.points[first.center], Fixed):
+            return _classify(compiled, lengths, first, second)
+    return None
+
+
+def _classify(compiled, lengths, crank, ground_pivot):
+    values = {symbol(n): v for n, v in compiled.parameter_values.items()}
+    pivot = compiled.scene.points[crank.center]
+    exact = lambda e: sympy.nsimplify(sympy.sympify(e).xreplace(values))  # noqa: E731
+    ground = sympy.sqrt((exact(ground_pivot.x) - exact(pivot.x)) ** 2 + (exact(ground_pivot.y) - exact(pivot.y)) ** 2)
+    bars = {"crank": exact(crank.length), "ground": ground,
+            "coupler": exact(lengths[0]), "rocker": exact(lengths[1])}
+    ordered = sorted(bars.values(), key=lambda v: float(v))
+    shortest, longest = ordered[0], ordered[-1]
+    margin = sympy.nsimplify(ordered[1] + ordered[2] - shortest - longest)
+    if margin < 0:
+        kind = "non-grashof (triple rocker)"
+    elif margin == 0:
+        kind = "change point"
+    else:
+        role = min(bars, key=lambda k: float(bars[k]))
+        kind = {"crank": "crank-rocker", "ground": "double crank", "coupler": "double rocker",
+                "rocker": "rocker-crank"}[role]
+    return {"class": kind, "bars": {k: str(v) for k, v in bars.items()}, "margin": str(margin),
+            "rule": "shortest + longest vs the other two"}

@@ -1,0 +1,85 @@
+"""Toggles of four-bars against the law of cosines, and the Grashof class against the rule."""
+
+import math
+from fractions import Fraction
+
+import pytest
+from hypothesis import assume, given, settings, strategies as st
+
+from algkin.scene import load_scene_text
+from algkin.toggles import toggles
+
+
+def four_bar(crank, ground, coupler, rocker):
+    return load_scene_text(f"""
+name = "four-bar"
+[inputs]
+angle = {{ range = [0, 360], unit = "deg" }}
+[points]
+O = {{ fixed = [0, 0] }}
+D = {{ fixed = ["{ground}", 0] }}
+A = {{ crank = "O", length = "{crank}", input = "angle" }}
+B = {{ dyad = ["A", "D"], lengths = ["{coupler}", "{rocker}"], branch = "left" }}
+[outputs]
+B = "B"
+""")
+
+
+def law_of_cosines(crank, ground, coupler, rocker):
+    """Crank angles where |AD| = coupler + rocker (extended) or |coupler - rocker| (folded)."""
+    found = []
+    for kind, span in (("extended", coupler + rocker), ("folded", abs(coupler - rocker))):
+        cosine = (crank**2 + ground**2 - span**2) / (2 * crank * ground)
+        if -1 < cosine < 1:
+            angle = math.degrees(math.acos(cosine))
+            found += [(angle, kind), (360 - angle, kind)]
+    return sorted(found)
+
+
+def test_non_grashof_dead_centres_by_hand():
+    result = toggles(four_bar(3, 4, 2, "5/2"))
+    assert result.grashof["class"] == "non-grashof (triple rocker)"
+    expected = law_of_cosines(3, 4, 2, 2.5)
+    assert [(round(t.input_deg, 12), t.kind) for t in result.toggles] == [(round(a, 12), k) for a, k in expected]
+    for toggle, (angle, _) in zip(result.toggles, expected):
+        assert toggle.enclosure.contains(angle) or abs(toggle.enclosure.mid() - angle) < 1e-12
+        assert toggle.enclosure.rad() < 1e-15
+
+
+def test_chebyshev_lambda_has_none_and_is_a_crank_rocker():
+    result = toggles("chebyshev-lambda")
+    assert result.toggles == []
+    assert result.grashof["class"] == "crank-rocker"  # 1 + 5/2 < 2 + 5/2, crank shortest
+    # disc(B_y) has the factor c - 2 (equal y, different points), which is not a toggle.
+    assert any(a["factor"] == "c_angle - 2" for a in result.artefacts)
+
+
+def grashof_by_rule(crank, ground, coupler, rocker):
+    bars = sorted([crank, ground, coupler, rocker])
+    margin = bars[1] + bars[2] - bars[0] - bars[3]
+    if margin < 0:
+        return "non-grashof (triple rocker)"
+    if margin == 0:
+        return "change point"
+    return {crank: "crank-rocker", ground: "double crank", coupler: "double rocker"}.get(bars[0], "rocker-crank")
+
+
+lengths = st.fractions(min_value=Fraction(1, 2), max_value=8, max_denominator=12)
+
+
+@settings(max_examples=20)
+@given(lengths, lengths, lengths, lengths)
+def test_random_four_bars_match_the_law_of_cosines(crank, ground, coupler, rocker):
+    bars = sorted([crank, ground, coupler, rocker])
+    assume(bars[3] < bars[0] + bars[1] + bars[2])  # it closes somewhere
+    assume(len(set(bars)) == 4 and bars[1] + bars[2] != bars[0] + bars[3])  # no change point
+    expected = law_of_cosines(*(float(v) for v in (crank, ground, coupler, rocker)))
+    assume(all(min(abs(a), abs(a - 180), abs(a - 360)) > 1e-6 for a, _ in expected))
+    try:
+        result = toggles(four_bar(crank, ground, coupler, rocker))
+    except ValueError as err:  # never assembles over the whole turn
+        assert "can never assemble" in str(err)
+        return
+    assert [t.kind for t in result.toggles] == [k for _, k in expected]
+    assert [t.input_deg for t in result.toggles] == pytest.approx([a for a, _ in expected], abs=1e-9)
+    assert result.grashof["class"] == grashof_by_rule(crank, ground, coupler, rocker)
