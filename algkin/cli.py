@@ -58,6 +58,12 @@ def build_parser():
     toggles = commands.add_parser("toggles", help="input angles where assembly modes meet, certified")
     toggles.add_argument("scene")
     toggles.add_argument("--json", action="store_true")
+    accuracy = commands.add_parser("accuracy", help="speed against error of each evaluation strategy")
+    accuracy.add_argument("scene")
+    accuracy.add_argument("--samples", type=int, default=2000, help="samples per case")
+    accuracy.add_argument("--seed", type=int, default=0)
+    accuracy.add_argument("--plot", help="also draw time against error (log-log) to this .png/.svg/.pdf")
+    accuracy.add_argument("--json", action="store_true")
     plot = commands.add_parser("plot", help="figures: a quantity against the input, its derivative, "
                                             "its minimum against a dimension")
     plot.add_argument("scene")
@@ -144,16 +150,46 @@ def _report_toggles(d):
     return "\n".join(lines)
 
 
-def _cmd_plot(args):
+def _cmd_accuracy(args):
+    from .accuracy import accuracy
+
+    if args.samples < 10:
+        raise UsageError("--samples", args.samples, "needs at least 10 samples per case")
+    out = _figure_path("--plot", args.plot) if args.plot else None
+    result = accuracy(args.scene, args.samples, args.seed)
+    if out is not None:
+        from .plot import accuracy_figure, save
+
+        save(accuracy_figure(result), out)
+    _emit(args, result.to_json(), _report_accuracy)
+    return 0
+
+
+def _report_accuracy(d):
+    lines = [f"accuracy of {d['point']} in {d['scene']}; truth: {d['reference']}",
+             f"  {'strategy':12} {'case':13} {'samples':>7} {'ns/sample':>10} {'max rel err':>11} "
+             f"{'condition':>9} {'err/(k eps)':>11}"]
+    lines += [f"  {r['strategy']:12} {r['case']:13} {r['samples']:7} {r['ns_per_sample']:10.1f} "
+              f"{r['max_rel_error']:11.2e} {r['condition']:9.2e} {r['error_over_kappa_eps']:11.2e}"
+              for r in d["rows"]]
+    return "\n".join(lines)
+
+
+def _figure_path(option, text):
     import pathlib
 
     from .plot import FORMATS
 
-    out = pathlib.Path(args.out)
+    out = pathlib.Path(text)
     if out.suffix.lower() not in FORMATS:
-        raise UsageError("--out", args.out, f"unknown figure format; valid: {', '.join(FORMATS)}")
+        raise UsageError(option, text, f"unknown figure format; valid: {', '.join(FORMATS)}")
     if not out.parent.is_dir():
-        raise UsageError("--out", args.out, "its directory does not exist")
+        raise UsageError(option, text, "its directory does not exist")
+    return out
+
+
+def _cmd_plot(args):
+    out = _figure_path("--out", args.out)
     if args.against and args.derivative:
         raise UsageError("--against", args.against, "draws the minimum; leave out --derivative")
     against = _against(args.against) if args.against else None
@@ -293,7 +329,7 @@ def _cmd_verify(args):
 
 COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
             "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot,
-            "toggles": _cmd_toggles}
+            "toggles": _cmd_toggles, "accuracy": _cmd_accuracy}
 
 
 def main(argv=None):

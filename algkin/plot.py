@@ -15,7 +15,7 @@ import sympy
 
 from .errors import AlgkinError, UsageError
 
-__all__ = ["quantity_figure", "minimum_figure", "save", "FORMATS"]
+__all__ = ["quantity_figure", "minimum_figure", "accuracy_figure", "save", "FORMATS"]
 
 FORMATS = (".png", ".svg", ".pdf")
 
@@ -119,3 +119,26 @@ def _certified_minimum(found, quantity, symbol, x):
     with mpmath.workdps(40):
         best = extreme(critical_points(problem.at(values), factors, *found.range))
     return float(best.value)
+
+
+def accuracy_figure(result):
+    """Time per sample against max relative error, log-log, one marker per strategy."""
+    figure = _figure()
+    axes = figure.add_subplot()
+    markers = {"closed-form": "s", "stabilised": "o", "numeric": "^", "reference": "D"}
+    for strategy, marker in markers.items():
+        rows = [r for r in result.rows if r["strategy"] == strategy and np.isfinite(r["max_rel_error"])]
+        floor = np.finfo(float).eps / 4  # the reference is exact by definition: draw it at the floor
+        xs = [r["ns_per_sample"] for r in rows]
+        ys = [max(r["max_rel_error"], floor) for r in rows]
+        axes.scatter(xs, ys, marker=marker, label=strategy)
+        for r, x, y in zip(rows, xs, ys):
+            axes.annotate(r["case"], (x, y), fontsize="x-small", textcoords="offset points", xytext=(4, 2))
+    axes.set_xscale("log")
+    axes.set_yscale("log")
+    axes.set_xlabel("time per sample (ns)")
+    axes.set_ylabel("max relative error")
+    axes.set_title(f"Speed against error: {result.point} of {result.scene}")
+    axes.grid(True, which="both", linewidth=0.3)
+    axes.legend()
+    return figure

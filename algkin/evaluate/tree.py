@@ -17,9 +17,10 @@ from typing import Callable
 
 import flint
 import mpmath
+import numpy as np
 import sympy
 
-__all__ = ["evaluate", "NumberKind", "ARB", "MPMATH", "FLOAT"]
+__all__ = ["evaluate", "NumberKind", "ARB", "MPMATH", "FLOAT", "NUMPY"]
 
 
 @dataclass(frozen=True)
@@ -34,6 +35,7 @@ class NumberKind:
 ARB = NumberKind("arb", lambda p, q: flint.arb(flint.fmpq(p, q)), lambda v: v.sqrt())
 MPMATH = NumberKind("mpmath", lambda p, q: mpmath.mpf(p) / q, mpmath.sqrt)
 FLOAT = NumberKind("float", lambda p, q: p / q, math.sqrt)
+NUMPY = NumberKind("numpy", lambda p, q: p / q, np.sqrt)  # float64 arrays, vectorised
 
 
 def evaluate(expr, values, kind):
