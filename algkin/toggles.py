@@ -174,10 +174,15 @@ def _separated(compiled, branches, values):
     points = [{u: evaluate(v, values, ARB) for u, v in b.values.items()} for b in branches]
     for dyad in compiled.dyads:
         x, y = dyad.unknowns
-        gaps = [(p[x] - q[x]) ** 2 + (p[y] - q[y]) ** 2 for p in points for q in points if p is not q]
+        # d * d, not d ** 2: python-flint's arb power is nan on a ball around zero.
+        gaps = [_square(p[x] - q[x]) + _square(p[y] - q[y]) for p in points for q in points if p is not q]
         if not all(g > 0 for g in gaps):
             return None
     return "the modes share this coordinate but are apart"
+
+
+def _square(ball):
+    return ball * ball
 
 
 def grashof(compiled):

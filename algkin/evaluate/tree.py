@@ -69,10 +69,24 @@ def evaluate(expr, values, kind):
     return walk(sympy.sympify(expr))
 
 
+def _integer_power(base, n):
+    """``base**n`` (n >= 1) by squaring: python-flint's ``arb ** int`` is nan on a ball around 0."""
+    result = None
+    while n:
+        if n & 1:
+            result = base if result is None else result * base
+        n >>= 1
+        if n:
+            base = base * base
+    return result
+
+
 def _power(base, exponent, kind):
     if exponent.is_Integer:
-        return base ** int(exponent) if exponent > 0 else kind.number(1, 1) / base ** int(-exponent)
+        n = int(exponent)
+        return _integer_power(base, n) if n > 0 else kind.number(1, 1) / _integer_power(base, -n)
     if exponent.is_Rational and exponent.q == 2:
         root = kind.sqrt(base)
-        return root ** int(exponent.p) if exponent > 0 else kind.number(1, 1) / root ** int(-exponent.p)
+        n = int(exponent.p)
+        return _integer_power(root, n) if n > 0 else kind.number(1, 1) / _integer_power(root, -n)
     raise TypeError(f"cannot evaluate the power {exponent}")
