@@ -12,7 +12,7 @@ GRID = 721
 
 
 def check_assembly(compiled, branches):
-    """Raise SceneError naming the dyad whose discriminant is negative on the whole range."""
+    """Raise SceneError naming the dyad or slider whose discriminant is negative on the whole range."""
     chosen = next(b for b in branches if b.selected)
     defaults = {symbol(n): v for n, v in compiled.parameter_values.items()}
     angles = {}
@@ -25,5 +25,7 @@ def check_assembly(compiled, branches):
         values = sympy.lambdify(args, disc.xreplace(defaults), "numpy")(*angles.values())
         with np.errstate(invalid="ignore"):
             if not np.any(np.broadcast_to(values, (GRID,)) >= 0):
+                spec = next((d for d in compiled.implicit if d.point == point), None)
+                why = getattr(spec, "never_meets", "the two circles never meet")
                 raise SceneError(compiled.scene.source, f"points.{point}",
-                                 "can never assemble: the two circles never meet over the input range")
+                                 f"can never assemble: {why} over the input range")

@@ -7,6 +7,11 @@ A dyad's point is ``X = P + a*d + sigma*h*rot90(d)`` with ``d = Q - P``,
 label is the geometry, not the sign in a quadratic formula. Both coordinates come from
 the one expression, so they are paired by construction.
 
+A slider's point, on the line through P with direction d at distance l from Q, is
+``X = P + (dot(d, w) + sigma*sqrt(disc)) / |d|**2 * d`` with ``w = Q - P`` and
+``disc = l**2*|d|**2 - cross(d, w)**2``. Since ``dot(d, X - Q) = sigma*sqrt(disc)``,
+``sigma = +1`` is the point ahead of the foot of the perpendicular from Q, along d.
+
 >>> from algkin.scene import load_scene, compile_scene
 >>> branches = closed_forms(compile_scene(load_scene("chebyshev-lambda"), ["B"]))
 >>> [b.label for b in branches]
@@ -20,6 +25,7 @@ from dataclasses import dataclass
 
 import sympy
 
+from ..scene.compile import SliderSpec
 from ..system import symbol
 
 __all__ = ["Branch", "closed_forms", "reduce_on_circles"]
@@ -30,9 +36,9 @@ class Branch:
     """One assembly mode: its labels, the closed form of every unknown, where it is real."""
 
     label: str
-    labels: dict  # dyad point -> 'left' / 'right'
+    labels: dict  # dyad point -> 'left' / 'right', slider point -> 'ahead' / 'behind'
     values: dict  # unknown -> sympy expression in inputs' c_*, s_* and parameters
-    discriminants: dict  # dyad point -> expression that must be >= 0
+    discriminants: dict  # dyad or slider point -> expression that must be >= 0
     selected: bool  # the branch the scene file asks for
 
     @property
@@ -73,15 +79,34 @@ def _dyad_closed_form(dyad, substitution, sigma, inputs):
     return (px + along * dx - across * dy, py + along * dy + across * dx), disc
 
 
+def _slider_closed_form(slider, substitution, sigma, inputs):
+    reduce = lambda e: reduce_on_circles(e.xreplace(substitution), inputs)  # noqa: E731
+    px, py = (reduce(v) for v in slider.through)
+    qx, qy = (reduce(v) for v in slider.center)
+    dx, dy = slider.direction
+    wx, wy = reduce(qx - px), reduce(qy - py)
+    norm2 = dx**2 + dy**2
+    dot, cross = reduce(dx * wx + dy * wy), reduce(dx * wy - dy * wx)
+    norm = sympy.sqrt(norm2)
+    if norm.is_rational:  # a difference of squares: (l|d| - cross)(l|d| + cross)
+        disc = (sympy.factor_terms(reduce(slider.length * norm - cross))
+                * sympy.factor_terms(reduce(slider.length * norm + cross)))
+    else:
+        disc = sympy.factor_terms(reduce(slider.length**2 * norm2 - cross**2))
+    along = (dot + sigma * sympy.sqrt(disc)) / norm2
+    return (px + along * dx, py + along * dy), disc
+
+
 def closed_forms(compiled):
-    """Every branch (all label combinations of the dyads) of ``compiled``."""
+    """Every branch (all label combinations of the dyads and sliders) of ``compiled``."""
     inputs = [tuple(symbol(v) for v in pair) for pair in compiled.system.inputs.values()]
-    dyads = compiled.dyads
+    dyads = compiled.implicit or compiled.dyads
     branches = []
-    for labels in itertools.product(("left", "right"), repeat=len(dyads)):
+    for labels in itertools.product(*(d.labels for d in dyads)):
         substitution, discriminants = {}, {}
         for dyad, label in zip(dyads, labels):
-            (x, y), disc = _dyad_closed_form(dyad, substitution, 1 if label == "left" else -1, inputs)
+            form = _slider_closed_form if isinstance(dyad, SliderSpec) else _dyad_closed_form
+            (x, y), disc = form(dyad, substitution, 1 if label == dyad.labels[0] else -1, inputs)
             substitution[symbol(dyad.unknowns[0])] = x
             substitution[symbol(dyad.unknowns[1])] = y
             discriminants[dyad.point] = disc

@@ -1,7 +1,7 @@
 """Compile a scene into an exact polynomial system holding only what the outputs need.
 
 Explicit points (fixed, crank, frame) are substituted as polynomials; only implicit
-points (dyads) and the asked-for outputs become unknowns.
+points (dyads, sliders) and the asked-for outputs become unknowns.
 
 >>> from algkin.scene import load_scene
 >>> compiled = compile_scene(load_scene("arm-string"), ["AB"])
@@ -18,10 +18,10 @@ import sympy
 
 from ..errors import SceneError, UsageError
 from ..system import System, symbol
-from .constructions import Builder
+from .constructions import Builder, Dyad, Slider
 from .load import parse_output
 
-__all__ = ["Compiled", "DyadSpec", "compile_scene"]
+__all__ = ["Compiled", "DyadSpec", "SliderSpec", "compile_scene"]
 
 
 @dataclass(frozen=True)
@@ -34,6 +34,23 @@ class DyadSpec:
     base_q: tuple
     lengths: tuple
     branch: str
+    labels = Dyad.labels
+    never_meets = "the two circles never meet"
+
+
+@dataclass(frozen=True)
+class SliderSpec:
+    """A compiled slider: its unknowns, the line (a point on it, direction), circle centre, length."""
+
+    point: str
+    unknowns: tuple
+    through: tuple
+    direction: tuple
+    center: tuple
+    length: object
+    branch: str
+    labels = Slider.labels
+    never_meets = "the circle never meets the slider's line"
 
 
 @dataclass(frozen=True)
@@ -49,6 +66,7 @@ class Compiled:
     outputs: dict  # output name -> unknown names standing for it
     parameter_values: dict  # every scene parameter -> exact default
     symbolic: tuple  # parameters kept symbolic
+    implicit: tuple = ()  # DyadSpec and SliderSpec, in construction order
 
 
 def _resolve_outputs(scene, requested):
@@ -130,6 +148,7 @@ def compile_scene(scene, outputs=None, params=()):
             for item in value if isinstance(value, tuple) else (value,):
                 _check_finite(scene, f"points.{name}", item)
         _check_lengths(scene, name, construction)
+        _check_direction(scene, name, construction)
         coords[name] = tuple(sympy.expand(v) for v in construction.build(name, coords, builder))
     definitions, output_unknowns, nonnegative = _output_equations(outputs, coords, builder)
     equations = [sympy.expand(eq) for eq in builder.equations]
@@ -143,13 +162,21 @@ def compile_scene(scene, outputs=None, params=()):
         equations=tuple(equations),
         nonnegative=tuple(nonnegative),
     )
-    dyads = tuple(
-        DyadSpec(name, (f"{name}_x", f"{name}_y"), coords[d.bases[0]], coords[d.bases[1]],
-                 tuple(l.xreplace(substitution) for l in d.lengths), d.branch)
-        for name, d in builder.dyads.items()
-    )
+    implicit = tuple(_spec(name, c, coords, substitution) for name, c in builder.implicit.items())
+    dyads = tuple(spec for spec in implicit if isinstance(spec, DyadSpec))
     return Compiled(scene, system, coords, dyads, tuple(builder.indicators), definitions,
-                    output_unknowns, defaults, symbolic)
+                    output_unknowns, defaults, symbolic, implicit)
+
+
+def _spec(name, construction, coords, substitution):
+    unknowns = (f"{name}_x", f"{name}_y")
+    if isinstance(construction, Slider):
+        return SliderSpec(name, unknowns, coords[construction.through],
+                          tuple(d.xreplace(substitution) for d in construction.direction),
+                          coords[construction.to], construction.length.xreplace(substitution),
+                          construction.branch)
+    return DyadSpec(name, unknowns, coords[construction.bases[0]], coords[construction.bases[1]],
+                    tuple(l.xreplace(substitution) for l in construction.lengths), construction.branch)
 
 
 def _substituted(construction, substitution):
@@ -191,6 +218,13 @@ def _check_lengths(scene, name, construction):
     for length in lengths:
         if length is not None and length.is_number and not length > 0:
             raise SceneError(scene.source, f"points.{name}", f"length must be positive, got {length}")
+
+
+def _check_direction(scene, name, construction):
+    direction = getattr(construction, "direction", None)
+    if direction is not None and all(d.is_number and d == 0 for d in direction):
+        raise SceneError(scene.source, f"points.{name}.slider.direction",
+                         "direction must not be zero, got [0, 0] with the parameters' default values")
 
 
 def _output_equations(outputs, coords, builder):

@@ -2,15 +2,15 @@
 
 Each construction knows the points it refers to and how it turns into polynomial
 terms: an *explicit* point is a polynomial in earlier coordinates; an *implicit* point
-(dyad) brings two unknowns, two equations and a branch indicator whose sign is the
-geometric label.
+(dyad, slider) brings two unknowns, two equations and a branch indicator whose sign is
+the geometric label.
 """
 
 from dataclasses import dataclass
 
 import sympy
 
-__all__ = ["Fixed", "Crank", "Dyad", "Frame", "CONSTRUCTIONS", "Builder", "Indicator"]
+__all__ = ["Fixed", "Crank", "Dyad", "Slider", "Frame", "CONSTRUCTIONS", "Builder", "Indicator"]
 
 
 @dataclass(frozen=True)
@@ -33,6 +33,7 @@ class Builder:
         self.equations = []
         self.indicators = []
         self.dyads = {}
+        self.implicit = {}  # every implicit point (dyads and sliders), in construction order
 
     def unknown(self, name):
         symbol = sympy.Symbol(name, real=True)
@@ -104,6 +105,41 @@ class Dyad:
         cross = (qx - px) * (y - py) - (qy - py) * (x - px)
         builder.indicators.append(Indicator(name, cross, "left", "right", self.branch))
         builder.dyads[name] = self
+        builder.implicit[name] = self
+        return (x, y)
+
+
+@dataclass(frozen=True)
+class Slider:
+    """``slider = {through = P, direction = [dx, dy]}, distance = {to = Q, length = l}``.
+
+    On the line through P with the fixed direction d, at distance l from Q. The branch is
+    ``ahead`` when ``dot(d, X - Q) > 0`` (X lies ahead of the foot of the perpendicular
+    from Q, along d), ``behind`` when it is < 0: the same all along the motion.
+    """
+
+    through: str
+    direction: tuple
+    to: str
+    length: sympy.Expr
+    branch: str
+    labels = ("ahead", "behind")
+
+    @property
+    def references(self):
+        return (self.through, self.to)
+
+    def build(self, name, coords, builder):
+        (px, py), (qx, qy) = coords[self.through], coords[self.to]
+        x, y = builder.unknown(f"{name}_x"), builder.unknown(f"{name}_y")
+        dx, dy = self.direction
+        builder.equations += [
+            dx * (y - py) - dy * (x - px),  # X - P is parallel to d
+            (x - qx) ** 2 + (y - qy) ** 2 - self.length**2,
+        ]
+        along = dx * (x - qx) + dy * (y - qy)
+        builder.indicators.append(Indicator(name, along, "ahead", "behind", self.branch))
+        builder.implicit[name] = self
         return (x, y)
 
 
@@ -126,4 +162,4 @@ class Frame:
         return (px + u * d[0] + v * n[0], py + u * d[1] + v * n[1])
 
 
-CONSTRUCTIONS = {"fixed": Fixed, "crank": Crank, "dyad": Dyad, "frame": Frame}
+CONSTRUCTIONS = {"fixed": Fixed, "crank": Crank, "dyad": Dyad, "frame": Frame, "slider": Slider}

@@ -20,7 +20,7 @@ except ModuleNotFoundError:  # Python 3.10
 import sympy
 
 from ..errors import SceneError
-from .constructions import CONSTRUCTIONS, Crank, Dyad, Fixed, Frame
+from .constructions import CONSTRUCTIONS, Crank, Dyad, Fixed, Frame, Slider
 from .expr import exact_number, parse
 from .model import Input, Output, Scene
 
@@ -35,6 +35,7 @@ _EXTRA_KEYS = {
     "crank": {"length", "input", "phase"},
     "dyad": {"lengths", "branch"},
     "frame": {"at"},
+    "slider": {"distance", "branch"},
 }
 
 
@@ -238,6 +239,35 @@ class _Loader:
         if branch not in Dyad.labels:
             self.fail(f"{element}.branch", f"branch must be 'left' or 'right', got {branch!r}")
         return Dyad(bases, lengths, branch)
+
+    def subtable(self, spec, key, element, keys, example):
+        value = spec.get(key)
+        if not isinstance(value, dict):
+            self.fail(f"{element}.{key}", f"expected a table like {example}, got {value!r}")
+        extra = set(value) - set(keys)
+        if extra:
+            self.fail(f"{element}.{key}.{sorted(extra)[0]}", f"unknown key (expected {', '.join(keys)})")
+        for name in keys:
+            if name not in value:
+                self.fail(f"{element}.{key}.{name}", f"missing (expected {example})")
+        return value
+
+    def slider(self, spec, element, names, inputs):
+        line = self.subtable(spec, "slider", element, ("through", "direction"),
+                             '{ through = "O", direction = [1, 0] }')
+        through = self.point_ref(line["through"], f"{element}.slider.through", names)
+        direction = tuple(self.expr(v, f"{element}.slider.direction")
+                          for v in self.pair(line, "direction", f"{element}.slider"))
+        if all(d.is_number and d == 0 for d in direction):
+            self.fail(f"{element}.slider.direction", "direction must not be zero, got [0, 0]")
+        distance = self.subtable(spec, "distance", element, ("to", "length"), '{ to = "A", length = 3 }')
+        to = self.point_ref(distance["to"], f"{element}.distance.to", names)
+        length = self.positive(distance["length"], f"{element}.distance.length")
+        branch = spec.get("branch", "ahead")
+        if branch not in Slider.labels:
+            self.fail(f"{element}.branch", "branch must be 'ahead' or 'behind' (along the direction, "
+                      f"from the foot of the perpendicular from {to}), got {branch!r}")
+        return Slider(through, direction, to, length, branch)
 
     def frame(self, spec, element, names, inputs):
         bases = tuple(self.point_ref(p, f"{element}.frame", names) for p in self.pair(spec, "frame", element))

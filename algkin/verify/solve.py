@@ -29,6 +29,10 @@ class Blocks:
         names = list(system.variables)
         self.args = [symbol(n) for n in names]
         pending = [eq for eq in system.equations if eq.free_symbols & {symbol(u) for u in system.unknowns}]
+        # Coordinates are about as large as the lengths, whose squares are coefficients: Newton's
+        # starts must spread over that size too, not only over the known values (cos, sin).
+        self.size = max((abs(float(c)) ** 0.5 for eq in pending
+                         for c in sympy.Poly(eq, *eq.free_symbols).coeffs()), default=0.0)
         solved, self.blocks = set(), []
         while len(solved) < len(system.unknowns):
             block = self._next_block(pending, solved)
@@ -84,7 +88,7 @@ def _solve_univariate(block, values, blocks):
 def _solve_newton(block, values, blocks, rng):
     _, names, f_np, j_np, f_mp, j_mp = block
     known = [abs(float(v)) for v in values.values()]
-    scale = 2 * (max(known, default=0) + 1)
+    scale = 2 * (max(known + [blocks.size]) + 1)
     starts = rng.uniform(-scale, scale, size=(STARTS, len(names)))
     base = {k: float(v) for k, v in values.items()}
     points = _float_newton(starts, names, base, blocks, f_np, j_np)
