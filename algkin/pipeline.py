@@ -205,20 +205,46 @@ def _compile_and_branch(scene, outputs, params):
     return compiled, branches, groups, timings
 
 
+def _equations_for(system, unknown):
+    """The equations ``unknown`` depends on, and their unknowns (construction order).
+
+    An equation belongs to the unknowns in it that appeared last (equations come in
+    construction order); ``unknown``
+    needs its own equations and, recursively, those of every unknown they mention, never
+    those of later points built on it.
+    """
+    known = set(system.unknowns)
+    names = [[str(v) for v in e.free_symbols if str(v) in known] for e in system.equations]
+    introduced = {}  # unknown -> index of the first equation that mentions it
+    for k, n in enumerate(names):
+        for v in n:
+            introduced.setdefault(v, k)
+    owners = [{v for v in n if introduced[v] == max(introduced[w] for w in n)} if n else set() for n in names]
+    needed, stack = set(), [unknown]
+    while stack:
+        current = stack.pop()
+        if current in needed:
+            continue
+        needed.add(current)
+        for n, owner in zip(names, owners):
+            if current in owner:
+                stack.extend(n)
+    chosen = [e for e, n in zip(system.equations, names) if n and set(n) <= needed]
+    return chosen, [u for u in system.unknowns if u in needed]
+
+
 def derive(scene, outputs=None, method="resultant", backend="flint", params=(), samples=40, seed=0):
     """Eliminants, closed-form branches and their verification for ``outputs`` of ``scene``."""
     start = time.perf_counter()
     compiled, branches, groups, timings = _compile_and_branch(_scene(scene), outputs, params)
     mark = time.perf_counter()
     system = compiled.system
-    unknown_symbols = {symbol(u) for u in system.unknowns}
-    equations = [e for e in system.equations if e.free_symbols & unknown_symbols]
     keep_always = list(system.input_variables) + list(system.parameters)
-    eliminations = {
-        u: eliminate(equations, [v for v in system.unknowns if v != u], [u] + keep_always,
-                     method=method, backend=backend, witnesses=groups)
-        for u in system.unknowns
-    }
+    eliminations = {}
+    for u in system.unknowns:
+        equations, unknowns = _equations_for(system, u)
+        eliminations[u] = eliminate(equations, [v for v in unknowns if v != u], [u] + keep_always,
+                                    method=method, backend=backend, witnesses=groups)
     timings["eliminate"] = time.perf_counter() - mark
     mark = time.perf_counter()
     verification = _verify(compiled, branches, samples, seed,
