@@ -176,7 +176,7 @@ def _cases(subject, samples, rng):
     cases = {"uniform": np.sort(np.radians(lows + rng.random(samples) * widths[pick]))}
     from .toggles import toggles
 
-    edges = [np.radians(t.input_deg) for t in toggles(subject.compiled.scene).toggles if t.point == subject.dyad.point]
+    edges = [np.radians(t.input_deg) for t in toggles(subject.compiled.scene, artefacts=False).toggles if t.point == subject.dyad.point]
     for offset in TOGGLE_OFFSETS:
         near = []
         for edge in edges:

@@ -186,7 +186,7 @@ def certify_labels(compiled, branches):
         return [None] * len(branches)
     (name, (c, s)), = compiled.system.inputs.items()
     spec = compiled.scene.inputs[name]
-    lo, hi = (float(sympy.deg(spec.to_radians(v))) for v in (spec.lo, spec.hi))
+    lo, hi = spec.range_degrees
     defaults = {n: ARB.number(Fraction(str(v)).numerator, Fraction(str(v)).denominator)
                 for n, v in compiled.parameter_values.items()}
     return [certify_label(b, c, s, lo, hi, defaults) for b in branches]

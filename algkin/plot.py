@@ -9,7 +9,6 @@ Figures are built on ``matplotlib.figure.Figure`` with the Agg canvas, never thr
   with certified minima at sample dimensions drawn on top (they must lie on the line).
 """
 
-import mpmath
 import numpy as np
 import sympy
 
@@ -111,14 +110,10 @@ def _within(region, x):
 
 def _certified_minimum(found, quantity, symbol, x):
     """The minimum at one dimension, by the fixed-dimension certified path (independent of the regions)."""
-    from .extremum import critical_points, extreme
+    from .extremum import extreme, points_at
 
     values = {symbol: sympy.Rational(str(x))}
-    problem = found.problem
-    factors = [sympy.expand(f.xreplace(values)) for f in found.stationary]
-    with mpmath.workdps(40):
-        best = extreme(critical_points(problem.at(values), factors, *found.range))
-    return float(best.value)
+    return float(extreme(points_at(found.problem, found.stationary, values, *found.range)).value)
 
 
 def accuracy_figure(result):

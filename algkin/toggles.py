@@ -98,16 +98,19 @@ def _single_input(compiled):
     return name, symbol(c), symbol(s)
 
 
-def toggles(scene):
-    """Every toggle of every dyad of ``scene`` over its input range, certified."""
+def toggles(scene, artefacts=True):
+    """Every toggle of every dyad of ``scene`` over its input range, certified.
+
+    With ``artefacts`` the eliminants are also derived, to report which factors of their
+    discriminants are not toggles.
+    """
     scene = scene if not isinstance(scene, str) else load_scene(scene)
     dyad_points = [n for n, p in scene.points.items() if isinstance(p, Dyad)]
     if not dyad_points:
         raise UsageError("scene", scene.name, "has no dyad, so no assembly modes to meet")
     compiled = compile_scene(scene, dyad_points)
     name, c, s = _single_input(compiled)
-    spec = scene.inputs[name]
-    lo, hi = (float(sympy.deg(spec.to_radians(v))) for v in (spec.lo, spec.hi))
+    lo, hi = scene.inputs[name].range_degrees
     t = symbol(f"t_{name}")
     found = []
     with flint.ctx.workprec(ROOT_BITS):
@@ -116,9 +119,9 @@ def toggles(scene):
                 for ball in _angles(condition, c, s, t):
                     found += [Toggle(float(ball.mid()) + turn, ball + turn, dyad.point, kind)
                               for turn in (-360, 0, 360) if lo <= float(ball.mid()) + turn <= hi]
-        artefacts = _artefacts(compiled, c, s, t)
+        dropped = _artefacts(compiled, c, s, t) if artefacts else []
     found.sort(key=lambda g: g.input_deg)
-    return Toggles(scene.name, name, (lo, hi), found, grashof(compiled), artefacts)
+    return Toggles(scene.name, name, (lo, hi), found, grashof(compiled), dropped)
 
 
 def _angles(condition, c, s, t):

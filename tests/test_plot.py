@@ -1,6 +1,5 @@
 """Figures: one command each, drawn from closed forms, with the certified points on them."""
 
-import math
 import subprocess
 import sys
 

@@ -12,17 +12,16 @@ sqrt(b**2 + 160000) - 350
 
 from dataclasses import dataclass
 
-import mpmath
 import sympy
 
 from ..errors import UsageError
 from ..pipeline import derive
 from ..system import symbol
 from .closed import ClosedForm, closed_form
-from .critical import CriticalPoint, Problem, critical_points, extreme, stationary_factors
+from .critical import CriticalPoint, Problem, critical_points, extreme, points_at, stationary_factors
 
 __all__ = ["extremum", "extremum_of", "problem_for", "Extremum", "ClosedForm", "CriticalPoint",
-           "critical_points", "extreme"]
+           "critical_points", "points_at", "extreme"]
 
 
 @dataclass
@@ -94,9 +93,7 @@ def extremum_of(derived, output, angle_range=None, largest=False, backend="flint
     lo, hi = _range_degrees(derived.compiled.scene.inputs[name], angle_range)
     defaults = {p: sympy.Rational(str(derived.compiled.parameter_values[p.name])) for p in problem.parameters}
     stationary = stationary_factors(problem, backend)
-    with mpmath.workdps(40):
-        points = critical_points(problem.at(defaults), [sympy.expand(f.xreplace(defaults)) for f in stationary],
-                                 lo, hi)
+    points = points_at(problem, stationary, defaults, lo, hi)
     closed = closed_form(problem, stationary, defaults, lo, hi, largest) if problem.parameters else None
     return Extremum(derived.compiled.scene.name, output, name, (float(lo), float(hi)),
                     {p.name: v for p, v in defaults.items()}, points, extreme(points), extreme(points, True),

@@ -26,7 +26,7 @@ import sympy
 
 from ..eliminate import eliminate
 from ..system.convert import real_roots
-from .critical import DIGITS, ROOT_BITS, critical_points, extreme
+from .critical import DIGITS, ROOT_BITS, extreme, points_at
 
 __all__ = ["ClosedForm", "closed_form", "value_factors"]
 
@@ -206,9 +206,7 @@ def closed_form(problem, stationary, defaults, lo, hi, largest=False):
     values_factors = value_factors(problem)
 
     def extremum_at(values):
-        fixed = problem.at(values)
-        factors = [sympy.expand(f.xreplace(values)) for f in stationary]
-        best = extreme(critical_points(fixed, factors, lo, hi), largest)
+        best = extreme(points_at(problem, stationary, values, lo, hi), largest)
         return best, describe(problem, stationary, values_factors, values, best)
 
     with mpmath.workdps(DIGITS):

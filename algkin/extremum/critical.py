@@ -20,7 +20,7 @@ from ..evaluate import MPMATH, evaluate
 from ..system.angles import half_angle_numerator, tangent_to_degrees
 from ..system.convert import real_roots
 
-__all__ = ["Problem", "CriticalPoint", "critical_points", "extreme",
+__all__ = ["Problem", "CriticalPoint", "critical_points", "points_at", "extreme",
            "stationary_factors", "ROOT_BITS"]
 
 ROOT_BITS = 128
@@ -112,6 +112,13 @@ def critical_points(problem, factors, lo, hi):
                                                ball + turn))
         ends = [CriticalPoint(mpmath.mpf(x), problem.value(mpmath.mpf(x)), "endpoint") for x in (lo, hi)]
     return sorted(found, key=lambda p: p.input_deg) + ends
+
+
+def points_at(problem, stationary, values, lo, hi):
+    """``critical_points`` with the dimensions fixed at ``values`` (symbol -> rational)."""
+    factors = [sympy.expand(f.xreplace(values)) for f in stationary]
+    with mpmath.workdps(DIGITS):
+        return critical_points(problem.at(values), factors, lo, hi)
 
 
 def _mp(number):

@@ -23,6 +23,11 @@ class Input:
     def to_radians(self, value):
         return value * sympy.pi / 180 if self.unit == "deg" else value
 
+    @property
+    def range_degrees(self):
+        """(lo, hi) in degrees, as floats."""
+        return tuple(float(sympy.deg(self.to_radians(v))) for v in (self.lo, self.hi))
+
 
 @dataclass(frozen=True)
 class Output:

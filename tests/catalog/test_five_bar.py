@@ -3,7 +3,7 @@
 import mpmath
 import sympy
 
-from .geometry import branch, circles, exact_at, on_circle, run, same
+from .geometry import branch, circles, on_circle, run, same
 
 
 def test_end_point_with_both_cranks_up_exactly():

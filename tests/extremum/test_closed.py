@@ -1,6 +1,5 @@
 """Closed forms of the arm's minimum in symbolic dimensions, against hand geometry and brute force."""
 
-import math
 
 import pytest
 import sympy
