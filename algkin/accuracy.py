@@ -13,7 +13,9 @@ Errors are against the reference. ``condition`` is the relative condition number
 point in the input angle, ``|theta| * |X'(theta)| / |X|`` (plus one for the rounding of
 the result), so ``error_over_kappa_eps`` near 1 means as accurate as the problem allows.
 Cases: ``uniform`` over the certified intervals, within 1e-6, 1e-10 and 1e-14 (relative)
-of each toggle on its assembling side, and the mechanism translated 1e7 away.
+of each toggle on its assembling side, ``near-fold`` around the input where a dyad that
+never toggles comes within 1% of it (a near-change-point four-bar: its closest approach
+to a dead centre), and the mechanism translated 1e7 away.
 """
 
 import dataclasses
@@ -38,6 +40,7 @@ __all__ = ["accuracy", "Accuracy", "STRATEGIES", "EPS"]
 EPS = 2.0**-53
 REFERENCE_DPS = 61  # 200 bits
 TOGGLE_OFFSETS = (1e-6, 1e-10, 1e-14)
+NEAR_FOLD = 1e-2  # a discriminant factor's smallest value, relative to its largest
 FAR = 10**7
 
 
@@ -100,7 +103,7 @@ def _closed_form(subject, theta, truth):
 
 
 def _stabilised(subject, theta):
-    point = subject.stable(np.cos(theta), np.sin(theta))
+    point = subject.stable(theta)
     return np.array([point[u] for u in subject.unknowns])
 
 
@@ -185,7 +188,30 @@ def _cases(subject, samples, rng):
                 near += [a for a in trial if _assembles(subject, a)]
         if near:
             cases[f"toggle-{offset:.0e}"] = np.sort(np.array(near))
+    folds = _near_folds(subject)
+    if folds:
+        spread = 1e-6 * (2 * rng.random((len(folds), samples // len(folds) + 1)) - 1)
+        cases["near-fold"] = np.sort((np.array(folds)[:, None] * (1 + spread)).ravel())
     return cases
+
+
+def _near_folds(subject):
+    """Inputs (radians) where a factor ``k + beta c + gamma s`` of the discriminant, never zero,
+    comes closest to zero: ``k - R`` or ``k + R`` with ``R = hypot(beta, gamma)``, at the angle
+    of ``-(beta, gamma)`` or ``(beta, gamma)``."""
+    defaults = {symbol(n): sympy.Rational(str(v)) for n, v in subject.compiled.parameter_values.items()}
+    c, s = symbol(subject.c), symbol(subject.s)
+    folds = []
+    for factor, _ in sympy.factor_list(subject.branch.discriminants[subject.dyad.point].xreplace(defaults))[1]:
+        if not factor.free_symbols <= {c, s} or sympy.Poly(factor, c, s).total_degree() != 1:
+            continue
+        poly = sympy.Poly(factor, c, s)
+        k, beta, gamma = (float(poly.coeff_monomial(m)) for m in (1, c, s))
+        reach = np.hypot(beta, gamma)
+        if abs(k) - reach > 0 and (abs(k) - reach) < NEAR_FOLD * (abs(k) + reach):
+            toward = -np.sign(k)  # the side where k + beta c + gamma s is smallest in size
+            folds.append(float(np.arctan2(toward * gamma, toward * beta)) % (2 * np.pi))
+    return folds
 
 
 def _assembles(subject, angle):

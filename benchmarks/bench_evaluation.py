@@ -2,10 +2,12 @@
 
 The seeds' way: ``sympy.solve`` the eliminants for ``B_x`` and ``B_y``, substitute
 ``c = cos(theta)``, ``s = sin(theta)`` and ``lambdify`` to numpy. algkin: the stabilised
-branch (local frame, sorted Heron), cos and sin taken once. Both are timed on the same
-float64 angles (median of repeats, after a warm-up); both errors are measured against
-mpmath at 200 bits on a subsample of those angles, and the run asserts the stabilised
-error is no worse.
+branch (``branches/stable.py``: one ``tan(theta/2)`` per sample, exact factored
+discriminants, chunks that stay in cache). Both are timed on the same float64 angles
+(median of repeats, after a warm-up); both errors are measured against mpmath at 200 bits
+on a subsample of those angles (median and max of the relative error, in units of
+2**-53), and the run asserts the stabilised error is no worse than the seeds' beyond a
+factor 1.5 at its maximum.
 
 Run: ``make bench`` (or ``python benchmarks/bench_evaluation.py [--samples N ...]``).
 """
@@ -25,7 +27,8 @@ from algkin.pipeline import derive
 from algkin.scene import compile_scene, load_scene
 from algkin.system import symbol
 
-SCENES = ("chebyshev-lambda",)
+SCENES = ("chebyshev-lambda", "fourbar-near-toggle")
+EPS = 2.0**-53
 
 
 def seeds_way(derived, unknowns, theta):
@@ -67,7 +70,7 @@ def bench(name, samples, repeats):
     check = theta[:: max(1, samples // 2000)]
     truth = reference(branch, c, s, unknowns, check)
     stable = StableBranch(compiled, branch)
-    ours, ours_seconds = timed(lambda: stable(np.cos(theta), np.sin(theta)), repeats)
+    ours, ours_seconds = timed(lambda: stable(theta), repeats)
     ours = np.array([ours[u] for u in unknowns])
     functions = seeds_way(derive(scene, [point], samples=0), unknowns, theta)
     # The seeds pick the root by hand; credit them the right one (the nearest to the truth at the check points).
@@ -76,12 +79,14 @@ def bench(name, samples, repeats):
     theirs, theirs_seconds = timed(lambda: [functions[i][k](theta) for i, k in enumerate(picks)], repeats)
     theirs = np.array(theirs)
     step = max(1, samples // 2000)
-    error = lambda estimate: float(np.nanmax(np.abs(estimate[:, ::step] - truth) / np.abs(truth).max(axis=0)))  # noqa: E731
-    ours_error, theirs_error = error(ours), error(theirs)
-    assert ours_error <= max(2 * theirs_error, 4 * np.finfo(float).eps), (ours_error, theirs_error)
+    errors = lambda estimate: np.abs(estimate[:, ::step] - truth).max(axis=0) / np.abs(truth).max(axis=0) / EPS  # noqa: E731
+    ours_error, theirs_error = errors(ours), errors(theirs)
+    assert ours_error.max() <= max(1.5 * theirs_error.max(), 8), (ours_error.max(), theirs_error.max())
     return {"scene": name, "samples": samples,
             "stabilised_ns": ours_seconds / samples * 1e9, "lambdify_ns": theirs_seconds / samples * 1e9,
-            "speedup": theirs_seconds / ours_seconds, "stabilised_error": ours_error, "lambdify_error": theirs_error}
+            "speedup": theirs_seconds / ours_seconds,
+            "stabilised_error": (float(np.median(ours_error)), float(ours_error.max())),
+            "lambdify_error": (float(np.median(theirs_error)), float(theirs_error.max()))}
 
 
 def main():
@@ -89,13 +94,14 @@ def main():
     parser.add_argument("--samples", type=int, nargs="+", default=[10**4, 10**5, 10**6])
     parser.add_argument("--repeats", type=int, default=5)
     args = parser.parse_args()
-    print(f"{'scene':18} {'samples':>8} {'stabilised ns':>14} {'lambdify ns':>12} {'speedup':>8} "
-          f"{'stab. rel err':>14} {'lambdify rel err':>17}")
+    print(f"{'scene':20} {'samples':>8} {'stabilised ns':>14} {'lambdify ns':>12} {'speedup':>8} "
+          f"{'stabilised err (median max)':>28} {'lambdify err (median max)':>26}   [units of 2**-53]")
     for name in SCENES:
         for samples in args.samples:
             r = bench(name, samples, args.repeats)
-            print(f"{r['scene']:18} {r['samples']:8} {r['stabilised_ns']:14.1f} {r['lambdify_ns']:12.1f} "
-                  f"{r['speedup']:7.1f}x {r['stabilised_error']:14.2e} {r['lambdify_error']:17.2e}")
+            print(f"{r['scene']:20} {r['samples']:8} {r['stabilised_ns']:14.1f} {r['lambdify_ns']:12.1f} "
+                  f"{r['speedup']:7.1f}x {r['stabilised_error'][0]:19.2f} {r['stabilised_error'][1]:8.2f} "
+                  f"{r['lambdify_error'][0]:17.2f} {r['lambdify_error'][1]:8.2f}")
 
 
 if __name__ == "__main__":

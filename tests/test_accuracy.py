@@ -76,3 +76,29 @@ def test_sorted_heron_is_accurate_for_every_closable_triangle(a, b, fraction):
     else:
         # Kahan's ordering: within a few ulps times what the sides' own rounding allows.
         assert abs(computed - exact) / exact <= 16 * EPS * float(_area_condition(a, b, c))
+
+
+@pytest.fixture(scope="module")
+def near_change_point_rows():
+    return accuracy("fourbar-near-toggle", samples=400, seed=2).rows
+
+
+def test_near_change_point_four_bar_is_sampled_at_its_closest_approach(near_change_point_rows):
+    # Crank 1, ground 4, coupler 3, rocker 2.001: |AD| = 5 at 180 deg, 1/1000 short of folding.
+    cases = {r["case"] for r in near_change_point_rows}
+    assert {"uniform", "near-fold", "far-1e7"} <= cases
+
+
+def test_stabilised_beats_the_raw_closed_form_near_the_fold(near_change_point_rows):
+    by = {(r["strategy"], r["case"]): r for r in near_change_point_rows}
+    for case in ("uniform", "near-fold", "far-1e7"):
+        assert by["stabilised", case]["max_rel_error"] <= 10 * by["stabilised", case]["condition"] * EPS
+    # (l + m)**2 - |AD|**2 = 0.010001 + 16 cos(theta/2)**2 in the stabilised form; expanded,
+    # 8.010001 + 8 cos(theta) loses three digits to cancellation at 180 deg.
+    assert by["closed-form", "near-fold"]["max_rel_error"] > 3 * by["stabilised", "near-fold"]["max_rel_error"]
+
+
+def test_chebyshev_lambda_stabilised_within_ten_kappa_eps():
+    for row in accuracy("chebyshev-lambda", samples=400, seed=3).rows:
+        if row["strategy"] == "stabilised":
+            assert row["max_rel_error"] <= 10 * row["condition"] * EPS, row

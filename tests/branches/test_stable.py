@@ -1,0 +1,85 @@
+"""The stabilised evaluator agrees with the closed forms at high precision, on every catalog scene."""
+
+from fractions import Fraction
+
+import mpmath
+import numpy as np
+import pytest
+import sympy
+from hypothesis import given, settings, strategies as st
+
+from algkin.branches import closed_forms
+from algkin.branches.stable import StableBranch, stable_quadratic
+from algkin.scene.load import catalog_names
+from algkin.evaluate import MPMATH, evaluate
+from algkin.scene import compile_scene, load_scene
+from algkin.system import symbol
+
+EPS = 2.0**-53
+SCENES = [n for n in catalog_names() if n != "arm-string"]  # the arm has no dyad or slider
+
+
+def _truth(branch, compiled, angles):
+    """Every unknown of the branch at 40 digits from its closed form; nan where it is not real
+    (its own dyad, or one it is built on, cannot assemble)."""
+    defaults = {symbol(n): sympy.Rational(str(v)) for n, v in compiled.parameter_values.items()}
+    inputs = list(compiled.system.inputs.values())
+    real = lambda v: float(v) if not isinstance(v, mpmath.mpc) else (float(v.real) if v.imag == 0 else np.nan)  # noqa: E731
+    with mpmath.workdps(40):
+        rows = []
+        for sample in zip(*angles):
+            values = {}
+            for (c, s), angle in zip(inputs, sample):
+                values[c], values[s] = mpmath.cos(angle), mpmath.sin(angle)
+            rows.append([real(evaluate(v.xreplace(defaults), values, MPMATH)) for v in branch.values.values()])
+    return np.array(rows).T
+
+
+@pytest.mark.parametrize("name", SCENES)
+def test_every_branch_matches_its_closed_form(name):
+    compiled = compile_scene(load_scene(name))
+    rng = np.random.default_rng(7)
+    angles = [rng.uniform(-np.pi, np.pi, 60) for _ in compiled.system.inputs]
+    for branch in closed_forms(compiled):
+        truth = _truth(branch, compiled, angles)
+        got = StableBranch(compiled, branch)(*angles)
+        for row, unknown in zip(truth, branch.values):
+            if unknown not in got:  # an output defined from the points, not a point
+                continue
+            assert np.array_equal(np.isnan(row), np.isnan(got[unknown])), (branch.label, unknown)
+            ok = ~np.isnan(row)
+            scale = 1 + np.abs(row[ok])
+            assert np.max(np.abs(got[unknown][ok] - row[ok]) / scale, initial=0) < 1e-11, (branch.label, unknown)
+
+
+rationals = st.fractions(min_value=-100, max_value=100, max_denominator=1000)
+
+
+def _exact(a2, a1, a0, t):
+    t = Fraction(float(t))
+    return a2 * t * t + a1 * t + a0
+
+
+@settings(max_examples=300)
+@given(rationals.filter(lambda v: v != 0), rationals, rationals, st.floats(-1e6, 1e6))
+def test_stable_quadratic_is_accurate_to_a_few_ulps_of_its_own_condition(a2, a1, a0, t):
+    computed = float(stable_quadratic(a2, a1, a0)(np.array([t]))[0])
+    exact = _exact(a2, a1, a0, t)
+    disc = a1 * a1 - 4 * a2 * a0
+    if disc < 0:  # a sum of two positive terms: relative accuracy everywhere, however small
+        bound = 8 * EPS * abs(exact)
+    else:  # each root is rounded once: as good as the distance to it allows
+        with mpmath.workdps(40):
+            roots = [(-a1 + sign * mpmath.sqrt(disc)) / (2 * a2) for sign in (1, -1)]
+            bound = 8 * EPS * abs(float(exact)) * (1 + sum(float(abs(r) / abs(t - r)) for r in roots if t != r))
+    assert abs(computed - float(exact)) <= bound + 1e-300
+
+
+def test_a_sum_of_positives_where_the_expanded_form_cancels():
+    # 1e-4 t**2 - 2 t + (1e4 + 1e-6): minimum 1e-6 at t = 1e4, terms of size 1e4 cancel there.
+    a2, a1, a0 = Fraction(1, 10**4), Fraction(-2), Fraction(10**4) + Fraction(1, 10**6)
+    t = np.array([1e4])
+    expanded = float(a2) * t * t + float(a1) * t + float(a0)
+    stable = stable_quadratic(a2, a1, a0)(t)
+    assert abs(stable[0] - 1e-6) <= 4 * EPS * 1e-6
+    assert abs(expanded[0] - 1e-6) > 1e3 * abs(stable[0] - 1e-6)  # the naive form loses digits
