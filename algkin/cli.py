@@ -23,7 +23,8 @@ def _common(parser, method=True):
     parser.add_argument("scene", help="catalog name or path of a scene file")
     parser.add_argument("--json", action="store_true", help="one JSON document on stdout")
     if method:
-        parser.add_argument("--method", default="resultant", help="elimination method: resultant, groebner")
+        parser.add_argument("--method", default=None,
+                            help="elimination method: linear (the default), resultant, groebner")
         parser.add_argument("--backend", default="flint", help="polynomial backend: flint, sympy")
         parser.add_argument("--param", action="append", default=[], help="keep this parameter symbolic")
         parser.add_argument("--samples", type=int, default=40, help="verification samples")
@@ -72,7 +73,48 @@ def build_parser():
     plot.add_argument("--range", help="lo:hi of the input, in its unit")
     plot.add_argument("--derivative", action="store_true", help="the slope, with its zero marked")
     plot.add_argument("--against", help="p=lo:hi: the minimum against the dimension p")
+    bench = commands.add_parser("bench", help="elimination methods compared on a problem set, peers beside")
+    bench.add_argument("--problems", nargs="+", help="problem names (default: the whole suite)")
+    bench.add_argument("--methods", nargs="+", help="elimination methods (default: all)")
+    bench.add_argument("--backends", nargs="+", help="polynomial backends (default: all)")
+    bench.add_argument("--budget", type=float, default=60.0, help="seconds per row before it is stopped")
+    bench.add_argument("--no-peers", action="store_true", help="skip Singular, PARI/GP, Macaulay2, msolve")
+    bench.add_argument("--out", help="directory for bench.json, bench.csv and bench.png")
+    bench.add_argument("--json", action="store_true")
     return parser
+
+
+def _cmd_bench(args):
+    from .bench import bench, problem_names
+    from .bench.report import table, write
+    from .eliminate import backend_names, method_names
+
+    for option, given, valid in (("--problems", args.problems, problem_names()),
+                                 ("--methods", args.methods, method_names()),
+                                 ("--backends", args.backends, backend_names())):
+        for name in given or ():
+            if name not in valid:
+                raise UsageError(option, name, f"unknown; valid: {', '.join(valid)}")
+    if args.budget <= 0:
+        raise UsageError("--budget", args.budget, "must be a positive number of seconds")
+    progress = lambda message: print(f"algkin bench: {message}", file=sys.stderr, flush=True)  # noqa: E731
+    report = bench(args.problems, args.methods, args.backends, args.budget, not args.no_peers, progress)
+    written = write(report, args.out) if args.out else []
+    if args.json:
+        print(json.dumps(report.to_json(), indent=2))
+    else:
+        print(table(report.rows))
+        print("machine: " + ", ".join(f"{k} {v}" for k, v in report.machine.items()))
+        for path in written:
+            print(f"wrote {path}")
+    return 0 if all(r["agrees"] in (None, "reference") or r["agrees"].startswith("yes") for r in report.rows) else 1
+
+
+def _method(args):
+    """The method asked for, else the default (imported here: ``algkin list`` loads no algebra)."""
+    from .eliminate import DEFAULT_METHOD
+
+    return args.method or DEFAULT_METHOD
 
 
 def _range(text):
@@ -263,7 +305,7 @@ def _report_show(d):
 def _cmd_derive(args):
     from .pipeline import derive
 
-    result = derive(args.scene, args.outputs, args.method, args.backend, args.param, args.samples, args.seed)
+    result = derive(args.scene, args.outputs, _method(args), args.backend, args.param, args.samples, args.seed)
     document = result.to_json()
     _emit(args, document, _report_derive)
     return 0 if result.verification.passed else 1
@@ -299,7 +341,7 @@ def _report_derive(d):
 def _cmd_curve(args):
     from .pipeline import curve
 
-    result = curve(args.scene, args.point, args.method, args.backend, args.param, args.samples, args.seed)
+    result = curve(args.scene, args.point, _method(args), args.backend, args.param, args.samples, args.seed)
     document = result.to_json()
     _emit(args, document, _report_curve)
     return 0 if result.verification.passed else 1
@@ -319,7 +361,7 @@ def _report_curve(d):
 def _cmd_verify(args):
     from .pipeline import derive
 
-    result = derive(args.scene, args.outputs, args.method, args.backend, args.param, args.samples, args.seed)
+    result = derive(args.scene, args.outputs, _method(args), args.backend, args.param, args.samples, args.seed)
     document = {"scene": result.compiled.scene.name, "verification": result.verification.to_json(),
                 "branches": [b.label for b in result.branches], "timings": result.timings}
     _emit(args, document, lambda d: f"scene {d['scene']}, branches {', '.join(d['branches'])}\n"
@@ -329,7 +371,7 @@ def _cmd_verify(args):
 
 COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
             "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot,
-            "toggles": _cmd_toggles, "accuracy": _cmd_accuracy}
+            "toggles": _cmd_toggles, "accuracy": _cmd_accuracy, "bench": _cmd_bench}
 
 
 def main(argv=None):

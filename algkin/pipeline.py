@@ -14,14 +14,15 @@ import flint
 import sympy
 
 from .branches import certify_label, check_assembly, circularity, closed_forms
-from .eliminate import eliminate
+from .eliminate import DEFAULT_METHOD
 from .errors import UsageError
 from .evaluate import ARB, evaluate
 from .scene import Scene, compile_scene, load_scene
 from .system import symbol
+from .tasks import curve_task, eliminant_tasks
 from .verify import Verification, verify_branches
 
-__all__ = ["derive", "curve", "Derivation", "CurveResult", "witnesses", "certify_labels"]
+__all__ = ["derive", "curve", "Derivation", "CurveResult", "witnesses", "certify_labels", "compile_and_branch"]
 
 WITNESS_BITS = 256
 WITNESSES_PER_BRANCH = 3
@@ -192,7 +193,7 @@ def certify_labels(compiled, branches):
     return [certify_label(b, c, s, lo, hi, defaults) for b in branches]
 
 
-def _compile_and_branch(scene, outputs, params):
+def compile_and_branch(scene, outputs, params):
     """The stages derive and curve share: compile, closed forms, assembly check, witnesses."""
     start = time.perf_counter()
     compiled = compile_scene(scene, outputs, params)
@@ -205,46 +206,12 @@ def _compile_and_branch(scene, outputs, params):
     return compiled, branches, groups, timings
 
 
-def _equations_for(system, unknown):
-    """The equations ``unknown`` depends on, and their unknowns (construction order).
-
-    An equation belongs to the unknowns in it that appeared last (equations come in
-    construction order); ``unknown``
-    needs its own equations and, recursively, those of every unknown they mention, never
-    those of later points built on it.
-    """
-    known = set(system.unknowns)
-    names = [[str(v) for v in e.free_symbols if str(v) in known] for e in system.equations]
-    introduced = {}  # unknown -> index of the first equation that mentions it
-    for k, n in enumerate(names):
-        for v in n:
-            introduced.setdefault(v, k)
-    owners = [{v for v in n if introduced[v] == max(introduced[w] for w in n)} if n else set() for n in names]
-    needed, stack = set(), [unknown]
-    while stack:
-        current = stack.pop()
-        if current in needed:
-            continue
-        needed.add(current)
-        for n, owner in zip(names, owners):
-            if current in owner:
-                stack.extend(n)
-    chosen = [e for e, n in zip(system.equations, names) if n and set(n) <= needed]
-    return chosen, [u for u in system.unknowns if u in needed]
-
-
-def derive(scene, outputs=None, method="resultant", backend="flint", params=(), samples=40, seed=0):
+def derive(scene, outputs=None, method=DEFAULT_METHOD, backend="flint", params=(), samples=40, seed=0):
     """Eliminants, closed-form branches and their verification for ``outputs`` of ``scene``."""
     start = time.perf_counter()
-    compiled, branches, groups, timings = _compile_and_branch(_scene(scene), outputs, params)
+    compiled, branches, groups, timings = compile_and_branch(_scene(scene), outputs, params)
     mark = time.perf_counter()
-    system = compiled.system
-    keep_always = list(system.input_variables) + list(system.parameters)
-    eliminations = {}
-    for u in system.unknowns:
-        equations, unknowns = _equations_for(system, u)
-        eliminations[u] = eliminate(equations, [v for v in unknowns if v != u], [u] + keep_always,
-                                    method=method, backend=backend, witnesses=groups)
+    eliminations = {u: task.run(method, backend) for u, task in eliminant_tasks(compiled, groups).items()}
     timings["eliminate"] = time.perf_counter() - mark
     mark = time.perf_counter()
     verification = _verify(compiled, branches, samples, seed,
@@ -257,22 +224,36 @@ def derive(scene, outputs=None, method="resultant", backend="flint", params=(), 
     return Derivation(compiled, method, backend, eliminations, branches, verification, timings, certified)
 
 
-def curve(scene, point, method="resultant", backend="flint", params=(), samples=40, seed=0):
+def _curve_figures(result, variables):
+    """Degree in the point's coordinates, and circularity: how many times ``x**2 + y**2``
+    divides the top-degree form (computed in the backend, no conversion)."""
+    engine = result.engine
+    parts = engine.split(result.raw, list(variables))
+    degree = max(sum(k) for k in parts)
+    top = engine.join({k: v for k, v in parts.items() if sum(k) == degree}, list(variables))
+    x, y = (symbol(v) for v in variables)
+    circle, count = engine.from_sympy(x**2 + y**2), 0
+    while 2 * (count + 1) <= degree:
+        top = engine.quotient(top, circle)
+        if top is None:
+            break
+        count += 1
+    return degree, count
+
+
+def curve(scene, point, method=DEFAULT_METHOD, backend="flint", params=(), samples=40, seed=0):
     """The implicit curve ``F(point_x, point_y) = 0`` traced by ``point``."""
     scene = _scene(scene)
     if point not in scene.points:
         raise UsageError("--point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
     start = time.perf_counter()
-    compiled, branches, groups, timings = _compile_and_branch(scene, [point], params)
+    compiled, branches, groups, timings = compile_and_branch(scene, [point], params)
     mark = time.perf_counter()
-    system = compiled.system
-    variables = (f"{point}_x", f"{point}_y")
-    others = [u for u in system.unknowns if u not in variables] + list(system.input_variables)
-    result = eliminate(system.equations, others, list(variables) + list(system.parameters),
-                       method=method, backend=backend, witnesses=groups)
+    task = curve_task(compiled, groups, point)
+    result = task.run(method, backend)
+    variables = task.keep[:2]
     timings["eliminate"] = time.perf_counter() - mark
-    x, y = (symbol(v) for v in variables)
-    figures = (sympy.Poly(result.polynomial, x, y).total_degree(), circularity(result.polynomial, x, y))
+    figures = _curve_figures(result, variables)
     mark = time.perf_counter()
     verification = _verify(compiled, branches, samples, seed, {"curve": result.polynomial})
     timings["verify"] = time.perf_counter() - mark

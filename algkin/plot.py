@@ -14,7 +14,7 @@ import sympy
 
 from .errors import AlgkinError, UsageError
 
-__all__ = ["quantity_figure", "minimum_figure", "accuracy_figure", "save", "FORMATS"]
+__all__ = ["quantity_figure", "minimum_figure", "accuracy_figure", "bench_figure", "save", "FORMATS"]
 
 FORMATS = (".png", ".svg", ".pdf")
 
@@ -136,4 +136,30 @@ def accuracy_figure(result):
     axes.set_title(f"Speed against error: {result.point} of {result.scene}")
     axes.grid(True, which="both", linewidth=0.3)
     axes.legend()
+    return figure
+
+
+def bench_figure(rows):
+    """Seconds per problem (log scale), one bar per method/backend or peer; over budget not drawn."""
+    figure = _figure()
+    figure.set_size_inches(9, 4.8)
+    axes = figure.add_subplot()
+    problems = list(dict.fromkeys(r["problem"] for r in rows))
+    series = list(dict.fromkeys((r["method"], r["backend"]) for r in rows))
+    width = 0.8 / len(series)
+    for k, (method, backend) in enumerate(series):
+        xs, ys = [], []
+        for i, problem in enumerate(problems):
+            found = [r["seconds"] for r in rows if (r["problem"], r["method"], r["backend"]) == (problem, method, backend)]
+            if found and found[0]:
+                xs.append(i - 0.4 + (k + 0.5) * width)
+                ys.append(found[0])
+        label = method if backend == "peer" else f"{method} / {backend}"
+        axes.bar(xs, ys, width=width, label=label)
+    axes.set_yscale("log")
+    axes.set_xticks(range(len(problems)), problems, rotation=20, ha="right", fontsize="small")
+    axes.set_ylabel("seconds (median of repeats)")
+    axes.set_title("Elimination methods compared (missing bar: over budget, failed or skipped)")
+    axes.grid(True, axis="y", which="both", linewidth=0.3)
+    axes.legend(fontsize="x-small", ncols=2)
     return figure

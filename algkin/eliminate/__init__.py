@@ -9,18 +9,24 @@
 >>> eliminate(circles, ["x"], ["y", "c", "s"], method="magic")
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: method='magic': unknown elimination method; valid: groebner, resultant
+algkin.errors.UsageError: method='magic': unknown elimination method; valid: groebner, linear, resultant
 """
 
+import functools
 import time
 from dataclasses import dataclass, field
 
 from ..errors import ComputationError, UsageError
 from .backends import BACKENDS
-from .methods import METHODS, prepare
+from .linear import linear_elimination
+from .methods import groebner_basis, prepare, resultant_chain
 from .select import select_factors
 
-__all__ = ["eliminate", "Elimination", "METHODS", "BACKENDS", "method_names", "backend_names"]
+__all__ = ["eliminate", "Elimination", "METHODS", "DEFAULT_METHOD", "BACKENDS", "method_names", "backend_names"]
+
+
+METHODS = {"resultant": resultant_chain, "groebner": groebner_basis, "linear": linear_elimination}
+DEFAULT_METHOD = "linear"  # measured fastest on every catalog problem: ``algkin bench``
 
 
 def method_names():
@@ -33,12 +39,18 @@ def backend_names():
 
 @dataclass
 class Elimination:
-    """An eliminant: primitive, squarefree, its factors kept and dropped, and its figures."""
+    """An eliminant: primitive, squarefree, its factors kept and dropped, and its figures.
 
-    polynomial: object  # sympy expression
+    The polynomials stay in the backend until first asked for as sympy expressions
+    (``polynomial``, ``factors``, ``dropped``): converting is the slow edge, and a
+    benchmark or a budget check needs only the figures.
+    """
+
+    engine: object
+    raw: object  # the eliminant in the backend's type
+    raw_factors: list
+    raw_dropped: list
     variables: tuple
-    factors: list
-    dropped: list
     method: str
     backend: str
     degree: int
@@ -46,6 +58,18 @@ class Elimination:
     bits: int
     seconds: float
     log: list = field(default_factory=list)
+
+    @functools.cached_property
+    def polynomial(self):
+        return self.engine.to_sympy(self.raw)
+
+    @functools.cached_property
+    def factors(self):
+        return [self.engine.to_sympy(self.engine.primitive(f)) for f in self.raw_factors]
+
+    @functools.cached_property
+    def dropped(self):
+        return [self.engine.to_sympy(self.engine.primitive(f)) for f in self.raw_dropped]
 
 
 def _lookup(table, kind, name):
@@ -62,11 +86,13 @@ def _consistent(engine, polys):
     return polys
 
 
-def eliminate(equations, eliminate, keep, method="resultant", backend="flint", witnesses=()):
+def eliminate(equations, eliminate, keep, method=DEFAULT_METHOD, backend="flint", witnesses=(), parameters=()):
     """Eliminate the variables ``eliminate`` from ``equations`` (sympy polynomials over QQ).
 
     Returns the polynomial left in the variables ``keep``, with factors the witnesses
     (groups of configurations, name -> arb) do not satisfy dropped and reported.
+    ``parameters`` (a subset of ``keep``: dimensions) may appear in the multipliers of the
+    ``linear`` method.
     """
     run = _lookup(METHODS, "method", method)
     engine = _lookup(BACKENDS, "backend", backend)(tuple(eliminate) + tuple(keep))
@@ -74,7 +100,7 @@ def eliminate(equations, eliminate, keep, method="resultant", backend="flint", w
     polys = [engine.from_sympy(eq) for eq in equations]
     log, dropped = [], []
     polys = _consistent(engine, prepare(engine, polys, list(eliminate), log))
-    left = _consistent(engine, run(engine, polys, list(eliminate), witnesses, dropped, log))
+    left = _consistent(engine, run(engine, polys, list(eliminate), witnesses, dropped, log, parameters))
     if not left:
         raise ComputationError(f"nothing left after eliminating {', '.join(eliminate)}")
     eliminant = left[0]
@@ -90,14 +116,16 @@ def eliminate(equations, eliminate, keep, method="resultant", backend="flint", w
     product = engine.primitive(product)
     seconds = time.perf_counter() - start
     return Elimination(
-        polynomial=engine.to_sympy(product),
+        engine=engine,
+        raw=product,
+        raw_factors=kept,
+        raw_dropped=dropped,
         variables=tuple(keep),
-        factors=[engine.to_sympy(engine.primitive(f)) for f in kept],
-        dropped=[engine.to_sympy(engine.primitive(f)) for f in dropped],
         method=method,
         backend=backend,
         degree=engine.total_degree(product),
         terms=engine.nterms(product),
         bits=engine.coefficient_bits(product),
         seconds=seconds,
+        log=log,
     )

@@ -11,6 +11,7 @@ import flint
 import sympy
 
 from ..system import symbol
+from .select import evaluate_terms
 from ..system.convert import flint_context, to_flint, to_flint_integer, to_sympy
 
 __all__ = ["FlintBackend", "SympyBackend", "BACKENDS"]
@@ -63,13 +64,58 @@ class FlintBackend:
         return poly * flint.fmpq(numerator, denominator)
 
     def substitute(self, poly, var, value):
-        gens = list(self.ctx.gens())
-        gens[self.names.index(var)] = value
-        return poly.compose(*gens)
+        """``poly`` with ``var`` replaced by the polynomial ``value`` (Horner in ``var``)."""
+        parts = self.split(poly, [var])
+        total = self.zero()
+        for degree in range(max(e for (e,) in parts), -1, -1):
+            total = total * value + parts.get((degree,), self.zero())
+        return total
 
     def terms(self, poly):
         """``(exponents, numerator, denominator)`` per term, for evaluation at witnesses."""
         return [(m, int(c.p), int(c.q)) for m, c in zip(poly.monoms(), poly.coeffs())]
+
+    def zero(self):
+        return self.ctx.from_dict({})
+
+    def vanishes_at(self, poly, point):
+        """Whether the ball of ``poly`` at ``point`` (name -> arb) contains zero."""
+        return evaluate_terms(self.terms(poly), self.names, point).contains(0)
+
+    def divide(self, f, g):
+        """``f / g``, exact."""
+        return f / g
+
+    def quotient(self, f, g):
+        """``f / g`` if ``g`` divides ``f``, else None."""
+        quotient, remainder = divmod(f, g)
+        return quotient if remainder.is_zero() else None
+
+    def split(self, poly, variables):
+        """``{exponents in variables: coefficient free of them}``, by substitution and exact
+        division in C (a Python loop over the terms is ten times slower)."""
+        if not variables:
+            return {(): poly}
+        name, gen = variables[0], self.ctx.gens()[self.names.index(variables[0])]
+        parts, degree = {}, 0
+        while not poly.is_zero():
+            part = poly.subs({name: 0})
+            if not part.is_zero():
+                for key, value in self.split(part, variables[1:]).items():
+                    parts[(degree,) + key] = value
+            poly, degree = (poly - part) / gen, degree + 1
+        return parts
+
+    def join(self, parts, variables):
+        """The inverse of ``split``."""
+        gens = self.ctx.gens()
+        where = [gens[self.names.index(v)] for v in variables]
+        total = self.zero()
+        for exponents, coefficient in parts.items():
+            for gen, e in zip(where, exponents):
+                coefficient = coefficient * gen**e
+            total = total + coefficient
+        return total
 
     def primitive(self, poly):
         """Integer coefficients with gcd 1, positive leading coefficient (lex)."""
@@ -144,6 +190,36 @@ class SympyBackend:
 
     def terms(self, poly):
         return [(m, int(c.p), int(c.q)) for m, c in poly.terms()]
+
+    def zero(self):
+        return sympy.Poly(0, *self.gens, domain=sympy.QQ)
+
+    def vanishes_at(self, poly, point):
+        """Whether the ball of ``poly`` at ``point`` (name -> arb) contains zero."""
+        return evaluate_terms(self.terms(poly), self.names, point).contains(0)
+
+    def divide(self, f, g):
+        return f.exquo(g)
+
+    def quotient(self, f, g):
+        quotient, remainder = f.div(g)
+        return quotient if remainder.is_zero else None
+
+    def split(self, poly, variables):
+        where = [self.names.index(v) for v in variables]
+        groups = {}
+        for monomial, coefficient in poly.as_dict().items():
+            key = tuple(monomial[i] for i in where)
+            rest = tuple(0 if i in where else e for i, e in enumerate(monomial))
+            groups.setdefault(key, {})[rest] = coefficient
+        return {key: sympy.Poly.from_dict(terms, *self.gens, domain=sympy.QQ) for key, terms in groups.items()}
+
+    def join(self, parts, variables):
+        total = self.zero()
+        for exponents, coefficient in parts.items():
+            monomial = sympy.Mul(*(self.gens[self.names.index(v)] ** e for v, e in zip(variables, exponents)))
+            total = total + coefficient * sympy.Poly(monomial, *self.gens, domain=sympy.QQ)
+        return total
 
     def primitive(self, poly):
         if poly.is_zero:

@@ -8,14 +8,14 @@ to eliminate) and the same factor selection at witnesses.
 from ..errors import ComputationError
 from .select import select_factors
 
-__all__ = ["METHODS", "prepare", "resultant_chain", "groebner_basis"]
+__all__ = ["prepare", "resultant_chain", "groebner_basis"]
 
 
 def _linear_definition(backend, poly, var):
     """``value`` with ``var = value`` if ``poly`` is ``k*var + rest`` (k a number), else None."""
     if backend.degree(poly, var) != 1:
         return None
-    rest = backend.substitute(poly, var, backend.from_sympy(0))
+    rest = backend.substitute(poly, var, backend.zero())
     linear = poly - rest
     if backend.nterms(linear) != 1 or backend.total_degree(linear) != 1:
         return None
@@ -57,7 +57,7 @@ def _squarefree_kept(backend, poly, witnesses, dropped):
     return product
 
 
-def resultant_chain(backend, polys, eliminate, witnesses, dropped, log):
+def resultant_chain(backend, polys, eliminate, witnesses, dropped, log, parameters=()):
     """Eliminate one variable at a time by Sylvester resultants against a pivot."""
     remaining = [v for v in eliminate]
     while remaining:
@@ -87,7 +87,7 @@ def resultant_chain(backend, polys, eliminate, witnesses, dropped, log):
     return polys
 
 
-def groebner_basis(backend, polys, eliminate, witnesses, dropped, log):
+def groebner_basis(backend, polys, eliminate, witnesses, dropped, log, parameters=()):
     """The elimination ideal's generators from a lex basis, eliminated variables first."""
     keep = [n for n in backend.names if n not in eliminate]
     order = [n for n in eliminate] + keep
@@ -95,5 +95,3 @@ def groebner_basis(backend, polys, eliminate, witnesses, dropped, log):
     log.append(("groebner", len(basis)))
     return [g for g in basis if not (backend.variables(g) & set(eliminate))]
 
-
-METHODS = {"resultant": resultant_chain, "groebner": groebner_basis}

@@ -4,7 +4,13 @@ A *witness* is a configuration of the mechanism (every variable's value as a pyt
 ``arb`` ball); witnesses come in groups, one group per branch. A factor is kept when its
 ball contains zero at every witness of some group, and dropped when that fails: at some
 witness of every group its ball excludes zero, which proves it non-zero there.
+
+Balls are evaluated at the witnesses' own precision (plus a margin), not python-flint's
+default of 53 bits: at 53 bits a degree-30 factor with 160-bit coefficients gives a ball
+of width 1e38 around every value, and would be kept for "containing" zero.
 """
+
+import functools
 
 import flint
 
@@ -12,22 +18,29 @@ from ..errors import ComputationError
 
 __all__ = ["evaluate_terms", "select_factors"]
 
+MARGIN_BITS = 64
+
 
 def evaluate_terms(terms, names, point):
     """Ball value of the polynomial with ``terms`` at ``point`` (name -> arb)."""
     values = [point[n] for n in names]
+    highest = [max((t[0][i] for t in terms), default=0) for i in range(len(names))]
+    powers = [_powers(v, d) for v, d in zip(values, highest)]
     total = flint.arb(0)
     for exponents, numerator, denominator in terms:
         term = flint.arb(numerator) / denominator
-        for value, e in zip(values, exponents):
+        for table, e in zip(powers, exponents):
             if e:
-                term *= value**e
+                term *= table[e]
         total += term
     return total
 
 
-def _vanishes(backend, poly, point):
-    return evaluate_terms(backend.terms(poly), backend.names, point).contains(0)
+def _powers(value, degree):
+    table = [flint.arb(1)]
+    for _ in range(degree):
+        table.append(table[-1] * value)
+    return table
 
 
 def select_factors(backend, factors, witness_groups):
@@ -35,15 +48,27 @@ def select_factors(backend, factors, witness_groups):
     groups = [g for g in witness_groups if g]
     if not groups:
         return list(factors), []
+    bits = MARGIN_BITS + max(_bits(v) for group in groups for point in group for v in point.values())
+    with flint.ctx.workprec(bits):
+        return _select(backend, factors, groups)
+
+
+def _bits(ball):
+    """Bits of the ball's midpoint mantissa: the precision it was computed at."""
+    return int(ball.mid().man_exp()[0]).bit_length() if ball.mid() != 0 else 0
+
+
+def _select(backend, factors, groups):
+    vanishes = functools.cache(lambda i, g, w: backend.vanishes_at(factors[i], groups[g][w]))
     kept, dropped = [], []
-    for factor in factors:
-        if any(all(_vanishes(backend, factor, w) for w in group) for group in groups):
-            kept.append(factor)
+    for i, factor in enumerate(factors):
+        if any(all(vanishes(i, g, w) for w in range(len(group))) for g, group in enumerate(groups)):
+            kept.append(i)
         else:
             dropped.append(factor)
-    for group in groups:
-        for witness in group:
-            if not any(_vanishes(backend, f, witness) for f in kept):
+    for g, group in enumerate(groups):
+        for w in range(len(group)):
+            if not any(vanishes(i, g, w) for i in kept):
                 raise ComputationError("no kept factor vanishes at a witness configuration: "
                                        "the eliminant does not describe the motion")
-    return kept, dropped
+    return [factors[i] for i in kept], dropped

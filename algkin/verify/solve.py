@@ -28,6 +28,7 @@ class Blocks:
         self.system = system
         names = list(system.variables)
         self.args = [symbol(n) for n in names]
+        self.names = names
         pending = [eq for eq in system.equations if eq.free_symbols & {symbol(u) for u in system.unknowns}]
         # Coordinates are about as large as the lengths, whose squares are coefficients: Newton's
         # starts must spread over that size too, not only over the known values (cos, sin).
@@ -68,7 +69,7 @@ class Blocks:
 
 
 def _arguments(blocks, values):
-    return [values.get(str(a), 0) for a in blocks.args]
+    return [values.get(n, 0) for n in blocks.names]
 
 
 def _solve_univariate(block, values, blocks):
@@ -124,6 +125,7 @@ def _float_newton(points, names, base, blocks, f_np, j_np):
 
 def _polish(root, names, values, blocks, f_mp, j_mp):
     point = [mpmath.mpf(float(v)) for v in root]
+    tiny = mpmath.mpf(2) ** (-mpmath.mp.prec) * (1 + max(abs(p) for p in point))
     for _ in range(POLISH_STEPS):
         args = _arguments(blocks, {**values, **dict(zip(names, point))})
         f = mpmath.matrix(f_mp(*args))
@@ -133,6 +135,8 @@ def _polish(root, names, values, blocks, f_mp, j_mp):
         except ZeroDivisionError:
             return None
         point = [p - step[i] for i, p in enumerate(point)]
+        if max(abs(v) for v in step) <= tiny:  # converged quadratically: more steps change nothing
+            break
     args = _arguments(blocks, {**values, **dict(zip(names, point))})
     residual = max(abs(v) for v in f_mp(*args))
     size = 1 + max(abs(v) for v in list(values.values()) + point)

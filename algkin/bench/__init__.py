@@ -1,0 +1,143 @@
+"""Elimination methods compared on mechanism problems: every method x backend, the default
+path end to end, and the peer engines that are installed, in one run.
+
+Each row is timed in a child process within the budget (``measure``), carries the
+eliminant's figures (degree, terms, coefficient bits) and whether it agrees with the
+problem's reference: the Gröbner basis over python-flint, a different algorithm from
+the resultants and the linear method, or, when that ran past its budget, the first
+result that finished. ``ratio`` is each row's time over algkin's default (the ``linear``
+method over ``flint``) on the same problem: above 1, algkin is faster.
+"""
+
+import os
+import platform
+from dataclasses import dataclass
+
+from ..eliminate import BACKENDS, DEFAULT_METHOD, METHODS
+from .agree import agreement, from_sympy, portable, rebuild
+from .measure import measure
+from .problems import PROBLEMS, build, problem_names
+
+__all__ = ["bench", "BenchReport", "PROBLEMS", "problem_names", "machine"]
+
+REFERENCE = ("groebner", "flint")
+DEFAULT = (DEFAULT_METHOD, "flint")
+
+
+@dataclass
+class BenchReport:
+    rows: list
+    machine: dict
+
+    def to_json(self):
+        return {"rows": self.rows, "machine": self.machine}
+
+
+def machine():
+    """What the run was measured on."""
+    import flint
+    import sympy
+
+    from .engines import found_peers
+
+    model = next((line.split(":", 1)[1].strip() for line in _cpuinfo() if line.startswith("model name")), None)
+    return {"cpu": model or platform.processor() or platform.machine(), "cores": os.cpu_count(),
+            "system": platform.platform(terse=True), "python": platform.python_version(),
+            "python-flint": flint.__version__, "sympy": sympy.__version__, "peers": found_peers()}
+
+
+def _cpuinfo():
+    try:
+        with open("/proc/cpuinfo") as f:
+            return f.read().splitlines()
+    except OSError:
+        return []
+
+
+def bench(problems=None, methods=None, backends=None, budget=60.0, peers=True, progress=None):
+    """Time every method x backend (and peers) on every problem; a ``BenchReport``."""
+    methods = list(methods or METHODS)
+    backends = list(backends or BACKENDS)
+    rows = []
+    for name in problems or problem_names():
+        rows += _problem_rows(build(name), methods, backends, budget, peers, progress)
+    return BenchReport(rows, machine())
+
+
+def _problem_rows(problem, methods, backends, budget, peers, progress):
+    task = problem.task
+    keep = list(task.keep)
+    side = [e for e in task.equations if not ({str(v) for v in e.free_symbols} & set(task.eliminate))]
+    results = {}
+    pairs = sorted({(m, b) for m in methods for b in backends} | {REFERENCE, DEFAULT},
+                   key=lambda pair: (pair != REFERENCE, pair))
+    for method, backend in pairs:
+        _say(progress, f"{problem.name}: {method} / {backend}")
+        seconds, summary, note = measure(lambda m=method, b=backend: task.run(m, b), _summary, budget)
+        results[(method, backend)] = {"problem": problem.name, "method": method, "backend": backend,
+                                      "seconds": seconds, **(summary or _empty()), "note": note}
+    _say(progress, f"{problem.name}: algkin default path, end to end")
+    seconds, summary, note = measure(problem.end_to_end, _end_summary, budget)
+    rows = [r for pair, r in results.items() if pair in {(m, b) for m in methods for b in backends}
+            or pair in (REFERENCE, DEFAULT)]
+    rows.append({"problem": problem.name, "method": "default path, end to end", "backend": "flint",
+                 "seconds": seconds, **(summary or _empty()), "note": note})
+    if peers:
+        rows += _peer_rows(problem, budget, progress)
+    reference = _reference(rows)
+    side = [from_sympy(e, keep) for e in side]
+    for row in rows:
+        form = row.pop("form", None)
+        row["agrees"] = None if reference is None or form is None else \
+            agreement(rebuild(form, keep), rebuild(reference, keep), side)
+    default = results[DEFAULT]["seconds"]
+    for row in rows:
+        row["ratio"] = row["seconds"] / default if row["seconds"] and default else None
+    return rows
+
+
+def _reference(rows):
+    finished = [r for r in rows if r.get("form") is not None]
+    preferred = [r for r in finished if (r["method"], r["backend"]) == REFERENCE]
+    return (preferred or finished or [{"form": None}])[0]["form"]
+
+
+def _summary(elimination):
+    return {"degree": elimination.degree, "terms": elimination.terms, "bits": elimination.bits,
+            "form": portable(elimination.engine, elimination.raw)}
+
+
+def _end_summary(result):
+    elimination = getattr(result, "elimination", None)
+    if elimination is None and hasattr(result, "eliminations"):
+        elimination = next(e for u, e in result.eliminations.items() if u.endswith("_y"))
+    return _summary(elimination) if elimination is not None else _empty()
+
+
+def _empty():
+    return {"degree": None, "terms": None, "bits": None}
+
+
+def _peer_rows(problem, budget, progress):
+    from .engines import PEERS
+    from .peers import PeerProblem, parse, polynomial_ring
+
+    task = problem.task
+    peer_problem = PeerProblem(problem.name, tuple(str(e) for e in task.equations), task.eliminate, task.keep)
+    rows = []
+    for engine, run in PEERS.items():
+        _say(progress, f"{problem.name}: {engine}")
+        result = run(peer_problem, budget)
+        row = {"problem": problem.name, "method": engine, "backend": "peer", "seconds": result.seconds_per_run,
+               **_empty(), "note": result.note}
+        if result.polynomial is not None:
+            poly = parse(result.polynomial, polynomial_ring(task.keep))
+            terms = [(m, int(c.numerator), int(c.denominator)) for m, c in poly.terms()]
+            row.update(degree=max(sum(m) for m, _, _ in terms), terms=len(terms), form=(task.keep, terms))
+        rows.append(row)
+    return rows
+
+
+def _say(progress, message):
+    if progress is not None:
+        progress(message)

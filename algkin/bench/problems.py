@@ -1,0 +1,101 @@
+"""The bench suite: elimination problems from the catalog, each exactly the call algkin makes.
+
+Every problem is an ``EliminationTask`` (equations, what to eliminate and keep, witness
+configurations) built the way ``derive``, ``curve`` or ``extremum`` builds it, so the
+methods are timed on what a user's command runs, plus that command itself, end to end
+(compile, eliminate, factor, select, verify) with the default method.
+
+>>> sorted(PROBLEMS)[:3]
+['arm-extremum', 'fourbar-symbolic', 'lambda-coupler']
+"""
+
+from dataclasses import dataclass
+from typing import Callable
+
+from ..errors import UsageError
+from ..tasks import EliminationTask, curve_task, eliminant_tasks
+
+__all__ = ["Problem", "PROBLEMS", "problem_names", "build"]
+
+FOURBAR_DIMENSIONS = ("a", "d", "l", "m", "p", "q")
+
+
+@dataclass(frozen=True)
+class Problem:
+    name: str
+    description: str
+    task: EliminationTask
+    end_to_end: Callable  # algkin's default path for the problem, with its own figures
+
+
+def _curve(scene, point, params=()):
+    from ..pipeline import compile_and_branch
+    from ..scene import load_scene
+
+    compiled, _, groups, _ = compile_and_branch(load_scene(scene), [point], params)
+    return curve_task(compiled, groups, point)
+
+
+def _curve_run(scene, point, params=()):
+    from ..pipeline import curve
+
+    return lambda: curve(scene, point, params=params)
+
+
+def _two_circles():
+    from ..pipeline import compile_and_branch
+    from ..scene import load_scene
+
+    compiled, _, groups, _ = compile_and_branch(load_scene("chebyshev-lambda"), ["B"], ())
+    return eliminant_tasks(compiled, groups)["B_y"]
+
+
+def _two_circles_run():
+    from ..pipeline import derive
+
+    return lambda: derive("chebyshev-lambda", ["B"])
+
+
+def _arm():
+    from ..extremum import problem_for
+    from ..pipeline import derive
+
+    problem = problem_for(derive("arm-string", ["AB"], params=["b"], samples=0), "AB")
+    names = tuple(p.name for p in problem.parameters)
+    return EliminationTask(tuple(problem.half_angle()), (problem.t.name,), (problem.u.name,) + names, names, ())
+
+
+def _arm_run():
+    from ..extremum import extremum
+
+    return lambda: extremum("arm-string", "AB", params=["b"])
+
+
+PROBLEMS = {
+    "two-circles": ("the seed connector: B_y of the Chebyshev lambda, B_x eliminated from two circles",
+                    _two_circles, _two_circles_run),
+    "lambda-coupler": ("the lambda's coupler curve of P (the seed notebook's extension)",
+                       lambda: _curve("chebyshev-lambda", "P"), lambda: _curve_run("chebyshev-lambda", "P")),
+    "fourbar-symbolic": ("the general four-bar coupler curve, all six dimensions symbolic",
+                         lambda: _curve("fourbar", "P", FOURBAR_DIMENSIONS),
+                         lambda: _curve_run("fourbar", "P", FOURBAR_DIMENSIONS)),
+    "arm-extremum": ("the arm's |AB| value polynomial, b symbolic (the seed's minimum against b)",
+                     _arm, _arm_run),
+    "slider-crank": ("the offset slider-crank's rod midpoint curve",
+                     lambda: _curve("slider-crank", "M"), lambda: _curve_run("slider-crank", "M")),
+    "watt-i": ("the Watt I six-bar coupler curve", lambda: _curve("watt-i", "P"), lambda: _curve_run("watt-i", "P")),
+    "stephenson-iii": ("the Stephenson III six-bar coupler curve (degree 18, circularity 9)",
+                       lambda: _curve("stephenson-iii", "P"), lambda: _curve_run("stephenson-iii", "P")),
+}
+
+
+def problem_names():
+    return list(PROBLEMS)
+
+
+def build(name):
+    """The ``Problem`` called ``name``; a UsageError naming the valid ones otherwise."""
+    if name not in PROBLEMS:
+        raise UsageError("--problems", name, f"unknown problem; valid: {', '.join(PROBLEMS)}")
+    description, task, run = PROBLEMS[name]
+    return Problem(name, description, task(), run())

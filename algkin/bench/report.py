@@ -1,0 +1,66 @@
+"""The bench report as a table, CSV, JSON and a plot (the plot needs the ``plot`` extra).
+
+>>> rows = [{"problem": "p", "method": "linear", "backend": "flint", "seconds": 2.5e-3, "ratio": 1.0,
+...          "degree": 6, "terms": 29, "bits": 12, "agrees": "yes", "note": "median of 5 runs"}]
+>>> print(table(rows))  # doctest: +NORMALIZE_WHITESPACE
+problem  method  backend  time     vs default  deg  terms  bits  agrees  note
+p        linear  flint    2.50 ms  1.00x       6    29     12    yes     median of 5 runs
+"""
+
+import csv
+import io
+import json
+
+__all__ = ["table", "to_csv", "write", "seconds_text", "COLUMNS"]
+
+COLUMNS = ("problem", "method", "backend", "seconds", "ratio", "degree", "terms", "bits", "agrees", "note")
+HEADERS = ("problem", "method", "backend", "time", "vs default", "deg", "terms", "bits", "agrees", "note")
+
+
+def seconds_text(value):
+    if value is None:
+        return "-"
+    for unit, scale in (("s", 1.0), ("ms", 1e-3), ("us", 1e-6)):
+        if value >= scale:
+            return f"{value / scale:.2f} {unit}"
+    return f"{value / 1e-9:.0f} ns"
+
+
+def _cells(row):
+    text = {"seconds": seconds_text(row["seconds"]),
+            "ratio": "-" if row["ratio"] is None else f"{row['ratio']:.2f}x"}
+    return [text.get(k, "-" if row[k] is None else str(row[k])) for k in COLUMNS]
+
+
+def table(rows):
+    """Aligned columns, one line per row."""
+    cells = [list(HEADERS)] + [_cells(r) for r in rows]
+    widths = [max(len(line[i]) for line in cells) for i in range(len(HEADERS) - 1)]
+    return "\n".join("  ".join(c.ljust(w) for c, w in zip(line, widths)) + "  " + line[-1]
+                     for line in cells)
+
+
+def to_csv(rows):
+    out = io.StringIO()
+    writer = csv.DictWriter(out, fieldnames=COLUMNS, lineterminator="\n")
+    writer.writeheader()
+    writer.writerows({k: r[k] for k in COLUMNS} for r in rows)
+    return out.getvalue()
+
+
+def write(report, directory):
+    """bench.json, bench.csv and (with matplotlib) bench.png in ``directory``; the paths written."""
+    import os
+
+    os.makedirs(directory, exist_ok=True)
+    paths = [os.path.join(directory, n) for n in ("bench.json", "bench.csv")]
+    with open(paths[0], "w") as f:
+        json.dump(report.to_json(), f, indent=2)
+    with open(paths[1], "w") as f:
+        f.write(to_csv(report.rows))
+    try:
+        from ..plot import bench_figure, save
+    except ImportError:
+        return paths
+    paths.append(save(bench_figure(report.rows), os.path.join(directory, "bench.png")))
+    return paths

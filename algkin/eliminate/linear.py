@@ -1,0 +1,144 @@
+"""Linear algebra before resultants: radical axes and linear substitution.
+
+Mechanism equations are mostly circles (``|X - C|**2 = r**2``) and frames (points linear
+in other points). Two circles in the same unknowns share their quadratic part up to a
+factor, so a combination of them is *linear* (the radical axis); an unknown that appears
+linearly, with a coefficient free of the other unknowns, is substituted out
+(``v = -rest/a``, each equation multiplied through by ``a**k``). Only what neither step
+removes goes to a resultant chain. Extraneous factors brought in by the multipliers are
+removed by factoring and selection at the witnesses, as for resultants.
+
+>>> import sympy
+>>> from algkin.eliminate import eliminate
+>>> ax, ay, bx, by, px, py = sympy.symbols("ax ay bx by px py")
+>>> bars = [ax**2 + ay**2 - 1, (bx - 2)**2 + by**2 - 1, (bx - ax)**2 + (by - ay)**2 - 4,
+...         2*px - ax - bx, 2*py - ay - by]          # the midpoint P of a bar AB on two cranks
+>>> result = eliminate(bars, ["ax", "ay", "bx", "by"], ["px", "py"], method="linear")
+>>> [step for step, _ in result.log]
+['substituted', 'substituted', 'radical-axis', 'substituted', 'substituted']
+>>> sympy.factor(result.polynomial)  # with no witnesses given, the multiplier px is kept
+px*(px**2 - 2*px + py**2)*(px**4 - 4*px**3 + 2*px**2*py**2 + 5*px**2 - 4*px*py**2 - 2*px + py**4 + 5*py**2)
+"""
+
+from .methods import resultant_chain
+
+__all__ = ["linear_elimination"]
+
+
+def linear_elimination(backend, polys, eliminate, witnesses, dropped, log, parameters=()):
+    """Substitute linear unknowns and reduce circles to radical axes; resultants for the rest.
+
+    A multiplier may hold numbers and ``parameters`` (dimensions); it may hold the kept
+    coordinates only for the last two unknowns (the closing Cramer step): earlier, it would
+    raise the degree of everything still to be eliminated, and resultants do better
+    (measured: the Stephenson III curve, 0.19 s by resultants against 1.3 s).
+    """
+    remaining = list(eliminate)
+    while remaining:
+        present = set().union(*(backend.variables(p) for p in polys))
+        remaining = [v for v in remaining if v in present]  # substituted away already (prepare)
+        allowed = set(parameters) if len(remaining) > 2 else set(backend.names) - set(remaining)
+        polys = [p for p in polys if not backend.is_zero(p)]
+        found = _linear_unknown(backend, polys, remaining, allowed)
+        if found is not None:
+            polys = _substitute(backend, polys, *found)
+            remaining.remove(found[1])
+            log.append(("substituted", found[1]))
+            continue
+        reduced = _radical_axes(backend, polys, remaining, allowed)
+        if reduced is None or _linear_unknown(backend, reduced[0], remaining, allowed) is None:
+            break  # an axis no unknown can be substituted from only reshuffles the resultants
+        polys, gained = reduced
+        log.append(("radical-axis", gained))
+    return resultant_chain(backend, polys, remaining, witnesses, dropped, log) if remaining else polys
+
+
+def _linear_unknown(backend, polys, remaining, allowed):
+    """``(poly, var, coefficient, rest)`` for the simplest equation linear in an unknown whose
+    coefficient holds only ``allowed`` variables, or None."""
+    best = None
+    for var in remaining:
+        for poly in polys:
+            if backend.degree(poly, var) != 1:
+                continue
+            parts = backend.split(poly, [var])
+            coefficient, rest = parts.get((1,)), parts.get((0,))
+            if not backend.variables(coefficient) <= allowed:
+                continue
+            # a number first (no extraneous factor), then the smallest coefficient
+            key = (bool(backend.variables(coefficient)), backend.nterms(coefficient), backend.nterms(poly))
+            if best is None or key < best[0]:
+                best = (key, (poly, var, coefficient, rest if rest is not None else backend.zero()))
+    return None if best is None else best[1]
+
+
+def _substitute(backend, polys, pivot, var, coefficient, rest):
+    """``a**k f(-rest/a)`` for every other equation ``f`` of degree ``k`` in ``var``."""
+    out = []
+    for poly in polys:
+        if poly is pivot:
+            continue
+        if var not in backend.variables(poly):
+            out.append(poly)
+            continue
+        parts = backend.split(poly, [var])
+        degree = max(e for (e,) in parts)
+        total = backend.zero()
+        for (e,), part in parts.items():
+            total = total + part * (-rest) ** e * coefficient ** (degree - e)
+        if backend.variables(coefficient):
+            total = _strip(backend, total, coefficient)
+        out.append(total)
+    return out
+
+
+def _strip(backend, poly, coefficient):
+    """``poly`` without the factors it shares with a power of ``coefficient`` (the multiplier)."""
+    while not backend.is_zero(poly):
+        common = backend.gcd(poly, coefficient)
+        if not backend.variables(common):
+            return poly
+        poly = backend.divide(poly, common)
+    return poly
+
+
+def _radical_axes(backend, polys, remaining, allowed):
+    """Fraction-free row reduction on the quadratic monomials in the unknowns: the equations and
+    how many became linear, or None if none did."""
+    rows, others = [], []
+    for poly in polys:
+        parts = backend.split(poly, remaining)
+        degree = max(sum(e) for e in parts)
+        (rows if degree == 2 else others).append(parts)
+    if len(rows) < 2:
+        return None
+    columns = sorted({e for parts in rows for e in parts if sum(e) == 2}, reverse=True)
+    pivots = set()
+    for column in columns:
+        candidates = [i for i, parts in enumerate(rows) if i not in pivots and column in parts
+                      and backend.variables(parts[column]) <= allowed]
+        if not candidates:
+            continue
+        p = min(candidates, key=lambda i: (bool(backend.variables(rows[i][column])), backend.nterms(rows[i][column])))
+        pivots.add(p)
+        for i in candidates:
+            if i != p:
+                rows[i] = _combine(backend, rows[p], rows[i], column)
+    linear = [i for i, parts in enumerate(rows) if i not in pivots and parts
+              and max(sum(e) for e in parts) == 1]
+    if not linear:
+        return None
+    return [backend.join(parts, remaining) for parts in others + rows if parts], len(linear)
+
+
+def _combine(backend, pivot, row, column):
+    """``a*row - b*pivot`` with the ``column`` coefficient cancelled (``a``, ``b`` over their gcd)."""
+    a, b = pivot[column], row[column]
+    common = backend.gcd(a, b)
+    a, b = backend.divide(a, common), backend.divide(b, common)
+    out = {}
+    for exponent in set(pivot) | set(row):
+        value = a * row.get(exponent, backend.zero()) - b * pivot.get(exponent, backend.zero())
+        if not backend.is_zero(value):
+            out[exponent] = value
+    return out

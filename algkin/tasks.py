@@ -1,0 +1,74 @@
+"""The eliminations ``derive`` and ``curve`` perform, as data: what ``bench`` times.
+
+A task is one call of ``eliminate``: its equations, the variables to eliminate and to
+keep, the dimensions (which the ``linear`` method may use in multipliers) and the witness
+configurations that select factors.
+"""
+
+from dataclasses import dataclass
+
+from .eliminate import eliminate
+
+__all__ = ["EliminationTask", "curve_task", "eliminant_tasks", "equations_for"]
+
+
+@dataclass(frozen=True)
+class EliminationTask:
+    equations: tuple
+    eliminate: tuple
+    keep: tuple
+    parameters: tuple
+    witnesses: tuple
+
+    def run(self, method, backend):
+        return eliminate(self.equations, self.eliminate, self.keep, method=method, backend=backend,
+                         witnesses=self.witnesses, parameters=self.parameters)
+
+
+def curve_task(compiled, groups, point):
+    """Everything but the point's coordinates eliminated: its implicit curve."""
+    system = compiled.system
+    variables = (f"{point}_x", f"{point}_y")
+    others = [u for u in system.unknowns if u not in variables] + list(system.input_variables)
+    return EliminationTask(tuple(system.equations), tuple(others), variables + tuple(system.parameters),
+                           tuple(system.parameters), tuple(groups))
+
+
+def eliminant_tasks(compiled, groups):
+    """Unknown -> the task giving its eliminant in the inputs' cos and sin (and dimensions)."""
+    system = compiled.system
+    keep_always = tuple(system.input_variables) + tuple(system.parameters)
+    tasks = {}
+    for u in system.unknowns:
+        equations, unknowns = equations_for(system, u)
+        tasks[u] = EliminationTask(tuple(equations), tuple(v for v in unknowns if v != u), (u,) + keep_always,
+                                   tuple(system.parameters), tuple(groups))
+    return tasks
+
+
+def equations_for(system, unknown):
+    """The equations ``unknown`` depends on, and their unknowns (construction order).
+
+    An equation belongs to the unknowns in it that appeared last (equations come in
+    construction order); ``unknown``
+    needs its own equations and, recursively, those of every unknown they mention, never
+    those of later points built on it.
+    """
+    known = set(system.unknowns)
+    names = [[str(v) for v in e.free_symbols if str(v) in known] for e in system.equations]
+    introduced = {}  # unknown -> index of the first equation that mentions it
+    for k, n in enumerate(names):
+        for v in n:
+            introduced.setdefault(v, k)
+    owners = [{v for v in n if introduced[v] == max(introduced[w] for w in n)} if n else set() for n in names]
+    needed, stack = set(), [unknown]
+    while stack:
+        current = stack.pop()
+        if current in needed:
+            continue
+        needed.add(current)
+        for n, owner in zip(names, owners):
+            if current in owner:
+                stack.extend(n)
+    chosen = [e for e, n in zip(system.equations, names) if n and set(n) <= needed]
+    return chosen, [u for u in system.unknowns if u in needed]

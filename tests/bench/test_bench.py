@@ -1,0 +1,82 @@
+"""The bench: rows that agree, budgets that stop, peers that are skipped when absent."""
+
+import json
+import subprocess
+import sys
+import time
+
+import pytest
+import sympy
+
+from algkin.bench import bench
+from algkin.bench.agree import agreement, from_sympy
+from algkin.bench.measure import measure
+from algkin.cli import main
+
+
+@pytest.fixture(scope="module")
+def two_circles():
+    return bench(["two-circles"], ["linear", "resultant", "groebner"], ["flint"], budget=30, peers=False)
+
+
+def test_every_method_agrees_on_the_seed_connector(two_circles):
+    rows = [r for r in two_circles.rows if r["backend"] == "flint"]
+    assert {r["method"] for r in rows} >= {"linear", "resultant", "groebner", "default path, end to end"}
+    assert all(r["agrees"] == "yes" for r in rows), rows
+    # B_y of two circles of radius 5/2 about A = (c, s) and D = (2, 0): the resultant in B_x is a
+    # quartic in B_y (by hand: the radical axis is linear in B_x, put back into one circle).
+    assert {(r["degree"], r["terms"]) for r in rows} == {(4, 17)}
+
+
+def test_ratios_are_against_the_default_method(two_circles):
+    default = next(r for r in two_circles.rows if (r["method"], r["backend"]) == ("linear", "flint"))
+    assert default["ratio"] == 1.0
+    assert two_circles.machine["cores"] >= 1 and "python-flint" in two_circles.machine
+
+
+def test_a_computation_past_its_budget_is_stopped_and_reported():
+    start = time.perf_counter()
+    seconds, summary, note = measure(lambda: time.sleep(30), lambda r: r, budget=0.5)
+    assert time.perf_counter() - start < 5
+    assert (seconds, summary, note) == (None, None, "over budget (0.5 s)")
+
+
+def test_a_failing_computation_is_reported_not_raised():
+    seconds, _, note = measure(lambda: 1 / 0, lambda r: r, budget=5)
+    assert seconds is None and note.startswith("failed: ZeroDivisionError")
+
+
+def test_agreement_modulo_the_circle_relation():
+    c, s, x = sympy.symbols("c s x")
+    keep = ["x", "c", "s"]
+    one, other, circle = (from_sympy(e, keep) for e in (x + c**2, x + 1 - s**2, c**2 + s**2 - 1))
+    assert agreement(one, other) == "NO"
+    assert agreement(one, other, [circle]) == "yes, mod side rel."
+
+
+def test_cli_table_json_and_files(tmp_path, capsys):
+    code = main(["bench", "--problems", "two-circles", "--methods", "linear", "--backends", "flint",
+                 "--no-peers", "--budget", "30", "--out", str(tmp_path), "--json"])
+    document = json.loads(capsys.readouterr().out)
+    assert code == 0 and {"rows", "machine"} <= set(document)
+    assert {"problem", "method", "backend", "seconds", "degree", "terms", "agrees"} <= set(document["rows"][0])
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bench.csv", "bench.json", "bench.png"]
+
+
+@pytest.mark.parametrize("argv", [["--problems", "nope"], ["--methods", "magic"], ["--budget", "0"]])
+def test_bad_options_exit_2_with_one_line(argv):
+    done = subprocess.run([sys.executable, "-m", "algkin", "bench", "--no-peers", *argv],
+                          capture_output=True, text=True)
+    assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
+
+
+def test_a_missing_peer_is_skipped_with_a_note(monkeypatch):
+    from algkin.bench import engines
+
+    monkeypatch.setattr(engines.shutil, "which", lambda name: None)
+    monkeypatch.setattr(engines, "find_msolve", lambda: None)
+    rows = {r["method"]: r for r in bench(["two-circles"], ["linear"], ["flint"], budget=30).rows}
+    assert rows["Singular eliminate"]["seconds"] is None
+    assert rows["Singular eliminate"]["note"] == "skipped: Singular not found"
+    assert rows["msolve eliminate"]["note"].startswith("skipped: msolve not found")
+
