@@ -64,14 +64,21 @@ def build_parser():
     accuracy.add_argument("--seed", type=int, default=0)
     accuracy.add_argument("--plot", help="also draw time against error (log-log) to this .png/.svg/.pdf")
     accuracy.add_argument("--json", action="store_true")
-    plot = commands.add_parser("plot", help="figures: a quantity against the input, its derivative, "
-                                            "its minimum against a dimension")
+    plot = commands.add_parser("plot", help="the mechanism with its trajectories and implicit curves "
+                                            "(.png/.svg/.pdf), animated (.gif/.mp4), an interactive page "
+                                            "(.html); with --of a quantity against the input")
     plot.add_argument("scene")
-    plot.add_argument("--of", required=True, help="a scalar output: distance or coordinate")
-    plot.add_argument("--out", required=True, help="the file to write: .png, .svg or .pdf")
-    plot.add_argument("--range", help="lo:hi of the input, in its unit")
-    plot.add_argument("--derivative", action="store_true", help="the slope, with its zero marked")
-    plot.add_argument("--against", help="p=lo:hi: the minimum against the dimension p")
+    plot.add_argument("--out", required=True, help="the file to write: .png, .svg, .pdf, .gif, .mp4 or .html")
+    plot.add_argument("--input", action="append", default=[],
+                      help="the input angle drawn, in degrees: VALUE, or NAME=VALUE for each input")
+    plot.add_argument("--branch", help="the assembly mode drawn (default: the scene's)")
+    plot.add_argument("--modes", action="store_true", help="every assembly mode side by side")
+    plot.add_argument("--param", action="append",
+                      help="a dimension with a slider in the .html page (default: every dimension)")
+    plot.add_argument("--of", help="a scalar output: draw it against the input instead")
+    plot.add_argument("--range", help="with --of: lo:hi of the input, in its unit")
+    plot.add_argument("--derivative", action="store_true", help="with --of: the slope, with its zero marked")
+    plot.add_argument("--against", help="with --of: p=lo:hi, the minimum against the dimension p")
     return parser
 
 
@@ -175,20 +182,34 @@ def _report_accuracy(d):
     return "\n".join(lines)
 
 
-def _figure_path(option, text):
+def _figure_path(option, text, formats=None):
     import pathlib
 
     from .plot import FORMATS
 
+    formats = formats or FORMATS
     out = pathlib.Path(text)
-    if out.suffix.lower() not in FORMATS:
-        raise UsageError(option, text, f"unknown figure format; valid: {', '.join(FORMATS)}")
+    if out.suffix.lower() not in formats:
+        raise UsageError(option, text, f"unknown figure format; valid: {', '.join(formats)}")
     if not out.parent.is_dir():
         raise UsageError(option, text, "its directory does not exist")
     return out
 
 
 def _cmd_plot(args):
+    if args.of is None:
+        from .draw import plot_mechanism
+
+        for option in ("range", "derivative", "against"):
+            if getattr(args, option):
+                raise UsageError(f"--{option}", getattr(args, option), "goes with --of OUTPUT")
+        print(plot_mechanism(args.scene, args.out, args.input, args.branch, args.modes, args.param))
+        return 0
+    for option in ("input", "branch", "modes", "param"):
+        if getattr(args, option):
+            value = getattr(args, option)
+            raise UsageError(f"--{option}", " ".join(value) if isinstance(value, list) else value,
+                             "draws the mechanism; leave out --of")
     out = _figure_path("--out", args.out)
     if args.against and args.derivative:
         raise UsageError("--against", args.against, "draws the minimum; leave out --derivative")
