@@ -37,7 +37,7 @@ def __getattr__(name):
 
         return extremum
     if name == "interact":  # ipywidgets only when called
-        from .interact import interact
+        from .widgets import interact
 
         return interact
     if name == "load":

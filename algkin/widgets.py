@@ -4,7 +4,8 @@ One slider per input and per symbolic dimension, and a choice of assembly mode. 
 closed forms are derived once when ``interact`` is called (``algkin.motion.Motion``,
 dimensions symbolic); moving a slider only evaluates them. Where the mechanism cannot
 assemble, the picture says so instead of drawing nothing. ipywidgets (the ``notebook``
-extra) is imported only here; the logic lives in ``Explorer`` and needs no notebook:
+extra) is imported only here (a module named ``widgets``, so that importing it does not
+hide the function ``algkin.interact``); the logic lives in ``Explorer`` and needs no notebook:
 
 >>> explorer = Explorer("fourbar")
 >>> [s["name"] for s in explorer.sliders]
