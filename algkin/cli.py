@@ -9,7 +9,7 @@ import sys
 
 from .errors import AlgkinError, SceneError, UsageError
 
-__all__ = ["main"]
+__all__ = ["main", "usage"]
 
 
 class _Parser(argparse.ArgumentParser):
@@ -80,6 +80,12 @@ def build_parser():
     plot.add_argument("--derivative", action="store_true", help="with --of: the slope, with its zero marked")
     plot.add_argument("--against", help="with --of: p=lo:hi, the minimum against the dimension p")
     return parser
+
+
+def usage(command):
+    """The ``--help`` text of one command (the docs print it)."""
+    commands = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
+    return commands.choices[command].format_help()
 
 
 def _range(text):

@@ -1,0 +1,18 @@
+"""Sphinx configuration: MyST pages, tutorials executed at build time by myst-nb, autodoc."""
+
+project = "algkin"
+author = "algkin"
+extensions = ["myst_nb", "sphinx.ext.autodoc"]
+exclude_patterns = ["_build", "jupyter_execute", "images/README.md"]
+# Every tutorial and command page runs on each build, so none of them can rot; a failing
+# cell fails the build.
+nb_execution_mode = "force"
+nb_execution_raise_on_error = True
+nb_execution_timeout = 300
+nb_merge_streams = True
+myst_heading_anchors = 3
+autodoc_member_order = "bysource"
+autodoc_default_options = {"members": True}
+html_theme = "alabaster"
+html_title = "algkin"
+html_theme_options = {"nosidebar": False}
