@@ -100,7 +100,8 @@ def mechanism_figure(motion, inputs=None, parameters=None, branch=None, curve=Tr
     axes = figure.add_subplot()
     _trajectories(axes, motion, motion.sweep(parameters, branch)[1], pose.branch)
     at_defaults = all(v == motion.defaults[p] for p, v in motion.complete(inputs, parameters)[1].items())
-    if curve and at_defaults:
+    # With two inputs a point sweeps a region, not a curve: no implicit curve then.
+    if curve and at_defaults and len(motion.inputs) == 1:
         from .pipeline import curve as derive_curve
 
         bounds = _bounds(motion, parameters)

@@ -9,6 +9,7 @@ import sys
 
 import pytest
 
+from algkin.html import write
 from algkin.motion import Motion
 
 from .browser import load
@@ -62,3 +63,25 @@ def test_cannot_assemble_where_the_discriminant_is_negative(pages):
     state, circles, status = load(pages / "fourbar.html", "?theta=180&l=0.75")
     assert state["assembles"] == "false" and state["blocked"] == "B" and state["positions"] == {}
     assert circles == {} and "cannot assemble" in status
+
+
+@pytest.mark.parametrize("scene, query, values", [
+    ("five-bar", "?t1=100&t2=60", {"t1": 100, "t2": 60}),              # two inputs
+    ("slider-crank", "?theta=200&e=0.3", {"theta": 200}),              # a slider, its offset a dimension
+    ("watt-straight-line", "?phi=-12.5&r=2.5", {"phi": -12.5}),        # sqrt(r**2) = |r| in the forms
+    ("stephenson-iii", "?theta=77&branch=B:left F:right", {"theta": 77}),  # four modes
+    ("stephenson-iii", "?theta=77&branch=B:right F:left", {"theta": 77}),  # ... one that never assembles
+])
+def test_generated_javascript_agrees_with_python(tmp_path, scene, query, values):
+    """The page's JavaScript and algkin's numpy evaluation of the same closed forms."""
+    motion = Motion(scene)
+    state, circles, _ = load(write(motion, tmp_path / "page.html"), query.replace(" ", "%20"))
+    parameters = {k: v for k, v in state["values"].items() if k in motion.params}
+    assert {k: state["values"][k] for k in values} == values
+    pose = motion.at(values, parameters, state["branch"])
+    assert state["assembles"] == str(pose.assembles).lower() and state["blocked"] == " ".join(pose.blocked)
+    if pose.assembles:
+        close(state["positions"], pose.points)
+        close(circles, pose.points)
+    else:
+        assert state["positions"] == {} and circles == {}
