@@ -134,9 +134,11 @@ def modes_figure(motion, inputs=None, parameters=None):
 
 def animate(motion, out, parameters=None, branch=None, frames=72, fps=24):
     """Turn the first input through its range and write ``out`` (.gif with pillow, .mp4 with ffmpeg)."""
+    import pathlib
+
     from matplotlib import animation
 
-    suffix = str(out).lower()[-4:]
+    suffix = pathlib.Path(out).suffix.lower()
     if suffix == ".mp4" and not animation.writers.is_available("ffmpeg"):
         raise UsageError("--out", str(out), "an .mp4 needs ffmpeg on PATH (not found); write a .gif instead")
     name = next(iter(motion.inputs))

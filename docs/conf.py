@@ -10,6 +10,9 @@ nb_execution_mode = "force"
 nb_execution_raise_on_error = True
 nb_execution_timeout = 300
 nb_merge_streams = True
+# Anything a cell writes to stderr (a warning, a deprecation) becomes a build warning, so an
+# error: the pages show only what they mean to.
+nb_output_stderr = "warn"
 myst_heading_anchors = 3
 autodoc_member_order = "bysource"
 autodoc_default_options = {"members": True}
