@@ -36,7 +36,7 @@ def draw_pose(axes, motion, pose, color=None):
         axes.plot(*zip(at[p], at[q]), **style)
     for p, q in motion.strings:
         axes.plot(*zip(at[p], at[q]), color="tab:gray", linestyle="--", linewidth=1, zorder=1)
-    for point, through, (dx, dy) in motion.sliders:
+    for point, through, (dx, dy) in motion.guides:
         x, y = at[through]
         axes.axline((x, y), (x + dx, y + dy), color="tab:gray", linewidth=1, zorder=1)
     ground = motion.ground
@@ -70,10 +70,9 @@ def _bounds(motion, parameters):
 
 def draw_curve(axes, result, bounds, grid=500):
     """The zero set of ``result.elimination.polynomial`` (a ``CurveResult``) over ``bounds``."""
-    x, y = (sympy.Symbol(v, real=True) for v in result.variables)
     poly = result.elimination.polynomial
-    F = sympy.lambdify((x, y), poly.xreplace({s: sympy.Symbol(s.name, real=True) for s in poly.free_symbols}),
-                       "numpy")
+    x, y = (next(s for s in poly.free_symbols if s.name == v) for v in result.variables)
+    F = sympy.lambdify((x, y), poly, "numpy")
     xmin, xmax, ymin, ymax = bounds
     X, Y = np.meshgrid(np.linspace(xmin, xmax, grid), np.linspace(ymin, ymax, grid))
     contour = axes.contour(X, Y, np.broadcast_to(F(X, Y), X.shape), levels=[0], colors="tab:green",

@@ -117,8 +117,8 @@ class Motion:
         return [n for n, c in self.scene.points.items() if isinstance(c, Fixed)]
 
     @property
-    def sliders(self):
-        """Slider points with the point their guide passes through and its direction."""
+    def guides(self):
+        """The fixed line of each slider point: (slider point, a point on the line, direction)."""
         return [(n, c.through, tuple(float(d.xreplace(self._default_subs)) for d in c.direction))
                 for n, c in self.scene.points.items() if isinstance(c, Slider)]
 

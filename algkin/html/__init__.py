@@ -51,7 +51,7 @@ def model(motion, inputs=None, branch=None):
         "points": names,
         "bars": [[names.index(p), names.index(q)] for p, q in motion.bars],
         "strings": [[names.index(p), names.index(q)] for p, q in motion.strings],
-        "sliders": [[names.index(p), names.index(t), dx, dy] for p, t, (dx, dy) in motion.sliders],
+        "guides": [[names.index(p), names.index(t), dx, dy] for p, t, (dx, dy) in motion.guides],
         "ground": [names.index(g) for g in motion.ground],
         "traced": [names.index(t) for t in motion.traced],
     }

@@ -115,7 +115,7 @@ function draw(points, poses) {
   for (const [p, q] of MODEL.strings) {
     element("line", {...thin, class: "string", x1: points[p][0], y1: -points[p][1], x2: points[q][0], y2: -points[q][1]});
   }
-  for (const [p, t, dx, dy] of MODEL.sliders) {
+  for (const [p, t, dx, dy] of MODEL.guides) {
     const [x, y] = points[t];
     element("line", {...thin, class: "guide", x1: x - 3 * size * dx, y1: -(y - 3 * size * dy), x2: x + 3 * size * dx, y2: -(y + 3 * size * dy)});
   }
