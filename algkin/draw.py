@@ -8,7 +8,7 @@ the zero contour of ``F(x, y)``: it must pass through the closed-form trajectory
 >>> from algkin.motion import Motion
 >>> figure = mechanism_figure(Motion("chebyshev-lambda"), {"angle": 63})
 >>> [line.get_label() for line in figure.axes[0].lines if not line.get_label().startswith("_")]
-['trajectory of P (left)', 'implicit curve of P']
+['trajectory of P (left)', 'implicit curve of P (every assembly mode)']
 """
 
 import numpy as np
@@ -78,7 +78,8 @@ def draw_curve(axes, result, bounds, grid=500):
     contour = axes.contour(X, Y, np.broadcast_to(F(X, Y), X.shape), levels=[0], colors="tab:green",
                            linewidths=0.8, linestyles="--", zorder=1)
     # A proxy line so the contour appears in the legend.
-    axes.plot([], [], color="tab:green", linewidth=0.8, linestyle="--", label=f"implicit curve of {result.point}")
+    axes.plot([], [], color="tab:green", linewidth=0.8, linestyle="--",
+              label=f"implicit curve of {result.point} (every assembly mode)")
     return contour
 
 
@@ -95,7 +96,10 @@ def mechanism_figure(motion, inputs=None, parameters=None, branch=None, curve=Tr
     """
     inputs = inputs if inputs is not None else motion.start(parameters, branch)
     pose = motion.at(inputs, parameters, branch)
+    bounds = _bounds(motion, parameters)
     figure = _figure()
+    # A figure shaped like the mechanism's reach, so equal scales leave little empty space.
+    figure.set_size_inches(6.4, min(max(6.4 * (bounds[3] - bounds[2]) / (bounds[1] - bounds[0]), 3.6), 7.2))
     axes = figure.add_subplot()
     _trajectories(axes, motion, motion.sweep(parameters, branch)[1], pose.branch)
     at_defaults = all(v == motion.defaults[p] for p, v in motion.complete(inputs, parameters)[1].items())
@@ -103,13 +107,13 @@ def mechanism_figure(motion, inputs=None, parameters=None, branch=None, curve=Tr
     if curve and at_defaults and len(motion.inputs) == 1:
         from .pipeline import curve as derive_curve
 
-        bounds = _bounds(motion, parameters)
         for name in motion.traced:
             draw_curve(axes, derive_curve(motion.scene, name, samples=0), bounds)
     draw_pose(axes, motion, pose)
     angles = ", ".join(f"{n} = {v:g}°" for n, v in pose.inputs.items())
     _finish(axes, f"{motion.scene.name}: {angles}, {pose.branch}")
-    axes.legend(fontsize="small", loc="best")
+    # Below the axes: inside, it would cover a curve on one scene or another.
+    figure.legend(loc="outside lower center", ncols=2, fontsize="small")
     return figure
 
 
@@ -199,6 +203,8 @@ def plot_mechanism(scene, out, inputs=(), branch=None, modes=False, params=None)
         raise UsageError("--out", out, f"unknown format; valid: {', '.join(FORMATS)}")
     if not path.parent.is_dir():
         raise UsageError("--out", out, "its directory does not exist")
+    if modes and branch is not None:
+        raise UsageError("--branch", branch, "--modes draws every assembly mode; leave out --branch")
     motion = Motion(scene, params)
     chosen = parse_inputs(motion, inputs) or None
     motion.branch_index(branch)  # a bad --branch fails before anything is drawn

@@ -114,6 +114,7 @@ def test_plot_command_writes_the_format_of_the_suffix(tmp_path, suffix):
     ["--out", "x.png", "--input", "nan"],
     ["--out", "x.png", "--input", "theta=3"],  # no such input
     ["--out", "x.png", "--branch", "up"],
+    ["--out", "x.png", "--modes", "--branch", "left"],
     ["--out", "x.html", "--param", "zz"],
     ["--out", "x.png", "--derivative"],       # goes with --of
     ["--out", "x.png", "--of", "P.x", "--input", "3"],
