@@ -52,6 +52,7 @@ browser:
 # The HTML site in docs/_build/html; the tutorials run inside the build, warnings are errors.
 docs: $(DOCS_STAMP)
 	$(BIN)/python -m sphinx -W --keep-going -q -b html docs docs/_build/html
+	@if grep -rl 'src="http' docs/_build/html; then echo "docs: the pages above load from the network"; exit 1; fi
 	@echo "docs: docs/_build/html/index.html"
 
 clean:

@@ -13,6 +13,10 @@ nb_merge_streams = True
 # Anything a cell writes to stderr (a warning, a deprecation) becomes a build warning, so an
 # error: the pages show only what they mean to.
 nb_output_stderr = "warn"
+# The site works offline, like algkin's own pages: no script from a CDN. Formulas are shown
+# as text (no MathJax), and widgets are built but never rendered (no widget manager).
+nb_mime_priority_overrides = [("html", "text/latex", None)]
+nb_ipywidgets_js = {}
 myst_heading_anchors = 3
 autodoc_member_order = "bysource"
 autodoc_default_options = {"members": True}
