@@ -188,15 +188,14 @@ def _report_accuracy(d):
     return "\n".join(lines)
 
 
-def _figure_path(option, text, formats=None):
+def _figure_path(option, text):
     import pathlib
 
     from .plot import FORMATS
 
-    formats = formats or FORMATS
     out = pathlib.Path(text)
-    if out.suffix.lower() not in formats:
-        raise UsageError(option, text, f"unknown figure format; valid: {', '.join(formats)}")
+    if out.suffix.lower() not in FORMATS:
+        raise UsageError(option, text, f"unknown figure format; valid: {', '.join(FORMATS)}")
     if not out.parent.is_dir():
         raise UsageError(option, text, "its directory does not exist")
     return out
