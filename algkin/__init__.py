@@ -18,6 +18,7 @@ __all__ = [
     "curve",
     "extremum",
     "catalog_names",
+    "interact",
     "AlgkinError",
 ]
 
@@ -35,6 +36,10 @@ def __getattr__(name):
         from .extremum import extremum
 
         return extremum
+    if name == "interact":  # ipywidgets only when called
+        from .widgets import interact
+
+        return interact
     if name == "load":
         from .mechanism import load
 

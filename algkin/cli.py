@@ -9,7 +9,7 @@ import sys
 
 from .errors import AlgkinError, SceneError, UsageError
 
-__all__ = ["main"]
+__all__ = ["main", "usage"]
 
 
 class _Parser(argparse.ArgumentParser):
@@ -65,14 +65,21 @@ def build_parser():
     accuracy.add_argument("--seed", type=int, default=0)
     accuracy.add_argument("--plot", help="also draw time against error (log-log) to this .png/.svg/.pdf")
     accuracy.add_argument("--json", action="store_true")
-    plot = commands.add_parser("plot", help="figures: a quantity against the input, its derivative, "
-                                            "its minimum against a dimension")
+    plot = commands.add_parser("plot", help="the mechanism with its trajectories and implicit curves "
+                                            "(.png/.svg/.pdf), animated (.gif/.mp4), an interactive page "
+                                            "(.html); with --of a quantity against the input")
     plot.add_argument("scene")
-    plot.add_argument("--of", required=True, help="a scalar output: distance or coordinate")
-    plot.add_argument("--out", required=True, help="the file to write: .png, .svg or .pdf")
-    plot.add_argument("--range", help="lo:hi of the input, in its unit")
-    plot.add_argument("--derivative", action="store_true", help="the slope, with its zero marked")
-    plot.add_argument("--against", help="p=lo:hi: the minimum against the dimension p")
+    plot.add_argument("--out", required=True, help="the file to write: .png, .svg, .pdf, .gif, .mp4 or .html")
+    plot.add_argument("--input", action="append", default=[],
+                      help="the input angle drawn, in degrees: VALUE, or NAME=VALUE for each input")
+    plot.add_argument("--branch", help="the assembly mode drawn (default: the scene's)")
+    plot.add_argument("--modes", action="store_true", help="every assembly mode side by side")
+    plot.add_argument("--param", action="append",
+                      help="a dimension with a slider in the .html page (default: every dimension)")
+    plot.add_argument("--of", help="a scalar output: draw it against the input instead")
+    plot.add_argument("--range", help="with --of: lo:hi of the input, in its unit")
+    plot.add_argument("--derivative", action="store_true", help="with --of: the slope, with its zero marked")
+    plot.add_argument("--against", help="with --of: p=lo:hi, the minimum against the dimension p")
     bench = commands.add_parser("bench", help="elimination methods compared on a problem set, peers beside")
     bench.add_argument("--problems", nargs="+", help="problem names (default: the whole suite)")
     bench.add_argument("--methods", nargs="+", help="elimination methods (default: all)")
@@ -82,6 +89,12 @@ def build_parser():
     bench.add_argument("--out", help="directory for bench.json, bench.csv and bench.png")
     bench.add_argument("--json", action="store_true")
     return parser
+
+
+def usage(command):
+    """The ``--help`` text of one command (the docs print it)."""
+    commands = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
+    return commands.choices[command].format_help()
 
 
 def _cmd_bench(args):
@@ -231,6 +244,19 @@ def _figure_path(option, text):
 
 
 def _cmd_plot(args):
+    if args.of is None:
+        from .draw import plot_mechanism
+
+        for option in ("range", "derivative", "against"):
+            if getattr(args, option):
+                raise UsageError(f"--{option}", getattr(args, option), "goes with --of OUTPUT")
+        print(plot_mechanism(args.scene, args.out, args.input, args.branch, args.modes, args.param))
+        return 0
+    for option in ("input", "branch", "modes", "param"):
+        if getattr(args, option):
+            value = getattr(args, option)
+            raise UsageError(f"--{option}", " ".join(value) if isinstance(value, list) else value,
+                             "draws the mechanism; leave out --of")
     out = _figure_path("--out", args.out)
     if args.against and args.derivative:
         raise UsageError("--against", args.against, "draws the minimum; leave out --derivative")

@@ -44,7 +44,7 @@ class Mechanism:
         return dict(self.scene.parameters)
 
     def dist(self, p, q):
-        """The distance |PQ| as a ``Quantity``."""
+        """The distance from ``p`` to ``q`` as a ``Quantity``."""
         return Quantity(self, f"dist({p}, {q})")
 
     def x(self, point):

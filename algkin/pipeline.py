@@ -13,7 +13,7 @@ import math
 import flint
 import sympy
 
-from .branches import certify_label, check_assembly, circularity, closed_forms
+from .branches import certify_label, check_assembly, closed_forms
 from .eliminate import DEFAULT_METHOD
 from .errors import UsageError
 from .evaluate import ARB, evaluate

@@ -1,12 +1,15 @@
 """Evaluate a sympy expression tree in any number type: balls, mpmath, floats, arrays.
 
 Only what closed forms contain is accepted: sums, products, integer powers, square
-roots, rationals and named variables. Shared subexpressions are evaluated once.
+roots, absolute values (``sqrt(r**2)`` of a real dimension ``r`` is ``Abs(r)``), rationals
+and named variables. Shared subexpressions are evaluated once.
 
 >>> import sympy
 >>> x = sympy.Symbol("x")
 >>> evaluate(sympy.sqrt(x**2 + 9) - sympy.Rational(1, 2), {"x": 4}, FLOAT)
 4.5
+>>> evaluate(sympy.sqrt(sympy.Symbol("r", real=True)**2), {"r": -2.5}, FLOAT)
+2.5
 >>> print(evaluate(sympy.sqrt(x), {"x": ARB.number(2, 1)}, ARB))
 [1.41421356237309...]
 """
@@ -61,6 +64,8 @@ def evaluate(expr, values, kind):
                 result = result * a
         elif node.is_Pow:
             result = _power(walk(node.base), node.exp, kind)
+        elif isinstance(node, sympy.Abs):
+            result = abs(walk(node.args[0]))  # floats, arrays, mpmath and arb balls all have abs
         else:
             raise TypeError(f"cannot evaluate {type(node).__name__} in {node}")
         memo[node] = result

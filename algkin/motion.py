@@ -1,0 +1,227 @@
+"""Every point of a scene as a closed form, per assembly mode, derived once for drawing.
+
+A ``Motion`` compiles the whole scene with its dimensions symbolic (those that keep the
+system polynomial), takes the closed-form branches, and substitutes them into every
+point's construction. Moving a slider, drawing a frame or writing the browser page only
+*evaluates* these expressions; nothing is derived again. Where a branch's dyad or slider
+discriminant is negative the configuration cannot assemble: its points are ``None`` (or
+nan in a sweep) and ``blocked`` names the points that fail.
+
+>>> motion = Motion("chebyshev-lambda")
+>>> [b.label for b in motion.branches], motion.traced
+(['left', 'right'], ['P'])
+>>> frame = motion.at({"angle": 0})
+>>> [round(v, 12) for v in frame.points["B"]], [round(v, 12) for v in frame.points["P"]]
+([1.5, 2.449489742783], [2.0, 4.898979485566])
+>>> motion.bars
+[('O', 'A'), ('A', 'B'), ('D', 'B'), ('A', 'P'), ('B', 'P')]
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+import sympy
+
+from .branches import closed_forms
+from .errors import UsageError
+from .evaluate import NUMPY, evaluate
+from .scene import Scene, compile_scene, load_scene
+from .scene.constructions import Crank, Dyad, Fixed, Frame, Slider
+from .system import symbol
+
+__all__ = ["Motion", "Pose", "symbolic_parameters"]
+
+
+@dataclass(frozen=True)
+class Pose:
+    """One configuration: point -> (x, y) floats, or ``None`` everywhere if it cannot assemble."""
+
+    inputs: dict  # input name -> degrees
+    parameters: dict  # symbolic dimension -> value
+    branch: str
+    points: dict  # point -> (x, y) or None
+    blocked: tuple  # points whose discriminant is negative
+
+    @property
+    def assembles(self):
+        return not self.blocked
+
+
+def symbolic_parameters(scene, wanted=None):
+    """The dimensions that can stay symbolic while the scene compiles to polynomials.
+
+    By default every dimension is tried, and one under a division (the arm's ``g/r``) takes
+    its default; dimensions named in ``wanted`` must all stay symbolic.
+    """
+    kept = list(scene.parameters if wanted is None else wanted)
+    while True:
+        try:
+            return tuple(kept), compile_scene(scene, list(scene.points), kept)
+        except UsageError as err:
+            if wanted is not None or err.argument != "--param" or err.value not in kept:
+                raise
+            kept.remove(err.value)
+
+
+class Motion:
+    """Closed forms of every point of ``scene`` on every branch, dimensions symbolic."""
+
+    def __init__(self, scene, params=None):
+        self.scene = scene if isinstance(scene, Scene) else load_scene(scene)
+        self.params, self.compiled = symbolic_parameters(self.scene, params)
+        self.branches = closed_forms(self.compiled)
+        self.inputs = {n: self.scene.inputs[n] for n in self.compiled.system.inputs}
+        self.defaults = {n: float(v) for n, v in self.compiled.parameter_values.items()}
+        self.points = self._point_forms()
+
+    def _point_forms(self):
+        """Per branch: point -> (x, y) sympy expressions in c_*, s_* and the symbolic dimensions."""
+        forms = []
+        for branch in self.branches:
+            substitution = {symbol(u): v for u, v in branch.values.items()}
+            forms.append({p: tuple(v.xreplace(substitution) for v in xy)
+                          for p, xy in self.compiled.coordinates.items()})
+        return forms
+
+    @property
+    def selected(self):
+        """Index of the branch the scene file asks for."""
+        return next(k for k, b in enumerate(self.branches) if b.selected)
+
+    def branch_index(self, label=None):
+        """Index of the branch called ``label`` (the scene's own when ``None``)."""
+        if label is None:
+            return self.selected
+        for k, branch in enumerate(self.branches):
+            if branch.label == label:
+                return k
+        known = ", ".join(b.label for b in self.branches)
+        raise UsageError("--branch", label, f"not a branch of {self.scene.name} (branches: {known})")
+
+    @property
+    def bars(self):
+        """Pairs of points joined by a rigid link, in construction order."""
+        bars = []
+        for name, c in self.scene.points.items():
+            if isinstance(c, Crank):
+                bars.append((c.center, name))
+            elif isinstance(c, (Dyad, Frame)):
+                bars += [(c.bases[0], name), (c.bases[1], name)]
+            elif isinstance(c, Slider):
+                bars.append((c.to, name))
+        return bars
+
+    @property
+    def ground(self):
+        """Fixed points: pivots, guides and anchors (the arm's B)."""
+        return [n for n, c in self.scene.points.items() if isinstance(c, Fixed)]
+
+    @property
+    def guides(self):
+        """The fixed line of each slider point: (slider point, a point on the line, direction)."""
+        return [(n, c.through, tuple(float(d.xreplace(self._default_subs)) for d in c.direction))
+                for n, c in self.scene.points.items() if isinstance(c, Slider)]
+
+    @property
+    def _default_subs(self):
+        return {symbol(n): v for n, v in self.compiled.parameter_values.items()}
+
+    @property
+    def strings(self):
+        """Distances the scene outputs (the arm's string AB): drawn as thin lines."""
+        return [o.points for o in self.scene.outputs.values() if o.kind == "dist"]
+
+    @property
+    def traced(self):
+        """Moving points named by the scene's outputs: the ones whose trajectory is drawn."""
+        moving = [n for n, c in self.scene.points.items() if not isinstance(c, Fixed)]
+        named = [p for o in self.scene.outputs.values() for p in o.points]
+        return [p for p in moving if p in named] or moving[-1:]
+
+    def values(self, inputs=None, parameters=None):
+        """Variable name -> value for ``evaluate``: c_*, s_* of inputs in degrees, dimensions."""
+        inputs, parameters = self.complete(inputs, parameters)
+        values = {}
+        for name, (c, s) in self.compiled.system.inputs.items():
+            angle = np.radians(np.asarray(inputs[name], dtype=float))
+            values[c], values[s] = np.cos(angle), np.sin(angle)
+        values.update({p: np.asarray(v, dtype=float) for p, v in parameters.items()})
+        return values
+
+    def complete(self, inputs=None, parameters=None):
+        """Inputs (degrees) and symbolic dimensions, missing ones at the range start / defaults."""
+        inputs = dict(inputs or {})
+        for name in inputs:
+            if name not in self.inputs:
+                raise UsageError("--input", name, f"not an input of {self.scene.name} "
+                                                  f"(inputs: {', '.join(self.inputs)})")
+        for name, spec in self.inputs.items():
+            inputs.setdefault(name, spec.range_degrees[0])
+        parameters = dict(parameters or {})
+        for name in parameters:
+            if name not in self.params:
+                raise UsageError("--param", name, f"not a symbolic dimension of {self.scene.name} "
+                                                  f"(symbolic: {', '.join(self.params) or 'none'})")
+        return inputs, {p: parameters.get(p, self.defaults[p]) for p in self.params}
+
+    def evaluate(self, branch, values):
+        """Point -> (x, y) arrays, nan where the branch cannot assemble; and the blocked mask per point."""
+        form = self.branches[branch]
+        blocked = {p: np.asarray(evaluate(d, values, NUMPY)) < 0 for p, d in form.discriminants.items()}
+        with np.errstate(invalid="ignore"):
+            points = {p: tuple(np.asarray(evaluate(v, values, NUMPY), dtype=float) for v in xy)
+                      for p, xy in self.points[branch].items()}
+        return points, blocked
+
+    def at(self, inputs=None, parameters=None, branch=None):
+        """The configuration at ``inputs`` (degrees) and ``parameters`` on branch ``branch``."""
+        inputs, parameters = self.complete(inputs, parameters)
+        k = self.branch_index(branch)
+        points, blocked = self.evaluate(k, self.values(inputs, parameters))
+        failing = tuple(p for p, mask in blocked.items() if np.any(mask))
+        shown = {p: None if failing else (float(x), float(y)) for p, (x, y) in points.items()}
+        return Pose(inputs, parameters, self.branches[k].label, shown, failing)
+
+    def sweep(self, parameters=None, branch=None, samples=721, inputs=None):
+        """Angles swept over the first input's range (others fixed) and every point's arrays
+        (nan where the branch cannot assemble)."""
+        return self._sweep(parameters, branch, samples, inputs)[:2]
+
+    def _sweep(self, parameters, branch, samples, inputs, endpoint=True):
+        inputs, parameters = self.complete(inputs, parameters)
+        name, spec = next(iter(self.inputs.items()))
+        angles = np.linspace(*spec.range_degrees, samples, endpoint=endpoint)
+        points, blocked = self.evaluate(self.branch_index(branch), self.values({**inputs, name: angles}, parameters))
+        blocked = {p: np.broadcast_to(m, angles.shape) for p, m in blocked.items()}
+        mask = np.any(list(blocked.values()), axis=0) if blocked else np.zeros(angles.shape, bool)
+        return angles, {p: tuple(np.where(mask, np.nan, np.broadcast_to(v, mask.shape)) for v in xy)
+                        for p, xy in points.items()}, blocked, inputs, parameters
+
+    def start(self, parameters=None, branch=None):
+        """Input angles a picture starts from: the first input near 7/20 of its range (the
+        seed's 63 deg of a turn), moved to the nearest angle where the branch assembles."""
+        name, spec = next(iter(self.inputs.items()))
+        lo, hi = spec.range_degrees
+        angles, points = self.sweep(parameters, branch, samples=361)
+        alive = np.isfinite(next(iter(points.values()))[0])
+        order = np.argsort(np.abs(angles - (lo + 0.175 * (hi - lo))))
+        chosen = next((angles[k] for k in order if alive[k]), lo + 0.175 * (hi - lo))
+        return {name: float(chosen), **{n: s.range_degrees[0] for n, s in list(self.inputs.items())[1:]}}
+
+    def poses(self, parameters=None, branch=None, samples=72, inputs=None):
+        """``samples`` configurations turning the first input through its range, evaluated at once.
+
+        A full turn leaves out its last angle (the first one again), so an animation loops.
+        """
+        spec = next(iter(self.inputs.values()))
+        lo, hi = spec.range_degrees
+        angles, points, blocked, inputs, parameters = self._sweep(parameters, branch, samples, inputs,
+                                                                  endpoint=hi - lo < 360)
+        label = self.branches[self.branch_index(branch)].label
+        name = next(iter(self.inputs))
+        result = []
+        for k, angle in enumerate(angles):
+            failing = tuple(p for p, m in blocked.items() if m[k])
+            shown = {p: None if failing else (float(x[k]), float(y[k])) for p, (x, y) in points.items()}
+            result.append(Pose({**inputs, name: float(angle)}, parameters, label, shown, failing))
+        return result

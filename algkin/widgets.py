@@ -1,0 +1,101 @@
+"""Sliders in Jupyter (the seed notebook's ``@interact``, extended): ``algkin.interact(scene)``.
+
+One slider per input and per symbolic dimension, and a choice of assembly mode. The
+closed forms are derived once when ``interact`` is called (``algkin.motion.Motion``,
+dimensions symbolic); moving a slider only evaluates them. Where the mechanism cannot
+assemble, the picture says so instead of drawing nothing. ipywidgets (the ``notebook``
+extra) is imported only here (a module named ``widgets``, so that importing it does not
+hide the function ``algkin.interact``); the logic lives in ``Explorer`` and needs no notebook:
+
+>>> explorer = Explorer("fourbar")
+>>> [s["name"] for s in explorer.sliders]
+['theta', 'a', 'd', 'l', 'm', 'p', 'q']
+>>> explorer.pose(theta=180, l=0.75).blocked     # |DA| = 5 > l + m = 4.25
+('B',)
+>>> explorer.caption(theta=180, l=0.75)
+'left: cannot assemble at theta = 180° (B: the two circles never meet)'
+"""
+
+import io
+
+from .html import slider_range
+from .motion import Motion
+
+__all__ = ["interact", "Explorer"]
+
+
+class Explorer:
+    """What the sliders drive: a ``Motion`` and the picture for any slider values."""
+
+    def __init__(self, scene, params=None):
+        self.motion = scene if isinstance(scene, Motion) else Motion(scene, params)
+
+    @property
+    def sliders(self):
+        """[{name, lo, hi, value}]: inputs in degrees (starting where the scene assembles), then dimensions."""
+        start = self.motion.start()
+        inputs = [dict(name=n, lo=s.range_degrees[0], hi=s.range_degrees[1], value=start[n])
+                  for n, s in self.motion.inputs.items()]
+        return inputs + [dict(name=p, lo=slider_range(v)[0], hi=slider_range(v)[1], value=v)
+                         for p, v in ((p, self.motion.defaults[p]) for p in self.motion.params)]
+
+    def _split(self, values):
+        branch = values.pop("branch", None)
+        inputs = {n: values.pop(n) for n in list(values) if n in self.motion.inputs}
+        return inputs, values, branch
+
+    def pose(self, **values):
+        """The configuration at slider values (input names in degrees, dimension names, ``branch``)."""
+        return self.motion.at(*self._split(dict(values)))
+
+    def caption(self, **values):
+        """One line: the branch, and whether it assembles at these values."""
+        pose = self.pose(**values)
+        angles = ", ".join(f"{n} = {v:g}°" for n, v in pose.inputs.items())
+        if pose.assembles:
+            return f"{pose.branch}: {angles}"
+        reasons = {d.point: d.never_meets for d in self.motion.compiled.implicit}
+        why = "; ".join(f"{p}: {reasons[p]}" for p in pose.blocked)
+        return f"{pose.branch}: cannot assemble at {angles} ({why})"
+
+    def figure(self, **values):
+        """The mechanism at these values with its trajectories (no re-derivation)."""
+        from .draw import mechanism_figure
+
+        inputs, parameters, branch = self._split(dict(values))
+        figure = mechanism_figure(self.motion, inputs, parameters, branch, curve=False)
+        figure.axes[0].set_title(self.caption(**values), fontsize="medium")
+        return figure
+
+    def png(self, **values):
+        """The figure as PNG bytes (what the notebook shows)."""
+        buffer = io.BytesIO()
+        self.figure(**values).savefig(buffer, format="png", dpi=90)
+        return buffer.getvalue()
+
+
+def interact(scene, params=None):
+    """A widget with a slider per input and symbolic dimension driving the drawing.
+
+    ``scene``: a catalog name, a path, a ``Scene`` or a ``Motion``; ``params``: the
+    dimensions with sliders (default: every one that keeps the system polynomial).
+    """
+    try:
+        import ipywidgets
+        from IPython.display import Image, display
+    except ImportError:
+        from .errors import AlgkinError
+
+        raise AlgkinError("interact needs ipywidgets: pip install 'algkin[notebook]'") from None
+    explorer = Explorer(scene, params)
+    controls = {s["name"]: ipywidgets.FloatSlider(value=s["value"], min=s["lo"], max=s["hi"],
+                                                  step=(s["hi"] - s["lo"]) / 720, description=s["name"],
+                                                  continuous_update=False)
+                for s in explorer.sliders}
+    branches = explorer.motion.branches
+    if len(branches) > 1:
+        controls["branch"] = ipywidgets.Dropdown(options=[b.label for b in branches],
+                                                 value=branches[explorer.motion.selected].label,
+                                                 description="mode")
+    shown = ipywidgets.interactive_output(lambda **values: display(Image(explorer.png(**values))), controls)
+    return ipywidgets.VBox([ipywidgets.VBox(list(controls.values())), shown])

@@ -1,0 +1,87 @@
+"""The .html page in a real headless browser: move sliders, read the drawn positions back.
+
+The page's JavaScript evaluates closed forms printed from sympy; the positions it draws
+must match hand geometry (law of cosines, no algkin) and algkin's own values to ~1e-9.
+"""
+
+import subprocess
+import sys
+
+import pytest
+
+from algkin.html import write
+from algkin.motion import Motion
+
+from .browser import load
+from .hand import CHEBYSHEV, FOURBAR, fourbar
+
+
+@pytest.fixture(scope="module")
+def pages(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("pages")
+    for scene in ("chebyshev-lambda", "fourbar"):
+        done = subprocess.run([sys.executable, "-m", "algkin", "plot", scene, "--out", folder / f"{scene}.html"],
+                              capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr
+    return folder
+
+
+def close(drawn, expected, tol=1e-9):
+    assert set(drawn) == set(expected)
+    for name, (x, y) in expected.items():
+        assert abs(drawn[name][0] - x) < tol and abs(drawn[name][1] - y) < tol, (name, drawn[name], (x, y))
+
+
+def test_chebyshev_slider_moves_the_drawing(pages):
+    state, circles, status = load(pages / "chebyshev-lambda.html", "?angle=37.3")
+    assert state["values"] == {"angle": 37.3} and state["assembles"] == "true"
+    hand = fourbar(37.3, **CHEBYSHEV)
+    close(state["positions"], hand)
+    close(circles, hand)  # the SVG joints themselves
+    python = Motion("chebyshev-lambda").at({"angle": 37.3}).points
+    close(state["positions"], python, 1e-12)
+    assert status == "left: assembles"
+
+
+def test_the_other_assembly_mode(pages):
+    state, circles, _ = load(pages / "chebyshev-lambda.html", "?angle=200&branch=right")
+    assert state["branch"] == "right"
+    close(circles, fourbar(200, **CHEBYSHEV, branch="right"))
+
+
+def test_a_slider_per_dimension(pages):
+    state, circles, _ = load(pages / "fourbar.html", "?theta=123.4&l=2.5&m=3.2&q=0.2")
+    assert state["values"] == {"theta": 123.4, "a": 1, "d": 4, "l": 2.5, "m": 3.2, "p": 0.5, "q": 0.2}
+    hand = fourbar(123.4, **dict(FOURBAR, l=2.5, m=3.2, q=0.2))
+    close(state["positions"], hand)
+    close(circles, hand)
+
+
+def test_cannot_assemble_where_the_discriminant_is_negative(pages):
+    # |DA| = 5 at theta = 180 exceeds l + m = 0.75 + 3.5: by hand, no B.
+    assert fourbar(180, **dict(FOURBAR, l=0.75)) is None
+    state, circles, status = load(pages / "fourbar.html", "?theta=180&l=0.75")
+    assert state["assembles"] == "false" and state["blocked"] == "B" and state["positions"] == {}
+    assert circles == {} and "cannot assemble" in status
+
+
+@pytest.mark.parametrize("scene, query, values", [
+    ("five-bar", "?t1=100&t2=60", {"t1": 100, "t2": 60}),              # two inputs
+    ("slider-crank", "?theta=200&e=0.3", {"theta": 200}),              # a slider, its offset a dimension
+    ("watt-straight-line", "?phi=-12.5&r=2.5", {"phi": -12.5}),        # sqrt(r**2) = |r| in the forms
+    ("stephenson-iii", "?theta=77&branch=B:left F:right", {"theta": 77}),  # four modes
+    ("stephenson-iii", "?theta=77&branch=B:right F:left", {"theta": 77}),  # ... one that never assembles
+])
+def test_generated_javascript_agrees_with_python(tmp_path, scene, query, values):
+    """The page's JavaScript and algkin's numpy evaluation of the same closed forms."""
+    motion = Motion(scene)
+    state, circles, _ = load(write(motion, tmp_path / "page.html"), query.replace(" ", "%20"))
+    parameters = {k: v for k, v in state["values"].items() if k in motion.params}
+    assert {k: state["values"][k] for k in values} == values
+    pose = motion.at(values, parameters, state["branch"])
+    assert state["assembles"] == str(pose.assembles).lower() and state["blocked"] == " ".join(pose.blocked)
+    if pose.assembles:
+        close(state["positions"], pose.points)
+        close(circles, pose.points)
+    else:
+        assert state["positions"] == {} and circles == {}

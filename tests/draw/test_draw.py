@@ -1,0 +1,126 @@
+"""Drawings: positions against hand geometry, trajectory on the implicit curve, modes, animations."""
+
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+import sympy
+
+pytest.importorskip("matplotlib")
+
+from algkin import curve  # noqa: E402
+from algkin.draw import animate, mechanism_figure, modes_figure  # noqa: E402
+from algkin.motion import Motion  # noqa: E402
+
+from .hand import CHEBYSHEV, fourbar  # noqa: E402
+
+
+def joints(axes):
+    """Every drawn joint marker (ground triangles and moving circles) as (x, y) pairs."""
+    found = []
+    for line in axes.lines:
+        if line.get_linestyle() == "None" and len(line.get_xdata()):
+            found += list(zip(line.get_xdata(), line.get_ydata()))
+    return np.array(sorted(found))
+
+
+def by_hand(theta, branch="left"):
+    return np.array(sorted(fourbar(theta, **CHEBYSHEV, branch=branch).values()))
+
+
+def test_configuration_is_drawn_where_hand_geometry_puts_it():
+    figure = mechanism_figure(Motion("chebyshev-lambda"), {"angle": 63}, curve=False)
+    axes = figure.axes[0]
+    assert np.max(np.abs(joints(axes) - by_hand(63))) < 1e-12
+    assert axes.get_aspect() == 1.0  # equal aspect: the linkage is not distorted
+
+
+def test_trajectory_and_implicit_curve_coincide():
+    motion = Motion("chebyshev-lambda")
+    figure = mechanism_figure(motion, {"angle": 63})
+    axes = figure.axes[0]
+    (trajectory,) = [line for line in axes.lines if line.get_label().startswith("trajectory")]
+    xs, ys = trajectory.get_xdata(), trajectory.get_ydata()
+    # The curve comes from elimination, the trajectory from closed forms: every trajectory
+    # point is on F = 0, to within rounding in the distance |F| / |grad F|.
+    result = curve("chebyshev-lambda", "P", samples=0)
+    x, y = (sympy.Symbol(v) for v in result.variables)
+    poly = result.elimination.polynomial.xreplace({s: sympy.Symbol(s.name) for s in result.elimination.polynomial.free_symbols})
+    F, Fx, Fy = (sympy.lambdify((x, y), e, "numpy") for e in (poly, poly.diff(x), poly.diff(y)))
+    assert np.max(np.abs(F(xs, ys)) / np.hypot(Fx(xs, ys), Fy(xs, ys))) < 1e-12
+    # ... and every drawn vertex of the contour lies near the trajectory of one branch
+    # (the implicit curve is traced by both assembly modes), within the contour's grid step.
+    (contour,) = axes.collections
+    vertices = np.concatenate([path.vertices for path in contour.get_paths()])
+    assert len(vertices) > 500
+    traced = np.concatenate([np.column_stack(motion.sweep(branch=b, samples=20001)[1]["P"])
+                             for b in ("left", "right")])
+    step = (axes.dataLim.width + axes.dataLim.height) / 500
+    nearest = np.min(np.hypot(*(vertices[:, None, :] - traced[None, ::5, :]).transpose(2, 0, 1)), axis=1)
+    assert np.max(nearest) < step
+
+
+def test_both_assembly_modes_side_by_side():
+    figure = modes_figure(Motion("chebyshev-lambda"), {"angle": 200})
+    left, right = figure.axes
+    assert left.get_title().startswith("left") and right.get_title() == "right"
+    for axes, side in ((left, "left"), (right, "right")):
+        assert np.max(np.abs(joints(axes) - by_hand(200, side))) < 1e-12
+
+
+def test_cannot_assemble_is_said_not_drawn():
+    figure = mechanism_figure(Motion("fourbar"), {"theta": 180}, {"l": 0.75}, curve=False)
+    texts = [t.get_text() for t in figure.axes[0].texts]
+    assert texts == ["cannot assemble: B"] and len(joints(figure.axes[0])) == 0
+
+
+def test_gif_has_one_frame_per_angle(tmp_path):
+    from PIL import Image
+
+    out = animate(Motion("chebyshev-lambda"), tmp_path / "turn.gif", frames=12)
+    with Image.open(out) as gif:
+        assert gif.format == "GIF" and gif.n_frames == 12
+
+
+def plot(*args):
+    return subprocess.run([sys.executable, "-m", "algkin", "plot", *map(str, args)], capture_output=True, text=True)
+
+
+def test_mp4_needs_ffmpeg(tmp_path):
+    done = plot("chebyshev-lambda", "--out", tmp_path / "turn.mp4")
+    if shutil.which("ffmpeg"):
+        assert done.returncode == 0 and (tmp_path / "turn.mp4").stat().st_size > 10_000
+    else:
+        assert done.returncode == 2 and "needs ffmpeg" in done.stderr and len(done.stderr.splitlines()) == 1
+        assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("suffix", [".png", ".svg", ".html"])
+def test_plot_command_writes_the_format_of_the_suffix(tmp_path, suffix):
+    out = tmp_path / f"lambda{suffix}"
+    done = plot("chebyshev-lambda", "--out", out, "--input", "63")
+    assert done.returncode == 0, done.stderr
+    head = out.read_bytes()[:64]
+    assert {".png": head.startswith(b"\x89PNG"), ".svg": b"<svg" in out.read_bytes()[:2000],
+            ".html": head.startswith(b"<!DOCTYPE html>")}[suffix]
+
+
+@pytest.mark.parametrize("args", [
+    ["--out", "x.jpeg"],                      # unknown format
+    ["--out", "x.png", "--input", "abc"],     # not a number
+    ["--out", "x.png", "--input", "361"],     # outside the input's range
+    ["--out", "x.png", "--input", "nan"],
+    ["--out", "x.png", "--input", "theta=3"],  # no such input
+    ["--out", "x.png", "--branch", "up"],
+    ["--out", "x.png", "--modes", "--branch", "left"],
+    ["--out", "x.html", "--param", "zz"],
+    ["--out", "x.png", "--derivative"],       # goes with --of
+    ["--out", "x.png", "--of", "P.x", "--input", "3"],
+])
+def test_bad_requests_exit_2_with_one_line_and_write_nothing(tmp_path, args):
+    args = [str(tmp_path / a) if a.startswith("x.") else a for a in args]
+    done = plot("chebyshev-lambda", *args)
+    assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
+    assert "Traceback" not in done.stderr and list(tmp_path.iterdir()) == []

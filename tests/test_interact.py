@@ -1,0 +1,74 @@
+"""Jupyter sliders: the callback's logic without a notebook server, and the widgets it builds."""
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from algkin.widgets import Explorer
+
+from .draw.hand import CHEBYSHEV, FOURBAR, fourbar
+
+pytest.importorskip("matplotlib")
+
+
+def test_one_slider_per_input_and_symbolic_dimension():
+    assert [s["name"] for s in Explorer("chebyshev-lambda").sliders] == ["angle"]  # dimensions exact
+    sliders = {s["name"]: s for s in Explorer("fourbar").sliders}
+    assert list(sliders) == ["theta", "a", "d", "l", "m", "p", "q"]
+    assert (sliders["theta"]["lo"], sliders["theta"]["hi"]) == (0, 360)
+    assert sliders["m"]["value"] == 3.5 and sliders["m"]["lo"] < 3.5 < sliders["m"]["hi"]
+
+
+def test_slider_values_draw_the_hand_configuration():
+    figure = Explorer("fourbar").figure(theta=123.4, l=2.5, m=3.2, branch="right")
+    hand = fourbar(123.4, **dict(FOURBAR, l=2.5, m=3.2), branch="right")
+    drawn = sorted(xy for line in figure.axes[0].lines if line.get_linestyle() == "None"
+                   for xy in zip(line.get_xdata(), line.get_ydata()))
+    assert np.max(np.abs(np.array(drawn) - np.array(sorted(hand.values())))) < 1e-12
+    assert figure.axes[0].get_title() == "right: theta = 123.4°"
+
+
+def test_cannot_assemble_is_the_caption_not_nans():
+    explorer = Explorer("fourbar")
+    assert fourbar(180, **dict(FOURBAR, l=0.75)) is None
+    figure = explorer.figure(theta=180, l=0.75)
+    assert figure.axes[0].get_title().startswith("left: cannot assemble at theta = 180°")
+    assert [t.get_text() for t in figure.axes[0].texts] == ["cannot assemble: B"]
+
+
+def test_sliders_only_evaluate(monkeypatch):
+    """Moving sliders never derives again: the pipeline is not called after construction."""
+    import algkin.motion
+
+    explorer = Explorer("chebyshev-lambda")
+    monkeypatch.setattr(algkin.motion, "closed_forms", lambda *a: pytest.fail("derived again"))
+    monkeypatch.setattr(algkin.motion, "compile_scene", lambda *a: pytest.fail("compiled again"))
+    for angle in (0, 90, 180):
+        assert explorer.pose(angle=angle).points["P"] == pytest.approx(fourbar(angle, **CHEBYSHEV)["P"], abs=1e-12)
+
+
+def test_interact_builds_the_widgets(monkeypatch):
+    ipywidgets = pytest.importorskip("ipywidgets")
+    import algkin
+    from algkin import widgets as module
+
+    shown = []
+    monkeypatch.setattr(module.Explorer, "png", lambda self, **values: shown.append(values) or b"")
+    box = algkin.interact("chebyshev-lambda")
+    controls = box.children[0].children
+    slider, mode = controls
+    assert isinstance(slider, ipywidgets.FloatSlider) and slider.description == "angle"
+    assert (slider.min, slider.max, slider.value) == (0, 360, 63)
+    assert list(mode.options) == ["left", "right"] and mode.value == "left"
+    slider.value = 100
+    mode.value = "right"
+    assert shown[-2:] == [{"angle": 100, "branch": "left"}, {"angle": 100, "branch": "right"}]
+
+
+def test_import_algkin_stays_cheap():
+    code = ("import sys, algkin; heavy = [m for m in ('matplotlib', 'ipywidgets', 'IPython') if m in sys.modules];"
+            "print(heavy)")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert done.stdout.strip() == "[]", done.stderr
