@@ -110,8 +110,10 @@ def _cmd_bench(args):
                 raise UsageError(option, name, f"unknown; valid: {', '.join(valid)}")
     if args.budget <= 0:
         raise UsageError("--budget", args.budget, "must be a positive number of seconds")
-    progress = lambda message: print(f"algkin bench: {message}", file=sys.stderr, flush=True)  # noqa: E731
+    progress = _progress if sys.stderr.isatty() else None  # a terminal watches; a log or a pipe does not
     report = bench(args.problems, args.methods, args.backends, args.budget, not args.no_peers, progress)
+    if progress:
+        print(file=sys.stderr)
     written = write(report, args.out) if args.out else []
     if args.json:
         print(json.dumps(report.to_json(), indent=2))
@@ -121,6 +123,11 @@ def _cmd_bench(args):
         for path in written:
             print(f"wrote {path}")
     return 0 if all(r["agrees"] in (None, "reference") or r["agrees"].startswith("yes") for r in report.rows) else 1
+
+
+def _progress(message):
+    """One status line, rewritten in place."""
+    print(f"\r\033[Kalgkin bench: {message}", end="", file=sys.stderr, flush=True)
 
 
 def _method(args):

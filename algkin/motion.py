@@ -20,7 +20,6 @@ nan in a sweep) and ``blocked`` names the points that fail.
 from dataclasses import dataclass
 
 import numpy as np
-import sympy
 
 from .branches import closed_forms
 from .errors import UsageError

@@ -3,9 +3,9 @@ path end to end, and the peer engines that are installed, in one run.
 
 Each row is timed in a child process within the budget (``measure``), carries the
 eliminant's figures (degree, terms, coefficient bits) and whether it agrees with the
-problem's reference: the Gröbner basis over python-flint, a different algorithm from
-the resultants and the linear method, or, when that ran past its budget, the first
-result that finished. ``ratio`` is each row's time over algkin's default (the ``linear``
+problem's reference: the Gröbner basis over python-flint (a different algorithm from
+the resultants and the linear method) when it is in the run and finished, else algkin's
+default, else the first result that finished. ``ratio`` is each row's time over algkin's default (the ``linear``
 method over ``flint``) on the same problem: above 1, algkin is faster.
 """
 
@@ -69,8 +69,7 @@ def _problem_rows(problem, methods, backends, budget, peers, progress):
     keep = list(task.keep)
     side = [e for e in task.equations if not ({str(v) for v in e.free_symbols} & set(task.eliminate))]
     results = {}
-    pairs = sorted({(m, b) for m in methods for b in backends} | {REFERENCE, DEFAULT},
-                   key=lambda pair: (pair != REFERENCE, pair))
+    pairs = sorted({(m, b) for m in methods for b in backends} | {DEFAULT})
     for method, backend in pairs:
         _say(progress, f"{problem.name}: {method} / {backend}")
         seconds, summary, note = measure(lambda m=method, b=backend: task.run(m, b), _summary, budget)
@@ -78,8 +77,7 @@ def _problem_rows(problem, methods, backends, budget, peers, progress):
                                       "seconds": seconds, **(summary or _empty()), "note": note}
     _say(progress, f"{problem.name}: algkin default path, end to end")
     seconds, summary, note = measure(problem.end_to_end, _end_summary, budget)
-    rows = [r for pair, r in results.items() if pair in {(m, b) for m in methods for b in backends}
-            or pair in (REFERENCE, DEFAULT)]
+    rows = list(results.values())
     rows.append({"problem": problem.name, "method": "default path, end to end", "backend": "flint",
                  "seconds": seconds, **(summary or _empty()), "note": note})
     if peers:
@@ -97,9 +95,11 @@ def _problem_rows(problem, methods, backends, budget, peers, progress):
 
 
 def _reference(rows):
+    """The Gröbner basis over flint if it ran and finished, else algkin's default, else any."""
     finished = [r for r in rows if r.get("form") is not None]
-    preferred = [r for r in finished if (r["method"], r["backend"]) == REFERENCE]
-    return (preferred or finished or [{"form": None}])[0]["form"]
+    ranked = sorted(finished, key=lambda r: ((r["method"], r["backend"]) != REFERENCE,
+                                             (r["method"], r["backend"]) != DEFAULT))
+    return ranked[0]["form"] if ranked else None
 
 
 def _summary(elimination):

@@ -78,9 +78,10 @@ class FlintBackend:
     def zero(self):
         return self.ctx.from_dict({})
 
-    def vanishes_at(self, poly, point):
-        """Whether the ball of ``poly`` at ``point`` (name -> arb) contains zero."""
-        return evaluate_terms(self.terms(poly), self.names, point).contains(0)
+    def vanishes(self, poly):
+        """``point -> whether the ball of poly at point (name -> arb) contains zero``."""
+        terms, degrees = self.terms(poly), poly.degrees()
+        return lambda point: evaluate_terms(terms, self.names, point, degrees).contains(0)
 
     def divide(self, f, g):
         """``f / g``, exact."""
@@ -194,9 +195,9 @@ class SympyBackend:
     def zero(self):
         return sympy.Poly(0, *self.gens, domain=sympy.QQ)
 
-    def vanishes_at(self, poly, point):
-        """Whether the ball of ``poly`` at ``point`` (name -> arb) contains zero."""
-        return evaluate_terms(self.terms(poly), self.names, point).contains(0)
+    def vanishes(self, poly):
+        terms, degrees = self.terms(poly), poly.degree_list()
+        return lambda point: evaluate_terms(terms, self.names, point, degrees).contains(0)
 
     def divide(self, f, g):
         return f.exquo(g)

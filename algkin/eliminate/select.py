@@ -21,11 +21,11 @@ __all__ = ["evaluate_terms", "select_factors"]
 MARGIN_BITS = 64
 
 
-def evaluate_terms(terms, names, point):
-    """Ball value of the polynomial with ``terms`` at ``point`` (name -> arb)."""
+def evaluate_terms(terms, names, point, degrees):
+    """Ball value of the polynomial with ``terms`` (its ``degrees`` per variable) at ``point``
+    (name -> arb); each variable's powers are taken once."""
     values = [point[n] for n in names]
-    highest = [max((t[0][i] for t in terms), default=0) for i in range(len(names))]
-    powers = [_powers(v, d) for v, d in zip(values, highest)]
+    powers = [_powers(v, int(d)) for v, d in zip(values, degrees)]
     total = flint.arb(0)
     for exponents, numerator, denominator in terms:
         term = flint.arb(numerator) / denominator
@@ -59,7 +59,8 @@ def _bits(ball):
 
 
 def _select(backend, factors, groups):
-    vanishes = functools.cache(lambda i, g, w: backend.vanishes_at(factors[i], groups[g][w]))
+    tests = [backend.vanishes(f) for f in factors]
+    vanishes = functools.cache(lambda i, g, w: tests[i](groups[g][w]))
     kept, dropped = [], []
     for i, factor in enumerate(factors):
         if any(all(vanishes(i, g, w) for w in range(len(group))) for g, group in enumerate(groups)):

@@ -25,18 +25,43 @@ def flint_context(names, ordering="lex"):
     return flint.fmpq_mpoly_ctx.get(tuple(names), ordering)
 
 
-def _sympy_dict(expr, names):
-    gens = [symbol(n) for n in names]
-    # Poly matches generators by identity, so rebuild the expression on algkin's symbols.
-    expr = sympy.sympify(expr).xreplace({sympy.Symbol(n): g for n, g in zip(names, gens)})
-    return sympy.Poly(expr, *gens, domain=sympy.QQ).as_dict()
-
-
 def to_flint(expr, ctx):
-    """A sympy polynomial (expression or Poly) as an ``fmpq_mpoly`` in ``ctx``."""
-    names = [str(n) for n in ctx.names()]
-    terms = _sympy_dict(expr.as_expr() if isinstance(expr, sympy.Poly) else expr, names)
-    return ctx.from_dict({m: flint.fmpq(int(c.numerator), int(c.denominator)) for m, c in terms.items()})
+    """A sympy polynomial (expression or Poly) as an ``fmpq_mpoly`` in ``ctx``.
+
+    The expression tree is walked with flint's own arithmetic: building a sympy ``Poly``
+    first costs milliseconds on a dozen generators, more than most eliminations.
+    """
+    expr = sympy.sympify(expr.as_expr() if isinstance(expr, sympy.Poly) else expr)
+    gens = dict(zip((str(n) for n in ctx.names()), ctx.gens()))
+    zero = ctx.from_dict({})
+    memo = {}
+
+    def walk(node):
+        if node in memo:
+            return memo[node]
+        if node.is_Symbol:
+            value = gens[node.name]
+        elif node.is_Rational:
+            value = zero + flint.fmpq(int(node.p), int(node.q))
+        elif node.is_Add:
+            value = zero
+            for arg in node.args:
+                value = value + walk(arg)
+        elif node.is_Mul:
+            value = zero + 1
+            for arg in node.args:
+                value = value * walk(arg)
+        elif node.is_Pow and node.exp.is_Integer and node.exp >= 0:
+            value = walk(node.base) ** int(node.exp)
+        else:
+            raise ValueError(f"not a polynomial over QQ in {', '.join(gens)}: {node}")
+        memo[node] = value
+        return value
+
+    try:
+        return walk(expr)
+    except KeyError as missing:
+        raise ValueError(f"{missing.args[0]} is not one of the variables {', '.join(gens)}") from None
 
 
 def to_flint_integer(poly, ctx):
