@@ -205,13 +205,14 @@ def grashof(compiled):
 def _classify(compiled, lengths, crank, ground_pivot):
     values = {symbol(n): v for n, v in compiled.parameter_values.items()}
     pivot = compiled.scene.points[crank.center]
-    exact = lambda e: sympy.nsimplify(sympy.sympify(e).xreplace(values))  # noqa: E731
+    # Defaults are exact already; nsimplify would trade a large rational for a "simpler" radical.
+    exact = lambda e: sympy.sympify(e).xreplace(values)  # noqa: E731
     ground = sympy.sqrt((exact(ground_pivot.x) - exact(pivot.x)) ** 2 + (exact(ground_pivot.y) - exact(pivot.y)) ** 2)
     bars = {"crank": exact(crank.length), "ground": ground,
             "coupler": exact(lengths[0]), "rocker": exact(lengths[1])}
     ordered = sorted(bars.values(), key=lambda v: float(v))
     shortest, longest = ordered[0], ordered[-1]
-    margin = sympy.nsimplify(ordered[1] + ordered[2] - shortest - longest)
+    margin = sympy.simplify(ordered[1] + ordered[2] - shortest - longest)  # a ground of sqrt(...) too
     if margin < 0:
         kind = "non-grashof (triple rocker)"
     elif margin == 0:

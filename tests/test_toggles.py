@@ -6,8 +6,8 @@ from fractions import Fraction
 import pytest
 from hypothesis import assume, given, settings, strategies as st
 
-from algkin.scene import load_scene_text
-from algkin.toggles import toggles
+from algkin.scene import compile_scene, load_scene_text
+from algkin.toggles import grashof, toggles
 
 
 def four_bar(crank, ground, coupler, rocker):
@@ -83,3 +83,25 @@ def test_random_four_bars_match_the_law_of_cosines(crank, ground, coupler, rocke
     assert [t.kind for t in result.toggles] == [k for _, k in expected]
     assert [t.input_deg for t in result.toggles] == pytest.approx([a for a, _ in expected], abs=1e-9)
     assert result.grashof["class"] == grashof_by_rule(crank, ground, coupler, rocker)
+
+
+def test_grashof_class_of_a_tilted_change_point_stays_exact():
+    # Found by the strategies: ground 1649/132 along (-4/5, 3/5) from O = (1, 0). By hand,
+    # 1/2 + 1649/132 = 1715/132 = 87/11 + 61/12: a change point. nsimplify once turned the
+    # pivot's coordinate 1 - 4*g/5 = -1319/165 into a product of radicals, so "non-grashof".
+    scene = load_scene_text("""
+[parameters]
+g = "1649/132"
+[inputs]
+angle = { range = [0, 360], unit = "deg" }
+[points]
+O = { fixed = [1, 0] }
+D = { fixed = ["1 - 4*g/5", "3*g/5"] }
+A = { crank = "O", length = "1/2", input = "angle" }
+B = { dyad = ["A", "D"], lengths = ["87/11", "61/12"], branch = "left" }
+[outputs]
+B = "B"
+""")
+    found = grashof(compile_scene(scene, ["B"]))
+    assert found["class"] == "change point" and found["margin"] == "0"
+    assert found["bars"]["ground"] == "1649/132"
