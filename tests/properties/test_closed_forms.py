@@ -8,7 +8,7 @@ from algkin.testing import strategies
 SAMPLES = 2
 
 
-@settings(max_examples=70)
+@settings(max_examples=60)
 @given(strategies.scenes(), st.integers(0, 2**16))
 def test_branches_match_numeric_solutions(scene, seed):
     result = derive(scene, ["B", "P"], samples=SAMPLES, seed=seed, certify=False)

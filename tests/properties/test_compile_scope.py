@@ -25,7 +25,7 @@ NEEDS = {
 }
 
 
-@settings(max_examples=550)
+@settings(max_examples=590)
 @given(strategies.scenes(), st.sampled_from(sorted(NEEDS)))
 def test_only_what_the_output_needs(scene, output):
     unknowns, four_bar, slider, moves = NEEDS[output]

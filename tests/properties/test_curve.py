@@ -21,7 +21,7 @@ def relative_value(poly, point):
     return abs(total) / size
 
 
-@settings(max_examples=180)
+@settings(max_examples=150)
 @given(strategies.scenes())
 def test_curve_vanishes_on_the_trajectory(scene):
     result = curve(scene, "P", samples=0)

@@ -36,7 +36,7 @@ def assert_agree(scene, params, rivals):
         assert ratio.is_Rational and ratio != 0, (unknown, first[unknown], second[unknown])
 
 
-@settings(max_examples=180)
+@settings(max_examples=150)
 @given(strategies.scenes())
 def test_resultant_and_groebner_agree(scene):
     assert_agree(scene, (), RIVALS["flint"])

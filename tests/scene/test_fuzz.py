@@ -100,7 +100,7 @@ def mutated(draw):
     return text
 
 
-@settings(max_examples=250, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=200, suppress_health_check=[HealthCheck.too_slow])
 @given(mutated())
 def test_mutated_catalog_scenes(text):
     survives(text)
