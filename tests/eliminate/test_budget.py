@@ -102,3 +102,19 @@ def test_command_line_refuses_a_bad_budget(option, value, capsys):
     assert main(["curve", "chebyshev-lambda", "--point", "P", option, value]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and option in err and repr(value) in err
+
+
+@pytest.mark.parametrize("args,words", [
+    (["toggles", "chebyshev-lambda", "--max-terms", "3"], "max_terms=3: the resultant in B_"),
+    (["extremum", "arm-string", "--of", "AB", "--param", "b", "--max-terms", "4"],
+     "max_terms=4: the resultant in t_theta has 12 terms"),
+    (["accuracy", "chebyshev-lambda", "--samples", "10", "--max-seconds", "0.5"], "max_seconds=0.5: stopped after 0.5"),
+])
+def test_every_eliminating_command_keeps_to_its_budget(args, words, capsys):
+    from algkin.cli import main
+
+    start = time.perf_counter()
+    assert main(args) == 1
+    captured = capsys.readouterr()
+    assert captured.out == "" and captured.err.count("\n") == 1 and words in captured.err, captured.err
+    assert time.perf_counter() - start < 0.5 + SLACK + 3  # the terms cases stop within their first eliminations
