@@ -1,6 +1,7 @@
-"""Resultant chains and Gröbner bases give the same eliminant, up to a constant factor.
+"""Resultant chains, Gröbner bases and the linear method give the same eliminant, up to a
+constant factor.
 
-Both keep the factors the same witness configurations satisfy; sympy's resultant may be the
+All keep the factors the same witness configurations satisfy; sympy's resultant may be the
 negative of python-flint's, which a constant factor covers.
 """
 
@@ -13,7 +14,7 @@ from algkin.pipeline import witnesses
 from algkin.scene import compile_scene
 from algkin.testing import strategies
 
-RIVALS = {"flint": (("resultant", "flint"), ("groebner", "flint")),
+RIVALS = {"flint": (("resultant", "flint"), ("groebner", "flint"), ("linear", "flint")),
           "sympy": (("resultant", "flint"), ("resultant", "sympy"))}
 
 
@@ -29,16 +30,17 @@ def eliminants(scene, params, method, backend):
 
 
 def assert_agree(scene, params, rivals):
-    first, second = (eliminants(scene, params, *rival) for rival in rivals)
+    first, *others = (eliminants(scene, params, *rival) for rival in rivals)
     for unknown in first:
         assert first[unknown].has(sympy.Symbol(unknown, real=True))
-        ratio = sympy.cancel(first[unknown] / second[unknown])
-        assert ratio.is_Rational and ratio != 0, (unknown, first[unknown], second[unknown])
+        for other in others:
+            ratio = sympy.cancel(first[unknown] / other[unknown])
+            assert ratio.is_Rational and ratio != 0, (unknown, first[unknown], other[unknown])
 
 
-@settings(max_examples=150)
+@settings(max_examples=120)
 @given(strategies.scenes())
-def test_resultant_and_groebner_agree(scene):
+def test_resultant_groebner_and_linear_agree(scene):
     assert_agree(scene, (), RIVALS["flint"])
 
 

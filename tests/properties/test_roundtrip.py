@@ -6,7 +6,7 @@ from algkin.scene import dump_scene, load_scene_text
 from algkin.testing import strategies
 
 
-@settings(max_examples=730)
+@settings(max_examples=760)
 @given(strategies.scenes())
 def test_dump_then_load_gives_the_same_scene(scene):
     text = dump_scene(scene)
