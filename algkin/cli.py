@@ -29,6 +29,35 @@ def _common(parser, method=True):
         parser.add_argument("--param", action="append", default=[], help="keep this parameter symbolic")
         parser.add_argument("--samples", type=int, default=40, help="verification samples")
         parser.add_argument("--seed", type=int, default=0, help="verification seed")
+        _budget_options(parser)
+
+
+def _budget_options(parser):
+    parser.add_argument("--max-seconds", type=_seconds, help="stop (exit 1) past this many seconds of work")
+    parser.add_argument("--max-terms", type=_terms, help="stop (exit 1) when an eliminant passes this many terms")
+
+
+def _seconds(text):
+    try:
+        value = float(text)
+    except ValueError:
+        value = None
+    if value is None or not 0 < value < float("inf"):
+        raise argparse.ArgumentTypeError(f"expected a positive number of seconds, got {text!r}")
+    return value
+
+
+def _terms(text):
+    if not text.strip().isdigit() or int(text) < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive whole number of terms, got {text!r}")
+    return int(text)
+
+
+def _budget(args):
+    """The command's budget, its clock started now: before the heavy imports count too."""
+    from .eliminate.budget import Budget
+
+    return Budget(seconds=args.max_seconds, terms=args.max_terms).start()
 
 
 def build_parser():
@@ -56,15 +85,18 @@ def build_parser():
     extremum.add_argument("--param", action="append", default=[],
                           help="keep this dimension symbolic: the minimum as a closed form in it")
     extremum.add_argument("--json", action="store_true")
+    _budget_options(extremum)
     toggles = commands.add_parser("toggles", help="input angles where assembly modes meet, certified")
     toggles.add_argument("scene")
     toggles.add_argument("--json", action="store_true")
+    _budget_options(toggles)
     accuracy = commands.add_parser("accuracy", help="speed against error of each evaluation strategy")
     accuracy.add_argument("scene")
     accuracy.add_argument("--samples", type=int, default=2000, help="samples per case")
     accuracy.add_argument("--seed", type=int, default=0)
     accuracy.add_argument("--plot", help="also draw time against error (log-log) to this .png/.svg/.pdf")
     accuracy.add_argument("--json", action="store_true")
+    _budget_options(accuracy)
     plot = commands.add_parser("plot", help="the mechanism with its trajectories and implicit curves "
                                             "(.png/.svg/.pdf), animated (.gif/.mp4), an interactive page "
                                             "(.html); with --of a quantity against the input")
@@ -148,10 +180,12 @@ def _range(text):
 
 
 def _cmd_extremum(args):
+    budget = _budget(args)
     from .extremum import extremum
 
-    result = extremum(args.scene, args.of, _range(args.range) if args.range else None, params=args.param)
-    _emit(args, result.to_json(), _report_extremum)
+    angles = _range(args.range) if args.range else None
+    document = budget.run(lambda: extremum(args.scene, args.of, angles, params=args.param).to_json())
+    _emit(args, document, _report_extremum)
     return 0
 
 
@@ -191,9 +225,10 @@ def _interval(region):
 
 
 def _cmd_toggles(args):
+    budget = _budget(args)
     from .toggles import toggles
 
-    _emit(args, toggles(args.scene).to_json(), _report_toggles)
+    _emit(args, budget.run(lambda: toggles(args.scene).to_json()), _report_toggles)
     return 0
 
 
@@ -202,7 +237,7 @@ def _report_toggles(d):
     lines = [f"toggles of {d['scene']} over {d['input']} in [{lo:g}, {hi:g}] deg:"]
     lines += [f"  {g['kind']:9} {g['point']} at {g['enclosure_deg']} deg (certified)" for g in d["toggles"]]
     if not d["toggles"]:
-        lines.append("  none: every dyad assembles, in both modes apart, over the whole range")
+        lines.append("  none: every dyad and slider assembles, in both modes apart, over the whole range")
     if d["grashof"]:
         g = d["grashof"]
         bars = ", ".join(f"{k} {v}" for k, v in g["bars"].items())
@@ -213,17 +248,22 @@ def _report_toggles(d):
 
 
 def _cmd_accuracy(args):
+    budget = _budget(args)
     from .accuracy import accuracy
 
     if args.samples < 10:
         raise UsageError("--samples", args.samples, "needs at least 10 samples per case")
     out = _figure_path("--plot", args.plot) if args.plot else None
-    result = accuracy(args.scene, args.samples, args.seed)
-    if out is not None:
-        from .plot import accuracy_figure, save
 
-        save(accuracy_figure(result), out)
-    _emit(args, result.to_json(), _report_accuracy)
+    def measure():  # the figure is drawn where the measurement is, inside the budget
+        result = accuracy(args.scene, args.samples, args.seed)
+        if out is not None:
+            from .plot import accuracy_figure, save
+
+            save(accuracy_figure(result), out)
+        return result.to_json()
+
+    _emit(args, budget.run(measure), _report_accuracy)
     return 0
 
 
@@ -336,9 +376,11 @@ def _report_show(d):
 
 
 def _cmd_derive(args):
+    budget = _budget(args)
     from .pipeline import derive
 
-    result = derive(args.scene, args.outputs, _method(args), args.backend, args.param, args.samples, args.seed)
+    result = derive(args.scene, args.outputs, _method(args), args.backend, args.param, args.samples, args.seed,
+                    budget=budget)
     document = result.to_json()
     _emit(args, document, _report_derive)
     return 0 if result.verification.passed else 1
@@ -372,9 +414,11 @@ def _report_derive(d):
 
 
 def _cmd_curve(args):
+    budget = _budget(args)
     from .pipeline import curve
 
-    result = curve(args.scene, args.point, _method(args), args.backend, args.param, args.samples, args.seed)
+    result = curve(args.scene, args.point, _method(args), args.backend, args.param, args.samples, args.seed,
+                   budget=budget)
     document = result.to_json()
     _emit(args, document, _report_curve)
     return 0 if result.verification.passed else 1
@@ -392,9 +436,11 @@ def _report_curve(d):
 
 
 def _cmd_verify(args):
+    budget = _budget(args)
     from .pipeline import derive
 
-    result = derive(args.scene, args.outputs, _method(args), args.backend, args.param, args.samples, args.seed)
+    result = derive(args.scene, args.outputs, _method(args), args.backend, args.param, args.samples, args.seed,
+                    certify=False, budget=budget)
     document = {"scene": result.compiled.scene.name, "verification": result.verification.to_json(),
                 "branches": [b.label for b in result.branches], "timings": result.timings}
     _emit(args, document, lambda d: f"scene {d['scene']}, branches {', '.join(d['branches'])}\n"

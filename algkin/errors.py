@@ -8,6 +8,9 @@ so the command line can print them as they are.
 'lambda.toml: points.B.lengths: length must be positive, got -1'
 >>> isinstance(err, ValueError) and isinstance(err, AlgkinError)
 True
+>>> import pickle
+>>> str(pickle.loads(pickle.dumps(UsageError("--point", "P", "not a point"))))
+"--point='P': not a point"
 """
 
 __all__ = [
@@ -33,6 +36,9 @@ class SceneError(AlgkinError, ValueError):
         where = f"{source}: {element}" if element else str(source)
         super().__init__(f"{where}: {message}")
 
+    def __reduce__(self):  # pickled back from a budget's child process
+        return type(self), (self.source, self.element, self.message)
+
 
 class UsageError(AlgkinError, ValueError):
     """An argument (method name, parameter name, range...) is not acceptable."""
@@ -40,7 +46,11 @@ class UsageError(AlgkinError, ValueError):
     def __init__(self, argument, value, message):
         self.argument = argument
         self.value = value
+        self.message = message
         super().__init__(f"{argument}={value!r}: {message}")
+
+    def __reduce__(self):
+        return type(self), (self.argument, self.value, self.message)
 
 
 class BudgetExceeded(AlgkinError, RuntimeError):

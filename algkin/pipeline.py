@@ -5,16 +5,17 @@
 (6, 3, True, True)
 """
 
+import functools
+import math
 import time
 from dataclasses import dataclass
 from fractions import Fraction
-import math
 
 import flint
 import sympy
 
 from .branches import certify_label, check_assembly, closed_forms
-from .eliminate import DEFAULT_METHOD
+from .eliminate import DEFAULT_METHOD, current as current_budget
 from .errors import UsageError
 from .evaluate import ARB, evaluate
 from .scene import Scene, compile_scene, load_scene
@@ -195,30 +196,54 @@ def certify_labels(compiled, branches):
 
 def compile_and_branch(scene, outputs, params):
     """The stages derive and curve share: compile, closed forms, assembly check, witnesses."""
+    compiled, timings = _compile(scene, outputs, params)
+    branches, groups = _branch(compiled, timings)
+    return compiled, branches, groups, timings
+
+
+def _compile(scene, outputs, params):
     start = time.perf_counter()
     compiled = compile_scene(scene, outputs, params)
-    timings = {"compile": time.perf_counter() - start}
+    return compiled, {"compile": time.perf_counter() - start}
+
+
+def _branch(compiled, timings):
     mark = time.perf_counter()
     branches = closed_forms(compiled)
     check_assembly(compiled, branches)
     groups = witnesses(compiled, branches)
     timings["branches"] = time.perf_counter() - mark
-    return compiled, branches, groups, timings
+    return branches, groups
 
 
-def derive(scene, outputs=None, method=DEFAULT_METHOD, backend="flint", params=(), samples=40, seed=0):
-    """Eliminants, closed-form branches and their verification for ``outputs`` of ``scene``."""
+def derive(scene, outputs=None, method=DEFAULT_METHOD, backend="flint", params=(), samples=40, seed=0,
+           certify=True, budget=None):
+    """Eliminants, closed-form branches and their verification for ``outputs`` of ``scene``.
+
+    ``certify`` also certifies each branch's label per input interval (the slowest stage);
+    a ``Budget`` bounds the time of the whole derivation and the size of its eliminants.
+    """
+    budget = (budget or current_budget()).start()
     start = time.perf_counter()
-    compiled, branches, groups, timings = compile_and_branch(_scene(scene), outputs, params)
+    compiled, timings = _compile(_scene(scene), outputs, params)
+    return budget.run(functools.partial(_derive, compiled, timings, start, method, backend, samples, seed,
+                                        certify, budget))
+
+
+def _derive(compiled, timings, start, method, backend, samples, seed, certify, budget):
+    budget.note(f"finding the branches of {compiled.scene.name}")
+    branches, groups = _branch(compiled, timings)
     mark = time.perf_counter()
-    eliminations = {u: task.run(method, backend) for u, task in eliminant_tasks(compiled, groups).items()}
+    eliminations = {u: task.run(method, backend, budget) for u, task in eliminant_tasks(compiled, groups).items()}
     timings["eliminate"] = time.perf_counter() - mark
     mark = time.perf_counter()
+    budget.note(f"verifying the branches of {compiled.scene.name}")
     verification = _verify(compiled, branches, samples, seed,
                            {u: e.polynomial for u, e in eliminations.items()})
     timings["verify"] = time.perf_counter() - mark
     mark = time.perf_counter()
-    certified = certify_labels(compiled, branches)
+    budget.note(f"certifying the branch labels of {compiled.scene.name}")
+    certified = certify_labels(compiled, branches) if certify else [None] * len(branches)
     timings["certify"] = time.perf_counter() - mark
     timings["total"] = time.perf_counter() - start
     return Derivation(compiled, method, backend, eliminations, branches, verification, timings, certified)
@@ -241,20 +266,36 @@ def _curve_figures(result, variables):
     return degree, count
 
 
-def curve(scene, point, method=DEFAULT_METHOD, backend="flint", params=(), samples=40, seed=0):
-    """The implicit curve ``F(point_x, point_y) = 0`` traced by ``point``."""
+def curve(scene, point, method=DEFAULT_METHOD, backend="flint", params=(), samples=40, seed=0, budget=None):
+    """The implicit curve ``F(point_x, point_y) = 0`` traced by ``point`` (a one-input motion).
+
+    A ``Budget`` bounds the time of the whole computation and the size of its eliminants.
+    """
+    budget = (budget or current_budget()).start()
     scene = _scene(scene)
     if point not in scene.points:
         raise UsageError("--point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
     start = time.perf_counter()
-    compiled, branches, groups, timings = compile_and_branch(scene, [point], params)
+    compiled, timings = _compile(scene, [point], params)
+    if len(compiled.system.inputs) > 1:
+        raise UsageError("--point", point, f"moves with {len(compiled.system.inputs)} inputs "
+                         f"({', '.join(compiled.system.inputs)}) in {scene.name}: its trajectory is a region, "
+                         "not a curve")
+    return budget.run(functools.partial(_curve, compiled, point, timings, start, method, backend, samples, seed,
+                                        budget))
+
+
+def _curve(compiled, point, timings, start, method, backend, samples, seed, budget):
+    budget.note(f"finding the branches of {compiled.scene.name}")
+    branches, groups = _branch(compiled, timings)
     mark = time.perf_counter()
     task = curve_task(compiled, groups, point)
-    result = task.run(method, backend)
+    result = task.run(method, backend, budget)
     variables = task.keep[:2]
     timings["eliminate"] = time.perf_counter() - mark
     figures = _curve_figures(result, variables)
     mark = time.perf_counter()
+    budget.note(f"verifying the curve of {point} in {compiled.scene.name}")
     verification = _verify(compiled, branches, samples, seed, {"curve": result.polynomial})
     timings["verify"] = time.perf_counter() - mark
     timings["total"] = time.perf_counter() - start

@@ -20,9 +20,9 @@ class EliminationTask:
     parameters: tuple
     witnesses: tuple
 
-    def run(self, method, backend):
+    def run(self, method, backend, budget=None):
         return eliminate(self.equations, self.eliminate, self.keep, method=method, backend=backend,
-                         witnesses=self.witnesses, parameters=self.parameters)
+                         witnesses=self.witnesses, parameters=self.parameters, budget=budget)
 
 
 def curve_task(compiled, groups, point):

@@ -1,10 +1,12 @@
-"""Toggles (dead centres): where a dyad's two assembly modes meet, certified.
+"""Toggles (dead centres): where an implicit point's two assembly modes meet, certified.
 
 A dyad on bases P, Q with lengths l1, l2 toggles where ``|PQ| = l1 + l2`` (*extended*:
 both bars in line, pointing apart) or ``|PQ| = |l1 - l2|`` (*folded*: in line, one over the
-other). ``|PQ|**2`` is a polynomial in the input's ``c, s`` (earlier dyads' unknowns
-eliminated), so each condition becomes, in the half-angle ``t``, a polynomial whose real
-roots python-flint isolates with certified enclosures.
+other). A slider (on the line through P with direction d, at distance l from Q) toggles
+where the circle about Q is *tangent* to the line: ``cross(d, Q - P)**2 = l**2 |d|**2``.
+``|PQ|**2`` and ``cross(d, Q - P)`` are polynomials in the input's ``c, s`` (earlier
+points' unknowns eliminated), so each condition becomes, in the half-angle ``t``, a
+polynomial whose real roots python-flint isolates with certified enclosures.
 
 The discriminant of an eliminant (of ``B_y``, say) has more factors than these: where the
 two modes have the same ``y`` but are different points. Those *artefacts* of the
@@ -26,7 +28,8 @@ from .eliminate import eliminate
 from .errors import UsageError
 from .evaluate import ARB, evaluate
 from .scene import compile_scene, load_scene
-from .scene.constructions import Crank, Dyad, Fixed
+from .scene.compile import SliderSpec
+from .scene.constructions import Crank, Dyad, Fixed, Slider
 from .system import symbol
 from .system.angles import half_angle_numerator, tangent_to_degrees, vanishes_at_half_turn
 from .system.convert import real_roots
@@ -40,8 +43,8 @@ ROOT_BITS = 128
 class Toggle:
     input_deg: float
     enclosure: object  # arb ball, degrees
-    point: str  # the dyad
-    kind: str  # extended / folded
+    point: str  # the dyad or slider
+    kind: str  # extended / folded (dyad), tangent (slider)
 
     def to_json(self):
         return {"input_deg": self.input_deg, "enclosure_deg": self.enclosure.str(20), "point": self.point,
@@ -67,26 +70,31 @@ def _defaults(compiled):
     return {symbol(n): compiled.parameter_values[n] for n in compiled.system.parameters}
 
 
-def toggle_conditions(compiled, dyad):
-    """{'extended': poly, 'folded': poly} in the input's c, s (earlier dyads eliminated)."""
+def toggle_conditions(compiled, spec):
+    """{kind: poly} in the input's c, s (earlier points eliminated), for a dyad or a slider."""
     defaults = _defaults(compiled)
-    (px, py), (qx, qy) = dyad.base_p, dyad.base_q
-    span = (qx - px) ** 2 + (qy - py) ** 2
-    l1, l2 = dyad.lengths
-    conditions = {"extended": (l1 + l2) ** 2 - span, "folded": span - (l1 - l2) ** 2}
-    return {kind: _eliminate_earlier(compiled, sympy.expand(e.xreplace(defaults)), dyad)
+    if isinstance(spec, SliderSpec):
+        (px, py), (qx, qy), (dx, dy) = spec.through, spec.center, spec.direction
+        cross = dx * (qy - py) - dy * (qx - px)
+        conditions = {"tangent": cross**2 - spec.length**2 * (dx**2 + dy**2)}
+    else:
+        (px, py), (qx, qy) = spec.base_p, spec.base_q
+        span = (qx - px) ** 2 + (qy - py) ** 2
+        l1, l2 = spec.lengths
+        conditions = {"extended": (l1 + l2) ** 2 - span, "folded": span - (l1 - l2) ** 2}
+    return {kind: _eliminate_earlier(compiled, sympy.expand(e.xreplace(defaults)), spec)
             for kind, e in conditions.items()}
 
 
-def _eliminate_earlier(compiled, condition, dyad):
-    """The condition with earlier dyads' unknowns eliminated (a polynomial in c, s)."""
+def _eliminate_earlier(compiled, condition, spec):
+    """The condition with earlier points' unknowns eliminated (a polynomial in c, s)."""
     earlier = sorted(str(v) for v in condition.free_symbols if str(v) in compiled.system.unknowns)
     if not earlier:
         return condition
     defaults = _defaults(compiled)
     equations = [sympy.expand(e.xreplace(defaults)) for e in compiled.system.equations
                  if {str(v) for v in e.free_symbols} & set(earlier)
-                 and not {str(v) for v in e.free_symbols} & set(dyad.unknowns)]
+                 and not {str(v) for v in e.free_symbols} & set(spec.unknowns)]
     (c, s), = compiled.system.inputs.values()
     return eliminate([condition] + equations, earlier, [c, s], method="resultant").polynomial
 
@@ -99,25 +107,25 @@ def _single_input(compiled):
 
 
 def toggles(scene, artefacts=True):
-    """Every toggle of every dyad of ``scene`` over its input range, certified.
+    """Every toggle of every dyad and slider of ``scene`` over its input range, certified.
 
     With ``artefacts`` the eliminants are also derived, to report which factors of their
     discriminants are not toggles.
     """
     scene = scene if not isinstance(scene, str) else load_scene(scene)
-    dyad_points = [n for n, p in scene.points.items() if isinstance(p, Dyad)]
-    if not dyad_points:
-        raise UsageError("scene", scene.name, "has no dyad, so no assembly modes to meet")
-    compiled = compile_scene(scene, dyad_points)
+    implicit = [n for n, p in scene.points.items() if isinstance(p, (Dyad, Slider))]
+    if not implicit:
+        raise UsageError("scene", scene.name, "has no dyad or slider, so no assembly modes to meet")
+    compiled = compile_scene(scene, implicit)
     name, c, s = _single_input(compiled)
     lo, hi = scene.inputs[name].range_degrees
     t = symbol(f"t_{name}")
     found = []
     with flint.ctx.workprec(ROOT_BITS):
-        for dyad in compiled.dyads:
-            for kind, condition in toggle_conditions(compiled, dyad).items():
+        for spec in compiled.implicit:
+            for kind, condition in toggle_conditions(compiled, spec).items():
                 for ball in _angles(condition, c, s, t):
-                    found += [Toggle(float(ball.mid()) + turn, ball + turn, dyad.point, kind)
+                    found += [Toggle(float(ball.mid()) + turn, ball + turn, spec.point, kind)
                               for turn in (-360, 0, 360) if lo <= float(ball.mid()) + turn <= hi]
         dropped = _artefacts(compiled, c, s, t) if artefacts else []
     found.sort(key=lambda g: g.input_deg)
@@ -136,8 +144,8 @@ def _artefacts(compiled, c, s, t):
     """Factors of the eliminants' discriminants that are not toggles, with the certificate."""
     from .pipeline import derive
 
-    derived = derive(compiled.scene, [d.point for d in compiled.dyads], samples=0)
-    geometric = [half_angle_numerator(cond, c, s, t) for d in compiled.dyads
+    derived = derive(compiled.scene, [d.point for d in compiled.implicit], samples=0)
+    geometric = [half_angle_numerator(cond, c, s, t) for d in compiled.implicit
                  for cond in toggle_conditions(compiled, d).values()]
     branches = closed_forms(compiled)
     dropped = []
@@ -173,10 +181,10 @@ def _why_not_a_toggle(compiled, branches, factor, c, s, t):
 def _separated(compiled, branches, values):
     discriminants = [evaluate(d, values, ARB) for d in branches[0].discriminants.values()]
     if any(d < 0 for d in discriminants):
-        return "a dyad cannot assemble there"
+        return "a dyad or slider cannot assemble there"
     points = [{u: evaluate(v, values, ARB) for u, v in b.values.items()} for b in branches]
-    for dyad in compiled.dyads:
-        x, y = dyad.unknowns
+    for spec in compiled.implicit:
+        x, y = spec.unknowns
         # d * d, not d ** 2: python-flint's arb power is nan on a ball around zero.
         gaps = [_square(p[x] - q[x]) + _square(p[y] - q[y]) for p in points for q in points if p is not q]
         if not all(g > 0 for g in gaps):
@@ -205,13 +213,14 @@ def grashof(compiled):
 def _classify(compiled, lengths, crank, ground_pivot):
     values = {symbol(n): v for n, v in compiled.parameter_values.items()}
     pivot = compiled.scene.points[crank.center]
-    exact = lambda e: sympy.nsimplify(sympy.sympify(e).xreplace(values))  # noqa: E731
+    # Defaults are exact already; nsimplify would trade a large rational for a "simpler" radical.
+    exact = lambda e: sympy.sympify(e).xreplace(values)  # noqa: E731
     ground = sympy.sqrt((exact(ground_pivot.x) - exact(pivot.x)) ** 2 + (exact(ground_pivot.y) - exact(pivot.y)) ** 2)
     bars = {"crank": exact(crank.length), "ground": ground,
             "coupler": exact(lengths[0]), "rocker": exact(lengths[1])}
     ordered = sorted(bars.values(), key=lambda v: float(v))
     shortest, longest = ordered[0], ordered[-1]
-    margin = sympy.nsimplify(ordered[1] + ordered[2] - shortest - longest)
+    margin = sympy.simplify(ordered[1] + ordered[2] - shortest - longest)  # a ground of sqrt(...) too
     if margin < 0:
         kind = "non-grashof (triple rocker)"
     elif margin == 0:

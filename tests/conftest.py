@@ -1,5 +1,8 @@
 from hypothesis import settings
 
 # Property tests run algebra of varying cost: no per-example deadline, reproducible blobs.
-settings.register_profile("ci", deadline=None, print_blob=True)
+# "ci" (the default) draws the same examples on every run; `pytest --hypothesis-profile=explore`
+# draws new ones each time and remembers failures in the example database.
+settings.register_profile("ci", deadline=None, print_blob=True, derandomize=True)
+settings.register_profile("explore", deadline=None, print_blob=True)
 settings.load_profile("ci")

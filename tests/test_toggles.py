@@ -6,8 +6,8 @@ from fractions import Fraction
 import pytest
 from hypothesis import assume, given, settings, strategies as st
 
-from algkin.scene import load_scene_text
-from algkin.toggles import toggles
+from algkin.scene import compile_scene, load_scene_text
+from algkin.toggles import grashof, toggles
 
 
 def four_bar(crank, ground, coupler, rocker):
@@ -83,3 +83,80 @@ def test_random_four_bars_match_the_law_of_cosines(crank, ground, coupler, rocke
     assert [t.kind for t in result.toggles] == [k for _, k in expected]
     assert [t.input_deg for t in result.toggles] == pytest.approx([a for a, _ in expected], abs=1e-9)
     assert result.grashof["class"] == grashof_by_rule(crank, ground, coupler, rocker)
+
+
+def test_grashof_class_of_a_tilted_change_point_stays_exact():
+    # Found by the strategies: ground 1649/132 along (-4/5, 3/5) from O = (1, 0). By hand,
+    # 1/2 + 1649/132 = 1715/132 = 87/11 + 61/12: a change point. nsimplify once turned the
+    # pivot's coordinate 1 - 4*g/5 = -1319/165 into a product of radicals, so "non-grashof".
+    scene = load_scene_text("""
+[parameters]
+g = "1649/132"
+[inputs]
+angle = { range = [0, 360], unit = "deg" }
+[points]
+O = { fixed = [1, 0] }
+D = { fixed = ["1 - 4*g/5", "3*g/5"] }
+A = { crank = "O", length = "1/2", input = "angle" }
+B = { dyad = ["A", "D"], lengths = ["87/11", "61/12"], branch = "left" }
+[outputs]
+B = "B"
+""")
+    found = grashof(compile_scene(scene, ["B"]))
+    assert found["class"] == "change point" and found["margin"] == "0"
+    assert found["bars"]["ground"] == "1649/132"
+
+
+def slider_crank(crank, rod, offset):
+    return load_scene_text(f"""
+name = "slider-crank"
+[inputs]
+theta = {{ range = [0, 360], unit = "deg" }}
+[points]
+O = {{ fixed = [0, 0] }}
+L = {{ fixed = [0, "{offset}"] }}
+A = {{ crank = "O", length = "{crank}", input = "theta" }}
+B = {{ slider = {{ through = "L", direction = [1, 0] }}, distance = {{ to = "A", length = "{rod}" }}, branch = "ahead" }}
+[outputs]
+B = "B"
+""")
+
+
+def tangent_angles(crank, rod, offset):
+    """By hand: the rod reaches the line y = offset only while |crank*sin(theta) - offset| <= rod;
+    the circle about A is tangent to the line where crank*sin(theta) = offset +- rod."""
+    found = []
+    for height in (offset + rod, offset - rod):
+        if -1 < height / crank < 1:
+            angle = math.degrees(math.asin(height / crank)) % 360
+            found += [angle, (180 - angle) % 360]
+    return sorted(found + [360.0] * found.count(0.0))  # the range [0, 360] holds 0 deg twice
+
+
+def test_slider_tangent_toggles_by_hand():
+    # crank 3, rod 1, line y = 1/2: sin(theta) = 1/2 (30, 150 deg) or -1/6 (189.59, 350.41 deg).
+    result = toggles(slider_crank(3, 1, "1/2"))
+    assert [t.kind for t in result.toggles] == ["tangent"] * 4 and {t.point for t in result.toggles} == {"B"}
+    assert [t.input_deg for t in result.toggles] == pytest.approx(
+        [30, 150, 180 + math.degrees(math.asin(1 / 6)), 360 - math.degrees(math.asin(1 / 6))], abs=1e-12)
+    assert result.toggles[0].enclosure.contains(30) and result.toggles[1].enclosure.contains(150)
+    assert result.grashof is None
+
+
+def test_catalog_slider_crank_turns_without_toggles():
+    # rod 3 > crank 1 + offset 1/2: the rod always reaches the line, twice.
+    assert toggles("slider-crank").toggles == []
+
+
+@settings(max_examples=15)
+@given(lengths, lengths, st.fractions(min_value=-4, max_value=4, max_denominator=6))
+def test_random_slider_cranks_match_the_arcsine(crank, rod, offset):
+    # crank*sin(theta) = offset +- rod exactly at +-crank would be a double root: left out
+    expected = tangent_angles(*(float(v) for v in (crank, rod, offset)))
+    assume(all(abs(abs(float(offset) + sign * float(rod)) - float(crank)) > 1e-9 for sign in (1, -1)))
+    try:
+        found = toggles(slider_crank(crank, rod, offset)).toggles
+    except ValueError as err:  # never reaches the line: |offset| - crank > rod
+        assert "can never assemble" in str(err) and abs(offset) - crank > rod
+        return
+    assert [t.input_deg for t in found] == pytest.approx(expected, abs=1e-9)

@@ -10,6 +10,10 @@
 Traceback (most recent call last):
 ...
 algkin.errors.UsageError: method='magic': unknown elimination method; valid: groebner, linear, resultant
+>>> eliminate(circles, ["x"], ["y", "c", "s"], method="resultant", budget=Budget(terms=5))
+Traceback (most recent call last):
+...
+algkin.errors.BudgetExceeded: max_terms=5: the resultant in x has 11 terms, while eliminating x (keeping y, c, s) by resultant on flint
 """
 
 import functools
@@ -18,11 +22,13 @@ from dataclasses import dataclass, field
 
 from ..errors import ComputationError, UsageError
 from .backends import BACKENDS
+from .budget import Budget, current
 from .linear import linear_elimination
 from .methods import groebner_basis, prepare, resultant_chain
 from .select import select_factors
 
-__all__ = ["eliminate", "Elimination", "METHODS", "DEFAULT_METHOD", "BACKENDS", "method_names", "backend_names"]
+__all__ = ["eliminate", "Elimination", "Budget", "current", "METHODS", "DEFAULT_METHOD", "BACKENDS",
+           "method_names", "backend_names"]
 
 
 METHODS = {"resultant": resultant_chain, "groebner": groebner_basis, "linear": linear_elimination}
@@ -71,6 +77,12 @@ class Elimination:
     def dropped(self):
         return [self.engine.to_sympy(self.engine.primitive(f)) for f in self.raw_dropped]
 
+    def __getstate__(self):
+        """Out of a budget's child process an elimination travels as sympy: the backend's
+        polynomials do not pickle."""
+        state = dict(self.__dict__, polynomial=self.polynomial, factors=self.factors, dropped=self.dropped)
+        return dict(state, engine=None, raw=None, raw_factors=None, raw_dropped=None)
+
 
 def _lookup(table, kind, name):
     if name not in table:
@@ -86,21 +98,32 @@ def _consistent(engine, polys):
     return polys
 
 
-def eliminate(equations, eliminate, keep, method=DEFAULT_METHOD, backend="flint", witnesses=(), parameters=()):
+def eliminate(equations, eliminate, keep, method=DEFAULT_METHOD, backend="flint", witnesses=(), parameters=(),
+              budget=None):
     """Eliminate the variables ``eliminate`` from ``equations`` (sympy polynomials over QQ).
 
     Returns the polynomial left in the variables ``keep``, with factors the witnesses
     (groups of configurations, name -> arb) do not satisfy dropped and reported.
     ``parameters`` (a subset of ``keep``: dimensions) may appear in the multipliers of the
-    ``linear`` method.
+    ``linear`` method. A ``Budget`` bounds the time and the terms of every intermediate
+    eliminant (by default, the budget of the ``Budget.run()`` under way, if any).
     """
     run = _lookup(METHODS, "method", method)
     engine = _lookup(BACKENDS, "backend", backend)(tuple(eliminate) + tuple(keep))
+    budget = budget or current()
+    budget.note(f"eliminating {', '.join(map(str, eliminate)) or 'nothing'} "
+                f"(keeping {', '.join(map(str, keep))}) by {method} on {backend}")
+    work = functools.partial(_eliminate, engine, method, run, equations, list(eliminate), list(keep),
+                             witnesses, parameters, budget)
+    return budget.run(work)
+
+
+def _eliminate(engine, method, run, equations, eliminate, keep, witnesses, parameters, budget):
     start = time.perf_counter()
     polys = [engine.from_sympy(eq) for eq in equations]
     log, dropped = [], []
-    polys = _consistent(engine, prepare(engine, polys, list(eliminate), log))
-    left = _consistent(engine, run(engine, polys, list(eliminate), witnesses, dropped, log, parameters))
+    polys = _consistent(engine, prepare(engine, polys, eliminate, log))
+    left = _consistent(engine, run(engine, polys, eliminate, witnesses, dropped, log, parameters, budget))
     if not left:
         raise ComputationError(f"nothing left after eliminating {', '.join(eliminate)}")
     eliminant = left[0]
@@ -114,7 +137,6 @@ def eliminate(equations, eliminate, keep, method=DEFAULT_METHOD, backend="flint"
     for factor in kept[1:]:
         product = product * factor
     product = engine.primitive(product)
-    seconds = time.perf_counter() - start
     return Elimination(
         engine=engine,
         raw=product,
@@ -122,10 +144,10 @@ def eliminate(equations, eliminate, keep, method=DEFAULT_METHOD, backend="flint"
         raw_dropped=dropped,
         variables=tuple(keep),
         method=method,
-        backend=backend,
+        backend=engine.name,
         degree=engine.total_degree(product),
         terms=engine.nterms(product),
         bits=engine.coefficient_bits(product),
-        seconds=seconds,
+        seconds=time.perf_counter() - start,
         log=log,
     )

@@ -20,12 +20,13 @@ removed by factoring and selection at the witnesses, as for resultants.
 px*(px**2 - 2*px + py**2)*(px**4 - 4*px**3 + 2*px**2*py**2 + 5*px**2 - 4*px*py**2 - 2*px + py**4 + 5*py**2)
 """
 
+from .budget import current
 from .methods import resultant_chain
 
 __all__ = ["linear_elimination"]
 
 
-def linear_elimination(backend, polys, eliminate, witnesses, dropped, log, parameters=()):
+def linear_elimination(backend, polys, eliminate, witnesses, dropped, log, parameters=(), budget=None):
     """Substitute linear unknowns and reduce circles to radical axes; resultants for the rest.
 
     A multiplier may hold numbers and ``parameters`` (dimensions); it may hold the kept
@@ -44,13 +45,15 @@ def linear_elimination(backend, polys, eliminate, witnesses, dropped, log, param
             polys = _substitute(backend, polys, *found)
             remaining.remove(found[1])
             log.append(("substituted", found[1]))
+            (budget or current()).check_terms(max(map(backend.nterms, polys), default=0),
+                                              f"an equation after substituting {found[1]}")
             continue
         reduced = _radical_axes(backend, polys, remaining, allowed)
         if reduced is None or _linear_unknown(backend, reduced[0], remaining, allowed) is None:
             break  # an axis no unknown can be substituted from only reshuffles the resultants
         polys, gained = reduced
         log.append(("radical-axis", gained))
-    return resultant_chain(backend, polys, remaining, witnesses, dropped, log) if remaining else polys
+    return resultant_chain(backend, polys, remaining, witnesses, dropped, log, budget=budget) if remaining else polys
 
 
 def _linear_unknown(backend, polys, remaining, allowed):

@@ -6,6 +6,7 @@ to eliminate) and the same factor selection at witnesses.
 """
 
 from ..errors import ComputationError
+from .budget import current
 from .select import select_factors
 
 __all__ = ["prepare", "resultant_chain", "groebner_basis"]
@@ -57,7 +58,7 @@ def _squarefree_kept(backend, poly, witnesses, dropped):
     return product
 
 
-def resultant_chain(backend, polys, eliminate, witnesses, dropped, log, parameters=()):
+def resultant_chain(backend, polys, eliminate, witnesses, dropped, log, parameters=(), budget=None):
     """Eliminate one variable at a time by Sylvester resultants against a pivot."""
     remaining = [v for v in eliminate]
     while remaining:
@@ -81,17 +82,20 @@ def resultant_chain(backend, polys, eliminate, witnesses, dropped, log, paramete
                 raise ComputationError(f"resultant in {var} vanished: the equations share a factor")
             if not backend.variables(result):
                 raise ComputationError(f"resultant in {var} is a non-zero constant: the system is inconsistent")
+            (budget or current()).check_terms(backend.nterms(result), f"the resultant in {var}")
             others.append(_squarefree_kept(backend, result, witnesses, dropped))
         log.append(("resultant", var))
         polys = others
     return polys
 
 
-def groebner_basis(backend, polys, eliminate, witnesses, dropped, log, parameters=()):
+def groebner_basis(backend, polys, eliminate, witnesses, dropped, log, parameters=(), budget=None):
     """The elimination ideal's generators from a lex basis, eliminated variables first."""
     keep = [n for n in backend.names if n not in eliminate]
     order = [n for n in eliminate] + keep
     basis = backend.groebner_lex(polys, order)
     log.append(("groebner", len(basis)))
+    for element in basis:  # the basis is one call: its size is checked once it is there
+        (budget or current()).check_terms(backend.nterms(element), "an element of the Gröbner basis")
     return [g for g in basis if not (backend.variables(g) & set(eliminate))]
 

@@ -1,7 +1,9 @@
 """Scenes: TOML loading with the safe expression parser, and compilation to a system."""
 
 from .compile import Compiled, compile_scene
+from .dump import dump_scene
 from .load import catalog_names, load_scene, load_scene_text
 from .model import Input, Output, Scene
 
-__all__ = ["Scene", "Input", "Output", "Compiled", "compile_scene", "load_scene", "load_scene_text", "catalog_names"]
+__all__ = ["Scene", "Input", "Output", "Compiled", "compile_scene", "load_scene", "load_scene_text", "catalog_names",
+           "dump_scene"]

@@ -1,9 +1,13 @@
 """The five-bar with two inputs: its end point against hand geometry at both cranks' angles."""
 
+import os
+import subprocess
+import sys
+
 import mpmath
 import sympy
 
-from .geometry import branch, circles, on_circle, run, same
+from .geometry import ROOT, branch, circles, on_circle, run, same
 
 
 def test_end_point_with_both_cranks_up_exactly():
@@ -36,3 +40,22 @@ def test_end_point_over_both_inputs():
                 assert abs(sympy.N(expr["P_x"].subs(at), 40) - p[0]) < 1e-30
                 assert abs(sympy.N(expr["P_y"].subs(at), 40) - p[1]) < 1e-30
     mpmath.mp.dps = 15
+
+
+def test_curve_of_a_two_input_point_is_refused(tmp_path):
+    # P moves with t1 and t2: it sweeps a region, there is no implicit curve F(P_x, P_y) = 0.
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    result = subprocess.run([sys.executable, "-m", "algkin", "curve", "five-bar", "--point", "P"],
+                            capture_output=True, text=True, env=env, cwd=tmp_path)
+    assert result.returncode == 2 and result.stdout == ""
+    assert result.stderr.count("\n") == 1
+    for words in ("--point='P'", "2 inputs (t1, t2)", "region, not a curve"):
+        assert words in result.stderr
+    assert os.listdir(tmp_path) == []
+
+
+def test_curve_of_a_one_input_point_of_the_five_bar_is_a_circle():
+    # A1 depends on t1 only: its curve is the crank circle x**2 + y**2 = 4, by hand.
+    document = run("curve", "five-bar", "--point", "A1", "--samples", "4")
+    x, y = sympy.symbols("A1_x A1_y")
+    assert sympy.simplify(sympy.parse_expr(document["curve"]) - (x**2 + y**2 - 4)) == 0

@@ -1,0 +1,138 @@
+"""Budgets for eliminations: wall seconds and the size of every intermediate eliminant.
+
+A python-flint resultant or Gröbner basis is one C call that no signal interrupts, so a
+time budget runs the work in a forked child process that is killed at the deadline; the
+result comes back pickled. The child reports what it is doing (``note``), so the message
+says what was being eliminated when time ran out. A terms budget is checked after every
+resultant and Gröbner basis. An elimination called without a budget, inside a budget's
+``run()``, counts against that budget (``current()``).
+
+>>> budget = Budget(terms=3)
+>>> budget.check_terms(4, "the resultant in B_x")
+Traceback (most recent call last):
+...
+algkin.errors.BudgetExceeded: max_terms=3: the resultant in B_x has 4 terms, while computing
+>>> Budget(seconds=0.2).run(lambda: sum(range(10)))
+45
+>>> import time
+>>> Budget(seconds=0.2).run(lambda: time.sleep(30))
+Traceback (most recent call last):
+...
+algkin.errors.BudgetExceeded: max_seconds=0.2: stopped after 0.2... s while computing
+"""
+
+import multiprocessing
+import pickle
+import time
+
+from ..errors import BudgetExceeded, ComputationError, UsageError
+
+__all__ = ["Budget", "current"]
+
+_ACTIVE = []  # the budgets whose run() is under way in this process, innermost last
+
+
+def current():
+    """The budget of the ``run()`` under way, for eliminations called without one.
+
+    >>> current().seconds is None
+    True
+    >>> Budget(terms=7).run(lambda: current().terms)
+    7
+    """
+    return _ACTIVE[-1] if _ACTIVE else Budget()
+
+
+class Budget:
+    """At most ``seconds`` of wall time from ``start()`` and ``terms`` terms per eliminant.
+
+    Either may be None (no limit). One budget covers everything run under it: the
+    deadline is set once, by the first ``start()`` or ``run()``.
+    """
+
+    def __init__(self, seconds=None, terms=None):
+        if seconds is not None and not seconds > 0:
+            raise UsageError("max_seconds", seconds, "a time budget must be a positive number of seconds")
+        if terms is not None and (int(terms) != terms or not terms > 0):
+            raise UsageError("max_terms", terms, "a terms budget must be a positive integer")
+        self.seconds, self.terms = seconds, terms
+        self.deadline = None
+        self.doing = "computing"
+        self._report = None  # in a child process: the pipe to the parent
+
+    def __repr__(self):
+        return f"Budget(seconds={self.seconds!r}, terms={self.terms!r})"
+
+    def start(self):
+        """Set the deadline (once) and return the budget."""
+        if self.seconds is not None and self.deadline is None:
+            self.deadline = time.monotonic() + self.seconds
+        return self
+
+    def note(self, doing):
+        """Say what is being computed now, for the message if the time runs out."""
+        self.doing = doing
+        if self._report is not None:
+            self._report.send(("doing", doing))
+
+    def check_terms(self, count, what):
+        """Raise BudgetExceeded if ``what`` (an intermediate eliminant) has more than ``terms`` terms."""
+        if self.terms is not None and count > self.terms:
+            raise BudgetExceeded(f"max_terms={self.terms}: {what} has {count} terms, while {self.doing}")
+
+    def run(self, function):
+        """``function()``, stopped at the deadline when there is a time budget."""
+        if self.seconds is None or self._report is not None:
+            return self._within(function)  # no deadline, or already inside the child that has one
+        self.start()
+        parent, child = multiprocessing.get_context("fork").Pipe(duplex=False)
+        process = multiprocessing.get_context("fork").Process(target=self._child, args=(function, child),
+                                                               daemon=True)
+        process.start()
+        child.close()
+        try:
+            return self._wait(parent, process)
+        finally:
+            if process.is_alive():
+                process.kill()
+            process.join()
+            parent.close()
+
+    def _within(self, function):
+        _ACTIVE.append(self)
+        try:
+            return function()
+        finally:
+            _ACTIVE.remove(self)
+
+    def _child(self, function, report):
+        self._report = report
+        try:
+            outcome = ("done", self._within(function))
+        except BaseException as err:  # noqa: BLE001 - every failure goes back to the parent
+            outcome = ("error", err)
+        try:
+            report.send(outcome)
+        except (pickle.PicklingError, TypeError, AttributeError) as err:
+            report.send(("error", ComputationError(f"the result could not be sent back: {err}")))
+
+    def _wait(self, pipe, process):
+        while True:
+            left = self.deadline - time.monotonic()
+            if left <= 0 or not pipe.poll(left):
+                if pipe.poll(0):  # a message arrived just at the deadline
+                    continue
+                elapsed = self.seconds - (self.deadline - time.monotonic())
+                raise BudgetExceeded(f"max_seconds={self.seconds:g}: stopped after {elapsed:.2f} s "
+                                     f"while {self.doing}")
+            try:
+                kind, value = pipe.recv()
+            except EOFError:
+                raise ComputationError(f"the process {self.doing} ended without an answer "
+                                       f"(exit code {process.exitcode})") from None
+            if kind == "doing":
+                self.doing = value
+            elif kind == "error":
+                raise value
+            else:
+                return value

@@ -1,0 +1,63 @@
+"""Write a scene back as TOML text that ``load_scene_text`` reads into an equal scene.
+
+Expressions are written as sympy prints them, which the scene's expression language
+reads back to the same expression (``+ - * / **``, ``sqrt``, exact rationals).
+
+>>> from algkin.scene import load_scene, load_scene_text
+>>> scene = load_scene("slider-crank")
+>>> print(next(line for line in dump_scene(scene).splitlines() if line.startswith("B =")))
+B = { slider = { through = "L", direction = ["1", "0"] }, distance = { to = "A", length = "l" }, branch = "ahead" }
+>>> load_scene_text(dump_scene(scene)) == scene
+True
+"""
+
+import json
+
+from .constructions import Crank, Dyad, Fixed, Frame, Slider
+
+__all__ = ["dump_scene"]
+
+
+def _string(text):
+    # A JSON string is a TOML basic string, except that TOML wants DEL escaped too.
+    return json.dumps(str(text), ensure_ascii=False).replace("\x7f", "\\u007f")
+
+
+def _exprs(values):
+    return "[" + ", ".join(_string(v) for v in values) + "]"
+
+
+def _point(construction, scene):
+    if isinstance(construction, Fixed):
+        return f"fixed = {_exprs((construction.x, construction.y))}"
+    if isinstance(construction, Crank):
+        unit = scene.inputs[construction.input].unit
+        phase = construction.quarter_turns * 90 if unit == "deg" else 0
+        return (f"crank = {_string(construction.center)}, length = {_string(construction.length)}, "
+                f"input = {_string(construction.input)}, phase = {phase}")
+    if isinstance(construction, Dyad):
+        return (f"dyad = {_exprs(construction.bases)}, lengths = {_exprs(construction.lengths)}, "
+                f"branch = {_string(construction.branch)}")
+    if isinstance(construction, Frame):
+        return f"frame = {_exprs(construction.bases)}, at = {_exprs(construction.at)}"
+    if isinstance(construction, Slider):
+        return (f"slider = {{ through = {_string(construction.through)}, "
+                f"direction = {_exprs(construction.direction)} }}, "
+                f"distance = {{ to = {_string(construction.to)}, length = {_string(construction.length)} }}, "
+                f"branch = {_string(construction.branch)}")
+    raise TypeError(f"no TOML form for a {type(construction).__name__} construction")
+
+
+def dump_scene(scene):
+    """TOML text of ``scene``; ``load_scene_text(dump_scene(scene)) == scene``."""
+    lines = [f"name = {_string(scene.name)}", f"description = {_string(scene.description)}", "",
+             "[parameters]"]
+    lines += [f"{name} = {_string(value)}" for name, value in scene.parameters.items()]
+    lines += ["", "[inputs]"]
+    lines += [f"{name} = {{ range = {_exprs((i.lo, i.hi))}, unit = {_string(i.unit)} }}"
+              for name, i in scene.inputs.items()]
+    lines += ["", "[points]"]
+    lines += [f"{name} = {{ {_point(c, scene)} }}" for name, c in scene.points.items()]
+    lines += ["", "[outputs]"]
+    lines += [f"{name} = {_string(output.text)}" for name, output in scene.outputs.items()]
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,30 @@
+"""hypothesis's entry point (group ``hypothesis``): ``from_type(Scene)`` draws random scenes.
+
+hypothesis runs ``setup`` when it is imported; the strategies module loads only when a
+``Scene`` is first drawn.
+
+>>> from hypothesis import given, settings, strategies as st
+>>> from algkin.scene import Scene
+>>> setup()  # hypothesis has run it already, where algkin is installed; again is harmless
+>>> @settings(max_examples=5, database=None)
+... @given(st.from_type(Scene))
+... def check(scene):
+...     assert isinstance(scene, Scene) and scene.inputs
+>>> check()"""
+
+__all__ = ["setup"]
+
+
+def setup():
+    """Register ``algkin.testing.strategies.scenes()`` for algkin's ``Scene`` type."""
+    from hypothesis import strategies as st
+
+    from ..scene import Scene
+
+    st.register_type_strategy(Scene, st.deferred(_scenes))
+
+
+def _scenes():
+    from .strategies import scenes
+
+    return scenes()

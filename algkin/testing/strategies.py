@@ -1,0 +1,218 @@
+"""hypothesis strategies for random *assemblable* scenes with exact rational dimensions.
+
+Every strategy draws dimensions as exact fractions, writes them into scene TOML and reads
+it with ``algkin.scene.load_scene_text``: what a test gets is exactly what a scene file
+with those numbers gives. Dimensions are parameters (``a``, ``g``, ``l``, ``m``, ... with
+exact defaults), so ``compile_scene(scene, params=["l"])`` keeps any of them symbolic;
+``with_symbolic`` draws such a choice too.
+
+Four-bars (crank ``a`` about ``O``, ground ``g`` from ``O`` to ``D`` in a random rational
+direction, coupler ``l``, rocker ``m``, coupler point ``P`` at ``(p, q)`` in the frame of
+``AB``) come by Grashof class, built so that the class holds by construction: with the
+sorted lengths ``s <= u <= v <= w``, ``s + w < u + v`` (Grashof, the role of the shortest
+link decides the class), ``s + w = u + v`` (change point) or ``s + w > u + v``
+(non-Grashof). Every scene assembles on at least ``MIN_ASSEMBLED_DEGREES`` of its input
+range, checked in floating point from the lengths alone.
+
+>>> from hypothesis import given, settings
+>>> @settings(max_examples=10, database=None)
+... @given(four_bars("crank-rocker"))
+... def check(scene):
+...     assert list(scene.parameters) == ["a", "g", "l", "m", "p", "q"]
+...     crank, *others = (scene.parameters[n] for n in "aglm")
+...     assert crank < min(others) and crank + max(others) < sum(others) - max(others)
+>>> check()
+"""
+
+import math
+from fractions import Fraction
+
+import numpy as np
+from hypothesis import assume, strategies as st
+
+from ..scene import load_scene_text
+
+__all__ = ["GRASHOF_KINDS", "lengths", "four_bar_lengths", "four_bars", "near_toggle_four_bars",
+           "slider_cranks", "scenes", "with_symbolic", "MIN_ASSEMBLED_DEGREES"]
+
+# Which link is the shortest decides a Grashof four-bar's class.
+_SHORTEST = {"crank-rocker": "crank", "double-crank": "ground", "double-rocker": "coupler",
+             "rocker-crank": "rocker"}
+GRASHOF_KINDS = tuple(_SHORTEST) + ("change-point", "non-grashof")
+_ROLES = ("crank", "ground", "coupler", "rocker")
+MIN_ASSEMBLED_DEGREES = 5
+_GRID = 720
+
+
+def lengths(min_value=Fraction(1, 2), max_value=Fraction(8), max_denominator=12):
+    """Positive exact lengths (``fractions.Fraction``) with small denominators."""
+    return st.fractions(min_value=min_value, max_value=max_value, max_denominator=max_denominator)
+
+
+def _fraction_in(lo, hi, steps=16):
+    """A fraction strictly inside (lo, hi), on a grid of ``steps`` parts."""
+    return st.integers(1, steps - 1).map(lambda k: lo + (hi - lo) * Fraction(k, steps))
+
+
+def four_bar_lengths(kind=None):
+    """``{crank, ground, coupler, rocker}`` (fractions) of a four-bar of Grashof class ``kind``.
+
+    ``kind`` is one of ``GRASHOF_KINDS`` (any when None).
+    """
+    if kind is not None and kind not in GRASHOF_KINDS:
+        raise ValueError(f"kind={kind!r}: not a four-bar class; valid: {', '.join(GRASHOF_KINDS)}")
+    return _four_bar_lengths(kind)
+
+
+@st.composite
+def _four_bar_lengths(draw, kind):
+    kind = draw(st.sampled_from(GRASHOF_KINDS)) if kind is None else kind
+    s, u, v = sorted(draw(st.lists(lengths(), min_size=3, max_size=3, unique=True)))
+    if kind == "change-point":
+        w = u + v - s
+    elif kind == "non-grashof":  # u + v - s < w < u + v + s: it still closes somewhere
+        w = draw(_fraction_in(u + v - s, u + v + s))
+    else:  # v <= w < u + v - s: Grashof, and w still the longest
+        w = draw(_fraction_in(v, u + v - s))
+    others = draw(st.permutations([u, v, w]))
+    if kind in _SHORTEST:
+        roles = [r for r in _ROLES if r != _SHORTEST[kind]]
+        return dict(zip(roles, others), **{_SHORTEST[kind]: s})
+    return dict(zip(_ROLES, draw(st.permutations([s] + others))))
+
+
+# A rational point of the unit circle, ((1 - t**2), 2 t) / (1 + t**2): the ground's direction.
+_directions = st.fractions(min_value=-3, max_value=3, max_denominator=4).map(
+    lambda t: ((1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)))
+_coordinates = st.fractions(min_value=-5, max_value=5, max_denominator=4)
+_frame = st.fractions(min_value=-1, max_value=1, max_denominator=8)
+
+
+def _q(value):
+    return f'"{Fraction(value)}"'
+
+
+def _assembled_degrees(center, crank, phase, pivot, span_lo, span_hi):
+    """Degrees of the input turn where |A pivot| lies strictly inside (span_lo, span_hi)."""
+    angles = np.radians(np.arange(_GRID) * 360 / _GRID + phase)
+    ax, ay = float(center[0]) + float(crank) * np.cos(angles), float(center[1]) + float(crank) * np.sin(angles)
+    span = np.hypot(float(pivot[0]) - ax, float(pivot[1]) - ay)
+    return np.count_nonzero((float(span_lo) < span) & (span < float(span_hi))) * 360 / _GRID
+
+
+def _four_bar_text(bars, origin, direction, phase, at, branch, name):
+    (ox, oy), (ux, uy) = origin, direction
+    return f"""name = "{name}"
+description = "random four-bar: crank {bars['crank']}, ground {bars['ground']}, coupler {bars['coupler']}, \
+rocker {bars['rocker']}"
+[parameters]
+a = {_q(bars['crank'])}
+g = {_q(bars['ground'])}
+l = {_q(bars['coupler'])}
+m = {_q(bars['rocker'])}
+p = {_q(at[0])}
+q = {_q(at[1])}
+[inputs]
+theta = {{ range = [0, 360], unit = "deg" }}
+[points]
+O = {{ fixed = [{_q(ox)}, {_q(oy)}] }}
+D = {{ fixed = ["{ox} + ({ux})*g", "{oy} + ({uy})*g"] }}
+A = {{ crank = "O", length = "a", input = "theta", phase = {phase} }}
+B = {{ dyad = ["A", "D"], lengths = ["l", "m"], branch = "{branch}" }}
+P = {{ frame = ["A", "B"], at = ["p", "q"] }}
+[outputs]
+B = "B"
+P = "P"
+"""
+
+
+def _assembles(bars, origin, direction, phase):
+    pivot = tuple(o + bars["ground"] * d for o, d in zip(origin, direction))
+    span = (abs(bars["coupler"] - bars["rocker"]), bars["coupler"] + bars["rocker"])
+    return _assembled_degrees(origin, bars["crank"], phase, pivot, *span) >= MIN_ASSEMBLED_DEGREES
+
+
+@st.composite
+def _four_bar(draw, bars, name):
+    origin = (draw(_coordinates), draw(_coordinates))
+    direction = draw(_directions)
+    phase = draw(st.sampled_from([0, 90, 180, 270, -90]))
+    assume(_assembles(bars, origin, direction, phase))
+    at = (draw(_frame), draw(_frame))
+    branch = draw(st.sampled_from(["left", "right"]))
+    return load_scene_text(_four_bar_text(bars, origin, direction, phase, at, branch, name), f"{name}.toml")
+
+
+def four_bars(kind=None):
+    """Four-bar scenes of Grashof class ``kind`` (one of ``GRASHOF_KINDS``; any when None)."""
+    return four_bar_lengths(kind).flatmap(lambda bars: _four_bar(bars, f"four-bar-{kind or 'any'}"))
+
+
+@st.composite
+def _near_toggle_lengths(draw, digits):
+    # A crank-rocker 10**-k short of the change point (s + w = u + v - 10**-k, the crank the
+    # shortest s): at some crank angle the coupler and rocker come within about 10**-k of
+    # folding into a line, a toggle the crank passes by without reaching.
+    s, u, v = sorted(draw(st.lists(lengths(), min_size=3, max_size=3, unique=True)))
+    w = u + v - s - Fraction(1, 10 ** draw(st.integers(*digits)))  # >= v: u - s >= 1/144
+    return dict(zip(("ground", "coupler", "rocker"), draw(st.permutations([u, v, w]))), crank=s)
+
+
+def near_toggle_four_bars(digits=(3, 8)):
+    """Grashof four-bars ``10**-k`` (k in ``digits``) away from the change point."""
+    return _near_toggle_lengths(digits).flatmap(lambda bars: _four_bar(bars, "near-toggle"))
+
+
+def _slider_text(r, rod, origin, line, direction, at, branch):
+    return f"""name = "slider-crank"
+description = "random slider-crank: crank {r}, rod {rod}"
+[parameters]
+r = {_q(r)}
+l = {_q(rod)}
+p = {_q(at[0])}
+q = {_q(at[1])}
+[inputs]
+theta = {{ range = [0, 360], unit = "deg" }}
+[points]
+O = {{ fixed = [{_q(origin[0])}, {_q(origin[1])}] }}
+L = {{ fixed = [{_q(line[0])}, {_q(line[1])}] }}
+A = {{ crank = "O", length = "r", input = "theta" }}
+B = {{ slider = {{ through = "L", direction = [{direction[0]}, {direction[1]}] }}, \
+distance = {{ to = "A", length = "l" }}, branch = "{branch}" }}
+P = {{ frame = ["A", "B"], at = ["p", "q"] }}
+[outputs]
+B = "B"
+P = "P"
+"""
+
+
+@st.composite
+def slider_cranks(draw):
+    """Slider-cranks: crank ``r`` about ``O``, rod ``l`` to a slider on a line through ``L``.
+
+    The line has a small integer direction; the rod is longer than the crank tip's largest
+    distance to the line (by at least 1/8), so the crank turns fully on either branch.
+    """
+    origin = (draw(_coordinates), draw(_coordinates))
+    line = (draw(_coordinates), draw(_coordinates))
+    direction = draw(st.tuples(st.integers(-3, 3), st.integers(-3, 3)).filter(lambda d: d != (0, 0)))
+    r = draw(lengths(max_value=Fraction(4)))
+    # distance from O to the line, in floats: only a lower bound for the rod is needed
+    cross = direction[0] * (origin[1] - line[1]) - direction[1] * (origin[0] - line[0])
+    reach = abs(cross) / math.hypot(*direction) + float(r)
+    rod = Fraction(math.ceil(reach * 8) + 1, 8) + draw(lengths(min_value=Fraction(0), max_value=Fraction(4)))
+    at = (draw(_frame), draw(_frame))
+    branch = draw(st.sampled_from(["ahead", "behind"]))
+    return load_scene_text(_slider_text(r, rod, origin, line, direction, at, branch), "slider-crank.toml")
+
+
+def scenes():
+    """Any of the above: four-bars of every class, near-toggle four-bars, slider-cranks."""
+    return st.one_of(four_bars(), near_toggle_four_bars(), slider_cranks())
+
+
+def with_symbolic(scene_strategy=None, max_symbols=2):
+    """``(scene, params)``: a scene and 1..``max_symbols`` of its parameters to keep symbolic."""
+    scene_strategy = scenes() if scene_strategy is None else scene_strategy
+    return scene_strategy.flatmap(lambda scene: st.tuples(st.just(scene), st.lists(
+        st.sampled_from(sorted(scene.parameters)), min_size=1, max_size=max_symbols, unique=True).map(tuple)))

@@ -1,0 +1,41 @@
+"""The implicit curve of the coupler point vanishes on its trajectory, drawn by hand geometry."""
+
+import mpmath
+import sympy
+from hypothesis import given, settings
+
+from algkin.pipeline import curve
+from algkin.testing import strategies
+
+from .hand import trajectory
+
+ANGLES = range(7, 360, 45)
+
+
+def relative_value(poly, point):
+    """|F(point)| over the sum of its terms' sizes: 0 up to the working precision on the curve."""
+    total = size = mpmath.mpf(0)
+    for (i, j), coef in poly.terms():
+        term = mpmath.mpf(int(coef.p)) / int(coef.q) * point[0] ** i * point[1] ** j
+        total, size = total + term, size + abs(term)
+    return abs(total) / size
+
+
+@settings(max_examples=150)
+@given(strategies.scenes())
+def test_curve_vanishes_on_the_trajectory(scene):
+    result = curve(scene, "P", samples=0)
+    x, y = (sympy.Symbol(v, real=True) for v in result.variables)
+    poly = sympy.Poly(result.elimination.polynomial, x, y)
+    # A four-bar's coupler curve is at most a sextic, a slider-crank's at most a quartic.
+    assert poly.total_degree() <= (6 if "D" in scene.points else 4)
+    labels = ("left", "right") if "D" in scene.points else ("ahead", "behind")
+    checked = 0
+    with mpmath.workdps(60):
+        for degrees in ANGLES:
+            for label in labels:
+                points = trajectory(scene, degrees, label)
+                if points is not None:
+                    assert relative_value(poly, points["P"]) < mpmath.mpf(10) ** -45, (degrees, label)
+                    checked += 1
+    assert checked or "D" in scene.points  # a slider-crank's crank turns fully

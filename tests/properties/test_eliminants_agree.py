@@ -1,0 +1,56 @@
+"""Resultant chains, Gröbner bases and the linear method give the same eliminant, up to a
+constant factor.
+
+All keep the factors the same witness configurations satisfy; sympy's resultant may be the
+negative of python-flint's, which a constant factor covers.
+"""
+
+import sympy
+from hypothesis import given, settings
+
+from algkin.branches import closed_forms
+from algkin.eliminate import eliminate
+from algkin.pipeline import witnesses
+from algkin.scene import compile_scene
+from algkin.testing import strategies
+
+RIVALS = {"flint": (("resultant", "flint"), ("groebner", "flint"), ("linear", "flint")),
+          "sympy": (("resultant", "flint"), ("resultant", "sympy"))}
+
+
+def eliminants(scene, params, method, backend):
+    """B_x and B_y each by eliminating the other from B's two equations, at shared witnesses."""
+    compiled = compile_scene(scene, ["B"], params)
+    groups = witnesses(compiled, closed_forms(compiled))
+    system = compiled.system
+    keep = list(system.input_variables) + list(system.parameters)
+    equations = [e for e in system.equations if {"B_x", "B_y"} & {str(v) for v in e.free_symbols}]
+    return {u: eliminate(equations, [o], [u] + keep, method, backend, witnesses=groups).polynomial
+            for u, o in (("B_x", "B_y"), ("B_y", "B_x"))}
+
+
+def assert_agree(scene, params, rivals):
+    first, *others = (eliminants(scene, params, *rival) for rival in rivals)
+    for unknown in first:
+        assert first[unknown].has(sympy.Symbol(unknown, real=True))
+        for other in others:
+            ratio = sympy.cancel(first[unknown] / other[unknown])
+            assert ratio.is_Rational and ratio != 0, (unknown, first[unknown], other[unknown])
+
+
+@settings(max_examples=120)
+@given(strategies.scenes())
+def test_resultant_groebner_and_linear_agree(scene):
+    assert_agree(scene, (), RIVALS["flint"])
+
+
+@settings(max_examples=40)
+@given(strategies.with_symbolic(max_symbols=1))
+def test_they_agree_with_a_symbolic_dimension(scene_and_params):
+    assert_agree(*scene_and_params, RIVALS["flint"])
+
+
+@settings(max_examples=40)
+@given(strategies.scenes())
+def test_flint_and_sympy_resultants_agree(scene):
+    assert_agree(scene, (), RIVALS["sympy"])

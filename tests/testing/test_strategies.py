@@ -1,0 +1,99 @@
+"""The strategies draw what they promise: the Grashof class by the rule, scenes that assemble."""
+
+import importlib.metadata
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import sympy
+from hypothesis import given, settings, strategies as st
+
+from algkin.branches import check_assembly, closed_forms
+from algkin.scene import compile_scene
+from algkin.testing import strategies
+from algkin.toggles import grashof
+
+ROOT = Path(__file__).resolve().parents[2]
+# algkin.toggles names the classes in words; the strategies' kinds are identifiers.
+WORDS = {"crank-rocker": "crank-rocker", "double-crank": "double crank", "double-rocker": "double rocker",
+         "rocker-crank": "rocker-crank", "change-point": "change point",
+         "non-grashof": "non-grashof (triple rocker)"}
+
+
+def by_the_rule(bars):
+    """Grashof's rule, from the textbook: shortest + longest against the other two."""
+    s, u, v, w = sorted(bars.values())
+    if s + w > u + v:
+        return "non-grashof"
+    if s + w == u + v:
+        return "change-point"
+    shortest = min(bars, key=bars.get)
+    return {"crank": "crank-rocker", "ground": "double-crank", "coupler": "double-rocker",
+            "rocker": "rocker-crank"}[shortest]
+
+
+@settings(max_examples=300)
+@given(st.data())
+def test_lengths_are_of_the_asked_class(data):
+    kind = data.draw(st.sampled_from(strategies.GRASHOF_KINDS))
+    bars = data.draw(strategies.four_bar_lengths(kind))
+    assert by_the_rule(bars) == kind
+    s, u, v, w = sorted(bars.values())
+    assert w < s + u + v and s > 0  # closes: some configuration exists
+
+
+@settings(max_examples=100)
+@given(st.data())
+def test_scenes_are_of_the_asked_class_and_assemble(data):
+    kind = data.draw(st.sampled_from(strategies.GRASHOF_KINDS))
+    compiled = compile_scene(data.draw(strategies.four_bars(kind)), ["B"])
+    assert grashof(compiled)["class"] == WORDS[kind]
+    check_assembly(compiled, closed_forms(compiled))  # raises SceneError if it never assembles
+
+
+@settings(max_examples=60)
+@given(strategies.near_toggle_four_bars(digits=(3, 8)))
+def test_near_toggle_four_bars_are_crank_rockers_just_short_of_the_change_point(scene):
+    bars = [scene.parameters[n] for n in "aglm"]
+    margin = sorted(bars)[1] + sorted(bars)[2] - min(bars) - max(bars)
+    assert min(bars) == bars[0] and margin in {sympy.Rational(1, 10**k) for k in range(3, 9)}
+
+
+def run(code, **env):
+    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          env=dict(os.environ, PYTHONPATH=str(ROOT), **env))
+
+
+def test_import_algkin_does_not_import_hypothesis():
+    result = run("import sys, algkin; algkin.derive; print('hypothesis' in sys.modules)")
+    assert result.returncode == 0 and result.stdout.strip() == "False", result.stderr
+
+
+def test_without_hypothesis_the_message_says_what_to_install():
+    # None in sys.modules makes the import fail as if hypothesis were not installed.
+    result = run("import sys; sys.modules['hypothesis'] = None; import algkin.testing")
+    assert result.returncode != 0
+    assert "ModuleNotFoundError: algkin.testing needs hypothesis" in result.stderr
+    assert "pip install 'algkin[test]'" in result.stderr
+
+
+def test_hypothesis_knows_the_scene_type_through_the_entry_point():
+    hooks = [e.value for e in importlib.metadata.entry_points(group="hypothesis") if e.name == "algkin"]
+    assert hooks == ["algkin.testing.hook:setup"]
+    # A fresh process: nothing but hypothesis's own import registers the strategy.
+    result = run("from hypothesis import given, settings, strategies as st\n"
+                 "from algkin.scene import Scene\n"
+                 "seen = []\n"
+                 "@settings(max_examples=3, database=None)\n"
+                 "@given(st.from_type(Scene))\n"
+                 "def draw(scene): seen.append(sorted(scene.points))\n"
+                 "draw(); print(len(seen), all('A' in p and 'B' in p for p in seen))")
+    assert result.returncode == 0 and result.stdout.split() == ["3", "True"], result.stderr
+
+
+@pytest.mark.parametrize("kind", ["crank rocker", "grashof"])
+def test_unknown_kind_is_refused(kind):
+    with pytest.raises(ValueError, match="valid: crank-rocker"):
+        strategies.four_bars(kind)
