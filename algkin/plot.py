@@ -141,12 +141,14 @@ def accuracy_figure(result):
 
 def bench_figure(rows):
     """Seconds per problem (log scale), one bar per method/backend or peer; over budget not drawn."""
+    from matplotlib import colormaps
+
     figure = _figure()
-    figure.set_size_inches(9, 4.8)
+    figure.set_size_inches(11, 5)
     axes = figure.add_subplot()
     problems = list(dict.fromkeys(r["problem"] for r in rows))
     series = list(dict.fromkeys((r["method"], r["backend"]) for r in rows))
-    width = 0.8 / len(series)
+    width, colors = 0.8 / len(series), colormaps["tab20"]
     for k, (method, backend) in enumerate(series):
         xs, ys = [], []
         for i, problem in enumerate(problems):
@@ -154,12 +156,13 @@ def bench_figure(rows):
             if found and found[0]:
                 xs.append(i - 0.4 + (k + 0.5) * width)
                 ys.append(found[0])
-        label = method if backend == "peer" else f"{method} / {backend}"
-        axes.bar(xs, ys, width=width, label=label)
+        peer = backend == "peer"
+        axes.bar(xs, ys, width=width, color=colors(k % 20), hatch="//" if peer else None,
+                 label=method if peer else f"{method} / {backend}")
     axes.set_yscale("log")
     axes.set_xticks(range(len(problems)), problems, rotation=20, ha="right", fontsize="small")
     axes.set_ylabel("seconds (median of repeats)")
-    axes.set_title("Elimination methods compared (missing bar: over budget, failed or skipped)")
+    axes.set_title("Elimination methods compared (no bar: over budget, failed or skipped)")
     axes.grid(True, axis="y", which="both", linewidth=0.3)
-    axes.legend(fontsize="x-small", ncols=2)
+    axes.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.01, 1))
     return figure
