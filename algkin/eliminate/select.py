@@ -48,7 +48,8 @@ def select_factors(backend, factors, witness_groups):
     groups = [g for g in witness_groups if g]
     if not groups:
         return list(factors), []
-    bits = MARGIN_BITS + max(_bits(v) for group in groups for point in group for v in point.values())
+    # every witness is computed at one precision: the first one's tells it
+    bits = MARGIN_BITS + max(_bits(v) for v in groups[0][0].values())
     with flint.ctx.workprec(bits):
         return _select(backend, factors, groups)
 
