@@ -5,12 +5,14 @@ A *witness* is a configuration of the mechanism (every variable's value as a pyt
 ball contains zero at every witness of some group, and dropped when that fails: at some
 witness of every group its ball excludes zero, which proves it non-zero there.
 
-Balls are evaluated at the witnesses' own precision (plus a margin), not python-flint's
-default of 53 bits: at 53 bits a degree-30 factor with 160-bit coefficients gives a ball
-of width 1e38 around every value, and would be kept for "containing" zero.
+Each factor is evaluated at the witnesses' own precision plus its coefficients' bits and
+its degree times the witnesses' magnitude, not at python-flint's default of 53 bits: at 53
+bits a degree-30 factor with 160-bit coefficients gives a ball of width 1e38 around every
+value, and would be kept for "containing" zero.
 """
 
 import functools
+import math
 
 import flint
 
@@ -48,10 +50,13 @@ def select_factors(backend, factors, witness_groups):
     groups = [g for g in witness_groups if g]
     if not groups:
         return list(factors), []
-    # every witness is computed at one precision: the first one's tells it
-    bits = MARGIN_BITS + max(_bits(v) for v in groups[0][0].values())
-    with flint.ctx.workprec(bits):
-        return _select(backend, factors, groups)
+    values = [v for group in groups for point in group for v in point.values()]
+    witness_bits = max(_bits(v) for v in values)
+    magnitude_bits = max(1, math.ceil(math.log2(1 + max(float(abs(v).mid()) for v in values))))
+    # enough for the factor's own coefficients and powers on top of the witnesses' precision
+    bits = [MARGIN_BITS + witness_bits + backend.coefficient_bits(f) + backend.total_degree(f) * magnitude_bits
+            for f in factors]
+    return _select(backend, factors, groups, bits)
 
 
 def _bits(ball):
@@ -59,9 +64,14 @@ def _bits(ball):
     return int(ball.mid().man_exp()[0]).bit_length() if ball.mid() != 0 else 0
 
 
-def _select(backend, factors, groups):
+def _select(backend, factors, groups, bits):
     tests = [backend.vanishes(f) for f in factors]
-    vanishes = functools.cache(lambda i, g, w: tests[i](groups[g][w]))
+
+    @functools.cache
+    def vanishes(i, g, w):
+        with flint.ctx.workprec(bits[i]):
+            return tests[i](groups[g][w])
+
     kept, dropped = [], []
     for i, factor in enumerate(factors):
         if any(all(vanishes(i, g, w) for w in range(len(group))) for g, group in enumerate(groups)):

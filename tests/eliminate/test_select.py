@@ -1,0 +1,37 @@
+"""Factor selection at witnesses: decided at a precision the factor needs, not at 53 bits."""
+
+import flint
+
+from algkin.eliminate.backends import BACKENDS
+from algkin.eliminate.select import select_factors
+from algkin.system import symbol
+
+
+def _engine(name):
+    return BACKENDS[name](("x", "y"))
+
+
+def test_a_factor_with_huge_coefficients_is_dropped_where_it_is_one():
+    # At x = 3, y = 5 (exact witnesses): 2**200*(x - 3) + 1 is exactly 1. At python-flint's
+    # default 53 bits its ball would be about 2**149 wide, "containing" zero.
+    x = symbol("x")
+    for name in BACKENDS:
+        engine = _engine(name)
+        curve, spurious = engine.from_sympy(x - 3), engine.from_sympy(2**200 * (x - 3) + 1)
+        witness = {"x": flint.arb(3), "y": flint.arb(5)}
+        kept, dropped = select_factors(engine, [curve, spurious], [[witness]])
+        assert [engine.to_sympy(f) for f in kept] == [x - 3]
+        assert [engine.to_sympy(f) for f in dropped] == [2**200 * (x - 3) + 1]
+
+
+def test_a_high_degree_factor_vanishing_at_an_irrational_witness_is_kept():
+    # x = sqrt(2) at 256 bits: (x**2 - 2)**5 * 3**40 vanishes; x**10 - 31 does not (sqrt(2)**10 = 32).
+    x = symbol("x")
+    with flint.ctx.workprec(256):
+        witness = {"x": flint.arb(2).sqrt(), "y": flint.arb(1)}
+    for name in BACKENDS:
+        engine = _engine(name)
+        vanishing, other = engine.from_sympy(3**40 * (x**2 - 2) ** 5), engine.from_sympy(x**10 - 31)
+        kept, dropped = select_factors(engine, [vanishing, other], [[witness]])
+        assert len(kept) == 1 and len(dropped) == 1
+        assert engine.to_sympy(dropped[0]) == x**10 - 31
