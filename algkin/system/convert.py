@@ -15,6 +15,7 @@ import math
 import flint
 import sympy
 
+from ..evaluate import NumberKind, evaluate
 from .core import symbol
 
 __all__ = ["flint_context", "to_flint", "to_sympy", "to_flint_integer", "fmpq_to_rational", "real_roots"]
@@ -28,40 +29,18 @@ def flint_context(names, ordering="lex"):
 def to_flint(expr, ctx):
     """A sympy polynomial (expression or Poly) as an ``fmpq_mpoly`` in ``ctx``.
 
-    The expression tree is walked with flint's own arithmetic: building a sympy ``Poly``
-    first costs milliseconds on a dozen generators, more than most eliminations.
+    The expression tree is evaluated with flint's own arithmetic (``evaluate``): building a
+    sympy ``Poly`` first costs milliseconds on a dozen generators, more than most
+    eliminations.
     """
-    expr = sympy.sympify(expr.as_expr() if isinstance(expr, sympy.Poly) else expr)
-    gens = dict(zip((str(n) for n in ctx.names()), ctx.gens()))
     zero = ctx.from_dict({})
-    memo = {}
+    kind = NumberKind("flint polynomial", lambda p, q: zero + flint.fmpq(p, q), _not_polynomial)
+    expr = expr.as_expr() if isinstance(expr, sympy.Poly) else expr
+    return evaluate(expr, dict(zip((str(n) for n in ctx.names()), ctx.gens())), kind)
 
-    def walk(node):
-        if node in memo:
-            return memo[node]
-        if node.is_Symbol:
-            value = gens[node.name]
-        elif node.is_Rational:
-            value = zero + flint.fmpq(int(node.p), int(node.q))
-        elif node.is_Add:
-            value = zero
-            for arg in node.args:
-                value = value + walk(arg)
-        elif node.is_Mul:
-            value = zero + 1
-            for arg in node.args:
-                value = value * walk(arg)
-        elif node.is_Pow and node.exp.is_Integer and node.exp >= 0:
-            value = walk(node.base) ** int(node.exp)
-        else:
-            raise ValueError(f"not a polynomial over QQ in {', '.join(gens)}: {node}")
-        memo[node] = value
-        return value
 
-    try:
-        return walk(expr)
-    except KeyError as missing:
-        raise ValueError(f"{missing.args[0]} is not one of the variables {', '.join(gens)}") from None
+def _not_polynomial(value):
+    raise TypeError(f"a square root is not a polynomial: sqrt({value})")
 
 
 def to_flint_integer(poly, ctx):
