@@ -76,18 +76,18 @@ def _problem_rows(problem, methods, backends, budget, peers, progress):
         results[(method, backend)] = {"problem": problem.name, "method": method, "backend": backend,
                                       "seconds": seconds, **(summary or _empty()), "note": note}
     _say(progress, f"{problem.name}: algkin default path, end to end")
-    seconds, summary, note = measure(problem.end_to_end, _end_summary, budget)
+    seconds, summary, note = measure(problem.end_to_end, lambda result: _end_summary(result, task.keep[0]), budget)
     rows = list(results.values())
     rows.append({"problem": problem.name, "method": "default path, end to end", "backend": "flint",
                  "seconds": seconds, **(summary or _empty()), "note": note})
     if peers:
         rows += _peer_rows(problem, budget, progress)
     reference = _reference(rows)
+    reference = None if reference is None else rebuild(reference, keep)
     side = [from_sympy(e, keep) for e in side]
     for row in rows:
         form = row.pop("form", None)
-        row["agrees"] = None if reference is None or form is None else \
-            agreement(rebuild(form, keep), rebuild(reference, keep), side)
+        row["agrees"] = None if reference is None or form is None else agreement(rebuild(form, keep), reference, side)
     default = results[DEFAULT]["seconds"]
     for row in rows:
         row["ratio"] = row["seconds"] / default if row["seconds"] and default else None
@@ -107,10 +107,9 @@ def _summary(elimination):
             "form": portable(elimination.engine, elimination.raw)}
 
 
-def _end_summary(result):
-    elimination = getattr(result, "elimination", None)
-    if elimination is None and hasattr(result, "eliminations"):
-        elimination = next(e for u, e in result.eliminations.items() if u.endswith("_y"))
+def _end_summary(result, unknown):
+    """The figures of the command's eliminant for ``unknown`` (a curve's, or a derivation's)."""
+    elimination = getattr(result, "elimination", None) or getattr(result, "eliminations", {}).get(unknown)
     return _summary(elimination) if elimination is not None else _empty()
 
 
