@@ -29,6 +29,7 @@ test: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/algkin bench --budget 60 --out bench-results
 	$(BIN)/python benchmarks/bench_evaluation.py
+	$(BIN)/python benchmarks/bench_ideas.py
 
 # Optional peer engines for `algkin bench` only; algkin itself needs none of them.
 peers: $(STAMP)
