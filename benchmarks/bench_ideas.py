@@ -35,10 +35,11 @@ def _squarefree_only(backend, poly, witnesses, dropped):
     return product
 
 
-def _coordinates_always(backend, polys, eliminate, witnesses, dropped, log, parameters=(), budget=None):
+def _coordinates_always(backend, polys, eliminate, witnesses, dropped, log, parameters=(), budget=None,
+                        multipliers=None):
     # every kept variable counts as a dimension: multipliers may hold coordinates at every step
     kept = tuple(n for n in backend.names if n not in eliminate)
-    return linear_elimination(backend, polys, eliminate, witnesses, dropped, log, kept, budget)
+    return linear_elimination(backend, polys, eliminate, witnesses, dropped, log, kept, budget, multipliers)
 
 
 IDEAS = {  # the idea -> how to run without it

@@ -25,6 +25,7 @@ from .backends import BACKENDS
 from .budget import Budget, current
 from .linear import linear_elimination
 from .methods import groebner_basis, prepare, resultant_chain
+from .factor import factor_with
 from .select import select_factors
 
 __all__ = ["eliminate", "Elimination", "Budget", "current", "METHODS", "DEFAULT_METHOD", "BACKENDS",
@@ -121,9 +122,10 @@ def eliminate(equations, eliminate, keep, method=DEFAULT_METHOD, backend="flint"
 def _eliminate(engine, method, run, equations, eliminate, keep, witnesses, parameters, budget):
     start = time.perf_counter()
     polys = [engine.from_sympy(eq) for eq in equations]
-    log, dropped = [], []
+    log, dropped, multipliers = [], [], []
     polys = _consistent(engine, prepare(engine, polys, eliminate, log))
-    left = _consistent(engine, run(engine, polys, eliminate, witnesses, dropped, log, parameters, budget))
+    left = _consistent(engine, run(engine, polys, eliminate, witnesses, dropped, log, parameters, budget,
+                                   multipliers))
     if not left:
         raise ComputationError(f"nothing left after eliminating {', '.join(eliminate)}")
     eliminant = left[0]
@@ -131,7 +133,7 @@ def _eliminate(engine, method, run, equations, eliminate, keep, witnesses, param
         eliminant = engine.gcd(eliminant, poly)
     if not engine.variables(eliminant):
         eliminant = min(left, key=lambda p: (engine.total_degree(p), engine.nterms(p)))
-    kept, lost = select_factors(engine, engine.factors(eliminant), witnesses)
+    kept, lost = select_factors(engine, factor_with(engine, eliminant, multipliers), witnesses)
     dropped.extend(lost)
     product = kept[0]
     for factor in kept[1:]:

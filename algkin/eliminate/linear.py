@@ -21,39 +21,52 @@ px*(px**2 - 2*px + py**2)*(px**4 - 4*px**3 + 2*px**2*py**2 + 5*px**2 - 4*px*py**
 """
 
 from .budget import current
-from .methods import resultant_chain
+from .methods import cheapest, resultant_step
 
 __all__ = ["linear_elimination"]
 
 
-def linear_elimination(backend, polys, eliminate, witnesses, dropped, log, parameters=(), budget=None):
+def linear_elimination(backend, polys, eliminate, witnesses, dropped, log, parameters=(), budget=None,
+                       multipliers=None):
     """Substitute linear unknowns and reduce circles to radical axes; resultants for the rest.
 
     A multiplier may hold numbers and ``parameters`` (dimensions); it may hold the kept
     coordinates only for the last two unknowns (the closing Cramer step): earlier, it would
     raise the degree of everything still to be eliminated, and resultants do better
     (``benchmarks/bench_ideas.py``: the Stephenson III curve is 5.9x slower otherwise).
+    Every multiplier holding a variable is appended to ``multipliers``: the eliminant's
+    extraneous factors can only be theirs.
     """
+    multipliers = [] if multipliers is None else multipliers
     remaining = list(eliminate)
-    while remaining:
+    while True:
         present = set().union(*(backend.variables(p) for p in polys))
         remaining = [v for v in remaining if v in present]  # substituted away already (prepare)
+        if not remaining:
+            return polys
         allowed = set(parameters) if len(remaining) > 2 else set(backend.names) - set(remaining)
         polys = [p for p in polys if not backend.is_zero(p)]
         found = _linear_unknown(backend, polys, remaining, allowed)
         if found is not None:
             polys = _substitute(backend, polys, *found)
+            if backend.variables(found[2]):
+                multipliers.append(found[2])
             remaining.remove(found[1])
             log.append(("substituted", found[1]))
             (budget or current()).check_terms(max(map(backend.nterms, polys), default=0),
                                               f"an equation after substituting {found[1]}")
             continue
         reduced = _radical_axes(backend, polys, remaining, allowed)
-        if reduced is None or _linear_unknown(backend, reduced[0], remaining, allowed) is None:
-            break  # an axis no unknown can be substituted from only reshuffles the resultants
-        polys, gained = reduced
-        log.append(("radical-axis", gained))
-    return resultant_chain(backend, polys, remaining, witnesses, dropped, log, budget=budget) if remaining else polys
+        if reduced is not None and _linear_unknown(backend, reduced[0], remaining, allowed) is not None:
+            polys, gained, used = reduced
+            multipliers.extend(used)
+            log.append(("radical-axis", gained))
+            continue
+        # an axis no unknown can be substituted from only reshuffles the resultants: one
+        # resultant, after which fewer unknowns remain and a linear step may apply again
+        var = cheapest(backend, polys, remaining)
+        polys = resultant_step(backend, polys, var, witnesses, dropped, log, budget)
+        remaining.remove(var)
 
 
 def _linear_unknown(backend, polys, remaining, allowed):
@@ -106,8 +119,8 @@ def _strip(backend, poly, coefficient):
 
 
 def _radical_axes(backend, polys, remaining, allowed):
-    """Fraction-free row reduction on the quadratic monomials in the unknowns: the equations and
-    how many became linear, or None if none did."""
+    """Fraction-free row reduction on the quadratic monomials in the unknowns: the equations, how
+    many became linear and the multipliers of the rows, or None if none became linear."""
     rows, others = [], []
     for poly in polys:
         parts = backend.split(poly, remaining)
@@ -116,7 +129,7 @@ def _radical_axes(backend, polys, remaining, allowed):
     if len(rows) < 2:
         return None
     columns = sorted({e for parts in rows for e in parts if sum(e) == 2}, reverse=True)
-    pivots = set()
+    pivots, used = set(), []
     for column in columns:
         candidates = [i for i, parts in enumerate(rows) if i not in pivots and column in parts
                       and backend.variables(parts[column]) <= allowed]
@@ -126,16 +139,19 @@ def _radical_axes(backend, polys, remaining, allowed):
         pivots.add(p)
         for i in candidates:
             if i != p:
-                rows[i] = _combine(backend, rows[p], rows[i], column)
+                rows[i], multiplier = _combine(backend, rows[p], rows[i], column)
+                if backend.variables(multiplier):
+                    used.append(multiplier)
     linear = [i for i, parts in enumerate(rows) if i not in pivots and parts
               and max(sum(e) for e in parts) == 1]
     if not linear:
         return None
-    return [backend.join(parts, remaining) for parts in others + rows if parts], len(linear)
+    return [backend.join(parts, remaining) for parts in others + rows if parts], len(linear), used
 
 
 def _combine(backend, pivot, row, column):
-    """``a*row - b*pivot`` with the ``column`` coefficient cancelled (``a``, ``b`` over their gcd)."""
+    """``a*row - b*pivot`` with the ``column`` coefficient cancelled (``a``, ``b`` over their gcd),
+    and ``a``, the row's multiplier."""
     a, b = pivot[column], row[column]
     common = backend.gcd(a, b)
     a, b = backend.divide(a, common), backend.divide(b, common)
@@ -144,4 +160,4 @@ def _combine(backend, pivot, row, column):
         value = a * row.get(exponent, backend.zero()) - b * pivot.get(exponent, backend.zero())
         if not backend.is_zero(value):
             out[exponent] = value
-    return out
+    return out, a

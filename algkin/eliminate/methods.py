@@ -9,7 +9,7 @@ from ..errors import ComputationError
 from .budget import current
 from .select import select_factors
 
-__all__ = ["prepare", "resultant_chain", "groebner_basis"]
+__all__ = ["prepare", "cheapest", "resultant_step", "resultant_chain", "groebner_basis"]
 
 
 def _linear_definition(backend, poly, var):
@@ -48,7 +48,7 @@ def prepare(backend, polys, eliminate, log):
 
 
 def _squarefree_kept(backend, poly, witnesses, dropped):
-    kept, lost = select_factors(backend, backend.factors(poly), witnesses)
+    kept, lost = select_factors(backend, backend.factors(poly), witnesses, check=False)
     dropped.extend(lost)
     if not kept:
         raise ComputationError("every factor of an intermediate resultant was dropped")
@@ -58,38 +58,48 @@ def _squarefree_kept(backend, poly, witnesses, dropped):
     return product
 
 
-def resultant_chain(backend, polys, eliminate, witnesses, dropped, log, parameters=(), budget=None):
-    """Eliminate one variable at a time by Sylvester resultants against a pivot."""
-    remaining = [v for v in eliminate]
-    while remaining:
-        def cost(var):
-            holders = [p for p in polys if var in backend.variables(p)]
-            return (len(holders), min((backend.degree(p, var) for p in holders), default=0))
-
-        var = min(remaining, key=cost)
-        remaining.remove(var)
+def cheapest(backend, polys, remaining):
+    """The unknown held by the fewest equations, then of the least degree in them."""
+    def cost(var):
         holders = [p for p in polys if var in backend.variables(p)]
-        others = [p for p in polys if var not in backend.variables(p)]
-        if len(holders) <= 1:
-            polys = others
+        return (len(holders), min((backend.degree(p, var) for p in holders), default=0))
+
+    return min(remaining, key=cost)
+
+
+def resultant_step(backend, polys, var, witnesses, dropped, log, budget=None):
+    """``polys`` with ``var`` eliminated: resultants of its holders against the one of least
+    degree in it, each factored and cut to the factors the witnesses satisfy."""
+    holders = [p for p in polys if var in backend.variables(p)]
+    others = [p for p in polys if var not in backend.variables(p)]
+    if len(holders) <= 1:
+        return others
+    pivot = min(holders, key=lambda p: (backend.degree(p, var), backend.nterms(p)))
+    for poly in holders:
+        if poly is pivot:
             continue
-        pivot = min(holders, key=lambda p: (backend.degree(p, var), backend.nterms(p)))
-        for poly in holders:
-            if poly is pivot:
-                continue
-            result = backend.resultant(pivot, poly, var)
-            if backend.is_zero(result):
-                raise ComputationError(f"resultant in {var} vanished: the equations share a factor")
-            if not backend.variables(result):
-                raise ComputationError(f"resultant in {var} is a non-zero constant: the system is inconsistent")
-            (budget or current()).check_terms(backend.nterms(result), f"the resultant in {var}")
-            others.append(_squarefree_kept(backend, result, witnesses, dropped))
-        log.append(("resultant", var))
-        polys = others
+        result = backend.resultant(pivot, poly, var)
+        if backend.is_zero(result):
+            raise ComputationError(f"resultant in {var} vanished: the equations share a factor")
+        if not backend.variables(result):
+            raise ComputationError(f"resultant in {var} is a non-zero constant: the system is inconsistent")
+        (budget or current()).check_terms(backend.nterms(result), f"the resultant in {var}")
+        others.append(_squarefree_kept(backend, result, witnesses, dropped))
+    log.append(("resultant", var))
+    return others
+
+
+def resultant_chain(backend, polys, eliminate, witnesses, dropped, log, parameters=(), budget=None, multipliers=None):
+    """Eliminate one variable at a time by Sylvester resultants against a pivot."""
+    remaining = list(eliminate)
+    while remaining:
+        var = cheapest(backend, polys, remaining)
+        remaining.remove(var)
+        polys = resultant_step(backend, polys, var, witnesses, dropped, log, budget)
     return polys
 
 
-def groebner_basis(backend, polys, eliminate, witnesses, dropped, log, parameters=(), budget=None):
+def groebner_basis(backend, polys, eliminate, witnesses, dropped, log, parameters=(), budget=None, multipliers=None):
     """The elimination ideal's generators from a lex basis, eliminated variables first."""
     keep = [n for n in backend.names if n not in eliminate]
     order = [n for n in eliminate] + keep
