@@ -15,7 +15,7 @@ import flint
 import sympy
 
 from .branches import certify_label, check_assembly, closed_forms
-from .eliminate import DEFAULT_METHOD, current as current_budget
+from .eliminate import DEFAULT_METHOD, Witness, current as current_budget
 from .errors import UsageError
 from .evaluate import ARB, evaluate
 from .scene import Scene, compile_scene, load_scene
@@ -137,17 +137,14 @@ def witnesses(compiled, branches):
 
 
 def _witness(compiled, branch, spread, k):
-    values = {}
+    exact = {}  # the inputs' cos and sin and the dimensions are rational: kept exactly too
     for name, (c, s) in compiled.system.inputs.items():
         t = spread[name][k]
-        values[c] = ARB.number((1 - t * t).numerator * (1 + t * t).denominator,
-                               (1 - t * t).denominator * (1 + t * t).numerator)
-        values[s] = ARB.number((2 * t).numerator * (1 + t * t).denominator,
-                               (2 * t).denominator * (1 + t * t).numerator)
+        exact[c], exact[s] = (1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)
     for n in compiled.system.parameters:
         default = Fraction(str(compiled.parameter_values[n]))
-        shifted = default * (1 + Fraction(k + 1, 211)) if default else Fraction(k + 1, 211)
-        values[n] = ARB.number(shifted.numerator, shifted.denominator)
+        exact[n] = default * (1 + Fraction(k + 1, 211)) if default else Fraction(k + 1, 211)
+    values = {n: ARB.number(v.numerator, v.denominator) for n, v in exact.items()}
     for disc in branch.discriminants.values():
         if not evaluate(disc, values, ARB) > 0:
             return None
@@ -155,7 +152,7 @@ def _witness(compiled, branch, spread, k):
         values[unknown] = evaluate(expr, values, ARB)
         if not values[unknown].is_finite():
             return None
-    return values
+    return Witness(values, {n: flint.fmpq(v.numerator, v.denominator) for n, v in exact.items()})
 
 
 def _verify(compiled, branches, samples, seed, polynomials):

@@ -26,9 +26,9 @@ from .budget import Budget, current
 from .linear import linear_elimination
 from .methods import groebner_basis, prepare, resultant_chain
 from .factor import factor_with
-from .select import select_factors
+from .select import Witness, select_factors
 
-__all__ = ["eliminate", "Elimination", "Budget", "current", "METHODS", "DEFAULT_METHOD", "BACKENDS",
+__all__ = ["eliminate", "Elimination", "Witness", "Budget", "current", "METHODS", "DEFAULT_METHOD", "BACKENDS",
            "method_names", "backend_names"]
 
 

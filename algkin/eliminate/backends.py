@@ -64,6 +64,13 @@ class FlintBackend:
     def gcd(self, f, g):
         return f.gcd(g)
 
+    def derivative(self, poly, var):
+        return poly.derivative(var)
+
+    def specialize(self, poly, values):
+        """``poly`` with the variables of ``values`` (name -> fmpq) replaced by them."""
+        return poly.subs(values)
+
     def scale(self, poly, numerator, denominator):
         return poly * flint.fmpq(numerator, denominator)
 
@@ -81,6 +88,9 @@ class FlintBackend:
 
     def zero(self):
         return self.ctx.from_dict({})
+
+    def one(self):
+        return self.ctx.from_dict({(0,) * len(self.names): 1})
 
     def divide(self, f, g):
         """``f / g``, exact."""
@@ -182,6 +192,14 @@ class SympyBackend:
     def gcd(self, f, g):
         return f.gcd(g)
 
+    def derivative(self, poly, var):
+        return poly.diff(self.gens[self.names.index(var)])
+
+    def specialize(self, poly, values):
+        replaced = poly.as_expr().xreplace({self.gens[self.names.index(n)]: sympy.Rational(int(v.p), int(v.q))
+                                            for n, v in values.items()})
+        return self.from_sympy(replaced)
+
     def scale(self, poly, numerator, denominator):
         return poly * sympy.Rational(numerator, denominator)
 
@@ -193,6 +211,9 @@ class SympyBackend:
 
     def zero(self):
         return sympy.Poly(0, *self.gens, domain=sympy.QQ)
+
+    def one(self):
+        return sympy.Poly(1, *self.gens, domain=sympy.QQ)
 
     def divide(self, f, g):
         return f.exquo(g)

@@ -30,12 +30,16 @@ SPECIALIZATIONS = ((3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47),
 
 def factor_with(backend, poly, divisors):
     """Irreducible factors of ``poly`` (each once), the factors of ``divisors`` that divide it first."""
-    found = []
+    candidates = []
     for divisor in divisors:
         for factor in backend.factors(divisor):
-            quotient = backend.quotient(poly, factor)
-            if quotient is None or any(backend.quotient(factor, known) is not None for known in found):
-                continue
+            factor = backend.primitive(factor)
+            if factor not in candidates:
+                candidates.append(factor)
+    found = []
+    for factor in candidates:
+        quotient = backend.quotient(poly, factor)
+        if quotient is not None:
             while quotient is not None:
                 poly, quotient = quotient, backend.quotient(quotient, factor)
             found.append(factor)

@@ -48,7 +48,8 @@ def linear_elimination(backend, polys, eliminate, witnesses, dropped, log, param
         polys = [p for p in polys if not backend.is_zero(p)]
         found = _linear_unknown(backend, polys, remaining, allowed)
         if found is not None:
-            polys = _substitute(backend, polys, *found)
+            # after the last unknown, the multiplier's factors are left for factoring to divide out
+            polys = _substitute(backend, polys, *found, strip=len(remaining) > 1)
             if backend.variables(found[2]):
                 multipliers.append(found[2])
             remaining.remove(found[1])
@@ -77,19 +78,24 @@ def _linear_unknown(backend, polys, remaining, allowed):
         for poly in polys:
             if backend.degree(poly, var) != 1:
                 continue
-            parts = backend.split(poly, [var])
-            coefficient, rest = parts.get((1,)), parts.get((0,))
-            if not backend.variables(coefficient) <= allowed:
+            coefficient = backend.derivative(poly, var)
+            held = backend.variables(coefficient)
+            if not held <= allowed:
                 continue
             # a number first (no extraneous factor), then the smallest coefficient
-            key = (bool(backend.variables(coefficient)), backend.nterms(coefficient), backend.nterms(poly))
+            key = (bool(held), backend.nterms(coefficient), backend.nterms(poly))
             if best is None or key < best[0]:
-                best = (key, (poly, var, coefficient, rest if rest is not None else backend.zero()))
-    return None if best is None else best[1]
+                best = (key, poly, var, coefficient)
+    if best is None:
+        return None
+    _, poly, var, coefficient = best
+    return poly, var, coefficient, backend.split(poly, [var]).get((0,), backend.zero())
 
 
-def _substitute(backend, polys, pivot, var, coefficient, rest):
-    """``a**k f(-rest/a)`` for every other equation ``f`` of degree ``k`` in ``var``."""
+def _substitute(backend, polys, pivot, var, coefficient, rest, strip=True):
+    """``a**k f(-rest/a)`` for every other equation ``f`` of degree ``k`` in ``var``, with the
+    factors it shares with ``a`` stripped (if ``strip``)."""
+    minus_rest, scales = [backend.one()], [backend.one()]  # powers of -rest and of a, as needed
     out = []
     for poly in polys:
         if poly is pivot:
@@ -99,10 +105,13 @@ def _substitute(backend, polys, pivot, var, coefficient, rest):
             continue
         parts = backend.split(poly, [var])
         degree = max(e for (e,) in parts)
+        while len(minus_rest) <= degree:
+            minus_rest.append(minus_rest[-1] * -rest)
+            scales.append(scales[-1] * coefficient)
         total = backend.zero()
         for (e,), part in parts.items():
-            total = total + part * (-rest) ** e * coefficient ** (degree - e)
-        if backend.variables(coefficient):
+            total = total + part * minus_rest[e] * scales[degree - e]
+        if strip and backend.variables(coefficient):
             total = _strip(backend, total, coefficient)
         out.append(total)
     return out

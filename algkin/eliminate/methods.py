@@ -16,12 +16,11 @@ def _linear_definition(backend, poly, var):
     """``value`` with ``var = value`` if ``poly`` is ``k*var + rest`` (k a number), else None."""
     if backend.degree(poly, var) != 1:
         return None
-    rest = backend.substitute(poly, var, backend.zero())
-    linear = poly - rest
-    if backend.nterms(linear) != 1 or backend.total_degree(linear) != 1:
+    slope = backend.derivative(poly, var)
+    if backend.variables(slope):
         return None
-    (_, numerator, denominator), = backend.terms(linear)
-    return backend.scale(rest, -denominator, numerator)
+    (_, numerator, denominator), = backend.terms(slope)
+    return backend.scale(backend.substitute(poly, var, backend.zero()), -denominator, numerator)
 
 
 def prepare(backend, polys, eliminate, log):
@@ -48,7 +47,10 @@ def prepare(backend, polys, eliminate, log):
 
 
 def _squarefree_kept(backend, poly, witnesses, dropped):
-    kept, lost = select_factors(backend, backend.factors(poly), witnesses, check=False)
+    factors = backend.factors(poly)
+    if len(factors) == 1:  # nothing to choose; the final eliminant's check answers for it
+        return factors[0]
+    kept, lost = select_factors(backend, factors, witnesses, check=False)
     dropped.extend(lost)
     if not kept:
         raise ComputationError("every factor of an intermediate resultant was dropped")
