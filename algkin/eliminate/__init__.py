@@ -94,7 +94,7 @@ def _lookup(table, kind, name):
 def _consistent(engine, polys):
     """Drop zero polynomials; a non-zero constant means there is no solution at all."""
     polys = [p for p in polys if not engine.is_zero(p)]
-    if any(not engine.variables(p) for p in polys):
+    if any(engine.is_constant(p) for p in polys):
         raise ComputationError("the equations are inconsistent: elimination reached a non-zero constant")
     return polys
 
@@ -131,7 +131,7 @@ def _eliminate(engine, method, run, equations, eliminate, keep, witnesses, param
     eliminant = left[0]
     for poly in left[1:]:
         eliminant = engine.gcd(eliminant, poly)
-    if not engine.variables(eliminant):
+    if engine.is_constant(eliminant):
         eliminant = min(left, key=lambda p: (engine.total_degree(p), engine.nterms(p)))
     kept, lost = select_factors(engine, factor_with(engine, eliminant, multipliers), witnesses)
     dropped.extend(lost)

@@ -24,6 +24,7 @@ class FlintBackend:
 
     def __init__(self, names):
         self.names = tuple(names)
+        self.index = {n: i for i, n in enumerate(self.names)}
         self.ctx = flint_context(self.names, "lex")
 
     def from_sympy(self, expr):
@@ -36,7 +37,10 @@ class FlintBackend:
         return {n for n, d in zip(self.names, poly.degrees()) if d > 0}
 
     def degree(self, poly, var):
-        return int(poly.degrees()[self.names.index(var)])
+        return int(poly.degrees()[self.index[var]])
+
+    def is_constant(self, poly):
+        return poly.is_constant()
 
     def total_degree(self, poly):
         return int(poly.total_degree())
@@ -102,18 +106,19 @@ class FlintBackend:
         return quotient if remainder.is_zero() else None
 
     def split(self, poly, variables):
-        """``{exponents in variables: coefficient free of them}``, by substitution and exact
-        division in C (a Python loop over the terms is ten times slower)."""
+        """``{exponents in variables: coefficient free of them}``, in C: the coefficient of
+        ``x**k`` is the ``k``-th derivative at ``x = 0`` over ``k!`` (a Python loop over
+        the terms is ten times slower)."""
         if not variables:
             return {(): poly}
-        name, gen = variables[0], self.ctx.gens()[self.names.index(variables[0])]
-        parts, degree = {}, 0
-        while not poly.is_zero():
-            part = poly.subs({name: 0})
+        name, parts, factorial, top = variables[0], {}, 1, self.degree(poly, variables[0])
+        for degree in range(top + 1):
+            part = poly.subs({name: 0}) if degree < top else poly
             if not part.is_zero():
-                for key, value in self.split(part, variables[1:]).items():
+                for key, value in self.split(part / factorial if factorial > 1 else part, variables[1:]).items():
                     parts[(degree,) + key] = value
-            poly, degree = (poly - part) / gen, degree + 1
+            if degree < top:
+                poly, factorial = poly.derivative(name), factorial * (degree + 1)
         return parts
 
     def join(self, parts, variables):
@@ -153,6 +158,7 @@ class SympyBackend:
 
     def __init__(self, names):
         self.names = tuple(names)
+        self.index = {n: i for i, n in enumerate(self.names)}
         self.gens = [symbol(n) for n in self.names]
 
     def from_sympy(self, expr):
@@ -166,7 +172,10 @@ class SympyBackend:
         return {n for n, d in zip(self.names, poly.degree_list()) if d > 0}
 
     def degree(self, poly, var):
-        return poly.degree(self.gens[self.names.index(var)])
+        return poly.degree(self.gens[self.index[var]])
+
+    def is_constant(self, poly):
+        return poly.is_ground
 
     def total_degree(self, poly):
         return poly.total_degree()

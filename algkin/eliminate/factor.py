@@ -43,19 +43,17 @@ def factor_with(backend, poly, divisors):
             while quotient is not None:
                 poly, quotient = quotient, backend.quotient(quotient, factor)
             found.append(factor)
-    return found + (backend.factors(poly) if backend.variables(poly) else [])
+    return found + ([] if backend.is_constant(poly) else backend.factors(poly))
 
 
 def certified_irreducible(poly):
     """True when the ``fmpq_mpoly`` ``poly`` is proved irreducible over QQ by specialization;
     False means not proved (it may still be irreducible)."""
-    names, degrees = poly.context().names(), poly.degrees()
-    candidates = sorted((d, i) for i, d in enumerate(degrees) if d > 0)
-    for degree, i in candidates:
-        lead = poly
-        for _ in range(degree):
-            lead = lead.derivative(names[i])
-        if not lead.is_constant():
+    degrees = poly.degrees()
+    for degree, i in sorted((d, i) for i, d in enumerate(degrees) if d > 0):
+        power = tuple(degree if k == i else 0 for k in range(len(degrees)))
+        lead = poly[power]  # the coefficient of x**degree: the leading one, if no other term reaches it
+        if lead == 0 or (poly - poly.context().term(lead, power)).degrees()[i] == degree:
             continue
         return any(_irreducible_at(poly, i, degree, values) for values in SPECIALIZATIONS)
     return False

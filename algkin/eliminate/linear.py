@@ -50,7 +50,7 @@ def linear_elimination(backend, polys, eliminate, witnesses, dropped, log, param
         if found is not None:
             # after the last unknown, the multiplier's factors are left for factoring to divide out
             polys = _substitute(backend, polys, *found, strip=len(remaining) > 1)
-            if backend.variables(found[2]):
+            if not backend.is_constant(found[2]):
                 multipliers.append(found[2])
             remaining.remove(found[1])
             log.append(("substituted", found[1]))
@@ -100,7 +100,7 @@ def _substitute(backend, polys, pivot, var, coefficient, rest, strip=True):
     for poly in polys:
         if poly is pivot:
             continue
-        if var not in backend.variables(poly):
+        if not backend.degree(poly, var):
             out.append(poly)
             continue
         parts = backend.split(poly, [var])
@@ -111,7 +111,7 @@ def _substitute(backend, polys, pivot, var, coefficient, rest, strip=True):
         total = backend.zero()
         for (e,), part in parts.items():
             total = total + part * minus_rest[e] * scales[degree - e]
-        if strip and backend.variables(coefficient):
+        if strip and not backend.is_constant(coefficient):
             total = _strip(backend, total, coefficient)
         out.append(total)
     return out
@@ -121,7 +121,7 @@ def _strip(backend, poly, coefficient):
     """``poly`` without the factors it shares with a power of ``coefficient`` (the multiplier)."""
     while not backend.is_zero(poly):
         common = backend.gcd(poly, coefficient)
-        if not backend.variables(common):
+        if backend.is_constant(common):
             return poly
         poly = backend.divide(poly, common)
     return poly
@@ -144,12 +144,12 @@ def _radical_axes(backend, polys, remaining, allowed):
                       and backend.variables(parts[column]) <= allowed]
         if not candidates:
             continue
-        p = min(candidates, key=lambda i: (bool(backend.variables(rows[i][column])), backend.nterms(rows[i][column])))
+        p = min(candidates, key=lambda i: (not backend.is_constant(rows[i][column]), backend.nterms(rows[i][column])))
         pivots.add(p)
         for i in candidates:
             if i != p:
                 rows[i], multiplier = _combine(backend, rows[p], rows[i], column)
-                if backend.variables(multiplier):
+                if not backend.is_constant(multiplier):
                     used.append(multiplier)
     linear = [i for i, parts in enumerate(rows) if i not in pivots and parts
               and max(sum(e) for e in parts) == 1]

@@ -17,7 +17,7 @@ def _linear_definition(backend, poly, var):
     if backend.degree(poly, var) != 1:
         return None
     slope = backend.derivative(poly, var)
-    if backend.variables(slope):
+    if not backend.is_constant(slope):
         return None
     (_, numerator, denominator), = backend.terms(slope)
     return backend.scale(backend.substitute(poly, var, backend.zero()), -denominator, numerator)
@@ -30,7 +30,7 @@ def prepare(backend, polys, eliminate, log):
     while changed:
         changed = False
         for var in eliminate:
-            holders = [p for p in polys if var in backend.variables(p)]
+            holders = [p for p in polys if backend.degree(p, var)]
             if len(holders) == 1:
                 polys.remove(holders[0])
                 log.append(("dropped-alone", var))
@@ -63,7 +63,7 @@ def _squarefree_kept(backend, poly, witnesses, dropped):
 def cheapest(backend, polys, remaining):
     """The unknown held by the fewest equations, then of the least degree in them."""
     def cost(var):
-        holders = [p for p in polys if var in backend.variables(p)]
+        holders = [p for p in polys if backend.degree(p, var)]
         return (len(holders), min((backend.degree(p, var) for p in holders), default=0))
 
     return min(remaining, key=cost)
@@ -72,8 +72,8 @@ def cheapest(backend, polys, remaining):
 def resultant_step(backend, polys, var, witnesses, dropped, log, budget=None):
     """``polys`` with ``var`` eliminated: resultants of its holders against the one of least
     degree in it, each factored and cut to the factors the witnesses satisfy."""
-    holders = [p for p in polys if var in backend.variables(p)]
-    others = [p for p in polys if var not in backend.variables(p)]
+    holders = [p for p in polys if backend.degree(p, var)]
+    others = [p for p in polys if not backend.degree(p, var)]
     if len(holders) <= 1:
         return others
     pivot = min(holders, key=lambda p: (backend.degree(p, var), backend.nterms(p)))
@@ -83,7 +83,7 @@ def resultant_step(backend, polys, var, witnesses, dropped, log, budget=None):
         result = backend.resultant(pivot, poly, var)
         if backend.is_zero(result):
             raise ComputationError(f"resultant in {var} vanished: the equations share a factor")
-        if not backend.variables(result):
+        if backend.is_constant(result):
             raise ComputationError(f"resultant in {var} is a non-zero constant: the system is inconsistent")
         (budget or current()).check_terms(backend.nterms(result), f"the resultant in {var}")
         others.append(_squarefree_kept(backend, result, witnesses, dropped))

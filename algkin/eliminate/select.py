@@ -127,23 +127,26 @@ def _values(backend, factors, groups, base_bits, magnitude_bits):
     the dimensions take 239 terms down to 25).
     """
     held = [backend.variables(f) for f in factors]
+    assignments, which = [], {}  # the distinct exact assignments, and each witness's
+    for point in (p for group in groups for p in group):
+        exact = getattr(point, "exact", {})
+        if exact not in assignments:  # compared, not hashed: fmpq hashes in Python
+            assignments.append(exact)
+        which[id(point)] = assignments.index(exact)
     evaluators, plain = {}, set()  # plain: factors for which substituting does not pay
 
-    def fixed(i, point):
-        exact = getattr(point, "exact", {})
-        return tuple(sorted((n, v) for n, v in exact.items() if n in held[i]))
-
     def value(i, point):
-        key = () if i in plain else fixed(i, point)
-        if (i, key) not in evaluators:
-            poly = backend.specialize(factors[i], dict(key)) if key else factors[i]
+        exact = assignments[which[id(point)]]
+        fixed = {n: v for n, v in exact.items() if n in held[i]} if i not in plain else {}
+        key = (i, which[id(point)] if fixed else None)
+        if key not in evaluators:
+            poly = backend.specialize(factors[i], fixed) if fixed else factors[i]
             first = not any(j == i for j, _ in evaluators)
-            if key and first and backend.nterms(poly) * len({fixed(i, p) for g in groups for p in g}) \
-                    > backend.nterms(factors[i]):
+            if fixed and first and backend.nterms(poly) * len(assignments) > backend.nterms(factors[i]):
                 plain.add(i)
-                key, poly = (), factors[i]
-            evaluators[i, key] = Evaluator(backend.terms(poly), backend.names, base_bits, magnitude_bits)
-        return evaluators[i, key](point)
+                key, poly = (i, None), factors[i]
+            evaluators[key] = Evaluator(backend.terms(poly), backend.names, base_bits, magnitude_bits)
+        return evaluators[key](point)
 
     return value
 
