@@ -96,6 +96,7 @@ def _substitute(backend, polys, pivot, var, coefficient, rest, strip=True):
     """``a**k f(-rest/a)`` for every other equation ``f`` of degree ``k`` in ``var``, with the
     factors it shares with ``a`` stripped (if ``strip``)."""
     minus_rest, scales = [backend.one()], [backend.one()]  # powers of -rest and of a, as needed
+    pieces = backend.factors(coefficient) if strip and not backend.is_constant(coefficient) else []
     out = []
     for poly in polys:
         if poly is pivot:
@@ -111,19 +112,17 @@ def _substitute(backend, polys, pivot, var, coefficient, rest, strip=True):
         total = backend.zero()
         for (e,), part in parts.items():
             total = total + part * minus_rest[e] * scales[degree - e]
-        if strip and not backend.is_constant(coefficient):
-            total = _strip(backend, total, coefficient)
-        out.append(total)
+        out.append(_strip(backend, total, pieces))
     return out
 
 
-def _strip(backend, poly, coefficient):
-    """``poly`` without the factors it shares with a power of ``coefficient`` (the multiplier)."""
-    while not backend.is_zero(poly):
-        common = backend.gcd(poly, coefficient)
-        if backend.is_constant(common):
-            return poly
-        poly = backend.divide(poly, common)
+def _strip(backend, poly, pieces):
+    """``poly`` without the irreducible factors ``pieces`` of the multiplier, by trial division
+    (a multivariate gcd with the multiplier costs three times as much on the symbolic four-bar)."""
+    for piece in pieces:
+        quotient = backend.quotient(poly, piece) if not backend.is_zero(poly) else None
+        while quotient is not None:
+            poly, quotient = quotient, backend.quotient(quotient, piece)
     return poly
 
 

@@ -33,12 +33,21 @@ MARGIN_BITS = 64
 
 
 class Witness(dict):
-    """A configuration: name -> arb ball, and ``exact``: name -> fmpq for the coordinates
-    known exactly (their balls enclose these values)."""
+    """A configuration: name -> arb ball, ``exact``: name -> fmpq for the coordinates known
+    exactly (their balls enclose these values), and ``scale`` (see ``_scale``), worked out
+    when it is made, for every elimination that uses it."""
 
     def __init__(self, balls=(), exact=None):
         super().__init__(balls)
         self.exact = dict(exact or {})
+        self.scale = _scale(self)
+
+
+def _scale(point):
+    """``(bits, magnitude)``: the most mantissa bits of the balls (the precision they were
+    computed at) and the largest absolute midpoint."""
+    return (max((_bits(v) for v in point.values()), default=0),
+            max((float(abs(v).mid()) for v in point.values()), default=0.0))
 
 
 class Evaluator:
@@ -110,9 +119,9 @@ def select_factors(backend, factors, witness_groups, check=True):
     groups = [g for g in witness_groups if g]
     if not groups:
         return list(factors), []
-    values = [v for group in groups for point in group for v in point.values()]
-    witness_bits = max(_bits(v) for v in values)
-    magnitude_bits = max(1, math.ceil(math.log2(1 + max(float(abs(v).mid()) for v in values))))
+    scales = [point.scale if isinstance(point, Witness) else _scale(point) for group in groups for point in group]
+    witness_bits = max(bits for bits, _ in scales)
+    magnitude_bits = max(1, math.ceil(math.log2(1 + max(magnitude for _, magnitude in scales))))
     # enough for the factor's own coefficients and powers on top of the witnesses' precision
     return _select(factors, groups, _values(backend, factors, groups, MARGIN_BITS + witness_bits, magnitude_bits),
                    check)

@@ -16,7 +16,7 @@ from algkin.cli import main
 
 @pytest.fixture(scope="module")
 def two_circles():
-    return bench(["two-circles"], ["linear", "resultant", "groebner"], ["flint"], budget=30, peers=False)
+    return bench(["two-circles"], ["linear", "resultant", "groebner"], ["flint"], budget=30, peers=False, rounds=2)
 
 
 def test_every_method_agrees_on_the_seed_connector(two_circles):
@@ -31,6 +31,8 @@ def test_every_method_agrees_on_the_seed_connector(two_circles):
 def test_ratios_are_against_the_default_method(two_circles):
     default = next(r for r in two_circles.rows if (r["method"], r["backend"]) == ("linear", "flint"))
     assert default["ratio"] == 1.0
+    # every row under two seconds had its second round, the default among them
+    assert all(r["note"].endswith("best of 2 rounds") for r in two_circles.rows if r["seconds"] < 2), two_circles.rows
     assert two_circles.machine["cores"] >= 1 and "python-flint" in two_circles.machine
 
 
@@ -56,14 +58,15 @@ def test_agreement_modulo_the_circle_relation():
 
 def test_cli_table_json_and_files(tmp_path, capsys):
     code = main(["bench", "--problems", "two-circles", "--methods", "linear", "--backends", "flint",
-                 "--no-peers", "--budget", "30", "--out", str(tmp_path), "--json"])
+                 "--no-peers", "--budget", "30", "--rounds", "1", "--out", str(tmp_path), "--json"])
     document = json.loads(capsys.readouterr().out)
     assert code == 0 and {"rows", "machine"} <= set(document)
     assert {"problem", "method", "backend", "seconds", "degree", "terms", "agrees"} <= set(document["rows"][0])
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bench.csv", "bench.json", "bench.png"]
 
 
-@pytest.mark.parametrize("argv", [["--problems", "nope"], ["--methods", "magic"], ["--budget", "0"]])
+@pytest.mark.parametrize("argv", [["--problems", "nope"], ["--methods", "magic"], ["--budget", "0"],
+                                  ["--rounds", "0"]])
 def test_bad_options_exit_2_with_one_line(argv):
     done = subprocess.run([sys.executable, "-m", "algkin", "bench", "--no-peers", *argv],
                           capture_output=True, text=True)
@@ -75,7 +78,7 @@ def test_a_missing_peer_is_skipped_with_a_note(monkeypatch):
 
     monkeypatch.setattr(engines.shutil, "which", lambda name: None)
     monkeypatch.setattr(engines, "find_msolve", lambda: None)
-    rows = {r["method"]: r for r in bench(["two-circles"], ["linear"], ["flint"], budget=30).rows}
+    rows = {r["method"]: r for r in bench(["two-circles"], ["linear"], ["flint"], budget=30, rounds=1).rows}
     assert rows["Singular eliminate"]["seconds"] is None
     assert rows["Singular eliminate"]["note"] == "skipped: Singular not found"
     assert rows["msolve eliminate"]["note"].startswith("skipped: msolve not found")
