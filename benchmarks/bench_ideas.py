@@ -1,30 +1,40 @@
-"""Elimination ideas measured one at a time: early factoring, and where the linear method's
-multipliers may hold kept coordinates.
+"""Elimination ideas measured one at a time, each against algkin without it.
 
 - early factoring: every intermediate resultant factored and cut to the factors the
   witnesses satisfy (algkin's way), against only made squarefree;
 - coordinate multipliers: the ``linear`` method with multipliers allowed to hold kept
   coordinates only in the closing Cramer step (algkin's way), against at every step
-  ("without" is then the variant that allows them everywhere).
+  ("without" is then the variant that allows them everywhere);
+- interleaved resultants: when no linear step applies, one resultant and back to linear
+  steps (algkin's way), against resultants for every unknown left;
+- multiplier trial division: the multipliers' factors divided out of the eliminant before
+  factoring it (algkin's way), against factoring the eliminant whole;
+- irreducibility by specialization: proved on a univariate specialization (algkin's way,
+  beyond three variables), against flint's multivariate factoring;
+- exact witness coordinates: rational inputs and dimensions substituted exactly before the
+  balls (algkin's way), against balls for every coordinate.
 
-Both variants are swapped in for the run only; each time is CPU time per elimination
-(the median of repeats after a warm-up), and every variant's eliminant is asserted equal
-to algkin's.
+Each variant is swapped in for its runs only; each time is the least CPU time per
+elimination over five rounds that alternate with and without (after a warm-up of each),
+and every variant's eliminant is asserted equal to algkin's.
 
 Run: ``python benchmarks/bench_ideas.py [--problems ...]``.
 """
 
 import argparse
-import statistics
 import time
 from contextlib import contextmanager
 
 import algkin.eliminate as eliminate
+import algkin.eliminate.backends as backends
+import algkin.eliminate.linear as linear
 import algkin.eliminate.methods as methods
+import algkin.eliminate.select as select
 from algkin.bench.problems import build
 from algkin.eliminate.linear import linear_elimination
 
 PROBLEMS = ("fourbar-symbolic", "watt-i", "stephenson-iii")
+ROUNDS = 5
 
 
 def _squarefree_only(backend, poly, witnesses, dropped):
@@ -42,10 +52,19 @@ def _coordinates_always(backend, polys, eliminate, witnesses, dropped, log, para
     return linear_elimination(backend, polys, eliminate, witnesses, dropped, log, kept, budget, multipliers)
 
 
+def _resultants_for_the_rest(backend, polys, remaining, witnesses, dropped, log, budget):
+    return methods.resultant_chain(backend, polys, remaining, witnesses, dropped, log, budget=budget), list(remaining)
+
+
 IDEAS = {  # the idea -> how to run without it
     "early factoring": lambda: swapped(methods, "_squarefree_kept", _squarefree_only),
     "coordinate multipliers": lambda: swapped(eliminate, "METHODS", {**eliminate.METHODS,
                                                                       "linear": _coordinates_always}),
+    "interleaved resultants": lambda: swapped(linear, "_by_resultants", _resultants_for_the_rest),
+    "multiplier trial division": lambda: swapped(eliminate, "factor_with",
+                                                 lambda backend, poly, divisors: backend.factors(poly)),
+    "irreducibility by specialization": lambda: swapped(backends, "certified_irreducible", lambda poly: False),
+    "exact witness coordinates": lambda: swapped(select, "_exact", lambda point: {}),
 }
 
 
@@ -59,30 +78,42 @@ def swapped(module, name, replacement):
         setattr(module, name, original)
 
 
-def cpu_time(run, repeats=5):
+def cpu_time(run):
+    """CPU seconds of one ``run()``, and its result."""
+    start = time.process_time()
+    result = run()
+    return time.process_time() - start, result
+
+
+def with_and_without(task, without, rounds=ROUNDS):
+    """Least CPU time with the idea and without it over ``rounds`` rounds, measured in turn
+    (the machine's speed drifts), after a warm-up of each; and the two eliminants."""
+    run = lambda: task.run("linear", "flint")  # noqa: E731
     run()
-    times = []
-    for _ in range(repeats):
-        start = time.process_time()
-        result = run()
-        times.append(time.process_time() - start)
-    return statistics.median(times), result
+    with without():
+        run()
+    best_with = best_without = float("inf")
+    for _ in range(rounds):
+        seconds, reference = cpu_time(run)
+        best_with = min(best_with, seconds)
+        with without():
+            seconds, result = cpu_time(run)
+        best_without = min(best_without, seconds)
+    return best_with, best_without, reference, result
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--problems", nargs="+", default=list(PROBLEMS))
     args = parser.parse_args()
-    print(f"{'problem':18} {'idea':22} {'with (algkin)':>14} {'without':>12} {'ratio':>8}")
+    print(f"{'problem':18} {'idea':34} {'with (algkin)':>14} {'without':>12} {'ratio':>8}")
     for name in args.problems:
         task = build(name).task
-        with_seconds, reference = cpu_time(lambda: task.run("linear", "flint"))
         for idea, without in IDEAS.items():
-            with without():
-                without_seconds, result = cpu_time(lambda: task.run("linear", "flint"), repeats=1)
+            with_seconds, without_seconds, reference, result = with_and_without(task, without)
             same = result.raw * reference.raw.leading_coefficient() == reference.raw * result.raw.leading_coefficient()
             assert same, (name, idea)
-            print(f"{name:18} {idea:22} {with_seconds * 1e3:11.1f} ms {without_seconds * 1e3:9.1f} ms "
+            print(f"{name:18} {idea:34} {with_seconds * 1e3:11.1f} ms {without_seconds * 1e3:9.1f} ms "
                   f"{without_seconds / with_seconds:7.1f}x")
 
 

@@ -59,8 +59,8 @@ class FlintBackend:
         return f.resultant(g, var)
 
     def factors(self, poly):
-        # beyond three variables, specializing to one proves irreducibility 5x faster than
-        # flint factors (the symbolic four-bar's curve); in up to three, flint is faster
+        # beyond three variables, specializing to one proves irreducibility faster than flint's
+        # multivariate factoring (benchmarks/bench_ideas.py); in up to three, flint is faster
         if len(self.variables(poly)) > 3 and certified_irreducible(poly):
             return [poly]
         _, factors = poly.factor()

@@ -63,11 +63,17 @@ def linear_elimination(backend, polys, eliminate, witnesses, dropped, log, param
             multipliers.extend(used)
             log.append(("radical-axis", gained))
             continue
-        # an axis no unknown can be substituted from only reshuffles the resultants: one
-        # resultant, after which fewer unknowns remain and a linear step may apply again
-        var = cheapest(backend, polys, remaining)
-        polys = resultant_step(backend, polys, var, witnesses, dropped, log, budget)
-        remaining.remove(var)
+        # an axis no unknown can be substituted from only reshuffles the resultants
+        polys, done = _by_resultants(backend, polys, remaining, witnesses, dropped, log, budget)
+        remaining = [v for v in remaining if v not in done]
+
+
+def _by_resultants(backend, polys, remaining, witnesses, dropped, log, budget):
+    """One resultant, on the cheapest unknown: with fewer unknowns left, a linear step may
+    apply again (on the six-bars, the closing Cramer step, which brings in no mismatched
+    roots the way a second resultant does). The equations, and the unknowns eliminated."""
+    var = cheapest(backend, polys, remaining)
+    return resultant_step(backend, polys, var, witnesses, dropped, log, budget), [var]
 
 
 def _linear_unknown(backend, polys, remaining, allowed):
@@ -117,8 +123,7 @@ def _substitute(backend, polys, pivot, var, coefficient, rest, strip=True):
 
 
 def _strip(backend, poly, pieces):
-    """``poly`` without the irreducible factors ``pieces`` of the multiplier, by trial division
-    (a multivariate gcd with the multiplier costs three times as much on the symbolic four-bar)."""
+    """``poly`` without the irreducible factors ``pieces`` of the multiplier, by trial division."""
     for piece in pieces:
         quotient = backend.quotient(poly, piece) if not backend.is_zero(poly) else None
         while quotient is not None:

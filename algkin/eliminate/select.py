@@ -57,8 +57,8 @@ class Evaluator:
 
     Compiled once into a straight-line program: coefficients made balls, and every product of
     powers shared by terms with the same leading exponents (in the terms' lexicographic
-    order) computed once, a third of the products of a term-by-term loop on the symbolic
-    four-bar's curve.
+    order) computed once: on the Stephenson III curve, 180 products instead of the 324 of a
+    term-by-term loop.
     """
 
     def __init__(self, terms, names, base_bits, magnitude_bits=1):
@@ -138,7 +138,7 @@ def _values(backend, factors, groups, base_bits, magnitude_bits):
     held = [backend.variables(f) for f in factors]
     assignments, which = [], {}  # the distinct exact assignments, and each witness's
     for point in (p for group in groups for p in group):
-        exact = getattr(point, "exact", {})
+        exact = _exact(point)
         if exact not in assignments:  # compared, not hashed: fmpq hashes in Python
             assignments.append(exact)
         which[id(point)] = assignments.index(exact)
@@ -158,6 +158,11 @@ def _values(backend, factors, groups, base_bits, magnitude_bits):
         return evaluators[key](point)
 
     return value
+
+
+def _exact(point):
+    """The coordinates of ``point`` known exactly (none for a plain dict of balls)."""
+    return getattr(point, "exact", {})
 
 
 def _bits(ball):

@@ -1,6 +1,7 @@
 """Factor selection at witnesses: decided at a precision the factor needs, not at 53 bits."""
 
 import flint
+import sympy
 
 from algkin.eliminate.backends import BACKENDS
 from algkin.eliminate.select import select_factors
@@ -35,3 +36,32 @@ def test_a_high_degree_factor_vanishing_at_an_irrational_witness_is_kept():
         kept, dropped = select_factors(engine, [vanishing, other], [[witness]])
         assert len(kept) == 1 and len(dropped) == 1
         assert engine.to_sympy(dropped[0]) == x**10 - 31
+
+
+def test_exact_coordinates_decide_where_balls_cannot():
+    # t = 1/3 is a rational input. As a 256-bit ball its radius is about 2**-258, so the ball of
+    # t - 1/3 - 2**-300 contains zero; substituting t exactly gives -2**-300, proved non-zero.
+    from algkin.eliminate.select import Witness
+
+    t = symbol("t")
+    engine = BACKENDS["flint"](("x", "t"))
+    near = engine.from_sympy(t - sympy.Rational(1, 3) - sympy.Rational(1, 2**300))
+    with flint.ctx.workprec(256):
+        balls = {"x": flint.arb(2).sqrt(), "t": flint.arb(1) / 3}
+    kept, dropped = select_factors(engine, [near], [[balls]])
+    assert kept == [near] and dropped == []  # the ball cannot tell
+    with flint.ctx.workprec(256):
+        exact = Witness(balls, {"t": flint.fmpq(1, 3)})
+    curve = engine.from_sympy(3 * t - 1)
+    kept, dropped = select_factors(engine, [curve, near], [[exact]])
+    assert kept == [curve] and dropped == [near]
+
+
+def test_witnesses_with_and_without_exact_coordinates_agree_on_the_symbolic_four_bar():
+    from algkin.bench.problems import build
+
+    task = build("fourbar-symbolic").task
+    plain = tuple(tuple(dict(point) for point in group) for group in task.witnesses)
+    exact = task.run("linear", "flint")
+    balls = type(task)(task.equations, task.eliminate, task.keep, task.parameters, plain).run("linear", "flint")
+    assert exact.raw == balls.raw and exact.raw_dropped == balls.raw_dropped

@@ -1,0 +1,59 @@
+"""Factoring with known divisors, and irreducibility proved by specialization."""
+
+import flint
+from hypothesis import given, settings, strategies as st
+
+from algkin.eliminate.backends import FlintBackend
+from algkin.eliminate.factor import certified_irreducible, factor_with
+
+NAMES = ("x", "y", "z", "w", "v")
+CTX = flint.fmpq_mpoly_ctx.get(NAMES, "lex")
+
+
+@st.composite
+def polynomials(draw, max_terms=5):
+    """A non-constant polynomial in the five variables with small integer coefficients."""
+    terms = draw(st.dictionaries(st.tuples(*[st.integers(0, 2)] * len(NAMES)), st.integers(-5, 5).filter(bool),
+                                 min_size=1, max_size=max_terms))
+    poly = CTX.from_dict(terms)
+    return poly if not poly.is_constant() else poly + CTX.gens()[0]
+
+
+def flint_factors(poly):
+    return sorted(str(f) for f, _ in poly.factor()[1])
+
+
+@settings(max_examples=150, deadline=None)
+@given(polynomials(), polynomials())
+def test_a_product_is_never_proved_irreducible(f, g):
+    assert not certified_irreducible(f * g)
+
+
+@settings(max_examples=150, deadline=None)
+@given(polynomials(max_terms=8))
+def test_what_is_proved_irreducible_flint_cannot_factor(poly):
+    if certified_irreducible(poly):
+        (factor, multiplicity), = poly.factor()[1]
+        assert multiplicity == 1 and factor.total_degree() == poly.total_degree()
+
+
+def test_a_circle_is_proved_irreducible():
+    x, y = CTX.gens()[:2]
+    # x**2 + y**2 - 1 at y = 5 is x**2 + 24, irreducible over QQ (-24 is not a square)
+    assert certified_irreducible(x**2 + y**2 - 1)
+
+
+def test_no_numeric_leading_coefficient_means_not_proved():
+    x, y = CTX.gens()[:2]
+    # irreducible, but its leading coefficient in x is y and in y is x: the proof needs a number
+    assert not certified_irreducible(x * y + 1)
+
+
+@settings(max_examples=60, deadline=None)
+@given(polynomials(max_terms=4), polynomials(max_terms=4), polynomials(max_terms=4))
+def test_factoring_with_divisors_finds_what_factoring_finds(f, g, h):
+    engine = FlintBackend(NAMES)
+    poly = f * g * g * h
+    found = factor_with(engine, poly, [g * f, h])
+    assert sorted(str(engine.primitive(p)) for p in found) == sorted(str(engine.primitive(p)) for p in
+                                                                      engine.factors(poly))
