@@ -128,13 +128,10 @@ def select_factors(backend, factors, witness_groups, check=True):
 
 
 def _values(backend, factors, groups, base_bits, magnitude_bits):
-    """``(i, point) -> ball of factor i at point``.
-
-    A factor's exactly known coordinates are substituted first when that pays: the
-    substituted polynomial, one per set of exact values (branches share one at the same
-    input), has fewer terms in all than the factor itself (on the symbolic four-bar's curve,
-    the dimensions take 239 terms down to 25).
-    """
+    """``(i, point) -> ball of factor i at point``, its exactly known coordinates substituted
+    exactly first: one evaluator per factor and set of exact values, which branches share at
+    the same input (on the symbolic four-bar's curve, the dimensions take 239 terms down to
+    25). Exact values can only sharpen a ball: a factor that vanishes there still does."""
     held = [backend.variables(f) for f in factors]
     assignments, which = [], {}  # the distinct exact assignments, and each witness's
     for point in (p for group in groups for p in group):
@@ -142,18 +139,13 @@ def _values(backend, factors, groups, base_bits, magnitude_bits):
         if exact not in assignments:  # compared, not hashed: fmpq hashes in Python
             assignments.append(exact)
         which[id(point)] = assignments.index(exact)
-    evaluators, plain = {}, set()  # plain: factors for which substituting does not pay
+    evaluators = {}
 
     def value(i, point):
-        exact = assignments[which[id(point)]]
-        fixed = {n: v for n, v in exact.items() if n in held[i]} if i not in plain else {}
+        fixed = {n: v for n, v in assignments[which[id(point)]].items() if n in held[i]}
         key = (i, which[id(point)] if fixed else None)
         if key not in evaluators:
             poly = backend.specialize(factors[i], fixed) if fixed else factors[i]
-            first = not any(j == i for j, _ in evaluators)
-            if fixed and first and backend.nterms(poly) * len(assignments) > backend.nterms(factors[i]):
-                plain.add(i)
-                key, poly = (i, None), factors[i]
             evaluators[key] = Evaluator(backend.terms(poly), backend.names, base_bits, magnitude_bits)
         return evaluators[key](point)
 
