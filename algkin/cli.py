@@ -5,6 +5,7 @@ Exit codes: 0 done, 1 a computation failed or a check did not hold, 2 bad input.
 
 import argparse
 import json
+import pathlib
 import sys
 
 from .errors import AlgkinError, SceneError, UsageError
@@ -102,6 +103,7 @@ def build_parser():
                                             "(.html); with --of a quantity against the input")
     plot.add_argument("scene")
     plot.add_argument("--out", required=True, help="the file to write: .png, .svg, .pdf, .gif, .mp4 or .html")
+    plot.add_argument("--json", action="store_true", help="one JSON document on stdout: what was written")
     plot.add_argument("--input", action="append", default=[],
                       help="the input angle drawn, in degrees: VALUE, or NAME=VALUE for each input")
     plot.add_argument("--branch", help="the assembly mode drawn (default: the scene's)")
@@ -302,7 +304,8 @@ def _cmd_plot(args):
         for option in ("range", "derivative", "against"):
             if getattr(args, option):
                 raise UsageError(f"--{option}", getattr(args, option), "goes with --of OUTPUT")
-        print(plot_mechanism(args.scene, args.out, args.input, args.branch, args.modes, args.param))
+        written = plot_mechanism(args.scene, args.out, args.input, args.branch, args.modes, args.param)
+        _emit(args, _written(args, written), lambda d: d["out"])
         return 0
     for option in ("input", "branch", "modes", "param"):
         if getattr(args, option):
@@ -320,8 +323,14 @@ def _cmd_plot(args):
     found = quantity.extremum(_range(args.range) if args.range else None)
     figure = minimum_figure(quantity, found, *against) if against else \
         quantity_figure(quantity, found, derivative=args.derivative)
-    print(save(figure, out))
+    _emit(args, _written(args, save(figure, out)), lambda d: d["out"])
     return 0
+
+
+def _written(args, out):
+    """``plot``'s JSON document: the file written and what it shows."""
+    return {"scene": args.scene, "out": str(out), "format": pathlib.Path(str(out)).suffix.lower().lstrip("."),
+            "of": args.of}
 
 
 def _against(text):

@@ -1,10 +1,12 @@
 """Drawings: positions against hand geometry, trajectory on the implicit curve, modes, animations."""
 
+import json
 import shutil
 import subprocess
 import sys
 
 import numpy as np
+
 import pytest
 import sympy
 
@@ -105,6 +107,14 @@ def test_plot_command_writes_the_format_of_the_suffix(tmp_path, suffix):
     head = out.read_bytes()[:64]
     assert {".png": head.startswith(b"\x89PNG"), ".svg": b"<svg" in out.read_bytes()[:2000],
             ".html": head.startswith(b"<!DOCTYPE html>")}[suffix]
+
+
+def test_plot_json_is_one_document_naming_what_was_written(tmp_path):
+    out = tmp_path / "lambda.svg"
+    done = plot("chebyshev-lambda", "--out", out, "--json")
+    assert done.returncode == 0, done.stderr
+    assert json.loads(done.stdout) == {"scene": "chebyshev-lambda", "out": str(out), "format": "svg", "of": None}
+    assert b"<svg" in out.read_bytes()[:2000]
 
 
 @pytest.mark.parametrize("args", [
