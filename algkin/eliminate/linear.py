@@ -136,9 +136,13 @@ def _radical_axes(backend, polys, remaining, allowed):
     many became linear and the multipliers of the rows, or None if none became linear."""
     rows, others = [], []
     for poly in polys:
-        parts = backend.split(poly, remaining)
-        degree = max(sum(e) for e in parts)
-        (rows if degree == 2 else others).append(parts)
+        # only a quadratic in the unknowns can become an axis: one of higher degree in any
+        # unknown is passed over without splitting it
+        parts = backend.split(poly, remaining) if all(backend.degree(poly, v) <= 2 for v in remaining) else None
+        if parts is not None and max(sum(e) for e in parts) == 2:
+            rows.append(parts)
+        else:
+            others.append(poly)
     if len(rows) < 2:
         return None
     columns = sorted({e for parts in rows for e in parts if sum(e) == 2}, reverse=True)
@@ -159,7 +163,7 @@ def _radical_axes(backend, polys, remaining, allowed):
               and max(sum(e) for e in parts) == 1]
     if not linear:
         return None
-    return [backend.join(parts, remaining) for parts in others + rows if parts], len(linear), used
+    return others + [backend.join(parts, remaining) for parts in rows if parts], len(linear), used
 
 
 def _combine(backend, pivot, row, column):
