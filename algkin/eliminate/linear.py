@@ -33,7 +33,7 @@ def linear_elimination(backend, polys, eliminate, witnesses, dropped, log, param
     A multiplier may hold numbers and ``parameters`` (dimensions); it may hold the kept
     coordinates only for the last two unknowns (the closing Cramer step): earlier, it would
     raise the degree of everything still to be eliminated, and resultants do better
-    (``benchmarks/bench_ideas.py``: the Stephenson III curve is 5.9x slower otherwise).
+    (``benchmarks/bench_ideas.py``: the Stephenson III curve is ten times slower otherwise).
     Every multiplier holding a variable is appended to ``multipliers``: the eliminant's
     extraneous factors can only be theirs.
     """
