@@ -1,8 +1,9 @@
 """The eliminations ``derive`` and ``curve`` perform, as data: what ``bench`` times.
 
 A task is one call of ``eliminate``: its equations, the variables to eliminate and to
-keep, the dimensions (which the ``linear`` method may use in multipliers) and the witness
-configurations that select factors.
+keep, the kept variables the ``linear`` method may use in multipliers (the dimensions, and
+in a derive task the inputs' cos and sin) and the witness configurations that select
+factors.
 """
 
 from dataclasses import dataclass
@@ -35,14 +36,20 @@ def curve_task(compiled, groups, point):
 
 
 def eliminant_tasks(compiled, groups):
-    """Unknown -> the task giving its eliminant in the inputs' cos and sin (and dimensions)."""
+    """Unknown -> the task giving its eliminant in the inputs' cos and sin (and dimensions).
+
+    The inputs' cos and sin are kept here, and multipliers may hold them as they hold
+    dimensions: the radical axis of two circles about a crank then keeps each point's
+    unknowns to its own equations (``benchmarks/bench_ideas.py``: Stephenson III's P_x
+    takes 19 s otherwise, with a degree-60 resultant).
+    """
     system = compiled.system
     keep_always = tuple(system.input_variables) + tuple(system.parameters)
     tasks = {}
     for u in system.unknowns:
         equations, unknowns = equations_for(system, u)
         tasks[u] = EliminationTask(tuple(equations), tuple(v for v in unknowns if v != u), (u,) + keep_always,
-                                   tuple(system.parameters), tuple(groups))
+                                   keep_always, tuple(groups))
     return tasks
 
 

@@ -12,7 +12,10 @@
 - irreducibility by specialization: proved on a univariate specialization (algkin's way,
   beyond three variables), against flint's multivariate factoring;
 - exact witness coordinates: rational inputs and dimensions substituted exactly before the
-  balls (algkin's way), against balls for every coordinate.
+  balls (algkin's way), against balls for every coordinate;
+- inputs in a derivation's multipliers: for ``derive``'s eliminant of Stephenson III's
+  P_x, the kept cos and sin of the input allowed in multipliers like dimensions (algkin's
+  way), against dimensions only (one round each: without it, the run takes about 20 s).
 
 Each variant is swapped in for its runs only; each time is the least CPU time per
 elimination over five rounds that alternate with and without (after a warm-up of each),
@@ -32,6 +35,9 @@ import algkin.eliminate.methods as methods
 import algkin.eliminate.select as select
 from algkin.bench.problems import build
 from algkin.eliminate.linear import linear_elimination
+from algkin.pipeline import compile_and_branch
+from algkin.scene import load_scene
+from algkin.tasks import EliminationTask, eliminant_tasks
 
 PROBLEMS = ("fourbar-symbolic", "watt-i", "stephenson-iii")
 ROUNDS = 5
@@ -102,6 +108,20 @@ def with_and_without(task, without, rounds=ROUNDS):
     return best_with, best_without, reference, result
 
 
+def derive_inputs_row(scene="stephenson-iii", unknown="P_x"):
+    """``derive``'s task for ``unknown`` as algkin builds it, against its inputs kept out of
+    the multipliers: one timed run each after a warm-up of algkin's, eliminants compared."""
+    compiled, _, groups, _ = compile_and_branch(load_scene(scene), [unknown.split("_")[0]], ())
+    task = eliminant_tasks(compiled, groups)[unknown]
+    dimensions = EliminationTask(task.equations, task.eliminate, task.keep, tuple(compiled.system.parameters),
+                                 task.witnesses)
+    task.run("linear", "flint")
+    with_seconds, reference = cpu_time(lambda: task.run("linear", "flint"))
+    without_seconds, result = cpu_time(lambda: dimensions.run("linear", "flint"))
+    assert result.raw * reference.raw.leading_coefficient() == reference.raw * result.raw.leading_coefficient()
+    return f"{scene} {unknown}", with_seconds, without_seconds
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--problems", nargs="+", default=list(PROBLEMS))
@@ -115,6 +135,9 @@ def main():
             assert same, (name, idea)
             print(f"{name:18} {idea:34} {with_seconds * 1e3:11.1f} ms {without_seconds * 1e3:9.1f} ms "
                   f"{without_seconds / with_seconds:7.1f}x")
+    name, with_seconds, without_seconds = derive_inputs_row()
+    print(f"{name:18} {'inputs in derive multipliers':34} {with_seconds * 1e3:11.1f} ms "
+          f"{without_seconds * 1e3:9.1f} ms {without_seconds / with_seconds:7.1f}x")
 
 
 if __name__ == "__main__":

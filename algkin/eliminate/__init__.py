@@ -105,8 +105,8 @@ def eliminate(equations, eliminate, keep, method=DEFAULT_METHOD, backend="flint"
 
     Returns the polynomial left in the variables ``keep``, with factors the witnesses
     (groups of configurations, name -> arb) do not satisfy dropped and reported.
-    ``parameters`` (a subset of ``keep``: dimensions) may appear in the multipliers of the
-    ``linear`` method. A ``Budget`` bounds the time and the terms of every intermediate
+    ``parameters`` (a subset of ``keep``: dimensions, and a derivation's inputs) may appear
+    in the multipliers of the ``linear`` method. A ``Budget`` bounds the time and the terms of every intermediate
     eliminant (by default, the budget of the ``Budget.run()`` under way, if any).
     """
     run = _lookup(METHODS, "method", method)

@@ -30,9 +30,10 @@ def linear_elimination(backend, polys, eliminate, witnesses, dropped, log, param
                        multipliers=None):
     """Substitute linear unknowns and reduce circles to radical axes; resultants for the rest.
 
-    A multiplier may hold numbers and ``parameters`` (dimensions); it may hold the kept
-    coordinates only for the last two unknowns (the closing Cramer step): earlier, it would
-    raise the degree of everything still to be eliminated, and resultants do better
+    A multiplier may hold numbers and ``parameters`` (kept variables: the dimensions, and a
+    derivation's inputs); it may hold the other kept variables (a curve's coordinates) only
+    for the last two unknowns (the closing Cramer step): earlier, it would raise the degree
+    of everything still to be eliminated, and resultants do better
     (``benchmarks/bench_ideas.py``: the Stephenson III curve is ten times slower otherwise).
     Every multiplier holding a variable is appended to ``multipliers``: the eliminant's
     extraneous factors can only be theirs.

@@ -19,8 +19,8 @@ BAD = ROOT / "tests" / "scene" / "bad"
 x, y, c, s = (sympy.Symbol(n, real=True) for n in "xycs")
 CIRCLES = [(x - c) ** 2 + (y - s) ** 2 - 4, x**2 + y**2 - 1]
 
-# Unbudgeted, `derive stephenson-iii` takes about 35 s, most of it in python-flint resultants
-# that no signal interrupts; a budget of 1 s must stop it within the slack.
+# Unbudgeted, `derive stephenson-iii` takes about 8 s (branches, eliminants, verification), with
+# python-flint calls that no signal interrupts; a budget of 1 s must stop it within the slack.
 SLACK = 1.5
 
 
