@@ -33,7 +33,7 @@ def __getattr__(name):
 
         return getattr(pipeline, name)
     if name == "extremum":
-        from .extremum import extremum
+        from .analyses.extremum import extremum
 
         return extremum
     if name == "interact":  # ipywidgets only when called

@@ -5,12 +5,14 @@ Exit codes: 0 done, 1 a computation failed or a check did not hold, 2 bad input.
 
 import argparse
 import json
+import math
 import pathlib
+import re
 import sys
 
 from .errors import AlgkinError, SceneError, UsageError
 
-__all__ = ["main", "usage"]
+__all__ = ["main", "usage", "terminal_safe"]
 
 
 class _Parser(argparse.ArgumentParser):
@@ -181,6 +183,8 @@ def _range(text):
         lo, hi = (float(v) for v in text.split(":"))
     except ValueError:
         raise UsageError("--range", text, "expected lo:hi, e.g. 0:180") from None
+    if not all(math.isfinite(v) for v in (lo, hi)):
+        raise UsageError("--range", text, "lo and hi must be finite numbers")
     if not lo < hi:
         raise UsageError("--range", text, "lo must be below hi")
     return lo, hi
@@ -188,7 +192,7 @@ def _range(text):
 
 def _cmd_extremum(args):
     budget = _budget(args)
-    from .extremum import extremum
+    from .analyses.extremum import extremum
 
     angles = _range(args.range) if args.range else None
     document = budget.run(lambda: extremum(args.scene, args.of, angles, params=args.param).to_json())
@@ -349,7 +353,21 @@ def _emit(args, document, report):
         json.dump(document, sys.stdout, indent=2, sort_keys=False)
         sys.stdout.write("\n")
     else:
-        sys.stdout.write(report(document) + "\n")
+        sys.stdout.write(terminal_safe(report(document)) + "\n")
+
+
+# Control characters (ESC starts terminal commands) and bidirectional overrides (which
+# reorder what is shown) from a scene's names and text are shown escaped, never obeyed.
+_UNSAFE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u061c\u200e\u200f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
+
+
+def terminal_safe(text):
+    r"""``text`` with control and bidi characters escaped; newlines and tabs kept.
+
+    >>> terminal_safe("scene \x1b[31mred\u202e\n")
+    'scene \\x1b[31mred\\u202e\n'
+    """
+    return _UNSAFE.sub(lambda m: m.group().encode("unicode_escape").decode("ascii"), text)
 
 
 def _cmd_list(args):
@@ -397,10 +415,17 @@ def _cmd_derive(args):
                     budget=budget)
     document = result.to_json()
     _emit(args, document, _report_derive)
-    return 0 if result.verification.passed else 1
+    return _verdict(result.verification)
+
+
+def _verdict(verification):
+    """Exit code: 0 when the check passed or was skipped on request, 1 when it failed."""
+    return 0 if verification.status in ("passed", "skipped") else 1
 
 
 def _verification_line(v):
+    if v["status"] == "skipped":
+        return "verification skipped (--samples 0)"
     verdict = "passed" if v["passed"] else "FAILED"
     line = (f"verification {verdict}: {v['compared']} branch values on {v['samples']} samples, "
             f"max abs error {v['max_abs_error']:.2e}")
@@ -435,7 +460,7 @@ def _cmd_curve(args):
                    budget=budget)
     document = result.to_json()
     _emit(args, document, _report_curve)
-    return 0 if result.verification.passed else 1
+    return _verdict(result.verification)
 
 
 def _report_curve(d):
@@ -450,6 +475,8 @@ def _report_curve(d):
 
 
 def _cmd_verify(args):
+    if args.samples == 0:
+        raise UsageError("--samples", 0, "verify needs at least one sample (derive and curve take 0 to skip it)")
     budget = _budget(args)
     from .pipeline import derive
 
@@ -459,7 +486,7 @@ def _cmd_verify(args):
                 "branches": [b.label for b in result.branches], "timings": result.timings}
     _emit(args, document, lambda d: f"scene {d['scene']}, branches {', '.join(d['branches'])}\n"
                                      + _verification_line(d["verification"]))
-    return 0 if result.verification.passed else 1
+    return _verdict(result.verification)
 
 
 COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,

@@ -20,7 +20,8 @@ import sympy
 
 from .errors import UsageError
 from .evaluate import MPMATH, evaluate
-from .scene import load_scene
+from . import validation
+from .scene.load import as_scene
 from .system import symbol
 
 __all__ = ["load", "Mechanism", "Quantity"]
@@ -28,7 +29,7 @@ __all__ = ["load", "Mechanism", "Quantity"]
 
 def load(scene, params=()):
     """A mechanism from a catalog name, a path or a ``Scene``; ``params`` stay symbolic."""
-    return Mechanism(scene if not isinstance(scene, str) else load_scene(scene), tuple(params))
+    return Mechanism(as_scene(scene), validation.names("params", params))
 
 
 class Mechanism:
@@ -76,7 +77,7 @@ class Quantity:
 
     @cached_property
     def _problem(self):
-        from .extremum import problem_for
+        from .analyses.extremum import problem_for
 
         return problem_for(self.derivation, self.text)
 
@@ -125,7 +126,7 @@ class Quantity:
 
     def extremum(self, range=None, largest=False):  # noqa: A002 (the seed's word)
         """Critical points, minimum and maximum; closed forms in the symbolic dimensions."""
-        from .extremum import extremum_of
+        from .analyses.extremum import extremum_of
 
         return extremum_of(self.derivation, self.text, range, largest)
 

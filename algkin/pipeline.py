@@ -18,7 +18,9 @@ from .branches import certify_label, check_assembly, closed_forms
 from .eliminate import DEFAULT_METHOD, Witness, current as current_budget
 from .errors import UsageError
 from .evaluate import ARB, evaluate
-from .scene import Scene, compile_scene, load_scene
+from . import validation
+from .scene import compile_scene
+from .scene.load import as_scene
 from .system import symbol
 from .tasks import curve_task, eliminant_tasks
 from .verify import Verification, verify_branches
@@ -103,7 +105,15 @@ def _figures(elimination):
 
 
 def _scene(scene):
-    return scene if isinstance(scene, Scene) else load_scene(scene)
+    return as_scene(scene)
+
+
+def _arguments(outputs, params, samples, seed, budget):
+    """The public arguments checked, with the budget to run under."""
+    validation.count("samples", samples, validation.MAX_VERIFY_SAMPLES)
+    validation.seed(seed)
+    return (validation.names("outputs", outputs), validation.names("params", params) or (),
+            (validation.budget(budget) or current_budget()).start())
 
 
 def _tangent_samples(spec, count):
@@ -158,7 +168,7 @@ def _witness(compiled, branch, spread, k):
 def _verify(compiled, branches, samples, seed, polynomials):
     """Independent check, with symbolic parameters at their defaults."""
     if not samples:
-        return Verification(0, 0.0, True)
+        return Verification.skipped()
     system = compiled.system
     defaults = {symbol(n): compiled.parameter_values[n] for n in system.parameters}
     fixed = type(system)(system.unknowns, (), system.inputs,
@@ -220,7 +230,7 @@ def derive(scene, outputs=None, method=DEFAULT_METHOD, backend="flint", params=(
     ``certify`` also certifies each branch's label per input interval (the slowest stage);
     a ``Budget`` bounds the time of the whole derivation and the size of its eliminants.
     """
-    budget = (budget or current_budget()).start()
+    outputs, params, budget = _arguments(outputs, params, samples, seed, budget)
     start = time.perf_counter()
     compiled, timings = _compile(_scene(scene), outputs, params)
     return budget.run(functools.partial(_derive, compiled, timings, start, method, backend, samples, seed,
@@ -268,9 +278,9 @@ def curve(scene, point, method=DEFAULT_METHOD, backend="flint", params=(), sampl
 
     A ``Budget`` bounds the time of the whole computation and the size of its eliminants.
     """
-    budget = (budget or current_budget()).start()
+    _, params, budget = _arguments(None, params, samples, seed, budget)
     scene = _scene(scene)
-    if point not in scene.points:
+    if not isinstance(point, str) or point not in scene.points:
         raise UsageError("--point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
     start = time.perf_counter()
     compiled, timings = _compile(scene, [point], params)

@@ -110,7 +110,7 @@ def _within(region, x):
 
 def _certified_minimum(found, quantity, symbol, x):
     """The minimum at one dimension, by the fixed-dimension certified path (independent of the regions)."""
-    from .extremum import extreme, points_at
+    from .analyses.extremum import extreme, points_at
 
     values = {symbol: sympy.Rational(str(x))}
     return float(extreme(points_at(found.problem, found.stationary, values, *found.range)).value)

@@ -35,6 +35,13 @@ BAD_USAGE = {
     "unknown-output": (["show", "arm-string", "--outputs", "dist(A, Z)"], ["--outputs", "'Z'"]),
     "no-command": ([], ["command"]),
     "bad-samples": (["derive", "chebyshev-lambda", "--samples", "many"], ["--samples", "many"]),
+    "negative-samples": (["derive", "chebyshev-lambda", "--samples", "-1"], ["samples=-1"]),
+    "a-billion-samples": (["verify", "chebyshev-lambda", "--samples", "1000000000"], ["samples=1000000000"]),
+    "verify-zero-samples": (["verify", "chebyshev-lambda", "--samples", "0"], ["--samples", "at least one"]),
+    "negative-seed": (["verify", "chebyshev-lambda", "--seed", "-1"], ["seed=-1"]),
+    "infinite-range": (["extremum", "arm-string", "--of", "AB", "--range", "0:1e400"], ["--range", "finite"]),
+    "range-of-many-turns": (["extremum", "arm-string", "--of", "AB", "--range", "0:1e300"], ["--range", "720"]),
+    "nan-bench-budget": (["bench", "--budget", "nan"], ["--budget", "nan"]),
 }
 
 GOOD = {
@@ -132,3 +139,22 @@ def test_show_b_leaves_out_the_coupler_point(runs):
         bx, by = ax + dx / 2 - h * dy / d, ay + dy / 2 + h * dx / d
         values = {"B_x": bx, "B_y": by, "c_angle": ax, "s_angle": ay}
         assert all(abs(r) < 1e-9 for r in residuals(system, values))
+
+
+def test_zero_samples_say_skipped_not_passed(tmp_path):
+    text = run_cli(["derive", "chebyshev-lambda", "--outputs", "B", "--samples", "0"], tmp_path)
+    assert text.returncode == 0, text.stderr
+    assert "verification skipped" in text.stdout and "passed" not in text.stdout
+    document = json.loads(run_cli(["derive", "chebyshev-lambda", "--outputs", "B", "--samples", "0", "--json"],
+                                  tmp_path).stdout)
+    assert document["verification"]["status"] == "skipped" and document["verification"]["passed"] is False
+
+
+def test_terminal_escapes_in_a_scene_are_shown_escaped(tmp_path):
+    scene = tmp_path / "escapes.toml"
+    scene.write_text('name = "x\\u001b[2J\\u202eevil"\ndescription = "bell\\u0007 nul"\n'
+                     '[points]\nO = { fixed = [0, 0] }\n[outputs]\nO = "O"\n', encoding="utf-8")
+    result = run_cli(["show", str(scene)], tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert "\x1b" not in result.stdout and "\u202e" not in result.stdout and "\x07" not in result.stdout
+    assert "\\x1b[2J" in result.stdout and "\\u202e" in result.stdout

@@ -12,7 +12,7 @@ import matplotlib  # noqa: E402
 from algkin.mechanism import load  # noqa: E402
 from algkin.plot import minimum_figure, quantity_figure  # noqa: E402
 
-from .extremum.arm_by_hand import brute_minimum, hand_minimiser, hand_minimum  # noqa: E402
+from .analyses.extremum.arm_by_hand import brute_minimum, hand_minimiser, hand_minimum  # noqa: E402
 
 
 def run(*args):

@@ -57,7 +57,7 @@ def _two_circles_run():
 
 
 def _arm():
-    from ..extremum import problem_for
+    from ..analyses.extremum import problem_for
     from ..pipeline import derive
 
     problem = problem_for(derive("arm-string", ["AB"], params=["b"], samples=0), "AB")
@@ -66,7 +66,7 @@ def _arm():
 
 
 def _arm_run():
-    from ..extremum import extremum
+    from ..analyses.extremum import extremum
 
     return lambda: extremum("arm-string", "AB", params=["b"])
 

@@ -19,7 +19,9 @@ import sympy
 from ..errors import SceneError, UsageError
 from ..system import System, symbol
 from .constructions import Builder, Dyad, Slider
+from .expr import MAX_VALUE_BITS, bits_bound
 from .load import parse_output
+from .names import check_names, check_symbol_name
 
 __all__ = ["Compiled", "DyadSpec", "SliderSpec", "compile_scene"]
 
@@ -70,6 +72,7 @@ class Compiled:
 
 
 def _resolve_outputs(scene, requested):
+    generated = check_names(scene)  # a scene built in Python has not been through the loader
     outputs = []
     for text in requested or list(scene.outputs):
         if text in scene.outputs:
@@ -78,6 +81,9 @@ def _resolve_outputs(scene, requested):
         output = parse_output(text, text, scene.points, scene.source, "--outputs")
         if output.kind == "dist":
             output = dataclasses.replace(output, name=f"dist_{output.points[0]}_{output.points[1]}")
+            if output.name in scene.parameters:
+                raise UsageError("--outputs", text, f"its unknown {output.name!r} is the name of a parameter")
+            check_symbol_name(scene.source, "--outputs", output.name, generated)
         outputs.append(output)
     if not outputs:
         raise SceneError(scene.source, "outputs", "the scene has no outputs; name some with --outputs")
@@ -115,13 +121,17 @@ def _parameter_values(scene, symbolic):
             known = ", ".join(scene.parameters) or "none"
             raise UsageError("--param", name, f"not a parameter of {scene.name} (parameters: {known})")
     symbols = scene.parameter_symbols()
-    defaults, substitution = {}, {}
+    defaults, substitution, bits = {}, {}, {}
     for name, default in scene.parameters.items():
+        bits[name] = bits_bound(sympy.sympify(default), bits)
+        if bits[name] > MAX_VALUE_BITS:
+            raise SceneError(scene.source, f"parameters.{name}", f"its value with the defaults above it could "
+                             f"reach {bits[name]} bits (at most {MAX_VALUE_BITS})")
         defaults[name] = default.xreplace(defaults_subs(defaults, symbols))
         _check_finite(scene, f"parameters.{name}", defaults[name])
         if name not in symbolic:
             substitution[symbols[name]] = defaults[name]
-    return defaults, substitution
+    return defaults, substitution, bits
 
 
 def defaults_subs(defaults, symbols):
@@ -135,7 +145,7 @@ def compile_scene(scene, outputs=None, params=()):
     Parameters named in ``params`` stay symbolic; the others take their exact defaults.
     """
     symbolic = tuple(params)
-    defaults, substitution = _parameter_values(scene, symbolic)
+    defaults, substitution, bits = _parameter_values(scene, symbolic)
     outputs = _resolve_outputs(scene, outputs)
     points = _needed_points(scene, outputs)
     used_inputs = {scene.points[p].input for p in points if hasattr(scene.points[p], "input")}
@@ -143,6 +153,7 @@ def compile_scene(scene, outputs=None, params=()):
     builder = Builder(inputs)
     coords = {}
     for name in points:
+        _check_bits(scene, name, scene.points[name], bits)
         construction = _substituted(scene.points[name], substitution)
         for value in vars(construction).values():
             for item in value if isinstance(value, tuple) else (value,):
@@ -202,6 +213,15 @@ def _check_finite(scene, element, value):
     ):
         raise SceneError(scene.source, element,
                          f"not a finite real number with the parameters' default values: {value}")
+
+
+def _check_bits(scene, name, construction, bits):
+    """Refuse, before substituting, a coordinate or length whose value would be huge."""
+    for value in vars(construction).values():
+        for item in value if isinstance(value, tuple) else (value,):
+            if isinstance(item, sympy.Basic) and bits_bound(item, bits) > MAX_VALUE_BITS:
+                raise SceneError(scene.source, f"points.{name}", f"{item} could reach {bits_bound(item, bits)} "
+                                 f"bits with the parameters' defaults (at most {MAX_VALUE_BITS})")
 
 
 def _check_polynomial(scene, equations, symbolic):

@@ -21,12 +21,13 @@ from fractions import Fraction
 
 import sympy
 
-__all__ = ["parse", "exact_number", "MAX_EXPRESSION_LENGTH", "MAX_NUMBER_BITS"]
+__all__ = ["parse", "exact_number", "bits_bound", "MAX_EXPRESSION_LENGTH", "MAX_NUMBER_BITS", "MAX_VALUE_BITS"]
 
 MAX_EXPRESSION_LENGTH = 500
 MAX_DEPTH = 40
 MAX_EXPONENT = 64
 MAX_NUMBER_BITS = 1024  # numerators and denominators, about 308 decimal digits
+MAX_VALUE_BITS = 64 * MAX_NUMBER_BITS  # a value after parameters are substituted into it
 _MAX_DECIMAL_EXPONENT = 4 * MAX_NUMBER_BITS  # keeps Fraction("1e...") cheap before the bit check
 
 _TOKEN = re.compile(
@@ -52,6 +53,26 @@ def exact_number(text):
         raise ValueError(f"decimal exponent out of range (at most {_MAX_DECIMAL_EXPONENT}): {text!r}")
     _check_size(value.numerator, value.denominator)
     return sympy.Rational(value.numerator, value.denominator)
+
+
+def bits_bound(expr, bits):
+    """An upper bound on the bits of ``expr``'s value once its symbols take values of
+    ``bits[name]`` bits, found before anything is evaluated: chained powers such as
+    ``p2 = p1**64`` grow past memory unless refused in advance.
+
+    >>> import sympy
+    >>> p = sympy.Symbol("p")
+    >>> bits_bound(p**64 + 1, {"p": 65})   # 65 * 64 bits, one for the 1, a carry per term
+    4163
+    """
+    if expr.is_Rational:
+        return max(abs(expr.p).bit_length(), abs(expr.q).bit_length())
+    if expr.is_Symbol:
+        return bits.get(expr.name, 1)
+    if expr.is_Pow and expr.exp.is_Integer:
+        return bits_bound(expr.base, bits) * abs(int(expr.exp))
+    # A sum or product of rationals has at most the summed bits of its parts (plus carries).
+    return sum(bits_bound(arg, bits) for arg in expr.args) + len(expr.args)
 
 
 def _check_size(numerator, denominator=1):

@@ -11,6 +11,7 @@ algkin.errors.SceneError: bad.toml: points.A.fixed: unknown name 'q' (known: non
 
 import os
 import re
+import stat
 
 try:
     import tomllib
@@ -19,12 +20,13 @@ except ModuleNotFoundError:  # Python 3.10
 
 import sympy
 
-from ..errors import SceneError
+from ..errors import SceneError, UsageError
 from .constructions import CONSTRUCTIONS, Crank, Dyad, Fixed, Frame, Slider
 from .expr import exact_number, parse
-from .model import Input, Output, Scene
+from .model import Input, Output, Scene, range_problem
+from .names import check_names
 
-__all__ = ["load_scene", "load_scene_text", "catalog_names", "MAX_SCENE_BYTES"]
+__all__ = ["load_scene", "load_scene_text", "as_scene", "catalog_names", "MAX_SCENE_BYTES"]
 
 MAX_SCENE_BYTES = 256 * 1024
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
@@ -57,18 +59,29 @@ def load_scene(name_or_path):
         else:
             known = ", ".join(catalog_names())
             raise SceneError(path, "", f"no such file and no catalog scene of that name (catalog: {known})")
-    if os.path.isdir(path):
-        raise SceneError(path, "", "is a directory, not a scene file")
-    if os.path.getsize(path) > MAX_SCENE_BYTES:
-        raise SceneError(path, "", f"file larger than {MAX_SCENE_BYTES} bytes")
-    with open(path, "rb") as handle:
-        data = handle.read(MAX_SCENE_BYTES + 1)
+    data = _read(path)
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as err:
         raise SceneError(path, "", f"not UTF-8 text ({err.reason} at byte {err.start})") from None
     label = os.path.basename(path) if path.startswith(_CATALOG) else path
     return load_scene_text(text, label)
+
+
+def _read(path):
+    """The bytes of a scene file: a regular file (a FIFO or device would block or never end)."""
+    try:
+        status = os.stat(path)
+        if stat.S_ISDIR(status.st_mode):
+            raise SceneError(path, "", "is a directory, not a scene file")
+        if not stat.S_ISREG(status.st_mode):
+            raise SceneError(path, "", "is not a regular file (a pipe or a device?)")
+        if status.st_size > MAX_SCENE_BYTES:
+            raise SceneError(path, "", f"file larger than {MAX_SCENE_BYTES} bytes")
+        with open(path, "rb") as handle:
+            return handle.read(MAX_SCENE_BYTES + 1)
+    except OSError as err:
+        raise SceneError(path, "", f"cannot read: {err.strerror or err}") from None
 
 
 def load_scene_text(text, source="<scene>"):
@@ -128,7 +141,9 @@ class _Loader:
         inputs = self.inputs(self.table(data, "inputs", "inputs"))
         points = self.points(self.table(data, "points", "points"), inputs)
         outputs = self.outputs(self.table(data, "outputs", "outputs"), points, inputs, parameters)
-        return Scene(name, description, parameters, inputs, points, outputs, self.source)
+        scene = Scene(name, description, parameters, inputs, points, outputs, self.source)
+        check_names(scene)
+        return scene
 
     def parameters(self, table):
         defaults = {}
@@ -164,6 +179,9 @@ class _Loader:
             if not lo < hi:
                 self.fail(f"{element}.range", f"empty range [{lo}, {hi}]")
             inputs[name] = Input(name, lo, hi, unit)
+            problem = range_problem(*inputs[name].range_degrees)
+            if problem:
+                self.fail(f"{element}.range", f"[{float(lo):g}, {float(hi):g}] {unit} {problem}")
         return inputs
 
     def number(self, value, element):
@@ -324,3 +342,28 @@ def parse_output(name, text, points, source="<scene>", element=None):
         if ref not in points:
             raise SceneError(source, element, f"unknown point {ref!r} in {text!r}")
     return Output(name, kind, tuple(refs), text)
+
+
+def as_scene(scene):
+    """A ``Scene`` from a catalog name, a path, or a ``Scene`` (checked as a loaded file is).
+
+    A scene built or changed in Python has not been through the loader: it is written
+    out and read back, so it meets the same checks and one-line errors as a file.
+
+    >>> as_scene(42)
+    Traceback (most recent call last):
+    ...
+    algkin.errors.UsageError: scene=42: expected a catalog name, a path or a Scene
+    """
+    from .dump import dump_scene
+
+    if isinstance(scene, (str, os.PathLike)):
+        return load_scene(scene)
+    if not isinstance(scene, Scene):
+        raise UsageError("scene", scene, "expected a catalog name, a path or a Scene")
+    source = scene.source if isinstance(scene.source, str) else "<scene>"
+    try:
+        text = dump_scene(scene)
+    except (AttributeError, KeyError, TypeError, ValueError) as err:
+        raise SceneError(source, "", f"not a valid scene: {err}") from None
+    return load_scene_text(text, source)

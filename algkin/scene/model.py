@@ -4,7 +4,27 @@ from dataclasses import dataclass, field
 
 import sympy
 
-__all__ = ["Scene", "Input", "Output"]
+__all__ = ["Scene", "Input", "Output", "range_problem"]
+
+# The motion repeats after a turn; a range past two turns or far from zero only multiplies
+# the work (certificates and samples are spread over it).
+MAX_SPAN_DEGREES = 720
+MAX_ABS_DEGREES = 36000
+
+
+def range_problem(lo_deg, hi_deg):
+    """What is wrong with an input range in degrees, or None.
+
+    >>> range_problem(0, 1e300)
+    'spans more than 720 degrees (two turns)'
+    """
+    if not lo_deg < hi_deg:  # NaN too
+        return "lo must be below hi"
+    if hi_deg - lo_deg > MAX_SPAN_DEGREES:
+        return f"spans more than {MAX_SPAN_DEGREES} degrees (two turns)"
+    if max(abs(lo_deg), abs(hi_deg)) > MAX_ABS_DEGREES:
+        return f"must lie within [-{MAX_ABS_DEGREES}, {MAX_ABS_DEGREES}] degrees"
+    return None
 
 
 @dataclass(frozen=True)

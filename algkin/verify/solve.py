@@ -16,7 +16,7 @@ from ..system import symbol
 
 __all__ = ["Blocks", "solve_all"]
 
-STARTS = 32
+STARTS = 64
 FLOAT_STEPS = 60
 POLISH_STEPS = 12
 

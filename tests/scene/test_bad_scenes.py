@@ -134,3 +134,27 @@ def test_parameter_that_cannot_stay_symbolic(tmp_path):
     workdir = tmp_path / "cwd"
     workdir.mkdir()
     assert_refused(run_cli(["derive", path, "--param", "a"], workdir), path, ["--param", "'a'"], workdir)
+
+
+def test_fifo_is_refused_without_blocking(tmp_path):
+    # open() on a FIFO with no writer blocked forever.
+    path = tmp_path / "scene.toml"
+    os.mkfifo(path)
+    workdir = tmp_path / "cwd"
+    workdir.mkdir()
+    assert_refused(run_cli(["show", path], workdir, timeout=30), path, ["not a regular file"], workdir)
+
+
+def test_unreadable_file_is_one_line(tmp_path, monkeypatch):
+    from algkin.errors import SceneError
+    from algkin.scene import load_scene
+
+    path = tmp_path / "secret.toml"
+    path.write_text('[points]\nO = { fixed = [0, 0] }\n', encoding="utf-8")
+
+    def refuse(*args, **kwargs):
+        raise PermissionError(13, "Permission denied")
+
+    monkeypatch.setattr("builtins.open", refuse)  # chmod 000 does not stop root
+    with pytest.raises(SceneError, match="cannot read: Permission denied"):
+        load_scene(path)

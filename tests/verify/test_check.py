@@ -1,11 +1,15 @@
 """Verification must catch wrong closed forms, swapped labels and missing branches."""
 
+from importlib.resources import files
+
+import pytest
 import sympy
 
 import algkin
 from algkin.branches import closed_forms
+from algkin.errors import UsageError
 from algkin.pipeline import _verify
-from algkin.scene import compile_scene, load_scene
+from algkin.scene import compile_scene, load_scene, load_scene_text
 
 
 def lambda_setup():
@@ -58,3 +62,59 @@ def test_seed_is_deterministic():
     a = algkin.derive("chebyshev-lambda", ["B"], samples=5, seed=11).verification
     b = algkin.derive("chebyshev-lambda", ["B"], samples=5, seed=11).verification
     assert a.to_json() == b.to_json()
+
+
+# A check that compared nothing never says "passed" (SPEC §7).
+
+def test_zero_samples_is_skipped_not_passed():
+    result = algkin.derive("chebyshev-lambda", outputs=["B"], samples=0, certify=False)
+    assert result.verification.status == "skipped"
+    assert not result.verification.passed
+    assert result.to_json()["verification"]["status"] == "skipped"
+
+
+def test_negative_samples_are_bad_input():
+    with pytest.raises(UsageError, match="samples=-1"):
+        algkin.derive("chebyshev-lambda", outputs=["B"], samples=-1)
+
+
+def test_nothing_to_compare_fails():
+    compiled, _ = lambda_setup()
+    report = _verify(compiled, [], 3, 1, {})
+    assert report.status == "failed" and not report.passed
+    assert any("nothing to compare" in f for f in report.failures)
+
+
+def test_lambda_at_1e_minus_300_fails_having_compared_nothing():
+    # Every sample of this scale is judged near a degenerate configuration: the old check
+    # passed with 0 of 40 samples compared.
+    text = (LAMBDA_TEXT.replace('D = { fixed = [2, 0] }', 'D = { fixed = ["2*k", 0] }')
+            .replace('length = 1,', 'length = "k",').replace('["5/2", "5/2"]', '["5/2*k", "5/2*k"]'))
+    scene = load_scene_text(text.replace("[inputs]", '[parameters]\nk = "1e-300"\n\n[inputs]'), "tiny.toml")
+    verification = algkin.derive(scene, outputs=["B"], samples=5, certify=False).verification
+    assert verification.compared == 0
+    assert not verification.passed and verification.status == "failed"
+    assert any("no branch value compared" in f for f in verification.failures)
+
+
+def test_narrow_assembly_range_is_still_compared():
+    # Crank 41/8, ground 5, bars 1/2 and 5/2: B assembles on about 6% of the turn, so
+    # uniform samples mostly land where nothing can be compared; more are drawn there.
+    text = (LAMBDA_TEXT.replace('D = { fixed = [2, 0] }', 'D = { fixed = [5, 0] }')
+            .replace('length = 1,', 'length = "41/8",').replace('["5/2", "5/2"]', '["1/2", "5/2"]'))
+    verification = algkin.derive(load_scene_text(text, "narrow.toml"), outputs=["B"], samples=3,
+                                 certify=False).verification
+    assert verification.passed, verification.failures
+    assert verification.compared >= 3
+
+
+def test_wrong_sign_in_a_closed_form_is_caught():
+    compiled, branches = lambda_setup()
+    left = branches[0]
+    flipped = dict(left.values, B_y=-left.values["B_y"])
+    report = _verify(compiled, [type(left)(left.label, left.labels, flipped, left.discriminants, True),
+                                branches[1]], 5, 1, {})
+    assert not report.passed
+
+
+LAMBDA_TEXT = (files("algkin.catalog") / "chebyshev-lambda.toml").read_text(encoding="utf-8")

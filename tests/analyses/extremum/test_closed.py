@@ -5,7 +5,7 @@ import pytest
 import sympy
 from hypothesis import given, settings, strategies as st
 
-from algkin.extremum import extremum
+from algkin.analyses.extremum import extremum
 
 from .arm_by_hand import brute_minimum, hand_minimiser, hand_minimum
 

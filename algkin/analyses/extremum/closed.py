@@ -24,8 +24,8 @@ import flint
 import mpmath
 import sympy
 
-from ..eliminate import eliminate
-from ..system.convert import real_roots
+from ...eliminate import eliminate
+from ...system.convert import real_roots
 from .critical import DIGITS, ROOT_BITS, extreme, points_at
 
 __all__ = ["ClosedForm", "closed_form", "value_factors"]

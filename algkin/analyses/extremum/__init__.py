@@ -14,9 +14,10 @@ from dataclasses import dataclass
 
 import sympy
 
-from ..errors import UsageError
-from ..pipeline import derive
-from ..system import symbol
+from ...errors import UsageError
+from ...scene.model import range_problem
+from ...pipeline import derive
+from ...system import symbol
 from .closed import ClosedForm, closed_form
 from .critical import CriticalPoint, Problem, critical_points, extreme, points_at, stationary_factors
 
@@ -69,9 +70,13 @@ def problem_for(derived, output):
 def _range_degrees(spec, angle_range):
     lo, hi = angle_range if angle_range is not None else (spec.lo, spec.hi)
     to_degrees = lambda v: sympy.Rational(str(v)) * (1 if spec.unit == "deg" else 180 / sympy.pi)  # noqa: E731
-    lo, hi = to_degrees(lo), to_degrees(hi)
-    if not lo < hi:
-        raise UsageError("--range", f"{lo}:{hi}", "lo must be below hi")
+    try:
+        lo, hi = to_degrees(lo), to_degrees(hi)
+    except (TypeError, ValueError, sympy.SympifyError):
+        raise UsageError("--range", angle_range, "expected two finite numbers (lo, hi)") from None
+    problem = range_problem(float(lo), float(hi)) if lo.is_finite and hi.is_finite else "must be finite"
+    if problem:
+        raise UsageError("--range", f"{float(lo):g}:{float(hi):g}", problem)
     return lo, hi
 
 

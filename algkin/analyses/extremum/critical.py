@@ -14,11 +14,11 @@ import flint
 import mpmath
 import sympy
 
-from ..eliminate import eliminate
-from ..errors import ComputationError, UsageError
-from ..evaluate import MPMATH, evaluate
-from ..system.angles import half_angle_numerator, tangent_to_degrees
-from ..system.convert import real_roots
+from ...eliminate import eliminate
+from ...errors import ComputationError, UsageError
+from ...evaluate import MPMATH, evaluate
+from ...system.angles import half_angle_numerator, tangent_to_degrees
+from ...system.convert import real_roots
 
 __all__ = ["Problem", "CriticalPoint", "critical_points", "points_at", "extreme",
            "stationary_factors", "ROOT_BITS"]

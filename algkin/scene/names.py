@@ -1,0 +1,82 @@
+"""Names algkin generates beside the scene's own, kept apart from them.
+
+A point ``P`` brings the variables ``P_x`` and ``P_y``, an input ``t`` the pair ``c_t``,
+``s_t`` (and ``t_t``, its half-angle tangent, where an extremum is sought), and a
+distance output its own name as an unknown. A parameter or output that takes one of
+those names, or two generated names that coincide (a point ``c`` and an input ``x`` both
+give ``c_x``), would silently merge two variables into one: that is bad input. So is a
+symbol name that ``sympy.parse_expr`` reads back as something else (``E``, ``I``,
+``lambda``), since the expression strings in ``--json`` must read back as written.
+
+>>> from algkin.scene import load_scene_text
+>>> load_scene_text('[parameters]\\nB_x = 1\\n[points]\\nB = { fixed = [0, 0] }', "s.toml")
+Traceback (most recent call last):
+...
+algkin.errors.SceneError: s.toml: parameters.B_x: the name 'B_x' is taken by the x coordinate of point B
+>>> misread("E"), misread("lambda"), misread("e")
+(True, True, False)
+"""
+
+import keyword
+from functools import lru_cache
+
+from ..errors import SceneError
+
+__all__ = ["generated_names", "check_names", "check_symbol_name", "misread"]
+
+
+@lru_cache(maxsize=1)
+def _sympy_namespace():
+    import sympy
+
+    return frozenset(sympy.__all__)  # what ``parse_expr`` sees: ``from sympy import *``
+
+
+def misread(name):
+    """Whether ``sympy.parse_expr(name)`` gives something other than the symbol ``name``."""
+    return keyword.iskeyword(name) or name in _sympy_namespace()
+
+
+def generated_names(scene):
+    """Every variable name algkin makes for ``scene``, with what it stands for."""
+    made = {}
+    owners = [(f"{p}_{axis}", f"the {axis} coordinate of point {p}", f"points.{p}")
+              for p in scene.points for axis in "xy"]
+    owners += [(f"{prefix}_{t}", f"the {what} of input {t}", f"inputs.{t}")
+               for t in scene.inputs for prefix, what in
+               (("c", "cosine"), ("s", "sine"), ("t", "half-angle tangent"))]
+    for name, meaning, element in owners:
+        if name in made:
+            raise SceneError(scene.source, element,
+                             f"generates the variable {name!r}, which is already {made[name]}; rename one of them")
+        made[name] = meaning
+    return made
+
+
+def check_symbol_name(source, element, name, generated):
+    """Refuse a user name that would stand for a generated variable or read back wrongly."""
+    if name in generated:
+        raise SceneError(source, element, f"the name {name!r} is taken by {generated[name]}")
+    if misread(name):
+        what = "a Python keyword" if keyword.iskeyword(name) else f"sympy's {name}"
+        raise SceneError(source, element, f"the name {name!r} would read back as {what}, not as a symbol, "
+                                          "from expression strings; choose another")
+
+
+def check_names(scene):
+    """Raise SceneError if any scene name collides with a generated one (see the module doc)."""
+    generated = generated_names(scene)
+    for name in scene.parameters:
+        check_symbol_name(scene.source, f"parameters.{name}", name, generated)
+    for name, output in scene.outputs.items():
+        element = f"outputs.{name}"
+        if output.kind == "dist":
+            check_symbol_name(scene.source, element, name, generated)
+        elif name in generated and name != _coordinate_name(output):
+            raise SceneError(scene.source, element, f"the name {name!r} is taken by {generated[name]}")
+    return generated
+
+
+def _coordinate_name(output):
+    """The variable an ``P.x``/``P.y`` output stands for (None for other kinds)."""
+    return f"{output.points[0]}_{output.kind}" if output.kind in ("x", "y") else None

@@ -1,0 +1,68 @@
+"""Checks of the public API's arguments: a misuse raises algkin's own error, naming the argument.
+
+>>> names("outputs", ["B", "P"])
+('B', 'P')
+>>> names("outputs", "PB")
+Traceback (most recent call last):
+...
+algkin.errors.UsageError: outputs='PB': expected a list of names such as ['PB'], not a string
+>>> count("samples", -1, MAX_VERIFY_SAMPLES)
+Traceback (most recent call last):
+...
+algkin.errors.UsageError: samples=-1: expected a whole number from 0 to 10000
+>>> seed(2.5)
+Traceback (most recent call last):
+...
+algkin.errors.UsageError: seed=2.5: expected a whole number from 0 to 18446744073709551615
+"""
+
+import numbers
+from collections.abc import Mapping
+
+from .errors import UsageError
+
+__all__ = ["names", "count", "seed", "budget", "MAX_VERIFY_SAMPLES", "MAX_ACCURACY_SAMPLES"]
+
+# Each verification sample is solved at 50 digits (milliseconds); each accuracy sample
+# holds a few floats per strategy and case. Past these a run takes hours or the memory.
+MAX_VERIFY_SAMPLES = 10_000
+MAX_ACCURACY_SAMPLES = 1_000_000
+
+
+def names(argument, value):
+    """A tuple of names from a list (a lone string is a mistake: it would split into letters)."""
+    if value is None:
+        return None
+    if isinstance(value, str):
+        raise UsageError(argument, value, f"expected a list of names such as [{value!r}], not a string")
+    if isinstance(value, Mapping):
+        raise UsageError(argument, value, "expected a list of names, not a mapping (values come from the scene)")
+    try:
+        items = tuple(value)
+    except TypeError:
+        raise UsageError(argument, value, "expected a list of names") from None
+    for item in items:
+        if not isinstance(item, str):
+            raise UsageError(argument, value, f"expected names (strings), got {item!r}")
+    return items
+
+
+def count(argument, value, limit, minimum=0):
+    """A whole number from ``minimum`` to ``limit``."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or not minimum <= value <= limit:
+        raise UsageError(argument, value, f"expected a whole number from {minimum} to {limit}")
+    return int(value)
+
+
+def seed(value):
+    """A random seed numpy accepts: a whole number from 0 to 2**64 - 1."""
+    return count("seed", value, 2**64 - 1)
+
+
+def budget(value):
+    """None or a ``Budget``."""
+    from .eliminate.budget import Budget
+
+    if value is not None and not isinstance(value, Budget):
+        raise UsageError("budget", value, "expected an algkin.eliminate.Budget, e.g. Budget(seconds=10)")
+    return value

@@ -1,0 +1,87 @@
+"""Misuse of the Python API raises algkin's own errors, naming the argument (issue: hostile input)."""
+
+import dataclasses
+
+import pytest
+import sympy
+
+import algkin
+from algkin.errors import AlgkinError, SceneError, UsageError
+from algkin.scene import load_scene
+from algkin.scene.constructions import Dyad
+
+
+def test_extremum_stays_a_function_after_its_first_call():
+    first = algkin.extremum("arm-string", "AB", (0, 180))
+    second = algkin.extremum("arm-string", "AB", (0, 180))  # was the submodule: "'module' object is not callable"
+    assert callable(algkin.extremum)
+    assert first.minimum.value == second.minimum.value
+
+
+@pytest.mark.parametrize("argument, value", [("outputs", "PB"), ("params", "ad")])
+def test_a_string_for_a_list_of_names_is_refused(argument, value):
+    # "PB" used to be split into the outputs P and B.
+    with pytest.raises(UsageError, match=f"{argument}='{value}'"):
+        algkin.derive("fourbar", **{argument: value}, samples=0)
+
+
+@pytest.mark.parametrize("argument, value", [
+    ("samples", "3"), ("samples", 2.5), ("samples", -1), ("samples", True), ("samples", 10**9),
+    ("seed", -1), ("seed", "0"), ("seed", 2**64), ("budget", 5),
+])
+def test_bad_numbers_and_budgets_name_the_argument(argument, value):
+    with pytest.raises(UsageError, match=f"^{argument}="):
+        algkin.derive("chebyshev-lambda", outputs=["B"], **{argument: value})
+
+
+def test_curve_of_a_point_that_is_not_a_name():
+    with pytest.raises(UsageError, match="--point"):
+        algkin.curve("chebyshev-lambda", 3)
+
+
+def test_a_scene_that_is_not_a_scene():
+    with pytest.raises(UsageError, match="scene=3.5"):
+        algkin.derive(3.5)
+
+
+def test_hand_built_scene_with_an_unknown_point_is_a_scene_error():
+    scene = load_scene("chebyshev-lambda")
+    broken = dataclasses.replace(scene, points={**scene.points, "B": Dyad(("A", "Z"), (1, 1), "left")})
+    with pytest.raises(SceneError, match="unknown point 'Z'"):
+        algkin.derive(broken, outputs=["B"], samples=0)
+
+
+def test_hand_built_scene_with_int_parameters_works():
+    scene = load_scene("fourbar")
+    changed = dataclasses.replace(scene, parameters={**scene.parameters, "a": 3})
+    result = algkin.derive(changed, outputs=["B"], samples=2, certify=False)
+    assert result.compiled.parameter_values["a"] == 3
+    assert result.verification.passed
+
+
+def test_load_with_a_mapping_of_params_is_refused():
+    # {"a": 1.5} silently made a symbolic and ignored 1.5.
+    with pytest.raises(UsageError, match="params="):
+        algkin.load("fourbar", params={"a": 1.5})
+
+
+def test_every_error_is_an_algkin_error():
+    for call in (lambda: algkin.derive("chebyshev-lambda", outputs="B"),
+                 lambda: algkin.load(None),
+                 lambda: algkin.extremum("arm-string", "AB", ("a", "b"))):
+        with pytest.raises(AlgkinError):
+            call()
+
+
+def test_symbolic_outputs_read_back_through_parse_expr():
+    # SPEC §3: expression strings read back with sympy.parse_expr to the same expression.
+    result = algkin.derive("fourbar", outputs=["B"], params=["a", "l"], samples=0)
+    document = result.to_json()
+    expressions = [(document["eliminants"][u], e.polynomial) for u, e in result.eliminations.items()]
+    expressions += [(text, eq) for text, eq in zip(document["system"]["equations"], result.compiled.system.equations)]
+    for branch, written in zip(result.branches, document["branches"]):
+        expressions += [(written["values"][u], v) for u, v in branch.values.items()]
+    assert len(expressions) > 6
+    for text, expr in expressions:
+        plain = expr.xreplace({s: sympy.Symbol(s.name) for s in expr.free_symbols})  # parse_expr's symbols
+        assert sympy.simplify(sympy.parse_expr(text) - plain) == 0, text
