@@ -150,6 +150,10 @@ def _cmd_bench(args):
         raise UsageError("--budget", args.budget, "must be a positive number of seconds")
     if args.rounds < 1:
         raise UsageError("--rounds", args.rounds, "must be at least 1")
+    if args.out:
+        from .files import check_directory
+
+        check_directory("--out", args.out)
     progress = _progress if sys.stderr.isatty() else None  # a terminal watches; a log or a pipe does not
     report = bench(args.problems, args.methods, args.backends, args.budget, not args.no_peers, progress,
                    args.rounds)
@@ -266,15 +270,20 @@ def _cmd_accuracy(args):
         raise UsageError("--samples", args.samples, "needs at least 10 samples per case")
     out = _figure_path("--plot", args.plot) if args.plot else None
 
-    def measure():  # the figure is drawn where the measurement is, inside the budget
+    def measure():  # the figure is drawn where the measurement is, inside the budget ...
         result = accuracy(args.scene, args.samples, args.seed)
-        if out is not None:
-            from .plot import accuracy_figure, save
+        if out is None:
+            return result.to_json(), None
+        from .plot import accuracy_figure, image
 
-            save(accuracy_figure(result), out)
-        return result.to_json()
+        return result.to_json(), image(accuracy_figure(result), out.suffix)
 
-    _emit(args, budget.run(measure), _report_accuracy)
+    document, figure = budget.run(measure)
+    if figure is not None:  # ... and written here, where an interrupt can still clean up
+        from .files import write_atomic
+
+        write_atomic(out, figure)
+    _emit(args, document, _report_accuracy)
     return 0
 
 
@@ -291,13 +300,13 @@ def _report_accuracy(d):
 def _figure_path(option, text):
     import pathlib
 
+    from .files import check_output
     from .plot import FORMATS
 
     out = pathlib.Path(text)
     if out.suffix.lower() not in FORMATS:
         raise UsageError(option, text, f"unknown figure format; valid: {', '.join(FORMATS)}")
-    if not out.parent.is_dir():
-        raise UsageError(option, text, "its directory does not exist")
+    check_output(option, text)
     return out
 
 

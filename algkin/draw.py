@@ -15,6 +15,7 @@ import numpy as np
 import sympy
 
 from .errors import UsageError
+from .files import atomic_output, check_output
 from .plot import _figure
 
 __all__ = ["mechanism_figure", "modes_figure", "draw_pose", "draw_curve", "animate", "parse_inputs", "plot_mechanism", "FORMATS"]
@@ -86,7 +87,7 @@ def draw_curve(axes, result, bounds, grid=500):
 def _finish(axes, title, adjustable="datalim"):
     axes.set_aspect("equal", adjustable=adjustable)
     axes.grid(True, linewidth=0.3)
-    axes.set_title(title, fontsize="medium")
+    axes.set_title(title, fontsize="medium", parse_math=False)  # a scene's name is text, never mathtext
 
 
 def mechanism_figure(motion, inputs=None, parameters=None, branch=None, curve=True):
@@ -131,7 +132,7 @@ def modes_figure(motion, inputs=None, parameters=None):
         # Shared axes cannot each stretch their data limits: keep equal scales by the box.
         _finish(axes, f"{branch.label}" + (" (scene's choice)" if branch.selected else ""), "box")
     angles = ", ".join(f"{n} = {v:g}°" for n, v in motion.complete(inputs)[0].items())
-    figure.suptitle(f"{motion.scene.name}: assembly modes at {angles}")
+    figure.suptitle(f"{motion.scene.name}: assembly modes at {angles}", parse_math=False)
     return figure
 
 
@@ -162,7 +163,8 @@ def animate(motion, out, parameters=None, branch=None, frames=72, fps=24):
     movie = animation.FuncAnimation(figure, frame, frames=motion.poses(parameters, branch, frames),
                                     cache_frame_data=False)
     writer = animation.PillowWriter(fps=fps) if suffix == ".gif" else animation.FFMpegWriter(fps=fps)
-    movie.save(str(out), writer=writer, dpi=80)
+    with atomic_output(out) as temporary:  # the writers infer the format from the kept suffix
+        movie.save(str(temporary), writer=writer, dpi=80)
     return out
 
 
@@ -191,9 +193,13 @@ def parse_inputs(motion, texts):
 
 
 def plot_mechanism(scene, out, inputs=(), branch=None, modes=False, params=None):
-    """``algkin plot SCENE --out F``: the format follows the suffix of ``out``; returns ``out``."""
+    """``algkin plot SCENE --out F``: the format follows the suffix of ``out``; returns ``out``.
+
+    A scene whose chosen assembly mode never assembles is refused before ``out`` is touched.
+    """
     import pathlib
 
+    from .branches import check_assembly
     from .motion import Motion
     from .plot import save
 
@@ -201,13 +207,13 @@ def plot_mechanism(scene, out, inputs=(), branch=None, modes=False, params=None)
     suffix = path.suffix.lower()
     if suffix not in FORMATS:
         raise UsageError("--out", out, f"unknown format; valid: {', '.join(FORMATS)}")
-    if not path.parent.is_dir():
-        raise UsageError("--out", out, "its directory does not exist")
+    check_output("--out", out)
     if modes and branch is not None:
         raise UsageError("--branch", branch, "--modes draws every assembly mode; leave out --branch")
     motion = Motion(scene, params)
     chosen = parse_inputs(motion, inputs) or None
     motion.branch_index(branch)  # a bad --branch fails before anything is drawn
+    check_assembly(motion.compiled, motion.branches)
     if suffix == ".html":
         from .html import write
 

@@ -11,6 +11,9 @@ True
 >>> import pickle
 >>> str(pickle.loads(pickle.dumps(UsageError("--point", "P", "not a point"))))
 "--point='P': not a point"
+>>> err = pickle.loads(pickle.dumps(OutputError("/dev/full", "No space left on device")))
+>>> str(err), isinstance(err, OSError)
+("cannot write '/dev/full': No space left on device", True)
 """
 
 __all__ = [
@@ -19,6 +22,7 @@ __all__ = [
     "UsageError",
     "BudgetExceeded",
     "ComputationError",
+    "OutputError",
 ]
 
 
@@ -59,3 +63,15 @@ class BudgetExceeded(AlgkinError, RuntimeError):
 
 class ComputationError(AlgkinError, ArithmeticError):
     """The algebra could not be completed (inconsistent system, failed selection...)."""
+
+
+class OutputError(AlgkinError, OSError):
+    """A file could not be written (disk full, permission lost...); any earlier file is left as it was."""
+
+    def __init__(self, path, message):
+        self.path = str(path)
+        self.message = message
+        super().__init__(f"cannot write {self.path!r}: {message}")
+
+    def __reduce__(self):
+        return type(self), (self.path, self.message)

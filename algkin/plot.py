@@ -9,12 +9,16 @@ Figures are built on ``matplotlib.figure.Figure`` with the Agg canvas, never thr
   with certified minima at sample dimensions drawn on top (they must lie on the line).
 """
 
+import io
+import pathlib
+
 import numpy as np
 import sympy
 
 from .errors import AlgkinError, UsageError
+from .files import write_atomic
 
-__all__ = ["quantity_figure", "minimum_figure", "accuracy_figure", "bench_figure", "save", "FORMATS"]
+__all__ = ["quantity_figure", "minimum_figure", "accuracy_figure", "bench_figure", "save", "image", "FORMATS"]
 
 FORMATS = (".png", ".svg", ".pdf")
 
@@ -30,9 +34,17 @@ def _figure():
     return figure
 
 
+def image(figure, suffix):
+    """The bytes of ``figure`` in the format of ``suffix`` (.png, .svg or .pdf), drawn before any
+    file is opened: a figure that fails to draw leaves nothing behind."""
+    buffer = io.BytesIO()
+    figure.savefig(buffer, format=suffix.lower().lstrip("."), dpi=120)
+    return buffer.getvalue()
+
+
 def save(figure, out):
-    """Write ``figure`` to ``out`` (.png, .svg or .pdf)."""
-    figure.savefig(out, dpi=120)
+    """Write ``figure`` to ``out`` (.png, .svg or .pdf), replacing any earlier file only once complete."""
+    write_atomic(out, image(figure, pathlib.Path(out).suffix))
     return out
 
 
@@ -68,7 +80,8 @@ def quantity_figure(quantity, found, derivative=False, points=721):
                   textcoords="offset points", xytext=(8, 8))
     axes.set_xlabel(f"{name} (degrees)")
     axes.set_ylabel(f"{label} (per radian)" if derivative else text)
-    axes.set_title(f"{'Derivative of ' if derivative else ''}{text} in {quantity.mechanism.scene.name}")
+    axes.set_title(f"{'Derivative of ' if derivative else ''}{text} in {quantity.mechanism.scene.name}",
+                   parse_math=False)  # a scene's name is text, never mathtext
     axes.grid(True)
     axes.legend()
     return figure
@@ -83,10 +96,10 @@ def minimum_figure(quantity, found, parameter, lo, hi, checks=9, points=401):
     figure = _figure()
     axes = figure.add_subplot()
     grid = np.linspace(lo, hi, points)
-    for region in form.regions:
+    for region, value in zip(form.regions, form.region_values):
         inside = grid[[_within(region, x) for x in grid]]
-        if inside.size and region["value"] is not None:
-            line = sympy.lambdify(symbol, sympy.sympify(region["value"], locals={parameter: symbol}), "numpy")
+        if inside.size and value is not None:
+            line = sympy.lambdify(symbol, value, "numpy")
             kind = "at a range end" if region["at"] == "endpoint" else "stationary"
             axes.plot(inside, np.broadcast_to(line(inside), inside.shape),
                       label=f"{region['value']}  ({kind})")
@@ -133,7 +146,7 @@ def accuracy_figure(result):
     axes.set_yscale("log")
     axes.set_xlabel("time per sample (ns)")
     axes.set_ylabel("max relative error")
-    axes.set_title(f"Speed against error: {result.point} of {result.scene}")
+    axes.set_title(f"Speed against error: {result.point} of {result.scene}", parse_math=False)
     axes.grid(True, which="both", linewidth=0.3)
     axes.legend()
     return figure

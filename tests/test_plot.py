@@ -1,5 +1,8 @@
 """Figures: one command each, drawn from closed forms, with the certified points on them."""
 
+import dataclasses
+import io
+import pathlib
 import subprocess
 import sys
 
@@ -9,8 +12,10 @@ pytest.importorskip("matplotlib")
 
 import matplotlib  # noqa: E402
 
+from algkin.accuracy import Accuracy  # noqa: E402
 from algkin.mechanism import load  # noqa: E402
-from algkin.plot import minimum_figure, quantity_figure  # noqa: E402
+from algkin.plot import accuracy_figure, minimum_figure, quantity_figure, save  # noqa: E402
+from algkin.scene import load_scene, load_scene_text  # noqa: E402
 
 from .analyses.extremum.arm_by_hand import brute_minimum, hand_minimiser, hand_minimum  # noqa: E402
 
@@ -65,3 +70,48 @@ def test_minimum_against_b_follows_brute_force():
             assert y == pytest.approx(brute_minimum(400, x, 0, 90)[0], abs=1e-6)
     cuts = [line.get_xdata()[0] for line in figure.axes[0].lines if len(line.get_xdata()) == 2]
     assert cuts == [0.0]  # the minimiser leaves [0, 90] at b = 0
+
+
+ARM = (pathlib.Path(__file__).parents[1] / "algkin" / "catalog" / "arm-string.toml").read_text()
+
+
+def measured(scene):
+    """An accuracy result of one row, to draw without measuring."""
+    return Accuracy(scene, "P", [{"strategy": "numeric", "case": "uniform", "ns_per_sample": 10.0,
+                                  "max_rel_error": 1e-15}])
+
+
+def test_a_dimension_named_like_a_python_keyword_is_drawn():
+    scene = load_scene_text(ARM.replace("\nb = 80", "\nlambda = 80").replace('"-b"', '"-lambda"'), "lambda.toml")
+    quantity = load(scene, ["lambda"]).output("AB")
+    figure = minimum_figure(quantity, quantity.extremum((0, 90)), "lambda", -400, 400)
+    curves = [line for line in figure.axes[0].lines if len(line.get_xdata()) > 2]
+    assert len(curves) == 3 and figure.axes[0].get_xlabel() == "lambda"
+    for line in curves:
+        for x, y in zip(line.get_xdata()[::50], line.get_ydata()[::50]):
+            assert y == pytest.approx(brute_minimum(400, x, 0, 90)[0], abs=1e-6)
+
+
+def test_a_scene_name_is_shown_as_text_not_mathtext():
+    name = r"arm $x_{$ \frac{1}{2}$ $"
+    quantity = load(dataclasses.replace(load_scene("arm-string"), name=name)).output("AB")
+    for figure in (quantity_figure(quantity, quantity.extremum((0, 180))), accuracy_figure(measured(name))):
+        figure.savefig(io.BytesIO(), format="png")  # mathtext would raise here
+        assert figure.axes[0].get_title().endswith(name)
+
+
+def test_an_interrupted_save_leaves_the_earlier_figure_and_no_temporary(tmp_path, interrupted_writes):
+    out = tmp_path / "speed.png"
+    out.write_text("a good figure")
+    with pytest.raises(KeyboardInterrupt):
+        save(accuracy_figure(measured("s")), out)
+    assert out.read_text() == "a good figure" and list(tmp_path.iterdir()) == [out]
+
+
+@pytest.mark.parametrize("command", [["plot", "arm-string", "--of", "AB", "--out"],
+                                     ["accuracy", "chebyshev-lambda", "--plot"]])
+def test_a_figure_path_that_is_a_directory_is_refused_at_once(tmp_path, command):
+    (tmp_path / "figure.png").mkdir()
+    done = run(*command, str(tmp_path / "figure.png"))
+    assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
+    assert "is a directory" in done.stderr and "Traceback" not in done.stderr

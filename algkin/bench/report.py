@@ -11,6 +11,9 @@ import csv
 import io
 import json
 
+from ..errors import OutputError
+from ..files import write_atomic
+
 __all__ = ["table", "to_csv", "write", "seconds_text", "COLUMNS"]
 
 COLUMNS = ("problem", "method", "backend", "seconds", "ratio", "degree", "terms", "bits", "agrees", "note")
@@ -49,15 +52,19 @@ def to_csv(rows):
 
 
 def write(report, directory):
-    """bench.json, bench.csv and (with matplotlib) bench.png in ``directory``; the paths written."""
+    """bench.json, bench.csv and (with matplotlib) bench.png in ``directory``; the paths written.
+
+    Each file replaces an earlier one only once complete (``algkin.files``).
+    """
     import os
 
-    os.makedirs(directory, exist_ok=True)
+    try:
+        os.makedirs(directory, exist_ok=True)
+    except OSError as err:
+        raise OutputError(directory, err.strerror or str(err)) from err
     paths = [os.path.join(directory, n) for n in ("bench.json", "bench.csv")]
-    with open(paths[0], "w") as f:
-        json.dump(report.to_json(), f, indent=2)
-    with open(paths[1], "w") as f:
-        f.write(to_csv(report.rows))
+    write_atomic(paths[0], json.dumps(report.to_json(), indent=2))
+    write_atomic(paths[1], to_csv(report.rows))
     try:
         from ..plot import bench_figure, save
     except ImportError:

@@ -16,14 +16,31 @@ True
 >>> import re   # the only address is SVG's namespace name, which is never fetched
 >>> sorted(set(re.findall(r'https?://[^"\s]+', text)))
 ['http://www.w3.org/2000/svg']
+
+Text from the scene is escaped wherever it lands: HTML-escaped in the markup, and in the
+script's JSON no ``<``, ``>`` or ``&`` that could close the script or open a comment.
+The template is filled in one pass, so a slot's text is never read as another slot.
+
+>>> fill("<p>{{a}} {{b}}</p>", {"a": "{{b}}", "b": "x"})
+'<p>{{b}} x</p>'
+>>> script_json({"name": "</script><!--"})
+'{"name": "\\u003c/script\\u003e\\u003c!--"}'
 """
 
+import html
 import json
+import re
 from importlib import resources
 
+from ..files import write_atomic
 from .jscode import branch_function
 
-__all__ = ["page", "model", "slider_range", "write"]
+__all__ = ["page", "model", "slider_range", "write", "fill", "script_json"]
+
+_SLOT = re.compile(r"\{\{(\w+)\}\}")
+# Inside <script>, "<" could close the element or open a comment, and U+2028/U+2029 end a
+# line in older JavaScript: all are written as escapes, which JSON reads back the same.
+_SCRIPT_UNSAFE = {"<": "\\u003c", ">": "\\u003e", "&": "\\u0026", "\u2028": "\\u2028", "\u2029": "\\u2029"}
 
 
 def slider_range(default):
@@ -66,23 +83,29 @@ def _functions(motion):
 def page(motion, inputs=None, branch=None):
     """The HTML text of the interactive page for ``motion`` (a ``Motion``)."""
     folder = resources.files(__name__)
-    # "</" cannot appear inside an inline script: escape it in the JSON.
-    data = json.dumps(model(motion, inputs, branch)).replace("</", "<\\/")
+    data = script_json(model(motion, inputs, branch))
     script = (f"const MODEL = {data};\nconst BRANCHES = [\n" + ",\n".join(_functions(motion)) + "];\n"
               + folder.joinpath("page.js").read_text(encoding="utf-8"))
-    template = folder.joinpath("page.html").read_text(encoding="utf-8")
-    return (template.replace("{{title}}", _escape(f"algkin: {motion.scene.name}"))
-            .replace("{{description}}", _escape(motion.scene.description))
-            .replace("{{style}}", folder.joinpath("page.css").read_text(encoding="utf-8"))
-            .replace("{{script}}", script))
+    return fill(folder.joinpath("page.html").read_text(encoding="utf-8"), {
+        "title": html.escape(f"algkin: {motion.scene.name}", quote=True),
+        "description": html.escape(motion.scene.description, quote=True),
+        "style": folder.joinpath("page.css").read_text(encoding="utf-8"),
+        "script": script,
+    })
 
 
-def _escape(text):
-    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+def fill(template, slots):
+    """``template`` with each ``{{key}}`` replaced by ``slots[key]``, in a single pass."""
+    return _SLOT.sub(lambda match: slots[match.group(1)], template)
+
+
+def script_json(value):
+    """``value`` as JSON that can sit inside ``<script>``: nothing in it ends the element."""
+    text = json.dumps(value, ensure_ascii=False)
+    return re.sub("[<>&\u2028\u2029]", lambda match: _SCRIPT_UNSAFE[match.group()], text)
 
 
 def write(motion, out, inputs=None, branch=None):
-    """Write the page to ``out``; returns ``out``."""
-    with open(out, "w", encoding="utf-8") as handle:
-        handle.write(page(motion, inputs, branch))
+    """Write the page to ``out``, replacing any earlier file only once complete; returns ``out``."""
+    write_atomic(out, page(motion, inputs, branch))
     return out

@@ -83,3 +83,23 @@ def test_a_missing_peer_is_skipped_with_a_note(monkeypatch):
     assert rows["Singular eliminate"]["note"] == "skipped: Singular not found"
     assert rows["msolve eliminate"]["note"].startswith("skipped: msolve not found")
 
+
+
+def test_an_out_that_is_a_file_is_refused_before_the_bench(tmp_path):
+    kept = tmp_path / "results"
+    kept.write_text("kept")
+    start = time.perf_counter()
+    done = subprocess.run([sys.executable, "-m", "algkin", "bench", "--problems", "two-circles", "--methods",
+                           "groebner", "--no-peers", "--out", str(kept)], capture_output=True, text=True)
+    assert done.returncode == 2 and done.stderr.startswith("algkin: error: --out="), done.stderr
+    assert len(done.stderr.strip().splitlines()) == 1 and kept.read_text() == "kept"
+    assert time.perf_counter() - start < 10  # nothing was measured
+
+
+def test_an_interrupted_report_leaves_the_earlier_files_and_no_temporary(two_circles, tmp_path, interrupted_writes):
+    from algkin.bench.report import write
+
+    (tmp_path / "bench.json").write_text("{}")
+    with pytest.raises(KeyboardInterrupt):
+        write(two_circles, tmp_path)
+    assert (tmp_path / "bench.json").read_text() == "{}" and [p.name for p in tmp_path.iterdir()] == ["bench.json"]

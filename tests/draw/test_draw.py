@@ -1,6 +1,10 @@
 """Drawings: positions against hand geometry, trajectory on the implicit curve, modes, animations."""
 
+import dataclasses
+import io
 import json
+import os
+import pathlib
 import shutil
 import subprocess
 import sys
@@ -15,8 +19,11 @@ pytest.importorskip("matplotlib")
 from algkin import curve  # noqa: E402
 from algkin.draw import animate, mechanism_figure, modes_figure  # noqa: E402
 from algkin.motion import Motion  # noqa: E402
+from algkin.scene import load_scene  # noqa: E402
 
 from .hand import CHEBYSHEV, fourbar  # noqa: E402
+
+CATALOG = pathlib.Path(__file__).parents[2] / "algkin" / "catalog"
 
 
 def joints(axes):
@@ -134,3 +141,71 @@ def test_bad_requests_exit_2_with_one_line_and_write_nothing(tmp_path, args):
     done = plot("chebyshev-lambda", *args)
     assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
     assert "Traceback" not in done.stderr and list(tmp_path.iterdir()) == []
+
+
+NEVER = (CATALOG / "chebyshev-lambda.toml").read_text().replace("fixed = [2, 0]", "fixed = [20, 0]")
+
+
+def one_line(done, code):
+    lines = done.stderr.strip().splitlines()
+    return done.returncode == code and len(lines) == 1 and "Traceback" not in done.stderr
+
+
+@pytest.mark.parametrize("suffix", [".html", ".png", ".gif"])
+def test_a_scene_that_never_assembles_leaves_the_output_alone(tmp_path, suffix):
+    (tmp_path / "never.toml").write_text(NEVER)
+    out = tmp_path / f"never{suffix}"
+    out.write_bytes(b"a good file")
+    done = plot(tmp_path / "never.toml", "--out", out)
+    assert one_line(done, 2) and "can never assemble" in done.stderr, done.stderr
+    assert out.read_bytes() == b"a good file"
+
+
+def test_an_interrupted_gif_leaves_the_earlier_file_and_no_temporary(tmp_path, monkeypatch):
+    from PIL import Image
+
+    def interrupted(image, target, *args, **kwargs):
+        with open(target, "wb") as handle:
+            handle.write(b"GIF89a half a movie")
+        raise KeyboardInterrupt
+
+    out = tmp_path / "turn.gif"
+    out.write_bytes(b"a good movie")
+    monkeypatch.setattr(Image.Image, "save", interrupted)
+    with pytest.raises(KeyboardInterrupt):
+        animate(Motion("chebyshev-lambda"), out, frames=3)
+    assert out.read_bytes() == b"a good movie" and list(tmp_path.iterdir()) == [out]
+
+
+def test_an_output_that_is_a_directory_is_refused_at_once(tmp_path):
+    (tmp_path / "lambda.png").mkdir()
+    done = plot("chebyshev-lambda", "--out", tmp_path / "lambda.png")
+    assert one_line(done, 2) and done.stderr.startswith("algkin: error: --out="), done.stderr
+
+
+@pytest.mark.skipif(os.geteuid() == 0, reason="root writes read-only files anyway")
+def test_a_read_only_output_is_refused_at_once(tmp_path):
+    out = tmp_path / "lambda.png"
+    out.write_bytes(b"kept")
+    out.chmod(0o444)
+    done = plot("chebyshev-lambda", "--out", out)
+    assert one_line(done, 2) and "read-only" in done.stderr and out.read_bytes() == b"kept", done.stderr
+
+
+@pytest.mark.skipif(not os.path.exists("/dev/full"), reason="needs /dev/full")
+@pytest.mark.parametrize("suffix", [".png", ".html"])
+def test_a_write_that_fails_is_one_line(tmp_path, suffix):
+    out = tmp_path / f"full{suffix}"
+    out.symlink_to("/dev/full")
+    done = plot("chebyshev-lambda", "--out", out)
+    assert one_line(done, 1) and done.stderr.startswith("algkin: failed: "), done.stderr
+    assert list(tmp_path.iterdir()) == [out]
+
+
+def test_a_scene_name_is_shown_as_text_not_mathtext():
+    name = r"cost $x_{$ \frac{1}{2}$ $"
+    motion = Motion(dataclasses.replace(load_scene("chebyshev-lambda"), name=name))
+    for figure in (mechanism_figure(motion, {"angle": 63}, curve=False), modes_figure(motion, {"angle": 63})):
+        figure.savefig(io.BytesIO(), format="png")  # mathtext would raise here
+        titles = [figure.axes[0].get_title(), figure.get_suptitle()]
+        assert any(t.startswith(name + ":") for t in titles), titles

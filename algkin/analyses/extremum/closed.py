@@ -43,6 +43,7 @@ class ClosedForm:
     input_polynomial: sympy.Expr  # in t = tan(input/2); None at an endpoint
     valid_when: list  # strings in sympy syntax
     regions: list  # one parameter: [{from, to, at, input, value}], else []
+    region_values: list  # each region's value as sympy: drawn without parsing the text back
 
     def to_json(self):
         return {"value": _text(self.value), "input": _text(self.input), "at": self.at,
@@ -213,13 +214,13 @@ def closed_form(problem, stationary, defaults, lo, hi, largest=False):
         _, here = extremum_at(defaults)
         if len(problem.parameters) == 1:
             events = event_polynomials(problem, stationary, values_factors, (lo, hi))
-            regions = _regions(problem, events, extremum_at, defaults)
+            regions, values = _regions(problem, events, extremum_at, defaults)
             conditions = _interval_conditions(problem.parameters[0], regions, defaults)
         else:
-            regions = []
+            regions, values = [], []
             own = event_polynomials(problem, stationary, values_factors, (lo, hi), here)
             conditions = _sign_conditions(own, defaults)
-    return ClosedForm(here.value, here.input, here.at, here.input_factor, conditions, regions)
+    return ClosedForm(here.value, here.input, here.at, here.input_factor, conditions, regions, values)
 
 
 def _sign_conditions(events, defaults):
@@ -251,12 +252,13 @@ def _interval_text(name, lo, hi):
 
 
 def _regions(problem, events, extremum_at, defaults):
-    """Per interval between the events' real roots: where the extremum is and its closed form."""
+    """Per interval between the events' real roots: where the extremum is and its closed form;
+    and each region's value as a sympy expression."""
     (name,) = problem.parameters
     with flint.ctx.workprec(ROOT_BITS):
         cuts = sorted({float(r.mid()) for e in events for r in real_roots(e, name)})
     bounds = [None] + cuts + [None]
-    regions = []
+    regions, values = [], []
     for lo, hi in zip(bounds, bounds[1:]):
         sample = defaults[name] if len(bounds) == 2 else _inside(lo, hi)
         best, found = extremum_at({name: sample})
@@ -268,7 +270,8 @@ def _regions(problem, events, extremum_at, defaults):
             regions[-1]["to"] = hi
         else:
             regions.append(region)
-    return regions
+            values.append(found.value)
+    return regions, values
 
 
 def _inside(lo, hi):

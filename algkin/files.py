@@ -1,0 +1,126 @@
+"""Output files that an interrupt or a failed write never leaves truncated.
+
+Every file algkin writes goes to a hidden temporary file beside it (``.NAME.XXXX.tmp.SUFFIX``:
+the real suffix kept, since some writers infer the format from it) and is renamed over
+the target only once complete. On any failure, ``KeyboardInterrupt`` included, the
+temporary file is removed and an existing target is left as it was. Paths are checked
+before any computation, so a bad ``--out`` costs nothing (``check_output``,
+``check_directory``).
+
+>>> import pathlib, tempfile
+>>> scratch = tempfile.TemporaryDirectory()
+>>> folder = pathlib.Path(scratch.name)
+>>> target = folder / "page.html"
+>>> write_atomic(target, "good")
+>>> with atomic_output(target) as temporary:
+...     _ = temporary.write_text("half of a pa")
+...     raise ValueError("interrupted")
+Traceback (most recent call last):
+...
+ValueError: interrupted
+>>> target.read_text(), [p.name for p in folder.iterdir()]
+('good', ['page.html'])
+>>> check_output("--out", folder)
+Traceback (most recent call last):
+...
+algkin.errors.UsageError: --out='...': is a directory
+>>> scratch.cleanup()
+"""
+
+import contextlib
+import os
+import pathlib
+import shutil
+import stat
+import tempfile
+
+from .errors import OutputError, UsageError
+
+__all__ = ["atomic_output", "write_atomic", "check_output", "check_directory"]
+
+
+@contextlib.contextmanager
+def atomic_output(path):
+    """Yield a temporary path with ``path``'s suffix; when the block ends normally it replaces ``path``.
+
+    A device or pipe (``/dev/stdout``, ``/dev/full``) cannot be renamed over and holds
+    nothing to keep: its temporary file is made in the system's temporary folder and
+    copied in at the end. An ``OSError`` becomes ``OutputError``.
+    """
+    target = os.path.realpath(path)
+    special = os.path.exists(target) and not os.path.isfile(target)
+    folder = tempfile.gettempdir() if special else os.path.dirname(target)
+    stem = os.path.splitext(os.path.basename(target))[0]
+    with _reported(path):
+        handle, temporary = tempfile.mkstemp(prefix=f".{stem}.", suffix=f".tmp{pathlib.Path(path).suffix}",
+                                             dir=folder)
+    os.close(handle)
+    try:
+        with _reported(path):
+            yield pathlib.Path(temporary)
+            _deliver(temporary, target, special)
+    finally:
+        with contextlib.suppress(FileNotFoundError):
+            os.remove(temporary)
+
+
+def write_atomic(path, data):
+    """Write ``data`` (text as UTF-8, or bytes) to ``path`` through ``atomic_output``."""
+    with atomic_output(path) as temporary:
+        temporary.write_bytes(data.encode("utf-8") if isinstance(data, str) else data)
+
+
+@contextlib.contextmanager
+def _reported(path):
+    try:
+        yield
+    except OutputError:
+        raise
+    except OSError as err:
+        raise OutputError(path, err.strerror or str(err)) from err
+
+
+def _deliver(temporary, target, special):
+    """Copy into a device or pipe; otherwise flush, give the target's permissions (a new
+    file: the umask's) and rename over it."""
+    if special:
+        with open(temporary, "rb") as source, open(target, "wb") as sink:
+            shutil.copyfileobj(source, sink)
+        return
+    with open(temporary, "rb+") as handle:
+        os.fsync(handle.fileno())
+    try:
+        mode = stat.S_IMODE(os.stat(target).st_mode)
+    except FileNotFoundError:
+        mask = os.umask(0)
+        os.umask(mask)
+        mode = 0o666 & ~mask
+    os.chmod(temporary, mode)
+    os.replace(temporary, target)
+
+
+def check_output(option, path):
+    """Raise ``UsageError`` naming ``option`` unless ``path`` can be written (a file, not a directory)."""
+    target = pathlib.Path(os.path.realpath(path))
+    if target.is_dir():
+        raise UsageError(option, str(path), "is a directory")
+    if not target.parent.is_dir():
+        raise UsageError(option, str(path), "its directory does not exist")
+    if target.exists() and not target.is_file():
+        return  # a device or pipe: copied into, nothing to keep
+    if target.exists() and not os.access(target, os.W_OK):
+        raise UsageError(option, str(path), "is a read-only file")
+    if not os.access(target.parent, os.W_OK | os.X_OK):
+        raise UsageError(option, str(path), "its directory is not writable")
+
+
+def check_directory(option, path):
+    """Raise ``UsageError`` unless ``path`` is, or can be made, a writable directory."""
+    target = pathlib.Path(os.path.realpath(path))
+    if target.exists() and not target.is_dir():
+        raise UsageError(option, str(path), "is not a directory")
+    existing = next(p for p in (target, *target.parents) if p.exists())
+    if not existing.is_dir():
+        raise UsageError(option, str(path), f"{existing} is not a directory")
+    if not os.access(existing, os.W_OK | os.X_OK):
+        raise UsageError(option, str(path), f"{existing} is not writable")
