@@ -28,10 +28,12 @@ import sympy
 
 from .branches import closed_forms
 from .branches.stable import StableBranch
+from . import validation
 from .errors import UsageError
 from .evaluate import MPMATH, NUMPY, evaluate
 from .pipeline import certify_labels, derive
-from .scene import compile_scene, load_scene
+from .scene import compile_scene
+from .scene.load import as_scene
 from .scene.constructions import Dyad, Fixed
 from .system import symbol
 
@@ -229,7 +231,9 @@ def _translated(scene, offset):
 
 def accuracy(scene, samples=2000, seed=0):
     """Rows of speed and error per strategy and case for the scene's first dyad point."""
-    scene = scene if not isinstance(scene, str) else load_scene(scene)
+    validation.count("samples", samples, validation.MAX_ACCURACY_SAMPLES, minimum=10)
+    validation.seed(seed)
+    scene = as_scene(scene)
     point = next((n for n, p in scene.points.items() if isinstance(p, Dyad)), None)
     if point is None:
         raise UsageError("scene", scene.name, "has no dyad to evaluate")

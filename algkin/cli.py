@@ -1,18 +1,36 @@
 """The ``algkin`` command line (SPEC §3): readable reports, or one JSON document with --json.
 
-Exit codes: 0 done, 1 a computation failed or a check did not hold, 2 bad input.
+Exit codes: 0 done, 1 a computation failed, a check did not hold or the budget ran out,
+2 bad input, 128 + N stopped by signal N (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP), 141 stdout
+closed early. Whatever the outcome, stderr holds at most one line, and with --json stdout
+holds one JSON document (``{"error": ...}`` when there is no result).
+
+A command computes its whole output, text or JSON, inside its budget (``--max-seconds``),
+in a forked child when there is a time budget; the parent only starts it, waits, and writes.
 """
 
 import argparse
+import contextlib
+import functools
 import json
 import math
+import os
 import pathlib
 import re
+import signal
 import sys
+import threading
 
-from .errors import AlgkinError, SceneError, UsageError
+from .errors import AlgkinError, BudgetExceeded, SceneError, UsageError
 
 __all__ = ["main", "usage", "terminal_safe"]
+
+# What a stopping signal says on stderr; the exit code is 128 + its number, as a shell's.
+_STOPS = {signal.SIGINT: "interrupted", signal.SIGTERM: "terminated (SIGTERM)", signal.SIGHUP: "hung up (SIGHUP)"}
+# The reader of stdout went away (``algkin list | head -1``): 128 + SIGPIPE, what a shell reports
+# for a program the closed pipe ended; 1 would say that the computation failed.
+_STDOUT_CLOSED = 128 + signal.SIGPIPE
+_ERROR_KINDS = ((UsageError, "usage"), (SceneError, "scene"), (BudgetExceeded, "budget"))
 
 
 class _Parser(argparse.ArgumentParser):
@@ -35,9 +53,12 @@ def _common(parser, method=True):
         _budget_options(parser)
 
 
-def _budget_options(parser):
-    parser.add_argument("--max-seconds", type=_seconds, help="stop (exit 1) past this many seconds of work")
-    parser.add_argument("--max-terms", type=_terms, help="stop (exit 1) when an eliminant passes this many terms")
+def _budget_options(parser, terms=True):
+    parser.add_argument("--max-seconds", type=_seconds,
+                        help="stop (exit 1) past this many seconds of the whole command, loading included")
+    if terms:
+        parser.add_argument("--max-terms", type=_terms,
+                            help="stop (exit 1) when an eliminant passes this many terms")
 
 
 def _seconds(text):
@@ -56,13 +77,6 @@ def _terms(text):
     return int(text)
 
 
-def _budget(args):
-    """The command's budget, its clock started now: before the heavy imports count too."""
-    from .eliminate.budget import Budget
-
-    return Budget(seconds=args.max_seconds, terms=args.max_terms).start()
-
-
 def build_parser():
     parser = _Parser(prog="algkin", description="Closed forms of planar mechanisms by elimination.")
     commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
@@ -72,6 +86,7 @@ def build_parser():
     _common(show, method=False)
     show.add_argument("--outputs", nargs="+", help="outputs (names, points, dist(P, Q), P.x)")
     show.add_argument("--param", action="append", default=[])
+    _budget_options(show, terms=False)
     derive = commands.add_parser("derive", help="eliminants, closed-form branches, verification")
     _common(derive)
     derive.add_argument("--outputs", nargs="+")
@@ -146,7 +161,7 @@ def _cmd_bench(args):
         for name in given or ():
             if name not in valid:
                 raise UsageError(option, name, f"unknown; valid: {', '.join(valid)}")
-    if args.budget <= 0:
+    if not 0 < args.budget < math.inf:  # nan too
         raise UsageError("--budget", args.budget, "must be a positive number of seconds")
     if args.rounds < 1:
         raise UsageError("--rounds", args.rounds, "must be at least 1")
@@ -161,13 +176,12 @@ def _cmd_bench(args):
         print(file=sys.stderr)
     written = write(report, args.out) if args.out else []
     if args.json:
-        print(json.dumps(report.to_json(), indent=2))
+        text = json.dumps(report.to_json(), indent=2) + "\n"
     else:
-        print(table(report.rows))
-        print("machine: " + ", ".join(f"{k} {v}" for k, v in report.machine.items()))
-        for path in written:
-            print(f"wrote {path}")
-    return 0 if all(r["agrees"] in (None, "reference") or r["agrees"].startswith("yes") for r in report.rows) else 1
+        text = "\n".join([table(report.rows), "machine: " + ", ".join(f"{k} {v}" for k, v in report.machine.items()),
+                          *(f"wrote {path}" for path in written)]) + "\n"
+    agree = all(r["agrees"] in (None, "reference") or r["agrees"].startswith("yes") for r in report.rows)
+    return text, 0 if agree else 1
 
 
 def _progress(message):
@@ -195,13 +209,10 @@ def _range(text):
 
 
 def _cmd_extremum(args):
-    budget = _budget(args)
     from .analyses.extremum import extremum
 
     angles = _range(args.range) if args.range else None
-    document = budget.run(lambda: extremum(args.scene, args.of, angles, params=args.param).to_json())
-    _emit(args, document, _report_extremum)
-    return 0
+    return _render(args, extremum(args.scene, args.of, angles, params=args.param).to_json(), _report_extremum), 0
 
 
 def _report_extremum(d):
@@ -240,11 +251,9 @@ def _interval(region):
 
 
 def _cmd_toggles(args):
-    budget = _budget(args)
     from .toggles import toggles
 
-    _emit(args, budget.run(lambda: toggles(args.scene).to_json()), _report_toggles)
-    return 0
+    return _render(args, toggles(args.scene).to_json(), _report_toggles), 0
 
 
 def _report_toggles(d):
@@ -263,28 +272,19 @@ def _report_toggles(d):
 
 
 def _cmd_accuracy(args):
-    budget = _budget(args)
     from .accuracy import accuracy
 
     if args.samples < 10:
         raise UsageError("--samples", args.samples, "needs at least 10 samples per case")
     out = _figure_path("--plot", args.plot) if args.plot else None
+    result = accuracy(args.scene, args.samples, args.seed)
+    text = _render(args, result.to_json(), _report_accuracy)
+    if out is None:
+        return text, 0
+    from .plot import accuracy_figure, image
 
-    def measure():  # the figure is drawn where the measurement is, inside the budget ...
-        result = accuracy(args.scene, args.samples, args.seed)
-        if out is None:
-            return result.to_json(), None
-        from .plot import accuracy_figure, image
-
-        return result.to_json(), image(accuracy_figure(result), out.suffix)
-
-    document, figure = budget.run(measure)
-    if figure is not None:  # ... and written here, where an interrupt can still clean up
-        from .files import write_atomic
-
-        write_atomic(out, figure)
-    _emit(args, document, _report_accuracy)
-    return 0
+    # Drawn here, within the budget; written by the parent, where an interrupt can still clean up.
+    return text, 0, [(out, image(accuracy_figure(result), out.suffix))]
 
 
 def _report_accuracy(d):
@@ -318,8 +318,7 @@ def _cmd_plot(args):
             if getattr(args, option):
                 raise UsageError(f"--{option}", getattr(args, option), "goes with --of OUTPUT")
         written = plot_mechanism(args.scene, args.out, args.input, args.branch, args.modes, args.param)
-        _emit(args, _written(args, written), lambda d: d["out"])
-        return 0
+        return _render(args, _written(args, written), lambda d: d["out"]), 0
     for option in ("input", "branch", "modes", "param"):
         if getattr(args, option):
             value = getattr(args, option)
@@ -336,8 +335,7 @@ def _cmd_plot(args):
     found = quantity.extremum(_range(args.range) if args.range else None)
     figure = minimum_figure(quantity, found, *against) if against else \
         quantity_figure(quantity, found, derivative=args.derivative)
-    _emit(args, _written(args, save(figure, out)), lambda d: d["out"])
-    return 0
+    return _render(args, _written(args, save(figure, out)), lambda d: d["out"]), 0
 
 
 def _written(args, out):
@@ -357,12 +355,9 @@ def _against(text):
     return name, lo, hi
 
 
-def _emit(args, document, report):
-    if args.json:
-        json.dump(document, sys.stdout, indent=2, sort_keys=False)
-        sys.stdout.write("\n")
-    else:
-        sys.stdout.write(terminal_safe(report(document)) + "\n")
+def _render(args, document, report):
+    """What the command prints: ``document`` as JSON with --json, else ``report(document)``."""
+    return (json.dumps(document, indent=2) if args.json else terminal_safe(report(document))) + "\n"
 
 
 # Control characters (ESC starts terminal commands) and bidirectional overrides (which
@@ -384,14 +379,16 @@ def _cmd_list(args):
 
     scenes = [load_scene(n) for n in catalog_names()]
     document = {"scenes": [{"name": s.name, "description": s.description} for s in scenes]}
-    _emit(args, document, lambda d: "\n".join(f"{s['name']:24} {s['description']}" for s in d["scenes"]))
-    return 0
+    return _render(args, document, lambda d: "\n".join(f"{s['name']:24} {s['description']}" for s in d["scenes"])), 0
 
 
 def _cmd_show(args):
+    from .budget import current
     from .scene import compile_scene, load_scene
 
+    current().note(f"loading {args.scene}")
     scene = load_scene(args.scene)
+    current().note(f"compiling {scene.name}")
     compiled = compile_scene(scene, args.outputs, args.param)
     document = {
         "scene": scene.name,
@@ -401,8 +398,7 @@ def _cmd_show(args):
         "inputs": {n: {"cos": c, "sin": s} for n, (c, s) in compiled.system.inputs.items()},
         "system": compiled.system.to_json(),
     }
-    _emit(args, document, _report_show)
-    return 0
+    return _render(args, document, _report_show), 0
 
 
 def _report_show(d):
@@ -417,14 +413,10 @@ def _report_show(d):
 
 
 def _cmd_derive(args):
-    budget = _budget(args)
     from .pipeline import derive
 
-    result = derive(args.scene, args.outputs, _method(args), args.backend, args.param, args.samples, args.seed,
-                    budget=budget)
-    document = result.to_json()
-    _emit(args, document, _report_derive)
-    return _verdict(result.verification)
+    result = derive(args.scene, args.outputs, _method(args), args.backend, args.param, args.samples, args.seed)
+    return _render(args, result.to_json(), _report_derive), _verdict(result.verification)
 
 
 def _verdict(verification):
@@ -462,14 +454,10 @@ def _report_derive(d):
 
 
 def _cmd_curve(args):
-    budget = _budget(args)
     from .pipeline import curve
 
-    result = curve(args.scene, args.point, _method(args), args.backend, args.param, args.samples, args.seed,
-                   budget=budget)
-    document = result.to_json()
-    _emit(args, document, _report_curve)
-    return _verdict(result.verification)
+    result = curve(args.scene, args.point, _method(args), args.backend, args.param, args.samples, args.seed)
+    return _render(args, result.to_json(), _report_curve), _verdict(result.verification)
 
 
 def _report_curve(d):
@@ -484,18 +472,17 @@ def _report_curve(d):
 
 
 def _cmd_verify(args):
-    if args.samples == 0:
-        raise UsageError("--samples", 0, "verify needs at least one sample (derive and curve take 0 to skip it)")
-    budget = _budget(args)
     from .pipeline import derive
 
+    if args.samples == 0:
+        raise UsageError("--samples", 0, "verify needs at least one sample (derive and curve take 0 to skip it)")
     result = derive(args.scene, args.outputs, _method(args), args.backend, args.param, args.samples, args.seed,
-                    certify=False, budget=budget)
+                    certify=False)
     document = {"scene": result.compiled.scene.name, "verification": result.verification.to_json(),
                 "branches": [b.label for b in result.branches], "timings": result.timings}
-    _emit(args, document, lambda d: f"scene {d['scene']}, branches {', '.join(d['branches'])}\n"
-                                     + _verification_line(d["verification"]))
-    return _verdict(result.verification)
+    text = _render(args, document, lambda d: f"scene {d['scene']}, branches {', '.join(d['branches'])}\n"
+                                            + _verification_line(d["verification"]))
+    return text, _verdict(result.verification)
 
 
 COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
@@ -504,12 +491,102 @@ COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve"
 
 
 def main(argv=None):
+    """Run one command line (``argv``, by default the process's) and return its exit code.
+
+    Signal handlers are installed only while it runs, so that calling it in-process (tests)
+    leaves the caller's in place.
+    """
+    argv = sys.argv[1:] if argv is None else list(argv)
+    args = None  # until parsed: an error before then still says what it can
+    with _stopping_signals():
+        try:
+            args = build_parser().parse_args(argv)
+            text, code, *files = _run(args)
+            _save(*files)
+            return _write(text, code)  # a signal while writing (to a slow reader) is caught too
+        except _Stopped as stop:
+            return _write(_failed(argv, args, "interrupted", str(stop), str(stop)), 128 + stop.signum)
+        except (SceneError, UsageError) as err:
+            return _write(_failed(argv, args, _kind(err), str(err), f"error: {err}"), 2)
+        except AlgkinError as err:
+            return _write(_failed(argv, args, _kind(err), str(err), f"failed: {err}"), 1)
+
+
+def _run(args):
+    """The command's output and exit code, all of its work (imports, loading, compiling, the algebra,
+    formatting) done within its budget: in a child process killed at the deadline, if it has one."""
+    from .budget import Budget
+
+    budget = Budget(seconds=getattr(args, "max_seconds", None), terms=getattr(args, "max_terms", None))
+    budget.note(f"starting {args.command}")  # until the command says more (its imports come first)
+    return budget.run(functools.partial(COMMANDS[args.command], args))
+
+
+def _save(files=()):
+    """Write the files a command made (path, bytes), each replacing its target only when whole."""
+    from .files import write_atomic
+
+    for path, data in files:
+        write_atomic(path, data)
+
+
+def _failed(argv, args, kind, message, line):
+    """Say ``line`` on stderr; what stdout gets: with --json, the error as the one JSON document."""
+    print(f"algkin: {terminal_safe(line)}", file=sys.stderr)
+    if not (getattr(args, "json", False) if args is not None else "--json" in argv):
+        return ""
+    command = args.command if args is not None else next(iter(argv), None)
+    document = {"error": {"kind": kind, "message": message},
+                "command": command if command in COMMANDS else None, "scene": getattr(args, "scene", None)}
+    return json.dumps(document, indent=2) + "\n"
+
+
+def _kind(err):
+    """The error's kind in a JSON error document: usage, scene, budget or computation."""
+    return next((kind for cls, kind in _ERROR_KINDS if isinstance(err, cls)), "computation")
+
+
+def _write(text, code):
+    """Write ``text`` to stdout and flush it now, so that a closed pipe shows here and not at
+    exit; the exit code: ``code``, or _STDOUT_CLOSED if the reader has gone."""
     try:
-        args = build_parser().parse_args(argv)
-        return COMMANDS[args.command](args)
-    except (SceneError, UsageError) as err:
-        print(f"algkin: error: {err}", file=sys.stderr)
-        return 2
-    except AlgkinError as err:
-        print(f"algkin: failed: {err}", file=sys.stderr)
-        return 1
+        sys.stdout.write(text)
+        sys.stdout.flush()
+    except BrokenPipeError:
+        # The Python docs' recipe (signal module, "Note on SIGPIPE"): point stdout at devnull so
+        # that the interpreter's own flush at exit finds no broken pipe either.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return _STDOUT_CLOSED
+    return code
+
+
+class _Stopped(BaseException):
+    """A stopping signal (SIGINT, SIGTERM, SIGHUP) while a command runs, raised so that every
+    ``finally`` on the way out runs: a budget's child is killed and joined. Not an AlgkinError:
+    like KeyboardInterrupt, no ``except Exception`` may swallow it."""
+
+    def __init__(self, signum):
+        super().__init__(_STOPS[signum])
+        self.signum = signum
+
+
+@contextlib.contextmanager
+def _stopping_signals():
+    """While the block runs, the stopping signals raise ``_Stopped``; then the handlers found are back."""
+    if threading.current_thread() is not threading.main_thread():
+        yield  # only the main thread may set handlers, and only it receives signals
+        return
+    found = {signum: signal.signal(signum, _stop) for signum in _STOPS}
+    try:
+        yield
+    finally:
+        for signum, handler in found.items():
+            # None: a handler not set from Python; the default is the nearest we can put back.
+            signal.signal(signum, signal.SIG_DFL if handler is None else handler)
+
+
+def _stop(signum, frame):
+    """Raise the signal as ``_Stopped``, once: a second signal must not cut the clean-up short."""
+    for each in _STOPS:
+        signal.signal(each, signal.SIG_IGN)
+    raise _Stopped(signum)

@@ -104,10 +104,6 @@ def _figures(elimination):
     }
 
 
-def _scene(scene):
-    return as_scene(scene)
-
-
 def _arguments(outputs, params, samples, seed, budget):
     """The public arguments checked, with the budget to run under."""
     validation.count("samples", samples, validation.MAX_VERIFY_SAMPLES)
@@ -228,16 +224,19 @@ def derive(scene, outputs=None, method=DEFAULT_METHOD, backend="flint", params=(
     """Eliminants, closed-form branches and their verification for ``outputs`` of ``scene``.
 
     ``certify`` also certifies each branch's label per input interval (the slowest stage);
-    a ``Budget`` bounds the time of the whole derivation and the size of its eliminants.
+    a ``Budget`` bounds the time of the whole derivation, loading and compiling the scene
+    included, and the size of its eliminants.
     """
     outputs, params, budget = _arguments(outputs, params, samples, seed, budget)
     start = time.perf_counter()
-    compiled, timings = _compile(_scene(scene), outputs, params)
-    return budget.run(functools.partial(_derive, compiled, timings, start, method, backend, samples, seed,
+    return budget.run(functools.partial(_derive, scene, outputs, params, start, method, backend, samples, seed,
                                         certify, budget))
 
 
-def _derive(compiled, timings, start, method, backend, samples, seed, certify, budget):
+def _derive(scene, outputs, params, start, method, backend, samples, seed, certify, budget):
+    scene = _load(scene, budget)
+    budget.note(f"compiling {scene.name}")
+    compiled, timings = _compile(scene, outputs, params)
     budget.note(f"finding the branches of {compiled.scene.name}")
     branches, groups = _branch(compiled, timings)
     mark = time.perf_counter()
@@ -254,6 +253,12 @@ def _derive(compiled, timings, start, method, backend, samples, seed, certify, b
     timings["certify"] = time.perf_counter() - mark
     timings["total"] = time.perf_counter() - start
     return Derivation(compiled, method, backend, eliminations, branches, verification, timings, certified)
+
+
+def _load(scene, budget):
+    """The scene, loaded (or a given one checked) inside the budget: its expressions can be costly."""
+    budget.note(f"loading {getattr(scene, 'name', scene)}")
+    return as_scene(scene)
 
 
 def _curve_figures(result, variables):
@@ -276,23 +281,25 @@ def _curve_figures(result, variables):
 def curve(scene, point, method=DEFAULT_METHOD, backend="flint", params=(), samples=40, seed=0, budget=None):
     """The implicit curve ``F(point_x, point_y) = 0`` traced by ``point`` (a one-input motion).
 
-    A ``Budget`` bounds the time of the whole computation and the size of its eliminants.
+    A ``Budget`` bounds the time of the whole computation, loading and compiling the scene
+    included, and the size of its eliminants.
     """
     _, params, budget = _arguments(None, params, samples, seed, budget)
-    scene = _scene(scene)
+    start = time.perf_counter()
+    return budget.run(functools.partial(_curve, scene, point, params, start, method, backend, samples, seed,
+                                        budget))
+
+
+def _curve(scene, point, params, start, method, backend, samples, seed, budget):
+    scene = _load(scene, budget)
     if not isinstance(point, str) or point not in scene.points:
         raise UsageError("--point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
-    start = time.perf_counter()
+    budget.note(f"compiling {scene.name}")
     compiled, timings = _compile(scene, [point], params)
     if len(compiled.system.inputs) > 1:
         raise UsageError("--point", point, f"moves with {len(compiled.system.inputs)} inputs "
                          f"({', '.join(compiled.system.inputs)}) in {scene.name}: its trajectory is a region, "
                          "not a curve")
-    return budget.run(functools.partial(_curve, compiled, point, timings, start, method, backend, samples, seed,
-                                        budget))
-
-
-def _curve(compiled, point, timings, start, method, backend, samples, seed, budget):
     budget.note(f"finding the branches of {compiled.scene.name}")
     branches, groups = _branch(compiled, timings)
     mark = time.perf_counter()

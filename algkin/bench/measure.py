@@ -12,8 +12,11 @@ reported.
 """
 
 import multiprocessing
+import os
 import statistics
 import time
+
+from ..budget import bind_to_parent
 
 __all__ = ["measure", "MIN_SECONDS", "MIN_REPEATS"]
 
@@ -24,20 +27,20 @@ MIN_REPEATS = 5
 def measure(run, summarize, budget):
     """``(median seconds or None, summarize(result), note)`` of ``run()`` within ``budget`` seconds."""
     receive, send = multiprocessing.Pipe(duplex=False)
-    child = multiprocessing.get_context("fork").Process(target=_child, args=(run, summarize, send, budget),
-                                                         daemon=True)
+    child = multiprocessing.get_context("fork").Process(target=_child, daemon=True,
+                                                         args=(run, summarize, send, budget, os.getpid()))
     child.start()
-    ready = receive.poll(budget)
-    if not ready:
+    try:
+        if not receive.poll(budget):
+            return None, None, f"over budget ({budget:g} s)"
+        return receive.recv()
+    finally:  # over budget, done, or unwound by a signal's exception (algkin.cli): no child left
         child.kill()
         child.join()
-        return None, None, f"over budget ({budget:g} s)"
-    outcome = receive.recv()
-    child.join()
-    return outcome
 
 
-def _child(run, summarize, pipe, budget):
+def _child(run, summarize, pipe, budget, parent_pid):
+    bind_to_parent(parent_pid)
     try:
         start = time.perf_counter()
         result = run()

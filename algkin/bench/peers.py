@@ -234,10 +234,18 @@ def execute(command, timeout, cwd=None):
     try:
         out, err = proc.communicate(timeout=timeout)
     except subprocess.TimeoutExpired:
-        os.killpg(proc.pid, signal.SIGKILL)
-        proc.communicate()
+        _kill_group(proc)
         return None
+    except BaseException:  # a signal's exception (algkin.cli): in a session of its own, the engine would run on
+        _kill_group(proc)
+        raise
     return proc.returncode, out, err
+
+
+def _kill_group(proc):
+    """Kill the engine and the helpers it started (its process group), and reap it."""
+    os.killpg(proc.pid, signal.SIGKILL)
+    proc.communicate()
 
 
 def failure(code, out, err):

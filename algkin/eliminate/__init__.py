@@ -20,9 +20,9 @@ import functools
 import time
 from dataclasses import dataclass, field
 
+from ..budget import Budget, current
 from ..errors import ComputationError, UsageError
 from .backends import BACKENDS
-from .budget import Budget, current
 from .linear import linear_elimination
 from .methods import groebner_basis, prepare, resultant_chain
 from .factor import factor_with

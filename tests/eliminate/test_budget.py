@@ -1,6 +1,7 @@
 """Budgets: a time budget stops even a single long C call, a terms budget stops big eliminants."""
 
 import os
+import re
 import subprocess
 import sys
 import time
@@ -13,6 +14,8 @@ from algkin import pipeline
 from algkin.eliminate import Budget, eliminate
 from algkin.errors import BudgetExceeded, SceneError, UsageError
 from algkin.scene import compile_scene, load_scene
+
+from ..processes import run
 
 ROOT = Path(__file__).resolve().parents[2]
 BAD = ROOT / "tests" / "scene" / "bad"
@@ -57,6 +60,34 @@ def test_command_line_stops_with_one_line_and_exit_1():
     assert subprocess.run([sys.executable, "-m", "algkin", "list"], capture_output=True, env=env).returncode == 0
     startup = time.perf_counter() - start
     assert wall < startup + 1 + SLACK
+
+
+# A child that sends notes as fast as it can and never an answer: at the deadline its pipe is
+# never empty. The watchdog must still stop at the deadline (it once polled the pipe forever
+# without reading it). In a process of its own, so that a spinning watchdog fails the test.
+CHATTER = """
+import time
+from algkin.eliminate import Budget, current
+
+def chatter():
+    for count in range(10**9):
+        current().note(f"saying {count}")
+
+start = time.monotonic()
+try:
+    Budget(seconds=0.2).run(chatter)
+except Exception as err:
+    print(type(err).__name__, err)
+print(f"{time.monotonic() - start:.3f}")
+"""
+
+
+def test_a_child_that_keeps_talking_is_stopped_at_the_deadline():
+    code, out, err, _ = run(["-c", CHATTER], timeout=20)
+    assert code == 0 and err == "", err
+    message, seconds = out.splitlines()
+    assert re.fullmatch(r"BudgetExceeded max_seconds=0\.2: stopped after \d+\.\d\d s while saying \d+", message)
+    assert float(seconds) < 0.2 + SLACK
 
 
 def test_a_generous_budget_changes_nothing():

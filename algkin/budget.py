@@ -1,4 +1,4 @@
-"""Budgets for eliminations: wall seconds and the size of every intermediate eliminant.
+"""Budgets for commands and eliminations: wall seconds and the size of every intermediate eliminant.
 
 A python-flint resultant or Gröbner basis is one C call that no signal interrupts, so a
 time budget runs the work in a forked child process that is killed at the deadline; the
@@ -6,6 +6,10 @@ result comes back pickled. The child reports what it is doing (``note``), so the
 says what was being eliminated when time ran out. A terms budget is checked after every
 resultant and Gröbner basis. An elimination called without a budget, inside a budget's
 ``run()``, counts against that budget (``current()``).
+
+No child outlives its parent: the kernel kills it when the parent dies (Linux), and the
+parent kills and joins it however ``run()`` ends, an exception raised by a signal included.
+This module imports no algebra, so that a command's parent process stays light.
 
 >>> budget = Budget(terms=3)
 >>> budget.check_terms(4, "the resultant in B_x")
@@ -21,15 +25,23 @@ Traceback (most recent call last):
 algkin.errors.BudgetExceeded: max_seconds=0.2: stopped after 0.2... s while computing
 """
 
+import ctypes
 import multiprocessing
+import os
 import pickle
+import signal
+import sys
 import time
 
-from ..errors import BudgetExceeded, ComputationError, UsageError
+from .errors import BudgetExceeded, ComputationError, UsageError
 
-__all__ = ["Budget", "current"]
+__all__ = ["Budget", "current", "bind_to_parent"]
 
 _ACTIVE = []  # the budgets whose run() is under way in this process, innermost last
+_PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
+# Signals that stop a command: the parent turns them into an exception (algkin.cli); the child,
+# which would otherwise inherit that handler, just dies (Ctrl-C reaches the whole process group).
+_STOPPING = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
 
 
 def current():
@@ -85,14 +97,14 @@ class Budget:
         if self.seconds is None or self._report is not None:
             return self._within(function)  # no deadline, or already inside the child that has one
         self.start()
-        parent, child = multiprocessing.get_context("fork").Pipe(duplex=False)
-        process = multiprocessing.get_context("fork").Process(target=self._child, args=(function, child),
-                                                               daemon=True)
+        context = multiprocessing.get_context("fork")
+        parent, child = context.Pipe(duplex=False)
+        process = context.Process(target=self._child, args=(function, child, os.getpid()), daemon=True)
         process.start()
-        child.close()
         try:
+            child.close()
             return self._wait(parent, process)
-        finally:
+        finally:  # however the wait ended (answer, deadline, error, a signal's exception): no child left
             if process.is_alive():
                 process.kill()
             process.join()
@@ -105,7 +117,8 @@ class Budget:
         finally:
             _ACTIVE.remove(self)
 
-    def _child(self, function, report):
+    def _child(self, function, report, parent_pid):
+        bind_to_parent(parent_pid)
         self._report = report
         try:
             outcome = ("done", self._within(function))
@@ -117,22 +130,64 @@ class Budget:
             report.send(("error", ComputationError(f"the result could not be sent back: {err}")))
 
     def _wait(self, pipe, process):
+        """The child's answer, taking its notes on the way, until the deadline."""
         while True:
             left = self.deadline - time.monotonic()
             if left <= 0 or not pipe.poll(left):
-                if pipe.poll(0):  # a message arrived just at the deadline
-                    continue
-                elapsed = self.seconds - (self.deadline - time.monotonic())
-                raise BudgetExceeded(f"max_seconds={self.seconds:g}: stopped after {elapsed:.2f} s "
-                                     f"while {self.doing}")
+                return self._overtime(pipe, process)
             try:
                 kind, value = pipe.recv()
-            except EOFError:
+            except (EOFError, OSError):  # OSError: the pipe closed in the middle of a message
+                process.join()
                 raise ComputationError(f"the process {self.doing} ended without an answer "
                                        f"(exit code {process.exitcode})") from None
-            if kind == "doing":
-                self.doing = value
-            elif kind == "error":
-                raise value
-            else:
-                return value
+            if kind != "doing":
+                return self._outcome(kind, value)
+            self.doing = value
+
+    def _overtime(self, pipe, process):
+        """Past the deadline: kill the child, then read only what it had sent already.
+
+        Once the child is dead the pipe holds a bounded amount, so this cannot spin or wait:
+        an answer that came in time is still taken, a late note only names what was cut short.
+        """
+        process.kill()
+        process.join()
+        for kind, value in _already_sent(pipe):
+            if kind != "doing":
+                return self._outcome(kind, value)
+            self.doing = value
+        elapsed = self.seconds - (self.deadline - time.monotonic())
+        raise BudgetExceeded(f"max_seconds={self.seconds:g}: stopped after {elapsed:.2f} s while {self.doing}")
+
+    @staticmethod
+    def _outcome(kind, value):
+        if kind == "error":
+            raise value
+        return value
+
+
+def _already_sent(pipe):
+    """The messages in ``pipe`` now, up to the end of what was written or a message cut off."""
+    try:
+        while pipe.poll(0):
+            yield pipe.recv()
+    except (EOFError, OSError):
+        return
+
+
+def bind_to_parent(parent_pid):
+    """In a worker just forked by ``parent_pid``: die with the parent, and of a stopping signal.
+
+    On Linux the kernel kills the worker when its parent dies (elsewhere only the parent's own
+    clean-up stops it). Strictly the kernel watches the parent's thread that forked, which
+    waits for the worker, so it ends no sooner. A parent killed before the request took
+    effect is caught by the check that follows it: the worker has then been re-parented, and
+    leaves at once.
+    """
+    if sys.platform.startswith("linux"):
+        ctypes.CDLL(None, use_errno=True).prctl(_PR_SET_PDEATHSIG, signal.SIGKILL)
+    if os.getppid() != parent_pid:
+        os._exit(1)
+    for signum in _STOPPING:
+        signal.signal(signum, signal.SIG_DFL)

@@ -1,0 +1,93 @@
+"""Running algkin in processes of its own, for tests of budgets and signals.
+
+Every process is started in a new session, so that a test that finds it hanging (or its
+worker orphaned) can kill the whole group and fail instead of hanging itself.
+"""
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+ENV = dict(os.environ, PYTHONPATH=str(ROOT))
+
+
+def start(argv, **options):
+    """``python argv...``, started in a session of its own, its output piped."""
+    options = {"stdout": subprocess.PIPE, "stderr": subprocess.PIPE, **options}
+    begun = time.perf_counter()
+    process = subprocess.Popen([sys.executable, *map(str, argv)], env=ENV, text=True, start_new_session=True,
+                               **options)
+    process.begun = begun  # for the wall time that finish() reports
+    return process
+
+
+def algkin(*args):
+    """The argv of ``python -m algkin args...``."""
+    return ["-m", "algkin", *args]
+
+
+def finish(process, timeout):
+    """``(exit code, stdout, stderr, wall seconds since it started)``; past ``timeout`` seconds from
+    now, its process group is killed and AssertionError raised (a hang fails, not hangs, a test)."""
+    try:
+        out, err = process.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        kill_group(process)
+        process.communicate()
+        raise AssertionError(f"still running after {timeout:.1f} s: {' '.join(process.args)}") from None
+    return process.returncode, out, err, time.perf_counter() - process.begun
+
+
+def run(argv, timeout):
+    """``(exit code, stdout, stderr, wall seconds)`` of ``python argv...``, within ``timeout``;
+    nothing of it is left running after."""
+    process = start(argv)
+    try:
+        return finish(process, timeout)
+    finally:
+        kill_group(process)
+
+
+def kill_group(process):
+    """Kill whatever is left of the process's group (a worker orphaned, before a fix), so that
+    it does not load the machine for the tests after."""
+    try:
+        os.killpg(process.pid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass
+
+
+def children(pid):
+    """The living child processes of ``pid``, each as (pid, start time): the start time tells
+    a pid reused later apart."""
+    return {(child, started) for child, parent, started in _processes() if parent == pid}
+
+
+def alive(processes, within):
+    """Those of ``processes`` still alive (zombies count as dead) after waiting up to ``within`` seconds."""
+    deadline = time.monotonic() + within
+    while True:
+        left = processes & {(pid, started) for pid, _, started in _processes()}
+        if not left or time.monotonic() > deadline:
+            return left
+        time.sleep(0.05)
+
+
+def _processes():
+    """(pid, parent pid, start time) of every living process, from /proc."""
+    found = []
+    for entry in Path("/proc").iterdir():
+        if not entry.name.isdigit():
+            continue
+        try:
+            stat = (entry / "stat").read_text()
+        except OSError:  # it ended while we looked
+            continue
+        fields = stat[stat.rindex(")") + 2:].split()  # after "pid (command) ": the command may hold spaces
+        if fields[0] != "Z":
+            found.append((int(entry.name), int(fields[1]), int(fields[19])))
+    return found
