@@ -23,7 +23,7 @@ demo: $(STAMP)
 	$(BIN)/algkin curve chebyshev-lambda --point P
 	$(BIN)/algkin derive arm-string --outputs AB
 
-test: $(STAMP)
+test: $(STAMP) browser
 	$(BIN)/python -m pytest
 
 bench: $(STAMP)

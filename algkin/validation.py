@@ -61,7 +61,7 @@ def seed(value):
 
 def budget(value):
     """None or a ``Budget``."""
-    from .eliminate.budget import Budget
+    from .budget import Budget
 
     if value is not None and not isinstance(value, Budget):
         raise UsageError("budget", value, "expected an algkin.eliminate.Budget, e.g. Budget(seconds=10)")

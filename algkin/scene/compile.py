@@ -206,13 +206,22 @@ def _subs(value, substitution):
 _NOT_FINITE = (sympy.zoo, sympy.nan, sympy.oo, -sympy.oo)
 
 
+# Floats (sampling, drawing, the stabilised forms) square lengths: their magnitudes must stay
+# far inside float range, 1e-308 to 1e308, squared.
+MAGNITUDES = (sympy.Rational(1, 10**100), sympy.Integer(10**100))
+
+
 def _check_finite(scene, element, value):
-    """A value that the parameters' defaults turn into 1/0 or sqrt(-1) is a scene error."""
-    if isinstance(value, sympy.Basic) and (
-        value.has(*_NOT_FINITE) or (value.is_number and value.is_real is False)
-    ):
+    """A value that the parameters' defaults turn into 1/0 or sqrt(-1), or beyond what floats
+    can square, is a scene error."""
+    if not isinstance(value, sympy.Basic):
+        return
+    if value.has(*_NOT_FINITE) or (value.is_number and value.is_real is False):
         raise SceneError(scene.source, element,
                          f"not a finite real number with the parameters' default values: {value}")
+    if value.is_number and value != 0 and not MAGNITUDES[0] <= abs(value) <= MAGNITUDES[1]:
+        raise SceneError(scene.source, element, f"{sympy.Float(value, 3)} is outside the magnitudes "
+                         "1e-100 to 1e100 that floating-point checks can square")
 
 
 def _check_bits(scene, name, construction, bits):
