@@ -72,7 +72,10 @@ def _bounds(motion, parameters):
 def draw_curve(axes, result, bounds, grid=500):
     """The zero set of ``result.elimination.polynomial`` (a ``CurveResult``) over ``bounds``."""
     poly = result.elimination.polynomial
-    x, y = (next(s for s in poly.free_symbols if s.name == v) for v in result.variables)
+    # A slider's curve may lack one coordinate (B_y = e is a line): a stand-in symbol keeps
+    # F a function of both, constant along the missing one.
+    named = {s.name: s for s in poly.free_symbols}
+    x, y = (named.get(v, sympy.Dummy(v)) for v in result.variables)
     F = sympy.lambdify((x, y), poly, "numpy")
     xmin, xmax, ymin, ymax = bounds
     X, Y = np.meshgrid(np.linspace(xmin, xmax, grid), np.linspace(ymin, ymax, grid))

@@ -209,3 +209,38 @@ def test_a_scene_name_is_shown_as_text_not_mathtext():
         figure.savefig(io.BytesIO(), format="png")  # mathtext would raise here
         titles = [figure.axes[0].get_title(), figure.get_suptitle()]
         assert any(t.startswith(name + ":") for t in titles), titles
+
+
+def test_a_slider_curve_without_one_coordinate_is_drawn_as_its_line():
+    # The slider B of slider-crank runs on the line y = e (e = 1/2 in the scene): its
+    # implicit curve 2*B_y - 1 has no B_x, and its zero set is that horizontal line.
+    figure = mechanism_figure(Motion("slider-crank"), {"theta": 63})
+    axes = figure.axes[0]
+    (contour,) = axes.collections
+    vertices = np.concatenate([path.vertices for path in contour.get_paths()])
+    assert np.ptp(vertices[:, 0]) > 0.8 * axes.dataLim.width  # across the drawing
+    assert np.max(np.abs(vertices[:, 1] - 0.5)) < 1e-9
+
+
+STILL = """
+name = "still"
+[inputs]
+t = { range = [0, 360], unit = "deg" }
+[points]
+O = { fixed = [0, 0] }
+D = { fixed = [2, 0] }
+F = { frame = ["O", "D"], at = ["1/2", 1] }
+A = { crank = "O", length = 1, input = "t" }
+[outputs]
+F = "F"
+A = "A"
+"""
+
+
+def test_a_point_that_does_not_move_is_not_traced(tmp_path):
+    # F = O + (D - O)/2 + rot90(D - O) = (1, 2) whatever t is: no trajectory, no curve.
+    (tmp_path / "still.toml").write_text(STILL)
+    motion = Motion(load_scene(tmp_path / "still.toml"))
+    assert motion.traced == ["A"]
+    done = plot(tmp_path / "still.toml", "--out", tmp_path / "still.png")
+    assert done.returncode == 0, done.stderr
