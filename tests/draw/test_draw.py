@@ -244,3 +244,26 @@ def test_a_point_that_does_not_move_is_not_traced(tmp_path):
     assert motion.traced == ["A"]
     done = plot(tmp_path / "still.toml", "--out", tmp_path / "still.png")
     assert done.returncode == 0, done.stderr
+
+
+def test_modes_panels_sit_side_by_side_without_a_gap():
+    figure = modes_figure(Motion("chebyshev-lambda"), {"angle": 63})
+    figure.canvas.draw()
+    left, right = (a.get_window_extent() for a in figure.axes)
+    assert right.x0 - left.x1 < 0.03 * figure.bbox.width
+    assert min(left.width, right.width) > 0.4 * figure.bbox.width  # the panels fill the figure
+
+
+TWO_TRACED = (CATALOG / "chebyshev-lambda.toml").read_text().replace('[outputs]\nP = "P"', '[outputs]\nP = "P"\nB = "B"')
+
+
+def test_each_traced_point_has_its_own_colour(tmp_path):
+    (tmp_path / "two.toml").write_text(TWO_TRACED)
+    motion = Motion(load_scene(tmp_path / "two.toml"))
+    assert motion.traced == ["B", "P"]
+    figure = mechanism_figure(motion, {"angle": 63}, curve=False)
+    colours = {line.get_label(): line.get_color() for line in figure.axes[0].lines
+               if line.get_label().startswith("trajectory")}
+    assert len(colours) == 2 and len(set(colours.values())) == 2
+    legend = {t.get_text(): h.get_color() for t, h in zip(figure.legends[0].get_texts(), figure.legends[0].legend_handles)}
+    assert legend["trajectory of B (left)"] != legend["trajectory of P (left)"]
