@@ -239,6 +239,9 @@ def _report_closed_form(form, name):
         lines.append("  elsewhere:")
         for region in form["regions"]:
             where = _interval(region)
+            if region["at"] == "nowhere":
+                lines.append(f"    {where}: the output is not real anywhere on the range (no assembly)")
+                continue
             what = "the minimiser leaves the range; the minimum is at the end" if region["at"] == "endpoint" \
                 else "stationary"
             lines.append(f"    {where}: {what} {name} = {region['input']} deg, value {region['value']}")

@@ -49,10 +49,19 @@ def draw_pose(axes, motion, pose, color=None):
         axes.annotate(name, (x, y), textcoords="offset points", xytext=(6, 6), fontsize="small")
 
 
+# One colour per traced point, none of them the bars' blue or the joints' black and grey.
+_TRACES = ("tab:orange", "tab:purple", "tab:red", "tab:green", "tab:brown", "tab:pink", "tab:olive", "tab:cyan")
+
+
+def trace_color(motion, name):
+    """The colour of traced point ``name``: its trajectory and its implicit curve share it."""
+    return _TRACES[motion.traced.index(name) % len(_TRACES)]
+
+
 def _trajectories(axes, motion, points, label=None):
     """Each traced point's path from ``points`` (a sweep), labelled with the branch if given."""
     for name in motion.traced:
-        axes.plot(*points[name], color="tab:orange", linewidth=1.5, zorder=1,
+        axes.plot(*points[name], color=trace_color(motion, name), linewidth=1.5, zorder=1,
                   label=f"trajectory of {name}" + (f" ({label})" if label else ""))
 
 
@@ -69,17 +78,20 @@ def _bounds(motion, parameters):
     return x.min() - pad, x.max() + pad, y.min() - pad, y.max() + pad
 
 
-def draw_curve(axes, result, bounds, grid=500):
-    """The zero set of ``result.elimination.polynomial`` (a ``CurveResult``) over ``bounds``."""
+def draw_curve(axes, result, bounds, grid=500, color="tab:green"):
+    """The zero set of ``result.elimination.polynomial`` (a ``CurveResult``) over ``bounds``, dashed."""
     poly = result.elimination.polynomial
-    x, y = (next(s for s in poly.free_symbols if s.name == v) for v in result.variables)
+    # A slider's curve may lack one coordinate (B_y = e is a line): a stand-in symbol keeps
+    # F a function of both, constant along the missing one.
+    named = {s.name: s for s in poly.free_symbols}
+    x, y = (named.get(v, sympy.Dummy(v)) for v in result.variables)
     F = sympy.lambdify((x, y), poly, "numpy")
     xmin, xmax, ymin, ymax = bounds
     X, Y = np.meshgrid(np.linspace(xmin, xmax, grid), np.linspace(ymin, ymax, grid))
-    contour = axes.contour(X, Y, np.broadcast_to(F(X, Y), X.shape), levels=[0], colors="tab:green",
+    contour = axes.contour(X, Y, np.broadcast_to(F(X, Y), X.shape), levels=[0], colors=color,
                            linewidths=0.8, linestyles="--", zorder=1)
     # A proxy line so the contour appears in the legend.
-    axes.plot([], [], color="tab:green", linewidth=0.8, linestyle="--",
+    axes.plot([], [], color=color, linewidth=0.8, linestyle="--",
               label=f"implicit curve of {result.point} (every assembly mode)")
     return contour
 
@@ -109,7 +121,7 @@ def mechanism_figure(motion, inputs=None, parameters=None, branch=None, curve=Tr
         from .pipeline import curve as derive_curve
 
         for name in motion.traced:
-            draw_curve(axes, derive_curve(motion.scene, name, samples=0), bounds)
+            draw_curve(axes, derive_curve(motion.scene, name, samples=0), bounds, color=trace_color(motion, name))
     draw_pose(axes, motion, pose)
     angles = ", ".join(f"{n} = {v:g}°" for n, v in pose.inputs.items())
     _finish(axes, f"{motion.scene.name}: {angles}, {pose.branch}")
@@ -121,19 +133,31 @@ def mechanism_figure(motion, inputs=None, parameters=None, branch=None, curve=Tr
 def modes_figure(motion, inputs=None, parameters=None):
     """Every assembly mode at the same inputs, side by side, each with its trajectory."""
     inputs = inputs if inputs is not None else motion.start(parameters)
+    bounds = _bounds(motion, parameters)
     figure = _figure()
-    figure.set_size_inches(4.2 * len(motion.branches), 4.4)
+    figure.set_size_inches(*_panels_size(bounds, len(motion.branches)))
     shared = None
     for k, branch in enumerate(motion.branches):
         axes = figure.add_subplot(1, len(motion.branches), k + 1, sharex=shared, sharey=shared)
         shared = shared or axes
         _trajectories(axes, motion, motion.sweep(parameters, branch.label)[1])
         draw_pose(axes, motion, motion.at(inputs, parameters, branch.label))
+        axes.set_xlim(bounds[0], bounds[1])
+        axes.set_ylim(bounds[2], bounds[3])
         # Shared axes cannot each stretch their data limits: keep equal scales by the box.
         _finish(axes, f"{branch.label}" + (" (scene's choice)" if branch.selected else ""), "box")
+        axes.label_outer()  # the shared y scale is read off the first panel
     angles = ", ".join(f"{n} = {v:g}°" for n, v in motion.complete(inputs)[0].items())
     figure.suptitle(f"{motion.scene.name}: assembly modes at {angles}", parse_math=False)
     return figure
+
+
+def _panels_size(bounds, count, width=3.6, tallest=6.4):
+    """Inches for ``count`` equal-aspect panels of ``bounds`` side by side: each panel is
+    shaped like the mechanism's reach, so the boxes fill the figure with no gap between."""
+    ratio = (bounds[3] - bounds[2]) / (bounds[1] - bounds[0])
+    width = min(width, tallest / ratio)
+    return width * count + 0.6, width * ratio + 0.9  # room for tick labels and titles
 
 
 def animate(motion, out, parameters=None, branch=None, frames=72, fps=24):

@@ -20,6 +20,7 @@ nan in a sweep) and ``blocked`` names the points that fail.
 from dataclasses import dataclass
 
 import numpy as np
+import sympy
 
 from .branches import closed_forms
 from .errors import UsageError
@@ -132,8 +133,14 @@ class Motion:
 
     @property
     def traced(self):
-        """Moving points named by the scene's outputs: the ones whose trajectory is drawn."""
-        moving = [n for n, c in self.scene.points.items() if not isinstance(c, Fixed)]
+        """Moving points named by the scene's outputs: the ones whose trajectory is drawn.
+
+        A point moves when its closed form involves an input on some branch: a frame point on
+        two pivots is no fixed construction, but its trajectory is a single point.
+        """
+        angles = {symbol(n) for pair in self.compiled.system.inputs.values() for n in pair}
+        moving = [n for n in self.scene.points
+                  if any(sympy.sympify(v).free_symbols & angles for form in self.points for v in form[n])]
         named = [p for o in self.scene.outputs.values() for p in o.points]
         return [p for p in moving if p in named] or moving[-1:]
 

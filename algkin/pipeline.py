@@ -278,6 +278,26 @@ def _curve_figures(result, variables):
     return degree, count
 
 
+def still_at(compiled, branch, point):
+    """Where ``point`` stays on ``branch`` if its closed form involves no input, else ``None``.
+
+    A fixed point, or one built only from fixed points (a frame on two pivots), does not move:
+    its "trajectory" is a point, and eliminating towards a curve would find no polynomial.
+    """
+    substitution = {symbol(u): v for u, v in branch.values.items()}
+    xy = tuple(sympy.sympify(v).xreplace(substitution) for v in compiled.coordinates[point])
+    angles = {symbol(n) for pair in compiled.system.inputs.values() for n in pair}
+    return None if any(v.free_symbols & angles for v in xy) else xy
+
+
+def _refuse_still(compiled, branches, point):
+    """A usage error naming where ``point`` stays, if it stays put on every branch."""
+    places = [still_at(compiled, b, point) for b in branches]
+    if all(p is not None for p in places):
+        x, y = places[next(k for k, b in enumerate(branches) if b.selected)]
+        raise UsageError("--point", point, f"is fixed at ({x}, {y}): its trajectory is a point, not a curve")
+
+
 def curve(scene, point, method=DEFAULT_METHOD, backend="flint", params=(), samples=40, seed=0, budget=None):
     """The implicit curve ``F(point_x, point_y) = 0`` traced by ``point`` (a one-input motion).
 
@@ -302,6 +322,7 @@ def _curve(scene, point, params, start, method, backend, samples, seed, budget):
                          "not a curve")
     budget.note(f"finding the branches of {compiled.scene.name}")
     branches, groups = _branch(compiled, timings)
+    _refuse_still(compiled, branches, point)
     mark = time.perf_counter()
     task = curve_task(compiled, groups, point)
     result = task.run(method, backend, budget)

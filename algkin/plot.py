@@ -130,26 +130,52 @@ def _certified_minimum(found, quantity, symbol, x):
 
 
 def accuracy_figure(result):
-    """Time per sample against max relative error, log-log, one marker per strategy."""
+    """Time per sample against max relative error, log-log: marker per strategy, colour per case.
+
+    Two legends name them instead of text beside each point (labels would pile up where
+    strategies cost the same). A zero error (the reference, exact by definition) has no place
+    on a log axis: it is drawn hollow on a dotted floor below every other error, marked
+    "exact (0)".
+    """
+    from matplotlib.lines import Line2D
+
     figure = _figure()
+    figure.set_size_inches(7.6, 4.4)
     axes = figure.add_subplot()
+    rows = [r for r in result.rows if np.isfinite(r["max_rel_error"])]
+    floor = _zero_floor([r["max_rel_error"] for r in rows])
+    cases = list(dict.fromkeys(r["case"] for r in rows))
+    colors = {case: f"C{k % 10}" for k, case in enumerate(cases)}
     markers = {"closed-form": "s", "stabilised": "o", "numeric": "^", "reference": "D"}
-    for strategy, marker in markers.items():
-        rows = [r for r in result.rows if r["strategy"] == strategy and np.isfinite(r["max_rel_error"])]
-        floor = np.finfo(float).eps / 4  # the reference is exact by definition: draw it at the floor
-        xs = [r["ns_per_sample"] for r in rows]
-        ys = [max(r["max_rel_error"], floor) for r in rows]
-        axes.scatter(xs, ys, marker=marker, label=strategy)
-        for r, x, y in zip(rows, xs, ys):
-            axes.annotate(r["case"], (x, y), fontsize="x-small", textcoords="offset points", xytext=(4, 2))
+    for r in rows:
+        exact = r["max_rel_error"] == 0
+        axes.scatter([r["ns_per_sample"]], [floor if exact else r["max_rel_error"]],
+                     marker=markers.get(r["strategy"], "X"), s=42, edgecolors=colors[r["case"]],
+                     facecolors="none" if exact else colors[r["case"]])
+    if any(r["max_rel_error"] == 0 for r in rows):
+        axes.axhline(floor, color="gray", linestyle=":", linewidth=0.8)
+        axes.annotate("exact (0)", (0, floor), xycoords=("axes fraction", "data"), xytext=(4, 3),
+                      textcoords="offset points", fontsize="x-small", color="gray")
     axes.set_xscale("log")
     axes.set_yscale("log")
+    axes.set_ylim(bottom=floor / 3)
     axes.set_xlabel("time per sample (ns)")
     axes.set_ylabel("max relative error")
     axes.set_title(f"Speed against error: {result.point} of {result.scene}", parse_math=False)
     axes.grid(True, which="both", linewidth=0.3)
-    axes.legend()
+    shown = [s for s in markers if any(r["strategy"] == s for r in rows)]
+    # Beside the axes (the constrained layout makes room): inside, they would cover points.
+    figure.legend([Line2D([], [], marker=markers[s], color="dimgray", linestyle="none") for s in shown],
+                  shown, title="strategy", fontsize="small", loc="outside right upper")
+    figure.legend([Line2D([], [], marker="o", color=colors[c], linestyle="none") for c in cases], cases,
+                  title="case", fontsize="small", loc="outside right lower")
     return figure
+
+
+def _zero_floor(errors):
+    """A y below every non-zero error, a decade under the smallest, where zero errors are drawn."""
+    positive = [e for e in errors if e > 0]
+    return 10.0 ** (np.floor(np.log10(min(positive))) - 1) if positive else 1e-17
 
 
 def bench_figure(rows):

@@ -18,7 +18,7 @@ hide the function ``algkin.interact``); the logic lives in ``Explorer`` and need
 
 import io
 
-from .html import slider_range
+from .html import _slider, parameter_range
 from .motion import Motion
 
 __all__ = ["interact", "Explorer"]
@@ -27,8 +27,9 @@ __all__ = ["interact", "Explorer"]
 class Explorer:
     """What the sliders drive: a ``Motion`` and the picture for any slider values."""
 
-    def __init__(self, scene, params=None):
+    def __init__(self, scene, params=None, ranges=None):
         self.motion = scene if isinstance(scene, Motion) else Motion(scene, params)
+        self.ranges = ranges  # name -> (lo, hi): overrides the scene's declared slider ranges
 
     @property
     def sliders(self):
@@ -36,8 +37,8 @@ class Explorer:
         start = self.motion.start()
         inputs = [dict(name=n, lo=s.range_degrees[0], hi=s.range_degrees[1], value=start[n])
                   for n, s in self.motion.inputs.items()]
-        return inputs + [dict(name=p, lo=slider_range(v)[0], hi=slider_range(v)[1], value=v)
-                         for p, v in ((p, self.motion.defaults[p]) for p in self.motion.params)]
+        return inputs + [_slider(p, parameter_range(self.motion, p, self.ranges), self.motion.defaults[p])
+                         for p in self.motion.params]
 
     def _split(self, values):
         branch = values.pop("branch", None)
@@ -74,11 +75,12 @@ class Explorer:
         return buffer.getvalue()
 
 
-def interact(scene, params=None):
+def interact(scene, params=None, ranges=None):
     """A widget with a slider per input and symbolic dimension driving the drawing.
 
     ``scene``: a catalog name, a path, a ``Scene`` or a ``Motion``; ``params``: the
-    dimensions with sliders (default: every one that keeps the system polynomial).
+    dimensions with sliders (default: every one that keeps the system polynomial);
+    ``ranges``: name -> (lo, hi) of a dimension's slider, over the scene's declared range.
     """
     try:
         import ipywidgets
@@ -87,7 +89,7 @@ def interact(scene, params=None):
         from .errors import AlgkinError
 
         raise AlgkinError("interact needs ipywidgets: pip install 'algkin[notebook]'") from None
-    explorer = Explorer(scene, params)
+    explorer = Explorer(scene, params, ranges)
     controls = {s["name"]: ipywidgets.FloatSlider(value=s["value"], min=s["lo"], max=s["hi"],
                                                   step=(s["hi"] - s["lo"]) / 720, description=s["name"],
                                                   continuous_update=False)

@@ -1,7 +1,8 @@
 """Sphinx configuration: MyST pages, tutorials executed at build time by myst-nb, autodoc."""
 
 project = "algkin"
-author = "algkin"
+author = "the algkin developers"
+copyright = "2026, the algkin developers"  # without it the footer reads "©." alone
 extensions = ["myst_nb", "sphinx.ext.autodoc"]
 exclude_patterns = ["_build", "jupyter_execute", "images/README.md"]
 # Every tutorial and command page runs on each build, so none of them can rot; a failing

@@ -5,6 +5,7 @@ import sys
 
 import numpy as np
 import pytest
+import sympy
 
 from algkin.widgets import Explorer
 
@@ -72,3 +73,32 @@ def test_import_algkin_stays_cheap():
             "print(heavy)")
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert done.stdout.strip() == "[]", done.stderr
+
+
+RANGED = """
+name = "ranged"
+[parameters]
+a = { default = 1, range = ["1/2", 2] }
+[inputs]
+t = { range = [0, 360], unit = "deg" }
+[points]
+O = { fixed = [0, 0] }
+A = { crank = "O", length = "a", input = "t" }
+[outputs]
+A = "A"
+"""
+
+
+def test_a_declared_range_drives_the_sliders_and_an_override_wins(tmp_path):
+    from algkin.html import model
+    from algkin.motion import Motion
+    from algkin.scene import load_scene_text
+    from algkin.widgets import Explorer
+
+    motion = Motion(load_scene_text(RANGED, "ranged.toml"))
+    assert motion.scene.parameter_ranges == {"a": (sympy.Rational(1, 2), 2)}
+    assert [(p["lo"], p["hi"]) for p in model(motion)["params"]] == [(0.5, 2.0)]
+    assert [(s["lo"], s["hi"]) for s in Explorer(motion).sliders if s["name"] == "a"] == [(0.5, 2.0)]
+    overridden = Explorer(motion, ranges={"a": (0.25, 3)}).sliders
+    assert [(s["lo"], s["hi"]) for s in overridden if s["name"] == "a"] == [(0.25, 3.0)]
+    assert [(p["lo"], p["hi"]) for p in model(motion, ranges={"a": (0.25, 3)})["params"]] == [(0.25, 3.0)]

@@ -6,6 +6,7 @@ import pathlib
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 pytest.importorskip("matplotlib")
@@ -112,3 +113,31 @@ def test_a_figure_path_that_is_a_directory_is_refused_at_once(tmp_path, command)
     done = run(*command, str(tmp_path / "figure.png"))
     assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
     assert "is a directory" in done.stderr and "Traceback" not in done.stderr
+
+
+def drawn(figure):
+    figure.canvas.draw()
+    return figure.canvas.get_renderer()
+
+
+def test_a_zero_error_is_drawn_on_the_axis_and_no_labels_overlap():
+    rows = [{"strategy": s, "case": c, "ns_per_sample": ns, "max_rel_error": e}
+            for s, ns, e in (("closed-form", 500.0, 3e-16), ("stabilised", 480.0, 2e-16),
+                             ("numeric", 520.0, 4e-16), ("reference", 5e5, 0.0))
+            for c in ("uniform", "far-1e7", "near-1e-6")]
+    figure = accuracy_figure(Accuracy("s", "P", rows))
+    renderer = drawn(figure)
+    axes = figure.axes[0]
+    low, high = axes.get_ylim()
+    heights = [y for c in axes.collections for _, y in c.get_offsets()]
+    exact = [y for c in axes.collections if not len(c.get_facecolors()) for _, y in c.get_offsets()]
+    assert len(exact) == 3 and all(np.isfinite(y) and low < y < 2e-16 for y in exact)
+    assert all(low < y < high for y in heights)
+    assert [t.get_text() for t in axes.texts] == ["exact (0)"]
+    boxes = [t.get_window_extent(renderer) for t in figure.findobj(matplotlib.text.Text)
+             if t.get_visible() and t.get_text()]
+    overlapping = [(a, b) for k, a in enumerate(boxes) for b in boxes[k + 1:] if a.overlaps(b)]
+    assert not overlapping
+    case_colours = [tuple(h.get_color()) if not isinstance(h.get_color(), str) else h.get_color()
+                    for h in figure.legends[1].legend_handles]
+    assert len(set(case_colours)) == 3

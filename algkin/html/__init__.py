@@ -35,7 +35,7 @@ from importlib import resources
 from ..files import write_atomic
 from .jscode import branch_function
 
-__all__ = ["page", "model", "slider_range", "write", "fill", "script_json"]
+__all__ = ["page", "model", "slider_range", "parameter_range", "write", "fill", "script_json"]
 
 _SLOT = re.compile(r"\{\{(\w+)\}\}")
 # Inside <script>, "<" could close the element or open a comment, and U+2028/U+2029 end a
@@ -51,7 +51,24 @@ def slider_range(default):
     return lo, hi
 
 
-def model(motion, inputs=None, branch=None):
+def parameter_range(motion, name, ranges=None):
+    """A dimension's slider bounds: given in ``ranges`` (name -> (lo, hi)), else declared in the
+    scene, else around its default."""
+    from ..errors import UsageError
+
+    for given in (ranges or {}):
+        if given not in motion.params:
+            raise UsageError("--range-of", given, f"not a symbolic dimension of {motion.scene.name} "
+                                                  f"(symbolic: {', '.join(motion.params) or 'none'})")
+    bounds = (ranges or {}).get(name, motion.scene.parameter_ranges.get(name))
+    return slider_range(motion.defaults[name]) if bounds is None else tuple(float(b) for b in bounds)
+
+
+def _slider(name, bounds, value):
+    return {"name": name, "lo": bounds[0], "hi": bounds[1], "value": value}
+
+
+def model(motion, inputs=None, branch=None, ranges=None):
     """The page's data: sliders, points, bars, branches (everything but the closed forms)."""
     names = list(motion.points[0])
     starts, _ = motion.complete(inputs or motion.start(branch=branch))
@@ -60,8 +77,7 @@ def model(motion, inputs=None, branch=None):
         "description": motion.scene.description,
         "inputs": [{"name": n, "lo": s.range_degrees[0], "hi": s.range_degrees[1], "value": starts[n]}
                    for n, s in motion.inputs.items()],
-        "params": [{"name": p, "lo": slider_range(motion.defaults[p])[0], "hi": slider_range(motion.defaults[p])[1],
-                    "value": motion.defaults[p]} for p in motion.params],
+        "params": [_slider(p, parameter_range(motion, p, ranges), motion.defaults[p]) for p in motion.params],
         "branches": [{"label": b.label, "selected": b.selected, "blocks": list(b.discriminants)}
                      for b in motion.branches],
         "start": motion.branch_index(branch),
@@ -80,10 +96,10 @@ def _functions(motion):
             for b, forms in zip(motion.branches, motion.points)]
 
 
-def page(motion, inputs=None, branch=None):
+def page(motion, inputs=None, branch=None, ranges=None):
     """The HTML text of the interactive page for ``motion`` (a ``Motion``)."""
     folder = resources.files(__name__)
-    data = script_json(model(motion, inputs, branch))
+    data = script_json(model(motion, inputs, branch, ranges))
     script = (f"const MODEL = {data};\nconst BRANCHES = [\n" + ",\n".join(_functions(motion)) + "];\n"
               + folder.joinpath("page.js").read_text(encoding="utf-8"))
     return fill(folder.joinpath("page.html").read_text(encoding="utf-8"), {
@@ -105,7 +121,7 @@ def script_json(value):
     return re.sub("[<>&\u2028\u2029]", lambda match: _SCRIPT_UNSAFE[match.group()], text)
 
 
-def write(motion, out, inputs=None, branch=None):
+def write(motion, out, inputs=None, branch=None, ranges=None):
     """Write the page to ``out``, replacing any earlier file only once complete; returns ``out``."""
-    write_atomic(out, page(motion, inputs, branch))
+    write_atomic(out, page(motion, inputs, branch, ranges))
     return out

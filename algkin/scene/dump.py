@@ -48,11 +48,18 @@ def _point(construction, scene):
     raise TypeError(f"no TOML form for a {type(construction).__name__} construction")
 
 
+def _parameter(name, value, bounds):
+    """``a = 1``, or ``a = { default = 1, range = [lo, hi] }`` when a range is declared."""
+    if bounds is None:
+        return f"{name} = {_string(value)}"
+    return f"{name} = {{ default = {_string(value)}, range = {_exprs(bounds)} }}"
+
+
 def dump_scene(scene):
     """TOML text of ``scene``; ``load_scene_text(dump_scene(scene)) == scene``."""
     lines = [f"name = {_string(scene.name)}", f"description = {_string(scene.description)}", "",
              "[parameters]"]
-    lines += [f"{name} = {_string(value)}" for name, value in scene.parameters.items()]
+    lines += [_parameter(name, value, scene.parameter_ranges.get(name)) for name, value in scene.parameters.items()]
     lines += ["", "[inputs]"]
     lines += [f"{name} = {{ range = {_exprs((i.lo, i.hi))}, unit = {_string(i.unit)} }}"
               for name, i in scene.inputs.items()]

@@ -137,25 +137,43 @@ class _Loader:
         description = data.get("description", "")
         if not isinstance(name, str) or not isinstance(description, str):
             self.fail("name", "name and description must be strings")
-        parameters = self.parameters(self.table(data, "parameters", "parameters"))
+        parameters, ranges = self.parameters(self.table(data, "parameters", "parameters"))
         inputs = self.inputs(self.table(data, "inputs", "inputs"))
         points = self.points(self.table(data, "points", "points"), inputs)
         outputs = self.outputs(self.table(data, "outputs", "outputs"), points, inputs, parameters)
-        scene = Scene(name, description, parameters, inputs, points, outputs, self.source)
+        scene = Scene(name, description, parameters, inputs, points, outputs, self.source, ranges)
         check_names(scene)
         return scene
 
     def parameters(self, table):
-        defaults = {}
+        """Defaults (``a = 1``, or ``a = { default = 1, range = [lo, hi] }``) and declared ranges."""
+        defaults, ranges = {}, {}
         for name, value in table.items():
             element = f"parameters.{name}"
             self.identifier(name, element)
             if name.startswith(("c_", "s_")):
                 self.fail(element, "names starting with c_ or s_ are kept for input angles")
+            if isinstance(value, dict):
+                value, ranges[name] = self.ranged(value, element)
             # A default may use the parameters above it; the name itself stays a symbol.
             defaults[name] = self.expr(value, element)
             self.names[name] = sympy.Symbol(name, real=True)
-        return defaults
+        return defaults, ranges
+
+    def ranged(self, spec, element):
+        """``{ default = d, range = [lo, hi] }``: the default's text and (lo, hi), two exact numbers."""
+        extra = set(spec) - {"default", "range"}
+        if extra:
+            self.fail(f"{element}.{sorted(extra)[0]}", "unknown key (expected default, range)")
+        if "default" not in spec:
+            self.fail(f"{element}.default", "missing: a ranged parameter still needs its default")
+        bounds = spec.get("range")
+        if not isinstance(bounds, list) or len(bounds) != 2:
+            self.fail(f"{element}.range", "expected [lo, hi], two numbers")
+        lo, hi = (self.number(b, f"{element}.range") for b in bounds)
+        if not lo < hi:
+            self.fail(f"{element}.range", f"empty range [{lo}, {hi}]: expected lo < hi")
+        return spec["default"], (lo, hi)
 
     def inputs(self, table):
         inputs = {}

@@ -70,6 +70,7 @@ class Scene:
     points: dict  # name -> construction, in file order
     outputs: dict  # name -> Output
     source: str = field(default="<scene>", compare=False)
+    parameter_ranges: dict = field(default_factory=dict)  # name -> (lo, hi) rationals, for sliders and sweeps
 
     def parameter_symbols(self):
         return {name: sympy.Symbol(name, real=True) for name in self.parameters}

@@ -24,10 +24,12 @@ range, checked in floating point from the lengths alone.
 >>> check()
 """
 
+import dataclasses
 import math
 from fractions import Fraction
 
 import numpy as np
+import sympy
 from hypothesis import assume, strategies as st
 
 from ..scene import load_scene_text
@@ -209,6 +211,18 @@ def slider_cranks(draw):
 def scenes():
     """Any of the above: four-bars of every class, near-toggle four-bars, slider-cranks."""
     return st.one_of(four_bars(), near_toggle_four_bars(), slider_cranks())
+
+
+@st.composite
+def with_ranges(draw, scene_strategy=None):
+    """A scene with declared slider ranges ``lo < hi`` (exact) on some of its parameters."""
+    scene = draw(scene_strategy or scenes())
+    names = draw(st.lists(st.sampled_from(sorted(scene.parameters)), unique=True)) if scene.parameters else []
+    ranges = {}
+    for name in names:
+        lo, width = draw(_coordinates), draw(lengths())
+        ranges[name] = (sympy.Rational(lo), sympy.Rational(lo + width))
+    return dataclasses.replace(scene, parameter_ranges=ranges)
 
 
 def with_symbolic(scene_strategy=None, max_symbols=2):

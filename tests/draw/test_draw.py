@@ -209,3 +209,61 @@ def test_a_scene_name_is_shown_as_text_not_mathtext():
         figure.savefig(io.BytesIO(), format="png")  # mathtext would raise here
         titles = [figure.axes[0].get_title(), figure.get_suptitle()]
         assert any(t.startswith(name + ":") for t in titles), titles
+
+
+def test_a_slider_curve_without_one_coordinate_is_drawn_as_its_line():
+    # The slider B of slider-crank runs on the line y = e (e = 1/2 in the scene): its
+    # implicit curve 2*B_y - 1 has no B_x, and its zero set is that horizontal line.
+    figure = mechanism_figure(Motion("slider-crank"), {"theta": 63})
+    axes = figure.axes[0]
+    (contour,) = axes.collections
+    vertices = np.concatenate([path.vertices for path in contour.get_paths()])
+    assert np.ptp(vertices[:, 0]) > 0.8 * axes.dataLim.width  # across the drawing
+    assert np.max(np.abs(vertices[:, 1] - 0.5)) < 1e-9
+
+
+STILL = """
+name = "still"
+[inputs]
+t = { range = [0, 360], unit = "deg" }
+[points]
+O = { fixed = [0, 0] }
+D = { fixed = [2, 0] }
+F = { frame = ["O", "D"], at = ["1/2", 1] }
+A = { crank = "O", length = 1, input = "t" }
+[outputs]
+F = "F"
+A = "A"
+"""
+
+
+def test_a_point_that_does_not_move_is_not_traced(tmp_path):
+    # F = O + (D - O)/2 + rot90(D - O) = (1, 2) whatever t is: no trajectory, no curve.
+    (tmp_path / "still.toml").write_text(STILL)
+    motion = Motion(load_scene(tmp_path / "still.toml"))
+    assert motion.traced == ["A"]
+    done = plot(tmp_path / "still.toml", "--out", tmp_path / "still.png")
+    assert done.returncode == 0, done.stderr
+
+
+def test_modes_panels_sit_side_by_side_without_a_gap():
+    figure = modes_figure(Motion("chebyshev-lambda"), {"angle": 63})
+    figure.canvas.draw()
+    left, right = (a.get_window_extent() for a in figure.axes)
+    assert right.x0 - left.x1 < 0.03 * figure.bbox.width
+    assert min(left.width, right.width) > 0.4 * figure.bbox.width  # the panels fill the figure
+
+
+TWO_TRACED = (CATALOG / "chebyshev-lambda.toml").read_text().replace('[outputs]\nP = "P"', '[outputs]\nP = "P"\nB = "B"')
+
+
+def test_each_traced_point_has_its_own_colour(tmp_path):
+    (tmp_path / "two.toml").write_text(TWO_TRACED)
+    motion = Motion(load_scene(tmp_path / "two.toml"))
+    assert motion.traced == ["B", "P"]
+    figure = mechanism_figure(motion, {"angle": 63}, curve=False)
+    colours = {line.get_label(): line.get_color() for line in figure.axes[0].lines
+               if line.get_label().startswith("trajectory")}
+    assert len(colours) == 2 and len(set(colours.values())) == 2
+    legend = {t.get_text(): h.get_color() for t, h in zip(figure.legends[0].get_texts(), figure.legends[0].legend_handles)}
+    assert legend["trajectory of B (left)"] != legend["trajectory of P (left)"]

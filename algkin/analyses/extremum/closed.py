@@ -207,11 +207,16 @@ def closed_form(problem, stationary, defaults, lo, hi, largest=False):
     values_factors = value_factors(problem)
 
     def extremum_at(values):
-        best = extreme(points_at(problem, stationary, values, lo, hi), largest)
+        """The certified extremum at ``values`` and its description; ``None`` where the output
+        is real nowhere on the range (the mechanism does not assemble at those dimensions)."""
+        points = points_at(problem, stationary, values, lo, hi)
+        if not any(p.value == p.value for p in points):
+            return None
+        best = extreme(points, largest)
         return best, describe(problem, stationary, values_factors, values, best)
 
     with mpmath.workdps(DIGITS):
-        _, here = extremum_at(defaults)
+        _, here = extremum_at(defaults) or (None, extreme([]))  # real nowhere at the defaults: refused
         if len(problem.parameters) == 1:
             events = event_polynomials(problem, stationary, values_factors, (lo, hi))
             regions, values = _regions(problem, events, extremum_at, defaults)
@@ -261,17 +266,28 @@ def _regions(problem, events, extremum_at, defaults):
     regions, values = [], []
     for lo, hi in zip(bounds, bounds[1:]):
         sample = defaults[name] if len(bounds) == 2 else _inside(lo, hi)
-        best, found = extremum_at({name: sample})
-        at = found.at
-        region = {"from": lo, "to": hi, "at": at, "input": _text(found.input), "value": _text(found.value),
-                  "sample": float(sample), "sample_input_deg": float(best.input_deg),
-                  "sample_value": float(best.value)}
-        if regions and (regions[-1]["at"], regions[-1]["input"], regions[-1]["value"]) == (at, region["input"], region["value"]):
+        region, value = _region(lo, hi, sample, extremum_at({name: sample}))
+        if regions and _same(regions[-1], region):
             regions[-1]["to"] = hi
         else:
             regions.append(region)
-            values.append(found.value)
+            values.append(value)
     return regions, values
+
+
+def _same(one, other):
+    return all(one[k] == other[k] for k in ("at", "input", "value"))
+
+
+def _region(lo, hi, sample, found):
+    """One interval of the parameter, described at ``sample`` by ``found`` (``extremum_at``):
+    where the mechanism does not assemble on the range, ``at`` is 'nowhere' and there is no value."""
+    region = {"from": lo, "to": hi, "sample": float(sample)}
+    if found is None:
+        return dict(region, at="nowhere", input=None, value=None), None
+    best, described = found
+    return dict(region, at=described.at, input=_text(described.input), value=_text(described.value),
+                sample_input_deg=float(best.input_deg), sample_value=float(best.value)), described.value
 
 
 def _inside(lo, hi):

@@ -1,6 +1,7 @@
 """Closed forms of the arm's minimum in symbolic dimensions, against hand geometry and brute force."""
 
 
+import numpy as np
 import pytest
 import sympy
 from hypothesis import given, settings, strategies as st
@@ -92,3 +93,25 @@ def test_conditions_are_needed(in_a_b, a_value, b_value):
     # a < 0: the minimiser is out of [0, 180]; |OB| < 350: the value is 350 - |OB|.
     value, _ = brute_minimum(a_value, b_value)
     assert abs(at(str(in_a_b.value), a=a_value, b=b_value) - value) > 1
+
+
+def slider_position(degrees, e, r=1, l=3):
+    """The slider-crank's B.x by hand: A = r(cos, sin), B on y = e at distance l ahead of A."""
+    t = np.radians(degrees)
+    return r * np.cos(t) + np.sqrt(l**2 - (r * np.sin(t) - e) ** 2)
+
+
+def test_the_offset_symbolic_gives_the_minimum_where_the_slider_reaches():
+    # Far offsets (|e| > r + l = 4) put the line out of reach: there the output is real
+    # nowhere, which must not stop the closed form valid where the mechanism assembles.
+    found = extremum("slider-crank", "x", params=["e"])
+    (e,) = found.problem.parameters
+    grid = np.linspace(0, 360, 200001)
+    assert float(found.minimum.value) == pytest.approx(slider_position(grid, 0.5).min(), abs=1e-9)
+    for value in ("-3/2", "1/5", "1/2", "7/4"):  # inside the region of the defaults, both signs of e
+        at = sympy.Rational(value)
+        brute = slider_position(grid, float(at)).min()
+        assert float(found.closed_form.value.xreplace({e: at})) == pytest.approx(brute, abs=1e-8)
+    regions = found.closed_form.regions
+    assert (regions[0]["to"], regions[0]["at"]) == (pytest.approx(-4), "nowhere")
+    assert (regions[-1]["from"], regions[-1]["at"]) == (pytest.approx(4), "nowhere")
