@@ -242,8 +242,9 @@ def _report_closed_form(form, name):
             if region["at"] == "nowhere":
                 lines.append(f"    {where}: the output is not real anywhere on the range (no assembly)")
                 continue
-            what = "the minimiser leaves the range; the minimum is at the end" if region["at"] == "endpoint" \
-                else "stationary"
+            what = {"endpoint": "the minimiser leaves the range; the minimum is at the end",
+                    "dead centre": "at the dead centre (where the branch stops assembling)"}.get(region["at"],
+                                                                                              "stationary")
             lines.append(f"    {where}: {what} {name} = {region['input']} deg, value {region['value']}")
     return lines
 

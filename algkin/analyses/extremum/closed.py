@@ -26,7 +26,7 @@ import sympy
 
 from ...eliminate import eliminate
 from ...system.convert import real_roots
-from .critical import DIGITS, ROOT_BITS, extreme, points_at
+from .critical import DIGITS, ROOT_BITS, extreme, meeting_factors, points_at
 
 __all__ = ["ClosedForm", "closed_form", "value_factors"]
 
@@ -117,15 +117,16 @@ def _at_angle(problem, degrees, values):
 class Description:
     """What the extremum is at one parameter point, and the polynomials that pin it down."""
 
-    at: str  # 'stationary' or 'endpoint'
+    at: str  # 'stationary', 'dead centre' or 'endpoint'
     input: sympy.Expr  # degrees, None without radicals
     value: sympy.Expr
     input_factor: sympy.Expr  # the stationary factor in t it is a root of; None at an end
     value_factor: sympy.Expr  # the polynomial in u its value is a root of
 
 
-def describe(problem, stationary, values_factors, values, best):
-    """The closed form, in the parameters, of the certified extremum ``best`` at ``values``."""
+def describe(problem, stationary, values_factors, values, best, meeting=()):
+    """The closed form, in the parameters, of the certified extremum ``best`` at ``values``;
+    at a dead centre its input is a root of one of the ``meeting`` factors, not a stationary one."""
     turn = 360 * mpmath.floor((best.input_deg + 180) / 360)
     if best.kind == "endpoint" or abs(best.input_deg - turn + 180) < MATCH:  # t at infinity
         degrees = _exact_degrees(best.input_deg)
@@ -133,15 +134,28 @@ def describe(problem, stationary, values_factors, values, best):
         return Description("endpoint" if best.kind == "endpoint" else "stationary", degrees,
                            _at_angle(problem, degrees, values), None, end_value)
     t_star = mpmath.tan(mpmath.radians(best.input_deg) / 2)
-    factor = _matching_factor(stationary, problem.t, t_star, values)
+    at = "dead centre" if best.kind == "dead centre" else "stationary"
+    factor = _matching_factor(meeting if at == "dead centre" else stationary, problem.t, t_star, values)
     root = _root_matching(factor, problem.t, t_star, values)
     degrees = None if root is None else 360 * sympy.atan(root) / sympy.pi + int(turn)
     u_factor = _matching_factor(values_factors, problem.u, best.value, values)
     value = _root_matching(u_factor, problem.u, best.value, values)
+    if value is None and root is not None and at == "dead centre":
+        value = _double_root(problem, root)
     if value is None and root is not None:
         value = sympy.sqrtdenest(problem.closed.xreplace(
             {problem.c: (1 - root**2) / (1 + root**2), problem.s: 2 * root / (1 + root**2)}))
-    return Description("stationary", degrees, value, factor, u_factor)
+    return Description(at, degrees, value, factor, u_factor)
+
+
+def _double_root(problem, root):
+    """Where the two values of a quadratic eliminant meet (a dead centre at ``t = root``):
+    ``-b / 2a``, far shorter than the closed form's square root of zero; None otherwise."""
+    eliminant = sympy.Poly(problem.numerator_in_t(problem.eliminant), problem.u)
+    if eliminant.degree() != 2:
+        return None
+    a, b, _ = (c.xreplace({problem.t: root}) for c in eliminant.all_coeffs())
+    return sympy.cancel(sympy.radsimp(sympy.cancel(-b / (2 * a))))
 
 
 def event_polynomials(problem, stationary, values_factors, ends, own=None):
@@ -159,7 +173,7 @@ def event_polynomials(problem, stationary, values_factors, ends, own=None):
         if sympy.degree(factor, t) >= 1:
             events += [sympy.discriminant(factor, t), sympy.Poly(factor, t).LC()]
     candidates = [v for v in values_factors + end_values if v.has(u)]
-    valued = candidates if own is None else [own.value_factor]
+    valued = candidates if own is None else [f for f in (own.value_factor,) if f is not None]
     for factor in valued:
         events += [sympy.discriminant(factor, u), sympy.Poly(factor, u).LC()]
     events += [sympy.resultant(f, g, u) for f, g in itertools.combinations(candidates, 2)
@@ -205,6 +219,7 @@ def _sign_definite(poly, parameters):
 def closed_form(problem, stationary, defaults, lo, hi, largest=False):
     """The extremum of ``problem`` (parameters symbolic) over ``[lo, hi]`` degrees as a closed form."""
     values_factors = value_factors(problem)
+    meeting = meeting_factors(problem)
 
     def extremum_at(values):
         """The certified extremum at ``values`` and its description; ``None`` where the output
@@ -213,17 +228,17 @@ def closed_form(problem, stationary, defaults, lo, hi, largest=False):
         if not any(p.value == p.value for p in points):
             return None
         best = extreme(points, largest)
-        return best, describe(problem, stationary, values_factors, values, best)
+        return best, describe(problem, stationary, values_factors, values, best, meeting)
 
     with mpmath.workdps(DIGITS):
         _, here = extremum_at(defaults) or (None, extreme([]))  # real nowhere at the defaults: refused
         if len(problem.parameters) == 1:
-            events = event_polynomials(problem, stationary, values_factors, (lo, hi))
+            events = event_polynomials(problem, stationary + meeting, values_factors, (lo, hi))
             regions, values = _regions(problem, events, extremum_at, defaults)
             conditions = _interval_conditions(problem.parameters[0], regions, defaults)
         else:
             regions, values = [], []
-            own = event_polynomials(problem, stationary, values_factors, (lo, hi), here)
+            own = event_polynomials(problem, stationary + meeting, values_factors, (lo, hi), here)
             conditions = _sign_conditions(own, defaults)
     return ClosedForm(here.value, here.input, here.at, here.input_factor, conditions, regions, values)
 

@@ -21,7 +21,7 @@ from ...system.angles import half_angle_numerator, tangent_to_degrees
 from ...system.convert import real_roots
 
 __all__ = ["Problem", "CriticalPoint", "critical_points", "points_at", "extreme",
-           "stationary_factors", "ROOT_BITS"]
+           "stationary_factors", "meeting_factors", "ROOT_BITS"]
 
 ROOT_BITS = 128
 DIGITS = 40
@@ -68,7 +68,7 @@ class CriticalPoint:
 
     input_deg: mpmath.mpf
     value: mpmath.mpf
-    kind: str  # minimum, maximum, inflection, endpoint
+    kind: str  # minimum, maximum, inflection, dead centre, endpoint
     enclosure: object = None  # arb ball of the input in degrees; None at a range end
 
     def to_json(self):
@@ -86,6 +86,20 @@ def stationary_factors(problem, backend="flint"):
                          method="resultant", backend=backend).factors
     except ComputationError as err:
         raise ComputationError(f"no stationary condition for {problem.u}: {err}") from None
+
+
+def meeting_factors(problem):
+    """Factors, in ``t`` and the parameters, of ``F``'s discriminant in ``u``: where two values
+    of the output meet (dead centres among them); none where ``u`` is polynomial in the input."""
+    eliminant = problem.numerator_in_t(problem.eliminant)
+    if sympy.degree(eliminant, problem.u) < 2:
+        return []
+    names = [p.name for p in problem.parameters]
+    try:
+        return eliminate([eliminant, sympy.diff(eliminant, problem.u)], [problem.u.name],
+                         [problem.t.name] + names, method="resultant").factors
+    except ComputationError:
+        return []  # the discriminant is a constant: the values never meet
 
 
 def critical_points(problem, factors, lo, hi):
@@ -110,8 +124,47 @@ def critical_points(problem, factors, lo, hi):
                 if lo <= degrees <= hi and _is_stationary(problem, degrees) and not _seen(found, degrees):
                     found.append(CriticalPoint(degrees, problem.value(degrees), _kind(problem, degrees),
                                                ball + turn))
+        found += _dead_centres(problem, lo, hi, found)
         ends = [CriticalPoint(mpmath.mpf(x), problem.value(mpmath.mpf(x)), "endpoint") for x in (lo, hi)]
     return sorted(found, key=lambda p: p.input_deg) + ends
+
+
+def _dead_centres(problem, lo, hi, found):
+    """Where the branch stops being real, inside the range: the ends of its real intervals.
+
+    There ``du/dtheta`` is infinite, not zero, so no stationary condition holds, yet the
+    branch's extreme over the inputs where it assembles may lie there. They are among the
+    real roots in ``t`` of ``F``'s discriminant in ``u`` (two values of ``u`` meet), those
+    where the branch is real on one side only; at the others two branches merely share a value.
+    """
+    points = []
+    for ball in (tangent_to_degrees(r) for f in meeting_factors(problem) if f.has(problem.t)
+                 for r in real_roots(f, problem.t)):
+        middle = mpmath.mpf(ball.mid().str(DIGITS, radius=False))
+        for degrees in (middle + turn for turn in (-360, 0, 360)):
+            value = _value_at_meeting(problem, degrees)
+            if lo <= degrees <= hi and value == value and _ends_here(problem, degrees) \
+                    and not _seen(found + points, degrees):
+                points.append(CriticalPoint(degrees, value, "dead centre", ball + (degrees - middle)))
+    return points
+
+
+def _ends_here(problem, degrees):
+    """Whether the branch is real just on one side of ``degrees``."""
+    step = mpmath.mpf(10) ** -12
+    left, right = (problem.value(degrees + d) for d in (-step, step))
+    return (left == left) != (right == right)
+
+
+def _value_at_meeting(problem, degrees):
+    """The branch's value where its square root's argument is zero up to rounding (the
+    imaginary part then tiny), nan where the branch is not real."""
+    angle = mpmath.radians(degrees)
+    result = evaluate(problem.closed, {problem.c.name: mpmath.cos(angle), problem.s.name: mpmath.sin(angle)}, MPMATH)
+    if isinstance(result, mpmath.mpc):
+        tiny = mpmath.mpf(10) ** (-DIGITS // 3) * (1 + abs(result))
+        return result.real if abs(result.imag) <= tiny else mpmath.nan
+    return result
 
 
 def points_at(problem, stationary, values, lo, hi):

@@ -115,3 +115,22 @@ def test_the_offset_symbolic_gives_the_minimum_where_the_slider_reaches():
     regions = found.closed_form.regions
     assert (regions[0]["to"], regions[0]["at"]) == (pytest.approx(-4), "nowhere")
     assert (regions[-1]["from"], regions[-1]["at"]) == (pytest.approx(4), "nowhere")
+
+
+def test_offsets_past_the_crank_put_the_minimum_at_a_dead_centre():
+    # For 2 < |e| < 4 the crank cannot turn: B is real only while |sin(t) - e| <= l, and its
+    # lowest x is at the dead centre sin(t) = e - l (or e + l): x = cos(t) = -sqrt(1 - (e -+ l)**2)
+    # by hand. Before, no dead centre was a candidate and the region's minimum was wrong.
+    found = extremum("slider-crank", "x", params=["e"])
+    (e,) = found.problem.parameters
+    grid = np.linspace(0, 360, 2000001)
+    for value in ("-7/2", "-5/2", "5/2", "7/2"):
+        at = sympy.Rational(value)
+        region, expr = next((r, v) for r, v in zip(found.closed_form.regions, found.closed_form.region_values)
+                            if r["from"] is not None and r["to"] is not None and r["from"] < at < r["to"])
+        hand = -np.sqrt(1 - (float(at) - np.sign(float(at)) * 3) ** 2)
+        assert region["at"] == "dead centre"
+        assert float(expr.xreplace({e: at})) == pytest.approx(hand, abs=1e-12)
+        with np.errstate(invalid="ignore"):  # not real past the dead centres
+            brute = np.nanmin(slider_position(grid, float(at)))
+        assert brute == pytest.approx(hand, abs=1e-2)

@@ -1,0 +1,27 @@
+"""Extremes of a branch that does not assemble over the whole range lie at its dead centres."""
+
+import math
+
+import pytest
+
+from algkin.analyses.extremum import extremum
+
+
+def test_triple_rocker_minimum_of_b_y_is_at_the_dead_centre():
+    # fourbar-nongrashof: crank 2 about O, ground 5, coupler 3, rocker 7/2. Below the dead
+    # centre the left branch's B.y falls steeply to the toggle, where A, B and D are collinear
+    # (|AD| = l + m = 13/2, cos(theta) = -53/80); no stationary point is there.
+    found = extremum("fourbar-nongrashof", "B.y")
+    theta = -math.acos(-53 / 80)
+    ax, ay = 2 * math.cos(theta), 2 * math.sin(theta)
+    by = ay + 3 / 6.5 * (0 - ay)  # B = A + l/(l + m) * (D - A), D = (5, 0)
+    assert found.minimum.kind == "dead centre"
+    assert float(found.minimum.input_deg) == pytest.approx(math.degrees(theta), abs=1e-9)
+    assert float(found.minimum.value) == pytest.approx(by, abs=1e-9)
+    assert float(found.maximum.value) > float(found.minimum.value)
+
+
+def test_turning_crank_has_no_dead_centre_candidates():
+    # The lambda's crank turns fully: B is real everywhere, so no extreme is a dead centre.
+    found = extremum("chebyshev-lambda", "B.y")
+    assert all(p.kind != "dead centre" for p in found.critical_points)
