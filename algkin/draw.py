@@ -20,7 +20,7 @@ from .errors import UsageError
 from .files import atomic_output, check_output
 from .plot import _figure
 
-__all__ = ["mechanism_figure", "modes_figure", "draw_pose", "PoseArtists", "LiveFigure", "draw_curve", "animate", "parse_inputs", "plot_mechanism", "FORMATS"]
+__all__ = ["mechanism_figure", "modes_figure", "draw_pose", "PoseArtists", "LiveFigure", "draw_curve", "animate", "parse_inputs", "parse_ranges", "plot_mechanism", "FORMATS"]
 
 FORMATS = (".png", ".svg", ".pdf", ".gif", ".mp4", ".html")
 _BAR = dict(color="tab:blue", linewidth=2.5, solid_capstyle="round", zorder=2)
@@ -316,9 +316,30 @@ def parse_inputs(motion, texts):
     return inputs
 
 
-def plot_mechanism(scene, out, inputs=(), branch=None, modes=False, params=None):
+def parse_ranges(texts):
+    """``--range-of`` values: ``NAME=LO:HI`` -> {name: (lo, hi)}, finite numbers with lo below hi.
+
+    >>> parse_ranges(["a=0.5:2", "l=1:3"])
+    {'a': (0.5, 2.0), 'l': (1.0, 3.0)}
+    """
+    ranges = {}
+    for text in texts:
+        name, _, span = text.partition("=")
+        try:
+            lo, hi = (float(v) for v in span.split(":"))
+        except ValueError:
+            lo = hi = float("nan")
+        # nan fails lo < hi, so only infinities need their own check.
+        if not (name and lo < hi and np.isfinite([lo, hi]).all()):
+            raise UsageError("--range-of", text, "expected NAME=LO:HI, finite numbers with LO below HI, e.g. a=0.5:2")
+        ranges[name] = (lo, hi)
+    return ranges
+
+
+def plot_mechanism(scene, out, inputs=(), branch=None, modes=False, params=None, ranges=()):
     """``algkin plot SCENE --out F``: the format follows the suffix of ``out``; returns ``out``.
 
+    ``ranges``: ``--range-of`` texts (``NAME=LO:HI``), the sliders' ranges of the .html page.
     A scene whose chosen assembly mode never assembles is refused before ``out`` is touched.
     """
     import pathlib
@@ -334,6 +355,9 @@ def plot_mechanism(scene, out, inputs=(), branch=None, modes=False, params=None)
     check_output("--out", out)
     if modes and branch is not None:
         raise UsageError("--branch", branch, "--modes draws every assembly mode; leave out --branch")
+    sliders = parse_ranges(ranges)
+    if sliders and suffix != ".html":
+        raise UsageError("--range-of", ranges[0], "only the .html page has sliders; write a .html")
     motion = Motion(scene, params)
     chosen = parse_inputs(motion, inputs) or None
     motion.branch_index(branch)  # a bad --branch fails before anything is drawn
@@ -341,7 +365,7 @@ def plot_mechanism(scene, out, inputs=(), branch=None, modes=False, params=None)
     if suffix == ".html":
         from .html import write
 
-        return write(motion, out, chosen, branch)
+        return write(motion, out, chosen, branch, sliders)
     if suffix in (".gif", ".mp4"):
         return animate(motion, out, branch=branch)
     figure = modes_figure(motion, chosen) if modes else mechanism_figure(motion, chosen, branch=branch)
