@@ -127,6 +127,8 @@ def build_parser():
     plot.add_argument("--modes", action="store_true", help="every assembly mode side by side")
     plot.add_argument("--param", action="append",
                       help="a dimension with a slider in the .html page (default: every dimension)")
+    plot.add_argument("--range-of", action="append", default=[], metavar="NAME=LO:HI",
+                      help="the range of dimension NAME's slider in the .html page (repeatable), e.g. a=0.5:2")
     plot.add_argument("--of", help="a scalar output: draw it against the input instead")
     plot.add_argument("--range", help="with --of: lo:hi of the input, in its unit")
     plot.add_argument("--derivative", action="store_true", help="with --of: the slope, with its zero marked")
@@ -321,12 +323,13 @@ def _cmd_plot(args):
         for option in ("range", "derivative", "against"):
             if getattr(args, option):
                 raise UsageError(f"--{option}", getattr(args, option), "goes with --of OUTPUT")
-        written = plot_mechanism(args.scene, args.out, args.input, args.branch, args.modes, args.param)
+        written = plot_mechanism(args.scene, args.out, args.input, args.branch, args.modes, args.param,
+                                 args.range_of)
         return _render(args, _written(args, written), lambda d: d["out"]), 0
-    for option in ("input", "branch", "modes", "param"):
+    for option in ("input", "branch", "modes", "param", "range_of"):
         if getattr(args, option):
             value = getattr(args, option)
-            raise UsageError(f"--{option}", " ".join(value) if isinstance(value, list) else value,
+            raise UsageError(f"--{option.replace('_', '-')}", " ".join(value) if isinstance(value, list) else value,
                              "draws the mechanism; leave out --of")
     out = _figure_path("--out", args.out)
     if args.against and args.derivative:

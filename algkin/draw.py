@@ -11,6 +11,8 @@ the zero contour of ``F(x, y)``: it must pass through the closed-form trajectory
 ['trajectory of P (left)', 'implicit curve of P (every assembly mode)']
 """
 
+import io
+
 import numpy as np
 import sympy
 
@@ -18,35 +20,66 @@ from .errors import UsageError
 from .files import atomic_output, check_output
 from .plot import _figure
 
-__all__ = ["mechanism_figure", "modes_figure", "draw_pose", "draw_curve", "animate", "parse_inputs", "plot_mechanism", "FORMATS"]
+__all__ = ["mechanism_figure", "modes_figure", "draw_pose", "PoseArtists", "LiveFigure", "draw_curve", "animate", "parse_inputs", "parse_ranges", "plot_mechanism", "FORMATS"]
 
 FORMATS = (".png", ".svg", ".pdf", ".gif", ".mp4", ".html")
 _BAR = dict(color="tab:blue", linewidth=2.5, solid_capstyle="round", zorder=2)
 _JOINT = dict(marker="o", markersize=6, color="black", markerfacecolor="white", zorder=4)
 
 
+def _xy(at, names):
+    """The x and y lists of the points ``names`` in ``at`` (empty when nothing is drawn)."""
+    pairs = [at[n] for n in names if n in at]
+    return [x for x, _ in pairs], [y for _, y in pairs]
+
+
+class PoseArtists:
+    """Bars, joints, ground pivots, slider guides, strings and labels of one configuration,
+    made once on ``axes`` and moved by ``show(pose)``: a slider or an animation frame sets
+    their data instead of drawing anew."""
+
+    def __init__(self, axes, motion, color=None):
+        # The scene's structure is read once: ``motion.guides`` substitutes into sympy.
+        self.bar_ends, self.string_ends, self.guide_lines = motion.bars, motion.strings, motion.guides
+        self.fixed = motion.ground
+        style = dict(_BAR, color=color) if color else _BAR
+        self.bars = [axes.plot([], [], **style)[0] for _ in self.bar_ends]
+        self.strings = [axes.plot([], [], color="tab:gray", linestyle="--", linewidth=1, zorder=1)[0]
+                        for _ in self.string_ends]
+        self.guides = [axes.axline((0, 0), direction, color="tab:gray", linewidth=1, zorder=1)
+                       for _, _, direction in self.guide_lines]
+        self.ground = axes.plot([], [], linestyle="none", marker="^", markersize=11, color="dimgray", zorder=3)[0]
+        self.joints = axes.plot([], [], linestyle="none", **_JOINT)[0]
+        self.labels = {name: axes.annotate(name, (0, 0), textcoords="offset points", xytext=(6, 6), fontsize="small")
+                       for name in motion.points[0]}
+        self.blocked = axes.text(0.5, 0.5, "", transform=axes.transAxes, ha="center", va="center",
+                                 color="tab:red", fontsize="large", visible=False)
+
+    def show(self, pose):
+        """Move every artist to ``pose``; where it cannot assemble, only the red text is shown."""
+        at = pose.points if pose.assembles else {}
+        self.blocked.set_text(f"cannot assemble: {', '.join(pose.blocked)}")
+        self.blocked.set_visible(not pose.assembles)
+        for line, ends in zip(self.bars + self.strings, self.bar_ends + self.string_ends):
+            line.set_data(*_xy(at, ends))
+        for line, (_, through, (dx, dy)) in zip(self.guides, self.guide_lines):
+            line.set_visible(pose.assembles)
+            if pose.assembles:
+                x, y = at[through]
+                line.set_xy1((x, y))
+                line.set_xy2((x + dx, y + dy))
+        self.ground.set_data(*_xy(at, self.fixed))
+        self.joints.set_data(*_xy(at, [p for p in at if p not in self.fixed]))
+        for name, label in self.labels.items():
+            label.set_visible(pose.assembles)
+            label.xy = at.get(name, (0, 0))
+
+
 def draw_pose(axes, motion, pose, color=None):
     """Bars, joints, ground pivots, slider guides and strings of ``pose`` on ``axes``."""
-    if not pose.assembles:
-        axes.text(0.5, 0.5, f"cannot assemble: {', '.join(pose.blocked)}", transform=axes.transAxes,
-                  ha="center", va="center", color="tab:red", fontsize="large")
-        return
-    at = pose.points
-    style = dict(_BAR, color=color) if color else _BAR
-    for p, q in motion.bars:
-        axes.plot(*zip(at[p], at[q]), **style)
-    for p, q in motion.strings:
-        axes.plot(*zip(at[p], at[q]), color="tab:gray", linestyle="--", linewidth=1, zorder=1)
-    for point, through, (dx, dy) in motion.guides:
-        x, y = at[through]
-        axes.axline((x, y), (x + dx, y + dy), color="tab:gray", linewidth=1, zorder=1)
-    ground = motion.ground
-    axes.plot(*zip(*(at[g] for g in ground)), linestyle="none", marker="^", markersize=11,
-              color="dimgray", zorder=3)
-    moving = [p for p in at if p not in ground]
-    axes.plot(*zip(*(at[p] for p in moving)), linestyle="none", **_JOINT)
-    for name, (x, y) in at.items():
-        axes.annotate(name, (x, y), textcoords="offset points", xytext=(6, 6), fontsize="small")
+    artists = PoseArtists(axes, motion, color)
+    artists.show(pose)
+    return artists
 
 
 # One colour per traced point, none of them the bars' blue or the joints' black and grey.
@@ -59,17 +92,27 @@ def trace_color(motion, name):
 
 
 def _trajectories(axes, motion, points, label=None):
-    """Each traced point's path from ``points`` (a sweep), labelled with the branch if given."""
-    for name in motion.traced:
-        axes.plot(*points[name], color=trace_color(motion, name), linewidth=1.5, zorder=1,
-                  label=f"trajectory of {name}" + (f" ({label})" if label else ""))
+    """Each traced point's path from ``points`` (a sweep), labelled with the branch if given:
+    point -> its line."""
+    return {name: axes.plot(*points[name], color=trace_color(motion, name), linewidth=1.5, zorder=1,
+                            label=_trajectory_label(name, label))[0]
+            for name in motion.traced}
 
 
-def _bounds(motion, parameters):
-    """Box around every point on every branch over the whole sweep (nan-free)."""
+def _trajectory_label(name, branch=None):
+    return f"trajectory of {name}" + (f" ({branch})" if branch else "")
+
+
+def _sweeps(motion, parameters):
+    """Every branch's sweep at ``parameters``: branch label -> point -> (x, y) arrays."""
+    return {b.label: motion.sweep(parameters, b.label)[1] for b in motion.branches}
+
+
+def _bounds(motion, parameters, sweeps=None):
+    """Box around every point on every branch over the whole sweep (nan-free); ``sweeps``:
+    those of ``_sweeps(motion, parameters)`` when already made."""
     xs, ys = [], []
-    for k in range(len(motion.branches)):
-        _, points = motion.sweep(parameters, motion.branches[k].label)
+    for points in (sweeps or _sweeps(motion, parameters)).values():
         for x, y in points.values():
             xs.append(x[np.isfinite(x)])
             ys.append(y[np.isfinite(y)])
@@ -96,10 +139,85 @@ def draw_curve(axes, result, bounds, grid=500, color="tab:green"):
     return contour
 
 
-def _finish(axes, title, adjustable="datalim"):
-    axes.set_aspect("equal", adjustable=adjustable)
+def _finish(axes, title):
+    # Fixed limits on every drawing: the box, not the data limits, keeps the scales equal.
+    axes.set_aspect("equal", adjustable="box")
     axes.grid(True, linewidth=0.3)
     axes.set_title(title, fontsize="medium", parse_math=False)  # a scene's name is text, never mathtext
+
+
+def _pose_title(motion):
+    """The title of a figure of one configuration: the scene, its input angles, its branch."""
+    def title(pose):
+        angles = ", ".join(f"{n} = {v:g}°" for n, v in pose.inputs.items())
+        return f"{motion.scene.name}: {angles}, {pose.branch}"
+    return title
+
+
+class LiveFigure:
+    """One configuration with its trajectories, built once and then moved by ``update``.
+
+    A move sets the artists' data (``PoseArtists``) and the title. Every branch is swept
+    again (for the trajectories and the limits) only when a dimension changed; a new
+    branch only picks its sweep. So a slider costs an evaluation and a render, not a new figure.
+    ``title``: pose -> the text above the axes.
+    """
+
+    def __init__(self, motion, parameters=None, branch=None, title=None):
+        self.motion, self.title = motion, title or _pose_title(motion)
+        self.parameters = motion.complete(None, parameters)[1]
+        self.branch = motion.branches[motion.branch_index(branch)].label
+        self.sweeps = _sweeps(motion, self.parameters)
+        self.bounds = _bounds(motion, self.parameters, self.sweeps)
+        self.figure = _figure()
+        self._layout = self.figure.get_layout_engine()
+        # A figure shaped like the mechanism's reach, so equal scales leave little empty space.
+        ratio = (self.bounds[3] - self.bounds[2]) / (self.bounds[1] - self.bounds[0])
+        self.figure.set_size_inches(6.4, min(max(6.4 * ratio, 3.6), 7.2))
+        self.axes = self.figure.add_subplot()
+        self.paths = _trajectories(self.axes, motion, self.sweeps[self.branch], self.branch)
+        self.artists = PoseArtists(self.axes, motion)
+        _finish(self.axes, "")
+        self._limit()
+
+    def _limit(self):
+        self._relayout = True
+        self.axes.set_xlim(self.bounds[0], self.bounds[1])
+        self.axes.set_ylim(self.bounds[2], self.bounds[3])
+
+    def update(self, inputs=None, parameters=None, branch=None):
+        """Move the figure to ``inputs`` (degrees), ``parameters`` and ``branch``; returns the pose."""
+        return self.show(self.motion.at(inputs, parameters, branch))
+
+    def show(self, pose):
+        """Move the figure to ``pose`` (a ``Motion.at`` or ``Motion.poses`` configuration)."""
+        if pose.parameters != self.parameters:
+            self.sweeps = _sweeps(self.motion, pose.parameters)
+            self.bounds = _bounds(self.motion, pose.parameters, self.sweeps)
+            self._limit()
+        if (pose.parameters, pose.branch) != (self.parameters, self.branch):
+            for name, line in self.paths.items():
+                line.set_data(*self.sweeps[pose.branch][name])
+                line.set_label(_trajectory_label(name, pose.branch))
+        self.parameters, self.branch = pose.parameters, pose.branch
+        self.artists.show(pose)
+        self.axes.title.set_text(self.title(pose))
+        return pose
+
+    def png(self, dpi=90):
+        """The figure as it stands, as PNG bytes at ``dpi``.
+
+        The constrained layout costs a third of a render: it is computed on the first render
+        and again after the limits changed (tick labels may widen), and kept in between.
+        """
+        if self.figure.dpi != dpi:
+            self.figure.set_dpi(dpi)
+        self.figure.set_layout_engine(self._layout if self._relayout else "none")
+        buffer = io.BytesIO()
+        # Fast compression: the bytes go to the notebook next door, not to a file kept.
+        self.figure.canvas.print_png(buffer, pil_kwargs={"compress_level": 1})
+        self._relayout = False
+        return buffer.getvalue()
 
 
 def mechanism_figure(motion, inputs=None, parameters=None, branch=None, curve=True):
@@ -108,44 +226,37 @@ def mechanism_figure(motion, inputs=None, parameters=None, branch=None, curve=Tr
     The implicit curves are derived at the dimensions' defaults, so they are drawn only there.
     """
     inputs = inputs if inputs is not None else motion.start(parameters, branch)
-    pose = motion.at(inputs, parameters, branch)
-    bounds = _bounds(motion, parameters)
-    figure = _figure()
-    # A figure shaped like the mechanism's reach, so equal scales leave little empty space.
-    figure.set_size_inches(6.4, min(max(6.4 * (bounds[3] - bounds[2]) / (bounds[1] - bounds[0]), 3.6), 7.2))
-    axes = figure.add_subplot()
-    _trajectories(axes, motion, motion.sweep(parameters, branch)[1], pose.branch)
+    live = LiveFigure(motion, parameters, branch)
+    live.update(inputs, parameters, branch)
     at_defaults = all(v == motion.defaults[p] for p, v in motion.complete(inputs, parameters)[1].items())
     # With two inputs a point sweeps a region, not a curve: no implicit curve then.
     if curve and at_defaults and len(motion.inputs) == 1:
         from .pipeline import curve as derive_curve
 
         for name in motion.traced:
-            draw_curve(axes, derive_curve(motion.scene, name, samples=0), bounds, color=trace_color(motion, name))
-    draw_pose(axes, motion, pose)
-    angles = ", ".join(f"{n} = {v:g}°" for n, v in pose.inputs.items())
-    _finish(axes, f"{motion.scene.name}: {angles}, {pose.branch}")
+            draw_curve(live.axes, derive_curve(motion.scene, name, samples=0), live.bounds,
+                       color=trace_color(motion, name))
     # Below the axes: inside, it would cover a curve on one scene or another.
-    figure.legend(loc="outside lower center", ncols=2, fontsize="small")
-    return figure
+    live.figure.legend(loc="outside lower center", ncols=2, fontsize="small")
+    return live.figure
 
 
 def modes_figure(motion, inputs=None, parameters=None):
     """Every assembly mode at the same inputs, side by side, each with its trajectory."""
     inputs = inputs if inputs is not None else motion.start(parameters)
-    bounds = _bounds(motion, parameters)
+    sweeps = _sweeps(motion, parameters)
+    bounds = _bounds(motion, parameters, sweeps)
     figure = _figure()
     figure.set_size_inches(*_panels_size(bounds, len(motion.branches)))
     shared = None
     for k, branch in enumerate(motion.branches):
         axes = figure.add_subplot(1, len(motion.branches), k + 1, sharex=shared, sharey=shared)
         shared = shared or axes
-        _trajectories(axes, motion, motion.sweep(parameters, branch.label)[1])
+        _trajectories(axes, motion, sweeps[branch.label])
         draw_pose(axes, motion, motion.at(inputs, parameters, branch.label))
         axes.set_xlim(bounds[0], bounds[1])
         axes.set_ylim(bounds[2], bounds[3])
-        # Shared axes cannot each stretch their data limits: keep equal scales by the box.
-        _finish(axes, f"{branch.label}" + (" (scene's choice)" if branch.selected else ""), "box")
+        _finish(axes, f"{branch.label}" + (" (scene's choice)" if branch.selected else ""))
         axes.label_outer()  # the shared y scale is read off the first panel
     angles = ", ".join(f"{n} = {v:g}°" for n, v in motion.complete(inputs)[0].items())
     figure.suptitle(f"{motion.scene.name}: assembly modes at {angles}", parse_math=False)
@@ -170,21 +281,10 @@ def animate(motion, out, parameters=None, branch=None, frames=72, fps=24):
     if suffix == ".mp4" and not animation.writers.is_available("ffmpeg"):
         raise UsageError("--out", str(out), "an .mp4 needs ffmpeg on PATH (not found); write a .gif instead")
     name = next(iter(motion.inputs))
-    bounds = _bounds(motion, parameters)
-    paths = motion.sweep(parameters, branch)[1]
-    figure = _figure()
-    axes = figure.add_subplot()
+    # One figure moved frame by frame: the artists' data change, nothing is drawn anew.
+    live = LiveFigure(motion, parameters, branch, title=lambda pose: f"{motion.scene.name}: {name} = {pose.inputs[name]:.1f}°")
 
-    def frame(pose):
-        axes.clear()
-        _trajectories(axes, motion, paths)
-        draw_pose(axes, motion, pose)
-        axes.set_xlim(bounds[0], bounds[1])
-        axes.set_ylim(bounds[2], bounds[3])
-        # Fixed limits on every frame: the box, not the data limits, keeps the scales equal.
-        _finish(axes, f"{motion.scene.name}: {name} = {pose.inputs[name]:.1f}°", "box")
-
-    movie = animation.FuncAnimation(figure, frame, frames=motion.poses(parameters, branch, frames),
+    movie = animation.FuncAnimation(live.figure, live.show, frames=motion.poses(parameters, branch, frames),
                                     cache_frame_data=False)
     writer = animation.PillowWriter(fps=fps) if suffix == ".gif" else animation.FFMpegWriter(fps=fps)
     with atomic_output(out) as temporary:  # the writers infer the format from the kept suffix
@@ -216,9 +316,30 @@ def parse_inputs(motion, texts):
     return inputs
 
 
-def plot_mechanism(scene, out, inputs=(), branch=None, modes=False, params=None):
+def parse_ranges(texts):
+    """``--range-of`` values: ``NAME=LO:HI`` -> {name: (lo, hi)}, finite numbers with lo below hi.
+
+    >>> parse_ranges(["a=0.5:2", "l=1:3"])
+    {'a': (0.5, 2.0), 'l': (1.0, 3.0)}
+    """
+    ranges = {}
+    for text in texts:
+        name, _, span = text.partition("=")
+        try:
+            lo, hi = (float(v) for v in span.split(":"))
+        except ValueError:
+            lo = hi = float("nan")
+        # nan fails lo < hi, so only infinities need their own check.
+        if not (name and lo < hi and np.isfinite([lo, hi]).all()):
+            raise UsageError("--range-of", text, "expected NAME=LO:HI, finite numbers with LO below HI, e.g. a=0.5:2")
+        ranges[name] = (lo, hi)
+    return ranges
+
+
+def plot_mechanism(scene, out, inputs=(), branch=None, modes=False, params=None, ranges=()):
     """``algkin plot SCENE --out F``: the format follows the suffix of ``out``; returns ``out``.
 
+    ``ranges``: ``--range-of`` texts (``NAME=LO:HI``), the sliders' ranges of the .html page.
     A scene whose chosen assembly mode never assembles is refused before ``out`` is touched.
     """
     import pathlib
@@ -234,6 +355,9 @@ def plot_mechanism(scene, out, inputs=(), branch=None, modes=False, params=None)
     check_output("--out", out)
     if modes and branch is not None:
         raise UsageError("--branch", branch, "--modes draws every assembly mode; leave out --branch")
+    sliders = parse_ranges(ranges)
+    if sliders and suffix != ".html":
+        raise UsageError("--range-of", ranges[0], "only the .html page has sliders; write a .html")
     motion = Motion(scene, params)
     chosen = parse_inputs(motion, inputs) or None
     motion.branch_index(branch)  # a bad --branch fails before anything is drawn
@@ -241,7 +365,7 @@ def plot_mechanism(scene, out, inputs=(), branch=None, modes=False, params=None)
     if suffix == ".html":
         from .html import write
 
-        return write(motion, out, chosen, branch)
+        return write(motion, out, chosen, branch, sliders)
     if suffix in (".gif", ".mp4"):
         return animate(motion, out, branch=branch)
     figure = modes_figure(motion, chosen) if modes else mechanism_figure(motion, chosen, branch=branch)

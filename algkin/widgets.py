@@ -16,7 +16,7 @@ hide the function ``algkin.interact``); the logic lives in ``Explorer`` and need
 'left: cannot assemble at theta = 180° (B: the two circles never meet)'
 """
 
-import io
+import functools
 
 from .html import _slider, parameter_range
 from .motion import Motion
@@ -51,7 +51,9 @@ class Explorer:
 
     def caption(self, **values):
         """One line: the branch, and whether it assembles at these values."""
-        pose = self.pose(**values)
+        return self._caption(self.pose(**values))
+
+    def _caption(self, pose):
         angles = ", ".join(f"{n} = {v:g}°" for n, v in pose.inputs.items())
         if pose.assembles:
             return f"{pose.branch}: {angles}"
@@ -60,7 +62,7 @@ class Explorer:
         return f"{pose.branch}: cannot assemble at {angles} ({why})"
 
     def figure(self, **values):
-        """The mechanism at these values with its trajectories (no re-derivation)."""
+        """The mechanism at these values with its trajectories (no re-derivation): a new figure."""
         from .draw import mechanism_figure
 
         inputs, parameters, branch = self._split(dict(values))
@@ -68,11 +70,22 @@ class Explorer:
         figure.axes[0].set_title(self.caption(**values), fontsize="medium")
         return figure
 
+    @functools.cached_property
+    def live(self):
+        """The one figure the sliders move (``algkin.draw.LiveFigure``), captioned like ``figure``."""
+        from .draw import LiveFigure
+
+        return LiveFigure(self.motion, title=self._caption)
+
     def png(self, **values):
-        """The figure as PNG bytes (what the notebook shows)."""
-        buffer = io.BytesIO()
-        self.figure(**values).savefig(buffer, format="png", dpi=90)
-        return buffer.getvalue()
+        """The picture at these values as PNG bytes (what the notebook shows): the live figure
+        moved there and rendered, no new figure.
+
+        >>> Explorer("chebyshev-lambda").png(angle=90)[:8]
+        b'\\x89PNG\\r\\n\\x1a\\n'
+        """
+        self.live.update(*self._split(dict(values)))
+        return self.live.png()
 
 
 def interact(scene, params=None, ranges=None):
@@ -84,7 +97,6 @@ def interact(scene, params=None, ranges=None):
     """
     try:
         import ipywidgets
-        from IPython.display import Image, display
     except ImportError:
         from .errors import AlgkinError
 
@@ -99,5 +111,12 @@ def interact(scene, params=None, ranges=None):
         controls["branch"] = ipywidgets.Dropdown(options=[b.label for b in branches],
                                                  value=branches[explorer.motion.selected].label,
                                                  description="mode")
-    shown = ipywidgets.interactive_output(lambda **values: display(Image(explorer.png(**values))), controls)
-    return ipywidgets.VBox([ipywidgets.VBox(list(controls.values())), shown])
+
+    def picture():
+        return explorer.png(**{name: control.value for name, control in controls.items()})
+
+    # One Image widget whose bytes are replaced on a move: the figure behind it is never rebuilt.
+    image = ipywidgets.Image(value=picture(), format="png")
+    for control in controls.values():
+        control.observe(lambda change: setattr(image, "value", picture()), names="value")
+    return ipywidgets.VBox([ipywidgets.VBox(list(controls.values())), image])
