@@ -40,17 +40,56 @@ class _Parser(argparse.ArgumentParser):
         raise UsageError("arguments", " ".join(sys.argv[1:]), message)
 
 
+class _Help(argparse.ArgumentDefaultsHelpFormatter):
+    """``--help`` with each option's default, where it has one worth saying (not None, False or [])."""
+
+    def _get_help_string(self, action):
+        if action.default is None or action.default is False or action.default == [] \
+                or action.default is argparse.SUPPRESS:
+            return action.help
+        return super()._get_help_string(action)
+
+
+def _command(commands, name, summary):
+    """A subcommand whose ``--help`` starts with its one-line summary and shows the defaults."""
+    return commands.add_parser(name, help=summary, description=summary, formatter_class=_Help)
+
+
+def _scene(parser):
+    """The scene argument, and ``--set``: every command that takes a scene takes both (SPEC §3)."""
+    parser.add_argument("scene", help="catalog name (see `algkin list`) or path of a scene file (.toml)")
+    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                        help="an exact value for a dimension (3/2, 0.1 = 1/10, sqrt(2)); repeatable")
+
+
+def _json(parser, what="the whole result"):
+    parser.add_argument("--json", action="store_true", help=f"one JSON document on stdout: {what}")
+
+
 def _common(parser, method=True):
-    parser.add_argument("scene", help="catalog name or path of a scene file")
-    parser.add_argument("--json", action="store_true", help="one JSON document on stdout")
+    _scene(parser)
+    _json(parser)
     if method:
         parser.add_argument("--method", default=None,
                             help="elimination method: linear (the default), resultant, groebner")
         parser.add_argument("--backend", default="flint", help="polynomial backend: flint, sympy")
-        parser.add_argument("--param", action="append", default=[], help="keep this parameter symbolic")
-        parser.add_argument("--samples", type=int, default=40, help="verification samples")
-        parser.add_argument("--seed", type=int, default=0, help="verification seed")
+        parser.add_argument("--param", action="append", default=[], metavar="NAME",
+                            help="keep this dimension symbolic (repeatable); the others take their defaults")
+        parser.add_argument("--samples", type=int, default=40,
+                            help="numeric samples the closed forms are checked on (0 skips the check)")
+        parser.add_argument("--seed", type=int, default=0, help="random seed of the verification samples")
         _budget_options(parser)
+
+
+def _full_forms(parser):
+    """``--out`` and ``--latex``: the complete results, which the text report only summarises."""
+    parser.add_argument("--out", metavar="FILE", help="also write the full JSON document to FILE")
+    _latex(parser)
+
+
+def _latex(parser):
+    parser.add_argument("--latex", action="store_true",
+                        help="print the results as LaTeX instead of the text report (not with --json)")
 
 
 def _budget_options(parser, terms=True):
@@ -78,49 +117,63 @@ def _terms(text):
 
 
 def build_parser():
-    parser = _Parser(prog="algkin", description="Closed forms of planar mechanisms by elimination.")
-    commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
-    listing = commands.add_parser("list", help="the catalog")
-    listing.add_argument("--json", action="store_true")
-    show = commands.add_parser("show", help="the scene and the system it compiles to")
+    from . import __version__
+
+    parser = _Parser(prog="algkin", description="Closed forms of planar mechanisms by elimination.",
+                     formatter_class=_Help)
+    parser.add_argument("--version", action="version", version=f"algkin {__version__}",
+                        help="print the version and exit")
+    commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser, metavar="command",
+                                     help="one of the commands below; `algkin COMMAND --help` for its options")
+    listing = _command(commands, "list", "the catalog")
+    _json(listing, "each scene's name and description")
+    show = _command(commands, "show", "the scene and the system it compiles to")
     _common(show, method=False)
-    show.add_argument("--outputs", nargs="+", help="outputs (names, points, dist(P, Q), P.x)")
-    show.add_argument("--param", action="append", default=[])
+    show.add_argument("--outputs", nargs="+", metavar="OUTPUT",
+                      help="outputs (names, points, dist(P, Q), P.x); default: the scene's")
+    show.add_argument("--param", action="append", default=[], metavar="NAME",
+                      help="keep this dimension symbolic (repeatable)")
     _budget_options(show, terms=False)
-    derive = commands.add_parser("derive", help="eliminants, closed-form branches, verification")
+    derive = _command(commands, "derive", "eliminants, closed-form branches, verification")
     _common(derive)
-    derive.add_argument("--outputs", nargs="+")
-    curve = commands.add_parser("curve", help="implicit trajectory curve of a point")
+    derive.add_argument("--outputs", nargs="+", metavar="OUTPUT",
+                        help="outputs (names, points, dist(P, Q), P.x); default: the scene's")
+    _full_forms(derive)
+    curve = _command(commands, "curve", "implicit trajectory curve of a point")
     _common(curve)
-    curve.add_argument("--point", required=True)
-    verify = commands.add_parser("verify", help="closed forms against independent numeric solutions")
+    curve.add_argument("--point", required=True, help="the point whose trajectory is wanted")
+    _full_forms(curve)
+    verify = _command(commands, "verify", "closed forms against independent numeric solutions")
     _common(verify)
-    verify.add_argument("--outputs", nargs="+")
-    extremum = commands.add_parser("extremum", help="stationary points of an output over the input")
-    extremum.add_argument("scene")
+    verify.add_argument("--outputs", nargs="+", metavar="OUTPUT",
+                        help="outputs (names, points, dist(P, Q), P.x); default: the scene's")
+    extremum = _command(commands, "extremum", "stationary points of an output over the input")
+    _scene(extremum)
     extremum.add_argument("--of", required=True, help="a scalar output: distance or coordinate")
-    extremum.add_argument("--range", help="lo:hi in the input's unit")
-    extremum.add_argument("--param", action="append", default=[],
+    extremum.add_argument("--range", metavar="LO:HI", help="lo:hi in the input's unit; default: its declared range")
+    extremum.add_argument("--param", action="append", default=[], metavar="NAME",
                           help="keep this dimension symbolic: the minimum as a closed form in it")
-    extremum.add_argument("--json", action="store_true")
+    _json(extremum)
+    _latex(extremum)
     _budget_options(extremum)
-    toggles = commands.add_parser("toggles", help="input angles where assembly modes meet, certified")
-    toggles.add_argument("scene")
-    toggles.add_argument("--json", action="store_true")
+    toggles = _command(commands, "toggles", "input angles where assembly modes meet, certified")
+    _scene(toggles)
+    _json(toggles)
     _budget_options(toggles)
-    accuracy = commands.add_parser("accuracy", help="speed against error of each evaluation strategy")
-    accuracy.add_argument("scene")
+    accuracy = _command(commands, "accuracy", "speed against error of each evaluation strategy")
+    _scene(accuracy)
     accuracy.add_argument("--samples", type=int, default=2000, help="samples per case")
-    accuracy.add_argument("--seed", type=int, default=0)
-    accuracy.add_argument("--plot", help="also draw time against error (log-log) to this .png/.svg/.pdf")
-    accuracy.add_argument("--json", action="store_true")
+    accuracy.add_argument("--seed", type=int, default=0, help="random seed of the samples")
+    accuracy.add_argument("--plot", metavar="FILE",
+                          help="also draw time against error (log-log) to this .png/.svg/.pdf")
+    _json(accuracy)
     _budget_options(accuracy)
-    plot = commands.add_parser("plot", help="the mechanism with its trajectories and implicit curves "
-                                            "(.png/.svg/.pdf), animated (.gif/.mp4), an interactive page "
-                                            "(.html); with --of a quantity against the input")
-    plot.add_argument("scene")
+    plot = _command(commands, "plot", "the mechanism with its trajectories and implicit curves "
+                                      "(.png/.svg/.pdf), animated (.gif/.mp4), an interactive page "
+                                      "(.html); with --of a quantity against the input")
+    _scene(plot)
     plot.add_argument("--out", required=True, help="the file to write: .png, .svg, .pdf, .gif, .mp4 or .html")
-    plot.add_argument("--json", action="store_true", help="one JSON document on stdout: what was written")
+    _json(plot, "what was written")
     plot.add_argument("--input", action="append", default=[],
                       help="the input angle drawn, in degrees: VALUE, or NAME=VALUE for each input")
     plot.add_argument("--branch", help="the assembly mode drawn (default: the scene's)")
@@ -131,7 +184,7 @@ def build_parser():
     plot.add_argument("--range", help="with --of: lo:hi of the input, in its unit")
     plot.add_argument("--derivative", action="store_true", help="with --of: the slope, with its zero marked")
     plot.add_argument("--against", help="with --of: p=lo:hi, the minimum against the dimension p")
-    bench = commands.add_parser("bench", help="elimination methods compared on a problem set, peers beside")
+    bench = _command(commands, "bench", "elimination methods compared on a problem set, peers beside")
     bench.add_argument("--problems", nargs="+", help="problem names (default: the whole suite)")
     bench.add_argument("--methods", nargs="+", help="elimination methods (default: all)")
     bench.add_argument("--backends", nargs="+", help="polynomial backends (default: all)")
@@ -140,7 +193,7 @@ def build_parser():
     bench.add_argument("--rounds", type=int, default=3,
                        help="rows under 2 s are measured this many times in turn, each keeping its best")
     bench.add_argument("--out", help="directory for bench.json, bench.csv and bench.png")
-    bench.add_argument("--json", action="store_true")
+    _json(bench)
     return parser
 
 
@@ -189,6 +242,16 @@ def _progress(message):
     print(f"\r\033[Kalgkin bench: {message}", end="", file=sys.stderr, flush=True)
 
 
+def _scene_of(args, params=None):
+    """The command's scene, loaded, with the dimensions ``--set`` gives set (``params``, by default
+    ``--param``, are kept symbolic and cannot be set)."""
+    from .scene import load_scene
+    from .scene.settings import parse_settings, with_values
+
+    symbolic = getattr(args, "param", ()) if params is None else params
+    return with_values(load_scene(args.scene), parse_settings(args.set), symbolic)
+
+
 def _method(args):
     """The method asked for, else the default (imported here: ``algkin list`` loads no algebra)."""
     from .eliminate import DEFAULT_METHOD
@@ -212,7 +275,7 @@ def _cmd_extremum(args):
     from .analyses.extremum import extremum
 
     angles = _range(args.range) if args.range else None
-    return _render(args, extremum(args.scene, args.of, angles, params=args.param).to_json(), _report_extremum), 0
+    return _render(args, extremum(_scene_of(args), args.of, angles, params=args.param).to_json(), _report_extremum), 0
 
 
 def _report_extremum(d):
@@ -253,7 +316,7 @@ def _interval(region):
 def _cmd_toggles(args):
     from .toggles import toggles
 
-    return _render(args, toggles(args.scene).to_json(), _report_toggles), 0
+    return _render(args, toggles(_scene_of(args)).to_json(), _report_toggles), 0
 
 
 def _report_toggles(d):
@@ -277,7 +340,7 @@ def _cmd_accuracy(args):
     if args.samples < 10:
         raise UsageError("--samples", args.samples, "needs at least 10 samples per case")
     out = _figure_path("--plot", args.plot) if args.plot else None
-    result = accuracy(args.scene, args.samples, args.seed)
+    result = accuracy(_scene_of(args), args.samples, args.seed)
     text = _render(args, result.to_json(), _report_accuracy)
     if out is None:
         return text, 0
@@ -317,7 +380,8 @@ def _cmd_plot(args):
         for option in ("range", "derivative", "against"):
             if getattr(args, option):
                 raise UsageError(f"--{option}", getattr(args, option), "goes with --of OUTPUT")
-        written = plot_mechanism(args.scene, args.out, args.input, args.branch, args.modes, args.param)
+        # plot's --param names the page's sliders, which start at the values set: no clash
+        written = plot_mechanism(_scene_of(args, ()), args.out, args.input, args.branch, args.modes, args.param)
         return _render(args, _written(args, written), lambda d: d["out"]), 0
     for option in ("input", "branch", "modes", "param"):
         if getattr(args, option):
@@ -331,7 +395,8 @@ def _cmd_plot(args):
     from .mechanism import load
     from .plot import minimum_figure, quantity_figure, save
 
-    quantity = load(args.scene, [against[0]] if against else []).output(args.of)
+    params = [against[0]] if against else []
+    quantity = load(_scene_of(args, params), params).output(args.of)
     found = quantity.extremum(_range(args.range) if args.range else None)
     figure = minimum_figure(quantity, found, *against) if against else \
         quantity_figure(quantity, found, derivative=args.derivative)
@@ -384,10 +449,10 @@ def _cmd_list(args):
 
 def _cmd_show(args):
     from .budget import current
-    from .scene import compile_scene, load_scene
+    from .scene import compile_scene
 
     current().note(f"loading {args.scene}")
-    scene = load_scene(args.scene)
+    scene = _scene_of(args)
     current().note(f"compiling {scene.name}")
     compiled = compile_scene(scene, args.outputs, args.param)
     document = {
@@ -415,7 +480,7 @@ def _report_show(d):
 def _cmd_derive(args):
     from .pipeline import derive
 
-    result = derive(args.scene, args.outputs, _method(args), args.backend, args.param, args.samples, args.seed)
+    result = derive(_scene_of(args), args.outputs, _method(args), args.backend, args.param, args.samples, args.seed)
     return _render(args, result.to_json(), _report_derive), _verdict(result.verification)
 
 
@@ -456,7 +521,7 @@ def _report_derive(d):
 def _cmd_curve(args):
     from .pipeline import curve
 
-    result = curve(args.scene, args.point, _method(args), args.backend, args.param, args.samples, args.seed)
+    result = curve(_scene_of(args), args.point, _method(args), args.backend, args.param, args.samples, args.seed)
     return _render(args, result.to_json(), _report_curve), _verdict(result.verification)
 
 
@@ -476,7 +541,7 @@ def _cmd_verify(args):
 
     if args.samples == 0:
         raise UsageError("--samples", 0, "verify needs at least one sample (derive and curve take 0 to skip it)")
-    result = derive(args.scene, args.outputs, _method(args), args.backend, args.param, args.samples, args.seed,
+    result = derive(_scene_of(args), args.outputs, _method(args), args.backend, args.param, args.samples, args.seed,
                     certify=False)
     document = {"scene": result.compiled.scene.name, "verification": result.verification.to_json(),
                 "branches": [b.label for b in result.branches], "timings": result.timings}
@@ -497,6 +562,10 @@ def main(argv=None):
     leaves the caller's in place.
     """
     argv = sys.argv[1:] if argv is None else list(argv)
+    if not argv:
+        # Bare ``algkin`` is a question ("what can it do?"), not a mistake: the help listing the
+        # commands, on stdout, exit 0 (as ``--help``); a wrong command line is still exit 2.
+        return _write(build_parser().format_help(), 0)
     args = None  # until parsed: an error before then still says what it can
     with _stopping_signals():
         try:

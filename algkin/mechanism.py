@@ -22,14 +22,17 @@ from .errors import UsageError
 from .evaluate import MPMATH, evaluate
 from . import validation
 from .scene.load import as_scene
+from .scene.settings import with_values
 from .system import symbol
 
 __all__ = ["load", "Mechanism", "Quantity"]
 
 
-def load(scene, params=()):
-    """A mechanism from a catalog name, a path or a ``Scene``; ``params`` stay symbolic."""
-    return Mechanism(as_scene(scene), validation.names("params", params))
+def load(scene, params=(), set=None):  # noqa: A002 - ``set=`` is the public name (SPEC §3's --set)
+    """A mechanism from a catalog name, a path or a ``Scene``; ``params`` stay symbolic, and
+    ``set`` gives others exact values in place of their defaults (``set={"b": "3/2"}``)."""
+    params = validation.names("params", params)
+    return Mechanism(with_values(as_scene(scene), set, params), params)
 
 
 class Mechanism:
