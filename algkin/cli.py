@@ -274,8 +274,26 @@ def _range(text):
 def _cmd_extremum(args):
     from .analyses.extremum import extremum
 
+    _check_latex(args)
     angles = _range(args.range) if args.range else None
-    return _render(args, extremum(_scene_of(args), args.of, angles, params=args.param).to_json(), _report_extremum), 0
+    found = extremum(_scene_of(args), args.of, angles, params=args.param)
+    if args.latex:
+        return _latex_lines(_extremum_forms(found)), 0
+    return _render(args, found.to_json(), _report_extremum), 0
+
+
+def _extremum_forms(found):
+    """The minimum and maximum for ``--latex``; with ``--param``, the closed form and its input."""
+    import sympy
+
+    forms = [(f"{key} of {found.output} (at {found.input} = {float(point.input_deg):.12g} deg)",
+              sympy.Float(float(point.value), 15), "") for key, point in (("minimum", found.minimum),
+                                                                   ("maximum", found.maximum))]
+    if found.closed_form is not None:
+        forms.append((f"minimum of {found.output} as a closed form", found.closed_form.value, ""))
+        if found.closed_form.input is not None:
+            forms.append((f"{found.input} at the minimum, in degrees", found.closed_form.input, ""))
+    return forms
 
 
 def _report_extremum(d):
@@ -330,8 +348,9 @@ def _report_toggles(d):
         bars = ", ".join(f"{k} {v}" for k, v in g["bars"].items())
         lines.append(f"four-bar ({bars}): {g['class']} ({g['rule']}: margin {g['margin']})")
     for artefact in d["artefacts"]:
-        lines.append(f"dropped from disc({artefact['eliminant']}): {artefact['factor']}: {artefact['why']}")
-    return "\n".join(lines)
+        lines.append(f"dropped from disc({artefact['eliminant']}): {_brief(artefact['factor'])}: "
+                     f"{_brief(' '.join(artefact['why'].split()))}")
+    return "\n".join(lines + _hint([a["factor"] for a in d["artefacts"]], "full factors: --json"))
 
 
 def _cmd_accuracy(args):
@@ -480,8 +499,47 @@ def _report_show(d):
 def _cmd_derive(args):
     from .pipeline import derive
 
+    out = _full_forms_target(args)
     result = derive(_scene_of(args), args.outputs, _method(args), args.backend, args.param, args.samples, args.seed)
-    return _render(args, result.to_json(), _report_derive), _verdict(result.verification)
+    forms = [(f"eliminant of {u}", e.polynomial, "= 0") for u, e in result.eliminations.items()]
+    forms += [(f"{u}, branch {b.label}", v, "") for b in result.branches for u, v in b.values.items()]
+    return _finish(args, out, result.to_json(), _report_derive, forms, _verdict(result.verification))
+
+
+def _check_latex(args):
+    """--latex replaces the text report; --json has the strings (in sympy syntax): one or the other."""
+    if args.latex and args.json:
+        raise UsageError("--latex", True, "prints LaTeX instead of the text report; leave out --json or --latex")
+
+
+def _full_forms_target(args):
+    """``--out``'s path, checked before the work starts; ``--latex`` and ``--json`` refused together."""
+    _check_latex(args)
+    if args.out is None:
+        return None
+    from .files import check_output
+
+    check_output("--out", args.out)
+    return pathlib.Path(args.out)
+
+
+def _finish(args, out, document, report, forms, code):
+    """What derive and curve return: the JSON, the LaTeX of ``forms`` or the text report, and with
+    ``--out`` the whole JSON document as a file for the parent to write."""
+    text = _latex_lines(forms) if args.latex else _render(args, document, report)
+    if out is None:
+        return text, code
+    if not args.json:
+        text += terminal_safe(f"wrote the full JSON document to {out}\n")
+    return text, code, [(out, json.dumps(document, indent=2) + "\n")]
+
+
+def _latex_lines(forms):
+    """Each (caption, sympy expression, relation) as a LaTeX comment and a display equation."""
+    import sympy
+
+    return "".join(f"% {caption}\n\\[ {' '.join([sympy.latex(expr), relation]).strip()} \\]\n"
+                   for caption, expr, relation in forms)
 
 
 def _verdict(verification):
@@ -506,34 +564,58 @@ def _report_derive(d):
     lines = [f"scene {d['scene']}  (method {d['method']}, backend {d['backend']})", "eliminants:"]
     for unknown, poly in d["eliminants"].items():
         figures = d["eliminant_figures"][unknown]
-        lines.append(f"  {unknown}: {poly}")
+        lines.append(f"  {unknown}: {_brief(poly)}")
         lines.append(f"      degree {figures['degree']}, {figures['terms']} terms, "
+                     f"{figures['coefficient_bits']}-bit coefficients, "
                      f"dropped {len(figures['dropped_factors'])} extraneous factor(s)")
     lines.append("branches:")
     for branch in d["branches"]:
         mark = "  (scene's choice)" if branch["selected"] else ""
-        lines.append(f"  [{branch['label']}]{mark} valid when {branch['valid_when']}")
-        lines += [f"      {u} = {v}" for u, v in branch["values"].items()]
+        lines.append(f"  [{branch['label']}]{mark} valid when {_brief(branch['valid_when'])}")
+        lines += [f"      {u} = {_brief(v)}" for u, v in branch["values"].items()]
     lines += [_verification_line(d["verification"]), _timings_line(d["timings"])]
-    return "\n".join(lines)
+    forms = [*d["eliminants"].values(), *(f for b in d["branches"] for f in (b["valid_when"], *b["values"].values()))]
+    return "\n".join(lines + _hint(forms))
 
 
 def _cmd_curve(args):
     from .pipeline import curve
 
+    out = _full_forms_target(args)
     result = curve(_scene_of(args), args.point, _method(args), args.backend, args.param, args.samples, args.seed)
-    return _render(args, result.to_json(), _report_curve), _verdict(result.verification)
+    forms = [(f"curve of {result.point}", result.elimination.polynomial, "= 0")]
+    return _finish(args, out, result.to_json(), _report_curve, forms, _verdict(result.verification))
 
 
 def _report_curve(d):
     lines = [f"curve of {d['point']} in {d['scene']}  (method {d['method']}, backend {d['backend']})",
-             f"  {d['curve']} = 0",
+             f"  {_brief(d['curve'])} = 0",
              f"degree {d['degree']}, circularity {d['circularity']}, "
-             f"{'irreducible' if d['irreducible'] else 'reducible'}, {d['terms']} terms",
+             f"{'irreducible' if d['irreducible'] else 'reducible'}, {d['terms']} terms, "
+             f"{d['coefficient_bits']}-bit coefficients",
              f"dropped {len(d['dropped_factors'])} extraneous factor(s):"]
-    lines += [f"  {f}" for f in d["dropped_factors"]]
+    lines += [f"  {_brief(f)}" for f in d["dropped_factors"]]
     lines += [_verification_line(d["verification"]), _timings_line(d["timings"])]
-    return "\n".join(lines)
+    return "\n".join(lines + _hint([d["curve"], *d["dropped_factors"]]))
+
+
+# A text report is read by a person: a form longer than this is summarised there (its leading
+# terms); --json and --out keep every form whole.
+_WHOLE = 200
+
+
+def _brief(form):
+    """``form`` whole when short, else its leading terms, ``...`` and its length in characters."""
+    if len(form) <= _WHOLE:
+        return form
+    head = form[:_WHOLE // 2]
+    cut = max(head.rfind(" + "), head.rfind(" - "))  # end on a whole term where there is one
+    return f"{head[:cut] if cut > 0 else head} ... ({len(form)} characters)"
+
+
+def _hint(forms, where="full forms: --json or --out FILE"):
+    """The line that says where the whole forms are, when ``_brief`` shortened any of ``forms``."""
+    return [where] if any(len(f) > _WHOLE for f in forms) else []
 
 
 def _cmd_verify(args):

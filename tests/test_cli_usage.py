@@ -41,6 +41,8 @@ BAD_USAGE = {
     "set-name-with-no-value": (["accuracy", "chebyshev-lambda", "--set", "a="], ["--set='a='"]),
     "set-and-param": (["extremum", "arm-string", "--of", "AB", "--param", "b", "--set", "b=1"],
                       ["--set='b=1'", "--param"]),
+    "out-in-no-directory": (["curve", "chebyshev-lambda", "--point", "P", "--out", "no/such/dir/c.json"],
+                            ["--out", "directory does not exist"]),
     "set-eval-refused": (["curve", "fourbar", "--point", "P", "--set", "a=__import__('os')"], ["--set="]),
     "bad-samples": (["derive", "chebyshev-lambda", "--samples", "many"], ["--samples", "many"]),
     "negative-samples": (["derive", "chebyshev-lambda", "--samples", "-1"], ["samples=-1"]),
