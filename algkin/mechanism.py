@@ -4,6 +4,8 @@
 >>> AB = arm.dist("A", "B")
 >>> AB.expr
 sqrt(b**2 - 700*b*cos(theta) - 280000*sin(theta) + 282500)
+>>> AB.expr_cs  # the same in the polynomial system's symbols, as derive and --json give it
+sqrt(b**2 - 700*b*c_theta - 280000*s_theta + 282500)
 >>> round(AB.at(theta=90, b=80), 9)
 94.339811321
 >>> found = AB.extremum(range=(0, 180))
@@ -94,15 +96,31 @@ class Quantity:
         problem = self._problem
         return expr.xreplace({problem.c: sympy.cos(self.input), problem.s: sympy.sin(self.input)})
 
+    # Two spellings of the same forms: ``expr``/``relation`` in the input angle itself
+    # (``cos(theta)``, as the seed documents write them, to differentiate or plot), and
+    # ``expr_cs``/``relation_cs`` in the polynomial system's symbols ``c_theta, s_theta``
+    # (SPEC §2: what ``derive`` and every JSON document use, with ``c**2 + s**2 = 1`` implied).
+
     @property
     def expr(self):
-        """The closed form on the scene's chosen branch, in the input angle and symbolic dimensions."""
+        """The closed form on the scene's chosen branch, in the input angle (``cos(theta)``,
+        ``sin(theta)``) and symbolic dimensions."""
         return self._in_angle(self._problem.closed)
 
     @property
+    def expr_cs(self):
+        """``expr`` in the system's symbols ``c_theta``, ``s_theta`` (as in ``derive``'s results)."""
+        return self._problem.closed
+
+    @property
     def relation(self):
-        """The polynomial the quantity satisfies (= 0), with cos and sin of the input."""
+        """The polynomial the quantity satisfies (= 0), in ``cos`` and ``sin`` of the input angle."""
         return self._in_angle(self._problem.eliminant)
+
+    @property
+    def relation_cs(self):
+        """``relation`` in the system's symbols ``c_theta``, ``s_theta`` (as in ``derive``'s eliminants)."""
+        return self._problem.eliminant
 
     @property
     def symbol(self):
