@@ -243,8 +243,11 @@ def _progress(message):
 
 
 def _scene_of(args, params=None):
-    """The command's scene, loaded, with the dimensions ``--set`` gives set (``params``, by default
-    ``--param``, are kept symbolic and cannot be set)."""
+    """The command's scene: the name or path given (loaded by the command, as from Python), or with
+    ``--set``, the scene loaded with those dimensions set (``params``, by default ``--param``, are
+    kept symbolic and cannot be set)."""
+    if not args.set:
+        return args.scene
     from .scene import load_scene
     from .scene.settings import parse_settings, with_values
 
@@ -469,9 +472,10 @@ def _cmd_list(args):
 def _cmd_show(args):
     from .budget import current
     from .scene import compile_scene
+    from .scene.load import as_scene
 
     current().note(f"loading {args.scene}")
-    scene = _scene_of(args)
+    scene = as_scene(_scene_of(args))
     current().note(f"compiling {scene.name}")
     compiled = compile_scene(scene, args.outputs, args.param)
     document = {
