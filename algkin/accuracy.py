@@ -34,6 +34,7 @@ from .evaluate import MPMATH, NUMPY, evaluate
 from .pipeline import certify_labels, derive
 from .scene import compile_scene
 from .scene.load import as_scene
+from .scene.settings import with_values
 from .scene.constructions import Dyad, Fixed
 from .system import symbol
 
@@ -229,11 +230,12 @@ def _translated(scene, offset):
     return dataclasses.replace(scene, points=points)
 
 
-def accuracy(scene, samples=2000, seed=0):
-    """Rows of speed and error per strategy and case for the scene's first dyad point."""
+def accuracy(scene, samples=2000, seed=0, set=None):  # noqa: A002 - the public name, SPEC §3's --set
+    """Rows of speed and error per strategy and case for the scene's first dyad point;
+    ``set`` gives dimensions exact values in place of their defaults."""
     validation.count("samples", samples, validation.MAX_ACCURACY_SAMPLES, minimum=10)
     validation.seed(seed)
-    scene = as_scene(scene)
+    scene = with_values(as_scene(scene), set)
     point = next((n for n, p in scene.points.items() if isinstance(p, Dyad)), None)
     if point is None:
         raise UsageError("scene", scene.name, "has no dyad to evaluate")

@@ -40,17 +40,56 @@ class _Parser(argparse.ArgumentParser):
         raise UsageError("arguments", " ".join(sys.argv[1:]), message)
 
 
+class _Help(argparse.ArgumentDefaultsHelpFormatter):
+    """``--help`` with each option's default, where it has one worth saying (not None, False or [])."""
+
+    def _get_help_string(self, action):
+        if action.default is None or action.default is False or action.default == [] \
+                or action.default is argparse.SUPPRESS:
+            return action.help
+        return super()._get_help_string(action)
+
+
+def _command(commands, name, summary):
+    """A subcommand whose ``--help`` starts with its one-line summary and shows the defaults."""
+    return commands.add_parser(name, help=summary, description=summary, formatter_class=_Help)
+
+
+def _scene(parser):
+    """The scene argument, and ``--set``: every command that takes a scene takes both (SPEC §3)."""
+    parser.add_argument("scene", help="catalog name (see `algkin list`) or path of a scene file (.toml)")
+    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                        help="an exact value for a dimension (3/2, 0.1 = 1/10, sqrt(2)); repeatable")
+
+
+def _json(parser, what="the whole result"):
+    parser.add_argument("--json", action="store_true", help=f"one JSON document on stdout: {what}")
+
+
 def _common(parser, method=True):
-    parser.add_argument("scene", help="catalog name or path of a scene file")
-    parser.add_argument("--json", action="store_true", help="one JSON document on stdout")
+    _scene(parser)
+    _json(parser)
     if method:
         parser.add_argument("--method", default=None,
                             help="elimination method: linear (the default), resultant, groebner")
         parser.add_argument("--backend", default="flint", help="polynomial backend: flint, sympy")
-        parser.add_argument("--param", action="append", default=[], help="keep this parameter symbolic")
-        parser.add_argument("--samples", type=int, default=40, help="verification samples")
-        parser.add_argument("--seed", type=int, default=0, help="verification seed")
+        parser.add_argument("--param", action="append", default=[], metavar="NAME",
+                            help="keep this dimension symbolic (repeatable); the others take their defaults")
+        parser.add_argument("--samples", type=int, default=40,
+                            help="numeric samples the closed forms are checked on (0 skips the check)")
+        parser.add_argument("--seed", type=int, default=0, help="random seed of the verification samples")
         _budget_options(parser)
+
+
+def _full_forms(parser):
+    """``--out`` and ``--latex``: the complete results, which the text report only summarises."""
+    parser.add_argument("--out", metavar="FILE", help="also write the full JSON document to FILE")
+    _latex(parser)
+
+
+def _latex(parser):
+    parser.add_argument("--latex", action="store_true",
+                        help="print the results as LaTeX instead of the text report (not with --json)")
 
 
 def _budget_options(parser, terms=True):
@@ -78,49 +117,63 @@ def _terms(text):
 
 
 def build_parser():
-    parser = _Parser(prog="algkin", description="Closed forms of planar mechanisms by elimination.")
-    commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
-    listing = commands.add_parser("list", help="the catalog")
-    listing.add_argument("--json", action="store_true")
-    show = commands.add_parser("show", help="the scene and the system it compiles to")
+    from . import __version__
+
+    parser = _Parser(prog="algkin", description="Closed forms of planar mechanisms by elimination.",
+                     formatter_class=_Help)
+    parser.add_argument("--version", action="version", version=f"algkin {__version__}",
+                        help="print the version and exit")
+    commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser, metavar="command",
+                                     help="one of the commands below; `algkin COMMAND --help` for its options")
+    listing = _command(commands, "list", "the catalog")
+    _json(listing, "each scene's name and description")
+    show = _command(commands, "show", "the scene and the system it compiles to")
     _common(show, method=False)
-    show.add_argument("--outputs", nargs="+", help="outputs (names, points, dist(P, Q), P.x)")
-    show.add_argument("--param", action="append", default=[])
+    show.add_argument("--outputs", nargs="+", metavar="OUTPUT",
+                      help="outputs (names, points, dist(P, Q), P.x); default: the scene's")
+    show.add_argument("--param", action="append", default=[], metavar="NAME",
+                      help="keep this dimension symbolic (repeatable)")
     _budget_options(show, terms=False)
-    derive = commands.add_parser("derive", help="eliminants, closed-form branches, verification")
+    derive = _command(commands, "derive", "eliminants, closed-form branches, verification")
     _common(derive)
-    derive.add_argument("--outputs", nargs="+")
-    curve = commands.add_parser("curve", help="implicit trajectory curve of a point")
+    derive.add_argument("--outputs", nargs="+", metavar="OUTPUT",
+                        help="outputs (names, points, dist(P, Q), P.x); default: the scene's")
+    _full_forms(derive)
+    curve = _command(commands, "curve", "implicit trajectory curve of a point")
     _common(curve)
-    curve.add_argument("--point", required=True)
-    verify = commands.add_parser("verify", help="closed forms against independent numeric solutions")
+    curve.add_argument("--point", required=True, help="the point whose trajectory is wanted")
+    _full_forms(curve)
+    verify = _command(commands, "verify", "closed forms against independent numeric solutions")
     _common(verify)
-    verify.add_argument("--outputs", nargs="+")
-    extremum = commands.add_parser("extremum", help="stationary points of an output over the input")
-    extremum.add_argument("scene")
+    verify.add_argument("--outputs", nargs="+", metavar="OUTPUT",
+                        help="outputs (names, points, dist(P, Q), P.x); default: the scene's")
+    extremum = _command(commands, "extremum", "stationary points of an output over the input")
+    _scene(extremum)
     extremum.add_argument("--of", required=True, help="a scalar output: distance or coordinate")
-    extremum.add_argument("--range", help="lo:hi in the input's unit")
-    extremum.add_argument("--param", action="append", default=[],
+    extremum.add_argument("--range", metavar="LO:HI", help="lo:hi in the input's unit; default: its declared range")
+    extremum.add_argument("--param", action="append", default=[], metavar="NAME",
                           help="keep this dimension symbolic: the minimum as a closed form in it")
-    extremum.add_argument("--json", action="store_true")
+    _json(extremum)
+    _latex(extremum)
     _budget_options(extremum)
-    toggles = commands.add_parser("toggles", help="input angles where assembly modes meet, certified")
-    toggles.add_argument("scene")
-    toggles.add_argument("--json", action="store_true")
+    toggles = _command(commands, "toggles", "input angles where assembly modes meet, certified")
+    _scene(toggles)
+    _json(toggles)
     _budget_options(toggles)
-    accuracy = commands.add_parser("accuracy", help="speed against error of each evaluation strategy")
-    accuracy.add_argument("scene")
+    accuracy = _command(commands, "accuracy", "speed against error of each evaluation strategy")
+    _scene(accuracy)
     accuracy.add_argument("--samples", type=int, default=2000, help="samples per case")
-    accuracy.add_argument("--seed", type=int, default=0)
-    accuracy.add_argument("--plot", help="also draw time against error (log-log) to this .png/.svg/.pdf")
-    accuracy.add_argument("--json", action="store_true")
+    accuracy.add_argument("--seed", type=int, default=0, help="random seed of the samples")
+    accuracy.add_argument("--plot", metavar="FILE",
+                          help="also draw time against error (log-log) to this .png/.svg/.pdf")
+    _json(accuracy)
     _budget_options(accuracy)
-    plot = commands.add_parser("plot", help="the mechanism with its trajectories and implicit curves "
-                                            "(.png/.svg/.pdf), animated (.gif/.mp4), an interactive page "
-                                            "(.html); with --of a quantity against the input")
-    plot.add_argument("scene")
+    plot = _command(commands, "plot", "the mechanism with its trajectories and implicit curves "
+                                      "(.png/.svg/.pdf), animated (.gif/.mp4), an interactive page "
+                                      "(.html); with --of a quantity against the input")
+    _scene(plot)
     plot.add_argument("--out", required=True, help="the file to write: .png, .svg, .pdf, .gif, .mp4 or .html")
-    plot.add_argument("--json", action="store_true", help="one JSON document on stdout: what was written")
+    _json(plot, "what was written")
     plot.add_argument("--input", action="append", default=[],
                       help="the input angle drawn, in degrees: VALUE, or NAME=VALUE for each input")
     plot.add_argument("--branch", help="the assembly mode drawn (default: the scene's)")
@@ -133,7 +186,7 @@ def build_parser():
     plot.add_argument("--range", help="with --of: lo:hi of the input, in its unit")
     plot.add_argument("--derivative", action="store_true", help="with --of: the slope, with its zero marked")
     plot.add_argument("--against", help="with --of: p=lo:hi, the minimum against the dimension p")
-    bench = commands.add_parser("bench", help="elimination methods compared on a problem set, peers beside")
+    bench = _command(commands, "bench", "elimination methods compared on a problem set, peers beside")
     bench.add_argument("--problems", nargs="+", help="problem names (default: the whole suite)")
     bench.add_argument("--methods", nargs="+", help="elimination methods (default: all)")
     bench.add_argument("--backends", nargs="+", help="polynomial backends (default: all)")
@@ -142,7 +195,7 @@ def build_parser():
     bench.add_argument("--rounds", type=int, default=3,
                        help="rows under 2 s are measured this many times in turn, each keeping its best")
     bench.add_argument("--out", help="directory for bench.json, bench.csv and bench.png")
-    bench.add_argument("--json", action="store_true")
+    _json(bench)
     return parser
 
 
@@ -191,6 +244,19 @@ def _progress(message):
     print(f"\r\033[Kalgkin bench: {message}", end="", file=sys.stderr, flush=True)
 
 
+def _scene_of(args, params=None):
+    """The command's scene: the name or path given (loaded by the command, as from Python), or with
+    ``--set``, the scene loaded with those dimensions set (``params``, by default ``--param``, are
+    kept symbolic and cannot be set)."""
+    if not args.set:
+        return args.scene
+    from .scene import load_scene
+    from .scene.settings import parse_settings, with_values
+
+    symbolic = getattr(args, "param", ()) if params is None else params
+    return with_values(load_scene(args.scene), parse_settings(args.set), symbolic)
+
+
 def _method(args):
     """The method asked for, else the default (imported here: ``algkin list`` loads no algebra)."""
     from .eliminate import DEFAULT_METHOD
@@ -213,8 +279,26 @@ def _range(text):
 def _cmd_extremum(args):
     from .analyses.extremum import extremum
 
+    _check_latex(args)
     angles = _range(args.range) if args.range else None
-    return _render(args, extremum(args.scene, args.of, angles, params=args.param).to_json(), _report_extremum), 0
+    found = extremum(_scene_of(args), args.of, angles, params=args.param)
+    if args.latex:
+        return _latex_lines(_extremum_forms(found)), 0
+    return _render(args, found.to_json(), _report_extremum), 0
+
+
+def _extremum_forms(found):
+    """The minimum and maximum for ``--latex``; with ``--param``, the closed form and its input."""
+    import sympy
+
+    forms = [(f"{key} of {found.output} (at {found.input} = {float(point.input_deg):.12g} deg)",
+              sympy.Float(float(point.value), 15), "") for key, point in (("minimum", found.minimum),
+                                                                   ("maximum", found.maximum))]
+    if found.closed_form is not None:
+        forms.append((f"minimum of {found.output} as a closed form", found.closed_form.value, ""))
+        if found.closed_form.input is not None:
+            forms.append((f"{found.input} at the minimum, in degrees", found.closed_form.input, ""))
+    return forms
 
 
 def _report_extremum(d):
@@ -259,7 +343,7 @@ def _interval(region):
 def _cmd_toggles(args):
     from .toggles import toggles
 
-    return _render(args, toggles(args.scene).to_json(), _report_toggles), 0
+    return _render(args, toggles(_scene_of(args)).to_json(), _report_toggles), 0
 
 
 def _report_toggles(d):
@@ -273,8 +357,9 @@ def _report_toggles(d):
         bars = ", ".join(f"{k} {v}" for k, v in g["bars"].items())
         lines.append(f"four-bar ({bars}): {g['class']} ({g['rule']}: margin {g['margin']})")
     for artefact in d["artefacts"]:
-        lines.append(f"dropped from disc({artefact['eliminant']}): {artefact['factor']}: {artefact['why']}")
-    return "\n".join(lines)
+        lines.append(f"dropped from disc({artefact['eliminant']}): {_brief(artefact['factor'])}: "
+                     f"{_brief(' '.join(artefact['why'].split()))}")
+    return "\n".join(lines + _hint([a["factor"] for a in d["artefacts"]], "full factors: --json"))
 
 
 def _cmd_accuracy(args):
@@ -283,7 +368,7 @@ def _cmd_accuracy(args):
     if args.samples < 10:
         raise UsageError("--samples", args.samples, "needs at least 10 samples per case")
     out = _figure_path("--plot", args.plot) if args.plot else None
-    result = accuracy(args.scene, args.samples, args.seed)
+    result = accuracy(_scene_of(args), args.samples, args.seed)
     text = _render(args, result.to_json(), _report_accuracy)
     if out is None:
         return text, 0
@@ -323,7 +408,8 @@ def _cmd_plot(args):
         for option in ("range", "derivative", "against"):
             if getattr(args, option):
                 raise UsageError(f"--{option}", getattr(args, option), "goes with --of OUTPUT")
-        written = plot_mechanism(args.scene, args.out, args.input, args.branch, args.modes, args.param,
+        # plot's --param names the page's sliders, which start at the values set: no clash
+        written = plot_mechanism(_scene_of(args, ()), args.out, args.input, args.branch, args.modes, args.param,
                                  args.range_of)
         return _render(args, _written(args, written), lambda d: d["out"]), 0
     for option in ("input", "branch", "modes", "param", "range_of"):
@@ -338,7 +424,8 @@ def _cmd_plot(args):
     from .mechanism import load
     from .plot import minimum_figure, quantity_figure, save
 
-    quantity = load(args.scene, [against[0]] if against else []).output(args.of)
+    params = [against[0]] if against else []
+    quantity = load(_scene_of(args, params), params).output(args.of)
     found = quantity.extremum(_range(args.range) if args.range else None)
     figure = minimum_figure(quantity, found, *against) if against else \
         quantity_figure(quantity, found, derivative=args.derivative)
@@ -391,10 +478,11 @@ def _cmd_list(args):
 
 def _cmd_show(args):
     from .budget import current
-    from .scene import compile_scene, load_scene
+    from .scene import compile_scene
+    from .scene.load import as_scene
 
     current().note(f"loading {args.scene}")
-    scene = load_scene(args.scene)
+    scene = as_scene(_scene_of(args))
     current().note(f"compiling {scene.name}")
     compiled = compile_scene(scene, args.outputs, args.param)
     document = {
@@ -422,8 +510,47 @@ def _report_show(d):
 def _cmd_derive(args):
     from .pipeline import derive
 
-    result = derive(args.scene, args.outputs, _method(args), args.backend, args.param, args.samples, args.seed)
-    return _render(args, result.to_json(), _report_derive), _verdict(result.verification)
+    out = _full_forms_target(args)
+    result = derive(_scene_of(args), args.outputs, _method(args), args.backend, args.param, args.samples, args.seed)
+    forms = [(f"eliminant of {u}", e.polynomial, "= 0") for u, e in result.eliminations.items()]
+    forms += [(f"{u}, branch {b.label}", v, "") for b in result.branches for u, v in b.values.items()]
+    return _finish(args, out, result.to_json(), _report_derive, forms, _verdict(result.verification))
+
+
+def _check_latex(args):
+    """--latex replaces the text report; --json has the strings (in sympy syntax): one or the other."""
+    if args.latex and args.json:
+        raise UsageError("--latex", True, "prints LaTeX instead of the text report; leave out --json or --latex")
+
+
+def _full_forms_target(args):
+    """``--out``'s path, checked before the work starts; ``--latex`` and ``--json`` refused together."""
+    _check_latex(args)
+    if args.out is None:
+        return None
+    from .files import check_output
+
+    check_output("--out", args.out)
+    return pathlib.Path(args.out)
+
+
+def _finish(args, out, document, report, forms, code):
+    """What derive and curve return: the JSON, the LaTeX of ``forms`` or the text report, and with
+    ``--out`` the whole JSON document as a file for the parent to write."""
+    text = _latex_lines(forms) if args.latex else _render(args, document, report)
+    if out is None:
+        return text, code
+    if not args.json:
+        text += terminal_safe(f"wrote the full JSON document to {out}\n")
+    return text, code, [(out, json.dumps(document, indent=2) + "\n")]
+
+
+def _latex_lines(forms):
+    """Each (caption, sympy expression, relation) as a LaTeX comment and a display equation."""
+    import sympy
+
+    return "".join(f"% {caption}\n\\[ {' '.join([sympy.latex(expr), relation]).strip()} \\]\n"
+                   for caption, expr, relation in forms)
 
 
 def _verdict(verification):
@@ -448,34 +575,58 @@ def _report_derive(d):
     lines = [f"scene {d['scene']}  (method {d['method']}, backend {d['backend']})", "eliminants:"]
     for unknown, poly in d["eliminants"].items():
         figures = d["eliminant_figures"][unknown]
-        lines.append(f"  {unknown}: {poly}")
+        lines.append(f"  {unknown}: {_brief(poly)}")
         lines.append(f"      degree {figures['degree']}, {figures['terms']} terms, "
+                     f"{figures['coefficient_bits']}-bit coefficients, "
                      f"dropped {len(figures['dropped_factors'])} extraneous factor(s)")
     lines.append("branches:")
     for branch in d["branches"]:
         mark = "  (scene's choice)" if branch["selected"] else ""
-        lines.append(f"  [{branch['label']}]{mark} valid when {branch['valid_when']}")
-        lines += [f"      {u} = {v}" for u, v in branch["values"].items()]
+        lines.append(f"  [{branch['label']}]{mark} valid when {_brief(branch['valid_when'])}")
+        lines += [f"      {u} = {_brief(v)}" for u, v in branch["values"].items()]
     lines += [_verification_line(d["verification"]), _timings_line(d["timings"])]
-    return "\n".join(lines)
+    forms = [*d["eliminants"].values(), *(f for b in d["branches"] for f in (b["valid_when"], *b["values"].values()))]
+    return "\n".join(lines + _hint(forms))
 
 
 def _cmd_curve(args):
     from .pipeline import curve
 
-    result = curve(args.scene, args.point, _method(args), args.backend, args.param, args.samples, args.seed)
-    return _render(args, result.to_json(), _report_curve), _verdict(result.verification)
+    out = _full_forms_target(args)
+    result = curve(_scene_of(args), args.point, _method(args), args.backend, args.param, args.samples, args.seed)
+    forms = [(f"curve of {result.point}", result.elimination.polynomial, "= 0")]
+    return _finish(args, out, result.to_json(), _report_curve, forms, _verdict(result.verification))
 
 
 def _report_curve(d):
     lines = [f"curve of {d['point']} in {d['scene']}  (method {d['method']}, backend {d['backend']})",
-             f"  {d['curve']} = 0",
+             f"  {_brief(d['curve'])} = 0",
              f"degree {d['degree']}, circularity {d['circularity']}, "
-             f"{'irreducible' if d['irreducible'] else 'reducible'}, {d['terms']} terms",
+             f"{'irreducible' if d['irreducible'] else 'reducible'}, {d['terms']} terms, "
+             f"{d['coefficient_bits']}-bit coefficients",
              f"dropped {len(d['dropped_factors'])} extraneous factor(s):"]
-    lines += [f"  {f}" for f in d["dropped_factors"]]
+    lines += [f"  {_brief(f)}" for f in d["dropped_factors"]]
     lines += [_verification_line(d["verification"]), _timings_line(d["timings"])]
-    return "\n".join(lines)
+    return "\n".join(lines + _hint([d["curve"], *d["dropped_factors"]]))
+
+
+# A text report is read by a person: a form longer than this is summarised there (its leading
+# terms); --json and --out keep every form whole.
+_WHOLE = 200
+
+
+def _brief(form):
+    """``form`` whole when short, else its leading terms, ``...`` and its length in characters."""
+    if len(form) <= _WHOLE:
+        return form
+    head = form[:_WHOLE // 2]
+    cut = max(head.rfind(" + "), head.rfind(" - "))  # end on a whole term where there is one
+    return f"{head[:cut] if cut > 0 else head} ... ({len(form)} characters)"
+
+
+def _hint(forms, where="full forms: --json or --out FILE"):
+    """The line that says where the whole forms are, when ``_brief`` shortened any of ``forms``."""
+    return [where] if any(len(f) > _WHOLE for f in forms) else []
 
 
 def _cmd_verify(args):
@@ -483,7 +634,7 @@ def _cmd_verify(args):
 
     if args.samples == 0:
         raise UsageError("--samples", 0, "verify needs at least one sample (derive and curve take 0 to skip it)")
-    result = derive(args.scene, args.outputs, _method(args), args.backend, args.param, args.samples, args.seed,
+    result = derive(_scene_of(args), args.outputs, _method(args), args.backend, args.param, args.samples, args.seed,
                     certify=False)
     document = {"scene": result.compiled.scene.name, "verification": result.verification.to_json(),
                 "branches": [b.label for b in result.branches], "timings": result.timings}
@@ -504,6 +655,10 @@ def main(argv=None):
     leaves the caller's in place.
     """
     argv = sys.argv[1:] if argv is None else list(argv)
+    if not argv:
+        # Bare ``algkin`` is a question ("what can it do?"), not a mistake: the help listing the
+        # commands, on stdout, exit 0 (as ``--help``); a wrong command line is still exit 2.
+        return _write(build_parser().format_help(), 0)
     args = None  # until parsed: an error before then still says what it can
     with _stopping_signals():
         try:

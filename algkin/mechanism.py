@@ -4,6 +4,8 @@
 >>> AB = arm.dist("A", "B")
 >>> AB.expr
 sqrt(b**2 - 700*b*cos(theta) - 280000*sin(theta) + 282500)
+>>> AB.expr_cs  # the same in the polynomial system's symbols, as derive and --json give it
+sqrt(b**2 - 700*b*c_theta - 280000*s_theta + 282500)
 >>> round(AB.at(theta=90, b=80), 9)
 94.339811321
 >>> found = AB.extremum(range=(0, 180))
@@ -22,14 +24,17 @@ from .errors import UsageError
 from .evaluate import MPMATH, evaluate
 from . import validation
 from .scene.load import as_scene
+from .scene.settings import with_values
 from .system import symbol
 
 __all__ = ["load", "Mechanism", "Quantity"]
 
 
-def load(scene, params=()):
-    """A mechanism from a catalog name, a path or a ``Scene``; ``params`` stay symbolic."""
-    return Mechanism(as_scene(scene), validation.names("params", params))
+def load(scene, params=(), set=None):  # noqa: A002 - ``set=`` is the public name (SPEC §3's --set)
+    """A mechanism from a catalog name, a path or a ``Scene``; ``params`` stay symbolic, and
+    ``set`` gives others exact values in place of their defaults (``set={"b": "3/2"}``)."""
+    params = validation.names("params", params)
+    return Mechanism(with_values(as_scene(scene), set, params), params)
 
 
 class Mechanism:
@@ -91,15 +96,31 @@ class Quantity:
         problem = self._problem
         return expr.xreplace({problem.c: sympy.cos(self.input), problem.s: sympy.sin(self.input)})
 
+    # Two spellings of the same forms: ``expr``/``relation`` in the input angle itself
+    # (``cos(theta)``, as the seed documents write them, to differentiate or plot), and
+    # ``expr_cs``/``relation_cs`` in the polynomial system's symbols ``c_theta, s_theta``
+    # (SPEC §2: what ``derive`` and every JSON document use, with ``c**2 + s**2 = 1`` implied).
+
     @property
     def expr(self):
-        """The closed form on the scene's chosen branch, in the input angle and symbolic dimensions."""
+        """The closed form on the scene's chosen branch, in the input angle (``cos(theta)``,
+        ``sin(theta)``) and symbolic dimensions."""
         return self._in_angle(self._problem.closed)
 
     @property
+    def expr_cs(self):
+        """``expr`` in the system's symbols ``c_theta``, ``s_theta`` (as in ``derive``'s results)."""
+        return self._problem.closed
+
+    @property
     def relation(self):
-        """The polynomial the quantity satisfies (= 0), with cos and sin of the input."""
+        """The polynomial the quantity satisfies (= 0), in ``cos`` and ``sin`` of the input angle."""
         return self._in_angle(self._problem.eliminant)
+
+    @property
+    def relation_cs(self):
+        """``relation`` in the system's symbols ``c_theta``, ``s_theta`` (as in ``derive``'s eliminants)."""
+        return self._problem.eliminant
 
     @property
     def symbol(self):

@@ -21,6 +21,7 @@ from .evaluate import ARB, evaluate
 from . import validation
 from .scene import compile_scene
 from .scene.load import as_scene
+from .scene.settings import with_values
 from .system import symbol
 from .tasks import curve_task, eliminant_tasks
 from .verify import Verification, verify_branches
@@ -220,21 +221,23 @@ def _branch(compiled, timings):
 
 
 def derive(scene, outputs=None, method=DEFAULT_METHOD, backend="flint", params=(), samples=40, seed=0,
-           certify=True, budget=None):
+           certify=True, budget=None, set=None):  # noqa: A002 - ``set=`` is the public name (SPEC §3's --set)
     """Eliminants, closed-form branches and their verification for ``outputs`` of ``scene``.
 
     ``certify`` also certifies each branch's label per input interval (the slowest stage);
     a ``Budget`` bounds the time of the whole derivation, loading and compiling the scene
-    included, and the size of its eliminants.
+    included, and the size of its eliminants. ``set`` gives dimensions exact values
+    (``{"a": "3/2"}``) in place of their defaults.
     """
     outputs, params, budget = _arguments(outputs, params, samples, seed, budget)
+    values = set
     start = time.perf_counter()
-    return budget.run(functools.partial(_derive, scene, outputs, params, start, method, backend, samples, seed,
-                                        certify, budget))
+    return budget.run(functools.partial(_derive, scene, values, outputs, params, start, method, backend, samples,
+                                        seed, certify, budget))
 
 
-def _derive(scene, outputs, params, start, method, backend, samples, seed, certify, budget):
-    scene = _load(scene, budget)
+def _derive(scene, values, outputs, params, start, method, backend, samples, seed, certify, budget):
+    scene = _load(scene, values, params, budget)
     budget.note(f"compiling {scene.name}")
     compiled, timings = _compile(scene, outputs, params)
     budget.note(f"finding the branches of {compiled.scene.name}")
@@ -255,10 +258,11 @@ def _derive(scene, outputs, params, start, method, backend, samples, seed, certi
     return Derivation(compiled, method, backend, eliminations, branches, verification, timings, certified)
 
 
-def _load(scene, budget):
-    """The scene, loaded (or a given one checked) inside the budget: its expressions can be costly."""
+def _load(scene, values, params, budget):
+    """The scene, loaded (or a given one checked) inside the budget, its expressions can be costly;
+    with the dimensions in ``values`` set."""
     budget.note(f"loading {getattr(scene, 'name', scene)}")
-    return as_scene(scene)
+    return with_values(as_scene(scene), values, params)
 
 
 def _curve_figures(result, variables):
@@ -298,20 +302,22 @@ def _refuse_still(compiled, branches, point):
         raise UsageError("--point", point, f"is fixed at ({x}, {y}): its trajectory is a point, not a curve")
 
 
-def curve(scene, point, method=DEFAULT_METHOD, backend="flint", params=(), samples=40, seed=0, budget=None):
+def curve(scene, point, method=DEFAULT_METHOD, backend="flint", params=(), samples=40, seed=0, budget=None,
+          set=None):  # noqa: A002 - as in derive
     """The implicit curve ``F(point_x, point_y) = 0`` traced by ``point`` (a one-input motion).
 
     A ``Budget`` bounds the time of the whole computation, loading and compiling the scene
-    included, and the size of its eliminants.
+    included, and the size of its eliminants. ``set`` gives dimensions exact values.
     """
     _, params, budget = _arguments(None, params, samples, seed, budget)
+    values = set
     start = time.perf_counter()
-    return budget.run(functools.partial(_curve, scene, point, params, start, method, backend, samples, seed,
-                                        budget))
+    return budget.run(functools.partial(_curve, scene, values, point, params, start, method, backend, samples,
+                                        seed, budget))
 
 
-def _curve(scene, point, params, start, method, backend, samples, seed, budget):
-    scene = _load(scene, budget)
+def _curve(scene, values, point, params, start, method, backend, samples, seed, budget):
+    scene = _load(scene, values, params, budget)
     if not isinstance(point, str) or point not in scene.points:
         raise UsageError("--point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
     budget.note(f"compiling {scene.name}")

@@ -30,6 +30,7 @@ from .evaluate import ARB, evaluate
 from .scene import compile_scene, load_scene
 from .scene.compile import SliderSpec
 from .scene.constructions import Crank, Dyad, Fixed, Slider
+from .scene.settings import with_values
 from .system import symbol
 from .system.angles import half_angle_numerator, tangent_to_degrees, vanishes_at_half_turn
 from .system.convert import real_roots
@@ -106,13 +107,13 @@ def _single_input(compiled):
     return name, symbol(c), symbol(s)
 
 
-def toggles(scene, artefacts=True):
+def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name, SPEC §3's --set
     """Every toggle of every dyad and slider of ``scene`` over its input range, certified.
 
     With ``artefacts`` the eliminants are also derived, to report which factors of their
-    discriminants are not toggles.
+    discriminants are not toggles. ``set`` gives dimensions exact values in place of their defaults.
     """
-    scene = scene if not isinstance(scene, str) else load_scene(scene)
+    scene = with_values(scene if not isinstance(scene, str) else load_scene(scene), set)
     implicit = [n for n, p in scene.points.items() if isinstance(p, (Dyad, Slider))]
     if not implicit:
         raise UsageError("scene", scene.name, "has no dyad or slider, so no assembly modes to meet")

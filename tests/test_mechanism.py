@@ -44,3 +44,18 @@ def test_fixed_dimensions_have_no_closed_form_in_them():
 def test_points_are_not_scalars():
     with pytest.raises(algkin.AlgkinError, match="scalar"):
         algkin.load("chebyshev-lambda").output("B").extremum()
+
+
+def test_quantity_gives_both_spellings_of_the_input():
+    """``expr`` in cos(theta)/sin(theta); ``expr_cs`` in c_theta/s_theta, equal to derive's branch."""
+    import algkin
+    from algkin.system import symbol
+
+    AB = algkin.load("arm-string", params=["b"]).dist("A", "B")
+    c, s, theta = symbol("c_theta"), symbol("s_theta"), AB.input
+    assert AB.expr_cs.xreplace({c: sympy.cos(theta), s: sympy.sin(theta)}) == AB.expr
+    assert AB.relation_cs.xreplace({c: sympy.cos(theta), s: sympy.sin(theta)}) == AB.relation
+    derived = algkin.derive("arm-string", ["AB"], params=["b"], samples=0)
+    chosen = next(b for b in derived.branches if b.to_json()["selected"])
+    assert AB.expr_cs == chosen.values["AB"]
+    assert not AB.expr_cs.has(sympy.cos) and {c, s} <= AB.expr_cs.free_symbols

@@ -4,6 +4,7 @@ from .compile import Compiled, compile_scene
 from .dump import dump_scene
 from .load import catalog_names, load_scene, load_scene_text
 from .model import Input, Output, Scene
+from .settings import with_values
 
 __all__ = ["Scene", "Input", "Output", "Compiled", "compile_scene", "load_scene", "load_scene_text", "catalog_names",
-           "dump_scene"]
+           "dump_scene", "with_values"]

@@ -80,14 +80,15 @@ def _range_degrees(spec, angle_range):
     return lo, hi
 
 
-def extremum(scene, output, angle_range=None, params=(), largest=False, method="resultant", backend="flint"):
+def extremum(scene, output, angle_range=None, params=(), largest=False, method="resultant", backend="flint",
+             set=None):  # noqa: A002 - the public API's name, as in derive
     """Critical points, minimum and maximum of ``output`` over the scene's one input.
 
     ``angle_range`` is in the input's unit (default: its declared range). With ``params``
     symbolic, ``closed_form`` gives the minimum (the maximum with ``largest``) and its
-    input in those parameters, with where that holds.
+    input in those parameters, with where that holds. ``set`` gives dimensions exact values.
     """
-    derived = derive(scene, [output], method, backend, params=params, samples=0)
+    derived = derive(scene, [output], method, backend, params=params, samples=0, set=set)
     return extremum_of(derived, output, angle_range, largest, backend)
 
 

@@ -1,0 +1,77 @@
+"""The README walk: every ``.venv/bin/algkin ...`` command in README.md's code blocks runs as
+written, from a fresh empty directory (the files it writes land there), and ends as the README
+says: exit 0, or, where the next line is a ``# algkin: failed: ...`` comment, exit 1 with that
+line's opening on stderr."""
+
+import os
+import re
+import shlex
+import subprocess
+import sys
+import time
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+README = ROOT / "README.md"
+PROGRAM = ".venv/bin/algkin"
+# The expected line is quoted up to its message's first words: timings and sizes vary by machine.
+_EXPECTED = re.compile(r"^# (algkin: failed: [^:]+:)")
+
+
+def readme_commands():
+    """(arguments, expected stderr opening or None) of each ``algkin`` line in a code block."""
+    blocks = re.findall(r"^```[a-z]*\n(.*?)^```", README.read_text(encoding="utf-8"), re.S | re.M)
+    commands = []
+    for block in blocks:
+        lines = block.splitlines()
+        for line, following in zip(lines, lines[1:] + [""]):
+            if line.startswith(PROGRAM + " "):
+                expected = _EXPECTED.match(following)
+                commands.append((_quick(shlex.split(line[len(PROGRAM):], comments=True)),
+                                 expected.group(1) if expected else None))
+    return commands
+
+
+def _quick(args):
+    """``args``, but a ``bench`` gives each row 2 s once: the README's 30 s per row and 3 rounds
+    take about two minutes for the same code path (rows over budget are reported, not failed)."""
+    if args[0] != "bench":
+        return args
+    budget = args.index("--budget")
+    return [*args[:budget + 1], "2", *args[budget + 2:], "--rounds", "1"]
+
+
+COMMANDS = readme_commands()
+
+
+def test_the_readme_shows_commands():
+    assert len(COMMANDS) > 15 and any(expected for _, expected in COMMANDS)
+
+
+@pytest.fixture(scope="module")
+def walked(tmp_path_factory):
+    """Every README command run, two at a time, each in its own empty directory."""
+
+    def run(args):
+        workdir = tmp_path_factory.mktemp("readme")
+        start = time.perf_counter()
+        result = subprocess.run([sys.executable, "-m", "algkin", *args], cwd=workdir, capture_output=True,
+                                text=True, env=dict(os.environ, PYTHONPATH=str(ROOT)), timeout=300)
+        return result, time.perf_counter() - start
+
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        yield dict(zip(range(len(COMMANDS)), pool.map(run, [args for args, _ in COMMANDS])))
+
+
+@pytest.mark.parametrize("index", range(len(COMMANDS)), ids=[" ".join(a)[:60] for a, _ in COMMANDS])
+def test_readme_command_runs_as_shown(index, walked):
+    args, expected = COMMANDS[index]
+    result, _seconds = walked[index]
+    if expected is None:
+        assert result.returncode == 0, (args, result.stderr[-2000:])
+    else:
+        assert result.returncode == 1, (args, result.returncode, result.stderr[-2000:])
+        assert result.stderr.startswith(expected), (expected, result.stderr)
