@@ -43,7 +43,8 @@ class Branch:
 
     @property
     def valid_when(self):
-        return " & ".join(f"({d} >= 0)" for d in self.discriminants.values()) or "True"
+        """Where the branch is real, each discriminant without its positive numeric factor."""
+        return " & ".join(f"({_without_positive_number(d)} >= 0)" for d in self.discriminants.values()) or "True"
 
     def to_json(self):
         return {
@@ -66,6 +67,31 @@ def reduce_on_circles(expr, inputs):
     return expr
 
 
+def _without_positive_number(expr):
+    """``4*(5 - 4*c)*(c + 5)`` as ``(5 - 4*c)*(c + 5)``: the same sign, fewer symbols to read."""
+    factors = sympy.Mul.make_args(expr)
+    return sympy.Mul(*[f for f in factors if not (f.is_Number and f > 0)])
+
+
+def _primitive(expr):
+    """``(content, part)`` with ``expr = content * part`` and integer coprime numbers in ``part``:
+    a factor reads ``23 - 16*c``, not ``23/4 - 4*c`` (sympy would spread the 1/4 back in)."""
+    return expr.primitive() if expr.is_Add else (sympy.Integer(1), expr)
+
+
+def _tidy_ratio(expr):
+    """A ratio of polynomials as ``k * p / q`` with ``p``, ``q`` primitive: ``(80*c - 103)/(8*(20*c - 29))``."""
+    numerator, denominator = sympy.fraction(sympy.cancel(expr))
+    (cn, pn), (cd, pd) = _primitive(numerator), _primitive(denominator)
+    return sympy.Mul(cn / cd, pn, 1 / pd)  # one Mul: a product by a number would spread it back in
+
+
+def _tidy_product(*factors):
+    """The product of ``factors`` with every numeric content gathered in front."""
+    parts = [_primitive(sympy.expand(f)) for f in factors]
+    return sympy.Mul(*[c for c, _ in parts], *[sympy.factor_terms(p) for _, p in parts])
+
+
 def _dyad_closed_form(dyad, substitution, sigma, inputs):
     reduce = lambda e: reduce_on_circles(e.xreplace(substitution), inputs)  # noqa: E731
     px, py = (reduce(v) for v in dyad.base_p)
@@ -73,9 +99,9 @@ def _dyad_closed_form(dyad, substitution, sigma, inputs):
     dx, dy = reduce(qx - px), reduce(qy - py)
     dist2 = reduce(dx**2 + dy**2)
     l1, l2 = dyad.lengths
-    along = sympy.cancel((l1**2 - l2**2 + dist2) / (2 * dist2))
-    disc = sympy.factor_terms(reduce((l1 + l2) ** 2 - dist2)) * sympy.factor_terms(reduce(dist2 - (l1 - l2) ** 2))
-    across = sigma * (sympy.sqrt(disc) / 2) / dist2
+    along = _tidy_ratio((l1**2 - l2**2 + dist2) / (2 * dist2))
+    disc = _tidy_product(reduce((l1 + l2) ** 2 - dist2), reduce(dist2 - (l1 - l2) ** 2))
+    across = sigma * (sympy.sqrt(disc) / 2) / _tidy_product(dist2)
     return (px + along * dx - across * dy, py + along * dy + across * dx), disc
 
 
@@ -89,10 +115,9 @@ def _slider_closed_form(slider, substitution, sigma, inputs):
     dot, cross = reduce(dx * wx + dy * wy), reduce(dx * wy - dy * wx)
     norm = sympy.sqrt(norm2)
     if norm.is_rational:  # a difference of squares: (l|d| - cross)(l|d| + cross)
-        disc = (sympy.factor_terms(reduce(slider.length * norm - cross))
-                * sympy.factor_terms(reduce(slider.length * norm + cross)))
+        disc = _tidy_product(reduce(slider.length * norm - cross), reduce(slider.length * norm + cross))
     else:
-        disc = sympy.factor_terms(reduce(slider.length**2 * norm2 - cross**2))
+        disc = _tidy_product(reduce(slider.length**2 * norm2 - cross**2))
     along = (dot + sigma * sympy.sqrt(disc)) / norm2
     return (px + along * dx, py + along * dy), disc
 

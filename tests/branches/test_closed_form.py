@@ -2,11 +2,14 @@
 
 import math
 
+import pytest
+import sympy
+
 from hypothesis import given, settings, strategies as st
 
 from algkin.branches import closed_forms
 from algkin.evaluate import FLOAT, evaluate
-from algkin.scene import compile_scene, load_scene_text
+from algkin.scene import compile_scene, load_scene, load_scene_text
 
 FOUR_BAR = """
 [inputs]
@@ -59,3 +62,22 @@ def eval_fraction(text):
     from fractions import Fraction
 
     return Fraction(text)
+
+
+def _factors(expr):
+    """The sums that stand as factors (inside a product or a power), where a number belongs in front."""
+    return [arg for node in sympy.preorder_traversal(expr) if isinstance(node, (sympy.Mul, sympy.Pow))
+            for arg in node.args if isinstance(arg, sympy.Add)]
+
+
+@pytest.mark.parametrize("scene", ["fourbar-nongrashof", "fourbar-near-toggle", "slider-crank", "fourbar"])
+def test_closed_forms_keep_integer_coefficients_inside_their_factors(scene):
+    # Tidy forms: 5*(23 - 16*c)*(80*c + 53)/16, not 5*(23/4 - 4*c)*(20*c + 53/4); a positive
+    # number is no part of a condition (c + 5 >= 0, not 4*(c + 5) >= 0).
+    compiled = compile_scene(load_scene(scene))
+    for branch in closed_forms(compiled):
+        for expr in [*branch.values.values(), *branch.discriminants.values()]:
+            for add in _factors(expr):
+                numbers = [term.as_coeff_Mul()[0] for term in add.args]
+                assert all(n.is_Integer for n in numbers), (scene, add)
+        assert "/" not in branch.valid_when and not branch.valid_when.startswith("(4*")
