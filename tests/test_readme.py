@@ -20,3 +20,12 @@ def test_property_based_testing_example_runs():
     assert len(tests) == 2
     for test in tests:
         test()
+
+
+def test_make_test_sets_up_the_browser_its_page_tests_drive():
+    # On a fresh root machine without chromium, `make test` failed 9 page tests: the README's
+    # two commands must pass by themselves, so `make test` runs `make browser` first.
+    makefile = (README.parent / "Makefile").read_text(encoding="utf-8")
+    (prerequisites,) = re.findall(r"^test:(.*)$", makefile, re.M)
+    assert "browser" in prerequisites.split()
+    assert "make browser" in README.read_text(encoding="utf-8")

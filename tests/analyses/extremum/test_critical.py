@@ -13,7 +13,7 @@ def test_triple_rocker_minimum_of_b_y_is_at_the_dead_centre():
     # (|AD| = l + m = 13/2, cos(theta) = -53/80); no stationary point is there.
     found = extremum("fourbar-nongrashof", "B.y")
     theta = -math.acos(-53 / 80)
-    ax, ay = 2 * math.cos(theta), 2 * math.sin(theta)
+    ay = 2 * math.sin(theta)  # A = 2 (cos, sin)
     by = ay + 3 / 6.5 * (0 - ay)  # B = A + l/(l + m) * (D - A), D = (5, 0)
     assert found.minimum.kind == "dead centre"
     assert float(found.minimum.input_deg) == pytest.approx(math.degrees(theta), abs=1e-9)
