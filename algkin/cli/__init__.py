@@ -1,0 +1,87 @@
+"""The ``algkin`` command line (SPEC §3): readable reports, or one JSON document with --json.
+
+Exit codes: 0 done, 1 a computation failed, a check did not hold or the budget ran out,
+2 bad input, 128 + N stopped by signal N (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP), 141 stdout
+closed early. Whatever the outcome, stderr holds at most one line, and with --json stdout
+holds one JSON document (``{"error": ...}`` when there is no result).
+
+A command computes its whole output, text or JSON, inside its budget (``--max-seconds``),
+in a forked child when there is a time budget; the parent only starts it, waits, and writes.
+
+The package: ``parser`` the grammar, ``commands`` one function per command, ``reports``
+the text a person reads, ``signals`` the stopping signals and stdout; here ``main``.
+"""
+
+import functools
+import json
+import sys
+
+from ..errors import AlgkinError, BudgetExceeded, SceneError, UsageError
+from .commands import COMMANDS
+from .parser import build_parser, usage
+from .reports import terminal_safe
+from .signals import _Stopped, _stopping_signals, _write
+
+__all__ = ["main", "usage", "build_parser", "terminal_safe"]
+
+_ERROR_KINDS = ((UsageError, "usage"), (SceneError, "scene"), (BudgetExceeded, "budget"))
+
+
+def main(argv=None):
+    """Run one command line (``argv``, by default the process's) and return its exit code.
+
+    Signal handlers are installed only while it runs, so that calling it in-process (tests)
+    leaves the caller's in place.
+    """
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if not argv:
+        # Bare ``algkin`` is a question ("what can it do?"), not a mistake: the help listing the
+        # commands, on stdout, exit 0 (as ``--help``); a wrong command line is still exit 2.
+        return _write(build_parser().format_help(), 0)
+    args = None  # until parsed: an error before then still says what it can
+    with _stopping_signals():
+        try:
+            args = build_parser().parse_args(argv)
+            text, code, *files = _run(args)
+            _save(*files)
+            return _write(text, code)  # a signal while writing (to a slow reader) is caught too
+        except _Stopped as stop:
+            return _write(_failed(argv, args, "interrupted", str(stop), str(stop)), 128 + stop.signum)
+        except (SceneError, UsageError) as err:
+            return _write(_failed(argv, args, _kind(err), str(err), f"error: {err}"), 2)
+        except AlgkinError as err:
+            return _write(_failed(argv, args, _kind(err), str(err), f"failed: {err}"), 1)
+
+
+def _run(args):
+    """The command's output and exit code, all of its work (imports, loading, compiling, the algebra,
+    formatting) done within its budget: in a child process killed at the deadline, if it has one."""
+    from ..budget import Budget
+
+    budget = Budget(seconds=getattr(args, "max_seconds", None), terms=getattr(args, "max_terms", None))
+    budget.note(f"starting {args.command}")  # until the command says more (its imports come first)
+    return budget.run(functools.partial(COMMANDS[args.command], args))
+
+
+def _save(files=()):
+    """Write the files a command made (path, bytes), each replacing its target only when whole."""
+    from ..files import write_atomic
+
+    for path, data in files:
+        write_atomic(path, data)
+
+
+def _failed(argv, args, kind, message, line):
+    """Say ``line`` on stderr; what stdout gets: with --json, the error as the one JSON document."""
+    print(f"algkin: {terminal_safe(line)}", file=sys.stderr)
+    if not (getattr(args, "json", False) if args is not None else "--json" in argv):
+        return ""
+    command = args.command if args is not None else next(iter(argv), None)
+    document = {"error": {"kind": kind, "message": message},
+                "command": command if command in COMMANDS else None, "scene": getattr(args, "scene", None)}
+    return json.dumps(document, indent=2) + "\n"
+
+
+def _kind(err):
+    """The error's kind in a JSON error document: usage, scene, budget or computation."""
+    return next((kind for cls, kind in _ERROR_KINDS if isinstance(err, cls)), "computation")

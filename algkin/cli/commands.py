@@ -1,0 +1,277 @@
+"""One function per command: its whole output (text or JSON) and exit code, and the files it
+makes, computed inside the command's budget (``algkin.cli.main`` runs it and writes)."""
+
+import json
+import math
+import pathlib
+import sys
+
+from ..errors import UsageError
+from .reports import (_extremum_forms, _latex_lines, _render, _report_accuracy, _report_curve, _report_derive,
+                      _report_extremum, _report_show, _report_toggles, _verification_line, terminal_safe)
+
+__all__ = ["COMMANDS"]
+
+
+def _cmd_bench(args):
+    from ..bench import bench, problem_names
+    from ..bench.report import table, write
+    from ..eliminate import backend_names, method_names
+
+    for option, given, valid in (("--problems", args.problems, problem_names()),
+                                 ("--methods", args.methods, method_names()),
+                                 ("--backends", args.backends, backend_names())):
+        for name in given or ():
+            if name not in valid:
+                raise UsageError(option, name, f"unknown; valid: {', '.join(valid)}")
+    if not 0 < args.budget < math.inf:  # nan too
+        raise UsageError("--budget", args.budget, "must be a positive number of seconds")
+    if args.rounds < 1:
+        raise UsageError("--rounds", args.rounds, "must be at least 1")
+    if args.out:
+        from ..files import check_directory
+
+        check_directory("--out", args.out)
+    progress = _progress if sys.stderr.isatty() else None  # a terminal watches; a log or a pipe does not
+    report = bench(args.problems, args.methods, args.backends, args.budget, not args.no_peers, progress,
+                   args.rounds)
+    if progress:
+        print(file=sys.stderr)
+    written = write(report, args.out) if args.out else []
+    if args.json:
+        text = json.dumps(report.to_json(), indent=2) + "\n"
+    else:
+        text = "\n".join([table(report.rows), "machine: " + ", ".join(f"{k} {v}" for k, v in report.machine.items()),
+                          *(f"wrote {path}" for path in written)]) + "\n"
+    agree = all(r["agrees"] in (None, "reference") or r["agrees"].startswith("yes") for r in report.rows)
+    return text, 0 if agree else 1
+
+
+def _progress(message):
+    """One status line, rewritten in place."""
+    print(f"\r\033[Kalgkin bench: {message}", end="", file=sys.stderr, flush=True)
+
+
+def _scene_of(args, params=None):
+    """The command's scene: the name or path given (loaded by the command, as from Python), or with
+    ``--set``, the scene loaded with those dimensions set (``params``, by default ``--param``, are
+    kept symbolic and cannot be set)."""
+    if not args.set:
+        return args.scene
+    from ..scene import load_scene
+    from ..scene.settings import parse_settings, with_values
+
+    symbolic = getattr(args, "param", ()) if params is None else params
+    return with_values(load_scene(args.scene), parse_settings(args.set), symbolic)
+
+
+def _method(args):
+    """The method asked for, else the default (imported here: ``algkin list`` loads no algebra)."""
+    from ..eliminate import DEFAULT_METHOD
+
+    return args.method or DEFAULT_METHOD
+
+
+def _range(text):
+    try:
+        lo, hi = (float(v) for v in text.split(":"))
+    except ValueError:
+        raise UsageError("--range", text, "expected lo:hi, e.g. 0:180") from None
+    if not all(math.isfinite(v) for v in (lo, hi)):
+        raise UsageError("--range", text, "lo and hi must be finite numbers")
+    if not lo < hi:
+        raise UsageError("--range", text, "lo must be below hi")
+    return lo, hi
+
+
+def _cmd_extremum(args):
+    from ..analyses.extremum import extremum
+
+    _check_latex(args)
+    angles = _range(args.range) if args.range else None
+    found = extremum(_scene_of(args), args.of, angles, params=args.param)
+    if args.latex:
+        return _latex_lines(_extremum_forms(found)), 0
+    return _render(args, found.to_json(), _report_extremum), 0
+
+
+def _cmd_toggles(args):
+    from ..toggles import toggles
+
+    return _render(args, toggles(_scene_of(args)).to_json(), _report_toggles), 0
+
+
+def _cmd_accuracy(args):
+    from ..accuracy import accuracy
+
+    if args.samples < 10:
+        raise UsageError("--samples", args.samples, "needs at least 10 samples per case")
+    out = _figure_path("--plot", args.plot) if args.plot else None
+    result = accuracy(_scene_of(args), args.samples, args.seed)
+    text = _render(args, result.to_json(), _report_accuracy)
+    if out is None:
+        return text, 0
+    from ..plot import accuracy_figure, image
+
+    # Drawn here, within the budget; written by the parent, where an interrupt can still clean up.
+    return text, 0, [(out, image(accuracy_figure(result), out.suffix))]
+
+
+def _figure_path(option, text):
+    import pathlib
+
+    from ..files import check_output
+    from ..plot import FORMATS
+
+    out = pathlib.Path(text)
+    if out.suffix.lower() not in FORMATS:
+        raise UsageError(option, text, f"unknown figure format; valid: {', '.join(FORMATS)}")
+    check_output(option, text)
+    return out
+
+
+def _cmd_plot(args):
+    if args.of is None:
+        from ..draw import plot_mechanism
+
+        for option in ("range", "derivative", "against"):
+            if getattr(args, option):
+                raise UsageError(f"--{option}", getattr(args, option), "goes with --of OUTPUT")
+        # plot's --param names the page's sliders, which start at the values set: no clash
+        written = plot_mechanism(_scene_of(args, ()), args.out, args.input, args.branch, args.modes, args.param,
+                                 args.range_of)
+        return _render(args, _written(args, written), lambda d: d["out"]), 0
+    for option in ("input", "branch", "modes", "param", "range_of"):
+        if getattr(args, option):
+            value = getattr(args, option)
+            raise UsageError(f"--{option.replace('_', '-')}", " ".join(value) if isinstance(value, list) else value,
+                             "draws the mechanism; leave out --of")
+    out = _figure_path("--out", args.out)
+    if args.against and args.derivative:
+        raise UsageError("--against", args.against, "draws the minimum; leave out --derivative")
+    against = _against(args.against) if args.against else None
+    from ..mechanism import load
+    from ..plot import minimum_figure, quantity_figure, save
+
+    params = [against[0]] if against else []
+    quantity = load(_scene_of(args, params), params).output(args.of)
+    found = quantity.extremum(_range(args.range) if args.range else None)
+    figure = minimum_figure(quantity, found, *against) if against else \
+        quantity_figure(quantity, found, derivative=args.derivative)
+    return _render(args, _written(args, save(figure, out)), lambda d: d["out"]), 0
+
+
+def _written(args, out):
+    """``plot``'s JSON document: the file written and what it shows."""
+    return {"scene": args.scene, "out": str(out), "format": pathlib.Path(str(out)).suffix.lower().lstrip("."),
+            "of": args.of}
+
+
+def _against(text):
+    name, _, span = text.partition("=")
+    try:
+        lo, hi = _range(span)
+    except UsageError:
+        raise UsageError("--against", text, "expected p=lo:hi, e.g. b=-400:400") from None
+    if not name.isidentifier():
+        raise UsageError("--against", text, "expected p=lo:hi, e.g. b=-400:400")
+    return name, lo, hi
+
+
+def _cmd_list(args):
+    from ..scene import catalog_names, load_scene
+
+    scenes = [load_scene(n) for n in catalog_names()]
+    document = {"scenes": [{"name": s.name, "description": s.description} for s in scenes]}
+    return _render(args, document, lambda d: "\n".join(f"{s['name']:24} {s['description']}" for s in d["scenes"])), 0
+
+
+def _cmd_show(args):
+    from ..budget import current
+    from ..scene import compile_scene
+    from ..scene.load import as_scene
+
+    current().note(f"loading {args.scene}")
+    scene = as_scene(_scene_of(args))
+    current().note(f"compiling {scene.name}")
+    compiled = compile_scene(scene, args.outputs, args.param)
+    document = {
+        "scene": scene.name,
+        "description": scene.description,
+        "points": {n: type(c).__name__.lower() for n, c in scene.points.items()},
+        "outputs": {n: list(v) for n, v in compiled.outputs.items()},
+        "inputs": {n: {"cos": c, "sin": s} for n, (c, s) in compiled.system.inputs.items()},
+        "system": compiled.system.to_json(),
+    }
+    return _render(args, document, _report_show), 0
+
+
+def _cmd_derive(args):
+    from ..pipeline import derive
+
+    out = _full_forms_target(args)
+    result = derive(_scene_of(args), args.outputs, _method(args), args.backend, args.param, args.samples, args.seed)
+    forms = [(f"eliminant of {u}", e.polynomial, "= 0") for u, e in result.eliminations.items()]
+    forms += [(f"{u}, branch {b.label}", v, "") for b in result.branches for u, v in b.values.items()]
+    return _finish(args, out, result.to_json(), _report_derive, forms, _verdict(result.verification))
+
+
+def _check_latex(args):
+    """--latex replaces the text report; --json has the strings (in sympy syntax): one or the other."""
+    if args.latex and args.json:
+        raise UsageError("--latex", True, "prints LaTeX instead of the text report; leave out --json or --latex")
+
+
+def _full_forms_target(args):
+    """``--out``'s path, checked before the work starts; ``--latex`` and ``--json`` refused together."""
+    _check_latex(args)
+    if args.out is None:
+        return None
+    from ..files import check_output
+
+    check_output("--out", args.out)
+    return pathlib.Path(args.out)
+
+
+def _finish(args, out, document, report, forms, code):
+    """What derive and curve return: the JSON, the LaTeX of ``forms`` or the text report, and with
+    ``--out`` the whole JSON document as a file for the parent to write."""
+    text = _latex_lines(forms) if args.latex else _render(args, document, report)
+    if out is None:
+        return text, code
+    if not args.json:
+        text += terminal_safe(f"wrote the full JSON document to {out}\n")
+    return text, code, [(out, json.dumps(document, indent=2) + "\n")]
+
+
+def _verdict(verification):
+    """Exit code: 0 when the check passed or was skipped on request, 1 when it failed."""
+    return 0 if verification.status in ("passed", "skipped") else 1
+
+
+def _cmd_curve(args):
+    from ..pipeline import curve
+
+    out = _full_forms_target(args)
+    result = curve(_scene_of(args), args.point, _method(args), args.backend, args.param, args.samples, args.seed)
+    forms = [(f"curve of {result.point}", result.elimination.polynomial, "= 0")]
+    return _finish(args, out, result.to_json(), _report_curve, forms, _verdict(result.verification))
+
+
+def _cmd_verify(args):
+    from ..pipeline import derive
+
+    if args.samples == 0:
+        raise UsageError("--samples", 0, "verify needs at least one sample (derive and curve take 0 to skip it)")
+    result = derive(_scene_of(args), args.outputs, _method(args), args.backend, args.param, args.samples, args.seed,
+                    certify=False)
+    document = {"scene": result.compiled.scene.name, "verification": result.verification.to_json(),
+                "branches": [b.label for b in result.branches], "timings": result.timings}
+    text = _render(args, document, lambda d: f"scene {d['scene']}, branches {', '.join(d['branches'])}\n"
+                                            + _verification_line(d["verification"]))
+    return text, _verdict(result.verification)
+
+
+COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
+            "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot,
+            "toggles": _cmd_toggles, "accuracy": _cmd_accuracy, "bench": _cmd_bench}

@@ -1,0 +1,180 @@
+"""The command line's grammar: every command, option and help text (``algkin --help``)."""
+
+import argparse
+import sys
+
+from ..errors import UsageError
+
+__all__ = ["build_parser", "usage"]
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse with a one-line error and exit code 2."""
+
+    def error(self, message):
+        raise UsageError("arguments", " ".join(sys.argv[1:]), message)
+
+
+class _Help(argparse.ArgumentDefaultsHelpFormatter):
+    """``--help`` with each option's default, where it has one worth saying (not None, False or [])."""
+
+    def _get_help_string(self, action):
+        if action.default is None or action.default is False or action.default == [] \
+                or action.default is argparse.SUPPRESS:
+            return action.help
+        return super()._get_help_string(action)
+
+
+def _command(commands, name, summary):
+    """A subcommand whose ``--help`` starts with its one-line summary and shows the defaults."""
+    return commands.add_parser(name, help=summary, description=summary, formatter_class=_Help)
+
+
+def _scene(parser):
+    """The scene argument, and ``--set``: every command that takes a scene takes both (SPEC §3)."""
+    parser.add_argument("scene", help="catalog name (see `algkin list`) or path of a scene file (.toml)")
+    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                        help="an exact value for a dimension (3/2, 0.1 = 1/10, sqrt(2)); repeatable")
+
+
+def _json(parser, what="the whole result"):
+    parser.add_argument("--json", action="store_true", help=f"one JSON document on stdout: {what}")
+
+
+def _common(parser, method=True):
+    _scene(parser)
+    _json(parser)
+    if method:
+        parser.add_argument("--method", default=None,
+                            help="elimination method: linear (the default), resultant, groebner")
+        parser.add_argument("--backend", default="flint", help="polynomial backend: flint, sympy")
+        parser.add_argument("--param", action="append", default=[], metavar="NAME",
+                            help="keep this dimension symbolic (repeatable); the others take their defaults")
+        parser.add_argument("--samples", type=int, default=40,
+                            help="numeric samples the closed forms are checked on (0 skips the check)")
+        parser.add_argument("--seed", type=int, default=0, help="random seed of the verification samples")
+        _budget_options(parser)
+
+
+def _full_forms(parser):
+    """``--out`` and ``--latex``: the complete results, which the text report only summarises."""
+    parser.add_argument("--out", metavar="FILE", help="also write the full JSON document to FILE")
+    _latex(parser)
+
+
+def _latex(parser):
+    parser.add_argument("--latex", action="store_true",
+                        help="print the results as LaTeX instead of the text report (not with --json)")
+
+
+def _budget_options(parser, terms=True):
+    parser.add_argument("--max-seconds", type=_seconds,
+                        help="stop (exit 1) past this many seconds of the whole command, loading included")
+    if terms:
+        parser.add_argument("--max-terms", type=_terms,
+                            help="stop (exit 1) when an eliminant passes this many terms")
+
+
+def _seconds(text):
+    try:
+        value = float(text)
+    except ValueError:
+        value = None
+    if value is None or not 0 < value < float("inf"):
+        raise argparse.ArgumentTypeError(f"expected a positive number of seconds, got {text!r}")
+    return value
+
+
+def _terms(text):
+    if not text.strip().isdigit() or int(text) < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive whole number of terms, got {text!r}")
+    return int(text)
+
+
+def build_parser():
+    from .. import __version__
+
+    parser = _Parser(prog="algkin", description="Closed forms of planar mechanisms by elimination.",
+                     formatter_class=_Help)
+    parser.add_argument("--version", action="version", version=f"algkin {__version__}",
+                        help="print the version and exit")
+    commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser, metavar="command",
+                                     help="one of the commands below; `algkin COMMAND --help` for its options")
+    listing = _command(commands, "list", "the catalog")
+    _json(listing, "each scene's name and description")
+    show = _command(commands, "show", "the scene and the system it compiles to")
+    _common(show, method=False)
+    show.add_argument("--outputs", nargs="+", metavar="OUTPUT",
+                      help="outputs (names, points, dist(P, Q), P.x); default: the scene's")
+    show.add_argument("--param", action="append", default=[], metavar="NAME",
+                      help="keep this dimension symbolic (repeatable)")
+    _budget_options(show, terms=False)
+    derive = _command(commands, "derive", "eliminants, closed-form branches, verification")
+    _common(derive)
+    derive.add_argument("--outputs", nargs="+", metavar="OUTPUT",
+                        help="outputs (names, points, dist(P, Q), P.x); default: the scene's")
+    _full_forms(derive)
+    curve = _command(commands, "curve", "implicit trajectory curve of a point")
+    _common(curve)
+    curve.add_argument("--point", required=True, help="the point whose trajectory is wanted")
+    _full_forms(curve)
+    verify = _command(commands, "verify", "closed forms against independent numeric solutions")
+    _common(verify)
+    verify.add_argument("--outputs", nargs="+", metavar="OUTPUT",
+                        help="outputs (names, points, dist(P, Q), P.x); default: the scene's")
+    extremum = _command(commands, "extremum", "stationary points of an output over the input")
+    _scene(extremum)
+    extremum.add_argument("--of", required=True, help="a scalar output: distance or coordinate")
+    extremum.add_argument("--range", metavar="LO:HI", help="lo:hi in the input's unit; default: its declared range")
+    extremum.add_argument("--param", action="append", default=[], metavar="NAME",
+                          help="keep this dimension symbolic: the minimum as a closed form in it")
+    _json(extremum)
+    _latex(extremum)
+    _budget_options(extremum)
+    toggles = _command(commands, "toggles", "input angles where assembly modes meet, certified")
+    _scene(toggles)
+    _json(toggles)
+    _budget_options(toggles)
+    accuracy = _command(commands, "accuracy", "speed against error of each evaluation strategy")
+    _scene(accuracy)
+    accuracy.add_argument("--samples", type=int, default=2000, help="samples per case")
+    accuracy.add_argument("--seed", type=int, default=0, help="random seed of the samples")
+    accuracy.add_argument("--plot", metavar="FILE",
+                          help="also draw time against error (log-log) to this .png/.svg/.pdf")
+    _json(accuracy)
+    _budget_options(accuracy)
+    plot = _command(commands, "plot", "the mechanism with its trajectories and implicit curves "
+                                      "(.png/.svg/.pdf), animated (.gif/.mp4), an interactive page "
+                                      "(.html); with --of a quantity against the input")
+    _scene(plot)
+    plot.add_argument("--out", required=True, help="the file to write: .png, .svg, .pdf, .gif, .mp4 or .html")
+    _json(plot, "what was written")
+    plot.add_argument("--input", action="append", default=[],
+                      help="the input angle drawn, in degrees: VALUE, or NAME=VALUE for each input")
+    plot.add_argument("--branch", help="the assembly mode drawn (default: the scene's)")
+    plot.add_argument("--modes", action="store_true", help="every assembly mode side by side")
+    plot.add_argument("--param", action="append",
+                      help="a dimension with a slider in the .html page (default: every dimension)")
+    plot.add_argument("--range-of", action="append", default=[], metavar="NAME=LO:HI",
+                      help="the range of dimension NAME's slider in the .html page (repeatable), e.g. a=0.5:2")
+    plot.add_argument("--of", help="a scalar output: draw it against the input instead")
+    plot.add_argument("--range", help="with --of: lo:hi of the input, in its unit")
+    plot.add_argument("--derivative", action="store_true", help="with --of: the slope, with its zero marked")
+    plot.add_argument("--against", help="with --of: p=lo:hi, the minimum against the dimension p")
+    bench = _command(commands, "bench", "elimination methods compared on a problem set, peers beside")
+    bench.add_argument("--problems", nargs="+", help="problem names (default: the whole suite)")
+    bench.add_argument("--methods", nargs="+", help="elimination methods (default: all)")
+    bench.add_argument("--backends", nargs="+", help="polynomial backends (default: all)")
+    bench.add_argument("--budget", type=float, default=60.0, help="seconds per row before it is stopped")
+    bench.add_argument("--no-peers", action="store_true", help="skip Singular, PARI/GP, Macaulay2, msolve")
+    bench.add_argument("--rounds", type=int, default=3,
+                       help="rows under 2 s are measured this many times in turn, each keeping its best")
+    bench.add_argument("--out", help="directory for bench.json, bench.csv and bench.png")
+    _json(bench)
+    return parser
+
+
+def usage(command):
+    """The ``--help`` text of one command (the docs print it)."""
+    commands = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
+    return commands.choices[command].format_help()

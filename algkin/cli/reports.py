@@ -1,0 +1,185 @@
+"""The text reports a person reads: long forms summarised, scene text escaped, LaTeX lines."""
+
+import json
+import re
+
+__all__ = ["terminal_safe"]
+
+
+def _extremum_forms(found):
+    """The minimum and maximum for ``--latex``; with ``--param``, the closed form and its input."""
+    import sympy
+
+    forms = [(f"{key} of {found.output} (at {found.input} = {float(point.input_deg):.12g} deg)",
+              sympy.Float(float(point.value), 15), "") for key, point in (("minimum", found.minimum),
+                                                                   ("maximum", found.maximum))]
+    if found.closed_form is not None:
+        forms.append((f"minimum of {found.output} as a closed form", found.closed_form.value, ""))
+        if found.closed_form.input is not None:
+            forms.append((f"{found.input} at the minimum, in degrees", found.closed_form.input, ""))
+    return forms
+
+
+def _report_extremum(d):
+    dims = ", ".join(f"{n} = {v}" for n, v in d["parameters"].items())
+    lines = [f"{d['of']} of {d['scene']} over {d['input']} in [{d['range'][0]:g}, {d['range'][1]:g}] deg"
+             + (f" (at {dims})" if dims else "") + ":"]
+    lines += [f"  {p['kind']:10} {p['value']:.12g} at {p['enclosure_deg']} deg" for p in d["critical_points"]]
+    lines += [f"  {'end':10} {p['value']:.12g} at {p['input_deg']:g} deg" for p in d["endpoints"]]
+    for key in ("minimum", "maximum"):
+        p = d[key]
+        lines.append(f"{key}: {p['value']:.12g} at {p['input_deg']:.12g} deg ({p['kind']})")
+    if "closed_form" in d:
+        lines += _report_closed_form(d["closed_form"], d["input"])
+    return "\n".join(lines)
+
+
+def _report_closed_form(form, name):
+    lines = ["minimum as a closed form:",
+             f"  value = {form['value']}",
+             f"  {name} = {form['input']} deg" + ("  (a range end)" if form["at"] == "endpoint" else ""),
+             "  holds for " + " or ".join(form["valid_when"]) if form["regions"]
+             else "  holds where " + " and ".join(form["valid_when"]) + " (the defaults' cell)"]
+    if len(form["regions"]) > 1:
+        lines.append("  elsewhere:")
+        for region in form["regions"]:
+            where = _interval(region)
+            if region["at"] == "nowhere":
+                lines.append(f"    {where}: the output is not real anywhere on the range (no assembly)")
+                continue
+            what = {"endpoint": "the minimiser leaves the range; the minimum is at the end",
+                    "dead centre": "at the dead centre (where the branch stops assembling)"}.get(region["at"],
+                                                                                              "stationary")
+            lines.append(f"    {where}: {what} {name} = {region['input']} deg, value {region['value']}")
+    return lines
+
+
+def _interval(region):
+    lo, hi = region["from"], region["to"]
+    return f"({'-oo' if lo is None else f'{lo:.12g}'}, {'oo' if hi is None else f'{hi:.12g}'})"
+
+
+def _report_toggles(d):
+    lo, hi = d["range"]
+    lines = [f"toggles of {d['scene']} over {d['input']} in [{lo:g}, {hi:g}] deg:"]
+    lines += [f"  {g['kind']:9} {g['point']} at {g['enclosure_deg']} deg (certified)" for g in d["toggles"]]
+    if not d["toggles"]:
+        lines.append("  none: every dyad and slider assembles, in both modes apart, over the whole range")
+    if d["grashof"]:
+        g = d["grashof"]
+        bars = ", ".join(f"{k} {v}" for k, v in g["bars"].items())
+        lines.append(f"four-bar ({bars}): {g['class']} ({g['rule']}: margin {g['margin']})")
+    for artefact in d["artefacts"]:
+        lines.append(f"dropped from disc({artefact['eliminant']}): {_brief(artefact['factor'])}: "
+                     f"{_brief(' '.join(artefact['why'].split()))}")
+    return "\n".join(lines + _hint([a["factor"] for a in d["artefacts"]], "full factors: --json"))
+
+
+def _report_accuracy(d):
+    lines = [f"accuracy of {d['point']} in {d['scene']}; truth: {d['reference']}",
+             f"  {'strategy':12} {'case':13} {'samples':>7} {'ns/sample':>10} {'max rel err':>11} "
+             f"{'condition':>9} {'err/(k eps)':>11}"]
+    lines += [f"  {r['strategy']:12} {r['case']:13} {r['samples']:7} {r['ns_per_sample']:10.1f} "
+              f"{r['max_rel_error']:11.2e} {r['condition']:9.2e} {r['error_over_kappa_eps']:11.2e}"
+              for r in d["rows"]]
+    return "\n".join(lines)
+
+
+def _render(args, document, report):
+    """What the command prints: ``document`` as JSON with --json, else ``report(document)``."""
+    return (json.dumps(document, indent=2) if args.json else terminal_safe(report(document))) + "\n"
+
+
+# Control characters (ESC starts terminal commands) and bidirectional overrides (which
+# reorder what is shown) from a scene's names and text are shown escaped, never obeyed.
+_UNSAFE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u061c\u200e\u200f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
+
+
+def terminal_safe(text):
+    r"""``text`` with control and bidi characters escaped; newlines and tabs kept.
+
+    >>> terminal_safe("scene \x1b[31mred\u202e\n")
+    'scene \\x1b[31mred\\u202e\n'
+    """
+    return _UNSAFE.sub(lambda m: m.group().encode("unicode_escape").decode("ascii"), text)
+
+
+def _report_show(d):
+    lines = [f"scene {d['scene']}: {d['description']}",
+             "points: " + ", ".join(f"{n} ({k})" for n, k in d["points"].items()),
+             "unknowns: " + ", ".join(d["system"]["unknowns"]),
+             "parameters: " + (", ".join(d["system"]["parameters"]) or "none (all exact)"),
+             "inputs: " + ", ".join(f"{n} as ({v['cos']}, {v['sin']})" for n, v in d["inputs"].items()),
+             "equations (= 0):"]
+    lines += [f"  {eq}" for eq in d["system"]["equations"]]
+    return "\n".join(lines)
+
+
+def _latex_lines(forms):
+    """Each (caption, sympy expression, relation) as a LaTeX comment and a display equation."""
+    import sympy
+
+    return "".join(f"% {caption}\n\\[ {' '.join([sympy.latex(expr), relation]).strip()} \\]\n"
+                   for caption, expr, relation in forms)
+
+
+def _verification_line(v):
+    if v["status"] == "skipped":
+        return "verification skipped (--samples 0)"
+    verdict = "passed" if v["passed"] else "FAILED"
+    line = (f"verification {verdict}: {v['compared']} branch values on {v['samples']} samples, "
+            f"max abs error {v['max_abs_error']:.2e}")
+    return "\n".join([line] + [f"  {f}" for f in v["failures"]])
+
+
+def _timings_line(t):
+    return "timings: " + ", ".join(f"{k} {v * 1e3:.1f} ms" for k, v in t.items())
+
+
+def _report_derive(d):
+    lines = [f"scene {d['scene']}  (method {d['method']}, backend {d['backend']})", "eliminants:"]
+    for unknown, poly in d["eliminants"].items():
+        figures = d["eliminant_figures"][unknown]
+        lines.append(f"  {unknown}: {_brief(poly)}")
+        lines.append(f"      degree {figures['degree']}, {figures['terms']} terms, "
+                     f"{figures['coefficient_bits']}-bit coefficients, "
+                     f"dropped {len(figures['dropped_factors'])} extraneous factor(s)")
+    lines.append("branches:")
+    for branch in d["branches"]:
+        mark = "  (scene's choice)" if branch["selected"] else ""
+        lines.append(f"  [{branch['label']}]{mark} valid when {_brief(branch['valid_when'])}")
+        lines += [f"      {u} = {_brief(v)}" for u, v in branch["values"].items()]
+    lines += [_verification_line(d["verification"]), _timings_line(d["timings"])]
+    forms = [*d["eliminants"].values(), *(f for b in d["branches"] for f in (b["valid_when"], *b["values"].values()))]
+    return "\n".join(lines + _hint(forms))
+
+
+def _report_curve(d):
+    lines = [f"curve of {d['point']} in {d['scene']}  (method {d['method']}, backend {d['backend']})",
+             f"  {_brief(d['curve'])} = 0",
+             f"degree {d['degree']}, circularity {d['circularity']}, "
+             f"{'irreducible' if d['irreducible'] else 'reducible'}, {d['terms']} terms, "
+             f"{d['coefficient_bits']}-bit coefficients",
+             f"dropped {len(d['dropped_factors'])} extraneous factor(s):"]
+    lines += [f"  {_brief(f)}" for f in d["dropped_factors"]]
+    lines += [_verification_line(d["verification"]), _timings_line(d["timings"])]
+    return "\n".join(lines + _hint([d["curve"], *d["dropped_factors"]]))
+
+
+# A text report is read by a person: a form longer than this is summarised there (its leading
+# terms); --json and --out keep every form whole. The seed lambda's sextic (213) stays whole.
+_WHOLE = 230
+
+
+def _brief(form):
+    """``form`` whole when short, else its leading terms, ``...`` and its length in characters."""
+    if len(form) <= _WHOLE:
+        return form
+    head = form[:_WHOLE // 2]
+    cut = max(head.rfind(" + "), head.rfind(" - "))  # end on a whole term where there is one
+    return f"{head[:cut] if cut > 0 else head} ... ({len(form)} characters)"
+
+
+def _hint(forms, where="full forms: --json or --out FILE"):
+    """The line that says where the whole forms are, when ``_brief`` shortened any of ``forms``."""
+    return [where] if any(len(f) > _WHOLE for f in forms) else []
