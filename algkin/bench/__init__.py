@@ -117,16 +117,14 @@ def _verdicts(task, rows, side, budget, progress):
             row["agrees"] = None  # did not finish: nothing to compare
             continue
         poly = rebuild(form, keep)
-        verdicts = [Verdict(Agreement.REFERENCE) if row is reference else
-                    agreement(poly, target, flint_side, task.parameters) if target is not None else
-                    Verdict(Agreement.NOT_COMPARED, "no reference finished")]
-        if found:
-            verdicts.append(specialise.check(poly, found))
+        compared = [Verdict(Agreement.REFERENCE) if row is reference else
+                    agreement(poly, target, flint_side, task.parameters)] if target is not None else []
+        specialised = [specialise.check(poly, found)] if found else []
+        verdicts = compared + specialised or [Verdict(Agreement.NOT_COMPARED, "no reference finished")]
         verdict = next((v for v in verdicts if v.kind not in PASSING), verdicts[0])
-        against = [f"vs {name}" if name else None] + [f"specialised: {v.detail}" for v in verdicts[1:]]
+        said = [v.detail for v in verdicts if v is verdict or v in specialised]
         row["agrees"] = str(verdict)
-        row["note"] = "; ".join(filter(None, [row["note"], verdict.detail if verdict is verdicts[0] else None]
-                                       + against))
+        row["note"] = "; ".join(filter(None, [row["note"], f"vs {name}" if name else None, *said]))
 
 
 def _reference(rows):
