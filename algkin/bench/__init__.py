@@ -3,9 +3,12 @@ path end to end, and the peer engines that are installed, in one run.
 
 Each row is timed in a child process within the budget (``measure``), carries the
 eliminant's figures (degree, terms, coefficient bits) and whether it agrees with the
-problem's reference: the Gröbner basis over python-flint (a different algorithm from
-the resultants and the linear method) when it is in the run and finished, else algkin's
-default, else the first result that finished. ``ratio`` is each row's time over algkin's default (the ``linear``
+problem's reference (``_verdicts``): the Gröbner basis over python-flint (a different
+algorithm from the resultants and the linear method) when it is in the run and finished;
+else a peer's elimination ideal (Singular, Macaulay2 or msolve ``eliminate``) when one
+finished, and always then a fresh Gröbner elimination at random rational values of the
+dimensions (``specialise``). algkin's default is never its own reference. Each row's note
+says what it was checked against. ``ratio`` is each row's time over algkin's default (the ``linear``
 method over ``flint``) on the same problem: above 1, algkin is faster.
 """
 
@@ -14,13 +17,16 @@ import platform
 from dataclasses import dataclass
 
 from ..eliminate import BACKENDS, DEFAULT_METHOD, METHODS
-from .agree import agreement, from_sympy, portable, rebuild
+from . import specialise
+from .agree import PASSING, Agreement, Verdict, agreement, from_sympy, portable, rebuild
 from .measure import measure
 from .problems import PROBLEMS, build, problem_names
 
 __all__ = ["bench", "BenchReport", "PROBLEMS", "problem_names", "machine"]
 
 REFERENCE = ("groebner", "flint")
+PEER_REFERENCES = ("Singular eliminate", "msolve eliminate", "Macaulay2 eliminate")  # elimination ideals
+SPECIALISATIONS = 2  # random rational specialisations checked where the Gröbner reference did not finish
 DEFAULT = (DEFAULT_METHOD, "flint")
 ROUNDS = 3  # rows measured in turn, each keeping its best round (``bench(rounds=...)``)...
 ROUND_CAP = 2.0  # ...when one run takes less than this many seconds
@@ -85,24 +91,50 @@ def _problem_rows(problem, methods, backends, budget, peers, progress, rounds):
     if peers:
         rows += _peer_rows(problem, budget, progress)
     _rounds(problem, rows, budget, progress, rounds)
-    reference = _reference(rows)
-    reference = None if reference is None else rebuild(reference, keep)
-    side = [from_sympy(e, keep) for e in side]
-    for row in rows:
-        form = row.pop("form", None)
-        row["agrees"] = None if reference is None or form is None else agreement(rebuild(form, keep), reference, side)
+    _verdicts(task, rows, side, budget, progress)
     default = results[DEFAULT]["seconds"]
     for row in rows:
         row["ratio"] = row["seconds"] / default if row["seconds"] and default else None
     return rows
 
 
+def _verdicts(task, rows, side, budget, progress):
+    """Set each row's ``agrees`` (the verdict's string) and add what it was checked against
+    to its note: the reference row, then, unless that is the Gröbner basis over flint, the
+    fresh eliminations at random rational specialisations, which every row must also pass."""
+    keep = list(task.keep)
+    reference, name = _reference(rows)
+    target = None if reference is None else rebuild(reference["form"], keep)
+    flint_side = [from_sympy(e, keep) for e in side]
+    found = []
+    if name != "Gröbner basis over flint":
+        _say(progress, f"{rows[0]['problem']}: fresh eliminations at random rational specialisations")
+        found = [specialise.fresh(task, values, budget)
+                 for values in specialise.specialisations(task, side, SPECIALISATIONS, seed=17)]
+    for row in rows:
+        form = row.pop("form", None)
+        if form is None:
+            row["agrees"] = None  # did not finish: nothing to compare
+            continue
+        poly = rebuild(form, keep)
+        compared = [Verdict(Agreement.REFERENCE) if row is reference else
+                    agreement(poly, target, flint_side, task.parameters)] if target is not None else []
+        specialised = [specialise.check(poly, found)] if found else []
+        verdicts = compared + specialised or [Verdict(Agreement.NOT_COMPARED, "no reference finished")]
+        verdict = next((v for v in verdicts if v.kind not in PASSING), verdicts[0])
+        said = [v.detail for v in verdicts if v is verdict or v in specialised]
+        row["agrees"] = str(verdict)
+        row["note"] = "; ".join(filter(None, [row["note"], f"vs {name}" if name else None, *said]))
+
+
 def _reference(rows):
-    """The Gröbner basis over flint if it ran and finished, else algkin's default, else any."""
-    finished = [r for r in rows if r.get("form") is not None]
-    ranked = sorted(finished, key=lambda r: ((r["method"], r["backend"]) != REFERENCE,
-                                             (r["method"], r["backend"]) != DEFAULT))
-    return ranked[0]["form"] if ranked else None
+    """``(row, what it is)``: the Gröbner basis over flint if it finished, else the first
+    peer elimination ideal that did, else ``(None, None)``: never algkin's default."""
+    finished = {(r["method"], r["backend"]): r for r in rows if r.get("form") is not None}
+    if REFERENCE in finished:
+        return finished[REFERENCE], "Gröbner basis over flint"
+    peer = next((p for p in PEER_REFERENCES if (p, "peer") in finished), None)
+    return (finished[peer, "peer"], peer) if peer else (None, None)
 
 
 def _summary(elimination):

@@ -1,27 +1,76 @@
-"""Do two eliminants describe the same curve? Compared exactly, in python-flint.
+"""Do two eliminants describe the same curve? Compared exactly, in python-flint, with a typed verdict.
 
 Polynomials travel between processes as ``(names, [(exponents, numerator, denominator)])``
-and are rebuilt over the kept variables. Two results agree when they are equal up to a
-constant; when one carries extraneous factors (a resultant chain's, a peer's), they agree
-with a note if their gcd holds every kept variable the reference holds; when the problem
-has side relations (``c**2 + s**2 - 1``), equality modulo them also counts.
+and are rebuilt over the kept variables. Only two verdicts count as agreeing: ``equal`` (up
+to a nonzero constant) and ``equal mod side relations`` (equal once reduced modulo
+``c**2 + s**2 - 1`` and the like). A third, ``equal up to content``, also agrees, and only
+when the two differ by factors in the parameters (the dimensions) alone that have no real
+zero, such as ``b**2 + 160000``: at every real choice of the dimensions that factor is a
+nonzero constant, so the two are equal up to a nonzero constant on every real mechanism;
+it is the factor algkin's elimination drops (``algkin.eliminate.select.unreal_factors``)
+and a peer's Gröbner basis keeps. Everything else disagrees, and says how: ``extra
+factor`` (the row carries a factor the reference does not), ``missing factor`` (the
+reverse), ``different`` (neither divides the other). A resultant chain's extraneous
+factors are an ``extra factor``: the row's eliminant is not the curve.
 
 >>> import flint
 >>> ctx = flint.fmpq_mpoly_ctx.get(("x", "y"), "lex")
 >>> x, y = ctx.gens()
->>> agreement(2 * (x**2 + y**2 - 1), x**2 + y**2 - 1), agreement(x * (x**2 + y**2 - 1), x**2 + y**2 - 1)
-('yes', 'yes, extra deg 1/0')
->>> agreement(x**2 + y**2 - 2, x**2 + y**2 - 1)
-'NO'
+>>> circle = x**2 + y**2 - 1
+>>> str(agreement(2 * circle, circle)), str(agreement(x * circle, circle)), str(agreement(circle, x * circle))
+('equal', 'extra factor', 'missing factor')
+>>> agreement(x * circle, circle).detail
+'extra factor x (degree 1, 1 terms)'
+>>> agreement(x**2 + y**2 - 2, circle).agrees
+False
 """
+
+import enum
+from dataclasses import dataclass
 
 import flint
 import sympy
 
+from ..eliminate.select import unreal
 from ..system import symbol
 from ..system.convert import flint_context, to_flint, to_sympy
 
-__all__ = ["agreement", "rebuild", "portable"]
+__all__ = ["Agreement", "AGREEING", "PASSING", "Verdict", "agreement", "rebuild", "portable", "from_sympy", "describe"]
+
+SHOWN = 80  # characters of a factor written out in a verdict's detail
+
+
+class Agreement(enum.Enum):
+    EQUAL = "equal"
+    EQUAL_MOD_SIDE = "equal mod side relations"
+    EQUAL_UP_TO_CONTENT = "equal up to content"
+    EXTRA_FACTOR = "extra factor"
+    MISSING_FACTOR = "missing factor"
+    DIFFERENT = "different"
+    REFERENCE = "reference"
+    NOT_COMPARED = "not compared"
+
+    def __str__(self):
+        return self.value
+
+
+AGREEING = {Agreement.EQUAL, Agreement.EQUAL_MOD_SIDE, Agreement.EQUAL_UP_TO_CONTENT}
+PASSING = AGREEING | {Agreement.REFERENCE}  # what a bench row may read for ``algkin bench`` to exit 0
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """An ``Agreement`` and what it rests on (the factor in excess or missing, the content)."""
+
+    kind: Agreement
+    detail: str = ""
+
+    @property
+    def agrees(self):
+        return self.kind in AGREEING
+
+    def __str__(self):
+        return str(self.kind)
 
 
 def portable(engine, poly):
@@ -45,18 +94,54 @@ def from_sympy(expr, keep):
     return to_flint(expr, flint_context(keep))
 
 
-def agreement(poly, reference, side=()):
-    """'yes', 'yes, extra deg P/R', 'yes, mod side rel.' or 'NO' (flint polynomials in one context)."""
+def agreement(poly, reference, side=(), parameters=()):
+    """The ``Verdict`` of ``poly`` against ``reference`` (flint polynomials in one context);
+    ``side``: the side relations; ``parameters``: names of the dimensions, for content."""
     if _proportional(poly, reference):
-        return "yes"
-    shared = poly.gcd(reference)
-    needed = [d > 0 for d in reference.degrees()]
-    if all(d > 0 for d, need in zip(shared.degrees(), needed) if need):
-        return f"yes, extra deg {poly.total_degree() - shared.total_degree()}/" \
-               f"{reference.total_degree() - shared.total_degree()}"
+        return Verdict(Agreement.EQUAL)
     if side and _proportional(*(_reduced(p, side) for p in (poly, reference))):
-        return "yes, mod side rel."
-    return "NO"
+        return Verdict(Agreement.EQUAL_MOD_SIDE)
+    if poly.is_zero() or reference.is_zero():
+        return Verdict(Agreement.DIFFERENT, "one of them is zero")
+    shared = poly.gcd(reference)
+    extra, missing = poly / shared, reference / shared
+    if _content(extra, parameters) and _content(missing, parameters):
+        return Verdict(Agreement.EQUAL_UP_TO_CONTENT, "; ".join(
+            f"{where} content {_text(f)} (no real zero)" for where, f in (("row's", extra), ("reference's", missing))
+            if not _constant(f)))
+    if _constant(missing):
+        return Verdict(Agreement.EXTRA_FACTOR, f"extra factor {describe(extra)}")
+    if _constant(extra):
+        return Verdict(Agreement.MISSING_FACTOR, f"missing factor {describe(missing)}")
+    return Verdict(Agreement.DIFFERENT, f"{describe(extra)} in the row against {describe(missing)} in the reference")
+
+
+def describe(poly):
+    """A factor as a reader checks it: written out when short, with its degree and terms."""
+    text, figures = _text(poly), f"degree {poly.total_degree()}, {len(poly)} terms"
+    return f"{text} ({figures})" if len(text) <= SHOWN else f"of {figures}"
+
+
+def _text(poly):
+    return str(to_sympy(poly, poly.context()).factor())
+
+
+def _constant(poly):
+    return not any(poly.degrees())
+
+
+def _content(poly, parameters):
+    """Whether ``poly`` is a constant or a product of factors in the ``parameters`` alone
+    with no real zero (a nonzero constant at every real choice of them)."""
+    if _constant(poly):
+        return True
+    names = poly.context().names()
+    held = {n for n, d in zip(names, poly.degrees()) if d > 0}
+    if not held <= set(parameters):
+        return False
+    _, factors = poly.factor()
+    terms = lambda f: [(m, int(c.p), int(c.q)) for m, c in zip(f.monoms(), f.coeffs())]  # noqa: E731
+    return all(unreal(terms(f)) for f, _ in factors)
 
 
 def _proportional(p, q):

@@ -26,7 +26,7 @@ from .backends import BACKENDS
 from .linear import linear_elimination
 from .methods import groebner_basis, prepare, resultant_chain
 from .factor import factor_with
-from .select import Witness, select_factors
+from .select import Witness, select_factors, unreal_factors
 
 __all__ = ["eliminate", "Elimination", "Witness", "Budget", "current", "METHODS", "DEFAULT_METHOD", "BACKENDS",
            "method_names", "backend_names"]
@@ -133,8 +133,9 @@ def _eliminate(engine, method, run, equations, eliminate, keep, witnesses, param
         eliminant = engine.gcd(eliminant, poly)
     if engine.is_constant(eliminant):
         eliminant = min(left, key=lambda p: (engine.total_degree(p), engine.nterms(p)))
-    kept, lost = select_factors(engine, factor_with(engine, eliminant, multipliers), witnesses)
-    dropped.extend(lost)
+    real, unreal = unreal_factors(engine, factor_with(engine, eliminant, multipliers), parameters)
+    kept, lost = select_factors(engine, real, witnesses)
+    dropped.extend(unreal + lost)
     product = kept[0]
     for factor in kept[1:]:
         product = product * factor

@@ -27,7 +27,7 @@ import flint
 
 from ..errors import ComputationError
 
-__all__ = ["Witness", "Evaluator", "select_factors"]
+__all__ = ["Witness", "Evaluator", "select_factors", "unreal_factors", "unreal"]
 
 MARGIN_BITS = 64
 
@@ -107,6 +107,44 @@ class Evaluator:
             for coefficient, end in zip(self.coefficients, self.ends):
                 total += coefficient if end == 0 else coefficient * products[end]
             return total
+
+
+def unreal_factors(backend, factors, parameters):
+    """Split ``factors`` into (kept, dropped): dropped, those in the ``parameters`` alone
+    (dimensions, a derivation's inputs) that have no real zero, proved by ``unreal``.
+
+    Such a factor is content (free of the unknowns) that no real mechanism makes vanish,
+    so the true motion never lies on it: ``b**2 + 160000`` in the arm's value polynomial
+    comes from the half-angle substitution's ``t = -+i`` at ``b = +-400i``, not from any
+    configuration. Witnesses would drop it too, but eliminations without witnesses (the
+    extremum's stationary and value polynomials) have only this test. A parameter factor
+    with a real zero is left to the witnesses.
+    """
+    kept, dropped = [], []
+    for factor in factors:
+        alone = backend.variables(factor) <= set(parameters)
+        (dropped if alone and unreal(backend.terms(factor)) else kept).append(factor)
+    return kept, dropped
+
+
+def unreal(terms):
+    """True when the polynomial of ``terms`` (exponents, numerator, denominator) is proved to
+    have no real zero: a nonzero constant; in one variable, by exact real root counting; in
+    several, when every exponent is even, every coefficient has one sign and the constant
+    term is there (a sum of positive multiples of squares plus a positive number). False
+    means not proved."""
+    import sympy
+
+    used = sorted({i for exponents, _, _ in terms for i, e in enumerate(exponents) if e})
+    if not used:
+        return any(p for _, p, _ in terms)
+    if len(used) == 1:
+        x = sympy.Symbol("x")
+        poly = sympy.Poly({(e[used[0]],): sympy.Rational(p, q) for e, p, q in terms}, x)
+        return poly.count_roots() == 0
+    signs = {p > 0 for _, p, _ in terms}
+    constant = any(not any(e) for e, _, _ in terms)
+    return len(signs) == 1 and constant and all(e % 2 == 0 for exponents, _, _ in terms for e in exponents)
 
 
 def select_factors(backend, factors, witness_groups, check=True):

@@ -9,7 +9,6 @@ import pytest
 import sympy
 
 from algkin.bench import bench
-from algkin.bench.agree import agreement, from_sympy
 from algkin.bench.measure import measure
 from algkin.cli import main
 
@@ -22,7 +21,8 @@ def two_circles():
 def test_every_method_agrees_on_the_seed_connector(two_circles):
     rows = [r for r in two_circles.rows if r["backend"] == "flint"]
     assert {r["method"] for r in rows} >= {"linear", "resultant", "groebner", "default path, end to end"}
-    assert all(r["agrees"] == "yes" for r in rows), rows
+    assert {r["agrees"] for r in rows} == {"reference", "equal"}, rows
+    assert [r["method"] for r in rows if r["agrees"] == "reference"] == ["groebner"]
     # B_y of two circles of radius 5/2 about A = (c, s) and D = (2, 0): the resultant in B_x is a
     # quartic in B_y (by hand: the radical axis is linear in B_x, put back into one circle).
     assert {(r["degree"], r["terms"]) for r in rows} == {(4, 17)}
@@ -32,7 +32,7 @@ def test_ratios_are_against_the_default_method(two_circles):
     default = next(r for r in two_circles.rows if (r["method"], r["backend"]) == ("linear", "flint"))
     assert default["ratio"] == 1.0
     # every row under two seconds had its second round, the default among them
-    assert all(r["note"].endswith("best of 2 rounds") for r in two_circles.rows if r["seconds"] < 2), two_circles.rows
+    assert all("best of 2 rounds" in r["note"] for r in two_circles.rows if r["seconds"] < 2), two_circles.rows
     assert two_circles.machine["cores"] >= 1 and "python-flint" in two_circles.machine
 
 
@@ -46,14 +46,6 @@ def test_a_computation_past_its_budget_is_stopped_and_reported():
 def test_a_failing_computation_is_reported_not_raised():
     seconds, _, note = measure(lambda: 1 / 0, lambda r: r, budget=5)
     assert seconds is None and note.startswith("failed: ZeroDivisionError")
-
-
-def test_agreement_modulo_the_circle_relation():
-    c, s, x = sympy.symbols("c s x")
-    keep = ["x", "c", "s"]
-    one, other, circle = (from_sympy(e, keep) for e in (x + c**2, x + 1 - s**2, c**2 + s**2 - 1))
-    assert agreement(one, other) == "NO"
-    assert agreement(one, other, [circle]) == "yes, mod side rel."
 
 
 def test_cli_table_json_and_files(tmp_path, capsys):
