@@ -164,6 +164,8 @@ def build_parser():
     _scene(accuracy)
     accuracy.add_argument("--samples", type=int, default=2000, help="samples per case")
     accuracy.add_argument("--seed", type=int, default=0, help="random seed of the samples")
+    accuracy.add_argument("--of", help="the output measured: a point, an output's name, dist(A, B), B.x "
+                                       "(default: the first dyad point, else the first output)")
     accuracy.add_argument("--plot", metavar="FILE",
                           help="also draw time against error (log-log) to this .png/.svg/.pdf")
     _json(accuracy)
@@ -368,7 +370,7 @@ def _cmd_accuracy(args):
     if args.samples < 10:
         raise UsageError("--samples", args.samples, "needs at least 10 samples per case")
     out = _figure_path("--plot", args.plot) if args.plot else None
-    result = accuracy(_scene_of(args), args.samples, args.seed)
+    result = accuracy(_scene_of(args), args.samples, args.seed, of=args.of)
     text = _render(args, result.to_json(), _report_accuracy)
     if out is None:
         return text, 0
@@ -384,7 +386,7 @@ def _report_accuracy(d):
              f"{'condition':>9} {'err/(k eps)':>11}"]
     lines += [f"  {r['strategy']:12} {r['case']:13} {r['samples']:7} {r['ns_per_sample']:10.1f} "
               f"{r['max_rel_error']:11.2e} {r['condition']:9.2e} {r['error_over_kappa_eps']:11.2e}"
-              for r in d["rows"]]
+              + (f"\n    note: {r['note']}" if r.get("note") else "") for r in d["rows"]]
     return "\n".join(lines)
 
 
