@@ -30,7 +30,7 @@ __all__ = ["Reference", "BITS", "NotCertified"]
 
 BITS = 200
 BOX = 2.0**-140  # the Krawczyk box's half-width, relative to the root's size
-NEWTON_STEPS = 4  # 53 -> 106 -> 212 bits, and one to spare
+NEWTON_STEPS = 80  # at most: 53 -> 106 -> 212 bits takes 3 away from toggles, ~60 on one
 
 
 class NotCertified(ArithmeticError):
@@ -92,23 +92,35 @@ class Reference:
         """The certified root (balls) at one angle and its condition number (float)."""
         a = arb(angle)
         cs = (a.cos(), a.sin())
-        x = self._newton([arb(v) for v in start], cs)
-        root = self._krawczyk(x, cs)
-        for sign, expected in self.signs:
-            value, = sign(*root, *cs)
-            if not (value > 0 if expected > 0 else value < 0):
-                raise NotCertified(f"at {angle!r} rad the root's side is {value}, not the label's")
+        root = self._krawczyk(self._newton([arb(v) for v in start], cs), cs)
+        if not self._labelled(root, cs):
+            # Near a double root Newton may cross to the other branch: start again from the
+            # start's mirror image away from the root it found.
+            mirror = [arb(2 * float(v) - float(r.mid())) for v, r in zip(start, root)]
+            root = self._krawczyk(self._newton(mirror, cs), cs)
+            if not self._labelled(root, cs):
+                raise NotCertified(f"at {angle!r} rad no root on the label's side was found")
         return root, self._kappa(root, a, cs)
+
+    def _labelled(self, root, cs):
+        """Every indicator's sign is decided on the enclosure, and is the label's."""
+        values = [(sign(*root, *cs)[0], expected) for sign, expected in self.signs]
+        return all(v > 0 if expected > 0 else v < 0 for v, expected in values)
 
     def _jacobian(self, x, cs):
         """``J`` in the unknowns, then in c and s: ``n x (n + 2)``."""
         return arb_mat(self.n, self.n + 2, self.j(*x, *cs))
 
     def _newton(self, x, cs):
+        """Newton in balls (midpoints kept) until the step is below the box; near a double root
+        (a toggle) it only halves the distance per step until the two roots part."""
+        size = max(abs(float(v)) for v in x) or 1.0
         for _ in range(NEWTON_STEPS):
             jac = self._jacobian(x, cs)
             step = _columns(jac, self.n).solve(arb_mat(self.n, 1, self.f(*x, *cs)))
             x = [arb((x[i] - step[i, 0]).mid()) for i in range(self.n)]
+            if max(abs(float(step[i, 0].mid())) for i in range(self.n)) < BOX * 2.0**-20 * size:
+                break
         return x
 
     def _krawczyk(self, x, cs):
