@@ -1,47 +1,55 @@
 """Speed against error of each way to evaluate a branch, on ordinary and hard samples.
 
-Strategies, all vectorised over float64 samples of the input:
+What is measured is one output (``of``: a point, a distance, a coordinate; by default the
+scene's first dyad point, else its first output). Strategies, all vectorised over float64
+samples of the input:
 
 - ``closed-form``: the eliminants solved the seeds' way (``sympy.solve``, then
   ``lambdify``); the root nearest the truth is credited, since solving does not pair roots;
-- ``stabilised``: ``branches.stable.StableBranch`` (local frame, sorted Heron);
-- ``numeric``: Newton on the two circle equations, started from the previous sample's
-  answer (six steps);
-- ``reference``: the closed form in mpmath at 200 bits, on the same float inputs.
+- ``stabilised``: ``branches.stable.StableBranch`` (local frame, sorted Heron) for dyad and
+  slider points; an explicit output from those with its offsets cancelled exactly (a distance
+  is the ``hypot`` of exact coordinate differences);
+- ``numeric``: Newton on the original equations, started from the construction at the previous
+  sample (six steps);
+- ``reference``: ``reference.Reference``, the root of the original equations certified by a
+  Krawczyk step in arb at 200 bits and labelled by side: nothing of the closed form enters.
 
 Errors are against the reference. ``condition`` is the relative condition number of the
-point in the input angle, ``|theta| * |X'(theta)| / |X|`` (plus one for the rounding of
-the result), so ``error_over_kappa_eps`` near 1 means as accurate as the problem allows.
-Cases: ``uniform`` over the certified intervals, within 1e-6, 1e-10 and 1e-14 (relative)
-of each toggle on its assembling side, ``near-fold`` around the input where a dyad that
-never toggles comes within 1% of it (a near-change-point four-bar: its closest approach
-to a dead centre), and the mechanism translated 1e7 away.
+output in the input angle from the system's Jacobian, ``|theta| * |X'(theta)| / |X|`` (plus
+one for the rounding of the result), so ``error_over_kappa_eps`` near 1 means as accurate as
+the problem allows. Cases: ``uniform`` over the certified intervals, within 1e-6, 1e-10 and
+1e-14 (relative) of each toggle on its assembling side, ``near-fold`` around the input where a
+dyad that never toggles comes within 1% of it (a near-change-point four-bar: its closest
+approach to a dead centre), and the mechanism translated 1e7 away. A sample the reference
+cannot certify (on the side of a toggle where the branch does not assemble) is left out.
 """
 
 import dataclasses
 import time
 from dataclasses import dataclass
 
-import mpmath
 import numpy as np
 import sympy
+from flint import ctx
 
 from .branches import closed_forms
+from .branches.closed_form import reduce_on_circles
 from .branches.stable import StableBranch
 from . import validation
 from .errors import UsageError
-from .evaluate import MPMATH, NUMPY, evaluate
 from .pipeline import certify_labels, derive
+from .reference import BITS, NotCertified, Reference
 from .scene import compile_scene
+from .scene.compile import _resolve_outputs
 from .scene.load import as_scene
 from .scene.settings import with_values
 from .scene.constructions import Dyad, Fixed
 from .system import symbol
 
-__all__ = ["accuracy", "Accuracy", "STRATEGIES", "EPS"]
+__all__ = ["accuracy", "Accuracy", "STRATEGIES", "EPS", "REFERENCE"]
 
 EPS = 2.0**-53
-REFERENCE_DPS = 61  # 200 bits
+REFERENCE = f"certified root of the original equations (Krawczyk in arb at {BITS} bits), labelled by side"
 TOGGLE_OFFSETS = (1e-6, 1e-10, 1e-14)
 NEAR_FOLD = 1e-2  # a discriminant factor's smallest value, relative to its largest
 FAR = 10**7
@@ -50,48 +58,93 @@ FAR = 10**7
 @dataclass
 class Accuracy:
     scene: str
-    point: str
+    point: str  # the output measured
     rows: list
 
     def to_json(self):
-        return {"scene": self.scene, "point": self.point, "rows": self.rows,
-                "reference": f"the closed form in mpmath at {REFERENCE_DPS} digits (200 bits) "
-                             "on the same float64 inputs", "eps": EPS}
+        return {"scene": self.scene, "point": self.point, "rows": self.rows, "reference": REFERENCE, "eps": EPS}
 
 
 class _Subject:
-    """One compiled variant of the scene: its branch, point and the strategies' evaluators."""
+    """One compiled variant of the scene: its branch, output and the strategies' evaluators."""
 
-    def __init__(self, scene, point):
-        self.compiled = compile_scene(scene, [point])
+    def __init__(self, scene, of):
+        self.compiled = compile_scene(scene, [of])
         self.branch = next(b for b in closed_forms(self.compiled) if b.selected)
         (self.c, self.s), = self.compiled.system.inputs.values()
-        dyad = next(d for d in self.compiled.dyads if d.point == point)
-        self.unknowns = dyad.unknowns
-        self.dyad = dyad
-        self.stable = StableBranch(self.compiled, self.branch)
-        derived = derive(scene, [point], samples=0)
+        (self.unknowns,) = self.compiled.outputs.values()
+        # the construction whose toggles matter: the output's own, else the last one it rests on
+        self.dyad = next((d for d in self.compiled.implicit if d.point == of), None) or \
+            (self.compiled.implicit[-1] if self.compiled.implicit else None)
+        self.stable = _StableOutput(self.compiled, self.branch, of)
+        self.reference = Reference(self.compiled, self.branch, self.unknowns)
+        self.newton = _Newton(self.compiled, self.reference)
+        derived = derive(scene, [of], samples=0)
         cs = (symbol(self.c), symbol(self.s))
         self.solved = {u: [sympy.lambdify(cs, r, "numpy")
                            for r in sympy.solve(derived.eliminations[u].polynomial, symbol(u))]
                        for u in self.unknowns}
 
 
-def _reference(subject, theta):
-    """Point and condition number per sample, at 200 bits from the exact float inputs."""
-    points, kappas = [], []
-    with mpmath.workdps(REFERENCE_DPS):
-        step = mpmath.mpf(10) ** -25
-        for angle in theta:
-            at = lambda a: [evaluate(subject.branch.values[u], {subject.c: mpmath.cos(a), subject.s: mpmath.sin(a)},  # noqa: E731
-                                     MPMATH) for u in subject.unknowns]
-            a = mpmath.mpf(float(angle))
-            x = at(a)
-            dx = [(p - q) / (2 * step) for p, q in zip(at(a + step), at(a - step))]
-            size = mpmath.sqrt(sum(v * v for v in x))
-            kappas.append(float(abs(a) * mpmath.sqrt(sum(v * v for v in dx)) / size) + 1)
-            points.append([float(v) for v in x])
-    return np.array(points).T, np.array(kappas)
+class _StableOutput:
+    """The stabilised form of the output: StableBranch's implicit points, explicit ones on top."""
+
+    def __init__(self, compiled, branch, of):
+        self.branch = StableBranch(compiled, branch)
+        defaults = {symbol(n): sympy.Rational(str(v)) for n, v in compiled.parameter_values.items()}
+        circles = self.branch.half_angles
+        fix = lambda e: reduce_on_circles(sympy.sympify(e).xreplace(defaults), circles)  # noqa: E731
+        self.arguments = [v for pair in circles for v in pair] + \
+            [symbol(u) for d in self.branch.dyads for u in d.unknowns]
+        (self.unknowns,) = compiled.outputs.values()
+        output = _resolve_outputs(compiled.scene, [of])[0]
+        if output.kind == "dist":  # offsets cancel symbolically before any rounding
+            (px, py), (qx, qy) = (compiled.coordinates[p] for p in output.points)
+            span = sympy.lambdify(self.arguments, [fix(px - qx), fix(py - qy)], "numpy")
+            self.explicit = lambda *values: [np.hypot(*span(*values))]
+        else:
+            formulas = [fix(compiled.definitions.get(u, symbol(u))) for u in self.unknowns]
+            self.explicit = sympy.lambdify(self.arguments, formulas, "numpy")
+
+    def __call__(self, theta):
+        t = np.tan(0.5 * theta)
+        w = 1 / (1 + t * t)
+        implicit = self.branch(theta)
+        values = [(1 - t) * (1 + t) * w, 2 * t * w] + [implicit[str(a)] for a in self.arguments[2:]]
+        return np.array([np.broadcast_to(v, theta.shape) for v in self.explicit(*values)])
+
+
+class _Newton:
+    """Float Newton on the original equations, vectorised: the ``numeric`` strategy."""
+
+    def __init__(self, compiled, reference):
+        defaults = {symbol(n): sympy.Rational(str(v)) for n, v in compiled.parameter_values.items()}
+        equations = [e.xreplace(defaults) for e in compiled.system.equations
+                     if not e.free_symbols <= set(reference.cs)]
+        arguments = reference.unknowns + list(reference.cs)
+        self.f = sympy.lambdify(arguments, equations, "numpy")
+        self.j = sympy.lambdify(arguments, sympy.Matrix(equations).jacobian(reference.unknowns), "numpy")
+        self.start, self.outputs = reference.start, reference.outputs
+
+    def __call__(self, theta):
+        """Six steps from the construction at the previous sample's input (the first: the last's)."""
+        x = self.start(np.roll(theta, 1))
+        c, s = np.cos(theta), np.sin(theta)
+        for _ in range(6):
+            f = np.array([np.broadcast_to(v, theta.shape) for v in self.f(*x, c, s)])
+            j = np.array([[np.broadcast_to(v, theta.shape) for v in row] for row in self.j(*x, c, s)])
+            x = x - _solve(j, f)
+        return x[self.outputs]
+
+
+def _solve(j, f):
+    """``j^-1 f`` per sample (``j``: n x n x samples); a singular sample (a start on a toggle) gives nan."""
+    stacked = j.transpose(2, 0, 1)
+    try:
+        return np.linalg.solve(stacked, f.T[:, :, None])[:, :, 0].T
+    except np.linalg.LinAlgError:
+        singular = np.linalg.matrix_rank(stacked) < f.shape[0]
+        return (np.linalg.pinv(stacked) @ f.T[:, :, None])[:, :, 0].T * np.where(singular, np.nan, 1.0)
 
 
 def _closed_form(subject, theta, truth):
@@ -105,31 +158,6 @@ def _closed_form(subject, theta, truth):
     return np.array(out)
 
 
-def _stabilised(subject, theta):
-    point = subject.stable(theta)
-    return np.array([point[u] for u in subject.unknowns])
-
-
-def _numeric(subject, theta, truth):
-    """Newton from the previous sample's answer (the first starts from the truth's neighbour)."""
-    c, s = np.cos(theta), np.sin(theta)
-    values = {subject.c: c, subject.s: s}
-    (px, py), (qx, qy) = subject.dyad.base_p, subject.dyad.base_q
-    defaults = {symbol(n): v for n, v in subject.compiled.parameter_values.items()}
-    bases = [np.broadcast_to(evaluate(sympy.sympify(e).xreplace(defaults), values, NUMPY), theta.shape)
-             for e in (px, py, qx, qy)]
-    l1, l2 = (float(sympy.sympify(v).xreplace(defaults)) for v in subject.dyad.lengths)
-    x, y = np.roll(truth[0], 1), np.roll(truth[1], 1)
-    for _ in range(6):
-        f1 = (x - bases[0]) ** 2 + (y - bases[1]) ** 2 - l1 * l1
-        f2 = (x - bases[2]) ** 2 + (y - bases[3]) ** 2 - l2 * l2
-        j11, j12 = 2 * (x - bases[0]), 2 * (y - bases[1])
-        j21, j22 = 2 * (x - bases[2]), 2 * (y - bases[3])
-        det = j11 * j22 - j12 * j21
-        x, y = x - (j22 * f1 - j12 * f2) / det, y - (-j21 * f1 + j11 * f2) / det
-    return np.array([x, y])
-
-
 def _timed(run, repeats=3):
     best = None
     for _ in range(repeats):
@@ -140,35 +168,65 @@ def _timed(run, repeats=3):
     return result, best
 
 
-def _row(strategy, case, theta, estimate, seconds, truth, kappa):
+def _row(strategy, case, theta, estimate, seconds, truth, kappa, note=""):
     error = np.sqrt(((estimate - truth) ** 2).sum(axis=0))
     size = np.sqrt((truth**2).sum(axis=0))
     relative = error / size
     finite = np.isfinite(relative)
-    return {"strategy": strategy, "case": case, "samples": int(theta.size),
-            "ns_per_sample": seconds / theta.size * 1e9,
-            "max_abs_error": float(np.max(error)) if finite.all() else float("inf"),
-            "max_rel_error": float(np.max(relative)) if finite.all() else float("inf"),
-            "condition": float(np.max(kappa)),
-            "error_over_kappa_eps": float(np.max(relative / (kappa * EPS))) if finite.all() else float("inf")}
+    row = {"strategy": strategy, "case": case, "samples": int(theta.size),
+           "ns_per_sample": seconds / theta.size * 1e9,
+           "max_abs_error": float(np.max(error)) if finite.all() else float("inf"),
+           "max_rel_error": float(np.max(relative)) if finite.all() else float("inf"),
+           "condition": float(np.max(kappa)),
+           "error_over_kappa_eps": float(np.max(relative / (kappa * EPS))) if finite.all() else float("inf")}
+    return dict(row, note=note) if note else row
 
 
 STRATEGIES = ("closed-form", "stabilised", "numeric")
 
 
+def _certified(subject, theta):
+    """``(theta, truth, kappa)`` on the samples the reference certifies (the others do not assemble)."""
+    keep, truth, kappas = [], [], []
+    starts = subject.reference.start(theta)
+    with ctx.workprec(BITS):
+        for k, angle in enumerate(theta):
+            try:
+                root, kappa = subject.reference.one(float(angle), starts[:, k])
+            except (NotCertified, ZeroDivisionError, ValueError):
+                continue
+            keep.append(k)
+            truth.append([float(root[i].mid()) for i in subject.reference.outputs])
+            kappas.append(kappa)
+    return theta[keep], np.array(truth).reshape(-1, len(subject.unknowns)).T, np.array(kappas)
+
+
 def _rows(subject, case, theta):
-    truth, kappa = _reference(subject, theta)
-    _, reference_seconds = _timed(lambda: _reference(subject, theta[: max(1, theta.size // 10)]), 1)
+    (theta, truth, kappa), reference_seconds = _timed(lambda: _certified(subject, theta), 1)
+    if not theta.size:
+        return []
     runs = {"closed-form": lambda: _closed_form(subject, theta, truth),
-            "stabilised": lambda: _stabilised(subject, theta),
-            "numeric": lambda: _numeric(subject, theta, truth)}
+            "stabilised": lambda: subject.stable(theta),
+            "numeric": lambda: subject.newton(theta)}
     rows = []
     for name in STRATEGIES:
         estimate, seconds = _timed(runs[name])
         rows.append(_row(name, case, theta, estimate, seconds, truth, kappa))
-    rows.append(_row("reference", case, theta, truth, reference_seconds * theta.size / max(1, theta.size // 10),
-                     truth, kappa))
+    _explain(*rows[:2])
+    rows.append(_row("reference", case, theta, truth, reference_seconds, truth, kappa))
     return rows
+
+
+def _explain(raw, stabilised):
+    """The stabilised row says why, where it is less accurate than the raw closed form."""
+    if stabilised["max_rel_error"] <= raw["max_rel_error"]:
+        return
+    if stabilised["error_over_kappa_eps"] <= 1:
+        stabilised["note"] = ("within kappa*eps, what the input's own rounding allows: it rounds "
+                              "tan(theta/2), the raw form cos and sin, each of them an eps of theta")
+    else:
+        stabilised["note"] = (f"less accurate than the raw closed form ({stabilised['max_rel_error']:.1e} "
+                              f"against {raw['max_rel_error']:.1e})")
 
 
 def _cases(subject, samples, rng):
@@ -180,17 +238,18 @@ def _cases(subject, samples, rng):
     pick = rng.choice(len(intervals), size=samples, p=widths / widths.sum())
     lows = np.array([intervals[k]["from_deg"] for k in pick])
     cases = {"uniform": np.sort(np.radians(lows + rng.random(samples) * widths[pick]))}
+    if subject.dyad is None:
+        return cases
     from .toggles import toggles
 
-    edges = [np.radians(t.input_deg) for t in toggles(subject.compiled.scene, artefacts=False).toggles if t.point == subject.dyad.point]
+    edges = [np.radians(t.input_deg) for t in toggles(subject.compiled.scene, artefacts=False).toggles
+             if t.point == subject.dyad.point]
     for offset in TOGGLE_OFFSETS:
-        near = []
-        for edge in edges:
-            for side in (-1, 1):
-                trial = edge * (1 + side * offset * (0.5 + 0.5 * rng.random(samples // (2 * len(edges)) + 1)))
-                near += [a for a in trial if _assembles(subject, a)]
+        # Both sides: the reference certifies only the assembling one. A toggle at 0 gets absolute offsets.
+        near = [edge + side * offset * max(abs(edge), 1.0) * (0.5 + 0.5 * rng.random(samples // (2 * len(edges)) + 1))
+                for edge in edges for side in (-1, 1)]
         if near:
-            cases[f"toggle-{offset:.0e}"] = np.sort(np.array(near))
+            cases[f"toggle-{offset:.0e}"] = np.sort(np.concatenate(near))
     folds = _near_folds(subject)
     if folds:
         spread = 1e-6 * (2 * rng.random((len(folds), samples // len(folds) + 1)) - 1)
@@ -204,8 +263,9 @@ def _near_folds(subject):
     of ``-(beta, gamma)`` or ``(beta, gamma)``."""
     defaults = {symbol(n): sympy.Rational(str(v)) for n, v in subject.compiled.parameter_values.items()}
     c, s = symbol(subject.c), symbol(subject.s)
+    discriminant = subject.branch.discriminants.get(subject.dyad.point)
     folds = []
-    for factor, _ in sympy.factor_list(subject.branch.discriminants[subject.dyad.point].xreplace(defaults))[1]:
+    for factor, _ in sympy.factor_list(discriminant.xreplace(defaults))[1] if discriminant is not None else ():
         if not factor.free_symbols <= {c, s} or sympy.Poly(factor, c, s).total_degree() != 1:
             continue
         poly = sympy.Poly(factor, c, s)
@@ -217,33 +277,28 @@ def _near_folds(subject):
     return folds
 
 
-def _assembles(subject, angle):
-    with mpmath.workdps(REFERENCE_DPS):
-        a = mpmath.mpf(float(angle))
-        values = {subject.c: mpmath.cos(a), subject.s: mpmath.sin(a)}
-        return all(evaluate(d, values, MPMATH) > 0 for d in subject.branch.discriminants.values())
-
-
 def _translated(scene, offset):
     """The scene moved by (offset, offset): every ground point shifted."""
     points = {n: (Fixed(p.x + offset, p.y + offset) if isinstance(p, Fixed) else p) for n, p in scene.points.items()}
     return dataclasses.replace(scene, points=points)
 
 
-def accuracy(scene, samples=2000, seed=0, set=None):  # noqa: A002 - the public name, SPEC §3's --set
-    """Rows of speed and error per strategy and case for the scene's first dyad point;
+def accuracy(scene, samples=2000, seed=0, set=None, of=None):  # noqa: A002 - the public name, SPEC §3's --set
+    """Rows of speed and error per strategy and case for the output ``of`` (a point, ``dist(A, B)``,
+    ``B.x`` or an output's name; default: the first dyad point, else the first output);
     ``set`` gives dimensions exact values in place of their defaults."""
     validation.count("samples", samples, validation.MAX_ACCURACY_SAMPLES, minimum=10)
     validation.seed(seed)
     scene = with_values(as_scene(scene), set)
-    point = next((n for n, p in scene.points.items() if isinstance(p, Dyad)), None)
-    if point is None:
-        raise UsageError("scene", scene.name, "has no dyad to evaluate")
+    if of is None:
+        of = next((n for n, p in scene.points.items() if isinstance(p, Dyad)), None) or next(iter(scene.outputs), None)
+    if of is None:
+        raise UsageError("scene", scene.name, "has no dyad and no output to evaluate; name one with --of")
     rng = np.random.default_rng(seed)
-    subject = _Subject(scene, point)
+    subject = _Subject(scene, of)
     rows = []
     for case, theta in _cases(subject, samples, rng).items():
         rows += _rows(subject, case, theta)
-    far = _Subject(_translated(scene, FAR), point)
+    far = _Subject(_translated(scene, FAR), of)
     rows += _rows(far, "far-1e7", _cases(far, samples, rng)["uniform"])
-    return Accuracy(scene.name, point, rows)
+    return Accuracy(scene.name, of, rows)

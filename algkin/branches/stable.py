@@ -75,8 +75,17 @@ def stable_quadratic(a2, a1, a0):
     if disc < 0:
         middle, rise = float(-a1 / (2 * a2)), float(-disc / (4 * a2**2))
         return lambda t: float(a2) * ((t - middle) ** 2 + rise)
-    r1, r2 = (float(sympy.N((-a1 + sign * sympy.sqrt(disc)) / (2 * a2), 30)) for sign in (1, -1))
-    return lambda t: float(a2) * ((t - r1) * (t - r2))
+    (h1, l1), (h2, l2) = (_split((-a1 + sign * sympy.sqrt(disc)) / (2 * a2)) for sign in (1, -1))
+    # t - r as (t - high) - low: t - high is exact near the root (Sterbenz), so the root's own
+    # rounding no longer limits the distance to a toggle
+    return lambda t: float(a2) * (((t - h1) - l1) * ((t - h2) - l2))
+
+
+def _split(value):
+    """An exact real as two floats, ``high + low``, good to about 106 bits."""
+    precise = sympy.N(value, 40)
+    high = float(precise)
+    return high, float(sympy.N(precise - sympy.Float(high, 40), 20))
 
 
 class _Dyad:

@@ -110,7 +110,7 @@ def _cmd_accuracy(args):
     if args.samples < 10:
         raise UsageError("--samples", args.samples, "needs at least 10 samples per case")
     out = _figure_path("--plot", args.plot) if args.plot else None
-    result = accuracy(_scene_of(args), args.samples, args.seed)
+    result = accuracy(_scene_of(args), args.samples, args.seed, of=args.of)
     text = _render(args, result.to_json(), _report_accuracy)
     if out is None:
         return text, 0

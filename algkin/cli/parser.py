@@ -139,6 +139,8 @@ def build_parser():
     _scene(accuracy)
     accuracy.add_argument("--samples", type=int, default=2000, help="samples per case")
     accuracy.add_argument("--seed", type=int, default=0, help="random seed of the samples")
+    accuracy.add_argument("--of", help="the output measured: a point, an output's name, dist(A, B), B.x "
+                                       "(default: the first dyad point, else the first output)")
     accuracy.add_argument("--plot", metavar="FILE",
                           help="also draw time against error (log-log) to this .png/.svg/.pdf")
     _json(accuracy)

@@ -81,7 +81,7 @@ def _report_accuracy(d):
              f"{'condition':>9} {'err/(k eps)':>11}"]
     lines += [f"  {r['strategy']:12} {r['case']:13} {r['samples']:7} {r['ns_per_sample']:10.1f} "
               f"{r['max_rel_error']:11.2e} {r['condition']:9.2e} {r['error_over_kappa_eps']:11.2e}"
-              for r in d["rows"]]
+              + (f"\n    note: {r['note']}" if r.get("note") else "") for r in d["rows"]]
     return "\n".join(lines)
 
 
