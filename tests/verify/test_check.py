@@ -178,3 +178,11 @@ def test_extraneous_factor_in_a_derived_eliminant_fails():
     report = _verify(compiled, branches, 4, 1, {"B_x": sympy.Mul(*factors)}, {"B_x": factors})
     assert not report.passed
     assert any(f.startswith(f"factor {c - 2} of B_x vanishes on none") for f in report.failures)
+
+
+def test_curve_and_derive_check_their_kept_factors():
+    curve = algkin.curve("chebyshev-lambda", "P", samples=2).verification
+    derived = algkin.derive("chebyshev-lambda", ["B"], samples=2, certify=False).verification
+    assert [len(v) for v in curve.smallest_factor_residual.values()] == [1]
+    assert set(derived.smallest_factor_residual) == {"B_x", "B_y"}
+    assert curve.passed and derived.passed
