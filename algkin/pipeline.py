@@ -162,8 +162,9 @@ def _witness(compiled, branch, spread, k):
     return Witness(values, {n: flint.fmpq(v.numerator, v.denominator) for n, v in exact.items()})
 
 
-def _verify(compiled, branches, samples, seed, polynomials):
-    """Independent check, with symbolic parameters at their defaults."""
+def _verify(compiled, branches, samples, seed, polynomials, factors=None):
+    """Independent check, with symbolic parameters at their defaults; ``factors`` (name ->
+    the kept factors of ``polynomials[name]``) lets it catch a leftover extraneous factor."""
     if not samples:
         return Verification.skipped()
     system = compiled.system
@@ -183,6 +184,7 @@ def _verify(compiled, branches, samples, seed, polynomials):
         samples=samples,
         seed=seed,
         polynomials={n: p.xreplace(defaults) for n, p in polynomials.items()},
+        factors={n: [f.xreplace(defaults) for f in fs] for n, fs in (factors or {}).items()},
     )
 
 
@@ -248,7 +250,8 @@ def _derive(scene, values, outputs, params, start, method, backend, samples, see
     mark = time.perf_counter()
     budget.note(f"verifying the branches of {compiled.scene.name}")
     verification = _verify(compiled, branches, samples, seed,
-                           {u: e.polynomial for u, e in eliminations.items()})
+                           {u: e.polynomial for u, e in eliminations.items()},
+                           {u: e.factors for u, e in eliminations.items()})
     timings["verify"] = time.perf_counter() - mark
     mark = time.perf_counter()
     budget.note(f"certifying the branch labels of {compiled.scene.name}")
@@ -337,7 +340,8 @@ def _curve(scene, values, point, params, start, method, backend, samples, seed, 
     figures = _curve_figures(result, variables)
     mark = time.perf_counter()
     budget.note(f"verifying the curve of {point} in {compiled.scene.name}")
-    verification = _verify(compiled, branches, samples, seed, {"curve": result.polynomial})
+    verification = _verify(compiled, branches, samples, seed, {"curve": result.polynomial},
+                           {"curve": result.factors})
     timings["verify"] = time.perf_counter() - mark
     timings["total"] = time.perf_counter() - start
     return CurveResult(compiled, point, variables, result, figures[0], figures[1],

@@ -12,6 +12,7 @@ import mpmath
 import numpy as np
 
 from ..evaluate import MPMATH, evaluate
+from .minimal import FactorCheck, relative_residual, structure_failures
 from .solve import Blocks, solve_all
 
 __all__ = ["Verification", "verify_branches", "WORKING_DIGITS"]
@@ -41,6 +42,7 @@ class Verification:
     failures: list = field(default_factory=list)
     evaluated: int = 0  # numeric solutions the polynomials were evaluated at
     status: str = "failed"
+    smallest_factor_residual: dict = field(default_factory=dict)  # per polynomial, per kept factor
 
     @classmethod
     def skipped(cls):
@@ -57,6 +59,7 @@ class Verification:
             "evaluated": self.evaluated,
             "near_degenerate": self.near_degenerate,
             "max_polynomial_residual": self.max_polynomial_residual,
+            "smallest_factor_residual": self.smallest_factor_residual,
             "failures": self.failures[:10],
             "method": f"Newton multistart on the original system, {WORKING_DIGITS} digits",
         }
@@ -72,29 +75,23 @@ def _label(indicators, solution, scale):
     return labels
 
 
-def _relative_residual(poly_terms, solution):
-    total, magnitude = mpmath.mpf(0), mpmath.mpf(0)
-    for term in poly_terms:
-        value = evaluate(term, solution, MPMATH)
-        total += value
-        magnitude += abs(value)
-    return abs(total) / magnitude if magnitude else abs(total)
-
-
 def verify_branches(system, indicators, branches, inputs, parameters, samples=50, seed=0,
-                    polynomials=None):
+                    polynomials=None, factors=None):
     """Check ``branches`` (list of ``(labels, values, discriminants)``) on ``samples`` inputs
     where something could be compared.
 
     ``inputs`` maps an input name to its range in radians; ``parameters`` gives a value
     to each symbolic parameter; ``polynomials`` (name -> expression) must vanish on every
-    numeric solution.
+    numeric solution and be squarefree. ``factors`` (name -> the polynomial's kept factors)
+    must multiply to it, and each must vanish by itself on some numeric solution: otherwise
+    it is extraneous (see ``minimal``).
     """
     rng = np.random.default_rng(seed)
     blocks = Blocks(system)
     report = Verification(0, 0.0, False)
     polynomial_terms = {n: list(p.expand().as_ordered_terms()) for n, p in (polynomials or {}).items()}
     worst = {n: mpmath.mpf(0) for n in polynomial_terms}
+    kept = FactorCheck(factors)
     useful = drawn = 0
     with mpmath.workdps(WORKING_DIGITS):
         # An input where the mechanism does not assemble compares nothing. The first
@@ -108,11 +105,13 @@ def verify_branches(system, indicators, branches, inputs, parameters, samples=50
             if drawn > samples and not _any_real(branches, values):
                 continue
             before = (report.compared, report.evaluated)
-            _sample(report, blocks, indicators, branches, values, rng, polynomial_terms, worst)
+            _sample(report, blocks, indicators, branches, values, rng, polynomial_terms, worst, kept)
             useful += (report.compared, report.evaluated) != before
     tolerance = 10.0 ** (-TOLERANCE_DIGITS)
     report.max_polynomial_residual = {n: float(v) for n, v in worst.items()}
     _require_comparisons(report, bool(branches), bool(polynomial_terms))
+    report.smallest_factor_residual = kept.to_json()
+    report.failures += kept.failures(tolerance, report.evaluated) + structure_failures(polynomials or {}, factors)
     report.passed = (not report.failures and report.max_abs_error <= tolerance * 1e3
                      and all(v <= tolerance for v in report.max_polynomial_residual.values()))
     report.status = "passed" if report.passed else "failed"
@@ -135,14 +134,15 @@ def _any_real(branches, values):
                for _, _, discriminants in branches)
 
 
-def _sample(report, blocks, indicators, branches, values, rng, polynomial_terms, worst):
+def _sample(report, blocks, indicators, branches, values, rng, polynomial_terms, worst, kept):
     """Solve the system at one input and compare what it gives."""
     report.samples += 1
     scale = 1 + max(abs(v) for v in values.values())
     solutions = solve_all(blocks, values, rng)
     for solution in solutions:
         for name, terms in polynomial_terms.items():
-            worst[name] = max(worst[name], _relative_residual(terms, solution))
+            worst[name] = max(worst[name], relative_residual(terms, solution))
+        kept.see(solution)
     report.evaluated += len(solutions) if polynomial_terms else 0
     _compare(report, indicators, branches, values, solutions, scale)
 

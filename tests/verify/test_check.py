@@ -8,7 +8,7 @@ import sympy
 import algkin
 from algkin.branches import closed_forms
 from algkin.errors import UsageError
-from algkin.pipeline import _verify
+from algkin.pipeline import _verify, compile_and_branch
 from algkin.scene import compile_scene, load_scene, load_scene_text
 
 
@@ -118,3 +118,71 @@ def test_wrong_sign_in_a_closed_form_is_caught():
 
 
 LAMBDA_TEXT = (files("algkin.catalog") / "chebyshev-lambda.toml").read_text(encoding="utf-8")
+
+
+# Minimality: vanishing on the true configurations is not enough, a product with a leftover
+# extraneous factor vanishes there too (the issue "Accuracy and agreement claims an outsider
+# would accept"). Each kept factor must vanish by itself, and the curve must be squarefree.
+
+@pytest.fixture(scope="module")
+def lambda_curve():
+    """The coupler curve of P with its kept factors, and the branches it is checked against."""
+    result = algkin.curve("chebyshev-lambda", "P", samples=0)
+    compiled, branches, _, _ = compile_and_branch(load_scene("chebyshev-lambda"), ["P"], ())
+    return compiled, branches, result.elimination.factors
+
+
+def curve_check(lambda_curve, factors):
+    compiled, branches, _ = lambda_curve
+    return _verify(compiled, branches, 4, 1, {"curve": sympy.Mul(*factors)}, {"curve": factors})
+
+
+def test_true_curve_is_minimal(lambda_curve):
+    report = curve_check(lambda_curve, lambda_curve[2])
+    assert report.passed, report.failures
+    assert report.smallest_factor_residual["curve"][0] < 1e-40
+
+
+@pytest.mark.parametrize("extra", ["P_x**2 + P_y**2 + 1", "P_x - 100"])
+def test_leftover_extraneous_factor_fails(lambda_curve, extra):
+    factor = sympy.sympify(extra, locals={n: sympy.Symbol(n, real=True) for n in ("P_x", "P_y")})
+    report = curve_check(lambda_curve, lambda_curve[2] + [factor])
+    # The product still vanishes on every true position: the old check passed it.
+    assert report.max_polynomial_residual["curve"] < 1e-40
+    assert not report.passed
+    assert len(report.failures) == 1, report.failures
+    assert report.failures[0].startswith(f"factor {factor} of curve vanishes on none")
+
+
+def test_squared_factor_fails(lambda_curve):
+    true, = lambda_curve[2]
+    report = curve_check(lambda_curve, [true, true])
+    assert report.max_polynomial_residual["curve"] < 1e-40
+    assert not report.passed
+    assert report.failures == [f"curve is not squarefree: ({sympy.expand(true)})**2 divides it"]
+
+
+def test_factors_must_multiply_to_the_polynomial(lambda_curve):
+    compiled, branches, (true,) = lambda_curve
+    x = sympy.Symbol("P_x", real=True)
+    report = _verify(compiled, branches, 4, 1, {"curve": true * (x - 100)}, {"curve": [true]})
+    assert not report.passed
+    assert any("do not multiply" in f for f in report.failures)
+
+
+def test_extraneous_factor_in_a_derived_eliminant_fails():
+    compiled, branches = lambda_setup()
+    derived = algkin.derive("chebyshev-lambda", ["B"], samples=0, certify=False).eliminations["B_x"]
+    c = sympy.Symbol(next(iter(compiled.system.inputs.values()))[0], real=True)
+    factors = derived.factors + [c - 2]  # the input's cosine is never 2
+    report = _verify(compiled, branches, 4, 1, {"B_x": sympy.Mul(*factors)}, {"B_x": factors})
+    assert not report.passed
+    assert any(f.startswith(f"factor {c - 2} of B_x vanishes on none") for f in report.failures)
+
+
+def test_curve_and_derive_check_their_kept_factors():
+    curve = algkin.curve("chebyshev-lambda", "P", samples=2).verification
+    derived = algkin.derive("chebyshev-lambda", ["B"], samples=2, certify=False).verification
+    assert [len(v) for v in curve.smallest_factor_residual.values()] == [1]
+    assert set(derived.smallest_factor_residual) == {"B_x", "B_y"}
+    assert curve.passed and derived.passed
