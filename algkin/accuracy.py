@@ -53,6 +53,7 @@ REFERENCE = f"certified root of the original equations (Krawczyk in arb at {BITS
 TOGGLE_OFFSETS = (1e-6, 1e-10, 1e-14)
 NEAR_FOLD = 1e-2  # a discriminant factor's smallest value, relative to its largest
 FAR = 10**7
+ROUNDING_FLOOR = 4  # err/(kappa eps) that a handful of correctly rounded operations reach
 
 
 @dataclass
@@ -224,9 +225,13 @@ def _explain(raw, stabilised):
     if stabilised["error_over_kappa_eps"] <= 1:
         stabilised["note"] = ("within kappa*eps, what the input's own rounding allows: it rounds "
                               "tan(theta/2), the raw form cos and sin, each of them an eps of theta")
-    else:
+    elif stabilised["error_over_kappa_eps"] <= ROUNDING_FLOOR:
+        stabilised["note"] = (f"both at the rounding floor (within {ROUNDING_FLOOR} kappa*eps): the difference "
+                              f"is the last bits of a few roundings ({stabilised['max_rel_error']:.1e} against "
+                              f"{raw['max_rel_error']:.1e})")
+    else:  # not explained: a finding the row must show
         stabilised["note"] = (f"less accurate than the raw closed form ({stabilised['max_rel_error']:.1e} "
-                              f"against {raw['max_rel_error']:.1e})")
+                              f"against {raw['max_rel_error']:.1e}), beyond the rounding floor")
 
 
 def _cases(subject, samples, rng):
