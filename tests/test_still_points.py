@@ -18,6 +18,7 @@ D = { fixed = [2, 0] }
 F = { frame = ["O", "D"], at = ["1/2", 1] }
 A = { crank = "O", length = 1, input = "t" }
 [outputs]
+F = "F"
 A = "A"
 """
 

@@ -21,6 +21,7 @@ from algkin.draw import animate, mechanism_figure, modes_figure  # noqa: E402
 from algkin.motion import Motion  # noqa: E402
 from algkin.scene import load_scene  # noqa: E402
 
+from ..test_still_points import STILL  # noqa: E402
 from .hand import CHEBYSHEV, fourbar  # noqa: E402
 
 CATALOG = pathlib.Path(__file__).parents[2] / "algkin" / "catalog"
@@ -252,21 +253,6 @@ def test_a_slider_curve_without_one_coordinate_is_drawn_as_its_line():
     vertices = np.concatenate([path.vertices for path in contour.get_paths()])
     assert np.ptp(vertices[:, 0]) > 0.8 * axes.dataLim.width  # across the drawing
     assert np.max(np.abs(vertices[:, 1] - 0.5)) < 1e-9
-
-
-STILL = """
-name = "still"
-[inputs]
-t = { range = [0, 360], unit = "deg" }
-[points]
-O = { fixed = [0, 0] }
-D = { fixed = [2, 0] }
-F = { frame = ["O", "D"], at = ["1/2", 1] }
-A = { crank = "O", length = 1, input = "t" }
-[outputs]
-F = "F"
-A = "A"
-"""
 
 
 def test_a_point_that_does_not_move_is_not_traced(tmp_path):
