@@ -224,7 +224,7 @@ def closed_form(problem, stationary, defaults, lo, hi, largest=False):
     def extremum_at(values):
         """The certified extremum at ``values`` and its description; ``None`` where the output
         is real nowhere on the range (the mechanism does not assemble at those dimensions)."""
-        points = points_at(problem, stationary, values, lo, hi)
+        points = points_at(problem, stationary, values, lo, hi, meeting)
         if not any(p.value == p.value for p in points):
             return None
         best = extreme(points, largest)

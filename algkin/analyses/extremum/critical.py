@@ -102,15 +102,16 @@ def meeting_factors(problem):
         return []  # the discriminant is a constant: the values never meet
 
 
-def critical_points(problem, factors, lo, hi):
-    """Stationary points of ``problem`` (fixed dimensions) in ``[lo, hi]`` degrees, then the two ends.
+def critical_points(problem, factors, lo, hi, meeting=None):
+    """Stationary points of ``problem`` (fixed dimensions) in ``[lo, hi]`` degrees, its dead
+    centres, then the two ends.
 
-    ``factors`` are ``stationary_factors`` with the parameters fixed as in ``problem``;
-    they are recomputed if fixing the parameters made one vanish identically.
+    ``factors`` are ``stationary_factors`` and ``meeting`` (computed here if not given)
+    ``meeting_factors`` with the parameters fixed as in ``problem``; either is recomputed
+    if fixing the parameters made one of its factors vanish identically.
     """
-    polys = list(factors)
-    if any(p == 0 for p in polys):
-        polys = stationary_factors(problem)
+    polys = _fixed_or_anew(factors, stationary_factors, problem)
+    meeting = _fixed_or_anew(meeting, meeting_factors, problem)
     found = []
     with flint.ctx.workprec(ROOT_BITS), mpmath.workdps(DIGITS):
         lo, hi = _mp(lo), _mp(hi)
@@ -124,12 +125,20 @@ def critical_points(problem, factors, lo, hi):
                 if lo <= degrees <= hi and _is_stationary(problem, degrees) and not _seen(found, degrees):
                     found.append(CriticalPoint(degrees, problem.value(degrees), _kind(problem, degrees),
                                                ball + turn))
-        found += _dead_centres(problem, lo, hi, found)
+        found += _dead_centres(problem, meeting, lo, hi, found)
         ends = [CriticalPoint(mpmath.mpf(x), problem.value(mpmath.mpf(x)), "endpoint") for x in (lo, hi)]
     return sorted(found, key=lambda p: p.input_deg) + ends
 
 
-def _dead_centres(problem, lo, hi, found):
+def _fixed_or_anew(factors, compute, problem):
+    """``factors`` with the parameters fixed, or ``compute(problem)`` where fixing them made
+    one vanish identically (or none were given)."""
+    if factors is None or any(f == 0 for f in factors):
+        return compute(problem)
+    return list(factors)
+
+
+def _dead_centres(problem, meeting, lo, hi, found):
     """Where the branch stops being real, inside the range: the ends of its real intervals.
 
     There ``du/dtheta`` is infinite, not zero, so no stationary condition holds, yet the
@@ -138,7 +147,7 @@ def _dead_centres(problem, lo, hi, found):
     where the branch is real on one side only; at the others two branches merely share a value.
     """
     points = []
-    for ball in (tangent_to_degrees(r) for f in meeting_factors(problem) if f.has(problem.t)
+    for ball in (tangent_to_degrees(r) for f in meeting if f.has(problem.t)
                  for r in real_roots(f, problem.t)):
         middle = mpmath.mpf(ball.mid().str(DIGITS, radius=False))
         for degrees in (middle + turn for turn in (-360, 0, 360)):
@@ -167,11 +176,14 @@ def _value_at_meeting(problem, degrees):
     return result
 
 
-def points_at(problem, stationary, values, lo, hi):
-    """``critical_points`` with the dimensions fixed at ``values`` (symbol -> rational)."""
+def points_at(problem, stationary, values, lo, hi, meeting=None):
+    """``critical_points`` with the dimensions fixed at ``values`` (symbol -> rational); the
+    ``stationary`` and ``meeting`` factors, found once with the dimensions symbolic, are
+    specialised rather than eliminated again."""
     factors = [sympy.expand(f.xreplace(values)) for f in stationary]
+    fixed_meeting = None if meeting is None else [sympy.expand(f.xreplace(values)) for f in meeting]
     with mpmath.workdps(DIGITS):
-        return critical_points(problem.at(values), factors, lo, hi)
+        return critical_points(problem.at(values), factors, lo, hi, fixed_meeting)
 
 
 def _mp(number):
