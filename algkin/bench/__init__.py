@@ -74,7 +74,6 @@ def bench(problems=None, methods=None, backends=None, budget=60.0, peers=True, p
 
 def _problem_rows(problem, methods, backends, budget, peers, progress, rounds):
     task = problem.task
-    keep = list(task.keep)
     side = [e for e in task.equations if not ({str(v) for v in e.free_symbols} & set(task.eliminate))]
     results = {}
     pairs = sorted({(m, b) for m in methods for b in backends} | {DEFAULT})

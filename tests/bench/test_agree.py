@@ -9,7 +9,6 @@ from algkin.bench import agree, specialise
 from algkin.bench.agree import Agreement, agreement, from_sympy
 from algkin.bench.problems import build
 from algkin.cli import main
-from algkin.eliminate import eliminate
 
 CTX = flint.fmpq_mpoly_ctx.get(("x", "y", "b"), "lex")
 X, Y, B = CTX.gens()

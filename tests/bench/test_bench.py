@@ -6,7 +6,6 @@ import sys
 import time
 
 import pytest
-import sympy
 
 from algkin.bench import bench
 from algkin.bench.measure import measure
