@@ -228,8 +228,9 @@ def _check_bits(scene, name, construction, bits):
     """Refuse, before substituting, a coordinate or length whose value would be huge."""
     for value in vars(construction).values():
         for item in value if isinstance(value, tuple) else (value,):
-            if isinstance(item, sympy.Basic) and bits_bound(item, bits) > MAX_VALUE_BITS:
-                raise SceneError(scene.source, f"points.{name}", f"{item} could reach {bits_bound(item, bits)} "
+            reach = bits_bound(item, bits) if isinstance(item, sympy.Basic) else 0
+            if reach > MAX_VALUE_BITS:
+                raise SceneError(scene.source, f"points.{name}", f"{item} could reach {reach} "
                                  f"bits with the parameters' defaults (at most {MAX_VALUE_BITS})")
 
 

@@ -39,7 +39,7 @@ class ClosedForm:
 
     value: sympy.Expr
     input: sympy.Expr  # degrees; None when the root has no expression in radicals
-    at: str  # 'stationary' or 'endpoint'
+    at: str  # 'stationary', 'dead centre' or 'endpoint'
     input_polynomial: sympy.Expr  # in t = tan(input/2); None at an endpoint
     valid_when: list  # strings in sympy syntax
     regions: list  # one parameter: [{from, to, at, input, value}], else []
