@@ -316,8 +316,9 @@ def parse_inputs(motion, texts):
     return inputs
 
 
-def parse_ranges(texts):
-    """``--range-of`` values: ``NAME=LO:HI`` -> {name: (lo, hi)}, finite numbers with lo below hi.
+def parse_ranges(texts, option="--range-of"):
+    """``NAME=LO:HI`` values (``--range-of``, ``--against``) -> {name: (lo, hi)}, finite numbers
+    with lo below hi.
 
     >>> parse_ranges(["a=0.5:2", "l=1:3"])
     {'a': (0.5, 2.0), 'l': (1.0, 3.0)}
@@ -330,8 +331,8 @@ def parse_ranges(texts):
         except ValueError:
             lo = hi = float("nan")
         # nan fails lo < hi, so only infinities need their own check.
-        if not (name and lo < hi and np.isfinite([lo, hi]).all()):
-            raise UsageError("--range-of", text, "expected NAME=LO:HI, finite numbers with LO below HI, e.g. a=0.5:2")
+        if not (name.isidentifier() and lo < hi and np.isfinite([lo, hi]).all()):
+            raise UsageError(option, text, "expected NAME=LO:HI, finite numbers with LO below HI, e.g. a=0.5:2")
         ranges[name] = (lo, hi)
     return ranges
 

@@ -171,13 +171,10 @@ def _written(args, out):
 
 
 def _against(text):
-    name, _, span = text.partition("=")
-    try:
-        lo, hi = _range(span)
-    except UsageError:
-        raise UsageError("--against", text, "expected p=lo:hi, e.g. b=-400:400") from None
-    if not name.isidentifier():
-        raise UsageError("--against", text, "expected p=lo:hi, e.g. b=-400:400")
+    """``--against p=lo:hi``: the dimension and its span."""
+    from ..draw import parse_ranges
+
+    ((name, (lo, hi)),) = parse_ranges([text], "--against").items()
     return name, lo, hi
 
 
