@@ -5,6 +5,7 @@
 (6, 3, True, True)
 """
 
+import collections
 import functools
 import math
 import time
@@ -30,6 +31,9 @@ __all__ = ["derive", "curve", "Derivation", "CurveResult", "witnesses", "certify
 
 WITNESS_BITS = 256
 WITNESSES_PER_BRANCH = 3
+PREPARED_SCENES = 32  # compiled scenes (with their branches) kept for the next call
+_PREPARED = collections.OrderedDict()
+_CHECKED = collections.OrderedDict()
 
 
 @dataclass
@@ -167,25 +171,31 @@ def _verify(compiled, branches, samples, seed, polynomials, factors=None):
     the kept factors of ``polynomials[name]``) lets it catch a leftover extraneous factor."""
     if not samples:
         return Verification.skipped()
-    system = compiled.system
-    defaults = {symbol(n): compiled.parameter_values[n] for n in system.parameters}
-    fixed = type(system)(system.unknowns, (), system.inputs,
-                         tuple(sympy.expand(e.xreplace(defaults)) for e in system.equations),
-                         system.nonnegative)
-    inputs = {n: (float(i.to_radians(i.lo)), float(i.to_radians(i.hi)))
-              for n, i in compiled.scene.inputs.items() if n in system.inputs}
-    return verify_branches(
-        fixed,
-        [(i.point, i.expr.xreplace(defaults), i.positive, i.negative) for i in compiled.indicators],
-        [(b.labels, {u: v.xreplace(defaults) for u, v in b.values.items()},
-          {p: d.xreplace(defaults) for p, d in b.discriminants.items()}) for b in branches],
-        inputs,
-        {},
-        samples=samples,
-        seed=seed,
-        polynomials={n: p.xreplace(defaults) for n, p in polynomials.items()},
-        factors={n: [f.xreplace(defaults) for f in fs] for n, fs in (factors or {}).items()},
-    )
+    fixed, indicators, fixed_branches, inputs = _checked(compiled, branches)
+    return verify_branches(fixed, indicators, fixed_branches, inputs, dict(compiled.parameter_values),
+                           samples=samples, seed=seed, polynomials=polynomials, factors=factors)
+
+
+def _checked(compiled, branches):
+    """What the check needs of a compiled scene, with the dimensions at their defaults (once per scene)."""
+    key = (id(compiled), id(branches))
+    if key not in _CHECKED:
+        system = compiled.system
+        defaults = {symbol(n): compiled.parameter_values[n] for n in system.parameters}
+        fixed = type(system)(system.unknowns, (), system.inputs,
+                             tuple(sympy.expand(e.xreplace(defaults)) for e in system.equations),
+                             system.nonnegative)
+        inputs = {n: (float(i.to_radians(i.lo)), float(i.to_radians(i.hi)))
+                  for n, i in compiled.scene.inputs.items() if n in system.inputs}
+        _CHECKED[key] = (
+            fixed,
+            [(i.point, i.expr.xreplace(defaults), i.positive, i.negative) for i in compiled.indicators],
+            [(b.labels, {u: v.xreplace(defaults) for u, v in b.values.items()},
+              {p: d.xreplace(defaults) for p, d in b.discriminants.items()}) for b in branches],
+            inputs, compiled, branches)  # the last two keep the ids above from being reused
+        while len(_CHECKED) > PREPARED_SCENES:
+            _CHECKED.pop(next(iter(_CHECKED)))
+    return _CHECKED[key][:4]
 
 
 def certify_labels(compiled, branches):
@@ -201,25 +211,47 @@ def certify_labels(compiled, branches):
 
 
 def compile_and_branch(scene, outputs, params):
-    """The stages derive and curve share: compile, closed forms, assembly check, witnesses."""
-    compiled, timings = _compile(scene, outputs, params)
-    branches, groups = _branch(compiled, timings)
-    return compiled, branches, groups, timings
+    """The stages derive and curve share: compile, closed forms, assembly check, witnesses.
+
+    Built once per scene, outputs and parameters, and reused: a second derivation of the same
+    scene in one process starts at the elimination."""
+    timings = {}
+    prepared = _prepared(scene, outputs, params, timings)
+    return prepared.compiled, *prepared.branch(timings), timings
 
 
-def _compile(scene, outputs, params):
-    start = time.perf_counter()
-    compiled = compile_scene(scene, outputs, params)
-    return compiled, {"compile": time.perf_counter() - start}
+class _Prepared:
+    """A compiled scene and what is built from it once: its branches and their witnesses."""
+
+    def __init__(self, compiled):
+        self.compiled = compiled
+        self.built = None
+        self.places = {}  # point -> where it stays on each branch (None where it moves)
+
+    def branch(self, timings):
+        """``(branches, witnesses)``, found on the first call."""
+        if self.built is None:
+            mark = time.perf_counter()
+            branches = closed_forms(self.compiled)
+            check_assembly(self.compiled, branches)
+            self.built = branches, witnesses(self.compiled, branches)
+            timings["branches"] = time.perf_counter() - mark
+        timings.setdefault("branches", 0.0)
+        return self.built
 
 
-def _branch(compiled, timings):
+def _prepared(scene, outputs, params, timings):
+    """The compiled scene, from the cache when the same scene was compiled before."""
+    key = (repr(scene), tuple(outputs or ()), tuple(params))
     mark = time.perf_counter()
-    branches = closed_forms(compiled)
-    check_assembly(compiled, branches)
-    groups = witnesses(compiled, branches)
-    timings["branches"] = time.perf_counter() - mark
-    return branches, groups
+    if key in _PREPARED:
+        _PREPARED.move_to_end(key)
+    else:
+        _PREPARED[key] = _Prepared(compile_scene(scene, outputs, params))
+        while len(_PREPARED) > PREPARED_SCENES:
+            _PREPARED.popitem(last=False)
+    timings["compile"] = time.perf_counter() - mark
+    return _PREPARED[key]
 
 
 def derive(scene, outputs=None, method=DEFAULT_METHOD, backend="flint", params=(), samples=40, seed=0,
@@ -240,18 +272,16 @@ def derive(scene, outputs=None, method=DEFAULT_METHOD, backend="flint", params=(
 
 def _derive(scene, values, outputs, params, start, method, backend, samples, seed, certify, budget):
     scene = _load(scene, values, params, budget)
-    budget.note(f"compiling {scene.name}")
-    compiled, timings = _compile(scene, outputs, params)
-    budget.note(f"finding the branches of {compiled.scene.name}")
-    branches, groups = _branch(compiled, timings)
+    budget.note(f"compiling {scene.name} and finding its branches")
+    compiled, branches, groups, timings = compile_and_branch(scene, outputs, params)
     mark = time.perf_counter()
     eliminations = {u: task.run(method, backend, budget) for u, task in eliminant_tasks(compiled, groups).items()}
     timings["eliminate"] = time.perf_counter() - mark
     mark = time.perf_counter()
     budget.note(f"verifying the branches of {compiled.scene.name}")
     verification = _verify(compiled, branches, samples, seed,
-                           {u: e.polynomial for u, e in eliminations.items()},
-                           {u: e.factors for u, e in eliminations.items()})
+                           {u: e.exact[0] for u, e in eliminations.items()},
+                           {u: e.exact[1] for u, e in eliminations.items()})
     timings["verify"] = time.perf_counter() - mark
     mark = time.perf_counter()
     budget.note(f"certifying the branch labels of {compiled.scene.name}")
@@ -297,9 +327,13 @@ def still_at(compiled, branch, point):
     return None if any(v.free_symbols & angles for v in xy) else xy
 
 
-def _refuse_still(compiled, branches, point):
-    """A usage error naming where ``point`` stays, if it stays put on every branch."""
-    places = [still_at(compiled, b, point) for b in branches]
+def _refuse_still(prepared, branches, point):
+    """A usage error naming where ``point`` stays, if it stays put on every branch (the
+    substitution is costly on big closed forms: its answer is kept with the scene)."""
+    compiled = prepared.compiled
+    if point not in prepared.places:
+        prepared.places[point] = [still_at(compiled, b, point) for b in branches]
+    places = prepared.places[point]
     if all(p is not None for p in places):
         x, y = places[next(k for k, b in enumerate(branches) if b.selected)]
         raise UsageError("--point", point, f"is fixed at ({x}, {y}): its trajectory is a point, not a curve")
@@ -324,14 +358,16 @@ def _curve(scene, values, point, params, start, method, backend, samples, seed, 
     if not isinstance(point, str) or point not in scene.points:
         raise UsageError("--point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
     budget.note(f"compiling {scene.name}")
-    compiled, timings = _compile(scene, [point], params)
+    timings = {}
+    prepared = _prepared(scene, [point], params, timings)
+    compiled = prepared.compiled
     if len(compiled.system.inputs) > 1:
         raise UsageError("--point", point, f"moves with {len(compiled.system.inputs)} inputs "
                          f"({', '.join(compiled.system.inputs)}) in {scene.name}: its trajectory is a region, "
                          "not a curve")
     budget.note(f"finding the branches of {compiled.scene.name}")
-    branches, groups = _branch(compiled, timings)
-    _refuse_still(compiled, branches, point)
+    branches, groups = prepared.branch(timings)
+    _refuse_still(prepared, branches, point)
     mark = time.perf_counter()
     task = curve_task(compiled, groups, point)
     result = task.run(method, backend, budget)
@@ -340,9 +376,9 @@ def _curve(scene, values, point, params, start, method, backend, samples, seed, 
     figures = _curve_figures(result, variables)
     mark = time.perf_counter()
     budget.note(f"verifying the curve of {point} in {compiled.scene.name}")
-    verification = _verify(compiled, branches, samples, seed, {"curve": result.polynomial},
-                           {"curve": result.factors})
+    verification = _verify(compiled, branches, samples, seed, {"curve": result.exact[0]},
+                           {"curve": result.exact[1]})
     timings["verify"] = time.perf_counter() - mark
     timings["total"] = time.perf_counter() - start
     return CurveResult(compiled, point, variables, result, figures[0], figures[1],
-                       len(result.factors) == 1, verification, timings)
+                       len(result.raw_factors) == 1, verification, timings)

@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 
 from ..budget import Budget, current
 from ..errors import ComputationError, UsageError
+from ..system.convert import flint_context, to_flint
 from .backends import BACKENDS
 from .linear import linear_elimination
 from .methods import groebner_basis, prepare, resultant_chain
@@ -78,10 +79,20 @@ class Elimination:
     def dropped(self):
         return [self.engine.to_sympy(self.engine.primitive(f)) for f in self.raw_dropped]
 
+    @functools.cached_property
+    def exact(self):
+        """``(polynomial, kept factors)`` as python-flint ``fmpq_mpoly``: on the flint backend,
+        straight from the elimination, with no sympy on the way (a verification needs no more)."""
+        if self.engine is not None and self.engine.name == "flint":
+            return self.raw, [self.engine.primitive(f) for f in self.raw_factors]
+        ctx = flint_context(sorted({str(v) for e in [self.polynomial, *self.factors] for v in e.free_symbols}) or ["_"])
+        return to_flint(self.polynomial, ctx), [to_flint(f, ctx) for f in self.factors]
+
     def __getstate__(self):
         """Out of a budget's child process an elimination travels as sympy: the backend's
         polynomials do not pickle."""
         state = dict(self.__dict__, polynomial=self.polynomial, factors=self.factors, dropped=self.dropped)
+        state.pop("exact", None)
         return dict(state, engine=None, raw=None, raw_factors=None, raw_dropped=None)
 
 

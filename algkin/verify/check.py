@@ -1,25 +1,36 @@
-"""Closed forms and eliminants checked against independent numeric solutions.
+"""Closed forms and eliminants checked against independent numeric solutions, proved in balls.
 
-For each sampled input the original system is solved numerically (``solve.solve_all``,
-no closed form involved), every solution is labelled by the sign of the branch
-indicators, and each real closed-form branch is compared with the solution of the same
-label. Polynomials (eliminants, curves) are evaluated at every solution.
+For a batch of sampled inputs at once: the original system is solved in floats
+(``solve.solve_floats``, vectorised over samples and Newton starts; no closed form
+involved); every candidate is proved to enclose exactly one root of the original equations
+(``balls.Certifier``, a Krawczyk test in python-flint ``arb``); each root is labelled by
+the signs of the branch indicators on its enclosure, decided or the sample is set aside as
+near a degenerate configuration; each real closed-form branch, evaluated in balls on the
+same inputs, is compared with the root of the same label; and every polynomial (eliminant,
+curve) is evaluated on every root's enclosure. A sample whose real branches lack a root
+of their label is solved again with more starts before the check says so.
 """
 
 from dataclasses import dataclass, field
+from fractions import Fraction
 
-import mpmath
+import flint
 import numpy as np
 
-from ..evaluate import MPMATH, evaluate
-from .minimal import FactorCheck, relative_residual, structure_failures
-from .solve import Blocks, solve_all
+from ..evaluate import ARB, NUMPY
+from ..evaluate.program import compile_program
+from .balls import certifier_of, certify_parameters
+from .minimal import FactorCheck, structure_failures
+from .residual import Polynomial
+from .solve import STARTS, blocks_of, solve_floats
 
-__all__ = ["Verification", "verify_branches", "WORKING_DIGITS"]
+__all__ = ["Verification", "verify_branches", "WORKING_BITS"]
 
-WORKING_DIGITS = 50
-TOLERANCE_DIGITS = 30
+WORKING_BITS = 192
+TOLERANCE = 1e-30  # relative residual a polynomial must reach on every root (the enclosures reach ~1e-50)
+MAX_ERROR = 1e-27  # a closed form's largest distance from the root of its label
 MAX_DRAWS = 50  # inputs drawn per sample asked for, looking for where the mechanism assembles
+RETRY_STARTS = 8 * STARTS
 
 
 @dataclass
@@ -61,18 +72,69 @@ class Verification:
             "max_polynomial_residual": self.max_polynomial_residual,
             "smallest_factor_residual": self.smallest_factor_residual,
             "failures": self.failures[:10],
-            "method": f"Newton multistart on the original system, {WORKING_DIGITS} digits",
+            "method": ("Newton multistart on the original system (floats, all samples at once), "
+                       f"every root proved by a Krawczyk test in arb at {WORKING_BITS} bits"),
         }
 
 
-def _label(indicators, solution, scale):
-    labels = {}
-    for point, expr, positive, negative in indicators:
-        value = evaluate(expr, solution, MPMATH)
-        if abs(value) <= mpmath.mpf(10) ** (-12) * scale**2:
-            return None
-        labels[point] = positive if value > 0 else negative
-    return labels
+class _Plan:
+    """Everything compiled once per check: solver, certifier, indicators, branches, polynomials."""
+
+    def __init__(self, system, indicators, branches, parameters, polynomials, factors):
+        self.system = system
+        self.blocks = blocks_of(system)
+        self.certifiers = [(block, certifier_of(block)) for block in self.blocks.blocks]
+        self.known = [v for v in system.variables if v not in system.unknowns]
+        self.parameters = {n: Fraction(str(v)) for n, v in parameters.items()}
+        # a polynomial may keep the dimensions symbolic: they take their exact values in it
+        dimensions = {n: v for n, v in self.parameters.items() if n not in system.variables}
+        names = list(system.unknowns) + self.known
+        self.labels = [(point, positive, negative) for point, _, positive, negative in indicators]
+        self.indicators = compile_program([expr for _, expr, _, _ in indicators], names, ARB)
+        self.branches = [_Branch(labels, values, discriminants, self.known)
+                         for labels, values, discriminants in branches]
+        self.polynomials = {n: Polynomial(p, names, dimensions) for n, p in (polynomials or {}).items()}
+        self.factors = FactorCheck(factors, lambda f: Polynomial(f, names, dimensions), self.polynomials.values())
+        self.index = {u: k for k, u in enumerate(system.unknowns)}
+
+    def floats(self, angles):
+        """The known variables as float arrays over the samples (``angles``: input -> radians)."""
+        count = len(next(iter(angles.values()), [0]))
+        values = {n: np.full(count, float(v)) for n, v in self.parameters.items()}
+        for name, angle in angles.items():
+            cos_name, sin_name = self.system.inputs[name]
+            values[cos_name], values[sin_name] = np.cos(angle), np.sin(angle)
+        return values
+
+    def balls(self, angles, k):
+        """The known variables of sample ``k`` as balls, in ``self.known`` order."""
+        values = {n: ARB.number(v.numerator, v.denominator) for n, v in self.parameters.items()}
+        for name, angle in angles.items():
+            cos_name, sin_name = self.system.inputs[name]
+            ball = flint.arb(float(angle[k]))
+            values[cos_name], values[sin_name] = ball.cos(), ball.sin()
+        return [values[n] for n in self.known]
+
+    def any_real(self, floats):
+        """Per sample, whether some branch's discriminants are all positive (where to sample)."""
+        real = np.zeros(len(next(iter(floats.values()))), dtype=bool)
+        for branch in self.branches:
+            real |= branch.real_floats(floats, self.known)
+        return real
+
+
+class _Branch:
+    def __init__(self, labels, values, discriminants, known):
+        self.key = tuple(sorted(labels.items()))
+        self.unknowns = list(values)
+        self.values = compile_program(list(values.values()), known, ARB)
+        self.discriminants = compile_program(list(discriminants.values()), known, ARB)
+        self.discriminant_floats = compile_program(list(discriminants.values()), known, NUMPY)
+
+    def real_floats(self, floats, known):
+        count = len(next(iter(floats.values())))
+        values = self.discriminant_floats(*(floats.get(n, np.zeros(count)) for n in known))
+        return np.all([np.broadcast_to(v, (count,)) > 0 for v in values], axis=0) if values else np.ones(count, bool)
 
 
 def verify_branches(system, indicators, branches, inputs, parameters, samples=50, seed=0,
@@ -80,71 +142,220 @@ def verify_branches(system, indicators, branches, inputs, parameters, samples=50
     """Check ``branches`` (list of ``(labels, values, discriminants)``) on ``samples`` inputs
     where something could be compared.
 
-    ``inputs`` maps an input name to its range in radians; ``parameters`` gives a value
-    to each symbolic parameter; ``polynomials`` (name -> expression) must vanish on every
-    numeric solution and be squarefree. ``factors`` (name -> the polynomial's kept factors)
-    must multiply to it, and each must vanish by itself on some numeric solution: otherwise
-    it is extraneous (see ``minimal``).
+    ``indicators`` lists ``(point, expression, positive label, negative label)``; ``inputs``
+    maps an input name to its range in radians; ``parameters`` gives a value to each symbolic
+    parameter; ``polynomials`` (name -> expression) must vanish on every root and be
+    squarefree. ``factors`` (name -> the polynomial's kept factors) must multiply to it, and
+    each must vanish by itself on some root: otherwise it is extraneous (see ``minimal``).
     """
     rng = np.random.default_rng(seed)
-    blocks = Blocks(system)
     report = Verification(0, 0.0, False)
-    polynomial_terms = {n: list(p.expand().as_ordered_terms()) for n, p in (polynomials or {}).items()}
-    worst = {n: mpmath.mpf(0) for n in polynomial_terms}
-    kept = FactorCheck(factors)
     useful = drawn = 0
-    with mpmath.workdps(WORKING_DIGITS):
-        # An input where the mechanism does not assemble compares nothing. The first
-        # ``samples`` inputs are solved wherever they fall (the numeric solution must then
-        # find nothing either); after those, more are drawn, and solved only where some
-        # branch is real, until ``samples`` inputs have compared something (at most twice
-        # as many solved in all).
+    with flint.ctx.workprec(WORKING_BITS):  # the plan's exact dimensions become balls at this precision
+        plan = _Plan(system, indicators, branches, parameters, polynomials, factors)
+        worst = {n: 0.0 for n in plan.polynomials}
+        # An input where the mechanism does not assemble compares nothing. The first ``samples``
+        # inputs are solved wherever they fall (the numeric solution must then find nothing
+        # either); after those, more are drawn, and solved only where some branch is real, until
+        # ``samples`` inputs have compared something (at most twice as many solved in all).
         while useful < samples and drawn < samples * MAX_DRAWS and report.samples < 2 * samples:
-            drawn += 1
-            values = _draw(system, inputs, parameters, rng)
-            if drawn > samples and not _any_real(branches, values):
-                continue
-            before = (report.compared, report.evaluated)
-            _sample(report, blocks, indicators, branches, values, rng, polynomial_terms, worst, kept)
-            useful += (report.compared, report.evaluated) != before
-    tolerance = 10.0 ** (-TOLERANCE_DIGITS)
-    report.max_polynomial_residual = {n: float(v) for n, v in worst.items()}
-    _require_comparisons(report, bool(branches), bool(polynomial_terms))
-    report.smallest_factor_residual = kept.to_json()
-    report.failures += kept.failures(tolerance, report.evaluated) + structure_failures(polynomials or {}, factors)
-    report.passed = (not report.failures and report.max_abs_error <= tolerance * 1e3
-                     and all(v <= tolerance for v in report.max_polynomial_residual.values()))
+            angles, drawn = _batch(plan, inputs, rng, drawn, samples - useful, 2 * samples - report.samples,
+                                   samples * MAX_DRAWS, first=not drawn)
+            if not len(next(iter(angles.values()), [None])):
+                break
+            useful += _check_batch(report, plan, angles, rng, worst)
+    report.max_polynomial_residual = dict(worst)
+    _require_comparisons(report, bool(branches), bool(plan.polynomials))
+    report.smallest_factor_residual = plan.factors.to_json()
+    report.failures += plan.factors.failures(TOLERANCE, report.evaluated)
+    report.failures += structure_failures(polynomials or {}, factors)
+    report.passed = (not report.failures and report.max_abs_error <= MAX_ERROR
+                     and all(v <= TOLERANCE for v in report.max_polynomial_residual.values()))
     report.status = "passed" if report.passed else "failed"
     return report
 
 
-def _draw(system, inputs, parameters, rng):
-    """The known values at one random input: parameters, and each input's cos and sin."""
-    values = {n: mpmath.mpf(v) for n, v in parameters.items()}
-    for name, (lo, hi) in inputs.items():
-        angle = mpmath.mpf(float(rng.uniform(lo, hi)))
-        cos_name, sin_name = system.inputs[name]
-        values[cos_name], values[sin_name] = mpmath.cos(angle), mpmath.sin(angle)
-    return values
+def _batch(plan, inputs, rng, drawn, needed, solvable, most, first):
+    """The next inputs to solve (input -> radians) and the draws counted so far."""
+    if first:
+        return {n: rng.uniform(lo, hi, needed) for n, (lo, hi) in inputs.items()}, needed
+    pool = min(most - drawn, max(8 * needed, 64))
+    angles = {n: rng.uniform(lo, hi, pool) for n, (lo, hi) in inputs.items()}
+    chosen = np.flatnonzero(plan.any_real(plan.floats(angles)))[:min(needed, solvable)]
+    used = int(chosen[-1]) + 1 if len(chosen) == min(needed, solvable) and len(chosen) else pool
+    return {n: a[chosen] for n, a in angles.items()}, drawn + used
 
 
-def _any_real(branches, values):
-    """Whether some branch's discriminants are all positive at ``values`` (where to sample)."""
-    return any(all(evaluate(d, values, MPMATH) > 0 for d in discriminants.values())
-               for _, _, discriminants in branches)
+def _check_batch(report, plan, angles, rng, worst):
+    """Solve, prove and compare every sample of the batch; how many compared something."""
+    count = len(next(iter(angles.values()), [None]))
+    known = [plan.balls(angles, k) for k in range(count)]
+    roots = _certified(plan, angles, known, rng, STARTS, range(count))
+    missing = [k for k in range(count) if _lacks_a_root(plan, roots[k], known[k])]
+    if missing:  # Newton's random starts may miss a root: those samples again, with more starts
+        retried = _certified(plan, {n: a[missing] for n, a in angles.items()}, [known[k] for k in missing],
+                             rng, RETRY_STARTS, range(len(missing)))
+        for k, found in zip(missing, retried):
+            roots[k] = found
+    magnitudes = _magnitudes(plan, angles, roots)
+    useful = 0
+    for k in range(count):
+        before = (report.compared, report.evaluated)
+        _check_sample(report, plan, known[k], roots[k], magnitudes[k], worst)
+        useful += (report.compared, report.evaluated) != before
+    return useful
 
 
-def _sample(report, blocks, indicators, branches, values, rng, polynomial_terms, worst, kept):
-    """Solve the system at one input and compare what it gives."""
+def _certified(plan, angles, known, rng, starts, samples):
+    """Per sample: ``(roots, doubtful)``, the proved roots and whether some candidate could not be proved."""
+    candidates = solve_floats(plan.blocks, plan.floats(angles), rng, starts)
+    proved = {}  # (block, partial solution) -> its unknowns' balls: candidates share their first blocks
+    found = {k: ([], False) for k in samples}
+    for row, k in enumerate(candidates.owner):
+        balls = dict(zip(plan.known, known[k]))
+        for b, (block, certify) in enumerate(plan.certifiers):
+            key = (b, candidates.lineage[b][row])
+            if key not in proved:
+                proved[key] = certify([candidates.values[n][row] for n in block.names],
+                                      [balls[n] for n in certify_parameters(block)], candidates.inverses[b][key[1]])
+            if proved[key] is None:
+                break
+            balls.update(zip(block.names, proved[key]))
+        roots, doubtful = found[k]
+        if proved[key] is None:
+            found[k] = roots, True
+        else:
+            root = [balls[u] for u in plan.system.unknowns]
+            if not any(all(a.overlaps(c) for a, c in zip(root, r)) for r in roots):
+                roots.append(root)
+    return [_nonnegative(plan, *found[k]) for k in samples]
+
+
+def _nonnegative(plan, roots, doubtful):
+    """Roots whose distances are not negative (a distance that might be either way is doubtful)."""
+    kept = []
+    for root in roots:
+        signs = [root[plan.index[n]] for n in plan.system.nonnegative]
+        if all(v >= 0 for v in signs):
+            kept.append(root)
+        elif not any(v < 0 for v in signs):
+            doubtful = True
+    return kept, doubtful
+
+
+def _labels(plan, root, known):
+    """The root's label per point, or ``None`` where an indicator's sign is undecided."""
+    labels = {}
+    for (point, positive, negative), value in zip(plan.labels, plan.indicators(*root, *known)):
+        if value > 0:
+            labels[point] = positive
+        elif value < 0:
+            labels[point] = negative
+        else:
+            return None
+    return tuple(sorted(labels.items()))
+
+
+def _real(branch, known):
+    """``True`` or ``False`` where the branch is decided real or not, ``None`` near its boundary."""
+    values = branch.discriminants(*known)
+    if all(v > 0 for v in values):
+        return True
+    return False if any(v < 0 for v in values) else None
+
+
+def _lacks_a_root(plan, found, known):
+    roots, doubtful = found
+    if doubtful:
+        return False
+    labels = {_labels(plan, root, known) for root in roots}
+    return any(_real(b, known) and b.key not in labels for b in plan.branches)
+
+
+def _magnitudes(plan, angles, roots):
+    """Per sample, per root, ``id(polynomial)`` -> the sum of its terms' absolute values (floats, one pass)."""
+    owners = [k for k, (found, _) in enumerate(roots) for _ in found]
+    if not owners or not plan.polynomials:
+        return [[{} for _ in found] for found, _ in roots]
+    floats = {n: v[owners] for n, v in plan.floats(angles).items()}
+    flat = [root for found, _ in roots for root in found]
+    for u, k in plan.index.items():
+        floats[u] = np.array([float(root[k].mid()) for root in flat])
+    sizes = {}
+    for p in [*plan.polynomials.values(), *(p for pairs in plan.factors.factors.values() for _, p in pairs)]:
+        if id(p) not in sizes:
+            sizes[id(p)] = np.broadcast_to(p.magnitude(floats), (len(flat),))
+    rows, start = [], 0
+    for found, _ in roots:
+        rows.append([{key: float(v[start + j]) for key, v in sizes.items()} for j in range(len(found))])
+        start += len(found)
+    return rows
+
+
+def _check_sample(report, plan, known, found, magnitudes, worst):
+    """Evaluate the polynomials on the sample's roots and compare its branches."""
+    roots, doubtful = found
     report.samples += 1
-    scale = 1 + max(abs(v) for v in values.values())
-    solutions = solve_all(blocks, values, rng)
-    for solution in solutions:
-        for name, terms in polynomial_terms.items():
-            worst[name] = max(worst[name], relative_residual(terms, solution))
-        kept.see(solution)
-    report.evaluated += len(solutions) if polynomial_terms else 0
-    _compare(report, indicators, branches, values, solutions, scale)
+    for root, sizes in zip(roots, magnitudes):
+        values = dict(zip(plan.system.unknowns, root), **dict(zip(plan.known, known)))
+        residual = _residuals(values, sizes)
+        for name, polynomial in plan.polynomials.items():
+            worst[name] = max(worst[name], residual(polynomial))
+        plan.factors.see(residual)
+    report.evaluated += len(roots) if plan.polynomials else 0
+    if doubtful:
+        report.near_degenerate += 1
+        return
+    _compare(report, plan, known, roots)
+
+
+def _residuals(values, sizes):
+    """``polynomial -> |p(K)| / sum |terms|`` at one root, each polynomial evaluated once."""
+    memo = {}
+
+    def residual(polynomial):
+        key = id(polynomial)
+        if key not in memo:
+            upper = float(abs(polynomial.balls(values)).upper().mid())
+            memo[key] = upper / sizes[key] if sizes[key] else upper
+        return memo[key]
+    return residual
+
+
+def _compare(report, plan, known, roots):
+    by_label = {}
+    for root in roots:
+        labels = _labels(plan, root, known)
+        if labels is None:
+            report.near_degenerate += 1
+            return
+        by_label.setdefault(labels, []).append(root)
+    real = []
+    for branch in plan.branches:
+        status = _real(branch, known)
+        if status is None:
+            report.near_degenerate += 1
+            return
+        if status:
+            real.append(branch)
+    for branch in real:
+        matches = by_label.pop(branch.key, [])
+        if len(matches) != 1:
+            report.failures.append(f"branch {dict(branch.key)}: {len(matches)} numeric solutions with its label")
+            continue
+        report.max_abs_error = max(report.max_abs_error, _error(plan, branch, known, matches[0]))
+        report.compared += 1
+    for key in by_label:
+        report.failures.append(f"numeric solution labelled {dict(key)} has no real closed-form branch")
+
+
+def _error(plan, branch, known, root):
+    """The largest distance between the closed form and the root it must equal (an upper bound)."""
+    error = 0.0
+    for unknown, value in zip(branch.unknowns, branch.values(*known)):
+        gap = abs(value - root[plan.index[unknown]])
+        error = max(error, float(gap.upper().mid()) if gap.is_finite() else float("inf"))
+    return error
 
 
 def _require_comparisons(report, branches, polynomials):
@@ -156,31 +367,3 @@ def _require_comparisons(report, branches, polynomials):
                                f"({report.near_degenerate} near a degenerate configuration)")
     if polynomials and not report.evaluated:
         report.failures.append(f"no numeric solution to evaluate the polynomials at on {report.samples} samples")
-
-
-def _compare(report, indicators, branches, values, solutions, scale):
-    by_label = {}
-    for solution in solutions:
-        labels = _label(indicators, solution, scale)
-        if labels is None:
-            report.near_degenerate += 1
-            return
-        by_label.setdefault(tuple(sorted(labels.items())), []).append(solution)
-    real = []
-    for labels, closed, discriminants in branches:
-        discs = [evaluate(d, values, MPMATH) for d in discriminants.values()]
-        if any(abs(d) <= mpmath.mpf(10) ** (-12) * scale**4 for d in discs):
-            report.near_degenerate += 1
-            return
-        if all(d > 0 for d in discs):
-            real.append((tuple(sorted(labels.items())), closed))
-    for key, closed in real:
-        matches = by_label.pop(key, [])
-        if len(matches) != 1:
-            report.failures.append(f"branch {dict(key)}: {len(matches)} numeric solutions with its label")
-            continue
-        error = max(abs(evaluate(expr, values, MPMATH) - matches[0][name]) for name, expr in closed.items())
-        report.max_abs_error = max(report.max_abs_error, float(error))
-        report.compared += 1
-    for key in by_label:
-        report.failures.append(f"numeric solution labelled {dict(key)} has no real closed-form branch")

@@ -3,54 +3,48 @@
 Vanishing on every true configuration does not make an eliminant right: a product with a
 leftover extraneous factor (one the elimination brought in and the factor selection kept)
 vanishes there too, and so does a square of a true factor. So each kept factor must vanish
-*by itself* on some true configuration (the numeric solutions of the original system,
-found without the eliminant), the kept factors must multiply to the reported polynomial,
-and that polynomial must be squarefree. Everything here is sympy and mpmath: nothing from
-the elimination is reused.
+*by itself* on some true configuration (the certified roots of the original system, found
+without the eliminant), the kept factors must multiply to the reported polynomial, and that
+polynomial must be squarefree (both decided exactly, in python-flint). Nothing from the
+elimination is reused.
 """
 
-import mpmath
+import math
+
 import sympy
 
-from ..evaluate import MPMATH, evaluate
+from ..system.convert import flint_context, to_sympy
+from .residual import exact
 
-__all__ = ["FactorCheck", "relative_residual", "structure_failures"]
-
-
-def relative_residual(terms, solution):
-    """|sum of the terms| / sum of |terms| at ``solution``: scale-free, ~0 only where the sum
-    cancels to the working precision."""
-    total, magnitude = mpmath.mpf(0), mpmath.mpf(0)
-    for term in terms:
-        value = evaluate(term, solution, MPMATH)
-        total += value
-        magnitude += abs(value)
-    return abs(total) / magnitude if magnitude else abs(total)
+__all__ = ["FactorCheck", "structure_failures"]
 
 
 class FactorCheck:
-    """The smallest residual of each kept factor over the numeric solutions seen so far.
+    """The smallest residual of each kept factor over the certified roots seen so far.
 
     A factor of the true motion vanishes on the configurations of its component; one that
     vanishes on none of them was brought in by the elimination and should have been dropped.
+    ``make`` turns a factor into its ``Polynomial``, unless one of ``known`` is the same.
     """
 
-    def __init__(self, factors):
-        self.factors = {name: [(f, list(sympy.expand(f).as_ordered_terms())) for f in fs]
-                        for name, fs in (factors or {}).items()}
-        self.smallest = {name: [mpmath.inf] * len(fs) for name, fs in self.factors.items()}
+    def __init__(self, factors, make, known=()):
+        def polynomial(factor):
+            same = [p for p in known if p.exact.context() == exact(factor).context() and p.exact == exact(factor)]
+            return same[0] if same else make(factor)
+        self.factors = {name: [(f, polynomial(f)) for f in fs] for name, fs in (factors or {}).items()}
+        self.smallest = {name: [math.inf] * len(fs) for name, fs in self.factors.items()}
 
-    def see(self, solution):
-        """Take one numeric solution into account."""
+    def see(self, residual_of):
+        """Take one certified root into account; ``residual_of(polynomial)`` is its residual there."""
         for name, pairs in self.factors.items():
             best = self.smallest[name]
-            for k, (_, terms) in enumerate(pairs):
-                best[k] = min(best[k], relative_residual(terms, solution))
+            for k, (_, polynomial) in enumerate(pairs):
+                best[k] = min(best[k], residual_of(polynomial))
 
     def failures(self, tolerance, evaluated):
-        """One message per kept factor that vanished on no numeric solution."""
-        return [f"factor {factor} of {name} vanishes on none of the {evaluated} numeric solutions "
-                f"(smallest relative residual {mpmath.nstr(best, 3)}): extraneous"
+        """One message per kept factor that vanished on no certified root."""
+        return [f"factor {_shown(factor)} of {name} vanishes on none of the {evaluated} numeric solutions "
+                f"(smallest relative residual {best:.3g}): extraneous"
                 for name, pairs in self.factors.items()
                 for (factor, _), best in zip(pairs, self.smallest[name]) if not best <= tolerance]
 
@@ -68,21 +62,61 @@ def structure_failures(polynomials, factors):
     return [f for f in failures if f]
 
 
+def _shown(polynomial):
+    """A polynomial as the user reads it (a sympy expression), only for a message."""
+    if isinstance(polynomial, sympy.Basic):
+        return polynomial
+    return to_sympy(polynomial, polynomial.context())
+
+
 def _not_squarefree(name, polynomial):
-    """A repeated factor names itself: it adds degree and no points (Yun's algorithm, gcd with
-    the derivatives, in sympy)."""
-    gens = sorted(sympy.sympify(polynomial).free_symbols, key=str)
-    if not gens:
-        return None
-    repeated = [(f.as_expr(), m) for f, m in sympy.Poly(polynomial, *gens).sqf_list()[1] if m > 1]
+    """A repeated factor names itself: it adds degree and no points."""
+    poly = exact(polynomial)
+    _, parts = poly.factor_squarefree()
+    repeated = [(_primitive(to_sympy(f, poly.context())), m) for f, m in parts if m > 1]
     if not repeated:
         return None
     return f"{name} is not squarefree: " + ", ".join(f"({f})**{m}" for f, m in repeated) + " divides it"
 
 
+def _primitive(expr):
+    """``expr`` with integer coefficients of gcd 1 and a positive leading one (flint's factors are monic)."""
+    gens = sorted(expr.free_symbols, key=str)
+    _, primitive = sympy.Poly(expr, *gens).clear_denoms()
+    primitive = primitive.primitive()[1]
+    return (primitive if primitive.LC() > 0 else -primitive).as_expr()
+
+
 def _not_product(name, polynomial, factors):
     """The factors checked one by one must be the polynomial reported, up to a constant."""
-    ratio = sympy.cancel(sympy.sympify(polynomial) / sympy.Mul(*factors))
-    if ratio.free_symbols or ratio == 0:
-        return f"the kept factors of {name} do not multiply to it (quotient {ratio})"
-    return None
+    target = exact(polynomial)
+    ctx = _common_context(target, *map(exact, factors))
+    target = _into(target, ctx)
+    product = ctx.from_dict({(0,) * len(ctx.names()): 1})
+    for factor in factors:
+        product *= _into(exact(factor), ctx)
+    if not product.is_zero() and not target.is_zero():
+        quotient, remainder = divmod(target, product)
+        if remainder.is_zero() and quotient.is_constant():
+            return None
+    ratio = sympy.cancel(_shown(polynomial) / sympy.Mul(*map(_shown, factors)))
+    return f"the kept factors of {name} do not multiply to it (quotient {ratio})"
+
+
+def _common_context(*polys):
+    names = sorted({str(n) for p in polys for n, d in zip(p.context().names(), p.degrees()) if d}) or ["_"]
+    return flint_context(names)
+
+
+def _into(poly, ctx):
+    """``poly`` (in its own context) in ``ctx``, which has every variable it uses."""
+    names = [str(n) for n in ctx.names()]
+    where = [names.index(str(n)) if d else None for n, d in zip(poly.context().names(), poly.degrees())]
+    terms = {}
+    for monomial, c in poly.to_dict().items():
+        moved = [0] * len(names)
+        for k, e in zip(where, monomial):
+            if k is not None:
+                moved[k] = int(e)
+        terms[tuple(moved)] = c
+    return ctx.from_dict(terms)

@@ -1,46 +1,62 @@
-"""Numeric solutions of a polynomial system, found without any closed form.
+"""Numeric solutions of a polynomial system, found without any closed form, for many inputs at once.
 
-The system is split into blocks that can be solved in turn (a square subsystem in the
-unknowns not solved yet); a block in one unknown is solved by ``mpmath.polyroots``, a
-larger one by Newton's method from many starts (floats, vectorised), each root then
-polished at high precision with mpmath.
+The system is split into blocks solved in turn (a square subsystem in the unknowns not
+solved yet). Every block is solved for all samples (and every partial solution) in one
+vectorised pass over float64: a block in one unknown by the eigenvalues of its companion
+matrices, a larger one by Newton's method from many random starts per sample. What comes
+out are candidates: ``balls.Certifier`` proves each one (or not) on the original equations.
+
+>>> import numpy as np, sympy
+>>> from algkin.system import System, symbol
+>>> x, y, c = symbol("x"), symbol("y"), symbol("c")
+>>> system = System(("x", "y"), (), {"t": ("c", "s")}, (x**2 + y**2 - 4, x - y - c))
+>>> found = solve_floats(blocks_of(system), {"c": np.array([0.0]), "s": np.array([1.0])},
+...                      np.random.default_rng(0))
+>>> sorted(np.round(found.values["x"], 12).tolist())
+[-1.414213562373, 1.414213562373]
 """
 
+import functools
 import itertools
+from dataclasses import dataclass
 
-import mpmath
 import numpy as np
 import sympy
 
-from ..system import symbol
+from ..evaluate import NUMPY
+from ..evaluate.program import compile_program
+from ..system import System, symbol
 
-__all__ = ["Blocks", "solve_all"]
+__all__ = ["Blocks", "Candidates", "blocks_of", "solve_floats", "STARTS"]
 
-STARTS = 64
-FLOAT_STEPS = 60
-POLISH_STEPS = 12
+STARTS = 8  # random Newton starts per sample and block; a sample that lacks a root retries with more
+STEPS = 60
+ABANDON_AFTER = 15  # Newton steps after which a start still far from vanishing is given up
+ABANDON_RESIDUAL = 1e-4  # relative to the squared scale: the equations are quadratic in lengths
+CONVERGED = 1e-13  # a Newton step this small (relative to the block's scale) ends the iteration
+SAME_ROOT = 1e-7  # end points closer than this (relative) are one root
 
 
 class Blocks:
-    """The block-triangular structure of a system, with compiled residuals and Jacobians."""
+    """The block-triangular structure of a system, each block compiled once for numpy arrays."""
 
     def __init__(self, system):
         self.system = system
-        names = list(system.variables)
-        self.args = [symbol(n) for n in names]
-        self.names = names
-        pending = [eq for eq in system.equations if eq.free_symbols & {symbol(u) for u in system.unknowns}]
+        self.names = list(system.variables)
+        unknown = {symbol(u) for u in system.unknowns}
+        pending = [eq for eq in system.equations if eq.free_symbols & unknown]
         # Coordinates are about as large as the lengths, whose squares are coefficients: Newton's
         # starts must spread over that size too, not only over the known values (cos, sin).
         self.size = max((abs(float(c)) ** 0.5 for eq in pending
                          for c in sympy.Poly(eq, *eq.free_symbols).coeffs()), default=0.0)
-        solved, self.blocks = set(), []
+        solved, self.blocks, self.equations = set(), [], []
         while len(solved) < len(system.unknowns):
-            block = self._next_block(pending, solved)
-            for eq in block[1]:
+            names, equations = self._next_block(pending, solved)
+            for eq in equations:
                 pending.remove(eq)
-            solved |= set(block[0])
-            self.blocks.append(self._compile(*block))
+            solved |= set(names)
+            self.equations += equations
+            self.blocks.append(_Block(names, equations, self.names))
 
     def _next_block(self, pending, solved):
         unknown = {symbol(u) for u in self.system.unknowns} - {symbol(u) for u in solved}
@@ -52,110 +68,194 @@ class Blocks:
                     return sorted(str(v) for v in block_vars), list(group)
         raise ValueError("the system has no square block left to solve numerically")
 
-    def _compile(self, names, equations):
-        vars_ = [symbol(n) for n in names]
+
+class _Block:
+    def __init__(self, names, equations, variables):
+        self.names = names
+        self.equations = equations
+        used = {str(v) for eq in equations for v in eq.free_symbols}
+        # only the variables the block uses are passed in: fewer arrays to gather per Newton step
+        arguments = self.arguments = [v for v in variables if v in used or v in names]
+        unknowns = [symbol(n) for n in names]
+        # Newton solves a linear block in one step from anywhere: one start is enough
+        self.linear = all(sympy.Poly(eq, *unknowns).total_degree() <= 1 for eq in equations)
         if len(names) == 1:
-            coeffs = sympy.Poly(equations[0], vars_[0]).all_coeffs()
-            return ("univariate", names, sympy.lambdify(self.args, coeffs, "mpmath"))
-        jac = sympy.Matrix(equations).jacobian(vars_)
-        return (
-            "newton",
-            names,
-            sympy.lambdify(self.args, equations, "numpy"),
-            sympy.lambdify(self.args, jac.tolist(), "numpy"),
-            sympy.lambdify(self.args, equations, "mpmath"),
-            sympy.lambdify(self.args, jac.tolist(), "mpmath"),
-        )
+            self.coefficients = compile_program(sympy.Poly(equations[0], unknowns[0]).all_coeffs(), arguments, NUMPY)
+        else:
+            self.coefficients = None
+            jacobian = sympy.Matrix(equations).jacobian(unknowns)
+            self.residual = compile_program(equations, arguments, NUMPY)
+            self.jacobian = compile_program(list(jacobian), arguments, NUMPY)
 
 
-def _arguments(blocks, values):
-    return [values.get(n, 0) for n in blocks.names]
+@functools.lru_cache(maxsize=64)
+def _cached_blocks(unknowns, parameters, inputs, equations, nonnegative):
+    return Blocks(System(unknowns, parameters, dict(inputs), equations, nonnegative))
 
 
-def _solve_univariate(block, values, blocks):
-    _, names, coeffs_fn = block
-    coeffs = [mpmath.mpf(c) for c in coeffs_fn(*_arguments(blocks, values))]
-    while coeffs and coeffs[0] == 0:
-        coeffs.pop(0)
-    if len(coeffs) < 2:
-        return []
-    if len(coeffs) == 2:
-        return [{names[0]: -coeffs[1] / coeffs[0]}]
-    roots = mpmath.polyroots(coeffs, maxsteps=200, extraprec=2 * mpmath.mp.prec)
-    scale = max(abs(r) for r in roots) + 1
-    return [{names[0]: mpmath.re(r)} for r in roots if abs(mpmath.im(r)) <= mpmath.mpf(10) ** (-20) * scale]
+def blocks_of(system):
+    """The system's ``Blocks``, compiled once per system and reused by later calls."""
+    return _cached_blocks(system.unknowns, system.parameters, tuple(system.inputs.items()), system.equations,
+                          system.nonnegative)
 
 
-def _solve_newton(block, values, blocks, rng):
-    _, names, f_np, j_np, f_mp, j_mp = block
-    known = [abs(float(v)) for v in values.values()]
-    scale = 2 * (max(known + [blocks.size]) + 1)
-    starts = rng.uniform(-scale, scale, size=(STARTS, len(names)))
-    base = {k: float(v) for k, v in values.items()}
-    points = _float_newton(starts, names, base, blocks, f_np, j_np)
-    roots = []
-    for point in points:
-        if not any(np.allclose(point, r, rtol=1e-7, atol=1e-7 * scale) for r in roots):
-            roots.append(point)
-    solutions = []
-    for root in roots:
-        polished = _polish(root, names, values, blocks, f_mp, j_mp)
-        if polished is not None and not any(
-            max(abs(polished[n] - s[n]) for n in names) <= mpmath.mpf(10) ** (-20) * scale for s in solutions
-        ):
-            solutions.append(polished)
-    return solutions
+@dataclass
+class Candidates:
+    """Newton's end points for every sample; nothing here is proved.
+
+    ``owner[k]`` is the sample candidate ``k`` solves, ``values`` maps every variable to an
+    array over the candidates, ``lineage[b][k]`` is the partial solution candidate ``k``
+    extends after block ``b`` (candidates share their first blocks' roots), and
+    ``inverses[b][r]`` is the float inverse of block ``b``'s Jacobian at partial solution
+    ``r`` (nan for a univariate block), for the proof in balls to start from.
+    """
+
+    owner: np.ndarray
+    values: dict
+    lineage: list
+    inverses: list
 
 
-def _float_newton(points, names, base, blocks, f_np, j_np):
-    """Newton's method from every start at once; returns the finite end points."""
-    count, size = points.shape
-    with np.errstate(all="ignore"):
-        for _ in range(FLOAT_STEPS):
-            args = _arguments(blocks, {**base, **{n: points[:, i] for i, n in enumerate(names)}})
-            f = np.stack([np.broadcast_to(v, (count,)) for v in f_np(*args)], axis=1)
-            rows = j_np(*args)
-            j = np.stack([np.stack([np.broadcast_to(v, (count,)) for v in row], axis=1) for row in rows], axis=1)
-            ok = np.abs(np.linalg.det(j)) > 0
-            step = np.zeros_like(points)
-            step[ok] = np.linalg.solve(j[ok], f[ok][..., None])[..., 0]
-            points = np.where(ok[:, None], points - step, np.nan)
-    return points[np.all(np.isfinite(points), axis=1)]
-
-
-def _polish(root, names, values, blocks, f_mp, j_mp):
-    point = [mpmath.mpf(float(v)) for v in root]
-    tiny = mpmath.mpf(2) ** (-mpmath.mp.prec) * (1 + max(abs(p) for p in point))
-    for _ in range(POLISH_STEPS):
-        args = _arguments(blocks, {**values, **dict(zip(names, point))})
-        f = mpmath.matrix(f_mp(*args))
-        j = mpmath.matrix(j_mp(*args))
-        try:
-            step = mpmath.lu_solve(j, f)
-        except ZeroDivisionError:
-            return None
-        point = [p - step[i] for i, p in enumerate(point)]
-        if max(abs(v) for v in step) <= tiny:  # converged quadratically: more steps change nothing
-            break
-    args = _arguments(blocks, {**values, **dict(zip(names, point))})
-    residual = max(abs(v) for v in f_mp(*args))
-    size = 1 + max(abs(v) for v in list(values.values()) + point)
-    if residual > mpmath.mpf(2) ** (-mpmath.mp.prec // 2) * size**2:
-        return None
-    return dict(zip(names, point))
-
-
-def solve_all(blocks, values, rng):
-    """Every real solution of the unknowns, given ``values`` (name -> mpf) of the rest."""
-    partial = [dict(values)]
+def solve_floats(blocks, known, rng, starts=STARTS):
+    """``Candidates`` for every sample; ``known`` maps each input and parameter variable to a
+    float array over the samples."""
+    count = len(next(iter(known.values()))) if known else 1
+    owner = np.arange(count)
+    values = {n: np.broadcast_to(np.asarray(v, dtype=float), (count,)) for n, v in known.items()}
+    parents, inverses = [], []
     for block in blocks.blocks:
-        extended = []
-        for known in partial:
-            if block[0] == "univariate":
-                found = _solve_univariate(block, known, blocks)
-            else:
-                found = _solve_newton(block, known, blocks, rng)
-            extended += [{**known, **sol} for sol in found]
-        partial = extended
-    nonneg = blocks.system.nonnegative
-    return [sol for sol in partial if all(sol[n] >= 0 for n in nonneg)]
+        scale = _scale(values, blocks.size, len(owner))
+        if block.coefficients is not None:
+            parent, found = _univariate(block, values)
+        else:
+            parent, found = _newton(block, values, scale, rng, starts)
+        parents.append(parent)
+        owner = owner[parent]
+        values = {n: v[parent] for n, v in values.items()}
+        values.update(found)
+        inverses.append(_inverses(block, values, len(owner)))
+    lineage = [np.arange(len(owner))]
+    for parent in reversed(parents[1:]):
+        lineage.insert(0, parent[lineage[0]])
+    return Candidates(owner, values, lineage, inverses)
+
+
+def _inverses(block, values, count):
+    """The block's Jacobian inverted at every row, in floats (nan where singular or univariate)."""
+    size = len(block.names)
+    if block.coefficients is not None or not count:
+        return np.full((count, size, size), np.nan)
+    j = _columns(block.jacobian(*_arguments(block, values, count)), count).reshape(count, size, size)
+    inverse = np.full_like(j, np.nan)
+    with np.errstate(all="ignore"):
+        regular = np.isfinite(j).all(axis=(1, 2)) & (np.abs(np.linalg.det(j)) > 0)
+        inverse[regular] = np.linalg.inv(j[regular])
+    return inverse
+
+
+def _scale(values, size, count):
+    """Per row: how far from the origin the roots may be (the known values and the lengths)."""
+    known = [np.abs(v) for v in values.values()]
+    largest = np.max(np.stack(known), axis=0) if known else np.zeros(count)
+    return 2 * (np.maximum(largest, size) + 1)
+
+
+def _arguments(block, values, count):
+    return [values[n] if n in values else np.zeros(count) for n in block.arguments]
+
+
+def _columns(values, count):
+    """``count x len(values)``: a program's outputs, constants (a Jacobian's ``2``) spread out."""
+    out = np.empty((count, len(values)))
+    for k, v in enumerate(values):
+        out[:, k] = v
+    return out
+
+
+def _univariate(block, values):
+    """Real eigenvalues of each row's companion matrix (rows grouped by their actual degree)."""
+    count = len(next(iter(values.values())))
+    coeffs = _columns(block.coefficients(*_arguments(block, values, count)), count)
+    largest = np.max(np.abs(coeffs), axis=1)
+    nonzero = np.abs(coeffs) > 1e-14 * largest[:, None]
+    lead = np.where(nonzero.any(axis=1), nonzero.argmax(axis=1), coeffs.shape[1])
+    parents, roots = [], []
+    for first in np.unique(lead):
+        rows = np.flatnonzero(lead == first)
+        degree = coeffs.shape[1] - 1 - first
+        if degree < 1:
+            continue
+        monic = coeffs[rows, first + 1:] / coeffs[rows, first][:, None]
+        companion = np.zeros((len(rows), degree, degree))
+        companion[:, 0, :] = -monic
+        companion[:, np.arange(1, degree), np.arange(degree - 1)] = 1
+        eig = np.linalg.eigvals(companion)
+        real = np.abs(eig.imag) <= 1e-7 * (1 + np.abs(eig.real))
+        parents.append(np.repeat(rows, real.sum(axis=1)))
+        roots.append(eig.real[real])
+    parent = np.concatenate(parents) if parents else np.zeros(0, dtype=int)
+    return parent, {block.names[0]: np.concatenate(roots) if roots else np.zeros(0)}
+
+
+def _newton(block, values, scale, rng, starts):
+    """Newton from ``starts`` random points per row, all rows at once; distinct end points per row."""
+    rows, size = len(scale), len(block.names)
+    starts = 1 if block.linear else starts
+    points = rng.uniform(-1, 1, size=(rows * starts, size)) * np.repeat(scale, starts)[:, None]
+    base = {n: np.repeat(np.broadcast_to(v, (rows,)), starts) for n, v in values.items()}
+    points = _iterate(block, base, points, np.repeat(scale, starts))
+    points = points.reshape(rows, starts, size)
+    keep = _distinct(points, scale)
+    parent = np.repeat(np.arange(rows), keep.sum(axis=1))
+    return parent, {n: points[..., i][keep] for i, n in enumerate(block.names)}
+
+
+def _iterate(block, base, points, scale):
+    """Newton steps on the rows still moving; rows that diverge or stall end as nan."""
+    done = np.full(len(points), np.nan)[:, None] * points
+    active = np.arange(len(points))
+    base = {n: v for n, v in base.items() if n in block.arguments}
+    with np.errstate(all="ignore"):
+        for count in range(STEPS):
+            x = points[active]
+            values = {n: v[active] for n, v in base.items()}
+            values.update({n: x[:, i] for i, n in enumerate(block.names)})
+            residual, step = _step(block, values, len(active))
+            x = x - step
+            moved = np.max(np.abs(step), axis=1)
+            finished = moved <= CONVERGED * scale[active]
+            lost = ~np.isfinite(moved) | (np.max(np.abs(x), axis=1) > 1e6 * scale[active])
+            if count >= ABANDON_AFTER:  # far from any root by now: no real root there (the circles miss)
+                lost |= residual > ABANDON_RESIDUAL * scale[active] ** 2
+            points[active] = x
+            done[active[finished]] = x[finished]
+            active = active[~(finished | lost)]
+            if not active.size:
+                break
+    return done
+
+
+def _step(block, values, count):
+    """``(|F|, J^-1 F)`` per row."""
+    args = _arguments(block, values, count)
+    size = len(block.names)
+    f = _columns(block.residual(*args), count)
+    j = _columns(block.jacobian(*args), count).reshape(count, size, size)
+    if size == 2:  # Cramer's rule: several times faster than a batched LU on 2 x 2 matrices
+        det = j[:, 0, 0] * j[:, 1, 1] - j[:, 0, 1] * j[:, 1, 0]
+        step = np.stack([j[:, 1, 1] * f[:, 0] - j[:, 0, 1] * f[:, 1],
+                         j[:, 0, 0] * f[:, 1] - j[:, 1, 0] * f[:, 0]], axis=1) / det[:, None]
+    else:
+        step = np.full((count, size), np.nan)
+        regular = np.abs(np.linalg.det(j)) > 0
+        step[regular] = np.linalg.solve(j[regular], f[regular][..., None])[..., 0]
+    return np.max(np.abs(f), axis=1), step
+
+
+def _distinct(points, scale):
+    """``rows x starts`` mask: the finite end points not within ``SAME_ROOT`` of an earlier one."""
+    finite = np.all(np.isfinite(points), axis=2)
+    gap = np.max(np.abs(points[:, :, None, :] - points[:, None, :, :]), axis=3)
+    close = (gap <= SAME_ROOT * scale[:, None, None]) & finite[:, None, :] & finite[:, :, None]
+    earlier = np.tril(np.ones(points.shape[1], dtype=bool), -1)
+    return finite & ~np.any(close & earlier, axis=2)

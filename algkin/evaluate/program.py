@@ -1,0 +1,118 @@
+"""Expressions compiled once into straight-line Python, for evaluation many times over.
+
+``evaluate`` walks a sympy tree on every call; a verification evaluates the same closed
+forms, discriminants and equations at thousands of points. ``compile_program`` turns a
+list of expressions (closed-form vocabulary only: sums, products, integer and half-integer
+powers, ``Abs``, rationals, named variables) into one Python function, shared
+subexpressions computed once (``sympy.cse``), for one ``NumberKind``:
+
+- rationals are made by the kind when the function is called, so balls get the caller's
+  precision (``flint.ctx.workprec``), never a float's;
+- integer powers are products (python-flint's ``arb ** int`` is nan on a ball around 0).
+
+>>> import sympy
+>>> x, y = sympy.symbols("x y", real=True)
+>>> f = compile_program([sympy.sqrt(x**2 + y**2), x * y / 2 - 1], ["x", "y"], FLOAT)
+>>> f(3.0, 4.0)
+[5.0, 5.0]
+>>> import flint
+>>> with flint.ctx.workprec(200):
+...     third = compile_program([x / 3], ["x"], ARB)(flint.arb(1))[0]
+>>> third.rad() < 1e-59
+True
+"""
+
+import functools
+
+import sympy
+
+from .tree import ARB, FLOAT, MPMATH, NUMPY  # noqa: F401 - the kinds a program is compiled for
+
+__all__ = ["compile_program"]
+
+
+@functools.lru_cache(maxsize=512)
+def _cached(exprs, names, kind):
+    return _Program(exprs, names, kind)
+
+
+def compile_program(exprs, names, kind):
+    """A function of the values of ``names`` (in order) returning ``exprs``' values, as a list.
+
+    Compiled once per ``(exprs, names, kind)`` and cached: a second verification of the same
+    scene reuses it.
+    """
+    return _cached(tuple(sympy.sympify(e) for e in exprs), tuple(names), kind)
+
+
+class _Program:
+    def __init__(self, exprs, names, kind):
+        self.kind = kind
+        self.rationals = []
+        arguments = {sympy.Symbol(n, real=True): f"a{k}" for k, n in enumerate(names)}
+        arguments.update({sympy.Symbol(n): f"a{k}" for k, n in enumerate(names)})
+        self.arguments = arguments
+        shared, reduced = sympy.cse(list(exprs), symbols=sympy.numbered_symbols("_t"), optimizations=None)
+        lines = [f"def program({', '.join(f'a{k}' for k in range(len(names)))}):", "    q = constants()"]
+        for name, expr in shared:
+            self.arguments[name] = str(name)
+            lines.append(f"    {name} = {self._code(expr)}")
+        lines.append(f"    return [{', '.join(self._code(e) for e in reduced)}]")
+        scope = {"constants": self._constants, "power": _integer_power, "sqrt": kind.sqrt}
+        exec(compile("\n".join(lines), "<algkin program>", "exec"), scope)  # noqa: S102 - our own code, from a sympy tree
+        self.program = scope["program"]
+        self._made = (None, None)
+
+    def __call__(self, *values):
+        return self.program(*values)
+
+    def _constants(self):
+        """The rationals in the kind, remade when the working precision changed."""
+        import flint  # the precision of balls; floats and arrays ignore it
+
+        precision = flint.ctx.prec
+        if self._made[0] != precision:
+            self._made = (precision, [self.kind.number(p, q) for p, q in self.rationals])
+        return self._made[1]
+
+    def _code(self, node):
+        if node in self.arguments:
+            return self.arguments[node]
+        if node.is_Integer:
+            return f"({int(node)})"
+        if node.is_Rational:
+            self.rationals.append((int(node.p), int(node.q)))
+            return f"q[{len(self.rationals) - 1}]"
+        if node.is_Add:
+            return "(" + " + ".join(self._code(a) for a in node.args) + ")"
+        if node.is_Mul:
+            return "(" + " * ".join(self._code(a) for a in node.args) + ")"
+        if node.is_Pow:
+            return self._power(node)
+        if isinstance(node, sympy.Abs):
+            return f"abs({self._code(node.args[0])})"
+        raise TypeError(f"cannot compile {type(node).__name__} in {node}")
+
+    def _power(self, node):
+        base, exponent = self._code(node.base), node.exp
+        if exponent.is_Rational and exponent.q == 2:
+            base, exponent = f"sqrt({base})", sympy.Integer(exponent.p)
+        if not exponent.is_Integer:
+            raise TypeError(f"cannot compile the power {exponent}")
+        n = int(exponent)
+        if n == 1:
+            return base
+        raised = f"power({base}, {abs(n)})" if abs(n) > 1 else base
+        return raised if n > 0 else f"(1 / {raised})"
+
+
+def _integer_power(base, n):
+    """``base**n`` (n >= 2) by squaring."""
+    result = None
+    while n:
+        if n & 1:
+            result = base if result is None else result * base
+        n >>= 1
+        if n:
+            base = base * base
+    return result

@@ -1,0 +1,124 @@
+"""How far a polynomial is from vanishing at certified roots: ``|p(K)| / sum |terms|``.
+
+The numerator is ``p`` evaluated in balls on the root's enclosure ``K``, its upper bound:
+a polynomial that vanishes on the root gives a ball around 0 as narrow as the enclosure;
+one that does not is proved nonzero there. A polynomial comes as a python-flint
+``fmpq_mpoly`` (an eliminant, straight from the elimination) or a sympy expression;
+dimensions kept symbolic take their exact values first (python-flint substitution). It is
+then grouped by the monomials of all but its variable of highest degree, each group an
+``arb_poly`` in that variable (evaluated in C). The denominator, the sum of the terms'
+absolute values, only scales the figure: it is evaluated in floats, for all roots at once.
+
+>>> import flint, numpy as np, sympy
+>>> x, y, r = sympy.symbols("x y r", real=True)
+>>> circle = Polynomial(x**2 + y**2 - r**2, ["x", "y"], {"r": 5})
+>>> with flint.ctx.workprec(200):
+...     on, off = circle.balls({"x": flint.arb(3), "y": flint.arb(4)}), circle.balls({"x": flint.arb(3), "y": flint.arb(5)})
+>>> on.contains(0), off.contains(0)
+(True, False)
+>>> circle.magnitude({"x": np.array([3.0]), "y": np.array([4.0])}).tolist()
+[50.0]
+"""
+
+from collections import defaultdict
+from fractions import Fraction
+
+import flint
+import numpy as np
+import sympy
+
+from ..evaluate import ARB
+from ..system.convert import flint_context, to_flint
+
+__all__ = ["Polynomial", "exact"]
+
+
+def exact(polynomial):
+    """``polynomial`` as an ``fmpq_mpoly`` (a sympy expression is converted, a flint one kept)."""
+    if isinstance(polynomial, (flint.fmpq_mpoly, flint.fmpz_mpoly)):
+        return polynomial
+    expr = sympy.sympify(polynomial)
+    return to_flint(expr, flint_context(sorted(str(v) for v in expr.free_symbols) or ["_"]))
+
+
+class Polynomial:
+    """A polynomial in ``names`` (with the variables in ``fixed`` at exact values), ready for
+    balls and float magnitudes."""
+
+    def __init__(self, polynomial, names, fixed=None):
+        self.exact = poly = exact(polynomial)
+        variables = [str(n) for n in poly.context().names()]
+        degrees = poly.degrees()
+        fixed = {n: Fraction(str(v)) for n, v in (fixed or {}).items()}
+        unknown = {v for v, d in zip(variables, degrees) if d} - set(names) - set(fixed)
+        if unknown:
+            raise ValueError(f"the polynomial {poly} has variables {sorted(unknown)} with no value")
+        given = {n: flint.fmpq(v.numerator, v.denominator) for n, v in fixed.items() if n in variables}
+        poly = poly.subs(given) if given else poly
+        keep = [k for k, (n, d) in enumerate(zip(variables, poly.degrees())) if d and n not in given]
+        self.names = [variables[k] for k in keep]
+        terms = {tuple(int(m[k]) for k in keep): c for m, c in poly.to_dict().items()}
+        self.inner = max(range(len(keep)), key=lambda k: max(m[k] for m in terms)) if keep else None
+        self.groups = _groups(terms, self.inner)
+        self.outer = [n for k, n in enumerate(self.names) if k != self.inner]
+        self.exponents = np.array(list(terms) or [()], dtype=float).reshape(len(terms) or 1, len(keep))
+        self.sizes = np.array([abs(float(c)) for c in terms.values()] or [0.0])
+        self.made = (None, None)
+
+    def balls(self, values):
+        """``p`` at ``values`` (name -> ball), a ball."""
+        polys = self._polys()
+        if self.inner is None:
+            return sum((p(0) for p in polys.values()), flint.arb(0))
+        x = values[self.names[self.inner]]
+        outer = [values[n] for n in self.outer]
+        powers = [_powers(v, max(m[k] for m in polys)) for k, v in enumerate(outer)]
+        total = flint.arb(0)
+        for monomial, poly in polys.items():
+            term = poly(x)
+            for k, e in enumerate(monomial):
+                if e:
+                    term = term * powers[k][e]
+            total += term
+        return total
+
+    def magnitude(self, values):
+        """The sum of the absolute values of the terms, for float arrays ``values`` (all at once)."""
+        if not self.names:
+            return np.full(1, self.sizes.sum())
+        points = np.abs(np.stack([np.asarray(values[n], dtype=float) for n in self.names], axis=-1))
+        return np.prod(points[:, None, :] ** self.exponents[None], axis=-1) @ self.sizes
+
+    def _polys(self):
+        """The groups as ``arb_poly``, remade when the working precision changed."""
+        precision = flint.ctx.prec
+        if self.made[0] != precision:
+            self.made = (precision, {m: _arb_poly(terms) for m, terms in self.groups.items()})
+        return self.made[1]
+
+
+def _groups(terms, inner):
+    """``outer monomial -> [(inner exponent, coefficient)]``."""
+    groups = defaultdict(list)
+    for monomial, coefficient in terms.items():
+        if inner is None:
+            groups[()].append((0, coefficient))
+        else:
+            groups[monomial[:inner] + monomial[inner + 1:]].append((monomial[inner], coefficient))
+    return dict(groups) or {(): [(0, flint.fmpq(0))]}
+
+
+def _arb_poly(terms):
+    coefficients = [ARB.number(0, 1)] * (max(e for e, _ in terms) + 1)
+    for exponent, c in terms:
+        c = flint.fmpq(c)
+        coefficients[exponent] = ARB.number(int(c.p), int(c.q))
+    return flint.arb_poly(coefficients)
+
+
+def _powers(value, top):
+    """``[1, v, v**2, ..., v**top]`` by products (``arb ** int`` is nan on a ball around 0)."""
+    powers = [flint.arb(1)]
+    for _ in range(top):
+        powers.append(powers[-1] * value)
+    return powers
