@@ -81,8 +81,7 @@ class _Program:
         if node.is_Integer:
             return f"({int(node)})"
         if node.is_Rational:
-            self.rationals.append((int(node.p), int(node.q)))
-            return f"q[{len(self.rationals) - 1}]"
+            return self._constant(node)
         if node.is_Add:
             return "(" + " + ".join(self._code(a) for a in node.args) + ")"
         if node.is_Mul:
@@ -93,8 +92,14 @@ class _Program:
             return f"abs({self._code(node.args[0])})"
         raise TypeError(f"cannot compile {type(node).__name__} in {node}")
 
+    def _constant(self, node):
+        """A rational made by the kind at call time (an integer too, where a root is taken of it)."""
+        self.rationals.append((int(node.p), int(node.q)))
+        return f"q[{len(self.rationals) - 1}]"
+
     def _power(self, node):
-        base, exponent = self._code(node.base), node.exp
+        exponent = node.exp
+        base = self._constant(node.base) if node.base.is_Rational else self._code(node.base)
         if exponent.is_Rational and exponent.q == 2:
             base, exponent = f"sqrt({base})", sympy.Integer(exponent.p)
         if not exponent.is_Integer:

@@ -189,30 +189,49 @@ def _batch(plan, inputs, rng, drawn, needed, solvable, most, first):
 def _check_batch(report, plan, angles, rng, worst):
     """Solve, prove and compare every sample of the batch; how many compared something."""
     count = len(next(iter(angles.values()), [None]))
-    known = [plan.balls(angles, k) for k in range(count)]
-    roots = _certified(plan, angles, known, rng, STARTS, range(count))
-    missing = [k for k in range(count) if _lacks_a_root(plan, roots[k], known[k])]
+    samples = [_Sample(plan.balls(angles, k)) for k in range(count)]
+    _certified(plan, angles, samples, rng, STARTS)
+    missing = [k for k, sample in enumerate(samples) if sample.lacks_a_root(plan)]
     if missing:  # Newton's random starts may miss a root: those samples again, with more starts
-        retried = _certified(plan, {n: a[missing] for n, a in angles.items()}, [known[k] for k in missing],
-                             rng, RETRY_STARTS, range(len(missing)))
-        for k, found in zip(missing, retried):
-            roots[k] = found
-    magnitudes = _magnitudes(plan, angles, roots)
+        _certified(plan, {n: a[missing] for n, a in angles.items()}, [samples[k] for k in missing], rng,
+                   RETRY_STARTS)
+    magnitudes = _magnitudes(plan, angles, samples)
     useful = 0
-    for k in range(count):
+    for sample, sizes in zip(samples, magnitudes):
         before = (report.compared, report.evaluated)
-        _check_sample(report, plan, known[k], roots[k], magnitudes[k], worst)
+        _check_sample(report, plan, sample, sizes, worst)
         useful += (report.compared, report.evaluated) != before
     return useful
 
 
-def _certified(plan, angles, known, rng, starts, samples):
-    """Per sample: ``(roots, doubtful)``, the proved roots and whether some candidate could not be proved."""
+@dataclass
+class _Sample:
+    """One input: its known values in balls, its proved roots, their labels, its real branches."""
+
+    known: list
+    roots: list = field(default_factory=list)
+    doubtful: bool = False  # some candidate could not be proved: near a degenerate configuration
+    labels: list = field(default_factory=list)  # per root, ``None`` where an indicator's sign is undecided
+    real: list = field(default_factory=list)  # per branch: True, False, or None near its boundary
+
+    def classify(self, plan):
+        self.labels = [_labels(plan, root, self.known) for root in self.roots]
+        self.real = [_real(branch, self.known) for branch in plan.branches]
+
+    def lacks_a_root(self, plan):
+        """Whether some branch decided real has no root of its label (Newton may have missed it)."""
+        if self.doubtful or None in self.labels:
+            return False
+        return any(real and branch.key not in self.labels for branch, real in zip(plan.branches, self.real))
+
+
+def _certified(plan, angles, samples, rng, starts):
+    """Set each sample's proved roots (and whether some candidate could not be proved)."""
     candidates = solve_floats(plan.blocks, plan.floats(angles), rng, starts)
     proved = {}  # (block, partial solution) -> its unknowns' balls: candidates share their first blocks
-    found = {k: ([], False) for k in samples}
+    found = [([], False) for _ in samples]
     for row, k in enumerate(candidates.owner):
-        balls = dict(zip(plan.known, known[k]))
+        balls = dict(zip(plan.known, samples[k].known))
         for b, (block, certify) in enumerate(plan.certifiers):
             key = (b, candidates.lineage[b][row])
             if key not in proved:
@@ -228,7 +247,9 @@ def _certified(plan, angles, known, rng, starts, samples):
             root = [balls[u] for u in plan.system.unknowns]
             if not any(all(a.overlaps(c) for a, c in zip(root, r)) for r in roots):
                 roots.append(root)
-    return [_nonnegative(plan, *found[k]) for k in samples]
+    for sample, (roots, doubtful) in zip(samples, found):
+        sample.roots, sample.doubtful = _nonnegative(plan, roots, doubtful)
+        sample.classify(plan)
 
 
 def _nonnegative(plan, roots, doubtful):
@@ -264,21 +285,13 @@ def _real(branch, known):
     return False if any(v < 0 for v in values) else None
 
 
-def _lacks_a_root(plan, found, known):
-    roots, doubtful = found
-    if doubtful:
-        return False
-    labels = {_labels(plan, root, known) for root in roots}
-    return any(_real(b, known) and b.key not in labels for b in plan.branches)
-
-
-def _magnitudes(plan, angles, roots):
+def _magnitudes(plan, angles, samples):
     """Per sample, per root, ``id(polynomial)`` -> the sum of its terms' absolute values (floats, one pass)."""
-    owners = [k for k, (found, _) in enumerate(roots) for _ in found]
+    owners = [k for k, sample in enumerate(samples) for _ in sample.roots]
     if not owners or not plan.polynomials:
-        return [[{} for _ in found] for found, _ in roots]
+        return [[{} for _ in sample.roots] for sample in samples]
     floats = {n: v[owners] for n, v in plan.floats(angles).items()}
-    flat = [root for found, _ in roots for root in found]
+    flat = [root for sample in samples for root in sample.roots]
     for u, k in plan.index.items():
         floats[u] = np.array([float(root[k].mid()) for root in flat])
     sizes = {}
@@ -286,27 +299,27 @@ def _magnitudes(plan, angles, roots):
         if id(p) not in sizes:
             sizes[id(p)] = np.broadcast_to(p.magnitude(floats), (len(flat),))
     rows, start = [], 0
-    for found, _ in roots:
-        rows.append([{key: float(v[start + j]) for key, v in sizes.items()} for j in range(len(found))])
-        start += len(found)
+    for sample in samples:
+        rows.append([{key: float(v[start + j]) for key, v in sizes.items()} for j in range(len(sample.roots))])
+        start += len(sample.roots)
     return rows
 
 
-def _check_sample(report, plan, known, found, magnitudes, worst):
+def _check_sample(report, plan, sample, magnitudes, worst):
     """Evaluate the polynomials on the sample's roots and compare its branches."""
-    roots, doubtful = found
     report.samples += 1
-    for root, sizes in zip(roots, magnitudes):
-        values = dict(zip(plan.system.unknowns, root), **dict(zip(plan.known, known)))
+    known = dict(zip(plan.known, sample.known))
+    for root, sizes in zip(sample.roots, magnitudes):
+        values = dict(zip(plan.system.unknowns, root), **known)
         residual = _residuals(values, sizes)
         for name, polynomial in plan.polynomials.items():
             worst[name] = max(worst[name], residual(polynomial))
         plan.factors.see(residual)
-    report.evaluated += len(roots) if plan.polynomials else 0
-    if doubtful:
+    report.evaluated += len(sample.roots) if plan.polynomials else 0
+    if sample.doubtful or None in sample.labels or None in sample.real:
         report.near_degenerate += 1
         return
-    _compare(report, plan, known, roots)
+    _compare(report, plan, sample)
 
 
 def _residuals(values, sizes):
@@ -322,28 +335,18 @@ def _residuals(values, sizes):
     return residual
 
 
-def _compare(report, plan, known, roots):
+def _compare(report, plan, sample):
     by_label = {}
-    for root in roots:
-        labels = _labels(plan, root, known)
-        if labels is None:
-            report.near_degenerate += 1
-            return
+    for labels, root in zip(sample.labels, sample.roots):
         by_label.setdefault(labels, []).append(root)
-    real = []
-    for branch in plan.branches:
-        status = _real(branch, known)
-        if status is None:
-            report.near_degenerate += 1
-            return
-        if status:
-            real.append(branch)
-    for branch in real:
+    for branch, real in zip(plan.branches, sample.real):
+        if not real:
+            continue
         matches = by_label.pop(branch.key, [])
         if len(matches) != 1:
             report.failures.append(f"branch {dict(branch.key)}: {len(matches)} numeric solutions with its label")
             continue
-        report.max_abs_error = max(report.max_abs_error, _error(plan, branch, known, matches[0]))
+        report.max_abs_error = max(report.max_abs_error, _error(plan, branch, sample.known, matches[0]))
         report.compared += 1
     for key in by_label:
         report.failures.append(f"numeric solution labelled {dict(key)} has no real closed-form branch")
