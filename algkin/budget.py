@@ -3,9 +3,10 @@
 A python-flint resultant or Gröbner basis is one C call that no signal interrupts, so a
 time budget runs the work in a forked child process that is killed at the deadline; the
 result comes back pickled. The child reports what it is doing (``note``), so the message
-says what was being eliminated when time ran out. A terms budget is checked after every
-resultant and Gröbner basis. An elimination called without a budget, inside a budget's
-``run()``, counts against that budget (``current()``).
+says what was being eliminated when time ran out; the parent shows it as progress
+(``algkin.progress``), since the child does not write to the terminal itself. A terms budget
+is checked after every resultant and Gröbner basis. An elimination called without a budget,
+inside a budget's ``run()``, counts against that budget (``current()``).
 
 No child outlives its parent: the kernel kills it when the parent dies (Linux), and the
 parent kills and joins it however ``run()`` ends, an exception raised by a signal included.
@@ -33,6 +34,7 @@ import signal
 import sys
 import time
 
+from . import progress
 from .errors import BudgetExceeded, ComputationError, UsageError
 
 __all__ = ["Budget", "current", "bind_to_parent"]
@@ -82,10 +84,12 @@ class Budget:
         return self
 
     def note(self, doing):
-        """Say what is being computed now, for the message if the time runs out."""
+        """Say what is being computed now, for the message if the time runs out, and as progress."""
         self.doing = doing
         if self._report is not None:
-            self._report.send(("doing", doing))
+            self._report.send(("doing", doing))  # the parent shows it
+        else:
+            progress.stage(doing)
 
     def check_terms(self, count, what):
         """Raise BudgetExceeded if ``what`` (an intermediate eliminant) has more than ``terms`` terms."""
@@ -120,6 +124,7 @@ class Budget:
     def _child(self, function, report, parent_pid):
         bind_to_parent(parent_pid)
         self._report = report
+        progress.hand_over(lambda event: report.send(("progress", event)))
         try:
             outcome = ("done", self._within(function))
         except BaseException as err:  # noqa: BLE001 - every failure goes back to the parent
@@ -141,9 +146,8 @@ class Budget:
                 process.join()
                 raise ComputationError(f"the process {self.doing} ended without an answer "
                                        f"(exit code {process.exitcode})") from None
-            if kind != "doing":
+            if not self._noted(kind, value):
                 return self._outcome(kind, value)
-            self.doing = value
 
     def _overtime(self, pipe, process):
         """Past the deadline: kill the child, then read only what it had sent already.
@@ -154,11 +158,21 @@ class Budget:
         process.kill()
         process.join()
         for kind, value in _already_sent(pipe):
-            if kind != "doing":
+            if not self._noted(kind, value):
                 return self._outcome(kind, value)
-            self.doing = value
         elapsed = self.seconds - (self.deadline - time.monotonic())
         raise BudgetExceeded(f"max_seconds={self.seconds:g}: stopped after {elapsed:.2f} s while {self.doing}")
+
+    def _noted(self, kind, value):
+        """Take a note from the child, what it is doing or other progress, and show it: whether it was one."""
+        if kind == "doing":
+            self.doing = value
+            progress.stage(value)
+        elif kind == "progress":
+            progress.replay(value)
+        else:
+            return False
+        return True
 
     @staticmethod
     def _outcome(kind, value):

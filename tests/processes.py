@@ -4,10 +4,15 @@ Every process is started in a new session, so that a test that finds it hanging 
 worker orphaned) can kill the whole group and fail instead of hanging itself.
 """
 
+import fcntl
 import os
+import pty
 import signal
+import struct
 import subprocess
 import sys
+import termios
+import threading
 import time
 from pathlib import Path
 
@@ -50,6 +55,40 @@ def run(argv, timeout):
         return finish(process, timeout)
     finally:
         kill_group(process)
+
+
+def run_on_terminal(argv, timeout, columns=200):
+    """``(exit code, stdout, what was written to stderr, wall seconds)`` of ``python argv...``, its
+    stdout a pipe and its stderr a terminal ``columns`` wide (a pseudo-terminal, which writes a
+    newline as ``\r\n``); as ``run``, within ``timeout`` and nothing left running."""
+    screen, terminal = pty.openpty()
+    fcntl.ioctl(terminal, termios.TIOCSWINSZ, struct.pack("HHHH", 24, columns, 0, 0))
+    try:
+        process = start(argv, stderr=terminal)
+    finally:
+        os.close(terminal)  # the process has its own: once it (and its workers) end, reading ends
+    written = []
+    reader = threading.Thread(target=_read_all, args=(screen, written), daemon=True)
+    reader.start()  # read as it writes: a full terminal would block the process
+    try:
+        code, out, _, wall = finish(process, timeout)
+    finally:
+        kill_group(process)
+        reader.join(timeout=10)
+        os.close(screen)
+    return code, out, b"".join(written).decode(), wall
+
+
+def _read_all(fd, written):
+    """Read ``fd`` into the list ``written`` until the other end is closed (EIO, on Linux)."""
+    while True:
+        try:
+            data = os.read(fd, 4096)
+        except OSError:
+            return
+        if not data:
+            return
+        written.append(data)
 
 
 def kill_group(process):

@@ -16,6 +16,7 @@ import os
 import platform
 from dataclasses import dataclass
 
+from .. import progress
 from ..eliminate import BACKENDS, DEFAULT_METHOD, METHODS
 from . import specialise
 from .agree import PASSING, Agreement, Verdict, agreement, from_sympy, portable, rebuild
@@ -62,42 +63,47 @@ def _cpuinfo():
         return []
 
 
-def bench(problems=None, methods=None, backends=None, budget=60.0, peers=True, progress=None, rounds=ROUNDS):
-    """Time every method x backend (and peers) on every problem; a ``BenchReport``."""
-    methods = list(methods or METHODS)
-    backends = list(backends or BACKENDS)
+def bench(problems=None, methods=None, backends=None, budget=60.0, peers=True, rounds=ROUNDS):
+    """Time every method x backend (and peers) on every problem; a ``BenchReport``. Within
+    ``algkin.progress.shown()``, the row being measured shows, and the count of rows measured once."""
+    from .engines import PEERS
+
+    names = problems or problem_names()
+    pairs = sorted({(m, b) for m in methods or METHODS for b in backends or BACKENDS} | {DEFAULT})
     rows = []
-    for name in problems or problem_names():
-        rows += _problem_rows(build(name), methods, backends, budget, peers, progress, rounds)
+    with progress.counting(len(names) * (len(pairs) + 1 + (len(PEERS) if peers else 0)), "rows"):
+        for name in names:
+            rows += _problem_rows(build(name), pairs, budget, peers, rounds)
     return BenchReport(rows, machine())
 
 
-def _problem_rows(problem, methods, backends, budget, peers, progress, rounds):
+def _problem_rows(problem, pairs, budget, peers, rounds):
     task = problem.task
     side = [e for e in task.equations if not ({str(v) for v in e.free_symbols} & set(task.eliminate))]
     results = {}
-    pairs = sorted({(m, b) for m in methods for b in backends} | {DEFAULT})
     for method, backend in pairs:
-        _say(progress, f"{problem.name}: {method} / {backend}")
+        progress.stage(f"{problem.name}: {method} / {backend}")
         seconds, summary, note = measure(lambda m=method, b=backend: task.run(m, b), _summary, budget)
         results[(method, backend)] = {"problem": problem.name, "method": method, "backend": backend,
                                       "seconds": seconds, **(summary or _empty()), "note": note}
-    _say(progress, f"{problem.name}: algkin default path, end to end")
+        progress.step()
+    progress.stage(f"{problem.name}: algkin default path, end to end")
     seconds, summary, note = measure(problem.end_to_end, lambda result: _end_summary(result, task.keep[0]), budget)
+    progress.step()
     rows = list(results.values())
     rows.append({"problem": problem.name, "method": "default path, end to end", "backend": "flint",
                  "seconds": seconds, **(summary or _empty()), "note": note})
     if peers:
-        rows += _peer_rows(problem, budget, progress)
-    _rounds(problem, rows, budget, progress, rounds)
-    _verdicts(task, rows, side, budget, progress)
+        rows += _peer_rows(problem, budget)
+    _rounds(problem, rows, budget, rounds)
+    _verdicts(task, rows, side, budget)
     default = results[DEFAULT]["seconds"]
     for row in rows:
         row["ratio"] = row["seconds"] / default if row["seconds"] and default else None
     return rows
 
 
-def _verdicts(task, rows, side, budget, progress):
+def _verdicts(task, rows, side, budget):
     """Set each row's ``agrees`` (the verdict's string) and add what it was checked against
     to its note: the reference row, then, unless that is the Gröbner basis over flint, the
     fresh eliminations at random rational specialisations, which every row must also pass."""
@@ -107,7 +113,7 @@ def _verdicts(task, rows, side, budget, progress):
     flint_side = [from_sympy(e, keep) for e in side]
     found = []
     if name != "Gröbner basis over flint":
-        _say(progress, f"{rows[0]['problem']}: fresh eliminations at random rational specialisations")
+        progress.stage(f"{rows[0]['problem']}: fresh eliminations at random rational specialisations")
         found = [specialise.fresh(task, values, budget)
                  for values in specialise.specialisations(task, side, SPECIALISATIONS, seed=17)]
     for row in rows:
@@ -158,7 +164,7 @@ def _peer_problem(problem):
     return PeerProblem(problem.name, tuple(str(e) for e in task.equations), task.eliminate, task.keep)
 
 
-def _rounds(problem, rows, budget, progress, rounds):
+def _rounds(problem, rows, budget, rounds):
     """Measure every row that finished within ``ROUND_CAP`` again, in turn, ``rounds`` times
     in all; each keeps its least time. The machine's speed drifts over seconds (a shared
     virtual machine: up to 2x), and a ratio of two rows is only fair when each had its
@@ -174,14 +180,14 @@ def _rounds(problem, rows, budget, progress, rounds):
 
     quick = [row for row in rows if row["seconds"] and row["seconds"] < ROUND_CAP] if rounds > 1 else []
     for round_ in range(2, rounds + 1):
-        _say(progress, f"{problem.name}: round {round_} of {rounds}")
+        progress.stage(f"{problem.name}: round {round_} of {rounds}")
         for row in quick:
             row["seconds"] = min(filter(None, [row["seconds"], again(row)]))
     for row in quick:
         row["note"] = "; ".join(filter(None, [row["note"], f"best of {rounds} rounds"]))
 
 
-def _peer_rows(problem, budget, progress):
+def _peer_rows(problem, budget):
     from .engines import PEERS
     from .peers import parse, polynomial_ring
 
@@ -189,8 +195,9 @@ def _peer_rows(problem, budget, progress):
     peer_problem = _peer_problem(problem)
     rows = []
     for engine, run in PEERS.items():
-        _say(progress, f"{problem.name}: {engine}")
+        progress.stage(f"{problem.name}: {engine}")
         result = run(peer_problem, budget)
+        progress.step()
         row = {"problem": problem.name, "method": engine, "backend": "peer", "seconds": result.seconds_per_run,
                **_empty(), "note": result.note}
         if result.polynomial is not None:
@@ -199,8 +206,3 @@ def _peer_rows(problem, budget, progress):
             row.update(degree=max(sum(m) for m, _, _ in terms), terms=len(terms), form=(task.keep, terms))
         rows.append(row)
     return rows
-
-
-def _say(progress, message):
-    if progress is not None:
-        progress(message)

@@ -16,6 +16,7 @@ import os
 import statistics
 import time
 
+from .. import progress
 from ..budget import bind_to_parent
 
 __all__ = ["measure", "MIN_SECONDS", "MIN_REPEATS"]
@@ -41,6 +42,7 @@ def measure(run, summarize, budget):
 
 def _child(run, summarize, pipe, budget, parent_pid):
     bind_to_parent(parent_pid)
+    progress.hand_over(None)  # the stages of every run repeated would only flicker: the parent says the row
     try:
         start = time.perf_counter()
         result = run()

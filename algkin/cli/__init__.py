@@ -2,8 +2,10 @@
 
 Exit codes: 0 done, 1 a computation failed, a check did not hold or the budget ran out,
 2 bad input, 128 + N stopped by signal N (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP), 141 stdout
-closed early. Whatever the outcome, stderr holds at most one line, and with --json stdout
-holds one JSON document (``{"error": ...}`` when there is no result).
+closed early. Whatever the outcome, stderr holds at most one line once the command ends, and
+with --json stdout holds one JSON document (``{"error": ...}`` when there is no result). While
+it runs, a terminal's stderr shows its progress (not with --quiet), cleared before that line
+and before anything is written to stdout.
 
 A command computes its whole output, text or JSON, inside its budget (``--max-seconds``),
 in a forked child when there is a time budget; the parent only starts it, waits, and writes.
@@ -16,6 +18,7 @@ import functools
 import json
 import sys
 
+from .. import progress
 from ..errors import AlgkinError, BudgetExceeded, SceneError, UsageError
 from .commands import COMMANDS
 from .parser import build_parser, usage
@@ -42,7 +45,8 @@ def main(argv=None):
     with _stopping_signals():
         try:
             args = build_parser().parse_args(argv)
-            text, code, *files = _run(args)
+            with progress.shown(args.quiet):  # ended, and its line cleared, before anything is said
+                text, code, *files = _run(args)
             _save(*files)
             return _write(text, code)  # a signal while writing (to a slow reader) is caught too
         except _Stopped as stop:

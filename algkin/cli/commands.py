@@ -4,7 +4,6 @@ makes, computed inside the command's budget (``algkin.cli.main`` runs it and wri
 import json
 import math
 import pathlib
-import sys
 
 from ..errors import UsageError
 from .reports import (_extremum_forms, _latex_lines, _render, _report_accuracy, _report_curve, _report_derive,
@@ -33,11 +32,7 @@ def _cmd_bench(args):
         from ..files import check_directory
 
         check_directory("--out", args.out)
-    progress = _progress if sys.stderr.isatty() else None  # a terminal watches; a log or a pipe does not
-    report = bench(args.problems, args.methods, args.backends, args.budget, not args.no_peers, progress,
-                   args.rounds)
-    if progress:
-        print(file=sys.stderr)
+    report = bench(args.problems, args.methods, args.backends, args.budget, not args.no_peers, args.rounds)
     written = write(report, args.out) if args.out else []
     if args.json:
         text = json.dumps(report.to_json(), indent=2) + "\n"
@@ -48,11 +43,6 @@ def _cmd_bench(args):
     # not finish have no verdict); "not compared" fails: nothing checked that eliminant
     agree = all(r["agrees"] is None or r["agrees"] in {str(k) for k in PASSING} for r in report.rows)
     return text, 0 if agree else 1
-
-
-def _progress(message):
-    """One status line, rewritten in place."""
-    print(f"\r\033[Kalgkin bench: {message}", end="", file=sys.stderr, flush=True)
 
 
 def _scene_of(args, params=None):

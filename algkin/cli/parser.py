@@ -37,6 +37,11 @@ def _scene(parser):
                         help="an exact value for a dimension (3/2, 0.1 = 1/10, sqrt(2)); repeatable")
 
 
+def _quiet(parser, default=False):
+    parser.add_argument("--quiet", action="store_true", default=default,
+                        help="show no progress on stderr (shown only while stderr is a terminal)")
+
+
 def _json(parser, what="the whole result"):
     parser.add_argument("--json", action="store_true", help=f"one JSON document on stdout: {what}")
 
@@ -98,6 +103,7 @@ def build_parser():
                      formatter_class=_Help)
     parser.add_argument("--version", action="version", version=f"algkin {__version__}",
                         help="print the version and exit")
+    _quiet(parser)
     commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser, metavar="command",
                                      help="one of the commands below; `algkin COMMAND --help` for its options")
     listing = _command(commands, "list", "the catalog")
@@ -173,6 +179,9 @@ def build_parser():
                        help="rows under 2 s are measured this many times in turn, each keeping its best")
     bench.add_argument("--out", help="directory for bench.json, bench.csv and bench.png")
     _json(bench)
+    for command in commands.choices.values():
+        # after the command too; SUPPRESS: not given there, it leaves the value given before the command
+        _quiet(command, default=argparse.SUPPRESS)
     return parser
 
 

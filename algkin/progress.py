@@ -1,0 +1,132 @@
+"""Progress on stderr: one status line saying the stage (what ``Budget.note`` says) and, while a
+loop counts its steps, how far it is.
+
+Shown only inside ``shown()``, which the command line enters unless ``--quiet``, and which shows
+nothing unless stderr is a terminal: a pipe or a log gets no progress, and neither does a call
+from Python (``algkin.derive(...)``) outside it. The choice lives in a context variable, so it
+ends with the block, and tqdm is imported only when something is shown.
+
+A forked worker never writes to the terminal: ``hand_over`` sends what it would show to its
+parent, which shows it (``replay``), or drops it.
+
+>>> stage("compiling")  # not shown: no shown() block
+>>> [n for n in counted(range(3))]
+[0, 1, 2]
+"""
+
+import contextlib
+import contextvars
+import sys
+
+__all__ = ["shown", "stage", "counting", "step", "counted", "hand_over", "replay"]
+
+# What shows an event: a status line's ``apply``, a worker's ``send`` to its parent, or None (silent).
+_DISPLAY = contextvars.ContextVar("algkin_progress", default=None)
+_STAGE = "{desc}"  # the status line between counts: the stage alone
+_COUNT = "{desc}: {n_fmt}/{total_fmt} {unit} |{bar}| [{elapsed}<{remaining}]"
+
+
+@contextlib.contextmanager
+def shown(quiet=False, stream=None):
+    """Within the block, show progress on ``stream`` (stderr) if it is a terminal and not ``quiet``;
+    the line is cleared when the block ends, so that what is written next starts clean."""
+    stream = sys.stderr if stream is None else stream
+    if quiet or not stream.isatty():
+        yield
+        return
+    line = _Line(stream)
+    token = _DISPLAY.set(line.apply)
+    try:
+        yield
+    finally:
+        _DISPLAY.reset(token)
+        with contextlib.suppress(OSError):  # the terminal is gone (hung up): nothing left to clear
+            line.close()
+
+
+def stage(text):
+    """Say the stage the work is at (shown in place of the one before)."""
+    _apply(("stage", text))
+
+
+@contextlib.contextmanager
+def counting(total, unit="steps"):
+    """Within the block, count ``total`` steps (``step()`` after each) under the stages said meanwhile;
+    one count at a time."""
+    _apply(("count", total, unit))
+    try:
+        yield
+    finally:
+        _apply(("count", None, unit))
+
+
+def step():
+    """One more step of the count under way done."""
+    _apply(("step",))
+
+
+def counted(iterable, unit="steps"):
+    """The items of ``iterable`` (a collection: its length is the total), each counted once done."""
+    with counting(len(iterable), unit):
+        for item in iterable:
+            yield item
+            step()
+
+
+def hand_over(send):
+    """In a worker just forked: the terminal is its parent's. What it would show goes to
+    ``send(event)``, for the parent to ``replay``, or with ``send=None`` nowhere."""
+    _DISPLAY.set(send if _DISPLAY.get() is not None else None)
+
+
+def replay(event):
+    """Show an event a worker handed over."""
+    _apply(event)
+
+
+def _apply(event):
+    show = _DISPLAY.get()
+    if show is not None:
+        with contextlib.suppress(OSError):  # progress is a courtesy: a lost terminal or parent stops no command
+            show(event)
+
+
+class _Line:
+    """The status line on a terminal: one tqdm bar, its text the stage, with a count while there is one."""
+
+    def __init__(self, stream):
+        # here, and not at the top: only a shown line pays for the import
+        from tqdm import tqdm
+
+        class Bar(tqdm):
+            # No monitor thread: it only tunes how often a fast loop redraws, and a process that
+            # forks workers (budgets) had better have no other thread, which could hold a lock.
+            monitor_interval = 0
+
+        self._bar = Bar(file=stream, total=None, bar_format=_STAGE, desc="algkin", leave=False, dynamic_ncols=True)
+
+    def apply(self, event):
+        kind, *details = event
+        getattr(self, f"_{kind}")(*details)
+
+    def _stage(self, text):
+        # one line: a newline would leave a line behind that the next update cannot clear
+        self._bar.set_description_str(f"algkin: {_one_line(text)}")
+
+    def _count(self, total, unit):
+        self._bar.unit = unit
+        self._bar.bar_format = _STAGE if total is None else _COUNT
+        self._bar.reset(float("inf") if total is None else total)  # tqdm's way to say "no total"
+
+    def _step(self):
+        self._bar.update()
+
+    def close(self):
+        self._bar.close()
+
+
+def _one_line(text):
+    """``text`` on one line, its control and bidi characters escaped (as the reports do)."""
+    from .cli.reports import terminal_safe
+
+    return terminal_safe(" ".join(str(text).split()))
