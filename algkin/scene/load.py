@@ -9,6 +9,7 @@ Traceback (most recent call last):
 algkin.errors.SceneError: bad.toml: points.A.fixed: unknown name 'q' (known: none)
 """
 
+import functools
 import os
 import re
 import stat
@@ -85,7 +86,20 @@ def _read(path):
 
 
 def load_scene_text(text, source="<scene>"):
-    """Parse and validate a scene given as TOML text; ``source`` names it in errors."""
+    """Parse and validate a scene given as TOML text; ``source`` names it in errors.
+
+    A text read before gives the same (immutable) scene again, without parsing it twice."""
+    if not isinstance(text, str) or not isinstance(source, str):
+        return _parse(text, source)
+    return _parsed(text, source)
+
+
+@functools.lru_cache(maxsize=64)
+def _parsed(text, source):
+    return _parse(text, source)
+
+
+def _parse(text, source):
     if len(text.encode("utf-8")) > MAX_SCENE_BYTES:
         raise SceneError(source, "", f"text larger than {MAX_SCENE_BYTES} bytes")
     try:

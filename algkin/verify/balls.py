@@ -59,7 +59,7 @@ class BlockCertifier:
         x = [arb(float(v)) for v in candidate]
         if self.linear:
             return self._linear(x, known)
-        if inverse is not None and np.isfinite(inverse).all():
+        if inverse is not None and not np.isnan(inverse[0, 0]):
             root = self._from_inverse(x, known, arb_mat(inverse.tolist()))
             if root is not None:
                 return root
@@ -74,6 +74,12 @@ class BlockCertifier:
 
     def _linear(self, x, known):
         """``x - J^-1 F(x)`` in balls: exactly the root, for every parameter in its ball."""
+        if self.n == 1:  # one division, no matrix
+            slope, = self.jacobian(*x, *known)
+            if not (slope > 0 or slope < 0):  # not proved nonzero: the root may not be unique
+                return None
+            root = x[0] - self.residual(*x, *known)[0] / slope
+            return [root] if root.is_finite() else None
         jacobian = arb_mat(self.n, self.n, self.jacobian(*x, *known))
         try:
             step = jacobian.solve(arb_mat(self.n, 1, self.residual(*x, *known)))

@@ -83,7 +83,7 @@ class _Plan:
     def __init__(self, system, indicators, branches, parameters, polynomials, factors):
         self.system = system
         self.blocks = blocks_of(system)
-        self.certifiers = [(block, certifier_of(block)) for block in self.blocks.blocks]
+        self.certifiers = [(block, certifier_of(block), certify_parameters(block)) for block in self.blocks.blocks]
         self.known = [v for v in system.variables if v not in system.unknowns]
         self.parameters = {n: Fraction(str(v)) for n, v in parameters.items()}
         # a polynomial may keep the dimensions symbolic: they take their exact values in it
@@ -228,15 +228,16 @@ class _Sample:
 def _certified(plan, angles, samples, rng, starts):
     """Set each sample's proved roots (and whether some candidate could not be proved)."""
     candidates = solve_floats(plan.blocks, plan.floats(angles), rng, starts)
+    rows = [np.stack([candidates.values[n] for n in block.names], axis=1).tolist() for block, _, _ in plan.certifiers]
+    lineage = [row.tolist() for row in candidates.lineage]
     proved = {}  # (block, partial solution) -> its unknowns' balls: candidates share their first blocks
     found = [([], False) for _ in samples]
-    for row, k in enumerate(candidates.owner):
+    for row, k in enumerate(candidates.owner.tolist()):
         balls = dict(zip(plan.known, samples[k].known))
-        for b, (block, certify) in enumerate(plan.certifiers):
-            key = (b, candidates.lineage[b][row])
+        for b, (block, certify, parameters) in enumerate(plan.certifiers):
+            key = (b, lineage[b][row])
             if key not in proved:
-                proved[key] = certify([candidates.values[n][row] for n in block.names],
-                                      [balls[n] for n in certify_parameters(block)], candidates.inverses[b][key[1]])
+                proved[key] = certify(rows[b][row], [balls[n] for n in parameters], candidates.inverses[b][key[1]])
             if proved[key] is None:
                 break
             balls.update(zip(block.names, proved[key]))

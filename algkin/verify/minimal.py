@@ -9,6 +9,7 @@ polynomial must be squarefree (both decided exactly, in python-flint). Nothing f
 elimination is reused.
 """
 
+import functools
 import math
 
 import sympy
@@ -55,10 +56,35 @@ class FactorCheck:
 
 def structure_failures(polynomials, factors):
     """Messages for every polynomial that is not squarefree, or is not the product of its
-    kept factors (when they are given)."""
-    failures = [_not_squarefree(name, p) for name, p in polynomials.items()]
-    failures += [_not_product(name, polynomials[name], fs) for name, fs in (factors or {}).items()
-                 if name in polynomials]
+    kept factors (when they are given). Exact and deterministic: an answer is kept for the
+    same polynomials checked again."""
+    failures = []
+    for name, p in polynomials.items():
+        kept = (factors or {}).get(name)
+        failures += _structure(name, _Keyed(p), None if kept is None else tuple(map(_Keyed, kept)))
+    return failures
+
+
+class _Keyed:
+    """A polynomial (flint or sympy) compared and hashed by its variables and printed terms."""
+
+    def __init__(self, polynomial):
+        self.polynomial = polynomial
+        names = polynomial.context().names() if hasattr(polynomial, "context") else ()
+        self.key = (type(polynomial).__name__, tuple(map(str, names)), str(polynomial))
+
+    def __eq__(self, other):
+        return self.key == other.key
+
+    def __hash__(self):
+        return hash(self.key)
+
+
+@functools.lru_cache(maxsize=256)
+def _structure(name, polynomial, factors):
+    failures = [_not_squarefree(name, polynomial.polynomial)]
+    if factors is not None:
+        failures.append(_not_product(name, polynomial.polynomial, [f.polynomial for f in factors]))
     return [f for f in failures if f]
 
 

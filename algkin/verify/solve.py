@@ -31,7 +31,7 @@ __all__ = ["Blocks", "Candidates", "blocks_of", "solve_floats", "STARTS"]
 
 STARTS = 8  # random Newton starts per sample and block; a sample that lacks a root retries with more
 STEPS = 60
-ABANDON_AFTER = 15  # Newton steps after which a start still far from vanishing is given up
+ABANDON_AFTER = 8  # Newton steps after which a start still far from vanishing is given up
 ABANDON_RESIDUAL = 1e-4  # relative to the squared scale: the equations are quadratic in lengths
 CONVERGED = 1e-13  # a Newton step this small (relative to the block's scale) ends the iteration
 SAME_ROOT = 1e-7  # end points closer than this (relative) are one root
