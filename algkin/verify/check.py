@@ -93,6 +93,8 @@ class _Plan:
         self.indicators = compile_program([expr for _, expr, _, _ in indicators], names, ARB)
         self.branches = [_Branch(labels, values, discriminants, self.known)
                          for labels, values, discriminants in branches]
+        # every branch's discriminants and closed forms in one program: they share subexpressions
+        self.closed = compile_program([e for b in self.branches for e in b.discriminants + b.values], self.known, ARB)
         self.polynomials = {n: Polynomial(p, names, dimensions) for n, p in (polynomials or {}).items()}
         self.factors = FactorCheck(factors, lambda f: Polynomial(f, names, dimensions), self.polynomials.values())
         self.index = {u: k for k, u in enumerate(system.unknowns)}
@@ -127,9 +129,8 @@ class _Branch:
     def __init__(self, labels, values, discriminants, known):
         self.key = tuple(sorted(labels.items()))
         self.unknowns = list(values)
-        self.values = compile_program(list(values.values()), known, ARB)
-        self.discriminants = compile_program(list(discriminants.values()), known, ARB)
-        self.discriminant_floats = compile_program(list(discriminants.values()), known, NUMPY)
+        self.values, self.discriminants = list(values.values()), list(discriminants.values())
+        self.discriminant_floats = compile_program(self.discriminants, known, NUMPY)
 
     def real_floats(self, floats, known):
         count = len(next(iter(floats.values())))
@@ -213,10 +214,15 @@ class _Sample:
     doubtful: bool = False  # some candidate could not be proved: near a degenerate configuration
     labels: list = field(default_factory=list)  # per root, ``None`` where an indicator's sign is undecided
     real: list = field(default_factory=list)  # per branch: True, False, or None near its boundary
+    values: list = field(default_factory=list)  # per branch, its closed forms in balls
 
     def classify(self, plan):
         self.labels = [_labels(plan, root, self.known) for root in self.roots]
-        self.real = [_real(branch, self.known) for branch in plan.branches]
+        closed = iter(plan.closed(*self.known))
+        self.real, self.values = [], []
+        for branch in plan.branches:
+            self.real.append(_real([next(closed) for _ in branch.discriminants]))
+            self.values.append([next(closed) for _ in branch.values])
 
     def lacks_a_root(self, plan):
         """Whether some branch decided real has no root of its label (Newton may have missed it)."""
@@ -232,8 +238,9 @@ def _certified(plan, angles, samples, rng, starts):
     lineage = [row.tolist() for row in candidates.lineage]
     proved = {}  # (block, partial solution) -> its unknowns' balls: candidates share their first blocks
     found = [([], False) for _ in samples]
+    known = [dict(zip(plan.known, sample.known)) for sample in samples]
     for row, k in enumerate(candidates.owner.tolist()):
-        balls = dict(zip(plan.known, samples[k].known))
+        balls = dict(known[k])
         for b, (block, certify, parameters) in enumerate(plan.certifiers):
             key = (b, lineage[b][row])
             if key not in proved:
@@ -278,9 +285,9 @@ def _labels(plan, root, known):
     return tuple(sorted(labels.items()))
 
 
-def _real(branch, known):
-    """``True`` or ``False`` where the branch is decided real or not, ``None`` near its boundary."""
-    values = branch.discriminants(*known)
+def _real(values):
+    """``True`` or ``False`` where the branch (its discriminants' ``values``) is decided real or not,
+    ``None`` near its boundary."""
     if all(v > 0 for v in values):
         return True
     return False if any(v < 0 for v in values) else None
@@ -340,23 +347,23 @@ def _compare(report, plan, sample):
     by_label = {}
     for labels, root in zip(sample.labels, sample.roots):
         by_label.setdefault(labels, []).append(root)
-    for branch, real in zip(plan.branches, sample.real):
+    for branch, real, values in zip(plan.branches, sample.real, sample.values):
         if not real:
             continue
         matches = by_label.pop(branch.key, [])
         if len(matches) != 1:
             report.failures.append(f"branch {dict(branch.key)}: {len(matches)} numeric solutions with its label")
             continue
-        report.max_abs_error = max(report.max_abs_error, _error(plan, branch, sample.known, matches[0]))
+        report.max_abs_error = max(report.max_abs_error, _error(plan, branch, values, matches[0]))
         report.compared += 1
     for key in by_label:
         report.failures.append(f"numeric solution labelled {dict(key)} has no real closed-form branch")
 
 
-def _error(plan, branch, known, root):
+def _error(plan, branch, values, root):
     """The largest distance between the closed form and the root it must equal (an upper bound)."""
     error = 0.0
-    for unknown, value in zip(branch.unknowns, branch.values(*known)):
+    for unknown, value in zip(branch.unknowns, values):
         gap = abs(value - root[plan.index[unknown]])
         error = max(error, float(gap.upper().mid()) if gap.is_finite() else float("inf"))
     return error

@@ -1,0 +1,40 @@
+"""Compiled programs give what the tree walker gives, in every number kind, and keep balls exact."""
+
+import flint
+import numpy as np
+import sympy
+from hypothesis import given, settings, strategies as st
+
+from algkin.evaluate import ARB, FLOAT, NUMPY, evaluate
+from algkin.evaluate.program import compile_program
+
+x, y = sympy.symbols("x y", real=True)
+EXPRESSIONS = [sympy.sqrt(x**2 + 3 * y**2 + 1) / 7 - x * y**3, 1 / (x**2 + 1), sympy.sqrt(2) * x,
+               sympy.Abs(x - y) ** 3, (x + sympy.Rational(1, 3)) ** -2]
+
+
+@settings(max_examples=50, deadline=None)
+@given(st.floats(-5, 5), st.floats(-5, 5))
+def test_a_program_equals_the_tree_walker_in_floats(a, b):
+    compiled = compile_program(EXPRESSIONS, ["x", "y"], FLOAT)(a, b)
+    walked = [evaluate(e, {"x": a, "y": b}, FLOAT) for e in EXPRESSIONS]
+    assert np.allclose(compiled, walked, rtol=1e-13, atol=1e-13)
+
+
+def test_arrays_are_evaluated_elementwise():
+    a, b = np.array([0.5, -2.0]), np.array([1.0, 3.0])
+    compiled = compile_program(EXPRESSIONS, ["x", "y"], NUMPY)(a, b)
+    for value, expr in zip(compiled, EXPRESSIONS):
+        assert np.allclose(value, [float(expr.subs({x: p, y: q})) for p, q in zip(a, b)])
+
+
+def test_balls_enclose_the_exact_value_at_the_callers_precision():
+    # at x = 1/3 exactly (a ball from a rational): 1/(x**2 + 1) = 9/10
+    with flint.ctx.workprec(300):
+        value = compile_program([1 / (x**2 + 1)], ["x"], ARB)(flint.arb(1) / 3)[0]
+        assert value.contains(flint.arb(9) / 10) and value.rad() < 1e-85
+
+
+def test_an_even_power_of_a_ball_around_zero_stays_finite():
+    value = compile_program([x**2 + 4], ["x"], ARB)(flint.arb(0, 1e-30))[0]
+    assert value.is_finite() and value.contains(4)
