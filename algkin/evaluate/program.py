@@ -107,7 +107,10 @@ class _Program:
         n = int(exponent)
         if n == 1:
             return base
-        raised = f"power({base}, {abs(n)})" if abs(n) > 1 else base
+        if abs(n) == 2 and base.isidentifier():  # a square: a product inline, no call
+            raised = f"({base} * {base})"
+        else:
+            raised = f"power({base}, {abs(n)})" if abs(n) > 1 else base
         return raised if n > 0 else f"(1 / {raised})"
 
 

@@ -17,6 +17,7 @@ from fractions import Fraction
 import flint
 import numpy as np
 
+from .. import progress
 from ..evaluate import ARB, NUMPY
 from ..evaluate.program import compile_program
 from .balls import certifier_of, certify_parameters
@@ -31,6 +32,7 @@ TOLERANCE = 1e-30  # relative residual a polynomial must reach on every root (th
 MAX_ERROR = 1e-27  # a closed form's largest distance from the root of its label
 MAX_DRAWS = 50  # inputs drawn per sample asked for, looking for where the mechanism assembles
 RETRY_STARTS = 8 * STARTS
+CHUNK = 500  # samples solved and proved together
 
 
 @dataclass
@@ -152,7 +154,8 @@ def verify_branches(system, indicators, branches, inputs, parameters, samples=50
     rng = np.random.default_rng(seed)
     report = Verification(0, 0.0, False)
     useful = drawn = 0
-    with flint.ctx.workprec(WORKING_BITS):  # the plan's exact dimensions become balls at this precision
+    with flint.ctx.workprec(WORKING_BITS), progress.counting(samples, "samples"):
+        # the plan's exact dimensions become balls at this working precision
         plan = _Plan(system, indicators, branches, parameters, polynomials, factors)
         worst = {n: 0.0 for n in plan.polynomials}
         # An input where the mechanism does not assemble compares nothing. The first ``samples``
@@ -162,9 +165,12 @@ def verify_branches(system, indicators, branches, inputs, parameters, samples=50
         while useful < samples and drawn < samples * MAX_DRAWS and report.samples < 2 * samples:
             angles, drawn = _batch(plan, inputs, rng, drawn, samples - useful, 2 * samples - report.samples,
                                    samples * MAX_DRAWS, first=not drawn)
-            if not len(next(iter(angles.values()), [None])):
+            count = len(next(iter(angles.values()), [None]))
+            if not count:
                 break
-            useful += _check_batch(report, plan, angles, rng, worst)
+            for start in range(0, count, CHUNK):  # in chunks, so that progress shows on long runs
+                useful += _check_batch(report, plan, {n: a[start:start + CHUNK] for n, a in angles.items()},
+                                       rng, worst)
     report.max_polynomial_residual = dict(worst)
     _require_comparisons(report, bool(branches), bool(plan.polynomials))
     report.smallest_factor_residual = plan.factors.to_json()
@@ -201,7 +207,9 @@ def _check_batch(report, plan, angles, rng, worst):
     for sample, sizes in zip(samples, magnitudes):
         before = (report.compared, report.evaluated)
         _check_sample(report, plan, sample, sizes, worst)
-        useful += (report.compared, report.evaluated) != before
+        if (report.compared, report.evaluated) != before:
+            useful += 1
+            progress.step()
     return useful
 
 
