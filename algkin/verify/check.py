@@ -22,7 +22,7 @@ from ..evaluate import ARB, NUMPY
 from ..evaluate.program import compile_program
 from .balls import certifier_of, certify_parameters
 from .minimal import FactorCheck, structure_failures
-from .residual import Polynomial
+from .residual import polynomial_of
 from .solve import STARTS, blocks_of, solve_floats
 
 __all__ = ["Verification", "verify_branches", "WORKING_BITS"]
@@ -97,8 +97,8 @@ class _Plan:
                          for labels, values, discriminants in branches]
         # every branch's discriminants and closed forms in one program: they share subexpressions
         self.closed = compile_program([e for b in self.branches for e in b.discriminants + b.values], self.known, ARB)
-        self.polynomials = {n: Polynomial(p, names, dimensions) for n, p in (polynomials or {}).items()}
-        self.factors = FactorCheck(factors, lambda f: Polynomial(f, names, dimensions), self.polynomials.values())
+        self.polynomials = {n: polynomial_of(p, names, dimensions) for n, p in (polynomials or {}).items()}
+        self.factors = FactorCheck(factors, lambda f: polynomial_of(f, names, dimensions), self.polynomials.values())
         self.index = {u: k for k, u in enumerate(system.unknowns)}
 
     def floats(self, angles):

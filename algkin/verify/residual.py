@@ -30,7 +30,22 @@ import sympy
 from ..evaluate import ARB
 from ..system.convert import flint_context, to_flint
 
-__all__ = ["Polynomial", "exact"]
+__all__ = ["Polynomial", "exact", "polynomial_of"]
+
+
+def polynomial_of(polynomial, names, fixed=None):
+    """The ``Polynomial`` of ``polynomial``, built once for the same terms, names and values."""
+    poly = exact(polynomial)
+    key = (tuple(map(str, poly.context().names())), str(poly), tuple(names),
+           tuple(sorted((n, str(v)) for n, v in (fixed or {}).items())))
+    if key not in _BUILT:
+        _BUILT[key] = Polynomial(poly, names, fixed)
+        while len(_BUILT) > 256:
+            _BUILT.pop(next(iter(_BUILT)))
+    return _BUILT[key]
+
+
+_BUILT = {}
 
 
 def exact(polynomial):
