@@ -3,29 +3,34 @@
 The compiled system ``F(X; c, s) = 0`` (the construction's circle and line equations plus the
 outputs' defining equations) is solved in python-flint balls, every sample at once: each
 quantity is a numpy array of ``arb`` (one per sample), so the Python overhead of an operation
-is paid once per batch, not per sample.
+is paid once per batch, not per sample. The system is triangular by construction: each dyad
+or slider's two equations involve only its own point and earlier ones. So it is certified
+one construction at a time (a 2 x 2 system, its equations as the construction writes them,
+unexpanded, checked equal to the system's), the earlier points entering as their enclosures:
 
 1. a float starting point straight from the construction (each dyad's two circles met in
-   the textbook way, on the side its label names; each slider's line and circle likewise;
-   explicit outputs from their formulas);
+   the textbook way, on the side its label names; each slider's line and circle likewise);
 2. Newton steps in ``arb`` at the working precision: ``x <- mid(x - Y F(x))`` with ``Y`` the
-   inverse of ``J(x)`` (Gauss-Jordan, the pivot chosen per sample); from a float start two
-   steps reach 2**-200 (53 -> 106 -> 212 bits), near a toggle more;
-3. once a step is below 2**-90 of the root's size, one Krawczyk step on a small box ``X``
-   around the iterate ``x``, with the last ``Y``:
-   ``K = x - Y F(x) + (I - Y J(X)) (X - x)``; ``K`` inside the interior of ``X`` *proves* that
-   ``X`` holds exactly one root, and that root lies in ``K``. (Any ``Y`` makes the test sound;
-   a good one makes it pass.) A sample whose box does not contract takes another Newton step;
+   inverse of ``J(x)`` (by its adjugate); from a float start one step reaches about 2**-106,
+   near a toggle it takes more, and a sample whose steps stop shrinking is given up;
+3. once a step ``d`` is below 2**-40 of the root's size, one Krawczyk step on the box ``X`` of
+   half-width ``2**20 d**2`` (Newton's next error is ``C d**2``; at least 2**-140) around the
+   iterate ``x``, with the last ``Y``: ``K = x - Y F(x) + (I - Y J(X)) (X - x)``, the earlier
+   points' enclosures in ``F`` and ``J``. ``K`` inside the interior of ``X`` *proves* that, for
+   every earlier point in its enclosure, ``X`` holds exactly one root, and that it lies in
+   ``K``. (Any ``Y`` makes the test sound; a good one makes it pass.) A sample whose box does
+   not contract takes another Newton step;
 4. each branch indicator (``cross(Q - P, X - P)`` for a dyad) is evaluated on ``K``: its sign
    must be decided and must be the label's, so the root is the labelled one. Near a double
    root Newton may cross to the other branch: such a sample starts again from the start's
    mirror image away from the root it found. A sample still not certified (past a toggle,
    where the branch does not assemble) is reported as such.
 
-An explicit output (a distance, a frame point) enters through its defining equation
-(``u - value = 0``, ``u**2 - |PQ|**2 = 0``): its enclosure is the formula's value, evaluated in
-balls. The condition number comes from the same system by the implicit function theorem:
-``dX/dtheta = -J_X^-1 (-s dF/dc + c dF/ds)``.
+An explicit output (a distance, a frame point) is defined by a formula in the constructed
+points (its equation ``u - value = 0`` or ``u**2 - |PQ|**2 = 0``): its enclosure is that
+formula evaluated in balls on theirs. The condition number comes from the same system by the
+implicit function theorem, construction by construction:
+``dX/dtheta = -J_X^-1 (dF/dtheta + dF/dE dE/dtheta)`` with ``E`` the earlier points.
 """
 
 from dataclasses import dataclass
@@ -90,7 +95,11 @@ class _Balls:
 
 
 class Reference:
-    """Certified configurations of one compiled scene, labelled by its branch (see the module)."""
+    """Certified configurations of one compiled scene, labelled by its branch (see the module).
+
+    ``unknowns``, ``equations``, ``indicators`` and ``expected`` are the whole system's, for
+    a solver that takes it at once (accuracy's ``numeric`` strategy).
+    """
 
     def __init__(self, compiled, branch, outputs):
         defaults = {symbol(n): sympy.Rational(str(v)) for n, v in compiled.parameter_values.items()}
@@ -100,18 +109,28 @@ class Reference:
         self.cs = (symbol(c), symbol(s))
         self.unknowns = [symbol(u) for u in system.unknowns]
         self.outputs = [system.unknowns.index(u) for u in outputs]
-        self.n = len(self.unknowns)
-        arguments = self.unknowns + list(self.cs)
         self.equations = [fix(e) for e in system.equations if not e.free_symbols <= set(self.cs)]
-        self.f = _Balls(self.equations, arguments)
-        self.j = _Balls(sympy.Matrix(self.equations).jacobian(self.unknowns), arguments)
-        moved = sympy.Matrix(self.equations).jacobian(self.cs) * sympy.Matrix([-self.cs[1], self.cs[0]])
-        self.moved = _Balls(moved, arguments)  # dF/dtheta = -s dF/dc + c dF/ds
         labels = [i for i in compiled.indicators if i.point in branch.labels]
         self.indicators = [fix(i.expr) for i in labels]
         self.expected = np.array([i.chosen == i.positive for i in labels], dtype=bool)  # positive?
-        self.signs = _Balls(self.indicators, arguments)
         self.start = _Start(compiled, fix, self.cs)
+        self.stages, earlier = [], []
+        for spec in compiled.implicit:
+            mine = [symbol(u) for u in spec.unknowns]
+            equations = _written(spec, fix)
+            # the system's own equations of this construction, expanded: the same polynomials
+            assert [sympy.expand(e) for e in equations] == \
+                [e for e in self.equations if e.free_symbols & set(mine)
+                 and e.free_symbols <= set(mine + earlier + list(self.cs))], spec.point
+            signs = [(e, x) for e, x, i in zip(self.indicators, self.expected, labels) if i.point == spec.point]
+            self.stages.append(_Stage(equations, mine, earlier, self.cs, signs, self._at(mine), self._at(earlier)))
+            earlier = earlier + mine
+        explicit = [symbol(u) for u in system.unknowns if symbol(u) not in earlier]
+        self.explicit = _Explicit([fix(compiled.definitions[str(u)]) for u in explicit], earlier, self.cs,
+                                  self._at(explicit), self._at(earlier))
+
+    def _at(self, unknowns):
+        return np.array([self.unknowns.index(u) for u in unknowns], dtype=int)
 
     def __call__(self, theta):
         """``(points, kappas)``: the outputs (rows) per sample (columns) and each condition number."""
@@ -124,30 +143,121 @@ class Reference:
     def certify(self, theta):
         """Every sample's certified labelled root (see the module), or ``ok`` false."""
         theta = np.asarray(theta, dtype=float)
-        start = self.start(theta).T
-        ok = np.zeros(theta.size, dtype=bool)
-        roots, y = np.full((theta.size, self.n), None), np.full((theta.size, self.n, self.n), None)
+        ok = np.ones(theta.size, dtype=bool)
+        roots, slopes = (np.full((theta.size, len(self.unknowns)), None) for _ in range(2))
         with ctx.workprec(BITS):
             cs = _sin_cos(_balls(theta))[::-1]
-            found, enclosures, inverses = self._roots(start, cs)
-            roots[found], y[found] = enclosures, inverses
-            labelled = self._labelled(enclosures, cs, found)
-            ok[found[labelled]] = True
-            wrong = found[~labelled]
-            if wrong.size:
-                # Near a double root Newton may cross to the other branch: start again from the
-                # start's mirror image away from the root it found.
-                mirror = 2 * start[wrong] - roots[wrong].astype(float)
-                again, enclosures, inverses = self._roots(mirror, tuple(v[wrong] for v in cs))
-                roots[wrong[again]], y[wrong[again]] = enclosures, inverses
-                ok[wrong[again[self._labelled(enclosures, cs, wrong[again])]]] = True
+            self._construct(self.start(theta).T, cs, ok, roots, slopes)
+            live = np.flatnonzero(ok)
+            self.explicit(roots, slopes, live, tuple(v[live] for v in cs))
+            # an explicit output's formula may fail on the enclosures (a square root reaching below 0)
+            ok[live] = np.isfinite(roots[live][:, self.outputs].astype(float)).all(axis=1)
             roots[~ok] = None
-            kappas = self._kappas(theta, roots, y, cs, np.flatnonzero(ok))
-        points = np.full((len(self.outputs), theta.size), np.nan)
-        points[:, ok] = roots[ok][:, self.outputs].astype(float).T
+            points = np.full((len(self.outputs), theta.size), np.nan)
+            points[:, ok] = roots[ok][:, self.outputs].astype(float).T
+            kappas = np.full(theta.size, np.nan)
+            kappas[ok] = _kappas(theta[ok], points[:, ok], slopes[ok][:, self.outputs].astype(float).T)
         return Certified(ok, roots, points, kappas)
 
-    def _roots(self, start, cs):
+    def _construct(self, start, cs, ok, roots, slopes):
+        """Certifies each construction in turn on the samples ``ok`` so far (see the module),
+        filling in ``roots`` and ``slopes``; a sample that fails one is ``ok`` no more."""
+        for stage in self.stages:
+            live = np.flatnonzero(ok)
+            given = (*roots[live][:, stage.earlier].T, *(v[live] for v in cs))
+            done, enclosures, inverses = stage.certify(start[live][:, stage.at], given)
+            ok[live] = False
+            ok[live[done]] = True
+            roots[np.ix_(live[done], stage.at)] = enclosures
+            slopes[np.ix_(live[done], stage.at)] = stage.slopes(
+                enclosures, tuple(v[done] for v in given), inverses, slopes[live[done]][:, stage.earlier])
+
+
+def _written(spec, fix):
+    """A construction's two equations as it writes them (unexpanded: the circles about P and Q,
+    or the slider's line and circle), which take fewer operations in balls than expanded."""
+    x, y = (symbol(u) for u in spec.unknowns)
+    if isinstance(spec, SliderSpec):
+        (px, py), (dx, dy), (qx, qy) = spec.through, spec.direction, spec.center
+        equations = [dx * (y - py) - dy * (x - px), (x - qx) ** 2 + (y - qy) ** 2 - spec.length**2]
+    else:
+        (px, py), (qx, qy), (l1, l2) = spec.base_p, spec.base_q, spec.lengths
+        equations = [(x - px) ** 2 + (y - py) ** 2 - l1**2, (x - qx) ** 2 + (y - qy) ** 2 - l2**2]
+    return [fix(e) for e in equations]
+
+
+def _kappas(theta, points, slopes):
+    """``|dX/dtheta| |theta| / |X|`` (outputs x samples), plus one for the rounding of the result."""
+    return np.abs(theta) * np.sqrt((slopes**2).sum(axis=0)) / np.sqrt((points**2).sum(axis=0)) + 1
+
+
+class _Explicit:
+    """Explicit unknowns: their formulas in the constructed points, evaluated on the enclosures."""
+
+    def __init__(self, definitions, earlier, cs, at, given_at):
+        arguments = earlier + list(cs)
+        c, s = cs
+        self.at, self.given_at = at, given_at
+        self.values = _Balls(definitions, arguments)
+        matrix = sympy.Matrix(definitions)
+        self.moved = _Balls(matrix.jacobian(cs) * sympy.Matrix([-s, c]), arguments) if definitions else None
+        self.pushed = _Balls(matrix.jacobian(earlier), arguments) if definitions and earlier else None
+
+    def __call__(self, roots, slopes, live, cs):
+        """Fills ``roots`` and ``slopes`` of the samples ``live`` (rows) at the explicit unknowns."""
+        if not (self.at.size and live.size):
+            return
+        given = (*roots[live][:, self.given_at].T, *cs)
+        roots[np.ix_(live, self.at)] = self.values(*given)
+        slope = self.moved(*given)
+        if self.pushed is not None:
+            pushed = self.pushed(*given).reshape(live.size, self.at.size, self.given_at.size)
+            slope = slope + (pushed @ slopes[live][:, self.given_at, None])[:, :, 0]
+        slopes[np.ix_(live, self.at)] = slope
+
+
+class _Stage:
+    """One dyad or slider's unknowns, certified with the earlier points' enclosures (see the module)."""
+
+    def __init__(self, equations, mine, earlier, cs, signs, at, earlier_at):
+        arguments = mine + earlier + list(cs)
+        c, s = cs
+        self.n, self.at, self.earlier = len(mine), at, earlier_at  # positions in the system's unknowns
+        matrix = sympy.Matrix(equations)
+        self.f = _Balls(equations, arguments)
+        self.j = _Balls(matrix.jacobian(mine), arguments)
+        self.moved = _Balls(matrix.jacobian(cs) * sympy.Matrix([-s, c]), arguments)  # dF/dtheta, points held
+        self.pushed = _Balls(matrix.jacobian(earlier), arguments) if earlier else None
+        self.signs = _Balls([e for e, _ in signs], arguments)
+        self.expected = np.array([x for _, x in signs], dtype=bool)
+
+    def certify(self, start, given):
+        """The positions (in ``start``: samples x my unknowns) certified on the label's side,
+        their enclosures and the inverse Jacobians (points) their proofs used."""
+        found, enclosures, inverses = self._roots(start, given)
+        labelled = self._labelled(enclosures, given, found)
+        wrong = found[~labelled]
+        done = [(found[labelled], enclosures[labelled], inverses[labelled])]
+        if wrong.size:
+            # Near a double root Newton may cross to the other branch: start again from the
+            # start's mirror image away from the root it found.
+            mirror = 2 * start[wrong] - enclosures[~labelled].astype(float)
+            again, enclosures, inverses = self._roots(mirror, tuple(v[wrong] for v in given))
+            labelled = self._labelled(enclosures, given, wrong[again])
+            done.append((wrong[again[labelled]], enclosures[labelled], inverses[labelled]))
+        return tuple(np.concatenate(part) for part in zip(*done))
+
+    def slopes(self, roots, given, inverses, earlier):
+        """``dX/dtheta`` at the enclosures ``roots``, given the earlier points' slopes ``earlier``
+        (``inverses``, of ``J`` at the last Newton iterate, are within ``C |step|`` of the
+        root's: ample for a float condition number)."""
+        moved = self.moved(*roots.T, *given)
+        if self.pushed is not None:
+            pushed = self.pushed(*roots.T, *given).reshape(len(roots), self.n, -1)
+            moved = moved + (pushed @ earlier[:, :, None])[:, :, 0]
+        return -(inverses @ moved[:, :, None])[:, :, 0]
+
+    def _roots(self, start, given):
         """Newton then Krawczyk from ``start`` (samples x unknowns): the positions certified, their
         enclosures and the inverse Jacobians (points) their proofs used."""
         size = np.abs(start).max(axis=1)
@@ -162,14 +272,14 @@ class Reference:
         for _ in range(NEWTON_STEPS):
             if not active.size:
                 break
-            at = (*x[active].T, *(v[active] for v in cs))
+            at = (*x[active].T, *(v[active] for v in given))
             fx = self.f(*at)
             trying = step[active] < CLOSE
             if trying.any():
                 tried = active[trying]
                 radius = size[tried] * np.maximum(MARGIN * step[tried] ** 2, BOX)
                 k, inside = self._krawczyk(x[tried], fx[trying], inverse[tried], radius,
-                                           tuple(v[tried] for v in cs))
+                                           tuple(v[tried] for v in given))
                 done.append((tried[inside], k[inside], inverse[tried[inside]]))
                 going = ~trying
                 going[trying] = ~inside  # a box that did not contract: one more Newton step
@@ -186,52 +296,28 @@ class Reference:
             active = active[stalled[active] < STALL]
         return tuple(np.concatenate(part) for part in zip(*done))
 
-    def _krawczyk(self, x, fx, y, radius, cs):
+    def _krawczyk(self, x, fx, y, radius, given):
         """``(K, inside)``: the Krawczyk image of the box ``x +- radius`` and whether it lies inside."""
         box = x + _box(radius)[:, None]
-        over = self.j(*box.T, *cs).reshape(-1, self.n, self.n)
+        over = self.j(*box.T, *given).reshape(-1, self.n, self.n)
         contract = np.eye(self.n, dtype=int) - y @ over
         k = x - (y @ fx[:, :, None])[:, :, 0] + (contract @ (box - x)[:, :, None])[:, :, 0]
         # |K - x| < radius (decided) puts K inside the open box, whose ball X holds at least that
         return k, np.asarray(np.abs(k - x) < radius[:, None], dtype=bool).all(axis=1)
 
-    def _labelled(self, roots, cs, where):
+    def _labelled(self, roots, given, where):
         """Per enclosure (``roots``, of the samples ``where``): every indicator's sign decided, and the label's."""
         if not where.size:
             return np.zeros(0, dtype=bool)
-        values = self.signs(*roots.T, *(v[where] for v in cs))
+        values = self.signs(*roots.T, *(v[where] for v in given))
         positive, negative = np.asarray(values > 0, dtype=bool), np.asarray(values < 0, dtype=bool)
         return np.where(self.expected, positive, negative).all(axis=1)
-
-    def _kappas(self, theta, roots, y, cs, where):
-        """``|dX/dtheta| |theta| / |X|`` over the outputs, plus one for the rounding of the result
-        (``y``, the inverse of ``J_X`` at the last Newton iterate, is within ``C |step|`` of the
-        root's: ample for a float)."""
-        kappas = np.full(theta.size, np.nan)
-        if not where.size:
-            return kappas
-        x = roots[where]
-        moved = self.moved(*x.T, *(v[where] for v in cs))
-        slope = (y[where] @ moved[:, :, None])[:, self.outputs, 0].astype(float)
-        size = np.sqrt((x[:, self.outputs].astype(float) ** 2).sum(axis=1))
-        kappas[where] = np.abs(theta[where]) * np.sqrt((slope**2).sum(axis=1)) / size + 1
-        return kappas
-
-
 def _inverse(matrix):
-    """Per sample (``matrix``: samples x n x n of balls), Gauss-Jordan on ``[A | I]``, each
-    column's pivot the row whose midpoint is largest in size."""
-    count, n, _ = matrix.shape
-    work = np.concatenate([matrix, np.broadcast_to(np.eye(n, dtype=int), (count, n, n))], axis=2)
-    samples = np.arange(count)
-    for k in range(n):
-        pivot = k + np.nan_to_num(np.abs(work[:, k:, k].astype(float)), nan=-1).argmax(axis=1)
-        work[samples, k], work[samples, pivot] = work[samples, pivot], work[samples, k]
-        # columns before k + 1 are read no more: only the right-hand side is kept up to date
-        work[:, k, k + 1:] = work[:, k, k + 1:] / work[:, k, k, None]
-        others = np.arange(n) != k
-        work[:, others, k + 1:] = work[:, others, k + 1:] - work[:, others, k, None] * work[:, None, k, k + 1:]
-    return work[:, :, n:]
+    """Per sample (``matrix``: samples x 2 x 2 of balls), the inverse by its adjugate: every
+    construction has two unknowns. A determinant ball holding 0 gives NaN, which certifies nothing."""
+    (a, b), (c, d) = matrix[:, 0].T, matrix[:, 1].T
+    det = a * d - b * c
+    return np.stack([np.stack([d, -b], axis=1), np.stack([-c, a], axis=1)], axis=1) / det[:, None, None]
 
 
 def _float_function(exprs, arguments):

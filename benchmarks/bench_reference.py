@@ -1,7 +1,7 @@
 """The certified reference of ``algkin accuracy``: per-sample time, before and after, in one run.
 
-Three ways to the truth at the same float64 angles of a scene's first dyad point, each at
-200 bits:
+Three ways to the truth at the same float64 angles of an output of a scene (a dyad point, a
+frame point, a point on a dyad on a dyad), each at 200 bits:
 
 - ``mpmath``: the reference ``accuracy`` had first: the branch's closed form evaluated in
   mpmath at 61 digits, the condition number by a central difference (three evaluations);
@@ -18,7 +18,7 @@ others' time over the vectorised one's. The run asserts that the three agree: th
 vectorised enclosures' midpoints within 1e-30 (relative) of the mpmath values and of the
 scalar arb enclosures, the floats identical.
 
-Run: ``python benchmarks/bench_reference.py [--samples N] [--scenes NAME ...]``.
+Run: ``python benchmarks/bench_reference.py [--samples N] [--scenes SCENE:OUTPUT ...]``.
 """
 
 import argparse
@@ -30,21 +30,22 @@ import numpy as np
 import sympy
 from flint import arb, arb_mat, ctx
 
-from algkin.accuracy import _Subject
+from algkin.branches import closed_forms
 from algkin.evaluate import MPMATH, evaluate
-from algkin.reference import BITS
-from algkin.scene import load_scene
-from algkin.system import symbol
+from algkin.reference import BITS, Reference
+from algkin.scene import compile_scene, load_scene
 
-SCENES = ("chebyshev-lambda", "fourbar", "fourbar-near-toggle")
+# (scene, output): a dyad point, then a frame point on one, then points on a dyad on a dyad
+SCENES = (("chebyshev-lambda", "B"), ("fourbar", "B"), ("fourbar-near-toggle", "B"), ("chebyshev-lambda", "P"),
+          ("stephenson-iii", "F"), ("watt-i", "P"))
 AGREE = 1e-30  # relative: far below float64, far above 200 bits
 
 
-def mpmath_reference(subject, theta):
+def mpmath_reference(branch, cs, unknowns, theta):
     """The closed form at 61 digits (200 bits), kappa by a central difference: ``(points, kappas)``."""
-    c, s = subject.c, subject.s
-    at = lambda a: [evaluate(subject.branch.values[u], {c: mpmath.cos(a), s: mpmath.sin(a)}, MPMATH)  # noqa: E731
-                    for u in subject.unknowns]
+    c, s = cs
+    at = lambda a: [evaluate(branch.values[u], {c: mpmath.cos(a), s: mpmath.sin(a)}, MPMATH)  # noqa: E731
+                    for u in unknowns]
     points, kappas = [], []
     with mpmath.workdps(61):
         step = mpmath.mpf(10) ** -25
@@ -66,7 +67,7 @@ class ScalarReference:
         self.f = _arb_function(reference.equations, arguments)
         self.j = _arb_function(sympy.Matrix(reference.equations).jacobian(arguments), arguments)
         self.signs = _arb_function(reference.indicators, arguments)
-        self.expected, self.n, self.outputs = reference.expected, reference.n, reference.outputs
+        self.expected, self.n, self.outputs = reference.expected, len(reference.unknowns), reference.outputs
         self.start = reference.start
 
     def __call__(self, theta):
@@ -136,9 +137,8 @@ def _columns(matrix, n):
 
 
 def timed(run, repeats):
-    """``(result, median seconds)`` over ``repeats`` runs after a warm-up (none for one repeat)."""
-    if repeats > 1:
-        run()
+    """``(result, median seconds)`` over ``repeats`` runs after a warm-up."""
+    run()
     times, result = [], None
     for _ in range(repeats):
         start = time.perf_counter()
@@ -151,15 +151,16 @@ def _relative(a, b, size):
     return float(abs(a - b) / size)
 
 
-def bench(name, samples, repeats):
-    point = next(n for n, p in load_scene(name).points.items() if type(p).__name__ == "Dyad")
-    subject = _Subject(load_scene(name), point)
+def bench(name, output, samples, repeats):
+    compiled = compile_scene(load_scene(name), [output])
+    branch = next(b for b in closed_forms(compiled) if b.selected)
+    (unknowns,) = compiled.outputs.values()
+    reference = Reference(compiled, branch, unknowns)
     theta = np.sort(np.random.default_rng(0).uniform(0, 2 * np.pi, samples))
-    reference = subject.reference
-    outputs = [reference.unknowns[i] for i in reference.outputs]
-    assert [symbol(u) for u in subject.unknowns] == outputs
-    (exact, _), mpmath_seconds = timed(lambda: mpmath_reference(subject, theta), 1)
-    scalar, scalar_seconds = timed(lambda: ScalarReference(reference)(theta), 1)
+    cs = next(iter(compiled.system.inputs.values()))
+    (exact, _), mpmath_seconds = timed(lambda: mpmath_reference(branch, cs, unknowns, theta), 1)
+    scalar_reference = ScalarReference(reference)
+    scalar, scalar_seconds = timed(lambda: scalar_reference(theta), 1)
     new, new_seconds = timed(lambda: reference.certify(theta), repeats)
     assert new.ok.all()
     worst = 0.0
@@ -175,7 +176,7 @@ def bench(name, samples, repeats):
     assert np.array_equal(new.points, np.array([[float(r[0][i].mid()) for r in scalar] for i in reference.outputs]))
     assert np.allclose(new.kappas, [r[1] for r in scalar], rtol=1e-6)
     per = lambda seconds: seconds / samples * 1e6  # noqa: E731
-    return {"scene": name, "samples": samples, "mpmath_us": per(mpmath_seconds),
+    return {"scene": f"{name} {output}", "samples": samples, "mpmath_us": per(mpmath_seconds),
             "scalar_us": per(scalar_seconds), "vectorised_us": per(new_seconds),
             "mpmath_ratio": mpmath_seconds / new_seconds, "scalar_ratio": scalar_seconds / new_seconds,
             "agreement": worst}
@@ -185,13 +186,14 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--samples", type=int, default=200)
     parser.add_argument("--repeats", type=int, default=5)
-    parser.add_argument("--scenes", nargs="+", default=list(SCENES))
+    parser.add_argument("--scenes", nargs="+", metavar="SCENE:OUTPUT",
+                        default=[f"{name}:{output}" for name, output in SCENES])
     args = parser.parse_args()
-    print(f"{'scene':20} {'samples':>7} {'mpmath us':>10} {'scalar arb us':>13} {'vectorised us':>13} "
+    print(f"{'scene, output':22} {'samples':>7} {'mpmath us':>10} {'scalar arb us':>13} {'vectorised us':>13} "
           f"{'mpmath/vect':>11} {'scalar/vect':>11} {'|vect - mpmath| (rel)':>22}")
-    for name in args.scenes:
-        r = bench(name, args.samples, args.repeats)
-        print(f"{r['scene']:20} {r['samples']:7} {r['mpmath_us']:10.1f} {r['scalar_us']:13.1f} "
+    for pair in args.scenes:
+        r = bench(*pair.split(":"), args.samples, args.repeats)
+        print(f"{r['scene']:22} {r['samples']:7} {r['mpmath_us']:10.1f} {r['scalar_us']:13.1f} "
               f"{r['vectorised_us']:13.1f} {r['mpmath_ratio']:10.0f}x {r['scalar_ratio']:10.1f}x "
               f"{r['agreement']:22.1e}")
 

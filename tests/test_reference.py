@@ -70,10 +70,12 @@ def test_four_bar_equals_its_circles_met_by_hand(four_bar):
         assert certified.points[:, k].tolist() == [float(v) for v in exact]  # correctly rounded
 
 
-def test_frame_point_equals_mpmath_newton_on_the_equations():
-    # chebyshev-lambda's P = A + 2 (B - A): unknowns B and P; mpmath's findroot polishes the
-    # reference's float root to 60 digits, from the scene's own equations.
-    compiled, reference = _reference(load_scene("chebyshev-lambda"), "P")
+@pytest.mark.parametrize("name, of", [("chebyshev-lambda", "P"), ("watt-i", "P"), ("arm-string", "AB")])
+def test_equals_mpmath_newton_on_the_whole_system(name, of):
+    # A frame point on a dyad (chebyshev-lambda), a dyad on a dyad (watt-i), a distance with no
+    # dyad (arm-string): mpmath's findroot polishes the reference's float root to 60 digits,
+    # from the scene's own equations taken all at once.
+    compiled, reference = _reference(load_scene(name), of)
     theta = np.array([0.1, 1.0, 2.5, 4.0, 6.0])
     certified = reference.certify(theta)
     assert certified.ok.all()
