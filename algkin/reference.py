@@ -66,7 +66,7 @@ class Certified:
     """Per sample: whether it is certified, and where it is, its enclosure, outputs and condition."""
 
     ok: np.ndarray  # bool
-    roots: np.ndarray  # samples x unknowns, arb (the Krawczyk enclosures; None where not ok)
+    roots: np.ndarray  # samples x unknowns, arb (Krawczyk's enclosures, explicit ones by formula; None if not ok)
     points: np.ndarray  # outputs x samples, float (nan where not ok)
     kappas: np.ndarray  # float (nan where not ok)
 
