@@ -31,6 +31,7 @@ test: $(STAMP) browser
 bench: $(STAMP)
 	@status=0; $(BIN)/algkin bench --budget 60 --out bench-results || status=$$?; \
 	$(BIN)/python benchmarks/bench_evaluation.py && \
+	$(BIN)/python benchmarks/bench_reference.py && \
 	$(BIN)/python benchmarks/bench_ideas.py && \
 	$(BIN)/python benchmarks/bench_widget.py && \
 	$(BIN)/python benchmarks/bench_floor.py && exit $$status

@@ -9,10 +9,19 @@ samples of the input:
 - ``stabilised``: ``branches.stable.StableBranch`` (local frame, sorted Heron) for dyad and
   slider points; an explicit output from those with its offsets cancelled exactly (a distance
   is the ``hypot`` of exact coordinate differences);
-- ``numeric``: Newton on the original equations, started from the construction at the previous
-  sample (six steps);
+- ``numeric``: float Newton on the original equations, what a user's solver would do:
+  continuation (started from the construction at the previous sample), iterated while the
+  step shrinks (at most ``NEWTON_STEPS``), then checked: converged (last step within
+  ``SOLVED`` of the root's size) and on the labelled branch (each indicator's sign, in float,
+  the label's). A sample that fails either is ``unsolved``: counted in the row (its
+  ``unsolved`` field and a note) and left out of its errors, since an unconverged answer, or
+  the other branch's, compared against the truth says nothing of the strategy's accuracy.
+  Far from the origin the expanded equations' terms (1e14 at 1e7) cancel in its residual:
+  converged, it is still some 1e7 kappa eps off there;
 - ``reference``: ``reference.Reference``, the root of the original equations certified by a
   Krawczyk step in arb at 200 bits and labelled by side: nothing of the closed form enters.
+  Every sample of a case is certified at once (numpy arrays of balls); its time is per
+  certified sample, the ones it cannot certify included in it.
 
 Errors are against the reference. ``condition`` is the relative condition number of the
 output in the input angle from the system's Jacobian, ``|theta| * |X'(theta)| / |X|`` (plus
@@ -25,12 +34,12 @@ cannot certify (on the side of a toggle where the branch does not assemble) is l
 """
 
 import dataclasses
+import functools
 import time
 from dataclasses import dataclass
 
 import numpy as np
 import sympy
-from flint import ctx
 
 from .branches import closed_forms
 from .branches.closed_form import reduce_on_circles
@@ -38,7 +47,7 @@ from .branches.stable import StableBranch
 from . import validation
 from .errors import UsageError
 from .pipeline import certify_labels, derive
-from .reference import BITS, NotCertified, Reference
+from .reference import BITS, Reference
 from .scene import compile_scene
 from .scene.compile import _resolve_outputs
 from .scene.load import as_scene
@@ -54,6 +63,8 @@ TOGGLE_OFFSETS = (1e-6, 1e-10, 1e-14)
 NEAR_FOLD = 1e-2  # a discriminant factor's smallest value, relative to its largest
 FAR = 10**7
 ROUNDING_FLOOR = 4  # err/(kappa eps) that a handful of correctly rounded operations reach
+NEWTON_STEPS = 40  # the numeric strategy's most steps: continuation starts are near, a few suffice
+SOLVED = 2.0**-26  # its last step, relative to the root's size, when it counts as converged
 
 
 @dataclass
@@ -79,7 +90,7 @@ class _Subject:
             (self.compiled.implicit[-1] if self.compiled.implicit else None)
         self.stable = _StableOutput(self.compiled, self.branch, of)
         self.reference = Reference(self.compiled, self.branch, self.unknowns)
-        self.newton = _Newton(self.compiled, self.reference)
+        self.newton = _Newton(self.reference)
         derived = derive(scene, [of], samples=0)
         cs = (symbol(self.c), symbol(self.s))
         self.solved = {u: [sympy.lambdify(cs, r, "numpy")
@@ -116,26 +127,53 @@ class _StableOutput:
 
 
 class _Newton:
-    """Float Newton on the original equations, vectorised: the ``numeric`` strategy."""
+    """Float Newton on the original equations, vectorised: the ``numeric`` strategy.
 
-    def __init__(self, compiled, reference):
-        defaults = {symbol(n): sympy.Rational(str(v)) for n, v in compiled.parameter_values.items()}
-        equations = [e.xreplace(defaults) for e in compiled.system.equations
-                     if not e.free_symbols <= set(reference.cs)]
+    Each sample starts from the construction at the previous sample's input (continuation; the
+    first sample from the last's) and iterates while its step shrinks (at most ``NEWTON_STEPS``).
+    It is solved when its last step is within ``SOLVED`` of its size and every indicator has
+    the label's sign (in float) there; otherwise it is NaN: unconverged or on the other branch.
+    """
+
+    def __init__(self, reference):
         arguments = reference.unknowns + list(reference.cs)
-        self.f = sympy.lambdify(arguments, equations, "numpy")
-        self.j = sympy.lambdify(arguments, sympy.Matrix(equations).jacobian(reference.unknowns), "numpy")
+        self.f = sympy.lambdify(arguments, reference.equations, "numpy")
+        self.j = sympy.lambdify(arguments, sympy.Matrix(reference.equations).jacobian(reference.unknowns).tolist(),
+                                "numpy")
+        self.signs = sympy.lambdify(arguments, reference.indicators, "numpy")
+        self.expected = reference.expected[:, None]
         self.start, self.outputs = reference.start, reference.outputs
 
     def __call__(self, theta):
-        """Six steps from the construction at the previous sample's input (the first: the last's)."""
+        """The outputs (rows) per sample (columns); NaN where the sample is not solved."""
         x = self.start(np.roll(theta, 1))
         c, s = np.cos(theta), np.sin(theta)
-        for _ in range(6):
-            f = np.array([np.broadcast_to(v, theta.shape) for v in self.f(*x, c, s)])
-            j = np.array([[np.broadcast_to(v, theta.shape) for v in row] for row in self.j(*x, c, s)])
-            x = x - _solve(j, f)
+        last = np.full(theta.shape, np.inf)  # each sample's last step, relative to the root's size
+        going = np.ones(theta.shape, dtype=bool)
+        with np.errstate(invalid="ignore"):
+            for _ in range(NEWTON_STEPS):
+                step = _solve(_matrix(self.j(*x[:, going], c[going], s[going]), going.sum()),
+                              _matrix(self.f(*x[:, going], c[going], s[going]), going.sum()))
+                x[:, going] -= step
+                size = np.maximum(np.abs(x[:, going]).max(axis=0), np.finfo(float).tiny)
+                relative = np.abs(step).max(axis=0) / size
+                shrinking = relative < last[going]
+                last[going] = relative
+                going[going] = shrinking & (relative > 0)
+                if not going.any():
+                    break
+            signs = _matrix(self.signs(*x, c, s), theta.size)
+            labelled = np.where(self.expected, signs > 0, signs < 0).all(axis=0)
+        x[:, ~(labelled & (last <= SOLVED))] = np.nan
         return x[self.outputs]
+
+
+def _matrix(values, count):
+    """lambdify's nested lists (a constant entry is a number) as floats, the ``count`` samples last."""
+    if not values:  # no indicator: nothing to check
+        return np.zeros((0, count))
+    return np.array([_matrix(v, count) if isinstance(v, list) else np.broadcast_to(v, (count,)) for v in values],
+                    dtype=float)
 
 
 def _solve(j, f):
@@ -169,18 +207,32 @@ def _timed(run, repeats=3):
     return result, best
 
 
-def _row(strategy, case, theta, estimate, seconds, truth, kappa, note=""):
-    error = np.sqrt(((estimate - truth) ** 2).sum(axis=0))
-    size = np.sqrt((truth**2).sum(axis=0))
-    relative = error / size
-    finite = np.isfinite(relative)
+def _row(strategy, case, theta, estimate, seconds, truth, kappa, note="", solved=None):
+    """One strategy's row; its errors over the ``solved`` samples (default: all)."""
+    solved = np.ones(theta.size, dtype=bool) if solved is None else solved
+    error = np.sqrt(((estimate - truth)[:, solved] ** 2).sum(axis=0))
+    relative = error / np.sqrt((truth[:, solved] ** 2).sum(axis=0))
     row = {"strategy": strategy, "case": case, "samples": int(theta.size),
            "ns_per_sample": seconds / theta.size * 1e9,
-           "max_abs_error": float(np.max(error)) if finite.all() else float("inf"),
-           "max_rel_error": float(np.max(relative)) if finite.all() else float("inf"),
+           "max_abs_error": _worst(error), "max_rel_error": _worst(relative),
            "condition": float(np.max(kappa)),
-           "error_over_kappa_eps": float(np.max(relative / (kappa * EPS))) if finite.all() else float("inf")}
+           "error_over_kappa_eps": _worst(relative / (kappa[solved] * EPS))}
     return dict(row, note=note) if note else row
+
+
+def _worst(errors):
+    """The largest error; infinite if one is not finite, or if nothing was compared."""
+    return float(np.max(errors)) if errors.size and np.isfinite(errors).all() else float("inf")
+
+
+def _numeric_row(case, theta, estimate, seconds, truth, kappa):
+    """The numeric strategy's row: errors over the samples it solved, the others counted as
+    ``unsolved`` (an unconverged or wrong-branch answer compared would flatter the others)."""
+    solved = np.isfinite(estimate).all(axis=0)
+    unsolved = int(theta.size - solved.sum())
+    note = (f"{unsolved} of {theta.size} samples unsolved (not converged, or on the other branch); "
+            "the errors are over the others") if unsolved else ""
+    return dict(_row("numeric", case, theta, estimate, seconds, truth, kappa, note, solved), unsolved=unsolved)
 
 
 STRATEGIES = ("closed-form", "stabilised", "numeric")
@@ -188,18 +240,8 @@ STRATEGIES = ("closed-form", "stabilised", "numeric")
 
 def _certified(subject, theta):
     """``(theta, truth, kappa)`` on the samples the reference certifies (the others do not assemble)."""
-    keep, truth, kappas = [], [], []
-    starts = subject.reference.start(theta)
-    with ctx.workprec(BITS):
-        for k, angle in enumerate(theta):
-            try:
-                root, kappa = subject.reference.one(float(angle), starts[:, k])
-            except (NotCertified, ZeroDivisionError, ValueError):
-                continue
-            keep.append(k)
-            truth.append([float(root[i].mid()) for i in subject.reference.outputs])
-            kappas.append(kappa)
-    return theta[keep], np.array(truth).reshape(-1, len(subject.unknowns)).T, np.array(kappas)
+    certified = subject.reference.certify(theta)
+    return theta[certified.ok], certified.points[:, certified.ok], certified.kappas[certified.ok]
 
 
 def _rows(subject, case, theta):
@@ -212,7 +254,8 @@ def _rows(subject, case, theta):
     rows = []
     for name in STRATEGIES:
         estimate, seconds = _timed(runs[name])
-        rows.append(_row(name, case, theta, estimate, seconds, truth, kappa))
+        row = _numeric_row if name == "numeric" else functools.partial(_row, name)
+        rows.append(row(case, theta, estimate, seconds, truth, kappa))
     _explain(*rows[:2])
     rows.append(_row("reference", case, theta, truth, reference_seconds, truth, kappa))
     return rows

@@ -27,6 +27,7 @@ def test_every_case_of_the_spec_is_measured(rows):
     cases = {r["case"] for r in rows}
     assert {"uniform", "toggle-1e-06", "toggle-1e-10", "toggle-1e-14", "far-1e7"} <= cases
     assert {r["strategy"] for r in rows} == {"closed-form", "stabilised", "numeric", "reference"}
+    assert all("unsolved" in r for r in rows if r["strategy"] == "numeric")
 
 
 def test_stabilised_is_within_ten_kappa_eps_everywhere(rows):
@@ -175,3 +176,40 @@ def test_translated_1e7_absolute_bound(rows):
     # keeps the offset out of the rounding, so the error is a few eps of the offset's own ulp.
     row = {r["strategy"]: r for r in rows if r["case"] == "far-1e7"}["stabilised"]
     assert row["max_abs_error"] <= 2 * np.spacing(2e7), row
+
+
+# The numeric strategy: float Newton to convergence, checked against the label, or unsolved.
+
+def test_numeric_reaches_the_labelled_root_or_counts_the_sample_unsolved():
+    # Non-Grashof: six float Newton steps from the neighbour's construction used to end
+    # unconverged or on the other branch (err/(kappa eps) 1.6e11 on uniform samples, 1.8e11
+    # near the toggles). 1e7 away the float equations themselves lose 7 digits: not compared.
+    by = _by(accuracy("fourbar-nongrashof", samples=200, seed=6))
+    numeric = {case: row for (strategy, case), row in by.items() if strategy == "numeric" and case != "far-1e7"}
+    assert {"uniform", "toggle-1e-14"} <= set(numeric)
+    for row in numeric.values():
+        assert row["error_over_kappa_eps"] <= C and row["unsolved"] <= row["samples"] // 10, row
+
+
+def test_numeric_marks_a_sample_that_ends_on_the_other_branch():
+    from algkin.accuracy import _Subject
+
+    # Continuation from -120 deg to +120 deg starts from the mirror image of the answer: Newton
+    # converges there, on the other branch, and the label's check says so.
+    subject = _Subject(load_scene("fourbar-nongrashof"), "B")
+    theta = np.radians([-120.0, 120.0])
+    truth, _ = subject.reference(theta)
+    estimate = subject.newton(theta)
+    assert np.abs(estimate[:, 0] - truth[:, 0]).max() < 1e-14 and np.isnan(estimate[:, 1]).all()
+
+
+def test_numeric_row_counts_unsolved_samples_and_leaves_them_out():
+    from algkin.accuracy import _numeric_row
+
+    truth = np.array([[1.0, 2.0, 3.0]])
+    estimate = np.array([[1.0, np.nan, 3.0 + 4 * EPS]])
+    row = _numeric_row("uniform", np.array([0.1, 0.2, 0.3]), estimate, 3e-6, truth, np.ones(3))
+    assert (row["samples"], row["unsolved"], row["max_abs_error"]) == (3, 1, 4 * EPS)
+    assert row["ns_per_sample"] == pytest.approx(1000) and "1 of 3 samples unsolved" in row["note"]
+    nothing = _numeric_row("uniform", np.array([0.1]), np.array([[np.nan]]), 1e-6, truth[:, :1], np.ones(1))
+    assert nothing["unsolved"] == 1 and nothing["max_rel_error"] == float("inf")
