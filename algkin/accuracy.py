@@ -44,7 +44,8 @@ import sympy
 from .branches import closed_forms
 from .branches.closed_form import reduce_on_circles
 from .branches.stable import StableBranch
-from . import validation
+from . import progress, validation
+from .budget import current
 from .errors import UsageError
 from .pipeline import certify_labels, derive
 from .reference import BITS, Reference
@@ -345,7 +346,8 @@ def accuracy(scene, samples=2000, seed=0, set=None, of=None):  # noqa: A002 - th
     rng = np.random.default_rng(seed)
     subject = _Subject(scene, of)
     rows = []
-    for case, theta in _cases(subject, samples, rng).items():
+    current().note(f"measuring each strategy on {scene.name}")
+    for case, theta in progress.counted(_cases(subject, samples, rng).items(), "cases"):
         rows += _rows(subject, case, theta)
     far = _Subject(_translated(scene, FAR), of)
     rows += _rows(far, "far-1e7", _cases(far, samples, rng)["uniform"])
