@@ -22,8 +22,6 @@ Run: ``python benchmarks/bench_reference.py [--samples N] [--scenes SCENE:OUTPUT
 """
 
 import argparse
-import statistics
-import time
 
 import mpmath
 import numpy as np
@@ -34,6 +32,7 @@ from algkin.branches import closed_forms
 from algkin.evaluate import MPMATH, evaluate
 from algkin.reference import BITS, Reference
 from algkin.scene import compile_scene, load_scene
+from bench_evaluation import timed  # the same median-of-runs timer (this directory is on sys.path)
 
 # (scene, output): a dyad point, then a frame point on one, then points on a dyad on a dyad
 SCENES = (("chebyshev-lambda", "B"), ("fourbar", "B"), ("fourbar-near-toggle", "B"), ("chebyshev-lambda", "P"),
@@ -134,17 +133,6 @@ def _arb_function(exprs, arguments):
 
 def _columns(matrix, n):
     return arb_mat([[matrix[i, j] for j in range(n)] for i in range(matrix.nrows())])
-
-
-def timed(run, repeats):
-    """``(result, median seconds)`` over ``repeats`` runs after a warm-up."""
-    run()
-    times, result = [], None
-    for _ in range(repeats):
-        start = time.perf_counter()
-        result = run()
-        times.append(time.perf_counter() - start)
-    return result, statistics.median(times)
 
 
 def _relative(a, b, size):

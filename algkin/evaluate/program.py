@@ -27,6 +27,7 @@ import functools
 import sympy
 
 from .tree import ARB, FLOAT, MPMATH, NUMPY  # noqa: F401 - the kinds a program is compiled for
+from .tree import integer_power
 
 __all__ = ["compile_program"]
 
@@ -58,7 +59,7 @@ class _Program:
             self.arguments[name] = str(name)
             lines.append(f"    {name} = {self._code(expr)}")
         lines.append(f"    return [{', '.join(self._code(e) for e in reduced)}]")
-        scope = {"constants": self._constants, "power": _integer_power, "sqrt": kind.sqrt}
+        scope = {"constants": self._constants, "power": integer_power, "sqrt": kind.sqrt}
         exec(compile("\n".join(lines), "<algkin program>", "exec"), scope)  # noqa: S102 - our own code, from a sympy tree
         self.program = scope["program"]
         self._made = (None, None)
@@ -112,15 +113,3 @@ class _Program:
         else:
             raised = f"power({base}, {abs(n)})" if abs(n) > 1 else base
         return raised if n > 0 else f"(1 / {raised})"
-
-
-def _integer_power(base, n):
-    """``base**n`` (n >= 2) by squaring."""
-    result = None
-    while n:
-        if n & 1:
-            result = base if result is None else result * base
-        n >>= 1
-        if n:
-            base = base * base
-    return result

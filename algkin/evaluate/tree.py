@@ -74,7 +74,7 @@ def evaluate(expr, values, kind):
     return walk(sympy.sympify(expr))
 
 
-def _integer_power(base, n):
+def integer_power(base, n):
     """``base**n`` (n >= 1) by squaring: python-flint's ``arb ** int`` is nan on a ball around 0."""
     result = None
     while n:
@@ -89,9 +89,9 @@ def _integer_power(base, n):
 def _power(base, exponent, kind):
     if exponent.is_Integer:
         n = int(exponent)
-        return _integer_power(base, n) if n > 0 else kind.number(1, 1) / _integer_power(base, -n)
+        return integer_power(base, n) if n > 0 else kind.number(1, 1) / integer_power(base, -n)
     if exponent.is_Rational and exponent.q == 2:
         root = kind.sqrt(base)
         n = int(exponent.p)
-        return _integer_power(root, n) if n > 0 else kind.number(1, 1) / _integer_power(root, -n)
+        return integer_power(root, n) if n > 0 else kind.number(1, 1) / integer_power(root, -n)
     raise TypeError(f"cannot evaluate the power {exponent}")
