@@ -104,7 +104,7 @@ class BlockCertifier:
         return [arb((x[i] - step[i, 0]).mid()) for i in range(self.n)]
 
     def _krawczyk(self, x, known, inverse=None):
-        size = 1.0 + max(abs(float(v)) for v in x)
+        size = max(abs(float(v)) for v in x) or 1.0  # relative: a mechanism 1e-20 across is proved as tightly
         radius = arb(0, BOX * size)
         box = [v + radius for v in x]
         over_box = arb_mat(self.n, self.n, self.jacobian(*box, *known))

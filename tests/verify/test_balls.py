@@ -13,7 +13,7 @@ from hypothesis import given, settings, strategies as st
 
 from algkin.system import System, symbol
 from algkin.verify.balls import BlockCertifier
-from algkin.verify.solve import blocks_of, solve_floats
+from algkin.verify.solve import STARTS, blocks_of, solve_floats
 
 x, y, cx, cy = (symbol(n) for n in ("x", "y", "cx", "cy"))
 CIRCLES = [x**2 + y**2 - 4, (x - cx)**2 + (y - cy)**2 - 9]  # radii 2 about 0 and 3 about (cx, cy)
@@ -58,12 +58,13 @@ def test_a_point_far_from_any_root_is_not_proved():
     assert prove(3, 1, [-1.9, -3.0]) is None
 
 
-def test_the_solver_finds_both_intersections_for_every_sample():
+@pytest.mark.parametrize("starts", [STARTS, 8 * STARTS], ids=["pencil of the circles", "Newton (a retry)"])
+def test_the_solver_finds_both_intersections_for_every_sample(starts):
     system = System(("x", "y"), (), {"t": ("c", "s")},
                     (x**2 + y**2 - 4, (x - 3 * symbol("c"))**2 + (y - 3 * symbol("s"))**2 - 9))
     angles = np.linspace(0, 6, 25)
     found = solve_floats(blocks_of(system), {"c": np.cos(angles), "s": np.sin(angles)},
-                         np.random.default_rng(1))
+                         np.random.default_rng(1), starts)
     assert np.bincount(found.owner, minlength=25).tolist() == [2] * 25
     for k, angle in enumerate(angles):
         expected = sorted(tuple(float(v) for v in r) for r in textbook(3 * np.cos(angle), 3 * np.sin(angle)))
