@@ -300,16 +300,19 @@ def _load(scene, values, params, budget):
 
 def _curve_figures(result, variables):
     """Degree in the point's coordinates, and circularity: how many times ``x**2 + y**2``
-    divides the top-degree form (computed in the backend, no conversion)."""
-    engine = result.engine
-    parts = engine.split(result.raw, list(variables))
-    degree = max(sum(k) for k in parts)
-    top = engine.join({k: v for k, v in parts.items() if sum(k) == degree}, list(variables))
-    x, y = (symbol(v) for v in variables)
-    circle, count = engine.from_sympy(x**2 + y**2), 0
+    divides the top-degree form (in python-flint, on the exact eliminant, no conversion)."""
+    poly = result.exact[0]
+    ctx = poly.context()
+    names = [str(n) for n in ctx.names()]
+    ix, iy = (names.index(v) for v in variables)
+    terms = poly.to_dict()
+    degree = max(int(m[ix]) + int(m[iy]) for m in terms)
+    top = ctx.from_dict({m: c for m, c in terms.items() if int(m[ix]) + int(m[iy]) == degree})
+    x, y = ctx.gens()[ix], ctx.gens()[iy]
+    circle, count = x * x + y * y, 0
     while 2 * (count + 1) <= degree:
-        top = engine.quotient(top, circle)
-        if top is None:
+        top, remainder = divmod(top, circle)
+        if not remainder.is_zero():
             break
         count += 1
     return degree, count

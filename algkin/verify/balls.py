@@ -49,6 +49,7 @@ class BlockCertifier:
         self.residual = compile_program(list(equations), arguments, ARB)
         self.jacobian = compile_program(list(sympy.Matrix(list(equations)).jacobian(unknowns)), arguments, ARB)
         self.identity = arb_mat([[int(i == j) for j in range(self.n)] for i in range(self.n)])
+        self.explicit = _explicit(equations, unknowns, parameters)
 
     def __call__(self, candidate, known, inverse=None):
         """The root's enclosure (one ball per unknown) next to ``candidate``, or ``None``.
@@ -56,6 +57,9 @@ class BlockCertifier:
         ``known`` lists the balls of the parameters, in order; ``inverse``, the Jacobian's
         inverse in floats at the candidate, saves the first step its own inversion.
         """
+        if self.explicit is not None:  # u = formula: its value in balls is the root's enclosure
+            root = self.explicit(*known)
+            return root if root[0].is_finite() else None
         x = [arb(float(v)) for v in candidate]
         if self.linear:
             return self._linear(x, known)
@@ -118,6 +122,17 @@ class BlockCertifier:
         k = arb_mat(self.n, 1, x) - inverse * residual + (self.identity - inverse * over_box) * spread
         root = [k[i, 0] for i in range(self.n)]
         return root if all(b.contains_interior(r) for b, r in zip(box, root)) else None
+
+
+def _explicit(equations, unknowns, parameters):
+    """``a u + f = 0`` with ``a`` a nonzero number (a point defined by a formula): ``-f / a``
+    compiled, else ``None``."""
+    if len(unknowns) != 1:
+        return None
+    poly = sympy.Poly(equations[0], unknowns[0])
+    if poly.degree() != 1 or not poly.LC().is_number:
+        return None
+    return compile_program([-poly.nth(0) / poly.LC()], parameters, ARB)
 
 
 @functools.lru_cache(maxsize=256)

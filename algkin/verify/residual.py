@@ -86,6 +86,8 @@ class Polynomial:
         if self.inner is None:
             return sum((p(0) for p in polys.values()), flint.arb(0))
         x = values[self.names[self.inner]]
+        if len(self.outer) == 1:  # a curve: Horner in the other coordinate, no table of powers
+            return self._horner(polys, x, values[self.outer[0]])
         outer = [values[n] for n in self.outer]
         powers = [_powers(v, max(m[k] for m in polys)) for k, v in enumerate(outer)]
         total = flint.arb(0)
@@ -95,6 +97,18 @@ class Polynomial:
                 if e:
                     term = term * powers[k][e]
             total += term
+        return total
+
+    def _horner(self, polys, x, y):
+        top = max(m[0] for m in polys)
+        total = None
+        for e in range(top, -1, -1):
+            poly = polys.get((e,))
+            term = poly(x) if poly is not None else None
+            if total is None:
+                total = term
+            else:
+                total = total * y if term is None else total * y + term
         return total
 
     def magnitude(self, values):
