@@ -29,7 +29,7 @@ from .scene import catalog_names, compile_scene, load_scene
 def __getattr__(name):
     # The pipeline pulls in the elimination and verification layers: load on first use.
     if name in ("derive", "curve"):
-        from . import pipeline
+        from .derivation import pipeline
 
         return getattr(pipeline, name)
     if name == "extremum":
@@ -37,11 +37,11 @@ def __getattr__(name):
 
         return extremum
     if name == "interact":  # ipywidgets only when called
-        from .widgets import interact
+        from .ui.widgets import interact
 
         return interact
     if name == "load":
-        from .mechanism import load
+        from .analyses.quantities import load
 
         return load
     raise AttributeError(f"module 'algkin' has no attribute {name!r}")

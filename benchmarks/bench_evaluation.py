@@ -23,7 +23,7 @@ import sympy
 from algkin.branches import closed_forms
 from algkin.branches.stable import StableBranch
 from algkin.evaluate import MPMATH, evaluate
-from algkin.pipeline import derive
+from algkin.derivation.pipeline import derive
 from algkin.scene import compile_scene, load_scene
 from algkin.system import symbol
 

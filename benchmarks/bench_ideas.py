@@ -35,9 +35,9 @@ import algkin.eliminate.methods as methods
 import algkin.eliminate.select as select
 from algkin.bench.problems import build
 from algkin.eliminate.linear import linear_elimination
-from algkin.pipeline import compile_and_branch
+from algkin.derivation.pipeline import compile_and_branch
 from algkin.scene import load_scene
-from algkin.tasks import EliminationTask, eliminant_tasks
+from algkin.derivation.tasks import EliminationTask, eliminant_tasks
 
 PROBLEMS = ("fourbar-symbolic", "watt-i", "stephenson-iii")
 ROUNDS = 5

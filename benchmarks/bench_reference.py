@@ -10,7 +10,7 @@ frame point, a point on a dyad on a dyad), each at 200 bits:
   in python-flint ``arb`` with ``arb_mat`` solves, one Krawczyk step proving a unique root in
   a small box, the label's signs decided on the enclosure, the condition number from the
   Jacobian (re-implemented here as it was, so that it can be timed beside the others);
-- ``vectorised``: ``algkin.reference.Reference``, the same proof with every sample in numpy
+- ``vectorised``: ``algkin.bench.reference.Reference``, the same proof with every sample in numpy
   arrays of balls, so that Python's overhead is paid per batch, not per sample.
 
 Times are medians of repeats after a warm-up (one repeat for the slow two); ratios are the
@@ -30,7 +30,7 @@ from flint import arb, arb_mat, ctx
 
 from algkin.branches import closed_forms
 from algkin.evaluate import MPMATH, evaluate
-from algkin.reference import BITS, Reference
+from algkin.bench.reference import BITS, Reference
 from algkin.scene import compile_scene, load_scene
 from bench_evaluation import timed  # the same median-of-runs timer (this directory is on sys.path)
 
@@ -59,7 +59,7 @@ def mpmath_reference(branch, cs, unknowns, theta):
 
 
 class ScalarReference:
-    """The per-sample arb reference, as ``algkin.reference`` had it before it was vectorised."""
+    """The per-sample arb reference, as ``algkin.bench.reference`` had it before it was vectorised."""
 
     def __init__(self, reference):
         arguments = reference.unknowns + list(reference.cs)

@@ -18,7 +18,7 @@ import time
 
 import numpy as np
 
-from algkin.widgets import Explorer
+from algkin.ui.widgets import Explorer
 
 SCENES = ("chebyshev-lambda", "fourbar")
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from hypothesis import assume, given, settings, strategies as st
 
-from algkin.accuracy import REFERENCE, accuracy
+from algkin.bench.accuracy import REFERENCE, accuracy
 from algkin.scene.settings import with_values
 from algkin.branches.stable import heron_area
 
@@ -134,7 +134,7 @@ def test_the_reference_is_named_and_independent():
 def test_change_point_four_bar_where_the_branches_meet():
     # crank 1 + ground 4 = coupler 3 + rocker 2: at 180 deg |AD| = 5 = 3 + 2, both branches meet
     # in B = (4, 0) - 2 * (1, 0)... the coupler and rocker lie along the ground: B = (2, 0) +- 0.
-    from algkin.accuracy import _Subject
+    from algkin.bench.accuracy import _Subject
 
     subject = _Subject(four_bar(1, 4, 3, 2), "B")
     theta = np.array([np.pi, np.pi * (1 - 1e-12), np.pi * (1 + 1e-12)])
@@ -192,7 +192,7 @@ def test_numeric_reaches_the_labelled_root_or_counts_the_sample_unsolved():
 
 
 def test_numeric_marks_a_sample_that_ends_on_the_other_branch():
-    from algkin.accuracy import _Subject
+    from algkin.bench.accuracy import _Subject
 
     # Continuation from -120 deg to +120 deg starts from the mirror image of the answer: Newton
     # converges there, on the other branch, and the label's check says so.
@@ -204,7 +204,7 @@ def test_numeric_marks_a_sample_that_ends_on_the_other_branch():
 
 
 def test_numeric_row_counts_unsolved_samples_and_leaves_them_out():
-    from algkin.accuracy import _numeric_row
+    from algkin.bench.accuracy import _numeric_row
 
     truth = np.array([[1.0, 2.0, 3.0]])
     estimate = np.array([[1.0, np.nan, 3.0 + 4 * EPS]])

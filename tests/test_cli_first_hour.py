@@ -7,7 +7,7 @@ import pytest
 import sympy
 
 import algkin
-from algkin.cli import build_parser, main
+from algkin.ui.cli import build_parser, main
 from algkin.errors import SceneError, UsageError
 
 from .test_cli_usage import run_cli

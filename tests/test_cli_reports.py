@@ -7,7 +7,7 @@ import sys
 import sympy
 
 import algkin
-from algkin.cli.reports import _report_toggles
+from algkin.ui.cli.reports import _report_toggles
 
 from .test_cli_usage import ROOT, run_cli
 

@@ -14,7 +14,7 @@ import time
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from algkin.cli import main
+from algkin.ui.cli import main
 
 from .processes import algkin, alive, children, finish, kill_group, run, start
 
@@ -143,7 +143,7 @@ def _busy_workers(process, busy=1.0):
 # main() called in a process that goes on after it: SIGTERM stops the command, not the caller.
 IN_PROCESS = """
 import os, signal, threading
-from algkin.cli import main
+from algkin.ui.cli import main
 
 before = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)}
 threading.Timer(1.5, os.kill, (os.getpid(), signal.SIGTERM)).start()

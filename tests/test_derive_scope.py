@@ -1,6 +1,6 @@
 """Each eliminant comes from the equations its unknown depends on, not from later points."""
 
-from algkin.tasks import equations_for
+from algkin.derivation.tasks import equations_for
 from algkin.scene import compile_scene, load_scene
 from algkin.system import symbol
 

@@ -6,7 +6,7 @@ import stat
 import pytest
 
 from algkin.errors import OutputError, UsageError
-from algkin.files import atomic_output, check_directory, check_output, write_atomic
+from algkin.runtime.files import atomic_output, check_directory, check_output, write_atomic
 
 AS_ROOT = hasattr(os, "geteuid") and os.geteuid() == 0
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 import sympy
 
-from algkin.widgets import Explorer
+from algkin.ui.widgets import Explorer
 
 from .draw.hand import CHEBYSHEV, FOURBAR, fourbar
 
@@ -41,11 +41,11 @@ def test_cannot_assemble_is_the_caption_not_nans():
 
 def test_sliders_only_evaluate(monkeypatch):
     """Moving sliders never derives again: the pipeline is not called after construction."""
-    import algkin.motion
+    import algkin.analyses.motion
 
     explorer = Explorer("chebyshev-lambda")
-    monkeypatch.setattr(algkin.motion, "closed_forms", lambda *a: pytest.fail("derived again"))
-    monkeypatch.setattr(algkin.motion, "compile_scene", lambda *a: pytest.fail("compiled again"))
+    monkeypatch.setattr(algkin.analyses.motion, "closed_forms", lambda *a: pytest.fail("derived again"))
+    monkeypatch.setattr(algkin.analyses.motion, "compile_scene", lambda *a: pytest.fail("compiled again"))
     for angle in (0, 90, 180):
         assert explorer.pose(angle=angle).points["P"] == pytest.approx(fourbar(angle, **CHEBYSHEV)["P"], abs=1e-12)
 
@@ -53,7 +53,7 @@ def test_sliders_only_evaluate(monkeypatch):
 def test_interact_builds_the_widgets(monkeypatch):
     ipywidgets = pytest.importorskip("ipywidgets")
     import algkin
-    from algkin import widgets as module
+    from algkin.ui import widgets as module
 
     shown = []
     monkeypatch.setattr(module.Explorer, "png", lambda self, **values: shown.append(values) or b"")
@@ -90,10 +90,10 @@ A = "A"
 
 
 def test_a_declared_range_drives_the_sliders_and_an_override_wins(tmp_path):
-    from algkin.html import model
-    from algkin.motion import Motion
+    from algkin.ui.html import model
+    from algkin.analyses.motion import Motion
     from algkin.scene import load_scene_text
-    from algkin.widgets import Explorer
+    from algkin.ui.widgets import Explorer
 
     motion = Motion(load_scene_text(RANGED, "ranged.toml"))
     assert motion.scene.parameter_ranges == {"a": (sympy.Rational(1, 2), 2)}

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from algkin.errors import UsageError
-from algkin.motion import Motion
+from algkin.analyses.motion import Motion
 from algkin.scene import load_scene_text
 
 from .draw.hand import CHEBYSHEV, FOURBAR, fourbar

@@ -13,10 +13,10 @@ pytest.importorskip("matplotlib")
 
 import matplotlib  # noqa: E402
 
-from algkin.accuracy import Accuracy  # noqa: E402
+from algkin.bench.accuracy import Accuracy  # noqa: E402
 from algkin.errors import SceneError  # noqa: E402
-from algkin.mechanism import load  # noqa: E402
-from algkin.plot import accuracy_figure, minimum_figure, quantity_figure, save  # noqa: E402
+from algkin.analyses.quantities import load  # noqa: E402
+from algkin.ui.plot import accuracy_figure, minimum_figure, quantity_figure, save  # noqa: E402
 from algkin.scene import load_scene, load_scene_text  # noqa: E402
 
 from .analyses.extremum.arm_by_hand import brute_minimum, hand_minimiser, hand_minimum  # noqa: E402

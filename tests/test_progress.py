@@ -1,4 +1,4 @@
-"""algkin.progress: one status line on a terminal, nothing elsewhere, nothing outside ``shown()``,
+"""algkin.runtime.progress: one status line on a terminal, nothing elsewhere, nothing outside ``shown()``,
 and a forked worker's progress shown by its parent."""
 
 import io
@@ -7,8 +7,8 @@ import sys
 import threading
 import time
 
-from algkin import progress
-from algkin.budget import Budget, current
+from algkin.runtime import progress
+from algkin.runtime.budget import Budget, current
 
 from .processes import ENV
 
@@ -67,7 +67,7 @@ def test_a_forked_worker_shows_through_its_parent():
 
 
 def test_importing_algkin_and_a_command_off_a_terminal_leave_tqdm_unloaded():
-    code = ("import sys, algkin, algkin.budget; from algkin.cli import main; main(['list']); "
+    code = ("import sys, algkin, algkin.runtime.budget; from algkin.ui.cli import main; main(['list']); "
             "print('tqdm' in sys.modules)")
     done = subprocess.run([sys.executable, "-c", code], env=ENV, capture_output=True, text=True, timeout=60,
                           check=False)

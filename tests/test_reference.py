@@ -9,7 +9,7 @@ from flint import ctx
 from hypothesis import assume, given, settings, strategies as st
 
 from algkin.branches import closed_forms
-from algkin.reference import BITS, NotCertified, Reference
+from algkin.bench.reference import BITS, NotCertified, Reference
 from algkin.scene import compile_scene, load_scene
 from algkin.system import symbol
 

@@ -7,7 +7,7 @@ import pytest
 from hypothesis import assume, example, given, settings, strategies as st
 
 from algkin.scene import compile_scene, load_scene_text
-from algkin.toggles import grashof, toggles
+from algkin.analyses.toggles import grashof, toggles
 
 
 def four_bar(crank, ground, coupler, rocker):

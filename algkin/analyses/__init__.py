@@ -1,5 +1,7 @@
-"""Analyses built on derivations: extrema of an output over the input (``extremum``).
+"""Analyses built on derivations: extrema of an output over the input (``extremum``), toggle
+positions (``toggles``), every point's motion per branch (``motion``) and the mechanism and
+quantity front end behind ``algkin.load`` (``quantities``).
 
-They sit above the derivation layer (``algkin.pipeline``) and below presentation
-(``algkin.cli``, ``algkin.plot``): they import the first and never the second.
+They sit above the derivation layer (``algkin.derivation``) and below the bench and
+presentation (``algkin.ui``): they import the first and never the second.
 """

@@ -16,8 +16,8 @@ import os
 import platform
 from dataclasses import dataclass
 
-from .. import progress
 from ..eliminate import BACKENDS, DEFAULT_METHOD, METHODS
+from ..runtime import progress
 from . import specialise
 from .agree import PASSING, Agreement, Verdict, agreement, from_sympy, portable, rebuild
 from .measure import measure
@@ -65,7 +65,7 @@ def _cpuinfo():
 
 def bench(problems=None, methods=None, backends=None, budget=60.0, peers=True, rounds=ROUNDS):
     """Time every method x backend (and peers) on every problem; a ``BenchReport``. Within
-    ``algkin.progress.shown()``, the row being measured shows, and the count of rows measured once."""
+    ``algkin.runtime.progress.shown()``, the row being measured shows, and the count of rows measured once."""
     from .engines import PEERS
 
     names = problems or problem_names()

@@ -16,8 +16,8 @@ import os
 import statistics
 import time
 
-from .. import progress
-from ..budget import bind_to_parent
+from ..runtime import progress
+from ..runtime.budget import bind_to_parent
 
 __all__ = ["measure", "MIN_SECONDS", "MIN_REPEATS"]
 
@@ -35,7 +35,7 @@ def measure(run, summarize, budget):
         if not receive.poll(budget):
             return None, None, f"over budget ({budget:g} s)"
         return receive.recv()
-    finally:  # over budget, done, or unwound by a signal's exception (algkin.cli): no child left
+    finally:  # over budget, done, or unwound by a signal's exception (algkin.ui.cli): no child left
         child.kill()
         child.join()
 

@@ -236,7 +236,7 @@ def execute(command, timeout, cwd=None):
     except subprocess.TimeoutExpired:
         _kill_group(proc)
         return None
-    except BaseException:  # a signal's exception (algkin.cli): in a session of its own, the engine would run on
+    except BaseException:  # a signal's exception (algkin.ui.cli): in a session of its own, the engine would run on
         _kill_group(proc)
         raise
     return proc.returncode, out, err

@@ -12,8 +12,8 @@ methods are timed on what a user's command runs, plus that command itself, end t
 from dataclasses import dataclass
 from typing import Callable
 
+from ..derivation.tasks import EliminationTask, curve_task, eliminant_tasks
 from ..errors import UsageError
-from ..tasks import EliminationTask, curve_task, eliminant_tasks
 
 __all__ = ["Problem", "PROBLEMS", "problem_names", "build"]
 
@@ -29,7 +29,7 @@ class Problem:
 
 
 def _curve(scene, point, params=()):
-    from ..pipeline import compile_and_branch
+    from ..derivation.pipeline import compile_and_branch
     from ..scene import load_scene
 
     compiled, _, groups, _ = compile_and_branch(load_scene(scene), [point], params)
@@ -37,13 +37,13 @@ def _curve(scene, point, params=()):
 
 
 def _curve_run(scene, point, params=()):
-    from ..pipeline import curve
+    from ..derivation.pipeline import curve
 
     return lambda: curve(scene, point, params=params)
 
 
 def _two_circles():
-    from ..pipeline import compile_and_branch
+    from ..derivation.pipeline import compile_and_branch
     from ..scene import load_scene
 
     compiled, _, groups, _ = compile_and_branch(load_scene("chebyshev-lambda"), ["B"], ())
@@ -51,14 +51,14 @@ def _two_circles():
 
 
 def _two_circles_run():
-    from ..pipeline import derive
+    from ..derivation.pipeline import derive
 
     return lambda: derive("chebyshev-lambda", ["B"])
 
 
 def _arm():
     from ..analyses.extremum import problem_for
-    from ..pipeline import derive
+    from ..derivation.pipeline import derive
 
     problem = problem_for(derive("arm-string", ["AB"], params=["b"], samples=0), "AB")
     names = tuple(p.name for p in problem.parameters)

@@ -1,4 +1,4 @@
-"""The bench report as a table, CSV, JSON and a plot (the plot needs the ``plot`` extra).
+"""The bench report as a table, CSV and JSON (its plot is drawn by ``algkin.ui.plot``).
 
 >>> rows = [{"problem": "p", "method": "linear", "backend": "flint", "seconds": 2.5e-3, "ratio": 1.0,
 ...          "degree": 6, "terms": 29, "bits": 12, "agrees": "yes", "note": "median of 5 runs"}]
@@ -12,7 +12,7 @@ import io
 import json
 
 from ..errors import OutputError
-from ..files import write_atomic
+from ..runtime.files import write_atomic
 
 __all__ = ["table", "to_csv", "write", "seconds_text", "COLUMNS"]
 
@@ -51,10 +51,12 @@ def to_csv(rows):
     return out.getvalue()
 
 
-def write(report, directory):
-    """bench.json, bench.csv and (with matplotlib) bench.png in ``directory``; the paths written.
+def write(report, directory, plot=None):
+    """bench.json, bench.csv and, given ``plot``, bench.png in ``directory``; the paths written.
 
-    Each file replaces an earlier one only once complete (``algkin.files``).
+    ``plot(rows, path)`` draws the rows' figure to ``path`` and returns the path: presentation
+    lives above the bench (``algkin.ui``), so the command line passes it in. Each file replaces
+    an earlier one only once complete (``algkin.runtime.files``).
     """
     import os
 
@@ -65,9 +67,6 @@ def write(report, directory):
     paths = [os.path.join(directory, n) for n in ("bench.json", "bench.csv")]
     write_atomic(paths[0], json.dumps(report.to_json(), indent=2))
     write_atomic(paths[1], to_csv(report.rows))
-    try:
-        from ..plot import bench_figure, save
-    except ImportError:
-        return paths
-    paths.append(save(bench_figure(report.rows), os.path.join(directory, "bench.png")))
+    if plot is not None:
+        paths.append(plot(report.rows, os.path.join(directory, "bench.png")))
     return paths

@@ -18,8 +18,8 @@ from fractions import Fraction
 
 import sympy
 
-from ..budget import Budget
 from ..errors import AlgkinError
+from ..runtime.budget import Budget
 from ..system import symbol
 from .agree import Agreement, Verdict, agreement, from_sympy
 

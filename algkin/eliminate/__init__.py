@@ -20,8 +20,8 @@ import functools
 import time
 from dataclasses import dataclass, field
 
-from ..budget import Budget, current
 from ..errors import ComputationError, UsageError
+from ..runtime.budget import Budget, current
 from ..system.convert import flint_context, to_flint
 from .backends import BACKENDS
 from .linear import linear_elimination

@@ -20,7 +20,7 @@ removed by factoring and selection at the witnesses, as for resultants.
 px*(px**2 - 2*px + py**2)*(px**4 - 4*px**3 + 2*px**2*py**2 + 5*px**2 - 4*px*py**2 - 2*px + py**4 + 5*py**2)
 """
 
-from ..budget import current
+from ..runtime.budget import current
 from .methods import cheapest, resultant_step
 
 __all__ = ["linear_elimination"]

@@ -6,7 +6,7 @@ to eliminate) and the same factor selection at witnesses.
 """
 
 from ..errors import ComputationError
-from ..budget import current
+from ..runtime.budget import current
 from .select import select_factors
 
 __all__ = ["prepare", "cheapest", "resultant_step", "resultant_chain", "groebner_basis"]

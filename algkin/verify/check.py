@@ -17,9 +17,9 @@ from fractions import Fraction
 import flint
 import numpy as np
 
-from .. import progress
 from ..evaluate import ARB, NUMPY
 from ..evaluate.program import compile_program
+from ..runtime import progress
 from .balls import certifier_of, certify_parameters
 from .minimal import FactorCheck, structure_failures
 from .residual import polynomial_of

@@ -8,7 +8,7 @@ import sympy
 from algkin.bench import agree, specialise
 from algkin.bench.agree import Agreement, agreement, from_sympy
 from algkin.bench.problems import build
-from algkin.cli import main
+from algkin.ui.cli import main
 
 CTX = flint.fmpq_mpoly_ctx.get(("x", "y", "b"), "lex")
 X, Y, B = CTX.gens()

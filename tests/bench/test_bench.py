@@ -9,7 +9,7 @@ import pytest
 
 from algkin.bench import bench
 from algkin.bench.measure import measure
-from algkin.cli import main
+from algkin.ui.cli import main
 
 
 @pytest.fixture(scope="module")

@@ -16,7 +16,7 @@ from pathlib import Path
 import mpmath
 import sympy
 
-from algkin.cli import main
+from algkin.ui.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -44,7 +44,7 @@ def on_circle(center, radius, degrees):
 
 
 def run(*args):
-    """The command line's JSON document, run in this process (``algkin.cli.main``)."""
+    """The command line's JSON document, run in this process (``algkin.ui.cli.main``)."""
     stdout = io.StringIO()
     with contextlib.redirect_stdout(stdout):
         code = main([*map(str, args), "--json"])

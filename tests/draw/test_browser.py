@@ -9,8 +9,8 @@ import sys
 
 import pytest
 
-from algkin.html import write
-from algkin.motion import Motion
+from algkin.ui.html import write
+from algkin.analyses.motion import Motion
 
 from .browser import load
 from .hand import CHEBYSHEV, FOURBAR, fourbar

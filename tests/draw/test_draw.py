@@ -17,8 +17,8 @@ import sympy
 pytest.importorskip("matplotlib")
 
 from algkin import curve  # noqa: E402
-from algkin.draw import animate, mechanism_figure, modes_figure  # noqa: E402
-from algkin.motion import Motion  # noqa: E402
+from algkin.ui.draw import animate, mechanism_figure, modes_figure  # noqa: E402
+from algkin.analyses.motion import Motion  # noqa: E402
 from algkin.scene import load_scene  # noqa: E402
 
 from ..test_still_points import STILL  # noqa: E402

@@ -9,8 +9,8 @@ import html5lib
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from algkin.html import page, write
-from algkin.motion import Motion
+from algkin.ui.html import page, write
+from algkin.analyses.motion import Motion
 
 HOSTILE = ["{{script}}", "{{title}}", "{{description}}", "{{style}}", "</script>", "<script>", "<!--", "-->",
            "<img src=x onerror=alert(2)>", "</title>", "</p><h1>", "</style>", '"', "'", "&amp;", "&", "$x$",

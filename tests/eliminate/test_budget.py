@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 import sympy
 
-from algkin import pipeline
+from algkin.derivation import pipeline
 from algkin.eliminate import Budget, eliminate
 from algkin.errors import BudgetExceeded, SceneError, UsageError
 from algkin.scene import compile_scene, load_scene
@@ -130,7 +130,7 @@ def test_budget_must_be_positive(seconds, terms):
 @pytest.mark.parametrize("option,value", [("--max-seconds", "0"), ("--max-seconds", "soon"),
                                           ("--max-terms", "-3"), ("--max-terms", "1e3")])
 def test_command_line_refuses_a_bad_budget(option, value, capsys):
-    from algkin.cli import main
+    from algkin.ui.cli import main
 
     assert main(["curve", "chebyshev-lambda", "--point", "P", option, value]) == 2
     err = capsys.readouterr().err
@@ -144,7 +144,7 @@ def test_command_line_refuses_a_bad_budget(option, value, capsys):
     (["accuracy", "chebyshev-lambda", "--samples", "10", "--max-seconds", "0.5"], "max_seconds=0.5: stopped after 0.5"),
 ])
 def test_every_eliminating_command_keeps_to_its_budget(args, words, capsys):
-    from algkin.cli import main
+    from algkin.ui.cli import main
 
     start = time.perf_counter()
     assert main(args) == 1

@@ -2,7 +2,7 @@
 
 from hypothesis import given, settings, strategies as st
 
-from algkin.pipeline import derive
+from algkin.derivation.pipeline import derive
 from algkin.testing import strategies
 
 SAMPLES = 2

@@ -4,7 +4,7 @@ import mpmath
 import sympy
 from hypothesis import given, settings
 
-from algkin.pipeline import curve
+from algkin.derivation.pipeline import curve
 from algkin.testing import strategies
 
 from .hand import trajectory

@@ -10,7 +10,7 @@ from hypothesis import given, settings
 
 from algkin.branches import closed_forms
 from algkin.eliminate import eliminate
-from algkin.pipeline import witnesses
+from algkin.derivation.pipeline import witnesses
 from algkin.scene import compile_scene
 from algkin.testing import strategies
 

@@ -13,10 +13,10 @@ from hypothesis import given, settings, strategies as st
 from algkin.branches import check_assembly, closed_forms
 from algkin.scene import compile_scene
 from algkin.testing import strategies
-from algkin.toggles import grashof
+from algkin.analyses.toggles import grashof
 
 ROOT = Path(__file__).resolve().parents[2]
-# algkin.toggles names the classes in words; the strategies' kinds are identifiers.
+# algkin.analyses.toggles names the classes in words; the strategies' kinds are identifiers.
 WORDS = {"crank-rocker": "crank-rocker", "double-crank": "double crank", "double-rocker": "double rocker",
          "rocker-crank": "rocker-crank", "change-point": "change point",
          "non-grashof": "non-grashof (triple rocker)"}

@@ -8,7 +8,7 @@ import sympy
 import algkin
 from algkin.branches import closed_forms
 from algkin.errors import UsageError
-from algkin.pipeline import _verify, compile_and_branch
+from algkin.derivation.pipeline import _verify, compile_and_branch
 from algkin.scene import compile_scene, load_scene, load_scene_text
 
 

@@ -14,9 +14,9 @@ from dataclasses import dataclass
 
 import sympy
 
+from ...derivation.pipeline import derive
 from ...errors import UsageError
 from ...scene.model import range_problem
-from ...pipeline import derive
 from ...system import symbol
 from .closed import ClosedForm, closed_form
 from .critical import CriticalPoint, Problem, critical_points, extreme, points_at, stationary_factors

@@ -4,7 +4,7 @@ A python-flint resultant or Gröbner basis is one C call that no signal interrup
 time budget runs the work in a forked child process that is killed at the deadline; the
 result comes back pickled. The child reports what it is doing (``note``), so the message
 says what was being eliminated when time ran out; the parent shows it as progress
-(``algkin.progress``), since the child does not write to the terminal itself. A terms budget
+(``algkin.runtime.progress``), since the child does not write to the terminal itself. A terms budget
 is checked after every resultant and Gröbner basis. An elimination called without a budget,
 inside a budget's ``run()``, counts against that budget (``current()``).
 
@@ -34,14 +34,14 @@ import signal
 import sys
 import time
 
+from ..errors import BudgetExceeded, ComputationError, UsageError
 from . import progress
-from .errors import BudgetExceeded, ComputationError, UsageError
 
 __all__ = ["Budget", "current", "bind_to_parent"]
 
 _ACTIVE = []  # the budgets whose run() is under way in this process, innermost last
 _PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
-# Signals that stop a command: the parent turns them into an exception (algkin.cli); the child,
+# Signals that stop a command: the parent turns them into an exception (algkin.ui.cli); the child,
 # which would otherwise inherit that handler, just dies (Ctrl-C reaches the whole process group).
 _STOPPING = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
 

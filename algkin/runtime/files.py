@@ -34,7 +34,7 @@ import shutil
 import stat
 import tempfile
 
-from .errors import OutputError, UsageError
+from ..errors import OutputError, UsageError
 
 __all__ = ["atomic_output", "write_atomic", "check_output", "check_directory"]
 

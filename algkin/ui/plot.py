@@ -15,15 +15,16 @@ import pathlib
 import numpy as np
 import sympy
 
-from .errors import AlgkinError, UsageError
-from .files import write_atomic
+from ..errors import AlgkinError, UsageError
+from ..runtime.files import write_atomic
 
-__all__ = ["quantity_figure", "minimum_figure", "accuracy_figure", "bench_figure", "save", "image", "FORMATS"]
+__all__ = ["quantity_figure", "minimum_figure", "accuracy_figure", "bench_figure", "new_figure", "save", "image", "FORMATS"]
 
 FORMATS = (".png", ".svg", ".pdf")
 
 
-def _figure():
+def new_figure():
+    """An empty figure on the Agg canvas (no pyplot state); AlgkinError without matplotlib."""
     try:
         from matplotlib.backends.backend_agg import FigureCanvasAgg
         from matplotlib.figure import Figure
@@ -66,7 +67,7 @@ def quantity_figure(quantity, found, derivative=False, points=721):
     expr = quantity.derivative if derivative else quantity.expr
     values = np.broadcast_to(_sampler(quantity, expr)(np.radians(degrees)), degrees.shape)
     best = found.minimum
-    figure = _figure()
+    figure = new_figure()
     axes = figure.add_subplot()
     name, text = quantity.input.name, quantity.text
     label = f"d {text} / d {name}" if derivative else text
@@ -93,7 +94,7 @@ def minimum_figure(quantity, found, parameter, lo, hi, checks=9, points=401):
     if form is None or [p.name for p in quantity._problem.parameters] != [parameter]:
         raise UsageError("--against", parameter, "needs the quantity with exactly that dimension symbolic")
     symbol = quantity._problem.parameters[0]
-    figure = _figure()
+    figure = new_figure()
     axes = figure.add_subplot()
     grid = np.linspace(lo, hi, points)
     for region, value in zip(form.regions, form.region_values):
@@ -123,7 +124,7 @@ def _within(region, x):
 
 def _certified_minimum(found, quantity, symbol, x):
     """The minimum at one dimension, by the fixed-dimension certified path (independent of the regions)."""
-    from .analyses.extremum import extreme, points_at
+    from ..analyses.extremum import extreme, points_at
 
     values = {symbol: sympy.Rational(str(x))}
     return float(extreme(points_at(found.problem, found.stationary, values, *found.range)).value)
@@ -139,7 +140,7 @@ def accuracy_figure(result):
     """
     from matplotlib.lines import Line2D
 
-    figure = _figure()
+    figure = new_figure()
     figure.set_size_inches(7.6, 4.4)
     axes = figure.add_subplot()
     rows = [r for r in result.rows if np.isfinite(r["max_rel_error"])]
@@ -182,7 +183,7 @@ def bench_figure(rows):
     """Seconds per problem (log scale), one bar per method/backend or peer; over budget not drawn."""
     from matplotlib import colormaps
 
-    figure = _figure()
+    figure = new_figure()
     figure.set_size_inches(11, 5)
     axes = figure.add_subplot()
     problems = list(dict.fromkeys(r["problem"] for r in rows))

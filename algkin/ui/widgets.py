@@ -1,7 +1,7 @@
 """Sliders in Jupyter (the seed notebook's ``@interact``, extended): ``algkin.interact(scene)``.
 
 One slider per input and per symbolic dimension, and a choice of assembly mode. The
-closed forms are derived once when ``interact`` is called (``algkin.motion.Motion``,
+closed forms are derived once when ``interact`` is called (``algkin.analyses.motion.Motion``,
 dimensions symbolic); moving a slider only evaluates them. Where the mechanism cannot
 assemble, the picture says so instead of drawing nothing. ipywidgets (the ``notebook``
 extra) is imported only here (a module named ``widgets``, so that importing it does not
@@ -18,8 +18,8 @@ hide the function ``algkin.interact``); the logic lives in ``Explorer`` and need
 
 import functools
 
+from ..analyses.motion import Motion
 from .html import _slider, parameter_range
-from .motion import Motion
 
 __all__ = ["interact", "Explorer"]
 
@@ -72,7 +72,7 @@ class Explorer:
 
     @functools.cached_property
     def live(self):
-        """The one figure the sliders move (``algkin.draw.LiveFigure``), captioned like ``figure``."""
+        """The one figure the sliders move (``algkin.ui.draw.LiveFigure``), captioned like ``figure``."""
         from .draw import LiveFigure
 
         return LiveFigure(self.motion, title=self._caption)
@@ -98,7 +98,7 @@ def interact(scene, params=None, ranges=None):
     try:
         import ipywidgets
     except ImportError:
-        from .errors import AlgkinError
+        from ..errors import AlgkinError
 
         raise AlgkinError("interact needs ipywidgets: pip install 'algkin[notebook]'") from None
     explorer = Explorer(scene, params, ranges)

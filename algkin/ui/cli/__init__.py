@@ -18,8 +18,8 @@ import functools
 import json
 import sys
 
-from .. import progress
-from ..errors import AlgkinError, BudgetExceeded, SceneError, UsageError
+from ...errors import AlgkinError, BudgetExceeded, SceneError, UsageError
+from ...runtime import progress
 from .commands import COMMANDS
 from .parser import build_parser, usage
 from .reports import terminal_safe
@@ -60,7 +60,7 @@ def main(argv=None):
 def _run(args):
     """The command's output and exit code, all of its work (imports, loading, compiling, the algebra,
     formatting) done within its budget: in a child process killed at the deadline, if it has one."""
-    from ..budget import Budget
+    from ...runtime.budget import Budget
 
     budget = Budget(seconds=getattr(args, "max_seconds", None), terms=getattr(args, "max_terms", None))
     budget.note(f"starting {args.command}")  # until the command says more (its imports come first)
@@ -69,7 +69,7 @@ def _run(args):
 
 def _save(files=()):
     """Write the files a command made (path, bytes), each replacing its target only when whole."""
-    from ..files import write_atomic
+    from ...runtime.files import write_atomic
 
     for path, data in files:
         write_atomic(path, data)

@@ -8,7 +8,7 @@ factors.
 
 from dataclasses import dataclass
 
-from .eliminate import eliminate
+from ..eliminate import eliminate
 
 __all__ = ["EliminationTask", "curve_task", "eliminant_tasks", "equations_for"]
 

@@ -127,6 +127,6 @@ class _Line:
 
 def _one_line(text):
     """``text`` on one line, its control and bidi characters escaped (as the reports do)."""
-    from .cli.reports import terminal_safe
+    from .terminal import terminal_safe
 
     return terminal_safe(" ".join(str(text).split()))

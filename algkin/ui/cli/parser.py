@@ -3,7 +3,7 @@
 import argparse
 import sys
 
-from ..errors import UsageError
+from ...errors import UsageError
 
 __all__ = ["build_parser", "usage"]
 
@@ -97,7 +97,7 @@ def _terms(text):
 
 
 def build_parser():
-    from .. import __version__
+    from ... import __version__
 
     parser = _Parser(prog="algkin", description="Closed forms of planar mechanisms by elimination.",
                      formatter_class=_Help)

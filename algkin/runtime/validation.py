@@ -19,7 +19,7 @@ algkin.errors.UsageError: seed=2.5: expected a whole number from 0 to 1844674407
 import numbers
 from collections.abc import Mapping
 
-from .errors import UsageError
+from ..errors import UsageError
 
 __all__ = ["names", "count", "seed", "budget", "MAX_VERIFY_SAMPLES", "MAX_ACCURACY_SAMPLES"]
 

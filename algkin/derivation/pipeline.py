@@ -15,17 +15,17 @@ from fractions import Fraction
 import flint
 import sympy
 
-from .branches import certify_label, check_assembly, closed_forms
-from .eliminate import DEFAULT_METHOD, Witness, current as current_budget
-from .errors import UsageError
-from .evaluate import ARB, evaluate
-from . import validation
-from .scene import compile_scene
-from .scene.load import as_scene
-from .scene.settings import with_values
-from .system import symbol
+from ..branches import certify_label, check_assembly, closed_forms
+from ..eliminate import DEFAULT_METHOD, Witness, current as current_budget
+from ..errors import UsageError
+from ..evaluate import ARB, evaluate
+from ..runtime import validation
+from ..scene import compile_scene
+from ..scene.load import as_scene
+from ..scene.settings import with_values
+from ..system import symbol
+from ..verify import Verification, verify_branches
 from .tasks import curve_task, eliminant_tasks
-from .verify import Verification, verify_branches
 
 __all__ = ["derive", "curve", "Derivation", "CurveResult", "witnesses", "certify_labels", "compile_and_branch"]
 

@@ -1,7 +1,8 @@
 """The text reports a person reads: long forms summarised, scene text escaped, LaTeX lines."""
 
 import json
-import re
+
+from ...runtime.terminal import terminal_safe
 
 __all__ = ["terminal_safe"]
 
@@ -88,20 +89,6 @@ def _report_accuracy(d):
 def _render(args, document, report):
     """What the command prints: ``document`` as JSON with --json, else ``report(document)``."""
     return (json.dumps(document, indent=2) if args.json else terminal_safe(report(document))) + "\n"
-
-
-# Control characters (ESC starts terminal commands) and bidirectional overrides (which
-# reorder what is shown) from a scene's names and text are shown escaped, never obeyed.
-_UNSAFE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u061c\u200e\u200f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
-
-
-def terminal_safe(text):
-    r"""``text`` with control and bidi characters escaped; newlines and tabs kept.
-
-    >>> terminal_safe("scene \x1b[31mred\u202e\n")
-    'scene \\x1b[31mred\\u202e\n'
-    """
-    return _UNSAFE.sub(lambda m: m.group().encode("unicode_escape").decode("ascii"), text)
 
 
 def _report_show(d):

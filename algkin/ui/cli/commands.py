@@ -1,22 +1,31 @@
 """One function per command: its whole output (text or JSON) and exit code, and the files it
-makes, computed inside the command's budget (``algkin.cli.main`` runs it and writes)."""
+makes, computed inside the command's budget (``algkin.ui.cli.main`` runs it and writes)."""
 
 import json
 import math
 import pathlib
 
-from ..errors import UsageError
+from ...errors import UsageError
 from .reports import (_extremum_forms, _latex_lines, _render, _report_accuracy, _report_curve, _report_derive,
                       _report_extremum, _report_show, _report_toggles, _verification_line, terminal_safe)
 
 __all__ = ["COMMANDS"]
 
 
+def _bench_plot():
+    """What draws bench.png (``bench.report.write``), or None when the plotting module cannot load."""
+    try:
+        from ..plot import bench_figure, save
+    except ImportError:
+        return None
+    return lambda rows, path: save(bench_figure(rows), path)
+
+
 def _cmd_bench(args):
-    from ..bench import bench, problem_names
-    from ..bench.agree import PASSING
-    from ..bench.report import table, write
-    from ..eliminate import backend_names, method_names
+    from ...bench import bench, problem_names
+    from ...bench.agree import PASSING
+    from ...bench.report import table, write
+    from ...eliminate import backend_names, method_names
 
     for option, given, valid in (("--problems", args.problems, problem_names()),
                                  ("--methods", args.methods, method_names()),
@@ -29,11 +38,11 @@ def _cmd_bench(args):
     if args.rounds < 1:
         raise UsageError("--rounds", args.rounds, "must be at least 1")
     if args.out:
-        from ..files import check_directory
+        from ...runtime.files import check_directory
 
         check_directory("--out", args.out)
     report = bench(args.problems, args.methods, args.backends, args.budget, not args.no_peers, args.rounds)
-    written = write(report, args.out) if args.out else []
+    written = write(report, args.out, plot=_bench_plot()) if args.out else []
     if args.json:
         text = json.dumps(report.to_json(), indent=2) + "\n"
     else:
@@ -51,8 +60,8 @@ def _scene_of(args, params=None):
     kept symbolic and cannot be set)."""
     if not args.set:
         return args.scene
-    from ..scene import load_scene
-    from ..scene.settings import parse_settings, with_values
+    from ...scene import load_scene
+    from ...scene.settings import parse_settings, with_values
 
     symbolic = getattr(args, "param", ()) if params is None else params
     return with_values(load_scene(args.scene), parse_settings(args.set), symbolic)
@@ -60,7 +69,7 @@ def _scene_of(args, params=None):
 
 def _method(args):
     """The method asked for, else the default (imported here: ``algkin list`` loads no algebra)."""
-    from ..eliminate import DEFAULT_METHOD
+    from ...eliminate import DEFAULT_METHOD
 
     return args.method or DEFAULT_METHOD
 
@@ -78,7 +87,7 @@ def _range(text):
 
 
 def _cmd_extremum(args):
-    from ..analyses.extremum import extremum
+    from ...analyses.extremum import extremum
 
     _check_latex(args)
     angles = _range(args.range) if args.range else None
@@ -89,13 +98,13 @@ def _cmd_extremum(args):
 
 
 def _cmd_toggles(args):
-    from ..toggles import toggles
+    from ...analyses.toggles import toggles
 
     return _render(args, toggles(_scene_of(args)).to_json(), _report_toggles), 0
 
 
 def _cmd_accuracy(args):
-    from ..accuracy import accuracy
+    from ...bench.accuracy import accuracy
 
     if args.samples < 10:
         raise UsageError("--samples", args.samples, "needs at least 10 samples per case")
@@ -113,7 +122,7 @@ def _cmd_accuracy(args):
 def _figure_path(option, text):
     import pathlib
 
-    from ..files import check_output
+    from ...runtime.files import check_output
     from ..plot import FORMATS
 
     out = pathlib.Path(text)
@@ -143,7 +152,7 @@ def _cmd_plot(args):
     if args.against and args.derivative:
         raise UsageError("--against", args.against, "draws the minimum; leave out --derivative")
     against = _against(args.against) if args.against else None
-    from ..mechanism import load
+    from ...analyses.quantities import load
     from ..plot import minimum_figure, quantity_figure, save
 
     params = [against[0]] if against else []
@@ -169,7 +178,7 @@ def _against(text):
 
 
 def _cmd_list(args):
-    from ..scene import catalog_names, load_scene
+    from ...scene import catalog_names, load_scene
 
     scenes = [load_scene(n) for n in catalog_names()]
     document = {"scenes": [{"name": s.name, "description": s.description} for s in scenes]}
@@ -177,9 +186,9 @@ def _cmd_list(args):
 
 
 def _cmd_show(args):
-    from ..budget import current
-    from ..scene import compile_scene
-    from ..scene.load import as_scene
+    from ...runtime.budget import current
+    from ...scene import compile_scene
+    from ...scene.load import as_scene
 
     current().note(f"loading {args.scene}")
     scene = as_scene(_scene_of(args))
@@ -197,7 +206,7 @@ def _cmd_show(args):
 
 
 def _cmd_derive(args):
-    from ..pipeline import derive
+    from ...derivation.pipeline import derive
 
     out = _full_forms_target(args)
     result = derive(_scene_of(args), args.outputs, _method(args), args.backend, args.param, args.samples, args.seed)
@@ -217,7 +226,7 @@ def _full_forms_target(args):
     _check_latex(args)
     if args.out is None:
         return None
-    from ..files import check_output
+    from ...runtime.files import check_output
 
     check_output("--out", args.out)
     return pathlib.Path(args.out)
@@ -240,7 +249,7 @@ def _verdict(verification):
 
 
 def _cmd_curve(args):
-    from ..pipeline import curve
+    from ...derivation.pipeline import curve
 
     out = _full_forms_target(args)
     result = curve(_scene_of(args), args.point, _method(args), args.backend, args.param, args.samples, args.seed)
@@ -249,7 +258,7 @@ def _cmd_curve(args):
 
 
 def _cmd_verify(args):
-    from ..pipeline import derive
+    from ...derivation.pipeline import derive
 
     if args.samples == 0:
         raise UsageError("--samples", 0, "verify needs at least one sample (derive and curve take 0 to skip it)")

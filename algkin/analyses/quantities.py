@@ -20,12 +20,12 @@ from functools import cached_property
 import mpmath
 import sympy
 
-from .errors import UsageError
-from .evaluate import MPMATH, evaluate
-from . import validation
-from .scene.load import as_scene
-from .scene.settings import with_values
-from .system import symbol
+from ..errors import UsageError
+from ..evaluate import MPMATH, evaluate
+from ..runtime import validation
+from ..scene.load import as_scene
+from ..scene.settings import with_values
+from ..system import symbol
 
 __all__ = ["load", "Mechanism", "Quantity"]
 
@@ -76,13 +76,13 @@ class Quantity:
 
     @cached_property
     def derivation(self):
-        from .pipeline import derive
+        from ..derivation.pipeline import derive
 
         return derive(self.mechanism.scene, [self.text], params=self.mechanism.params, samples=0)
 
     @cached_property
     def _problem(self):
-        from .analyses.extremum import problem_for
+        from .extremum import problem_for
 
         return problem_for(self.derivation, self.text)
 
@@ -147,7 +147,7 @@ class Quantity:
 
     def extremum(self, range=None, largest=False):  # noqa: A002 (the seed's word)
         """Critical points, minimum and maximum; closed forms in the symbolic dimensions."""
-        from .analyses.extremum import extremum_of
+        from .extremum import extremum_of
 
         return extremum_of(self.derivation, self.text, range, largest)
 

@@ -1,11 +1,11 @@
 """Mechanisms drawn with matplotlib: a configuration, trajectories, implicit curves, animations.
 
-Built on ``algkin.motion`` (closed forms evaluated, never re-derived) and, like
-``algkin.plot``, on ``matplotlib.figure.Figure`` with no ``pyplot`` state. The implicit
+Built on ``algkin.analyses.motion`` (closed forms evaluated, never re-derived) and, like
+``algkin.ui.plot``, on ``matplotlib.figure.Figure`` with no ``pyplot`` state. The implicit
 curve comes from ``pipeline.curve`` (a second derivation, by elimination) and is drawn as
 the zero contour of ``F(x, y)``: it must pass through the closed-form trajectory.
 
->>> from algkin.motion import Motion
+>>> from algkin.analyses.motion import Motion
 >>> figure = mechanism_figure(Motion("chebyshev-lambda"), {"angle": 63})
 >>> [line.get_label() for line in figure.axes[0].lines if not line.get_label().startswith("_")]
 ['trajectory of P (left)', 'implicit curve of P (every assembly mode)']
@@ -16,9 +16,9 @@ import io
 import numpy as np
 import sympy
 
-from .errors import UsageError
-from .files import atomic_output, check_output
-from .plot import _figure
+from ..errors import UsageError
+from ..runtime.files import atomic_output, check_output
+from .plot import new_figure
 
 __all__ = ["mechanism_figure", "modes_figure", "draw_pose", "PoseArtists", "LiveFigure", "draw_curve", "animate", "parse_inputs", "parse_ranges", "plot_mechanism", "FORMATS"]
 
@@ -169,7 +169,7 @@ class LiveFigure:
         self.branch = motion.branches[motion.branch_index(branch)].label
         self.sweeps = _sweeps(motion, self.parameters)
         self.bounds = _bounds(motion, self.parameters, self.sweeps)
-        self.figure = _figure()
+        self.figure = new_figure()
         self._layout = self.figure.get_layout_engine()
         # A figure shaped like the mechanism's reach, so equal scales leave little empty space.
         ratio = (self.bounds[3] - self.bounds[2]) / (self.bounds[1] - self.bounds[0])
@@ -231,7 +231,7 @@ def mechanism_figure(motion, inputs=None, parameters=None, branch=None, curve=Tr
     at_defaults = all(v == motion.defaults[p] for p, v in motion.complete(inputs, parameters)[1].items())
     # With two inputs a point sweeps a region, not a curve: no implicit curve then.
     if curve and at_defaults and len(motion.inputs) == 1:
-        from .pipeline import curve as derive_curve
+        from ..derivation.pipeline import curve as derive_curve
 
         for name in motion.traced:
             draw_curve(live.axes, derive_curve(motion.scene, name, samples=0), live.bounds,
@@ -246,7 +246,7 @@ def modes_figure(motion, inputs=None, parameters=None):
     inputs = inputs if inputs is not None else motion.start(parameters)
     sweeps = _sweeps(motion, parameters)
     bounds = _bounds(motion, parameters, sweeps)
-    figure = _figure()
+    figure = new_figure()
     figure.set_size_inches(*_panels_size(bounds, len(motion.branches)))
     shared = None
     for k, branch in enumerate(motion.branches):
@@ -295,7 +295,7 @@ def animate(motion, out, parameters=None, branch=None, frames=72, fps=24):
 def parse_inputs(motion, texts):
     """``--input`` values: ``VALUE`` (a one-input scene) or ``NAME=VALUE``, degrees within range.
 
-    >>> from algkin.motion import Motion
+    >>> from algkin.analyses.motion import Motion
     >>> parse_inputs(Motion("chebyshev-lambda"), ["angle=30"])
     {'angle': 30.0}
     """
@@ -345,8 +345,8 @@ def plot_mechanism(scene, out, inputs=(), branch=None, modes=False, params=None,
     """
     import pathlib
 
-    from .branches import check_assembly
-    from .motion import Motion
+    from ..branches import check_assembly
+    from ..analyses.motion import Motion
     from .plot import save
 
     path = pathlib.Path(out)

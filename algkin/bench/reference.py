@@ -39,8 +39,8 @@ import numpy as np
 import sympy
 from flint import arb, ctx
 
-from .scene.compile import SliderSpec
-from .system import symbol
+from ..scene.compile import SliderSpec
+from ..system import symbol
 
 __all__ = ["Reference", "Certified", "BITS", "NotCertified"]
 

@@ -23,17 +23,17 @@ from dataclasses import dataclass, field
 import flint
 import sympy
 
-from .branches import closed_forms
-from .eliminate import eliminate
-from .errors import UsageError
-from .evaluate import ARB, evaluate
-from .scene import compile_scene, load_scene
-from .scene.compile import SliderSpec
-from .scene.constructions import Crank, Dyad, Fixed, Slider
-from .scene.settings import with_values
-from .system import symbol
-from .system.angles import half_angle_numerator, tangent_to_degrees, vanishes_at_half_turn
-from .system.convert import real_roots
+from ..branches import closed_forms
+from ..eliminate import eliminate
+from ..errors import UsageError
+from ..evaluate import ARB, evaluate
+from ..scene import compile_scene, load_scene
+from ..scene.compile import SliderSpec
+from ..scene.constructions import Crank, Dyad, Fixed, Slider
+from ..scene.settings import with_values
+from ..system import symbol
+from ..system.angles import half_angle_numerator, tangent_to_degrees, vanishes_at_half_turn
+from ..system.convert import real_roots
 
 __all__ = ["toggles", "Toggle", "Toggles", "grashof"]
 
@@ -143,7 +143,7 @@ def _angles(condition, c, s, t):
 
 def _artefacts(compiled, c, s, t):
     """Factors of the eliminants' discriminants that are not toggles, with the certificate."""
-    from .pipeline import derive
+    from ..derivation.pipeline import derive
 
     derived = derive(compiled.scene, [d.point for d in compiled.implicit], samples=0)
     geometric = [half_angle_numerator(cond, c, s, t) for d in compiled.implicit

@@ -22,12 +22,12 @@ from dataclasses import dataclass
 import numpy as np
 import sympy
 
-from .branches import closed_forms
-from .errors import UsageError
-from .evaluate import NUMPY, evaluate
-from .scene import Scene, compile_scene, load_scene
-from .scene.constructions import Crank, Dyad, Fixed, Frame, Slider
-from .system import symbol
+from ..branches import closed_forms
+from ..errors import UsageError
+from ..evaluate import NUMPY, evaluate
+from ..scene import Scene, compile_scene, load_scene
+from ..scene.constructions import Crank, Dyad, Fixed, Frame, Slider
+from ..system import symbol
 
 __all__ = ["Motion", "Pose", "symbolic_parameters"]
 

@@ -41,20 +41,20 @@ from dataclasses import dataclass
 import numpy as np
 import sympy
 
-from .branches import closed_forms
-from .branches.closed_form import reduce_on_circles
-from .branches.stable import StableBranch
-from . import progress, validation
-from .budget import current
-from .errors import UsageError
-from .pipeline import certify_labels, derive
+from ..branches import closed_forms
+from ..branches.closed_form import reduce_on_circles
+from ..branches.stable import StableBranch
+from ..derivation.pipeline import certify_labels, derive
+from ..errors import UsageError
+from ..runtime import progress, validation
+from ..runtime.budget import current
+from ..scene import compile_scene
+from ..scene.compile import _resolve_outputs
+from ..scene.constructions import Dyad, Fixed
+from ..scene.load import as_scene
+from ..scene.settings import with_values
+from ..system import symbol
 from .reference import BITS, Reference
-from .scene import compile_scene
-from .scene.compile import _resolve_outputs
-from .scene.load import as_scene
-from .scene.settings import with_values
-from .scene.constructions import Dyad, Fixed
-from .system import symbol
 
 __all__ = ["accuracy", "Accuracy", "STRATEGIES", "EPS", "REFERENCE"]
 
@@ -289,7 +289,7 @@ def _cases(subject, samples, rng):
     cases = {"uniform": np.sort(np.radians(lows + rng.random(samples) * widths[pick]))}
     if subject.dyad is None:
         return cases
-    from .toggles import toggles
+    from ..analyses.toggles import toggles
 
     edges = [np.radians(t.input_deg) for t in toggles(subject.compiled.scene, artefacts=False).toggles
              if t.point == subject.dyad.point]

@@ -2,14 +2,14 @@ r"""A self-contained interactive page: sliders move the mechanism in the browser
 
 The page is one HTML file with inline CSS, JavaScript and SVG (no server, no network).
 Each branch's closed forms (derived once, dimensions symbolic) are printed as a
-JavaScript function (``algkin.html.jscode``); sliders for every input and symbolic
+JavaScript function (``algkin.ui.html.jscode``); sliders for every input and symbolic
 dimension call them, the trajectory is swept the same way, and where a discriminant is
 negative the page says the configuration cannot assemble. The drawn positions are
 written to ``<output id="state" data-positions=...>`` and to each joint's circle, and the
 page reads starting slider values from its URL query (``page.html?angle=30&l=2``), so a
 headless browser can check it.
 
->>> from algkin.motion import Motion
+>>> from algkin.analyses.motion import Motion
 >>> text = page(Motion("chebyshev-lambda"))
 >>> text.startswith("<!DOCTYPE html>") and "src=" not in text and "<link" not in text
 True
@@ -32,7 +32,7 @@ import json
 import re
 from importlib import resources
 
-from ..files import write_atomic
+from ...runtime.files import write_atomic
 from .jscode import branch_function
 
 __all__ = ["page", "model", "slider_range", "parameter_range", "write", "fill", "script_json"]
@@ -54,7 +54,7 @@ def slider_range(default):
 def parameter_range(motion, name, ranges=None):
     """A dimension's slider bounds: given in ``ranges`` (name -> (lo, hi)), else declared in the
     scene, else around its default."""
-    from ..errors import UsageError
+    from ...errors import UsageError
 
     for given in (ranges or {}):
         if given not in motion.params:

@@ -1,0 +1,18 @@
+"""Text from a scene shown on a terminal without obeying what it may hide."""
+
+import re
+
+__all__ = ["terminal_safe"]
+
+# Control characters (ESC starts terminal commands) and bidirectional overrides (which
+# reorder what is shown) from a scene's names and text are shown escaped, never obeyed.
+_UNSAFE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u061c\u200e\u200f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
+
+
+def terminal_safe(text):
+    r"""``text`` with control and bidi characters escaped; newlines and tabs kept.
+
+    >>> terminal_safe("scene \x1b[31mred\u202e\n")
+    'scene \\x1b[31mred\\u202e\n'
+    """
+    return _UNSAFE.sub(lambda m: m.group().encode("unicode_escape").decode("ascii"), text)

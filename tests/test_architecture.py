@@ -1,0 +1,58 @@
+"""The package's shape: the layers' import contract holds, the root stays small, and every
+public name is still importable from ``algkin``."""
+
+import pkgutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import algkin
+
+ROOT = Path(__file__).resolve().parents[1]
+CONFIG = ROOT / ".importlinter"
+
+PUBLIC = ["load", "load_scene", "compile_scene", "derive", "curve", "extremum", "catalog_names", "interact",
+          "AlgkinError"]
+
+
+def test_the_import_contract_is_kept():
+    pytest.importorskip("importlinter", reason="the import contract needs the test extra (import-linter)")
+    code = "import sys; from importlinter.cli import lint_imports_command; sys.exit(lint_imports_command())"
+    done = subprocess.run([sys.executable, "-c", code, "--config", str(CONFIG), "--no-cache"], cwd=ROOT,
+                          capture_output=True, text=True, env={"PYTHONPATH": str(ROOT), "PATH": ""}, timeout=120)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "0 broken" in done.stdout
+
+
+def test_the_contract_names_every_package_under_the_root():
+    text = CONFIG.read_text(encoding="utf-8")
+    packages = [m.name for m in pkgutil.iter_modules(algkin.__path__) if m.ispkg and m.name != "catalog"]
+    assert packages and all(f"algkin.{name}" in text for name in packages), packages
+
+
+def test_at_most_four_modules_at_the_package_root():
+    modules = sorted(m.name for m in pkgutil.iter_modules(algkin.__path__) if not m.ispkg)
+    assert {"__main__", "errors"} <= set(modules) and len(modules) + 1 <= 4, modules  # +1: __init__.py
+
+
+@pytest.mark.parametrize("name", PUBLIC)
+def test_every_public_name_is_importable_from_algkin(name):
+    assert name in algkin.__all__
+    exec(f"from algkin import {name}", {})
+    assert callable(getattr(algkin, name))
+
+
+def test_all_lists_exactly_the_public_names_and_the_version_is_there():
+    assert sorted(algkin.__all__) == sorted(PUBLIC)
+    assert algkin.__version__ == "0.1.0"
+
+
+def test_the_facade_derive_is_the_function_not_a_package():
+    code = ("import algkin, algkin.derivation.pipeline, algkin.analyses.toggles;"
+            "r = algkin.derive('chebyshev-lambda', outputs=['B']);"
+            "print([b.label for b in r.branches], r.verification.passed)")
+    done = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
+                          env={"PYTHONPATH": str(ROOT), "PATH": ""}, timeout=120)
+    assert done.stdout.strip() == "['left', 'right'] True", done.stderr
