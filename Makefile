@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test bench peers browser docs clean
+.PHONY: demo test test-slow bench peers browser docs clean
 
 $(STAMP): pyproject.toml Makefile
 	$(PY) -m venv $(VENV)
@@ -23,8 +23,12 @@ demo: $(STAMP)
 	$(BIN)/algkin curve chebyshev-lambda --point P
 	$(BIN)/algkin derive arm-string --outputs AB
 
+# The suite but its slow set (tests marked slow: about a minute more), which CI runs too.
 test: $(STAMP) browser
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -m "not slow"
+
+test-slow: $(STAMP) browser
+	$(BIN)/python -m pytest -m slow
 
 # algkin bench exits 1 when a row disagrees with its reference (a peer's resultant carries
 # extraneous factors), bench_verify.py when a ratio misses its target: the other benchmarks

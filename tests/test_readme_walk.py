@@ -14,6 +14,9 @@ from pathlib import Path
 
 import pytest
 
+# Every README command, a bench and an animation among them: about 25 s, run by CI (make test-slow).
+pytestmark = pytest.mark.slow
+
 ROOT = Path(__file__).resolve().parents[1]
 README = ROOT / "README.md"
 PROGRAM = ".venv/bin/algkin"

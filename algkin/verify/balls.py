@@ -58,8 +58,8 @@ class BlockCertifier:
         inverse in floats at the candidate, saves the first step its own inversion.
         """
         if self.explicit is not None:  # u = formula: its value in balls is the root's enclosure
-            root = self.explicit(*known)
-            return root if root[0].is_finite() else None
+            root = arb(self.explicit(*known)[0])  # a constant formula comes back as a Python integer
+            return [root] if root.is_finite() else None
         x = [arb(float(v)) for v in candidate]
         if self.linear:
             return self._linear(x, known)

@@ -2,6 +2,7 @@
 
 import mpmath
 import sympy
+import pytest
 from hypothesis import given, settings
 
 from algkin.derivation.pipeline import curve
@@ -21,6 +22,7 @@ def relative_value(poly, point):
     return abs(total) / size
 
 
+@pytest.mark.slow
 @settings(max_examples=150)
 @given(strategies.scenes())
 def test_curve_vanishes_on_the_trajectory(scene):

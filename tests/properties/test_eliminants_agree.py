@@ -6,6 +6,7 @@ negative of python-flint's, which a constant factor covers.
 """
 
 import sympy
+import pytest
 from hypothesis import given, settings
 
 from algkin.branches import closed_forms
@@ -38,6 +39,7 @@ def assert_agree(scene, params, rivals):
             assert ratio.is_Rational and ratio != 0, (unknown, first[unknown], other[unknown])
 
 
+@pytest.mark.slow
 @settings(max_examples=120)
 @given(strategies.scenes())
 def test_resultant_groebner_and_linear_agree(scene):
