@@ -29,7 +29,7 @@ __all__ = ["Verification", "verify_branches", "WORKING_BITS"]
 
 WORKING_BITS = 192
 TOLERANCE = 1e-30  # relative residual a polynomial must reach on every root (the enclosures reach ~1e-50)
-MAX_ERROR = 1e-27  # a closed form's largest distance from the root of its label
+MAX_ERROR = 1e-27  # a closed form's largest distance from the root of its label, relative to its size
 MAX_DRAWS = 50  # inputs drawn per sample asked for, looking for where the mechanism assembles
 RETRY_STARTS = 8 * STARTS
 CHUNK = 500  # samples solved and proved together
@@ -56,6 +56,7 @@ class Verification:
     evaluated: int = 0  # numeric solutions the polynomials were evaluated at
     status: str = "failed"
     smallest_factor_residual: dict = field(default_factory=dict)  # per polynomial, per kept factor
+    max_rel_error: float = 0.0  # the largest error over the size of its configuration: scale-free
 
     @classmethod
     def skipped(cls):
@@ -67,6 +68,7 @@ class Verification:
             "samples": self.samples,
             "status": self.status,
             "max_abs_error": self.max_abs_error,
+            "max_rel_error": self.max_rel_error,
             "passed": self.passed,
             "compared": self.compared,
             "evaluated": self.evaluated,
@@ -176,7 +178,7 @@ def verify_branches(system, indicators, branches, inputs, parameters, samples=50
     report.smallest_factor_residual = plan.factors.to_json()
     report.failures += plan.factors.failures(TOLERANCE, report.evaluated)
     report.failures += structure_failures(polynomials or {}, factors)
-    report.passed = (not report.failures and report.max_abs_error <= MAX_ERROR
+    report.passed = (not report.failures and report.max_rel_error <= MAX_ERROR
                      and all(v <= TOLERANCE for v in report.max_polynomial_residual.values()))
     report.status = "passed" if report.passed else "failed"
     return report
@@ -362,10 +364,20 @@ def _compare(report, plan, sample):
         if len(matches) != 1:
             report.failures.append(f"branch {dict(branch.key)}: {len(matches)} numeric solutions with its label")
             continue
-        report.max_abs_error = max(report.max_abs_error, _error(plan, branch, values, matches[0]))
+        error, size = _error(plan, branch, values, matches[0]), _size(matches[0])
+        report.max_abs_error = max(report.max_abs_error, error)
+        report.max_rel_error = max(report.max_rel_error, error / size)
+        said = f"branch {dict(branch.key)}: its closed form is"
+        if not error <= MAX_ERROR * size and not any(f.startswith(said) for f in report.failures):
+            report.failures.append(f"{said} {error:.3g} from the root of its label (relative {error / size:.3g})")
         report.compared += 1
     for key in by_label:
         report.failures.append(f"numeric solution labelled {dict(key)} has no real closed-form branch")
+
+
+def _size(root):
+    """The configuration's size: its largest coordinate (1 where all are 0)."""
+    return max(abs(float(v.mid())) for v in root) or 1.0
 
 
 def _error(plan, branch, values, root):

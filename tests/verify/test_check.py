@@ -85,17 +85,20 @@ def test_nothing_to_compare_fails():
     assert any("nothing to compare" in f for f in report.failures)
 
 
-def test_lambda_at_1e_minus_20_is_compared_as_at_scale_one():
+@pytest.mark.parametrize("k", ["1e-20", "1e50"])
+def test_a_lambda_of_any_size_is_compared_as_at_scale_one(k):
     # The check is scale-free: roots found from the pencil of the two circles, proved in boxes
-    # sized relative to the root, labels and discriminants decided by sign. (The mpmath check
-    # judged every sample of this scale near a degenerate configuration and compared nothing.)
+    # sized relative to the root, labels and discriminants decided by sign, errors relative to
+    # the configuration. (The mpmath check judged every sample at 1e-20 near a degenerate
+    # configuration and compared nothing.)
     text = (LAMBDA_TEXT.replace('D = { fixed = [2, 0] }', 'D = { fixed = ["2*k", 0] }')
             .replace('length = 1,', 'length = "k",').replace('["5/2", "5/2"]', '["5/2*k", "5/2*k"]'))
-    scene = load_scene_text(text.replace("[inputs]", '[parameters]\nk = "1e-20"\n\n[inputs]'), "tiny.toml")
+    scene = load_scene_text(text.replace("[inputs]", f'[parameters]\nk = "{k}"\n\n[inputs]'), "scaled.toml")
     verification = algkin.derive(scene, outputs=["B"], samples=5, certify=False).verification
     assert verification.passed, verification.failures
     assert verification.compared == 10
-    assert verification.max_abs_error < 1e-20 * 1e-40  # coordinates ~1e-20, relative error below 1e-40
+    assert verification.max_rel_error < 1e-40
+    assert verification.max_abs_error < 1e-40 * 3 * float(k)  # coordinates up to about 3k
 
 
 def test_narrow_assembly_range_is_still_compared():
