@@ -3,7 +3,5 @@
 from .assembly import check_assembly
 from .certify import certify_label
 from .closed_form import Branch, closed_forms, reduce_on_circles
-from .curve import circularity, top_form
 
-__all__ = ["Branch", "closed_forms", "reduce_on_circles", "check_assembly", "circularity", "top_form",
-           "certify_label"]
+__all__ = ["Branch", "closed_forms", "reduce_on_circles", "check_assembly", "certify_label"]
