@@ -11,7 +11,7 @@ from algkin.evaluate import MPMATH, evaluate
 from algkin.derivation.pipeline import certify_labels
 from algkin.scene import compile_scene
 
-from ..test_toggles import four_bar, law_of_cosines
+from ..analyses.test_toggles import four_bar, law_of_cosines
 
 
 def certified(scene):

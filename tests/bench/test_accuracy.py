@@ -13,7 +13,7 @@ from algkin.branches.stable import heron_area
 
 from algkin.scene import load_scene
 
-from .test_toggles import four_bar
+from ..analyses.test_toggles import four_bar
 
 EPS = 2.0**-53
 

@@ -7,7 +7,7 @@ import sympy
 
 import algkin
 
-from .analyses.extremum.arm_by_hand import hand_minimum
+from .extremum.arm_by_hand import hand_minimum
 
 theta, b = sympy.Symbol("theta", real=True), sympy.Symbol("b", real=True)
 

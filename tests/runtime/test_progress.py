@@ -10,7 +10,7 @@ import time
 from algkin.runtime import progress
 from algkin.runtime.budget import Budget, current
 
-from .processes import ENV
+from ..processes import ENV
 
 TICK = 0.15  # seconds per step: tqdm redraws a count at most every 0.1 s
 
