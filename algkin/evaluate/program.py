@@ -24,6 +24,7 @@ True
 
 import functools
 
+import flint
 import sympy
 
 from .tree import ARB, FLOAT, MPMATH, NUMPY  # noqa: F401 - the kinds a program is compiled for
@@ -54,11 +55,14 @@ class _Program:
         arguments.update({sympy.Symbol(n): f"a{k}" for k, n in enumerate(names)})
         self.arguments = arguments
         shared, reduced = sympy.cse(list(exprs), symbols=sympy.numbered_symbols("_t"), optimizations=None)
-        lines = [f"def program({', '.join(f'a{k}' for k in range(len(names)))}):", "    q = constants()"]
+        lines = []
         for name, expr in shared:
             self.arguments[name] = str(name)
             lines.append(f"    {name} = {self._code(expr)}")
         lines.append(f"    return [{', '.join(self._code(e) for e in reduced)}]")
+        # the rationals, made in the kind at call time, only where there are any
+        lines[:0] = [f"def program({', '.join(f'a{k}' for k in range(len(names)))}):"] + \
+            (["    q = constants()"] if self.rationals else [])
         scope = {"constants": self._constants, "power": integer_power, "sqrt": kind.sqrt}
         exec(compile("\n".join(lines), "<algkin program>", "exec"), scope)  # noqa: S102 - our own code, from a sympy tree
         self.program = scope["program"]
@@ -68,9 +72,8 @@ class _Program:
         return self.program(*values)
 
     def _constants(self):
-        """The rationals in the kind, remade when the working precision changed."""
-        import flint  # the precision of balls; floats and arrays ignore it
-
+        """The rationals in the kind, remade when the working precision changed (balls' precision;
+        floats and arrays ignore it)."""
         precision = flint.ctx.prec
         if self._made[0] != precision:
             self._made = (precision, [self.kind.number(p, q) for p, q in self.rationals])
