@@ -199,12 +199,13 @@ def _check_batch(report, plan, angles, rng, worst):
     """Solve, prove and compare every sample of the batch; how many compared something."""
     count = len(next(iter(angles.values()), [None]))
     samples = [_Sample(plan.balls(angles, k)) for k in range(count)]
-    _certified(plan, angles, samples, rng, STARTS)
+    floats = plan.floats(angles)
+    _certified(plan, floats, samples, rng, STARTS)
     missing = [k for k, sample in enumerate(samples) if sample.lacks_a_root(plan)]
     if missing:  # Newton's random starts may miss a root: those samples again, with more starts
-        _certified(plan, {n: a[missing] for n, a in angles.items()}, [samples[k] for k in missing], rng,
+        _certified(plan, {n: v[missing] for n, v in floats.items()}, [samples[k] for k in missing], rng,
                    RETRY_STARTS)
-    magnitudes = _magnitudes(plan, angles, samples)
+    magnitudes = _magnitudes(plan, floats, samples)
     useful = 0
     for sample, sizes in zip(samples, magnitudes):
         before = (report.compared, report.evaluated)
@@ -241,9 +242,10 @@ class _Sample:
         return any(real and branch.key not in self.labels for branch, real in zip(plan.branches, self.real))
 
 
-def _certified(plan, angles, samples, rng, starts):
-    """Set each sample's proved roots (and whether some candidate could not be proved)."""
-    candidates = solve_floats(plan.blocks, plan.floats(angles), rng, starts)
+def _certified(plan, floats, samples, rng, starts):
+    """Set each sample's proved roots (and whether some candidate could not be proved); ``floats``
+    holds the known variables' float arrays over the samples."""
+    candidates = solve_floats(plan.blocks, floats, rng, starts)
     rows = [np.stack([candidates.values[n] for n in block.names], axis=1).tolist() for block, _, _ in plan.certifiers]
     lineage = [row.tolist() for row in candidates.lineage]
     proved = {}  # (block, partial solution) -> its unknowns' balls: candidates share their first blocks
@@ -303,12 +305,12 @@ def _real(values):
     return False if any(v < 0 for v in values) else None
 
 
-def _magnitudes(plan, angles, samples):
+def _magnitudes(plan, floats, samples):
     """Per sample, per root, ``id(polynomial)`` -> the sum of its terms' absolute values (floats, one pass)."""
     owners = [k for k, sample in enumerate(samples) for _ in sample.roots]
     if not owners or not plan.polynomials:
         return [[{} for _ in sample.roots] for sample in samples]
-    floats = {n: v[owners] for n, v in plan.floats(angles).items()}
+    floats = {n: v[owners] for n, v in floats.items()}
     flat = [root for sample in samples for root in sample.roots]
     for u, k in plan.index.items():
         floats[u] = np.array([float(root[k].mid()) for root in flat])

@@ -127,8 +127,9 @@ class _Pencil:
 
     def solve(self, values, count):
         """``(parent rows, u, v)``: the real solutions of every row (a double root counts twice)."""
-        first = _columns(self.first(*_arguments_of(self.known, values, count)), count).T
-        a, b, c = _columns(self.line(*_arguments_of(self.known, values, count)), count).T
+        arguments = _arguments(self.known, values, count)
+        first = _columns(self.first(*arguments), count).T
+        a, b, c = _columns(self.line(*arguments), count).T
         # solve the line for the unknown with the larger coefficient: u = p v + r (or v = p u + r)
         swap = np.abs(b) > np.abs(a)
         lead, other = np.where(swap, b, a), np.where(swap, a, b)
@@ -152,10 +153,6 @@ class _Pencil:
         first_unknown = np.where(swap[rows], t, dependent)
         second_unknown = np.where(swap[rows], dependent, t)
         return rows, first_unknown, second_unknown
-
-
-def _arguments_of(names, values, count):
-    return [values[n] if n in values else np.zeros(count) for n in names]
 
 
 @functools.lru_cache(maxsize=64)
@@ -218,7 +215,7 @@ def _inverses(block, values, count):
     size = len(block.names)
     if block.coefficients is not None or not count:
         return np.full((count, size, size), np.nan)
-    j = _columns(block.jacobian(*_arguments(block, values, count)), count).reshape(count, size, size)
+    j = _columns(block.jacobian(*_arguments(block.arguments, values, count)), count).reshape(count, size, size)
     inverse = np.full_like(j, np.nan)
     with np.errstate(all="ignore"):
         regular = np.isfinite(j).all(axis=(1, 2)) & (np.abs(np.linalg.det(j)) > 0)
@@ -233,8 +230,9 @@ def _scale(values, size, count):
     return 2 * (np.maximum(largest, size) + 1)
 
 
-def _arguments(block, values, count):
-    return [values[n] if n in values else np.zeros(count) for n in block.arguments]
+def _arguments(names, values, count):
+    """The arrays of ``names`` in ``values``, zeros for a variable with none."""
+    return [values[n] if n in values else np.zeros(count) for n in names]
 
 
 def _columns(values, count):
@@ -248,7 +246,7 @@ def _columns(values, count):
 def _univariate(block, values):
     """Real eigenvalues of each row's companion matrix (rows grouped by their actual degree)."""
     count = len(next(iter(values.values())))
-    coeffs = _columns(block.coefficients(*_arguments(block, values, count)), count)
+    coeffs = _columns(block.coefficients(*_arguments(block.arguments, values, count)), count)
     largest = np.max(np.abs(coeffs), axis=1)
     nonzero = np.abs(coeffs) > 1e-14 * largest[:, None]
     lead = np.where(nonzero.any(axis=1), nonzero.argmax(axis=1), coeffs.shape[1])
@@ -310,7 +308,7 @@ def _iterate(block, base, points, scale):
 
 def _step(block, values, count):
     """``(|F|, J^-1 F)`` per row."""
-    args = _arguments(block, values, count)
+    args = _arguments(block.arguments, values, count)
     size = len(block.names)
     f = _columns(block.residual(*args), count)
     j = _columns(block.jacobian(*args), count).reshape(count, size, size)
