@@ -25,12 +25,13 @@ True
 import functools
 
 import flint
+import numpy as np
 import sympy
 
 from .tree import ARB, FLOAT, MPMATH, NUMPY  # noqa: F401 - the kinds a program is compiled for
 from .tree import integer_power
 
-__all__ = ["compile_program"]
+__all__ = ["compile_program", "columns"]
 
 
 @functools.lru_cache(maxsize=512)
@@ -116,3 +117,16 @@ class _Program:
         else:
             raised = f"power({base}, {abs(n)})" if abs(n) > 1 else base
         return raised if n > 0 else f"(1 / {raised})"
+
+
+def columns(outputs, count):
+    """``count x len(outputs)``: a numpy program's outputs over ``count`` rows, a constant
+    output (a Jacobian's ``2``) spread over every row.
+
+    >>> columns([np.array([1.0, 2.0]), 3], 2).tolist()
+    [[1.0, 3.0], [2.0, 3.0]]
+    """
+    out = np.empty((count, len(outputs)))
+    for k, v in enumerate(outputs):
+        out[:, k] = v
+    return out

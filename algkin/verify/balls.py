@@ -7,7 +7,9 @@ candidate ``x``: a Newton step, then a Krawczyk test on a small box ``X`` around
 ``K = x - Y F(x) + (I - Y J(X)) (X - x)`` with ``Y`` the inverse of ``J``'s midpoint.
 ``K`` inside the interior of ``X`` proves that, for every parameter value in their balls,
 ``X`` holds exactly one root, and that it lies in ``K``: an enclosure about as tight as
-the working precision (the test contracts quadratically). A linear block's root is the
+the working precision (the test contracts quadratically). Two circles (a ``pencil.Pencil``)
+are proved without a box: both roots of the quadratic on their radical axis, in balls,
+proved real and distinct by its discriminant. A linear block's root is the
 ball solution of its linear system, unique where the matrix is proved invertible. Near a
 double root (a toggle) more Newton steps are tried before giving up; a candidate that
 cannot be proved is reported as such, never used.
@@ -31,6 +33,7 @@ from flint import arb, arb_mat
 from ..evaluate import ARB
 from ..evaluate.program import compile_program
 from ..system import symbol
+from .pencil import Pencil
 
 __all__ = ["BlockCertifier", "certifier_of", "certify_parameters"]
 
@@ -50,6 +53,7 @@ class BlockCertifier:
         self.jacobian = compile_program(list(sympy.Matrix(list(equations)).jacobian(unknowns)), arguments, ARB)
         self.identity = arb_mat([[int(i == j) for j in range(self.n)] for i in range(self.n)])
         self.explicit = _explicit(equations, unknowns, parameters)
+        self.pencil = Pencil.of(equations, unknowns, list(parameters))
 
     def __call__(self, candidate, known, inverse=None):
         """The root's enclosure (one ball per unknown) next to ``candidate``, or ``None``.
@@ -60,6 +64,10 @@ class BlockCertifier:
         if self.explicit is not None:  # u = formula: its value in balls is the root's enclosure
             root = arb(self.explicit(*known)[0])  # a constant formula comes back as a Python integer
             return [root] if root.is_finite() else None
+        if self.pencil is not None:  # the quadratic on the radical axis, in balls: no box to test
+            root = self.pencil.enclose(candidate, known)
+            if root is not None:
+                return root
         x = [arb(float(v)) for v in candidate]
         if self.linear:
             return self._linear(x, known)

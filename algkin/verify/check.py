@@ -3,7 +3,8 @@
 For a batch of sampled inputs at once: the original system is solved in floats
 (``solve.solve_floats``, vectorised over samples and Newton starts; no closed form
 involved); every candidate is proved to enclose exactly one root of the original equations
-(``balls.Certifier``, a Krawczyk test in python-flint ``arb``); each root is labelled by
+(``balls.BlockCertifier``, in python-flint ``arb``: the quadratic on two circles' radical axis,
+else a Krawczyk test); each root is labelled by
 the signs of the branch indicators on its enclosure, decided or the sample is set aside as
 near a degenerate configuration; each real closed-form branch, evaluated in balls on the
 same inputs, is compared with the root of the same label; and every polynomial (eliminant,
@@ -77,7 +78,8 @@ class Verification:
             "smallest_factor_residual": self.smallest_factor_residual,
             "failures": self.failures[:10],
             "method": ("Newton multistart on the original system (floats, all samples at once), "
-                       f"every root proved by a Krawczyk test in arb at {WORKING_BITS} bits"),
+                       f"every root proved in arb at {WORKING_BITS} bits: two circles by the quadratic on their "
+                       "radical axis, other blocks by a Krawczyk test"),
         }
 
 

@@ -24,8 +24,9 @@ import numpy as np
 import sympy
 
 from ..evaluate import NUMPY
-from ..evaluate.program import compile_program
+from ..evaluate.program import columns, compile_program
 from ..system import System, symbol
+from .pencil import Pencil
 
 __all__ = ["Blocks", "Candidates", "blocks_of", "solve_floats", "STARTS"]
 
@@ -86,73 +87,7 @@ class _Block:
             jacobian = sympy.Matrix(equations).jacobian(unknowns)
             self.residual = compile_program(equations, arguments, NUMPY)
             self.jacobian = compile_program(list(jacobian), arguments, NUMPY)
-            self.pencil = _Pencil.of(equations, unknowns, [a for a in arguments if a not in names])
-
-
-class _Pencil:
-    """Two quadrics in two unknowns whose quadratic parts are a fixed multiple of each other
-    (two circles, a circle and a line): a combination of them is linear, so every real
-    solution comes from one quadratic per row, with no random start to miss one.
-
-    ``first`` holds the first equation's six coefficients (u^2, uv, v^2, u, v, 1) and ``line``
-    the linear combination's three (u, v, 1), as programs of the known values."""
-
-    MONOMIALS = ((2, 0), (1, 1), (0, 2), (1, 0), (0, 1), (0, 0))
-
-    def __init__(self, first, line, known):
-        self.known = known
-        self.first = compile_program(first, known, NUMPY)
-        self.line = compile_program(line, known, NUMPY)
-
-    @classmethod
-    def of(cls, equations, unknowns, known):
-        """The pencil of a 2 x 2 block, or ``None`` where the block is not one."""
-        if len(equations) != 2:
-            return None
-        polys = [sympy.Poly(eq, *unknowns) for eq in equations]
-        if any(p.total_degree() > 2 for p in polys):
-            return None
-        quadratic = [[p.coeff_monomial(m) for m in cls.MONOMIALS[:3]] for p in polys]
-        # the combination q2 * first - q1 * second must cancel every quadratic term, with numbers
-        pivot = next((k for k in range(3) if quadratic[0][k] != 0), None)
-        if pivot is None or any(not sympy.sympify(q).is_number for row in quadratic for q in row):
-            return None
-        q1, q2 = quadratic[0][pivot], quadratic[1][pivot]
-        if any(sympy.simplify(q2 * a - q1 * b) != 0 for a, b in zip(*quadratic)):
-            return None
-        combination = sympy.expand(q2 * equations[0] - q1 * equations[1])
-        line = sympy.Poly(combination, *unknowns)
-        return cls([polys[0].coeff_monomial(m) for m in cls.MONOMIALS],
-                   [line.coeff_monomial(m) for m in cls.MONOMIALS[3:]], known)
-
-    def solve(self, values, count):
-        """``(parent rows, u, v)``: the real solutions of every row (a double root counts twice)."""
-        arguments = _arguments(self.known, values, count)
-        first = _columns(self.first(*arguments), count).T
-        a, b, c = _columns(self.line(*arguments), count).T
-        # solve the line for the unknown with the larger coefficient: u = p v + r (or v = p u + r)
-        swap = np.abs(b) > np.abs(a)
-        lead, other = np.where(swap, b, a), np.where(swap, a, b)
-        with np.errstate(all="ignore"):
-            p, r = -other / lead, -c / lead
-            # the first equation in the free unknown t (v, or u where swapped)
-            uu, uv, vv, u, v, one = first
-            uu, vv, u, v = np.where(swap, vv, uu), np.where(swap, uu, vv), np.where(swap, v, u), np.where(swap, u, v)
-            quad = uu * p * p + uv * p + vv
-            lin = 2 * uu * p * r + uv * r + u * p + v
-            const = uu * r * r + u * r + one
-            disc = lin * lin - 4 * quad * const
-            root = np.sqrt(np.maximum(disc, 0))
-            # the two roots without cancellation: q = -(lin + sign(lin) root) / 2
-            q = -0.5 * (lin + np.copysign(root, lin))
-            t = np.stack([q / quad, const / q], axis=1)
-        keep = np.isfinite(t) & (disc >= -1e-12 * (lin * lin + np.abs(4 * quad * const)))[:, None]
-        rows = np.repeat(np.arange(count)[:, None], 2, axis=1)[keep]
-        t = t[keep]
-        dependent = p[rows] * t + r[rows]
-        first_unknown = np.where(swap[rows], t, dependent)
-        second_unknown = np.where(swap[rows], dependent, t)
-        return rows, first_unknown, second_unknown
+            self.pencil = Pencil.of(equations, unknowns, [a for a in arguments if a not in names])
 
 
 @functools.lru_cache(maxsize=64)
@@ -215,7 +150,7 @@ def _inverses(block, values, count):
     size = len(block.names)
     if block.coefficients is not None or not count:
         return np.full((count, size, size), np.nan)
-    j = _columns(block.jacobian(*_arguments(block.arguments, values, count)), count).reshape(count, size, size)
+    j = columns(block.jacobian(*_arguments(block.arguments, values, count)), count).reshape(count, size, size)
     inverse = np.full_like(j, np.nan)
     with np.errstate(all="ignore"):
         regular = np.isfinite(j).all(axis=(1, 2)) & (np.abs(np.linalg.det(j)) > 0)
@@ -235,18 +170,10 @@ def _arguments(names, values, count):
     return [values[n] if n in values else np.zeros(count) for n in names]
 
 
-def _columns(values, count):
-    """``count x len(values)``: a program's outputs, constants (a Jacobian's ``2``) spread out."""
-    out = np.empty((count, len(values)))
-    for k, v in enumerate(values):
-        out[:, k] = v
-    return out
-
-
 def _univariate(block, values):
     """Real eigenvalues of each row's companion matrix (rows grouped by their actual degree)."""
     count = len(next(iter(values.values())))
-    coeffs = _columns(block.coefficients(*_arguments(block.arguments, values, count)), count)
+    coeffs = columns(block.coefficients(*_arguments(block.arguments, values, count)), count)
     largest = np.max(np.abs(coeffs), axis=1)
     nonzero = np.abs(coeffs) > 1e-14 * largest[:, None]
     lead = np.where(nonzero.any(axis=1), nonzero.argmax(axis=1), coeffs.shape[1])
@@ -310,8 +237,8 @@ def _step(block, values, count):
     """``(|F|, J^-1 F)`` per row."""
     args = _arguments(block.arguments, values, count)
     size = len(block.names)
-    f = _columns(block.residual(*args), count)
-    j = _columns(block.jacobian(*args), count).reshape(count, size, size)
+    f = columns(block.residual(*args), count)
+    j = columns(block.jacobian(*args), count).reshape(count, size, size)
     if size == 2:  # Cramer's rule: several times faster than a batched LU on 2 x 2 matrices
         det = j[:, 0, 0] * j[:, 1, 1] - j[:, 0, 1] * j[:, 1, 0]
         step = np.stack([j[:, 1, 1] * f[:, 0] - j[:, 0, 1] * f[:, 1],

@@ -49,6 +49,26 @@ def test_each_intersection_is_enclosed_tightly(distance, angle):
                 assert ball.rad() < 1e-40
 
 
+def test_a_block_of_no_two_circles_is_proved_by_krawczyk():
+    # x^2 + y^2 = 4 and xy = 1: x^2 = 2 + sqrt(3), y = 1/x (by hand); no line combines them
+    certify = BlockCertifier(["x", "y"], [x**2 + y**2 - 4, x * y - 1], [])
+    assert certify.pencil is None
+    with flint.ctx.workprec(192):
+        root = certify([1.93, 0.52], [])
+        exact = (2 + flint.arb(3).sqrt()).sqrt()
+        assert root[0].overlaps(exact) and root[1].overlaps(1 / exact) and root[0].rad() < 1e-40
+
+
+def test_a_circle_and_a_line_are_a_pencil():
+    # x^2 + y^2 = 4 and y = x + 2 meet at (0, 2) and (-2, 0)
+    certify = BlockCertifier(["x", "y"], [x**2 + y**2 - 4, y - x - 2], [])
+    assert certify.pencil is not None
+    with flint.ctx.workprec(192):
+        for point in ([0.0, 2.0], [-2.0, 0.0]):
+            root = certify([v + 1e-10 for v in point], [])
+            assert all(b.overlaps(flint.arb(v)) and b.rad() < 1e-50 for b, v in zip(root, point))
+
+
 def test_a_tangency_is_not_proved():
     # Distance 5 = 2 + 3: one double root at (2, 0); no box holds exactly one simple root there.
     assert prove(5, 0, [2.0, 1e-9]) is None

@@ -1,0 +1,134 @@
+"""Two quadrics whose quadratic parts are a fixed multiple of each other (two circles, a
+circle and a line), solved through their linear combination, with no random start.
+
+``q2 * first - q1 * second`` (``q1 != 0`` the first's leading quadratic coefficient) has no
+quadratic term: the block is equivalent to ``first`` and that line. Solving the line for
+one unknown leaves one quadratic in the other: every real root of the block comes from it,
+in floats for all samples at once (``Pencil.solve``) and in balls for one sample
+(``Pencil.enclose``). Both work from the block's own equations, never from a closed form.
+
+>>> import flint
+>>> from algkin.system import symbol
+>>> x, y = symbol("x"), symbol("y")
+>>> circles = Pencil.of([x**2 + y**2 - 4, (x - 2)**2 + y**2 - 4], [x, y], [])
+>>> with flint.ctx.workprec(200):
+...     root = circles.enclose([1.0, 1.7320508], [])
+>>> root[0].overlaps(flint.arb(1)), root[1].overlaps(flint.arb(3).sqrt()), root[1].rad() < 1e-50
+(True, True, True)
+"""
+
+import numpy as np
+import sympy
+from flint import arb
+
+from ..evaluate import ARB, NUMPY
+from ..evaluate.program import columns, compile_program
+
+__all__ = ["Pencil"]
+
+NEAR = 1e-6  # how far (relative) a float candidate may be from the root it stands for
+MONOMIALS = ((2, 0), (1, 1), (0, 2), (1, 0), (0, 1), (0, 0))
+
+
+class Pencil:
+    """The pencil of a 2 x 2 block: ``first``'s six coefficients (u^2, uv, v^2, u, v, 1) and the
+    linear combination's three (u, v, 1), compiled as programs of the known values."""
+
+    def __init__(self, first, line, known):
+        self.known = known
+        self.first = compile_program(first, known, NUMPY)
+        self.line = compile_program(line, known, NUMPY)
+        # balls: one program for all nine coefficients; the two roots of the last sample remembered
+        self.coefficients = compile_program(list(first) + list(line), known, ARB)
+        self._last = (None, None)
+
+    @classmethod
+    def of(cls, equations, unknowns, known):
+        """The pencil of a block of ``equations`` in ``unknowns``, or ``None`` where it is not one."""
+        if len(equations) != 2:
+            return None
+        polys = [sympy.Poly(eq, *unknowns) for eq in equations]
+        if any(p.total_degree() > 2 for p in polys):
+            return None
+        quadratic = [[p.coeff_monomial(m) for m in MONOMIALS[:3]] for p in polys]
+        # the combination q2 * first - q1 * second must cancel every quadratic term, with numbers
+        pivot = next((k for k in range(3) if quadratic[0][k] != 0), None)
+        if pivot is None or any(not sympy.sympify(q).is_number for row in quadratic for q in row):
+            return None
+        q1, q2 = quadratic[0][pivot], quadratic[1][pivot]
+        if any(sympy.simplify(q2 * a - q1 * b) != 0 for a, b in zip(*quadratic)):
+            return None
+        line = sympy.Poly(sympy.expand(q2 * equations[0] - q1 * equations[1]), *unknowns)
+        return cls([polys[0].coeff_monomial(m) for m in MONOMIALS],
+                   [line.coeff_monomial(m) for m in MONOMIALS[3:]], known)
+
+    def solve(self, values, count):
+        """``(parent rows, u, v)`` in floats: the real solutions of every row (a double root counts twice)."""
+        arguments = [values[n] if n in values else np.zeros(count) for n in self.known]
+        first = columns(self.first(*arguments), count).T
+        a, b, c = columns(self.line(*arguments), count).T
+        # solve the line for the unknown with the larger coefficient: u = p v + r (or v = p u + r)
+        swap = np.abs(b) > np.abs(a)
+        lead, other = np.where(swap, b, a), np.where(swap, a, b)
+        with np.errstate(all="ignore"):
+            p, r = -other / lead, -c / lead
+            # the first equation in the free unknown t (v, or u where swapped)
+            uu, uv, vv, u, v, one = first
+            uu, vv, u, v = np.where(swap, vv, uu), np.where(swap, uu, vv), np.where(swap, v, u), np.where(swap, u, v)
+            quad = uu * p * p + uv * p + vv
+            lin = 2 * uu * p * r + uv * r + u * p + v
+            const = uu * r * r + u * r + one
+            disc = lin * lin - 4 * quad * const
+            root = np.sqrt(np.maximum(disc, 0))
+            # the two roots without cancellation: q = -(lin + sign(lin) root) / 2
+            q = -0.5 * (lin + np.copysign(root, lin))
+            t = np.stack([q / quad, const / q], axis=1)
+        keep = np.isfinite(t) & (disc >= -1e-12 * (lin * lin + np.abs(4 * quad * const)))[:, None]
+        rows = np.repeat(np.arange(count)[:, None], 2, axis=1)[keep]
+        t = t[keep]
+        dependent = p[rows] * t + r[rows]
+        return rows, np.where(swap[rows], t, dependent), np.where(swap[rows], dependent, t)
+
+    def enclose(self, candidate, known):
+        """Balls ``[u, v]`` holding the root next to the float ``candidate``, for every value of the
+        ``known`` balls, or ``None`` where the two roots are not proved distinct (near a double
+        root) or the candidate is near neither.
+
+        Both roots are enclosed at once (a sample's candidates share their ``known`` balls)."""
+        last_known, roots = self._last
+        if last_known is None or len(last_known) != len(known) or any(a is not b for a, b in zip(last_known, known)):
+            roots = self._roots([arb(c) for c in self.coefficients(*known)])
+            self._last = (tuple(known), roots)
+        if roots is None:
+            return None
+        gap, root = min((max(abs(float(b.mid()) - c) for b, c in zip(root, candidate)), root) for root in roots)
+        # a candidate far from both roots is no float solution: nothing is proved next to it
+        return root if gap <= NEAR * max(1.0, *(abs(c) for c in candidate)) else None
+
+    @staticmethod
+    def _roots(coefficients):
+        """Both roots in balls, each unknown's, or ``None`` unless they are proved real and distinct."""
+        uu, uv, vv, u, v, one, a, b, c = coefficients
+        swap = abs(float(b.mid())) > abs(float(a.mid()))
+        lead, other = (b, a) if swap else (a, b)
+        if not (lead > 0 or lead < 0):
+            return None
+        p, r = -other / lead, -c / lead
+        if swap:
+            uu, vv, u, v = vv, uu, v, u
+        quad = uu * p * p + uv * p + vv
+        lin = 2 * uu * p * r + uv * r + u * p + v
+        const = uu * r * r + u * r + one
+        disc = lin * lin - 4 * quad * const
+        if not (disc > 0 and (quad > 0 or quad < 0)):
+            return None
+        root = disc.sqrt()
+        q = -(lin + root) / 2 if float(lin.mid()) >= 0 else -(lin - root) / 2  # no cancellation
+        roots = []
+        for t in (q / quad, const / q):
+            dependent = p * t + r
+            pair = [t, dependent] if swap else [dependent, t]
+            if not all(x.is_finite() for x in pair):
+                return None
+            roots.append(pair)
+        return roots
