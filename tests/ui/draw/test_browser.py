@@ -13,7 +13,7 @@ from algkin.ui.html import write
 from algkin.analyses.motion import Motion
 
 from .browser import load
-from .hand import CHEBYSHEV, FOURBAR, fourbar
+from ...hand_linkages import CHEBYSHEV, FOURBAR, fourbar
 
 
 @pytest.fixture(scope="module")

@@ -11,7 +11,7 @@ import re
 
 import pytest
 
-from .processes import algkin, run, run_on_terminal
+from ...processes import algkin, run, run_on_terminal
 
 DERIVE = ("derive", "chebyshev-lambda", "--outputs", "B")
 SHOW = ("show", "chebyshev-lambda", "--outputs", "B")

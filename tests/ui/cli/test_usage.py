@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 import sympy
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[3]
 
 
 def run_cli(args, cwd, timeout=120):

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[3]
 COMMANDS = {
     "derive": ["derive", "fourbar", "--param", "l", "--outputs", "B", "P", "--samples", "5"],
     "curve": ["curve", "slider-crank", "--point", "M", "--samples", "5"],

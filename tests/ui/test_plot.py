@@ -19,7 +19,7 @@ from algkin.analyses.quantities import load  # noqa: E402
 from algkin.ui.plot import accuracy_figure, minimum_figure, quantity_figure, save  # noqa: E402
 from algkin.scene import load_scene, load_scene_text  # noqa: E402
 
-from .analyses.extremum.arm_by_hand import brute_minimum, hand_minimiser, hand_minimum  # noqa: E402
+from ..analyses.extremum.arm_by_hand import brute_minimum, hand_minimiser, hand_minimum  # noqa: E402
 
 
 def run(*args):
@@ -74,7 +74,7 @@ def test_minimum_against_b_follows_brute_force():
     assert cuts == [0.0]  # the minimiser leaves [0, 90] at b = 0
 
 
-ARM = (pathlib.Path(__file__).parents[1] / "algkin" / "catalog" / "arm-string.toml").read_text()
+ARM = (pathlib.Path(__file__).parents[2] / "algkin" / "catalog" / "arm-string.toml").read_text()
 
 
 def measured(scene):

@@ -2,7 +2,7 @@
 
 import mpmath
 
-from ..catalog.geometry import circles, on_circle, rigid
+from .catalog.geometry import circles, on_circle, rigid
 
 CHEBYSHEV = dict(a=1, d=2, l=mpmath.mpf(5) / 2, m=mpmath.mpf(5) / 2, p=2, q=0)
 FOURBAR = dict(a=1, d=4, l=3, m=mpmath.mpf(7) / 2, p=mpmath.mpf(1) / 2, q=mpmath.mpf(1) / 2)

@@ -9,7 +9,7 @@ import sympy
 
 from algkin.ui.widgets import Explorer
 
-from .draw.hand import CHEBYSHEV, FOURBAR, fourbar
+from ..hand_linkages import CHEBYSHEV, FOURBAR, fourbar
 
 pytest.importorskip("matplotlib")
 

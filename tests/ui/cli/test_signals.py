@@ -16,7 +16,7 @@ from hypothesis import given, settings, strategies as st
 
 from algkin.ui.cli import main
 
-from .processes import algkin, alive, children, finish, kill_group, run, start
+from ...processes import algkin, alive, children, finish, kill_group, run, start
 
 # Real commands, some done within the largest budget drawn (show), most not.
 COMMANDS = [("derive", "chebyshev-lambda"), ("curve", "watt-i", "--point", "P"),

@@ -21,10 +21,10 @@ from algkin.ui.draw import animate, mechanism_figure, modes_figure  # noqa: E402
 from algkin.analyses.motion import Motion  # noqa: E402
 from algkin.scene import load_scene  # noqa: E402
 
-from ..test_still_points import STILL  # noqa: E402
-from .hand import CHEBYSHEV, fourbar  # noqa: E402
+from ...derivation.test_still_points import STILL  # noqa: E402
+from ...hand_linkages import CHEBYSHEV, fourbar  # noqa: E402
 
-CATALOG = pathlib.Path(__file__).parents[2] / "algkin" / "catalog"
+CATALOG = pathlib.Path(__file__).parents[3] / "algkin" / "catalog"
 
 
 def joints(axes):

@@ -10,7 +10,7 @@ import algkin
 from algkin.ui.cli import build_parser, main
 from algkin.errors import SceneError, UsageError
 
-from .test_cli_usage import run_cli
+from .test_usage import run_cli
 
 
 def test_bare_algkin_prints_the_commands_and_exits_0(tmp_path):
