@@ -22,8 +22,9 @@ from . import specialise
 from .agree import PASSING, Agreement, Verdict, agreement, from_sympy, portable, rebuild
 from .measure import measure
 from .problems import PROBLEMS, build, problem_names
+from .row import BenchRow
 
-__all__ = ["bench", "BenchReport", "PROBLEMS", "problem_names", "machine"]
+__all__ = ["bench", "BenchReport", "BenchRow", "PROBLEMS", "problem_names", "machine"]
 
 REFERENCE = ("groebner", "flint")
 PEER_REFERENCES = ("Singular eliminate", "msolve eliminate", "Macaulay2 eliminate")  # elimination ideals
@@ -35,11 +36,11 @@ ROUND_CAP = 2.0  # ...when one run takes less than this many seconds
 
 @dataclass
 class BenchReport:
-    rows: list
-    machine: dict
+    rows: list[BenchRow]
+    machine: dict[str, object]
 
-    def to_json(self):
-        return {"rows": self.rows, "machine": self.machine}
+    def to_json(self) -> dict[str, object]:
+        return {"rows": [row.to_json() for row in self.rows], "machine": self.machine}
 
 
 def machine():
@@ -84,43 +85,40 @@ def _problem_rows(problem, pairs, budget, peers, rounds):
     for method, backend in pairs:
         progress.stage(f"{problem.name}: {method} / {backend}")
         seconds, summary, note = measure(lambda m=method, b=backend: task.run(m, b), _summary, budget)
-        results[(method, backend)] = {"problem": problem.name, "method": method, "backend": backend,
-                                      "seconds": seconds, **(summary or _empty()), "note": note}
+        results[(method, backend)] = BenchRow(problem.name, method, backend, seconds, note=note, **(summary or {}))
         progress.step()
     progress.stage(f"{problem.name}: algkin default path, end to end")
     seconds, summary, note = measure(problem.end_to_end, lambda result: _end_summary(result, task.keep[0]), budget)
     progress.step()
     rows = list(results.values())
-    rows.append({"problem": problem.name, "method": "default path, end to end", "backend": "flint",
-                 "seconds": seconds, **(summary or _empty()), "note": note})
+    rows.append(BenchRow(problem.name, "default path, end to end", "flint", seconds, note=note, **(summary or {})))
     if peers:
         rows += _peer_rows(problem, budget)
     _rounds(problem, rows, budget, rounds)
     _verdicts(task, rows, side, budget)
-    default = results[DEFAULT]["seconds"]
+    default = results[DEFAULT].seconds
     for row in rows:
-        row["ratio"] = row["seconds"] / default if row["seconds"] and default else None
+        row.ratio = row.seconds / default if row.seconds and default else None
     return rows
 
 
 def _verdicts(task, rows, side, budget):
-    """Set each row's ``agrees`` (the verdict's string) and add what it was checked against
+    """Set each row's ``agrees`` (its verdict's kind) and add what it was checked against
     to its note: the reference row, then, unless that is the Gröbner basis over flint, the
     fresh eliminations at random rational specialisations, which every row must also pass."""
     keep = list(task.keep)
     reference, name = _reference(rows)
-    target = None if reference is None else rebuild(reference["form"], keep)
+    target = None if reference is None else rebuild(reference.form, keep)
     flint_side = [from_sympy(e, keep) for e in side]
     found = []
     if name != "Gröbner basis over flint":
-        progress.stage(f"{rows[0]['problem']}: fresh eliminations at random rational specialisations")
+        progress.stage(f"{rows[0].problem}: fresh eliminations at random rational specialisations")
         found = [specialise.fresh(task, values, budget)
                  for values in specialise.specialisations(task, side, SPECIALISATIONS, seed=17)]
     for row in rows:
-        form = row.pop("form", None)
+        form, row.form = row.form, None
         if form is None:
-            row["agrees"] = None  # did not finish: nothing to compare
-            continue
+            continue  # did not finish: nothing to compare
         poly = rebuild(form, keep)
         compared = [Verdict(Agreement.REFERENCE) if row is reference else
                     agreement(poly, target, flint_side, task.parameters)] if target is not None else []
@@ -128,14 +126,14 @@ def _verdicts(task, rows, side, budget):
         verdicts = compared + specialised or [Verdict(Agreement.NOT_COMPARED, "no reference finished")]
         verdict = next((v for v in verdicts if v.kind not in PASSING), verdicts[0])
         said = [v.detail for v in verdicts if v is verdict or v in specialised]
-        row["agrees"] = str(verdict)
-        row["note"] = "; ".join(filter(None, [row["note"], f"vs {name}" if name else None, *said]))
+        row.agrees = verdict.kind
+        row.note = "; ".join(filter(None, [row.note, f"vs {name}" if name else None, *said]))
 
 
 def _reference(rows):
     """``(row, what it is)``: the Gröbner basis over flint if it finished, else the first
     peer elimination ideal that did, else ``(None, None)``: never algkin's default."""
-    finished = {(r["method"], r["backend"]): r for r in rows if r.get("form") is not None}
+    finished = {(r.method, r.backend): r for r in rows if r.form is not None}
     if REFERENCE in finished:
         return finished[REFERENCE], "Gröbner basis over flint"
     peer = next((p for p in PEER_REFERENCES if (p, "peer") in finished), None)
@@ -150,11 +148,7 @@ def _summary(elimination):
 def _end_summary(result, unknown):
     """The figures of the command's eliminant for ``unknown`` (a curve's, or a derivation's)."""
     elimination = getattr(result, "elimination", None) or getattr(result, "eliminations", {}).get(unknown)
-    return _summary(elimination) if elimination is not None else _empty()
-
-
-def _empty():
-    return {"degree": None, "terms": None, "bits": None}
+    return _summary(elimination) if elimination is not None else {}
 
 
 def _peer_problem(problem):
@@ -172,19 +166,19 @@ def _rounds(problem, rows, budget, rounds):
     from .engines import PEERS
 
     def again(row):
-        if row["backend"] == "peer":
-            return PEERS[row["method"]](_peer_problem(problem), budget).seconds_per_run
-        run = problem.end_to_end if row["method"] == "default path, end to end" else \
-            (lambda: problem.task.run(row["method"], row["backend"]))
+        if row.backend == "peer":
+            return PEERS[row.method](_peer_problem(problem), budget).seconds_per_run
+        run = problem.end_to_end if row.method == "default path, end to end" else \
+            (lambda: problem.task.run(row.method, row.backend))
         return measure(run, lambda result: None, budget)[0]
 
-    quick = [row for row in rows if row["seconds"] and row["seconds"] < ROUND_CAP] if rounds > 1 else []
+    quick = [row for row in rows if row.seconds and row.seconds < ROUND_CAP] if rounds > 1 else []
     for round_ in range(2, rounds + 1):
         progress.stage(f"{problem.name}: round {round_} of {rounds}")
         for row in quick:
-            row["seconds"] = min(filter(None, [row["seconds"], again(row)]))
+            row.seconds = min(filter(None, [row.seconds, again(row)]))
     for row in quick:
-        row["note"] = "; ".join(filter(None, [row["note"], f"best of {rounds} rounds"]))
+        row.note = "; ".join(filter(None, [row.note, f"best of {rounds} rounds"]))
 
 
 def _peer_rows(problem, budget):
@@ -198,11 +192,10 @@ def _peer_rows(problem, budget):
         progress.stage(f"{problem.name}: {engine}")
         result = run(peer_problem, budget)
         progress.step()
-        row = {"problem": problem.name, "method": engine, "backend": "peer", "seconds": result.seconds_per_run,
-               **_empty(), "note": result.note}
+        row = BenchRow(problem.name, engine, "peer", result.seconds_per_run, note=result.note)
         if result.polynomial is not None:
             poly = parse(result.polynomial, polynomial_ring(task.keep))
             terms = [(m, int(c.numerator), int(c.denominator)) for m, c in poly.terms()]
-            row.update(degree=max(sum(m) for m, _, _ in terms), terms=len(terms), form=(task.keep, terms))
+            row.degree, row.terms, row.form = max(sum(m) for m, _, _ in terms), len(terms), (task.keep, terms)
         rows.append(row)
     return rows

@@ -1,10 +1,12 @@
 """The bench report as a table, CSV and JSON (its plot is drawn by ``algkin.ui.plot``).
 
->>> rows = [{"problem": "p", "method": "linear", "backend": "flint", "seconds": 2.5e-3, "ratio": 1.0,
-...          "degree": 6, "terms": 29, "bits": 12, "agrees": "yes", "note": "median of 5 runs"}]
+>>> from algkin.bench.agree import Agreement
+>>> from algkin.bench.row import BenchRow
+>>> rows = [BenchRow("p", "linear", "flint", 2.5e-3, ratio=1.0, degree=6, terms=29, bits=12,
+...                  agrees=Agreement.EQUAL, note="median of 5 runs")]
 >>> print(table(rows))  # doctest: +NORMALIZE_WHITESPACE
 problem  method  backend  time     vs default  deg  terms  bits  agrees  note
-p        linear  flint    2.50 ms  1.00x       6    29     12    yes     median of 5 runs
+p        linear  flint    2.50 ms  1.00x       6    29     12    equal   median of 5 runs
 """
 
 import csv
@@ -13,10 +15,10 @@ import json
 
 from ..errors import OutputError
 from ..runtime.files import write_atomic
+from .row import COLUMNS
 
 __all__ = ["table", "to_csv", "write", "seconds_text", "COLUMNS"]
 
-COLUMNS = ("problem", "method", "backend", "seconds", "ratio", "degree", "terms", "bits", "agrees", "note")
 HEADERS = ("problem", "method", "backend", "time", "vs default", "deg", "terms", "bits", "agrees", "note")
 
 
@@ -30,9 +32,9 @@ def seconds_text(value):
 
 
 def _cells(row):
-    text = {"seconds": seconds_text(row["seconds"]),
-            "ratio": "-" if row["ratio"] is None else f"{row['ratio']:.2f}x"}
-    return [text.get(k, "-" if row[k] is None else str(row[k])) for k in COLUMNS]
+    values = row.to_json()
+    text = {"seconds": seconds_text(row.seconds), "ratio": "-" if row.ratio is None else f"{row.ratio:.2f}x"}
+    return [text.get(k, "-" if values[k] is None else str(values[k])) for k in COLUMNS]
 
 
 def table(rows):
@@ -47,7 +49,7 @@ def to_csv(rows):
     out = io.StringIO()
     writer = csv.DictWriter(out, fieldnames=COLUMNS, lineterminator="\n")
     writer.writeheader()
-    writer.writerows({k: r[k] for k in COLUMNS} for r in rows)
+    writer.writerows(r.to_json() for r in rows)
     return out.getvalue()
 
 

@@ -186,13 +186,13 @@ def bench_figure(rows):
     figure = new_figure()
     figure.set_size_inches(11, 5)
     axes = figure.add_subplot()
-    problems = list(dict.fromkeys(r["problem"] for r in rows))
-    series = list(dict.fromkeys((r["method"], r["backend"]) for r in rows))
+    problems = list(dict.fromkeys(r.problem for r in rows))
+    series = list(dict.fromkeys((r.method, r.backend) for r in rows))
     width, colors = 0.8 / len(series), colormaps["tab20"]
     for k, (method, backend) in enumerate(series):
         xs, ys = [], []
         for i, problem in enumerate(problems):
-            found = [r["seconds"] for r in rows if (r["problem"], r["method"], r["backend"]) == (problem, method, backend)]
+            found = [r.seconds for r in rows if (r.problem, r.method, r.backend) == (problem, method, backend)]
             if found and found[0]:
                 xs.append(i - 0.4 + (k + 0.5) * width)
                 ys.append(found[0])

@@ -8,6 +8,7 @@ import time
 import pytest
 
 from algkin.bench import bench
+from algkin.bench.agree import Agreement
 from algkin.bench.measure import measure
 from algkin.ui.cli import main
 
@@ -18,20 +19,21 @@ def two_circles():
 
 
 def test_every_method_agrees_on_the_seed_connector(two_circles):
-    rows = [r for r in two_circles.rows if r["backend"] == "flint"]
-    assert {r["method"] for r in rows} >= {"linear", "resultant", "groebner", "default path, end to end"}
-    assert {r["agrees"] for r in rows} == {"reference", "equal"}, rows
-    assert [r["method"] for r in rows if r["agrees"] == "reference"] == ["groebner"]
+    rows = [r for r in two_circles.rows if r.backend == "flint"]
+    assert {r.method for r in rows} >= {"linear", "resultant", "groebner", "default path, end to end"}
+    assert {r.agrees for r in rows} == {Agreement.REFERENCE, Agreement.EQUAL}, rows
+    assert [r.method for r in rows if r.agrees is Agreement.REFERENCE] == ["groebner"]
+    assert all(r.passes for r in rows)
     # B_y of two circles of radius 5/2 about A = (c, s) and D = (2, 0): the resultant in B_x is a
     # quartic in B_y (by hand: the radical axis is linear in B_x, put back into one circle).
-    assert {(r["degree"], r["terms"]) for r in rows} == {(4, 17)}
+    assert {(r.degree, r.terms) for r in rows} == {(4, 17)}
 
 
 def test_ratios_are_against_the_default_method(two_circles):
-    default = next(r for r in two_circles.rows if (r["method"], r["backend"]) == ("linear", "flint"))
-    assert default["ratio"] == 1.0
+    default = next(r for r in two_circles.rows if (r.method, r.backend) == ("linear", "flint"))
+    assert default.ratio == 1.0
     # every row under two seconds had its second round, the default among them
-    assert all("best of 2 rounds" in r["note"] for r in two_circles.rows if r["seconds"] < 2), two_circles.rows
+    assert all("best of 2 rounds" in r.note for r in two_circles.rows if r.seconds < 2), two_circles.rows
     assert two_circles.machine["cores"] >= 1 and "python-flint" in two_circles.machine
 
 
@@ -54,6 +56,10 @@ def test_cli_table_json_and_files(tmp_path, capsys):
     assert code == 0 and {"rows", "machine"} <= set(document)
     assert {"problem", "method", "backend", "seconds", "degree", "terms", "agrees"} <= set(document["rows"][0])
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bench.csv", "bench.json", "bench.png"]
+    assert json.loads((tmp_path / "bench.json").read_text())["rows"] == document["rows"]
+    header, *lines = (tmp_path / "bench.csv").read_text().splitlines()
+    assert header.split(",")[:4] == ["problem", "method", "backend", "seconds"] and len(lines) == len(document["rows"])
+    assert {row["agrees"] for row in document["rows"]} <= {"reference", "equal", None}
 
 
 @pytest.mark.parametrize("argv", [["--problems", "nope"], ["--methods", "magic"], ["--budget", "0"],
@@ -69,10 +75,10 @@ def test_a_missing_peer_is_skipped_with_a_note(monkeypatch):
 
     monkeypatch.setattr(engines.shutil, "which", lambda name: None)
     monkeypatch.setattr(engines, "find_msolve", lambda: None)
-    rows = {r["method"]: r for r in bench(["two-circles"], ["linear"], ["flint"], budget=30, rounds=1).rows}
-    assert rows["Singular eliminate"]["seconds"] is None
-    assert rows["Singular eliminate"]["note"] == "skipped: Singular not found"
-    assert rows["msolve eliminate"]["note"].startswith("skipped: msolve not found")
+    rows = {r.method: r for r in bench(["two-circles"], ["linear"], ["flint"], budget=30, rounds=1).rows}
+    assert rows["Singular eliminate"].seconds is None
+    assert rows["Singular eliminate"].note == "skipped: Singular not found"
+    assert rows["msolve eliminate"].note.startswith("skipped: msolve not found")
 
 
 

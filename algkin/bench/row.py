@@ -1,0 +1,54 @@
+"""One row of ``algkin bench``: a method (or peer, or the default path) on one problem.
+
+>>> from algkin.bench.agree import Agreement
+>>> row = BenchRow("two-circles", "linear", "flint", 9.6e-4, degree=4, terms=17, bits=3, agrees=Agreement.EQUAL)
+>>> row.passes, row.to_json()["agrees"]
+(True, 'equal')
+>>> BenchRow("two-circles", "resultant", "sympy", None, note="over budget").passes  # nothing to compare
+True
+>>> BenchRow("two-circles", "Giac eliminate", "peer", 1e-3, agrees=Agreement.EXTRA_FACTOR).passes
+False
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from .agree import PASSING, Agreement
+
+__all__ = ["BenchRow", "COLUMNS"]
+
+COLUMNS = ("problem", "method", "backend", "seconds", "ratio", "degree", "terms", "bits", "agrees", "note")
+
+# A peer's or a backend's eliminant, portable: (variable names, [(exponents, numerator, denominator)])
+PortableForm = tuple[tuple[str, ...], list[tuple[tuple[int, ...], int, int]]]
+
+
+@dataclass
+class BenchRow:
+    """What was measured: seconds (median, best of the rounds; ``None`` if it did not finish),
+    the eliminant's figures, its verdict against the reference and the time over the default's."""
+
+    problem: str
+    method: str
+    backend: str  # a backend of ``algkin.eliminate``, or ``peer``
+    seconds: float | None
+    degree: int | None = None
+    terms: int | None = None
+    bits: int | None = None
+    note: str | None = None
+    agrees: Agreement | None = None  # None: it did not finish, nothing to compare
+    ratio: float | None = None  # seconds over the default method's on the same problem
+    form: PortableForm | None = field(default=None, repr=False)  # the eliminant until compared
+
+    @property
+    def passes(self) -> bool:
+        """Whether ``algkin bench`` may exit 0 for this row: it agrees with its reference, is
+        it, or did not finish (a row that finished and was compared with nothing fails)."""
+        return self.agrees is None or self.agrees in PASSING
+
+    def to_json(self) -> dict[str, object]:
+        """The row under the keys of the bench's JSON and CSV, its verdict as a string."""
+        values = {key: getattr(self, key) for key in COLUMNS}
+        values["agrees"] = None if self.agrees is None else str(self.agrees)
+        return values
