@@ -8,6 +8,11 @@
 True
 """
 
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
+
 __version__ = "0.1.0"
 
 __all__ = [
@@ -25,8 +30,14 @@ __all__ = [
 from .errors import AlgkinError
 from .scene import catalog_names, compile_scene, load_scene
 
+if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ loads them at run time)
+    from .analyses.extremum import extremum
+    from .analyses.quantities import load
+    from .derivation.pipeline import curve, derive
+    from .ui.widgets import interact
 
-def __getattr__(name):
+
+def __getattr__(name: str) -> Callable[..., Any]:
     # The pipeline pulls in the elimination and verification layers: load on first use.
     if name in ("derive", "curve"):
         from .derivation import pipeline

@@ -16,6 +16,10 @@ True
 ("cannot write '/dev/full': No space left on device", True)
 """
 
+from __future__ import annotations
+
+import os
+
 __all__ = [
     "AlgkinError",
     "SceneError",
@@ -33,27 +37,27 @@ class AlgkinError(Exception):
 class SceneError(AlgkinError, ValueError):
     """A scene file or scene element is malformed; names the source and the element."""
 
-    def __init__(self, source, element, message):
+    def __init__(self, source: str, element: str, message: str) -> None:
         self.source = source
         self.element = element
         self.message = message
         where = f"{source}: {element}" if element else str(source)
         super().__init__(f"{where}: {message}")
 
-    def __reduce__(self):  # pickled back from a budget's child process
+    def __reduce__(self) -> tuple[type[SceneError], tuple[str, str, str]]:  # pickled back from a budget's child process
         return type(self), (self.source, self.element, self.message)
 
 
 class UsageError(AlgkinError, ValueError):
     """An argument (method name, parameter name, range...) is not acceptable."""
 
-    def __init__(self, argument, value, message):
+    def __init__(self, argument: str, value: object, message: str) -> None:
         self.argument = argument
         self.value = value
         self.message = message
         super().__init__(f"{argument}={value!r}: {message}")
 
-    def __reduce__(self):
+    def __reduce__(self) -> tuple[type[UsageError], tuple[str, object, str]]:
         return type(self), (self.argument, self.value, self.message)
 
 
@@ -68,10 +72,10 @@ class ComputationError(AlgkinError, ArithmeticError):
 class OutputError(AlgkinError, OSError):
     """A file could not be written (disk full, permission lost...); any earlier file is left as it was."""
 
-    def __init__(self, path, message):
+    def __init__(self, path: str | os.PathLike[str], message: str) -> None:
         self.path = str(path)
         self.message = message
         super().__init__(f"cannot write {self.path!r}: {message}")
 
-    def __reduce__(self):
+    def __reduce__(self) -> tuple[type[OutputError], tuple[str, str]]:
         return type(self), (self.path, self.message)

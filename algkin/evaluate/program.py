@@ -23,15 +23,26 @@ True
 """
 
 import functools
+from collections.abc import Callable, Sequence
+from typing import TypeAlias
 
 import flint
 import numpy as np
 import sympy
+from numpy.typing import NDArray
 
 from .tree import ARB, FLOAT, MPMATH, NUMPY  # noqa: F401 - the kinds a program is compiled for
 from .tree import integer_power
 
-__all__ = ["compile_program", "columns"]
+__all__ = ["compile_program", "columns", "Floats", "ArrayProgram", "BallProgram"]
+
+Floats: TypeAlias = NDArray[np.float64]
+# ``compile_program(..., NUMPY)``: arrays in, one value out per expression (a number where the
+# expression is constant)
+ArrayProgram: TypeAlias = Callable[..., list[Floats | float]]
+# ``compile_program(..., ARB)``: balls in, one value out per expression (an integer where the
+# expression is one)
+BallProgram: TypeAlias = Callable[..., list[flint.arb | int]]
 
 
 @functools.lru_cache(maxsize=512)
@@ -119,7 +130,7 @@ class _Program:
         return raised if n > 0 else f"(1 / {raised})"
 
 
-def columns(outputs, count):
+def columns(outputs: Sequence[Floats | float], count: int) -> Floats:
     """``count x len(outputs)``: a numpy program's outputs over ``count`` rows, a constant
     output (a Jacobian's ``2``) spread over every row.
 

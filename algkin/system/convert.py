@@ -10,7 +10,11 @@ x^2 - 1/3*y
 x**4 - 2*x**2*y/3 + y**2/9
 """
 
+from __future__ import annotations
+
 import math
+from collections.abc import Iterable
+from typing import NoReturn, cast
 
 import flint
 import sympy
@@ -21,12 +25,12 @@ from .core import symbol
 __all__ = ["flint_context", "to_flint", "to_sympy", "to_flint_integer", "fmpq_to_rational", "real_roots"]
 
 
-def flint_context(names, ordering="lex"):
+def flint_context(names: Iterable[str], ordering: str = "lex") -> flint.fmpq_mpoly_ctx:
     """A python-flint rational polynomial context over ``names`` (order matters for lex)."""
     return flint.fmpq_mpoly_ctx.get(tuple(names), ordering)
 
 
-def to_flint(expr, ctx):
+def to_flint(expr: sympy.Expr | sympy.Poly, ctx: flint.fmpq_mpoly_ctx) -> flint.fmpq_mpoly:
     """A sympy polynomial (expression or Poly) as an ``fmpq_mpoly`` in ``ctx``.
 
     The expression tree is evaluated with flint's own arithmetic (``evaluate``): building a
@@ -39,11 +43,11 @@ def to_flint(expr, ctx):
     return evaluate(expr, dict(zip((str(n) for n in ctx.names()), ctx.gens())), kind)
 
 
-def _not_polynomial(value):
+def _not_polynomial(value: object) -> NoReturn:
     raise TypeError(f"a square root is not a polynomial: sqrt({value})")
 
 
-def to_flint_integer(poly, ctx):
+def to_flint_integer(poly: flint.fmpq_mpoly, ctx: flint.fmpz_mpoly_ctx) -> flint.fmpz_mpoly:
     """An ``fmpq_mpoly`` with denominators cleared, as an ``fmpz_mpoly`` in ``ctx``."""
     terms = poly.to_dict()
     if not terms:
@@ -52,13 +56,14 @@ def to_flint_integer(poly, ctx):
     return ctx.from_dict({m: int(c.p) * (lcm // int(c.q)) for m, c in terms.items()})
 
 
-def fmpq_to_rational(value):
+def fmpq_to_rational(value: flint.fmpq | flint.fmpz | int) -> sympy.Rational:
     """A python-flint rational (or integer) as a sympy Rational."""
     value = flint.fmpq(value)
     return sympy.Rational(int(value.p), int(value.q))
 
 
-def to_sympy(poly, ctx):
+def to_sympy(poly: flint.fmpq_mpoly | flint.fmpz_mpoly,
+             ctx: flint.fmpq_mpoly_ctx | flint.fmpz_mpoly_ctx) -> sympy.Expr:
     """An ``fmpq_mpoly`` or ``fmpz_mpoly`` of ``ctx`` as a sympy expression."""
     gens = [symbol(str(n)) for n in ctx.names()]
     terms = {m: fmpq_to_rational(c) for m, c in poly.to_dict().items()}
@@ -67,7 +72,7 @@ def to_sympy(poly, ctx):
     return sympy.Poly.from_dict(terms, *gens, domain=sympy.QQ).as_expr()
 
 
-def real_roots(poly, var):
+def real_roots(poly: sympy.Expr, var: sympy.Symbol) -> list[flint.arb]:
     """Certified real roots of a univariate rational polynomial in ``var``, as arb balls.
 
     python-flint factors it over the integers and isolates the roots of each factor
@@ -77,5 +82,7 @@ def real_roots(poly, var):
     integer = flint.fmpz_poly([int(a) for a in reversed(coeffs.all_coeffs())])
     roots = []
     for factor, _ in integer.factor()[1]:
-        roots += [r.real for r, _ in factor.complex_roots() if r.imag.is_zero()]
+        # (root, multiplicity) pairs: python-flint 0.9's stub says bare roots
+        pairs = cast("list[tuple[flint.acb, int]]", factor.complex_roots())
+        roots += [r.real for r, _ in pairs if r.imag.is_zero()]
     return roots

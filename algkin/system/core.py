@@ -10,7 +10,10 @@
 ['-c + x**2', 'c**2 + s**2 - 1']
 """
 
+from __future__ import annotations
+
 from dataclasses import dataclass, field
+from typing import Any
 
 import sympy
 
@@ -19,12 +22,12 @@ from ..errors import ComputationError
 __all__ = ["System", "symbol", "variables_of"]
 
 
-def symbol(name):
+def symbol(name: str) -> sympy.Symbol:
     """The sympy symbol algkin uses for a variable name (real, so sqrt(x**2) simplifies)."""
     return sympy.Symbol(name, real=True)
 
 
-def variables_of(expr):
+def variables_of(expr: sympy.Basic) -> list[str]:
     """Names of the free symbols of ``expr``, sorted."""
     return sorted(str(s) for s in expr.free_symbols)
 
@@ -38,13 +41,13 @@ class System:
     are symbolic dimensions; ``nonnegative`` lists unknowns known to be >= 0 (distances).
     """
 
-    unknowns: tuple
-    parameters: tuple
-    inputs: dict
-    equations: tuple
-    nonnegative: tuple = field(default=())
+    unknowns: tuple[str, ...]
+    parameters: tuple[str, ...]
+    inputs: dict[str, tuple[str, str]]
+    equations: tuple[sympy.Expr, ...]
+    nonnegative: tuple[str, ...] = field(default=())
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         known = set(self.variables)
         for eq in self.equations:
             stray = set(variables_of(eq)) - known
@@ -55,14 +58,14 @@ class System:
                 raise ComputationError(f"equation {eq} has coefficients outside the rationals")
 
     @property
-    def input_variables(self):
+    def input_variables(self) -> tuple[str, ...]:
         return tuple(v for pair in self.inputs.values() for v in pair)
 
     @property
-    def variables(self):
+    def variables(self) -> tuple[str, ...]:
         return tuple(self.unknowns) + self.input_variables + tuple(self.parameters)
 
-    def to_json(self):
+    def to_json(self) -> dict[str, Any]:
         return {
             "unknowns": list(self.unknowns),
             "parameters": list(self.parameters),

@@ -24,14 +24,19 @@ cannot be proved is reported as such, never used.
 (True, True)
 """
 
+from __future__ import annotations
+
 import functools
+from collections.abc import Callable, Sequence
+from typing import Protocol, TypeAlias
 
 import numpy as np
 import sympy
 from flint import arb, arb_mat
+from numpy.typing import NDArray
 
 from ..evaluate import ARB
-from ..evaluate.program import compile_program
+from ..evaluate.program import BallProgram, compile_program
 from ..system import symbol
 from .pencil import Pencil
 
@@ -41,29 +46,42 @@ BOX = 2.0**-96  # the Krawczyk box's half-width, relative to the root's size
 ATTEMPTS = 4  # Newton steps tried before a candidate is given up (a near-double root needs more)
 
 
+class Block(Protocol):
+    """A ``solve.Blocks`` block, as far as its proof needs it."""
+
+    @property
+    def names(self) -> Sequence[str]: ...  # its unknowns
+    @property
+    def equations(self) -> Sequence[sympy.Expr]: ...
+    @property
+    def arguments(self) -> Sequence[str]: ...  # every variable it uses, its unknowns among them
+
+
 class BlockCertifier:
     """Proves float candidates of one block: ``equations`` in ``names``, given ``parameters``."""
 
-    def __init__(self, names, equations, parameters):
+    def __init__(self, names: Sequence[str], equations: Sequence[sympy.Expr], parameters: Sequence[str]) -> None:
         unknowns = [symbol(n) for n in names]
         arguments = list(names) + list(parameters)
         self.n = len(names)
         self.linear = all(sympy.Poly(eq, *unknowns).total_degree() <= 1 for eq in equations)
-        self.residual = compile_program(list(equations), arguments, ARB)
-        self.jacobian = compile_program(list(sympy.Matrix(list(equations)).jacobian(unknowns)), arguments, ARB)
+        self.residual: BallProgram = compile_program(list(equations), arguments, ARB)
+        jacobian = list(sympy.Matrix(list(equations)).jacobian(unknowns))
+        self.jacobian: BallProgram = compile_program(jacobian, arguments, ARB)
         self.identity = arb_mat([[int(i == j) for j in range(self.n)] for i in range(self.n)])
         self.explicit = _explicit(equations, unknowns, parameters)
         self.pencil = Pencil.of(equations, unknowns, list(parameters))
 
-    def __call__(self, candidate, known, inverse=None):
+    def __call__(self, candidate: Sequence[float], known: Sequence[arb],
+                 inverse: NDArray[np.float64] | None = None) -> list[arb] | None:
         """The root's enclosure (one ball per unknown) next to ``candidate``, or ``None``.
 
         ``known`` lists the balls of the parameters, in order; ``inverse``, the Jacobian's
         inverse in floats at the candidate, saves the first step its own inversion.
         """
         if self.explicit is not None:  # u = formula: its value in balls is the root's enclosure
-            root = arb(self.explicit(*known)[0])  # a constant formula comes back as a Python integer
-            return [root] if root.is_finite() else None
+            value = arb(self.explicit(*known)[0])  # a constant formula comes back as a Python integer
+            return [value] if value.is_finite() else None
         if self.pencil is not None:  # the quadratic on the radical axis, in balls: no box to test
             root = self.pencil.enclose(candidate, known)
             if root is not None:
@@ -76,22 +94,23 @@ class BlockCertifier:
             if root is not None:
                 return root
         for _ in range(ATTEMPTS):
-            x = self._newton(x, known)
-            if x is None:
+            moved = self._newton(x, known)
+            if moved is None:
                 return None
+            x = moved
             root = self._krawczyk(x, known)
             if root is not None:
                 return root
         return None
 
-    def _linear(self, x, known):
+    def _linear(self, x: list[arb], known: Sequence[arb]) -> list[arb] | None:
         """``x - J^-1 F(x)`` in balls: exactly the root, for every parameter in its ball."""
         if self.n == 1:  # one division, no matrix
             slope, = self.jacobian(*x, *known)
             if not (slope > 0 or slope < 0):  # not proved nonzero: the root may not be unique
                 return None
-            root = x[0] - self.residual(*x, *known)[0] / slope
-            return [root] if root.is_finite() else None
+            value = x[0] - self.residual(*x, *known)[0] / slope
+            return [value] if value.is_finite() else None
         jacobian = arb_mat(self.n, self.n, self.jacobian(*x, *known))
         try:
             step = jacobian.solve(arb_mat(self.n, 1, self.residual(*x, *known)))
@@ -100,13 +119,13 @@ class BlockCertifier:
         root = [x[i] - step[i, 0] for i in range(self.n)]
         return root if all(r.is_finite() for r in root) else None
 
-    def _from_inverse(self, x, known, inverse):
+    def _from_inverse(self, x: list[arb], known: Sequence[arb], inverse: arb_mat) -> list[arb] | None:
         """A Newton step and the Krawczyk test, both with the float inverse ``Y`` (exact as a
         matrix of floats, good to ~1e-16): enough from a float root, in half the work."""
         step = inverse * arb_mat(self.n, 1, self.residual(*x, *known))
         return self._krawczyk([arb((x[i] - step[i, 0]).mid()) for i in range(self.n)], known, inverse)
 
-    def _newton(self, x, known):
+    def _newton(self, x: list[arb], known: Sequence[arb]) -> list[arb] | None:
         jacobian = arb_mat(self.n, self.n, self.jacobian(*x, *known))
         residual = arb_mat(self.n, 1, self.residual(*x, *known))
         try:
@@ -115,7 +134,7 @@ class BlockCertifier:
             return None
         return [arb((x[i] - step[i, 0]).mid()) for i in range(self.n)]
 
-    def _krawczyk(self, x, known, inverse=None):
+    def _krawczyk(self, x: list[arb], known: Sequence[arb], inverse: arb_mat | None = None) -> list[arb] | None:
         size = max(abs(float(v)) for v in x) or 1.0  # relative: a mechanism 1e-20 across is proved as tightly
         radius = arb(0, BOX * size)
         box = [v + radius for v in x]
@@ -132,7 +151,8 @@ class BlockCertifier:
         return root if all(b.contains_interior(r) for b, r in zip(box, root)) else None
 
 
-def _explicit(equations, unknowns, parameters):
+def _explicit(equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol],
+              parameters: Sequence[str]) -> BallProgram | None:
     """``a u + f = 0`` with ``a`` a nonzero number (a point defined by a formula): ``-f / a``
     compiled, else ``None``."""
     if len(unknowns) != 1:
@@ -144,15 +164,16 @@ def _explicit(equations, unknowns, parameters):
 
 
 @functools.lru_cache(maxsize=256)
-def _cached(names, equations, parameters):
+def _cached(names: tuple[str, ...], equations: tuple[sympy.Expr, ...],
+            parameters: tuple[str, ...]) -> BlockCertifier:
     return BlockCertifier(list(names), list(equations), list(parameters))
 
 
-def certify_parameters(block):
+def certify_parameters(block: Block) -> list[str]:
     """The variables a ``solve.Blocks`` block takes as parameters, in the certifier's order."""
     return [a for a in block.arguments if a not in block.names]
 
 
-def certifier_of(block):
+def certifier_of(block: Block) -> BlockCertifier:
     """The ``BlockCertifier`` of a ``solve.Blocks`` block, compiled once and reused by later calls."""
     return _cached(tuple(block.names), tuple(block.equations), tuple(certify_parameters(block)))

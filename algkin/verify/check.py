@@ -12,19 +12,26 @@ curve) is evaluated on every root's enclosure. A sample whose real branches lack
 of their label is solved again with more starts before the check says so.
 """
 
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
+from typing import Any, TypeAlias
 
 import flint
 import numpy as np
+import sympy
+from numpy.typing import NDArray
 
 from ..evaluate import ARB, NUMPY
 from ..evaluate.program import compile_program
 from ..runtime import progress
-from .balls import certifier_of, certify_parameters
+from ..system import System
+from .balls import BallProgram, Block, BlockCertifier, certifier_of, certify_parameters
 from .minimal import FactorCheck, structure_failures
-from .residual import polynomial_of
-from .solve import STARTS, blocks_of, solve_floats
+from .residual import ExactValue, Polynomial, PolynomialLike, polynomial_of
+from .solve import STARTS, ArrayProgram, Floats, blocks_of, solve_floats
 
 __all__ = ["Verification", "verify_branches", "WORKING_BITS"]
 
@@ -34,6 +41,13 @@ MAX_ERROR = 1e-27  # a closed form's largest distance from the root of its label
 MAX_DRAWS = 50  # inputs drawn per sample asked for, looking for where the mechanism assembles
 RETRY_STARTS = 8 * STARTS
 CHUNK = 500  # samples solved and proved together
+
+# (point, expression, label where it is positive, label where it is negative)
+Indicator: TypeAlias = tuple[str, sympy.Expr, str, str]
+# (point -> label, unknown -> closed form, name -> discriminant): real where every discriminant is positive
+BranchForms: TypeAlias = tuple[Mapping[str, str], Mapping[str, sympy.Expr], Mapping[str, sympy.Expr]]
+Label: TypeAlias = tuple[tuple[str, str], ...]  # (point, label) pairs, sorted by point
+Root: TypeAlias = list[flint.arb]  # the unknowns' enclosures, in the system's order
 
 
 @dataclass
@@ -52,19 +66,19 @@ class Verification:
     passed: bool
     compared: int = 0
     near_degenerate: int = 0
-    max_polynomial_residual: dict = field(default_factory=dict)
-    failures: list = field(default_factory=list)
+    max_polynomial_residual: dict[str, float] = field(default_factory=dict)
+    failures: list[str] = field(default_factory=list)
     evaluated: int = 0  # numeric solutions the polynomials were evaluated at
     status: str = "failed"
-    smallest_factor_residual: dict = field(default_factory=dict)  # per polynomial, per kept factor
+    smallest_factor_residual: dict[str, list[float]] = field(default_factory=dict)  # per polynomial, per kept factor
     max_rel_error: float = 0.0  # the largest error over the size of its configuration: scale-free
 
     @classmethod
-    def skipped(cls):
+    def skipped(cls) -> Verification:
         """No verification was asked for (zero samples)."""
         return cls(0, 0.0, False, status="skipped")
 
-    def to_json(self):
+    def to_json(self) -> dict[str, Any]:
         return {
             "samples": self.samples,
             "status": self.status,
@@ -86,26 +100,30 @@ class Verification:
 class _Plan:
     """Everything compiled once per check: solver, certifier, indicators, branches, polynomials."""
 
-    def __init__(self, system, indicators, branches, parameters, polynomials, factors):
+    def __init__(self, system: System, indicators: Sequence[Indicator], branches: Sequence[BranchForms],
+                 parameters: Mapping[str, ExactValue], polynomials: Mapping[str, PolynomialLike] | None,
+                 factors: Mapping[str, Sequence[PolynomialLike]] | None) -> None:
         self.system = system
         self.blocks = blocks_of(system)
-        self.certifiers = [(block, certifier_of(block), certify_parameters(block)) for block in self.blocks.blocks]
+        self.certifiers: list[tuple[Block, BlockCertifier, list[str]]] = [
+            (block, certifier_of(block), certify_parameters(block)) for block in self.blocks.blocks]
         self.known = [v for v in system.variables if v not in system.unknowns]
         self.parameters = {n: Fraction(str(v)) for n, v in parameters.items()}
         # a polynomial may keep the dimensions symbolic: they take their exact values in it
         dimensions = {n: v for n, v in self.parameters.items() if n not in system.variables}
         names = list(system.unknowns) + self.known
         self.labels = [(point, positive, negative) for point, _, positive, negative in indicators]
-        self.indicators = compile_program([expr for _, expr, _, _ in indicators], names, ARB)
+        self.indicators: BallProgram = compile_program([expr for _, expr, _, _ in indicators], names, ARB)
         self.branches = [_Branch(labels, values, discriminants, self.known)
                          for labels, values, discriminants in branches]
         # every branch's discriminants and closed forms in one program: they share subexpressions
-        self.closed = compile_program([e for b in self.branches for e in b.discriminants + b.values], self.known, ARB)
+        self.closed: BallProgram = compile_program([e for b in self.branches for e in b.discriminants + b.values],
+                                                   self.known, ARB)
         self.polynomials = {n: polynomial_of(p, names, dimensions) for n, p in (polynomials or {}).items()}
         self.factors = FactorCheck(factors, lambda f: polynomial_of(f, names, dimensions), self.polynomials.values())
         self.index = {u: k for k, u in enumerate(system.unknowns)}
 
-    def floats(self, angles):
+    def floats(self, angles: Mapping[str, Floats]) -> dict[str, Floats]:
         """The known variables as float arrays over the samples (``angles``: input -> radians)."""
         count = len(next(iter(angles.values()), [0]))
         values = {n: np.full(count, float(v)) for n, v in self.parameters.items()}
@@ -114,7 +132,7 @@ class _Plan:
             values[cos_name], values[sin_name] = np.cos(angle), np.sin(angle)
         return values
 
-    def balls(self, angles, k):
+    def balls(self, angles: Mapping[str, Floats], k: int) -> list[flint.arb]:
         """The known variables of sample ``k`` as balls, in ``self.known`` order."""
         values = {n: ARB.number(v.numerator, v.denominator) for n, v in self.parameters.items()}
         for name, angle in angles.items():
@@ -123,7 +141,7 @@ class _Plan:
             values[cos_name], values[sin_name] = ball.cos(), ball.sin()
         return [values[n] for n in self.known]
 
-    def any_real(self, floats):
+    def any_real(self, floats: Mapping[str, Floats]) -> NDArray[np.bool_]:
         """Per sample, whether some branch's discriminants are all positive (where to sample)."""
         real = np.zeros(len(next(iter(floats.values()))), dtype=bool)
         for branch in self.branches:
@@ -132,20 +150,23 @@ class _Plan:
 
 
 class _Branch:
-    def __init__(self, labels, values, discriminants, known):
+    def __init__(self, labels: Mapping[str, str], values: Mapping[str, sympy.Expr],
+                 discriminants: Mapping[str, sympy.Expr], known: list[str]) -> None:
         self.key = tuple(sorted(labels.items()))
         self.unknowns = list(values)
         self.values, self.discriminants = list(values.values()), list(discriminants.values())
-        self.discriminant_floats = compile_program(self.discriminants, known, NUMPY)
+        self.discriminant_floats: ArrayProgram = compile_program(self.discriminants, known, NUMPY)
 
-    def real_floats(self, floats, known):
+    def real_floats(self, floats: Mapping[str, Floats], known: Sequence[str]) -> NDArray[np.bool_]:
         count = len(next(iter(floats.values())))
         values = self.discriminant_floats(*(floats.get(n, np.zeros(count)) for n in known))
         return np.all([np.broadcast_to(v, (count,)) > 0 for v in values], axis=0) if values else np.ones(count, bool)
 
 
-def verify_branches(system, indicators, branches, inputs, parameters, samples=50, seed=0,
-                    polynomials=None, factors=None):
+def verify_branches(system: System, indicators: Sequence[Indicator], branches: Sequence[BranchForms],
+                    inputs: Mapping[str, tuple[float, float]], parameters: Mapping[str, ExactValue],
+                    samples: int = 50, seed: int = 0, polynomials: Mapping[str, PolynomialLike] | None = None,
+                    factors: Mapping[str, Sequence[PolynomialLike]] | None = None) -> Verification:
     """Check ``branches`` (list of ``(labels, values, discriminants)``) on ``samples`` inputs
     where something could be compared.
 
@@ -186,7 +207,8 @@ def verify_branches(system, indicators, branches, inputs, parameters, samples=50
     return report
 
 
-def _batch(plan, inputs, rng, drawn, needed, solvable, most, first):
+def _batch(plan: _Plan, inputs: Mapping[str, tuple[float, float]], rng: np.random.Generator, drawn: int,
+           needed: int, solvable: int, most: int, first: bool) -> tuple[dict[str, Floats], int]:
     """The next inputs to solve (input -> radians) and the draws counted so far."""
     if first:
         return {n: rng.uniform(lo, hi, needed) for n, (lo, hi) in inputs.items()}, needed
@@ -197,7 +219,8 @@ def _batch(plan, inputs, rng, drawn, needed, solvable, most, first):
     return {n: a[chosen] for n, a in angles.items()}, drawn + used
 
 
-def _check_batch(report, plan, angles, rng, worst):
+def _check_batch(report: Verification, plan: _Plan, angles: Mapping[str, Floats], rng: np.random.Generator,
+                 worst: dict[str, float]) -> int:
     """Solve, prove and compare every sample of the batch; how many compared something."""
     count = len(next(iter(angles.values()), [None]))
     samples = [_Sample(plan.balls(angles, k)) for k in range(count)]
@@ -222,14 +245,15 @@ def _check_batch(report, plan, angles, rng, worst):
 class _Sample:
     """One input: its known values in balls, its proved roots, their labels, its real branches."""
 
-    known: list
-    roots: list = field(default_factory=list)
+    known: list[flint.arb]
+    roots: list[Root] = field(default_factory=list)
     doubtful: bool = False  # some candidate could not be proved: near a degenerate configuration
-    labels: list = field(default_factory=list)  # per root, ``None`` where an indicator's sign is undecided
-    real: list = field(default_factory=list)  # per branch: True, False, or None near its boundary
-    values: list = field(default_factory=list)  # per branch, its closed forms in balls
+    # per root, ``None`` where an indicator's sign is undecided
+    labels: list[Label | None] = field(default_factory=list)
+    real: list[bool | None] = field(default_factory=list)  # per branch: True, False, or None near its boundary
+    values: list[list[flint.arb | int]] = field(default_factory=list)  # per branch, its closed forms in balls
 
-    def classify(self, plan):
+    def classify(self, plan: _Plan) -> None:
         self.labels = [_labels(plan, root, self.known) for root in self.roots]
         closed = iter(plan.closed(*self.known))
         self.real, self.values = [], []
@@ -237,21 +261,23 @@ class _Sample:
             self.real.append(_real([next(closed) for _ in branch.discriminants]))
             self.values.append([next(closed) for _ in branch.values])
 
-    def lacks_a_root(self, plan):
+    def lacks_a_root(self, plan: _Plan) -> bool:
         """Whether some branch decided real has no root of its label (Newton may have missed it)."""
         if self.doubtful or None in self.labels:
             return False
         return any(real and branch.key not in self.labels for branch, real in zip(plan.branches, self.real))
 
 
-def _certified(plan, floats, samples, rng, starts):
+def _certified(plan: _Plan, floats: Mapping[str, Floats], samples: list[_Sample], rng: np.random.Generator,
+               starts: int) -> None:
     """Set each sample's proved roots (and whether some candidate could not be proved); ``floats``
     holds the known variables' float arrays over the samples."""
     candidates = solve_floats(plan.blocks, floats, rng, starts)
     rows = [np.stack([candidates.values[n] for n in block.names], axis=1).tolist() for block, _, _ in plan.certifiers]
     lineage = [row.tolist() for row in candidates.lineage]
-    proved = {}  # (block, partial solution) -> its unknowns' balls: candidates share their first blocks
-    found = [([], False) for _ in samples]
+    # (block, partial solution) -> its unknowns' balls: candidates share their first blocks
+    proved: dict[tuple[int, int], list[flint.arb] | None] = {}
+    found: list[tuple[list[Root], bool]] = [([], False) for _ in samples]
     known = [dict(zip(plan.known, sample.known)) for sample in samples]
     for row, k in enumerate(candidates.owner.tolist()):
         balls = dict(known[k])
@@ -259,9 +285,10 @@ def _certified(plan, floats, samples, rng, starts):
             key = (b, lineage[b][row])
             if key not in proved:
                 proved[key] = certify(rows[b][row], [balls[n] for n in parameters], candidates.inverses[b][key[1]])
-            if proved[key] is None:
+            enclosure = proved[key]
+            if enclosure is None:
                 break
-            balls.update(zip(block.names, proved[key]))
+            balls.update(zip(block.names, enclosure))
         roots, doubtful = found[k]
         if proved[key] is None:
             found[k] = roots, True
@@ -274,7 +301,7 @@ def _certified(plan, floats, samples, rng, starts):
         sample.classify(plan)
 
 
-def _nonnegative(plan, roots, doubtful):
+def _nonnegative(plan: _Plan, roots: list[Root], doubtful: bool) -> tuple[list[Root], bool]:
     """Roots whose distances are not negative (a distance that might be either way is doubtful)."""
     kept = []
     for root in roots:
@@ -286,7 +313,7 @@ def _nonnegative(plan, roots, doubtful):
     return kept, doubtful
 
 
-def _labels(plan, root, known):
+def _labels(plan: _Plan, root: Root, known: list[flint.arb]) -> Label | None:
     """The root's label per point, or ``None`` where an indicator's sign is undecided."""
     labels = {}
     for (point, positive, negative), value in zip(plan.labels, plan.indicators(*root, *known)):
@@ -299,7 +326,7 @@ def _labels(plan, root, known):
     return tuple(sorted(labels.items()))
 
 
-def _real(values):
+def _real(values: list[flint.arb | int]) -> bool | None:
     """``True`` or ``False`` where the branch (its discriminants' ``values``) is decided real or not,
     ``None`` near its boundary."""
     if all(v > 0 for v in values):
@@ -307,7 +334,7 @@ def _real(values):
     return False if any(v < 0 for v in values) else None
 
 
-def _magnitudes(plan, floats, samples):
+def _magnitudes(plan: _Plan, floats: Mapping[str, Floats], samples: list[_Sample]) -> list[list[dict[int, float]]]:
     """Per sample, per root, ``id(polynomial)`` -> the sum of its terms' absolute values (floats, one pass)."""
     owners = [k for k, sample in enumerate(samples) for _ in sample.roots]
     if not owners or not plan.polynomials:
@@ -327,7 +354,8 @@ def _magnitudes(plan, floats, samples):
     return rows
 
 
-def _check_sample(report, plan, sample, magnitudes, worst):
+def _check_sample(report: Verification, plan: _Plan, sample: _Sample, magnitudes: list[dict[int, float]],
+                  worst: dict[str, float]) -> None:
     """Evaluate the polynomials on the sample's roots and compare its branches."""
     report.samples += 1
     known = dict(zip(plan.known, sample.known))
@@ -344,11 +372,11 @@ def _check_sample(report, plan, sample, magnitudes, worst):
     _compare(report, plan, sample)
 
 
-def _residuals(values, sizes):
+def _residuals(values: Mapping[str, flint.arb], sizes: Mapping[int, float]) -> Callable[[Polynomial], float]:
     """``polynomial -> |p(K)| / sum |terms|`` at one root, each polynomial evaluated once."""
-    memo = {}
+    memo: dict[int, float] = {}
 
-    def residual(polynomial):
+    def residual(polynomial: Polynomial) -> float:
         key = id(polynomial)
         if key not in memo:
             upper = float(abs(polynomial.balls(values)).upper().mid())
@@ -357,8 +385,8 @@ def _residuals(values, sizes):
     return residual
 
 
-def _compare(report, plan, sample):
-    by_label = {}
+def _compare(report: Verification, plan: _Plan, sample: _Sample) -> None:
+    by_label: dict[Label | None, list[Root]] = {}
     for labels, root in zip(sample.labels, sample.roots):
         by_label.setdefault(labels, []).append(root)
     for branch, real, values in zip(plan.branches, sample.real, sample.values):
@@ -376,15 +404,17 @@ def _compare(report, plan, sample):
             report.failures.append(f"{said} {error:.3g} from the root of its label (relative {error / size:.3g})")
         report.compared += 1
     for key in by_label:
-        report.failures.append(f"numeric solution labelled {dict(key)} has no real closed-form branch")
+        # every label is decided here (_check_sample compares no sample with an undecided one)
+        labelled = dict(key)  # type: ignore[arg-type]
+        report.failures.append(f"numeric solution labelled {labelled} has no real closed-form branch")
 
 
-def _size(root):
+def _size(root: Root) -> float:
     """The configuration's size: its largest coordinate (1 where all are 0)."""
     return max(abs(float(v.mid())) for v in root) or 1.0
 
 
-def _error(plan, branch, values, root):
+def _error(plan: _Plan, branch: _Branch, values: list[flint.arb | int], root: Root) -> float:
     """The largest distance between the closed form and the root it must equal (an upper bound)."""
     error = 0.0
     for unknown, value in zip(branch.unknowns, values):
@@ -393,7 +423,7 @@ def _error(plan, branch, values, root):
     return error
 
 
-def _require_comparisons(report, branches, polynomials):
+def _require_comparisons(report: Verification, branches: bool, polynomials: bool) -> None:
     """A check that compared nothing fails, saying why, rather than passing vacuously."""
     if not (branches or polynomials):
         report.failures.append("nothing to compare: no branch and no polynomial was given")

@@ -9,13 +9,17 @@ polynomial must be squarefree (both decided exactly, in python-flint). Nothing f
 elimination is reused.
 """
 
+from __future__ import annotations
+
 import functools
 import math
+from collections.abc import Callable, Iterable, Mapping, Sequence
 
+import flint
 import sympy
 
 from ..system.convert import flint_context, to_sympy
-from .residual import exact
+from .residual import Polynomial, PolynomialLike, exact
 
 __all__ = ["FactorCheck", "structure_failures"]
 
@@ -28,33 +32,35 @@ class FactorCheck:
     ``make`` turns a factor into its ``Polynomial``, unless one of ``known`` is the same.
     """
 
-    def __init__(self, factors, make, known=()):
-        def polynomial(factor):
+    def __init__(self, factors: Mapping[str, Sequence[PolynomialLike]] | None,
+                 make: Callable[[PolynomialLike], Polynomial], known: Iterable[Polynomial] = ()) -> None:
+        def polynomial(factor: PolynomialLike) -> Polynomial:
             same = [p for p in known if p.exact.context() == exact(factor).context() and p.exact == exact(factor)]
             return same[0] if same else make(factor)
         self.factors = {name: [(f, polynomial(f)) for f in fs] for name, fs in (factors or {}).items()}
         self.smallest = {name: [math.inf] * len(fs) for name, fs in self.factors.items()}
 
-    def see(self, residual_of):
+    def see(self, residual_of: Callable[[Polynomial], float]) -> None:
         """Take one certified root into account; ``residual_of(polynomial)`` is its residual there."""
         for name, pairs in self.factors.items():
             best = self.smallest[name]
             for k, (_, polynomial) in enumerate(pairs):
                 best[k] = min(best[k], residual_of(polynomial))
 
-    def failures(self, tolerance, evaluated):
+    def failures(self, tolerance: float, evaluated: int) -> list[str]:
         """One message per kept factor that vanished on no certified root."""
         return [f"factor {_shown(factor)} of {name} vanishes on none of the {evaluated} numeric solutions "
                 f"(smallest relative residual {best:.3g}): extraneous"
                 for name, pairs in self.factors.items()
                 for (factor, _), best in zip(pairs, self.smallest[name]) if not best <= tolerance]
 
-    def to_json(self):
+    def to_json(self) -> dict[str, list[float]]:
         """Per polynomial, each kept factor's smallest residual (0 up to working precision if true)."""
         return {name: [float(v) for v in values] for name, values in self.smallest.items()}
 
 
-def structure_failures(polynomials, factors):
+def structure_failures(polynomials: Mapping[str, PolynomialLike],
+                       factors: Mapping[str, Sequence[PolynomialLike]] | None) -> list[str]:
     """Messages for every polynomial that is not squarefree, or is not the product of its
     kept factors (when they are given). Exact and deterministic: an answer is kept for the
     same polynomials checked again."""
@@ -68,34 +74,34 @@ def structure_failures(polynomials, factors):
 class _Keyed:
     """A polynomial (flint or sympy) compared and hashed by its variables and printed terms."""
 
-    def __init__(self, polynomial):
+    def __init__(self, polynomial: PolynomialLike) -> None:
         self.polynomial = polynomial
         names = polynomial.context().names() if hasattr(polynomial, "context") else ()
         self.key = (type(polynomial).__name__, tuple(map(str, names)), str(polynomial))
 
-    def __eq__(self, other):
-        return self.key == other.key
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, _Keyed) and self.key == other.key
 
-    def __hash__(self):
+    def __hash__(self) -> int:
         return hash(self.key)
 
 
 @functools.lru_cache(maxsize=256)
-def _structure(name, polynomial, factors):
+def _structure(name: str, polynomial: _Keyed, factors: tuple[_Keyed, ...] | None) -> list[str]:
     failures = [_not_squarefree(name, polynomial.polynomial)]
     if factors is not None:
         failures.append(_not_product(name, polynomial.polynomial, [f.polynomial for f in factors]))
     return [f for f in failures if f]
 
 
-def _shown(polynomial):
+def _shown(polynomial: PolynomialLike) -> sympy.Expr:
     """A polynomial as the user reads it (a sympy expression), only for a message."""
     if isinstance(polynomial, sympy.Basic):
         return polynomial
     return to_sympy(polynomial, polynomial.context())
 
 
-def _not_squarefree(name, polynomial):
+def _not_squarefree(name: str, polynomial: PolynomialLike) -> str | None:
     """A repeated factor names itself: it adds degree and no points."""
     poly = exact(polynomial)
     _, parts = poly.factor_squarefree()
@@ -105,7 +111,7 @@ def _not_squarefree(name, polynomial):
     return f"{name} is not squarefree: " + ", ".join(f"({f})**{m}" for f, m in repeated) + " divides it"
 
 
-def _primitive(expr):
+def _primitive(expr: sympy.Expr) -> sympy.Expr:
     """``expr`` with integer coefficients of gcd 1 and a positive leading one (flint's factors are monic)."""
     gens = sorted(expr.free_symbols, key=str)
     _, primitive = sympy.Poly(expr, *gens).clear_denoms()
@@ -113,7 +119,7 @@ def _primitive(expr):
     return (primitive if primitive.LC() > 0 else -primitive).as_expr()
 
 
-def _not_product(name, polynomial, factors):
+def _not_product(name: str, polynomial: PolynomialLike, factors: Sequence[PolynomialLike]) -> str | None:
     """The factors checked one by one must be the polynomial reported, up to a constant."""
     target = exact(polynomial)
     ctx = _common_context(target, *map(exact, factors))
@@ -129,12 +135,12 @@ def _not_product(name, polynomial, factors):
     return f"the kept factors of {name} do not multiply to it (quotient {ratio})"
 
 
-def _common_context(*polys):
+def _common_context(*polys: flint.fmpq_mpoly | flint.fmpz_mpoly) -> flint.fmpq_mpoly_ctx:
     names = sorted({str(n) for p in polys for n, d in zip(p.context().names(), p.degrees()) if d}) or ["_"]
     return flint_context(names)
 
 
-def _into(poly, ctx):
+def _into(poly: flint.fmpq_mpoly | flint.fmpz_mpoly, ctx: flint.fmpq_mpoly_ctx) -> flint.fmpq_mpoly:
     """``poly`` (in its own context) in ``ctx``, which has every variable it uses."""
     names = [str(n) for n in ctx.names()]
     where = [names.index(str(n)) if d else None for n, d in zip(poly.context().names(), poly.degrees())]

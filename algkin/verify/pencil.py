@@ -17,16 +17,24 @@ in floats for all samples at once (``Pencil.solve``) and in balls for one sample
 (True, True, True)
 """
 
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import TypeAlias
+
 import numpy as np
 import sympy
 from flint import arb
+from numpy.typing import NDArray
 
 from ..evaluate import ARB, NUMPY
-from ..evaluate.program import columns, compile_program
+from ..evaluate.program import ArrayProgram, BallProgram, Floats, columns, compile_program
 
 __all__ = ["Pencil"]
 
 NEAR = 1e-6  # how far (relative) a float candidate may be from the root it stands for
+Enclosure: TypeAlias = list[arb]  # one ball per unknown of the block
+
 MONOMIALS = ((2, 0), (1, 1), (0, 2), (1, 0), (0, 1), (0, 0))
 
 
@@ -34,16 +42,16 @@ class Pencil:
     """The pencil of a 2 x 2 block: ``first``'s six coefficients (u^2, uv, v^2, u, v, 1) and the
     linear combination's three (u, v, 1), compiled as programs of the known values."""
 
-    def __init__(self, first, line, known):
+    def __init__(self, first: list[sympy.Expr], line: list[sympy.Expr], known: list[str]) -> None:
         self.known = known
-        self.first = compile_program(first, known, NUMPY)
-        self.line = compile_program(line, known, NUMPY)
+        self.first: ArrayProgram = compile_program(first, known, NUMPY)
+        self.line: ArrayProgram = compile_program(line, known, NUMPY)
         # balls: one program for all nine coefficients; the two roots of the last sample remembered
-        self.coefficients = compile_program(list(first) + list(line), known, ARB)
-        self._last = (None, None)
+        self.coefficients: BallProgram = compile_program(list(first) + list(line), known, ARB)
+        self._last: tuple[tuple[arb, ...] | None, list[Enclosure] | None] = (None, None)
 
     @classmethod
-    def of(cls, equations, unknowns, known):
+    def of(cls, equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol], known: list[str]) -> Pencil | None:
         """The pencil of a block of ``equations`` in ``unknowns``, or ``None`` where it is not one."""
         if len(equations) != 2:
             return None
@@ -62,7 +70,7 @@ class Pencil:
         return cls([polys[0].coeff_monomial(m) for m in MONOMIALS],
                    [line.coeff_monomial(m) for m in MONOMIALS[3:]], known)
 
-    def solve(self, values, count):
+    def solve(self, values: Mapping[str, Floats], count: int) -> tuple[NDArray[np.intp], Floats, Floats]:
         """``(parent rows, u, v)`` in floats: the real solutions of every row (a double root counts twice)."""
         arguments = [values[n] if n in values else np.zeros(count) for n in self.known]
         first = columns(self.first(*arguments), count).T
@@ -89,7 +97,7 @@ class Pencil:
         dependent = p[rows] * t + r[rows]
         return rows, np.where(swap[rows], t, dependent), np.where(swap[rows], dependent, t)
 
-    def enclose(self, candidate, known):
+    def enclose(self, candidate: Sequence[float], known: Sequence[arb]) -> Enclosure | None:
         """Balls ``[u, v]`` holding the root next to the float ``candidate``, for every value of the
         ``known`` balls, or ``None`` where the two roots are not proved distinct (near a double
         root) or the candidate is near neither.
@@ -101,12 +109,13 @@ class Pencil:
             self._last = (tuple(known), roots)
         if roots is None:
             return None
-        gap, root = min((max(abs(float(b.mid()) - c) for b, c in zip(root, candidate)), root) for root in roots)
+        gaps = [max(abs(float(b.mid()) - c) for b, c in zip(root, candidate)) for root in roots]
+        gap, root = min(zip(gaps, roots), key=lambda pair: pair[0])
         # a candidate far from both roots is no float solution: nothing is proved next to it
         return root if gap <= NEAR * max(1.0, *(abs(c) for c in candidate)) else None
 
     @staticmethod
-    def _roots(coefficients):
+    def _roots(coefficients: list[arb]) -> list[Enclosure] | None:
         """Both roots in balls, each unknown's, or ``None`` unless they are proved real and distinct."""
         uu, uv, vv, u, v, one, a, b, c = coefficients
         swap = abs(float(b.mid())) > abs(float(a.mid()))

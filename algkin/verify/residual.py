@@ -20,20 +20,33 @@ absolute values, only scales the figure: it is evaluated in floats, for all root
 [50.0]
 """
 
+from __future__ import annotations
+
 from collections import defaultdict
+from collections.abc import Mapping, Sequence
 from fractions import Fraction
+from typing import TypeAlias
 
 import flint
 import numpy as np
 import sympy
+from numpy.typing import NDArray
 
 from ..evaluate import ARB
 from ..system.convert import flint_context, to_flint
 
 __all__ = ["Polynomial", "exact", "polynomial_of"]
 
+# An eliminant as the elimination hands it over, or as a caller writes it
+PolynomialLike: TypeAlias = flint.fmpq_mpoly | flint.fmpz_mpoly | sympy.Expr
+# An exact value, read back from its printed form (``Fraction(str(value))``)
+ExactValue: TypeAlias = sympy.Rational | Fraction | int | float
+# Monomial exponents of all but the inner variable -> [(inner exponent, coefficient)]
+Groups: TypeAlias = dict[tuple[int, ...], list[tuple[int, flint.fmpq | flint.fmpz]]]
 
-def polynomial_of(polynomial, names, fixed=None):
+
+def polynomial_of(polynomial: PolynomialLike, names: Sequence[str],
+                  fixed: Mapping[str, ExactValue] | None = None) -> Polynomial:
     """The ``Polynomial`` of ``polynomial``, built once for the same terms, names and values."""
     poly = exact(polynomial)
     key = (tuple(map(str, poly.context().names())), str(poly), tuple(names),
@@ -45,10 +58,10 @@ def polynomial_of(polynomial, names, fixed=None):
     return _BUILT[key]
 
 
-_BUILT = {}
+_BUILT: dict[tuple[tuple[str, ...], str, tuple[str, ...], tuple[tuple[str, str], ...]], Polynomial] = {}
 
 
-def exact(polynomial):
+def exact(polynomial: PolynomialLike) -> flint.fmpq_mpoly | flint.fmpz_mpoly:
     """``polynomial`` as an ``fmpq_mpoly`` (a sympy expression is converted, a flint one kept)."""
     if isinstance(polynomial, (flint.fmpq_mpoly, flint.fmpz_mpoly)):
         return polynomial
@@ -60,16 +73,19 @@ class Polynomial:
     """A polynomial in ``names`` (with the variables in ``fixed`` at exact values), ready for
     balls and float magnitudes."""
 
-    def __init__(self, polynomial, names, fixed=None):
+    def __init__(self, polynomial: PolynomialLike, names: Sequence[str],
+                 fixed: Mapping[str, ExactValue] | None = None) -> None:
         self.exact = poly = exact(polynomial)
         variables = [str(n) for n in poly.context().names()]
         degrees = poly.degrees()
-        fixed = {n: Fraction(str(v)) for n, v in (fixed or {}).items()}
-        unknown = {v for v, d in zip(variables, degrees) if d} - set(names) - set(fixed)
+        known = {n: Fraction(str(v)) for n, v in (fixed or {}).items()}
+        unknown = {v for v, d in zip(variables, degrees) if d} - set(names) - set(known)
         if unknown:
             raise ValueError(f"the polynomial {poly} has variables {sorted(unknown)} with no value")
-        given = {n: flint.fmpq(v.numerator, v.denominator) for n, v in fixed.items() if n in variables}
-        poly = poly.subs(given) if given else poly
+        given: dict[str | int, flint.fmpq] = {n: flint.fmpq(v.numerator, v.denominator)
+                                              for n, v in known.items() if n in variables}
+        # an fmpz_mpoly takes integer values only; the polynomials given values are fmpq_mpoly
+        poly = poly.subs(given) if given else poly  # type: ignore[arg-type]
         keep = [k for k, (n, d) in enumerate(zip(variables, poly.degrees())) if d and n not in given]
         self.names = [variables[k] for k in keep]
         terms = {tuple(int(m[k]) for k in keep): c for m, c in poly.to_dict().items()}
@@ -78,9 +94,10 @@ class Polynomial:
         self.outer = [n for k, n in enumerate(self.names) if k != self.inner]
         self.exponents = np.array(list(terms) or [()], dtype=float).reshape(len(terms) or 1, len(keep))
         self.sizes = np.array([abs(float(c)) for c in terms.values()] or [0.0])
-        self.made = (None, None)
+        # (precision, the groups as arb_poly at it): made on first use, remade when the precision changes
+        self.made: tuple[int | None, dict[tuple[int, ...], flint.arb_poly]] = (None, {})
 
-    def balls(self, values):
+    def balls(self, values: Mapping[str, flint.arb]) -> flint.arb:
         """``p`` at ``values`` (name -> ball), a ball."""
         polys = self._polys()
         if self.inner is None:
@@ -99,26 +116,22 @@ class Polynomial:
             total += term
         return total
 
-    def _horner(self, polys, x, y):
+    def _horner(self, polys: dict[tuple[int, ...], flint.arb_poly], x: flint.arb, y: flint.arb) -> flint.arb:
         top = max(m[0] for m in polys)
-        total = None
-        for e in range(top, -1, -1):
+        total = polys[(top,)](x)
+        for e in range(top - 1, -1, -1):
             poly = polys.get((e,))
-            term = poly(x) if poly is not None else None
-            if total is None:
-                total = term
-            else:
-                total = total * y if term is None else total * y + term
+            total = total * y if poly is None else total * y + poly(x)
         return total
 
-    def magnitude(self, values):
+    def magnitude(self, values: Mapping[str, NDArray[np.float64]]) -> NDArray[np.float64]:
         """The sum of the absolute values of the terms, for float arrays ``values`` (all at once)."""
         if not self.names:
             return np.full(1, self.sizes.sum())
         points = np.abs(np.stack([np.asarray(values[n], dtype=float) for n in self.names], axis=-1))
         return np.prod(points[:, None, :] ** self.exponents[None], axis=-1) @ self.sizes
 
-    def _polys(self):
+    def _polys(self) -> dict[tuple[int, ...], flint.arb_poly]:
         """The groups as ``arb_poly``, remade when the working precision changed."""
         precision = flint.ctx.prec
         if self.made[0] != precision:
@@ -126,9 +139,9 @@ class Polynomial:
         return self.made[1]
 
 
-def _groups(terms, inner):
+def _groups(terms: Mapping[tuple[int, ...], flint.fmpq | flint.fmpz], inner: int | None) -> Groups:
     """``outer monomial -> [(inner exponent, coefficient)]``."""
-    groups = defaultdict(list)
+    groups: defaultdict[tuple[int, ...], list[tuple[int, flint.fmpq | flint.fmpz]]] = defaultdict(list)
     for monomial, coefficient in terms.items():
         if inner is None:
             groups[()].append((0, coefficient))
@@ -137,7 +150,7 @@ def _groups(terms, inner):
     return dict(groups) or {(): [(0, flint.fmpq(0))]}
 
 
-def _arb_poly(terms):
+def _arb_poly(terms: Sequence[tuple[int, flint.fmpq | flint.fmpz]]) -> flint.arb_poly:
     coefficients = [ARB.number(0, 1)] * (max(e for e, _ in terms) + 1)
     for exponent, c in terms:
         c = flint.fmpq(c)
@@ -145,7 +158,7 @@ def _arb_poly(terms):
     return flint.arb_poly(coefficients)
 
 
-def _powers(value, top):
+def _powers(value: flint.arb, top: int) -> list[flint.arb]:
     """``[1, v, v**2, ..., v**top]`` by products (``arb ** int`` is nan on a ball around 0)."""
     powers = [flint.arb(1)]
     for _ in range(top):

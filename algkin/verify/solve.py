@@ -16,19 +16,26 @@ out are candidates: ``balls.Certifier`` proves each one (or not) on the original
 [-1.414213562373, 1.414213562373]
 """
 
+from __future__ import annotations
+
 import functools
 import itertools
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
+from typing import TypeAlias
 
 import numpy as np
 import sympy
+from numpy.typing import NDArray
 
 from ..evaluate import NUMPY
-from ..evaluate.program import columns, compile_program
+from ..evaluate.program import ArrayProgram, Floats, columns, compile_program
 from ..system import System, symbol
 from .pencil import Pencil
 
 __all__ = ["Blocks", "Candidates", "blocks_of", "solve_floats", "STARTS"]
+
+Rows: TypeAlias = NDArray[np.intp]  # row numbers: of samples, or of partial solutions
 
 STARTS = 8  # random Newton starts per sample and block; a sample that lacks a root retries with more
 STEPS = 60
@@ -41,7 +48,7 @@ SAME_ROOT = 1e-7  # end points closer than this (relative) are one root
 class Blocks:
     """The block-triangular structure of a system, each block compiled once for numpy arrays."""
 
-    def __init__(self, system):
+    def __init__(self, system: System) -> None:
         self.system = system
         self.names = list(system.variables)
         unknown = {symbol(u) for u in system.unknowns}
@@ -50,7 +57,9 @@ class Blocks:
         # starts must spread over that size too, not only over the known values (cos, sin).
         self.size = max((abs(float(c)) ** 0.5 for eq in pending
                          for c in sympy.Poly(eq, *eq.free_symbols).coeffs()), default=0.0)
-        solved, self.blocks, self.equations = set(), [], []
+        solved: set[str] = set()
+        self.blocks: list[_Block] = []
+        self.equations: list[sympy.Expr] = []
         while len(solved) < len(system.unknowns):
             names, equations = self._next_block(pending, solved)
             for eq in equations:
@@ -59,7 +68,7 @@ class Blocks:
             self.equations += equations
             self.blocks.append(_Block(names, equations, self.names))
 
-    def _next_block(self, pending, solved):
+    def _next_block(self, pending: list[sympy.Expr], solved: set[str]) -> tuple[list[str], list[sympy.Expr]]:
         unknown = {symbol(u) for u in self.system.unknowns} - {symbol(u) for u in solved}
         for size in range(1, 5):
             candidates = [eq for eq in pending if 0 < len(eq.free_symbols & unknown) <= size]
@@ -71,7 +80,7 @@ class Blocks:
 
 
 class _Block:
-    def __init__(self, names, equations, variables):
+    def __init__(self, names: list[str], equations: list[sympy.Expr], variables: list[str]) -> None:
         self.names = names
         self.equations = equations
         used = {str(v) for eq in equations for v in eq.free_symbols}
@@ -81,21 +90,24 @@ class _Block:
         # Newton solves a linear block in one step from anywhere: one start is enough
         self.linear = all(sympy.Poly(eq, *unknowns).total_degree() <= 1 for eq in equations)
         if len(names) == 1:
-            self.coefficients = compile_program(sympy.Poly(equations[0], unknowns[0]).all_coeffs(), arguments, NUMPY)
+            coefficients = sympy.Poly(equations[0], unknowns[0]).all_coeffs()
+            self.coefficients: ArrayProgram | None = compile_program(coefficients, arguments, NUMPY)
         else:
             self.coefficients = None
             jacobian = sympy.Matrix(equations).jacobian(unknowns)
-            self.residual = compile_program(equations, arguments, NUMPY)
-            self.jacobian = compile_program(list(jacobian), arguments, NUMPY)
+            self.residual: ArrayProgram = compile_program(equations, arguments, NUMPY)
+            self.jacobian: ArrayProgram = compile_program(list(jacobian), arguments, NUMPY)
             self.pencil = Pencil.of(equations, unknowns, [a for a in arguments if a not in names])
 
 
 @functools.lru_cache(maxsize=64)
-def _cached_blocks(unknowns, parameters, inputs, equations, nonnegative):
+def _cached_blocks(unknowns: tuple[str, ...], parameters: tuple[str, ...],
+                   inputs: tuple[tuple[str, tuple[str, str]], ...], equations: tuple[sympy.Expr, ...],
+                   nonnegative: tuple[str, ...]) -> Blocks:
     return Blocks(System(unknowns, parameters, dict(inputs), equations, nonnegative))
 
 
-def blocks_of(system):
+def blocks_of(system: System) -> Blocks:
     """The system's ``Blocks``, compiled once per system and reused by later calls."""
     return _cached_blocks(system.unknowns, system.parameters, tuple(system.inputs.items()), system.equations,
                           system.nonnegative)
@@ -112,13 +124,14 @@ class Candidates:
     ``r`` (nan for a univariate block), for the proof in balls to start from.
     """
 
-    owner: np.ndarray
-    values: dict
-    lineage: list
-    inverses: list
+    owner: Rows
+    values: dict[str, Floats]
+    lineage: list[Rows]
+    inverses: list[Floats]
 
 
-def solve_floats(blocks, known, rng, starts=STARTS):
+def solve_floats(blocks: Blocks, known: Mapping[str, Floats], rng: np.random.Generator,
+                 starts: int = STARTS) -> Candidates:
     """``Candidates`` for every sample; ``known`` maps each input and parameter variable to a
     float array over the samples."""
     count = len(next(iter(known.values()))) if known else 1
@@ -145,7 +158,7 @@ def solve_floats(blocks, known, rng, starts=STARTS):
     return Candidates(owner, values, lineage, inverses)
 
 
-def _inverses(block, values, count):
+def _inverses(block: _Block, values: Mapping[str, Floats], count: int) -> Floats:
     """The block's Jacobian inverted at every row, in floats (nan where singular or univariate)."""
     size = len(block.names)
     if block.coefficients is not None or not count:
@@ -158,20 +171,21 @@ def _inverses(block, values, count):
     return inverse
 
 
-def _scale(values, size, count):
+def _scale(values: Mapping[str, Floats], size: float, count: int) -> Floats:
     """Per row: how far from the origin the roots may be (the known values and the lengths)."""
     known = [np.abs(v) for v in values.values()]
     largest = np.max(np.stack(known), axis=0) if known else np.zeros(count)
     return 2 * (np.maximum(largest, size) + 1)
 
 
-def _arguments(names, values, count):
+def _arguments(names: Iterable[str], values: Mapping[str, Floats], count: int) -> list[Floats]:
     """The arrays of ``names`` in ``values``, zeros for a variable with none."""
     return [values[n] if n in values else np.zeros(count) for n in names]
 
 
-def _univariate(block, values):
+def _univariate(block: _Block, values: Mapping[str, Floats]) -> tuple[Rows, dict[str, Floats]]:
     """Real eigenvalues of each row's companion matrix (rows grouped by their actual degree)."""
+    assert block.coefficients is not None  # only a block in one unknown is solved here
     count = len(next(iter(values.values())))
     coeffs = columns(block.coefficients(*_arguments(block.arguments, values, count)), count)
     largest = np.max(np.abs(coeffs), axis=1)
@@ -195,7 +209,8 @@ def _univariate(block, values):
     return parent, {block.names[0]: np.concatenate(roots) if roots else np.zeros(0)}
 
 
-def _newton(block, values, scale, rng, starts):
+def _newton(block: _Block, values: Mapping[str, Floats], scale: Floats, rng: np.random.Generator,
+            starts: int) -> tuple[Rows, dict[str, Floats]]:
     """Newton from ``starts`` random points per row, all rows at once; distinct end points per row."""
     rows, size = len(scale), len(block.names)
     starts = 1 if block.linear else starts
@@ -208,7 +223,7 @@ def _newton(block, values, scale, rng, starts):
     return parent, {n: points[..., i][keep] for i, n in enumerate(block.names)}
 
 
-def _iterate(block, base, points, scale):
+def _iterate(block: _Block, base: Mapping[str, Floats], points: Floats, scale: Floats) -> Floats:
     """Newton steps on the rows still moving; rows that diverge or stall end as nan."""
     done = np.full(len(points), np.nan)[:, None] * points
     active = np.arange(len(points))
@@ -233,7 +248,7 @@ def _iterate(block, base, points, scale):
     return done
 
 
-def _step(block, values, count):
+def _step(block: _Block, values: Mapping[str, Floats], count: int) -> tuple[Floats, Floats]:
     """``(|F|, J^-1 F)`` per row."""
     args = _arguments(block.arguments, values, count)
     size = len(block.names)
@@ -250,7 +265,7 @@ def _step(block, values, count):
     return np.max(np.abs(f), axis=1), step
 
 
-def _distinct(points, scale):
+def _distinct(points: Floats, scale: Floats) -> NDArray[np.bool_]:
     """``rows x starts`` mask: the finite end points not within ``SAME_ROOT`` of an earlier one."""
     finite = np.all(np.isfinite(points), axis=2)
     gap = np.max(np.abs(points[:, :, None, :] - points[:, None, :, :]), axis=3)
