@@ -18,11 +18,11 @@ import sympy
 
 from ..errors import UsageError
 from ..runtime.files import atomic_output, check_output
-from .plot import new_figure
+from .plot import FORMATS as FIGURE_FORMATS, new_figure
 
 __all__ = ["mechanism_figure", "modes_figure", "draw_pose", "PoseArtists", "LiveFigure", "draw_curve", "animate", "parse_inputs", "parse_ranges", "plot_mechanism", "FORMATS"]
 
-FORMATS = (".png", ".svg", ".pdf", ".gif", ".mp4", ".html")
+FORMATS = FIGURE_FORMATS + (".gif", ".mp4", ".html")  # a still figure, or the motion animated
 _BAR = dict(color="tab:blue", linewidth=2.5, solid_capstyle="round", zorder=2)
 _JOINT = dict(marker="o", markersize=6, color="black", markerfacecolor="white", zorder=4)
 
