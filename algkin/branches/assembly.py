@@ -22,8 +22,8 @@ def check_assembly(compiled, branches):
         angles[symbol(c)], angles[symbol(s)] = np.cos(grid), np.sin(grid)
     args = list(angles)
     for point, disc in chosen.discriminants.items():
-        values = sympy.lambdify(args, disc.xreplace(defaults), "numpy")(*angles.values())
-        with np.errstate(invalid="ignore"):
+        with np.errstate(all="ignore"):  # a discriminant's pole (an input where a base meets a base) is no real root
+            values = sympy.lambdify(args, disc.xreplace(defaults), "numpy")(*angles.values())
             if not np.any(np.broadcast_to(values, (GRID,)) >= 0):
                 spec = next((d for d in compiled.implicit if d.point == point), None)
                 why = getattr(spec, "never_meets", "the two circles never meet")
