@@ -159,7 +159,8 @@ class _Branch:
 
     def real_floats(self, floats: Mapping[str, Floats], known: Sequence[str]) -> NDArray[np.bool_]:
         count = len(next(iter(floats.values())))
-        values = self.discriminant_floats(*(floats.get(n, np.zeros(count)) for n in known))
+        with np.errstate(all="ignore"):  # a later discriminant holds an earlier one's sqrt: nan where that is negative
+            values = self.discriminant_floats(*(floats.get(n, np.zeros(count)) for n in known))
         return np.all([np.broadcast_to(v, (count,)) > 0 for v in values], axis=0) if values else np.ones(count, bool)
 
 
