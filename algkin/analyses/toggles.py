@@ -1,6 +1,7 @@
 """Toggles (dead centres): where an implicit point's two assembly modes meet, certified.
 
-A dyad on bases P, Q with lengths l1, l2 toggles where ``|PQ| = l1 + l2`` (*extended*:
+Each implicit point's spec gives its conditions (``algkin.scene.implicit``). A dyad on
+bases P, Q with lengths l1, l2 toggles where ``|PQ| = l1 + l2`` (*extended*:
 both bars in line, pointing apart) or ``|PQ| = |l1 - l2|`` (*folded*: in line, one over the
 other). A slider (on the line through P with direction d, at distance l from Q) toggles
 where the circle about Q is *tangent* to the line: ``cross(d, Q - P)**2 = l**2 |d|**2``.
@@ -27,9 +28,9 @@ from ..branches import closed_forms
 from ..eliminate import eliminate
 from ..errors import UsageError
 from ..evaluate import ARB, evaluate
-from ..scene import compile_scene, load_scene
-from ..scene.compile import SliderSpec
-from ..scene.constructions import Crank, Dyad, Fixed, Slider
+from ..scene import Compiled, compile_scene, load_scene
+from ..scene.constructions import Crank, Fixed
+from ..scene.implicit import ImplicitSpec
 from ..scene.settings import with_values
 from ..system import symbol
 from ..system.angles import half_angle_numerator, tangent_to_degrees, vanishes_at_half_turn
@@ -71,20 +72,11 @@ def _defaults(compiled):
     return {symbol(n): compiled.parameter_values[n] for n in compiled.system.parameters}
 
 
-def toggle_conditions(compiled, spec):
+def toggle_conditions(compiled: Compiled, spec: ImplicitSpec) -> dict[str, sympy.Expr]:
     """{kind: poly} in the input's c, s (earlier points eliminated), for a dyad or a slider."""
     defaults = _defaults(compiled)
-    if isinstance(spec, SliderSpec):
-        (px, py), (qx, qy), (dx, dy) = spec.through, spec.center, spec.direction
-        cross = dx * (qy - py) - dy * (qx - px)
-        conditions = {"tangent": cross**2 - spec.length**2 * (dx**2 + dy**2)}
-    else:
-        (px, py), (qx, qy) = spec.base_p, spec.base_q
-        span = (qx - px) ** 2 + (qy - py) ** 2
-        l1, l2 = spec.lengths
-        conditions = {"extended": (l1 + l2) ** 2 - span, "folded": span - (l1 - l2) ** 2}
     return {kind: _eliminate_earlier(compiled, sympy.expand(e.xreplace(defaults)), spec)
-            for kind, e in conditions.items()}
+            for kind, e in spec.toggle_conditions().items()}
 
 
 def _eliminate_earlier(compiled, condition, spec):
@@ -114,7 +106,7 @@ def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name, S
     discriminants are not toggles. ``set`` gives dimensions exact values in place of their defaults.
     """
     scene = with_values(scene if not isinstance(scene, str) else load_scene(scene), set)
-    implicit = [n for n, p in scene.points.items() if isinstance(p, (Dyad, Slider))]
+    implicit = [n for n, p in scene.points.items() if p.labels]  # the points with assembly modes
     if not implicit:
         raise UsageError("scene", scene.name, "has no dyad or slider, so no assembly modes to meet")
     compiled = compile_scene(scene, implicit)

@@ -16,17 +16,31 @@ there, or the balls are too wide), never guessed.
 [{'from_deg': 0.0, 'to_deg': 360.0, 'status': 'certified'}]
 """
 
+from collections.abc import Mapping, Sequence
+from typing import TypedDict
+
 import flint
+import sympy
 
 from ..evaluate import ARB, evaluate
+from .closed_form import Branch
 
-__all__ = ["certify_label", "MIN_WIDTH_DEG"]
+__all__ = ["certify_label", "Interval", "MIN_WIDTH_DEG"]
 
 MIN_WIDTH_DEG = 1e-7
 BITS = 64
 
 
-def _status(discriminants, c_name, s_name, lo, hi, parameters):
+class Interval(TypedDict):
+    """Input angles in degrees and what holds there: ``certified``, ``no-assembly`` or ``undecided``."""
+
+    from_deg: float
+    to_deg: float
+    status: str
+
+
+def _status(discriminants: Sequence[sympy.Expr], c_name: str, s_name: str, lo: float, hi: float,
+            parameters: Mapping[str, flint.arb]) -> str | None:
     middle, radius = (flint.arb(lo) + flint.arb(hi)) / 2, (flint.arb(hi) - flint.arb(lo)) / 2
     angle = flint.arb(middle.mid(), radius.mid() + radius.rad()) * flint.arb.pi() / 180
     values = dict(parameters, **{c_name: angle.cos(), s_name: angle.sin()})
@@ -38,7 +52,8 @@ def _status(discriminants, c_name, s_name, lo, hi, parameters):
     return None
 
 
-def certify_label(branch, c_name, s_name, lo_deg, hi_deg, parameters):
+def certify_label(branch: Branch, c_name: str, s_name: str, lo_deg: float, hi_deg: float,
+                  parameters: Mapping[str, flint.arb]) -> list[Interval]:
     """[{from_deg, to_deg, status}] covering ``[lo_deg, hi_deg]``, merged by status.
 
     ``parameters``: name -> arb for every dimension in the discriminants.
@@ -46,7 +61,8 @@ def certify_label(branch, c_name, s_name, lo_deg, hi_deg, parameters):
     discriminants = list(branch.discriminants.values())
     if not discriminants:
         return [{"from_deg": float(lo_deg), "to_deg": float(hi_deg), "status": "certified"}]
-    pieces, stack = [], [(float(lo_deg), float(hi_deg))]
+    pieces: list[tuple[float, float, str]] = []
+    stack = [(float(lo_deg), float(hi_deg))]
     with flint.ctx.workprec(BITS):
         while stack:
             lo, hi = stack.pop()
@@ -62,8 +78,8 @@ def certify_label(branch, c_name, s_name, lo_deg, hi_deg, parameters):
     return _merged(pieces)
 
 
-def _merged(pieces):
-    merged = []
+def _merged(pieces: Sequence[tuple[float, float, str]]) -> list[Interval]:
+    merged: list[Interval] = []
     for lo, hi, status in pieces:
         if merged and merged[-1]["status"] == status and merged[-1]["to_deg"] == lo:
             merged[-1]["to_deg"] = hi

@@ -12,68 +12,51 @@ AB**2 - 122500*c_theta**2 + 56000*c_theta - 122500*s_theta**2 + 280000*s_theta -
 """
 
 import dataclasses
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
 import sympy
 
 from ..errors import SceneError, UsageError
 from ..system import System, symbol
-from .constructions import Builder, Dyad, Slider
+from .constructions import Builder, Construction, Indicator
 from .expr import MAX_VALUE_BITS, bits_bound
+from .implicit import DyadSpec, ImplicitSpec, SliderSpec
+from .implicit.algebra import Circles
+from .implicit.base import Point
 from .load import parse_output
+from .model import Output, Scene
 from .names import check_names, check_symbol_name
 
 __all__ = ["Compiled", "DyadSpec", "SliderSpec", "compile_scene"]
 
-
-@dataclass(frozen=True)
-class DyadSpec:
-    """A compiled dyad: its unknowns, base coordinates and lengths in system variables."""
-
-    point: str
-    unknowns: tuple
-    base_p: tuple
-    base_q: tuple
-    lengths: tuple
-    branch: str
-    labels = Dyad.labels
-    never_meets = "the two circles never meet"
-
-
-@dataclass(frozen=True)
-class SliderSpec:
-    """A compiled slider: its unknowns, the line (a point on it, direction), circle centre, length."""
-
-    point: str
-    unknowns: tuple
-    through: tuple
-    direction: tuple
-    center: tuple
-    length: object
-    branch: str
-    labels = Slider.labels
-    never_meets = "the circle never meets the slider's line"
+Substitution = Mapping[sympy.Symbol, sympy.Expr]
 
 
 @dataclass(frozen=True)
 class Compiled:
     """A scene compiled for some outputs: the system plus what branches need to know."""
 
-    scene: object
+    scene: Scene
     system: System
-    coordinates: dict  # needed point -> (x, y) in system variables
-    dyads: tuple  # DyadSpec, in construction order
-    indicators: tuple  # constructions.Indicator, one per dyad
-    definitions: dict  # output unknown -> its value in other variables (sqrt for distances)
-    outputs: dict  # output name -> unknown names standing for it
-    parameter_values: dict  # every scene parameter -> exact default
-    symbolic: tuple  # parameters kept symbolic
-    implicit: tuple = ()  # DyadSpec and SliderSpec, in construction order
+    coordinates: dict[str, Point]  # needed point -> (x, y) in system variables
+    dyads: tuple[DyadSpec, ...]  # in construction order
+    indicators: tuple[Indicator, ...]  # one per dyad or slider
+    definitions: dict[str, sympy.Expr]  # output unknown -> its value in other variables (sqrt for distances)
+    outputs: dict[str, tuple[str, ...]]  # output name -> unknown names standing for it
+    parameter_values: dict[str, sympy.Expr]  # every scene parameter -> exact default
+    symbolic: tuple[str, ...]  # parameters kept symbolic
+    implicit: tuple[ImplicitSpec, ...] = ()  # dyads and sliders, in construction order
+
+    @property
+    def circles(self) -> Circles:
+        """Each input's (cos, sin) symbols, on whose unit circles closed forms are reduced."""
+        return [(symbol(c), symbol(s)) for c, s in self.system.inputs.values()]
 
 
-def _resolve_outputs(scene, requested):
+def _resolve_outputs(scene: Scene, requested: Sequence[str] | None) -> list[Output]:
     generated = check_names(scene)  # a scene built in Python has not been through the loader
-    outputs = []
+    outputs: list[Output] = []
     for text in requested or list(scene.outputs):
         if text in scene.outputs:
             outputs.append(scene.outputs[text])
@@ -90,8 +73,9 @@ def _resolve_outputs(scene, requested):
     return outputs
 
 
-def _needed_points(scene, outputs):
-    needed, stack = set(), [p for o in outputs for p in o.points]
+def _needed_points(scene: Scene, outputs: Sequence[Output]) -> list[str]:
+    needed: set[str] = set()
+    stack = [p for o in outputs for p in o.points]
     while stack:
         name = stack.pop()
         if name not in needed:
@@ -100,10 +84,11 @@ def _needed_points(scene, outputs):
     return [name for name in _construction_order(scene) if name in needed]
 
 
-def _construction_order(scene):
-    order, seen = [], set()
+def _construction_order(scene: Scene) -> list[str]:
+    order: list[str] = []
+    seen: set[str] = set()
 
-    def visit(name):
+    def visit(name: str) -> None:
         if name not in seen:
             seen.add(name)
             for ref in scene.points[name].references:
@@ -115,13 +100,16 @@ def _construction_order(scene):
     return order
 
 
-def _parameter_values(scene, symbolic):
+def _parameter_values(scene: Scene, symbolic: Sequence[str]) \
+        -> tuple[dict[str, sympy.Expr], dict[sympy.Symbol, sympy.Expr], dict[str, int]]:
     for name in symbolic:
         if name not in scene.parameters:
             known = ", ".join(scene.parameters) or "none"
             raise UsageError("--param", name, f"not a parameter of {scene.name} (parameters: {known})")
     symbols = scene.parameter_symbols()
-    defaults, substitution, bits = {}, {}, {}
+    defaults: dict[str, sympy.Expr] = {}
+    substitution: dict[sympy.Symbol, sympy.Expr] = {}
+    bits: dict[str, int] = {}
     for name, default in scene.parameters.items():
         bits[name] = bits_bound(sympy.sympify(default), bits)
         if bits[name] > MAX_VALUE_BITS:
@@ -134,24 +122,25 @@ def _parameter_values(scene, symbolic):
     return defaults, substitution, bits
 
 
-def defaults_subs(defaults, symbols):
+def defaults_subs(defaults: Mapping[str, sympy.Expr],
+                  symbols: Mapping[str, sympy.Symbol]) -> dict[sympy.Symbol, sympy.Expr]:
     """Substitution of every already-resolved parameter by its default."""
     return {symbols[n]: v for n, v in defaults.items()}
 
 
-def compile_scene(scene, outputs=None, params=()):
+def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: Iterable[str] = ()) -> Compiled:
     """Compile ``scene`` for ``outputs`` (names, point names, ``dist(P, Q)``, ``P.x``).
 
     Parameters named in ``params`` stay symbolic; the others take their exact defaults.
     """
     symbolic = tuple(params)
     defaults, substitution, bits = _parameter_values(scene, symbolic)
-    outputs = _resolve_outputs(scene, outputs)
-    points = _needed_points(scene, outputs)
-    used_inputs = {scene.points[p].input for p in points if hasattr(scene.points[p], "input")}
+    resolved = _resolve_outputs(scene, outputs)
+    points = _needed_points(scene, resolved)
+    used_inputs = {getattr(scene.points[p], "input", None) for p in points}  # the cranks' inputs
     inputs = {n: i.symbols for n, i in scene.inputs.items() if n in used_inputs}
     builder = Builder(inputs)
-    coords = {}
+    coords: dict[str, Point] = {}
     for name in points:
         _check_bits(scene, name, scene.points[name], bits)
         construction = _substituted(scene.points[name], substitution)
@@ -160,8 +149,9 @@ def compile_scene(scene, outputs=None, params=()):
                 _check_finite(scene, f"points.{name}", item)
         _check_lengths(scene, name, construction)
         _check_direction(scene, name, construction)
-        coords[name] = tuple(sympy.expand(v) for v in construction.build(name, coords, builder))
-    definitions, output_unknowns, nonnegative = _output_equations(outputs, coords, builder)
+        x, y = construction.build(name, coords, builder)
+        coords[name] = (sympy.expand(x), sympy.expand(y))
+    definitions, output_unknowns, nonnegative = _output_equations(resolved, coords, builder)
     equations = [sympy.expand(eq) for eq in builder.equations]
     equations += [c**2 + s**2 - 1 for c, s in inputs.values()]
     _check_polynomial(scene, equations, symbolic)
@@ -173,29 +163,16 @@ def compile_scene(scene, outputs=None, params=()):
         equations=tuple(equations),
         nonnegative=tuple(nonnegative),
     )
-    implicit = tuple(_spec(name, c, coords, substitution) for name, c in builder.implicit.items())
-    dyads = tuple(spec for spec in implicit if isinstance(spec, DyadSpec))
-    return Compiled(scene, system, coords, dyads, tuple(builder.indicators), definitions,
-                    output_unknowns, defaults, symbolic, implicit)
+    return Compiled(scene, system, coords, tuple(builder.dyads.values()), tuple(builder.indicators), definitions,
+                    output_unknowns, defaults, symbolic, tuple(builder.implicit.values()))
 
 
-def _spec(name, construction, coords, substitution):
-    unknowns = (f"{name}_x", f"{name}_y")
-    if isinstance(construction, Slider):
-        return SliderSpec(name, unknowns, coords[construction.through],
-                          tuple(d.xreplace(substitution) for d in construction.direction),
-                          coords[construction.to], construction.length.xreplace(substitution),
-                          construction.branch)
-    return DyadSpec(name, unknowns, coords[construction.bases[0]], coords[construction.bases[1]],
-                    tuple(l.xreplace(substitution) for l in construction.lengths), construction.branch)
-
-
-def _substituted(construction, substitution):
+def _substituted(construction: Construction, substitution: Substitution) -> Construction:
     fields = {k: _subs(v, substitution) for k, v in vars(construction).items()}
     return type(construction)(**fields)
 
 
-def _subs(value, substitution):
+def _subs(value: object, substitution: Substitution) -> object:
     if isinstance(value, sympy.Basic):
         return value.xreplace(substitution)
     if isinstance(value, tuple):
@@ -211,7 +188,7 @@ _NOT_FINITE = (sympy.zoo, sympy.nan, sympy.oo, -sympy.oo)
 MAGNITUDES = (sympy.Rational(1, 10**100), sympy.Integer(10**100))
 
 
-def _check_finite(scene, element, value):
+def _check_finite(scene: Scene, element: str, value: object) -> None:
     """A value that the parameters' defaults turn into 1/0 or sqrt(-1), or beyond what floats
     can square, is a scene error."""
     if not isinstance(value, sympy.Basic):
@@ -224,7 +201,7 @@ def _check_finite(scene, element, value):
                          "1e-100 to 1e100 that floating-point checks can square")
 
 
-def _check_bits(scene, name, construction, bits):
+def _check_bits(scene: Scene, name: str, construction: Construction, bits: Mapping[str, int]) -> None:
     """Refuse, before substituting, a coordinate or length whose value would be huge."""
     for value in vars(construction).values():
         for item in value if isinstance(value, tuple) else (value,):
@@ -234,7 +211,7 @@ def _check_bits(scene, name, construction, bits):
                                  f"bits with the parameters' defaults (at most {MAX_VALUE_BITS})")
 
 
-def _check_polynomial(scene, equations, symbolic):
+def _check_polynomial(scene: Scene, equations: Sequence[sympy.Expr], symbolic: Sequence[str]) -> None:
     """A symbolic parameter under a division or sqrt cannot go into a polynomial system."""
     for eq in equations:
         if not eq.is_polynomial(*eq.free_symbols):
@@ -243,22 +220,25 @@ def _check_polynomial(scene, equations, symbolic):
                              f"{scene.source} is not polynomial in it (keep it exact): {eq} = 0")
 
 
-def _check_lengths(scene, name, construction):
+def _check_lengths(scene: Scene, name: str, construction: Construction) -> None:
     lengths = getattr(construction, "lengths", None) or (getattr(construction, "length", None),)
     for length in lengths:
         if length is not None and length.is_number and not length > 0:
             raise SceneError(scene.source, f"points.{name}", f"length must be positive, got {length}")
 
 
-def _check_direction(scene, name, construction):
+def _check_direction(scene: Scene, name: str, construction: Construction) -> None:
     direction = getattr(construction, "direction", None)
     if direction is not None and all(d.is_number and d == 0 for d in direction):
         raise SceneError(scene.source, f"points.{name}.slider.direction",
                          "direction must not be zero, got [0, 0] with the parameters' default values")
 
 
-def _output_equations(outputs, coords, builder):
-    definitions, output_unknowns, nonnegative = {}, {}, []
+def _output_equations(outputs: Sequence[Output], coords: Mapping[str, Point], builder: Builder) \
+        -> tuple[dict[str, sympy.Expr], dict[str, tuple[str, ...]], list[str]]:
+    definitions: dict[str, sympy.Expr] = {}
+    output_unknowns: dict[str, tuple[str, ...]] = {}
+    nonnegative: list[str] = []
     implicit = {str(u) for u in builder.unknowns}
     for output in outputs:
         if output.kind == "dist":

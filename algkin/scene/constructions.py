@@ -2,15 +2,20 @@
 
 Each construction knows the points it refers to and how it turns into polynomial
 terms: an *explicit* point is a polynomial in earlier coordinates; an *implicit* point
-(dyad, slider) brings two unknowns, two equations and a branch indicator whose sign is
-the geometric label.
+(dyad, slider) brings two unknowns, two equations, a branch indicator whose sign is
+the geometric label, and its compiled spec (``implicit``: closed form, stable floats, toggles).
 """
 
+from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Protocol
 
 import sympy
 
-__all__ = ["Fixed", "Crank", "Dyad", "Slider", "Frame", "CONSTRUCTIONS", "Builder", "Indicator"]
+from .implicit import DyadSpec, ImplicitSpec, SliderSpec
+from .implicit.base import Point
+
+__all__ = ["Construction", "Fixed", "Crank", "Dyad", "Slider", "Frame", "CONSTRUCTIONS", "Builder", "Indicator"]
 
 
 @dataclass(frozen=True)
@@ -25,23 +30,37 @@ class Indicator:
 
 
 class Builder:
-    """Collects unknowns, equations and branch indicators while a scene compiles."""
+    """Collects unknowns, equations, branch indicators and implicit points' specs while a scene compiles."""
 
-    def __init__(self, inputs):
+    def __init__(self, inputs: Mapping[str, tuple[sympy.Symbol, sympy.Symbol]]) -> None:
         self.inputs = inputs  # input name -> (cos symbol, sin symbol)
-        self.unknowns = []
-        self.equations = []
-        self.indicators = []
-        self.dyads = {}
-        self.implicit = {}  # every implicit point (dyads and sliders), in construction order
+        self.unknowns: list[sympy.Symbol] = []
+        self.equations: list[sympy.Expr] = []
+        self.indicators: list[Indicator] = []
+        self.dyads: dict[str, DyadSpec] = {}
+        self.implicit: dict[str, ImplicitSpec] = {}  # every implicit point (dyads and sliders), in construction order
 
-    def unknown(self, name):
+    def unknown(self, name: str) -> sympy.Symbol:
         symbol = sympy.Symbol(name, real=True)
         self.unknowns.append(symbol)
         return symbol
 
 
-def _rot90(v):
+class Construction(Protocol):
+    """How a point is built: the points it refers to, its assembly modes (none if explicit), its terms."""
+
+    @property
+    def references(self) -> tuple[str, ...]: ...
+
+    @property
+    def labels(self) -> tuple[str, ...]: ...
+
+    def build(self, name: str, coords: Mapping[str, Point], builder: Builder) -> Point:
+        """The point's coordinates, adding its unknowns and equations to ``builder`` if it has any."""
+        ...
+
+
+def _rot90(v: Point) -> Point:
     return (-v[1], v[0])
 
 
@@ -52,8 +71,9 @@ class Fixed:
     x: sympy.Expr
     y: sympy.Expr
     references = ()
+    labels = ()
 
-    def build(self, name, coords, builder):
+    def build(self, name: str, coords: Mapping[str, Point], builder: Builder) -> Point:
         return (self.x, self.y)
 
 
@@ -65,12 +85,13 @@ class Crank:
     length: sympy.Expr
     input: str
     quarter_turns: int  # phase as a multiple of 90 degrees, so cos and sin stay exact
+    labels = ()
 
     @property
-    def references(self):
+    def references(self) -> tuple[str, ...]:
         return (self.center,)
 
-    def build(self, name, coords, builder):
+    def build(self, name: str, coords: Mapping[str, Point], builder: Builder) -> Point:
         c, s = builder.inputs[self.input]
         cos_phase, sin_phase = [(1, 0), (0, 1), (-1, 0), (0, -1)][self.quarter_turns % 4]
         px, py = coords[self.center]
@@ -84,16 +105,16 @@ class Crank:
 class Dyad:
     """``dyad = [P, Q], lengths = [l1, l2], branch = left/right``: two circles meet."""
 
-    bases: tuple
-    lengths: tuple
+    bases: tuple[str, str]
+    lengths: tuple[sympy.Expr, sympy.Expr]
     branch: str
-    labels = ("left", "right")
+    labels = DyadSpec.labels
 
     @property
-    def references(self):
+    def references(self) -> tuple[str, ...]:
         return self.bases
 
-    def build(self, name, coords, builder):
+    def build(self, name: str, coords: Mapping[str, Point], builder: Builder) -> Point:
         (px, py), (qx, qy) = coords[self.bases[0]], coords[self.bases[1]]
         x, y = builder.unknown(f"{name}_x"), builder.unknown(f"{name}_y")
         l1, l2 = self.lengths
@@ -104,8 +125,9 @@ class Dyad:
         # cross(Q - P, X - P) > 0: X lies left of the directed line P -> Q.
         cross = (qx - px) * (y - py) - (qy - py) * (x - px)
         builder.indicators.append(Indicator(name, cross, "left", "right", self.branch))
-        builder.dyads[name] = self
-        builder.implicit[name] = self
+        spec = DyadSpec(point=name, unknowns=(x.name, y.name), branch=self.branch, base_p=(px, py),
+                        base_q=(qx, qy), lengths=self.lengths)
+        builder.dyads[name] = builder.implicit[name] = spec
         return (x, y)
 
 
@@ -119,17 +141,17 @@ class Slider:
     """
 
     through: str
-    direction: tuple
+    direction: tuple[sympy.Expr, sympy.Expr]
     to: str
     length: sympy.Expr
     branch: str
-    labels = ("ahead", "behind")
+    labels = SliderSpec.labels
 
     @property
-    def references(self):
+    def references(self) -> tuple[str, ...]:
         return (self.through, self.to)
 
-    def build(self, name, coords, builder):
+    def build(self, name: str, coords: Mapping[str, Point], builder: Builder) -> Point:
         (px, py), (qx, qy) = coords[self.through], coords[self.to]
         x, y = builder.unknown(f"{name}_x"), builder.unknown(f"{name}_y")
         dx, dy = self.direction
@@ -139,7 +161,9 @@ class Slider:
         ]
         along = dx * (x - qx) + dy * (y - qy)
         builder.indicators.append(Indicator(name, along, "ahead", "behind", self.branch))
-        builder.implicit[name] = self
+        builder.implicit[name] = SliderSpec(point=name, unknowns=(x.name, y.name), branch=self.branch,
+                                            through=(px, py), direction=self.direction, center=(qx, qy),
+                                            length=self.length)
         return (x, y)
 
 
@@ -147,14 +171,15 @@ class Slider:
 class Frame:
     """``frame = [P, Q], at = [u, v]``: ``P + u*(Q-P) + v*rot90(Q-P)``, rigid with bar PQ."""
 
-    bases: tuple
-    at: tuple
+    bases: tuple[str, str]
+    at: tuple[sympy.Expr, sympy.Expr]
+    labels = ()
 
     @property
-    def references(self):
+    def references(self) -> tuple[str, ...]:
         return self.bases
 
-    def build(self, name, coords, builder):
+    def build(self, name: str, coords: Mapping[str, Point], builder: Builder) -> Point:
         (px, py), (qx, qy) = coords[self.bases[0]], coords[self.bases[1]]
         d = (qx - px, qy - py)
         n = _rot90(d)
@@ -162,4 +187,5 @@ class Frame:
         return (px + u * d[0] + v * n[0], py + u * d[1] + v * n[1])
 
 
-CONSTRUCTIONS = {"fixed": Fixed, "crank": Crank, "dyad": Dyad, "frame": Frame, "slider": Slider}
+CONSTRUCTIONS: dict[str, type[Construction]] = {"fixed": Fixed, "crank": Crank, "dyad": Dyad, "frame": Frame,
+                                                 "slider": Slider}

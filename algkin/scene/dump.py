@@ -12,22 +12,24 @@ True
 """
 
 import json
+from collections.abc import Iterable
 
-from .constructions import Crank, Dyad, Fixed, Frame, Slider
+from .constructions import Construction, Crank, Dyad, Fixed, Frame, Slider
+from .model import Scene
 
 __all__ = ["dump_scene"]
 
 
-def _string(text):
+def _string(text: object) -> str:
     # A JSON string is a TOML basic string, except that TOML wants DEL escaped too.
     return json.dumps(str(text), ensure_ascii=False).replace("\x7f", "\\u007f")
 
 
-def _exprs(values):
+def _exprs(values: Iterable[object]) -> str:
     return "[" + ", ".join(_string(v) for v in values) + "]"
 
 
-def _point(construction, scene):
+def _point(construction: Construction, scene: Scene) -> str:
     if isinstance(construction, Fixed):
         return f"fixed = {_exprs((construction.x, construction.y))}"
     if isinstance(construction, Crank):
@@ -48,14 +50,14 @@ def _point(construction, scene):
     raise TypeError(f"no TOML form for a {type(construction).__name__} construction")
 
 
-def _parameter(name, value, bounds):
+def _parameter(name: str, value: object, bounds: Iterable[object] | None) -> str:
     """``a = 1``, or ``a = { default = 1, range = [lo, hi] }`` when a range is declared."""
     if bounds is None:
         return f"{name} = {_string(value)}"
     return f"{name} = {{ default = {_string(value)}, range = {_exprs(bounds)} }}"
 
 
-def dump_scene(scene):
+def dump_scene(scene: Scene) -> str:
     """TOML text of ``scene``; ``load_scene_text(dump_scene(scene)) == scene``."""
     lines = [f"name = {_string(scene.name)}", f"description = {_string(scene.description)}", "",
              "[parameters]"]

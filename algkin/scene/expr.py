@@ -17,6 +17,7 @@ ValueError: unknown function '__import__' (only sqrt)
 """
 
 import re
+from collections.abc import Callable, Mapping
 from fractions import Fraction
 
 import sympy
@@ -30,13 +31,15 @@ MAX_NUMBER_BITS = 1024  # numerators and denominators, about 308 decimal digits
 MAX_VALUE_BITS = 64 * MAX_NUMBER_BITS  # a value after parameters are substituted into it
 _MAX_DECIMAL_EXPONENT = 4 * MAX_NUMBER_BITS  # keeps Fraction("1e...") cheap before the bit check
 
+Token = tuple[str, str]  # (kind: num, name or op; its text)
+
 _TOKEN = re.compile(
     r"\s*(?:(?P<num>(?:\d[\d_]*(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)"
     r"|(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<op>\*\*|[-+*/(),]))"
 )
 
 
-def exact_number(text):
+def exact_number(text: str) -> sympy.Rational:
     """The exact rational a decimal literal spells: ``exact_number('0.1')`` is 1/10.
 
     >>> exact_number("2.5e-1")
@@ -49,13 +52,13 @@ def exact_number(text):
         value = None if too_far else Fraction(plain)
     except (ValueError, ZeroDivisionError):
         raise ValueError(f"not a finite number: {text!r}") from None
-    if too_far:
+    if value is None:
         raise ValueError(f"decimal exponent out of range (at most {_MAX_DECIMAL_EXPONENT}): {text!r}")
     _check_size(value.numerator, value.denominator)
     return sympy.Rational(value.numerator, value.denominator)
 
 
-def bits_bound(expr, bits):
+def bits_bound(expr: sympy.Expr, bits: Mapping[str, int]) -> int:
     """An upper bound on the bits of ``expr``'s value once its symbols take values of
     ``bits[name]`` bits, found before anything is evaluated: chained powers such as
     ``p2 = p1**64`` grow past memory unless refused in advance.
@@ -75,12 +78,12 @@ def bits_bound(expr, bits):
     return sum(bits_bound(arg, bits) for arg in expr.args) + len(expr.args)
 
 
-def _check_size(numerator, denominator=1):
+def _check_size(numerator: int, denominator: int = 1) -> None:
     if max(abs(numerator).bit_length(), abs(denominator).bit_length()) > MAX_NUMBER_BITS:
         raise ValueError(f"number too large or too precise (more than {MAX_NUMBER_BITS} bits)")
 
 
-def _check_result(value):
+def _check_result(value: sympy.Expr) -> None:
     """Bound what a parse may hand on: numbers of at most MAX_NUMBER_BITS, small powers."""
     for number in value.atoms(sympy.Rational):
         _check_size(number.p, number.q)
@@ -89,39 +92,43 @@ def _check_result(value):
             raise ValueError(f"exponent must be of size at most {MAX_EXPONENT}, got {power.exp}")
 
 
-def _tokenize(text):
-    tokens, pos = [], 0
+def _tokenize(text: str) -> list[Token]:
+    tokens: list[Token] = []
+    pos = 0
     text = text.rstrip()
     while pos < len(text):
         match = _TOKEN.match(text, pos)
         if not match or match.end() == pos:
             raise ValueError(f"unexpected character {text[pos:].strip()[:1]!r} at {pos}")
         kind = match.lastgroup
+        assert kind is not None  # every alternative of _TOKEN is a named group
         tokens.append((kind, match.group(kind)))
         pos = match.end()
     return tokens
 
 
 class _Parser:
-    def __init__(self, tokens, names):
+    """Recursive descent over the tokens, one method per rule of the grammar."""
+
+    def __init__(self, tokens: list[Token], names: Mapping[str, sympy.Expr]) -> None:
         self.tokens = tokens
         self.pos = 0
         self.names = names
         self.depth = 0
 
-    def peek(self):
+    def peek(self) -> tuple[str | None, str | None]:
         return self.tokens[self.pos] if self.pos < len(self.tokens) else (None, None)
 
-    def take(self, op=None):
-        kind, value = self.peek()
-        if kind is None:
+    def take(self, op: str | None = None) -> Token:
+        if self.pos >= len(self.tokens):
             raise ValueError("unexpected end of expression")
+        kind, value = self.tokens[self.pos]
         if op is not None and value != op:
             raise ValueError(f"expected {op!r}, found {value!r}")
         self.pos += 1
         return kind, value
 
-    def expr(self):
+    def expr(self) -> sympy.Expr:
         value = self.term()
         while self.peek()[1] in ("+", "-"):
             op = self.take()[1]
@@ -129,7 +136,7 @@ class _Parser:
             value = value + rhs if op == "+" else value - rhs
         return value
 
-    def term(self):
+    def term(self) -> sympy.Expr:
         value = self.unary()
         while self.peek()[1] in ("*", "/"):
             op = self.take()[1]
@@ -142,14 +149,14 @@ class _Parser:
                 value = value * rhs
         return value
 
-    def unary(self):
+    def unary(self) -> sympy.Expr:
         if self.peek()[1] in ("+", "-"):
             op = self.take()[1]
             value = self.nested(self.unary)
             return -value if op == "-" else value
         return self.power()
 
-    def power(self):
+    def power(self) -> sympy.Expr:
         base = self.atom()
         if self.peek()[1] == "**":
             self.take()
@@ -167,7 +174,7 @@ class _Parser:
             return base**exponent
         return base
 
-    def nested(self, rule):
+    def nested(self, rule: Callable[[], sympy.Expr]) -> sympy.Expr:
         self.depth += 1
         if self.depth > MAX_DEPTH:
             raise ValueError(f"expression nested deeper than {MAX_DEPTH}")
@@ -176,7 +183,7 @@ class _Parser:
         finally:
             self.depth -= 1
 
-    def atom(self):
+    def atom(self) -> sympy.Expr:
         kind, value = self.take()
         if kind == "num":
             return exact_number(value)
@@ -193,7 +200,7 @@ class _Parser:
             return inner
         raise ValueError(f"unexpected {value!r}")
 
-    def call(self, function):
+    def call(self, function: str) -> sympy.Expr:
         if function != "sqrt":
             raise ValueError(f"unknown function {function!r} (only sqrt)")
         self.take("(")
@@ -204,7 +211,7 @@ class _Parser:
         return sympy.sqrt(argument)
 
 
-def parse(text, names=None):
+def parse(text: object, names: Mapping[str, object] | None = None) -> sympy.Expr:
     """Parse ``text`` (a string, int, or exact float literal) into a sympy expression.
 
     ``names`` maps the allowed names to their values (symbols or numbers). Raises

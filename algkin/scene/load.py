@@ -13,6 +13,8 @@ import functools
 import os
 import re
 import stat
+from collections.abc import Container, Mapping
+from typing import Any, NoReturn
 
 try:
     import tomllib
@@ -22,7 +24,7 @@ except ModuleNotFoundError:  # Python 3.10
 import sympy
 
 from ..errors import SceneError, UsageError
-from .constructions import CONSTRUCTIONS, Crank, Dyad, Fixed, Frame, Slider
+from .constructions import CONSTRUCTIONS, Construction, Crank, Dyad, Fixed, Frame, Slider
 from .expr import exact_number, parse
 from .model import Input, Output, Scene, range_problem
 from .names import check_names
@@ -33,6 +35,9 @@ MAX_SCENE_BYTES = 256 * 1024
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
 _CATALOG = os.path.join(os.path.dirname(os.path.dirname(__file__)), "catalog")
 _TOP_KEYS = {"name", "description", "parameters", "inputs", "points", "outputs"}
+Table = dict[str, Any]  # a TOML table as tomllib reads it: values of any TOML type, checked here
+Ranges = dict[str, tuple[sympy.Rational, sympy.Rational]]
+
 _EXTRA_KEYS = {
     "fixed": set(),
     "crank": {"length", "input", "phase"},
@@ -46,12 +51,12 @@ class _FloatText(str):
     """A TOML float kept as the text it spells, so that 0.1 stays 1/10."""
 
 
-def catalog_names():
+def catalog_names() -> list[str]:
     """Names of the scenes shipped in the catalog."""
     return sorted(f[:-5] for f in os.listdir(_CATALOG) if f.endswith(".toml"))
 
 
-def load_scene(name_or_path):
+def load_scene(name_or_path: str | os.PathLike[str]) -> Scene:
     """Load a catalog scene by name, or a scene file by path."""
     path = str(name_or_path)
     if not os.path.exists(path):
@@ -69,7 +74,7 @@ def load_scene(name_or_path):
     return load_scene_text(text, label)
 
 
-def _read(path):
+def _read(path: str) -> bytes:
     """The bytes of a scene file: a regular file (a FIFO or device would block or never end)."""
     try:
         status = os.stat(path)
@@ -85,7 +90,7 @@ def _read(path):
         raise SceneError(path, "", f"cannot read: {err.strerror or err}") from None
 
 
-def load_scene_text(text, source="<scene>"):
+def load_scene_text(text: str, source: str = "<scene>") -> Scene:
     """Parse and validate a scene given as TOML text; ``source`` names it in errors.
 
     A text read before gives the same (immutable) scene again, without parsing it twice."""
@@ -95,11 +100,11 @@ def load_scene_text(text, source="<scene>"):
 
 
 @functools.lru_cache(maxsize=64)
-def _parsed(text, source):
+def _parsed(text: str, source: str) -> Scene:
     return _parse(text, source)
 
 
-def _parse(text, source):
+def _parse(text: str, source: str) -> Scene:
     if len(text.encode("utf-8")) > MAX_SCENE_BYTES:
         raise SceneError(source, "", f"text larger than {MAX_SCENE_BYTES} bytes")
     try:
@@ -114,20 +119,22 @@ def _parse(text, source):
 
 
 class _Loader:
-    def __init__(self, source):
-        self.source = source
-        self.names = {}
+    """Reads one scene's TOML tables into a ``Scene``, failing with the element at fault."""
 
-    def fail(self, element, message):
+    def __init__(self, source: str) -> None:
+        self.source = source
+        self.names: dict[str, sympy.Expr] = {}  # parameters read so far, as symbols
+
+    def fail(self, element: str, message: str) -> NoReturn:
         raise SceneError(self.source, element, message)
 
-    def table(self, data, key, element):
+    def table(self, data: Table, key: str, element: str) -> Table:
         value = data.get(key, {})
         if not isinstance(value, dict):
             self.fail(element, f"expected a table, got {type(value).__name__}")
         return value
 
-    def expr(self, value, element):
+    def expr(self, value: object, element: str) -> sympy.Expr:
         if isinstance(value, _FloatText):
             try:
                 return exact_number(value)
@@ -138,12 +145,12 @@ class _Loader:
         except ValueError as err:
             self.fail(element, str(err))
 
-    def identifier(self, name, element):
+    def identifier(self, name: str, element: str) -> str:
         if not _NAME.match(name):
             self.fail(element, f"name {name!r} is not an identifier (letters, digits, _)")
         return name
 
-    def scene(self, data):
+    def scene(self, data: Table) -> Scene:
         unknown = set(data) - _TOP_KEYS
         if unknown:
             self.fail(sorted(unknown)[0], f"unknown key (expected one of {', '.join(sorted(_TOP_KEYS))})")
@@ -159,9 +166,10 @@ class _Loader:
         check_names(scene)
         return scene
 
-    def parameters(self, table):
+    def parameters(self, table: Table) -> tuple[dict[str, sympy.Expr], Ranges]:
         """Defaults (``a = 1``, or ``a = { default = 1, range = [lo, hi] }``) and declared ranges."""
-        defaults, ranges = {}, {}
+        defaults: dict[str, sympy.Expr] = {}
+        ranges: Ranges = {}
         for name, value in table.items():
             element = f"parameters.{name}"
             self.identifier(name, element)
@@ -174,7 +182,7 @@ class _Loader:
             self.names[name] = sympy.Symbol(name, real=True)
         return defaults, ranges
 
-    def ranged(self, spec, element):
+    def ranged(self, spec: Table, element: str) -> tuple[object, tuple[sympy.Rational, sympy.Rational]]:
         """``{ default = d, range = [lo, hi] }``: the default's text and (lo, hi), two exact numbers."""
         extra = set(spec) - {"default", "range"}
         if extra:
@@ -189,8 +197,8 @@ class _Loader:
             self.fail(f"{element}.range", f"empty range [{lo}, {hi}]: expected lo < hi")
         return spec["default"], (lo, hi)
 
-    def inputs(self, table):
-        inputs = {}
+    def inputs(self, table: Table) -> dict[str, Input]:
+        inputs: dict[str, Input] = {}
         for name, spec in table.items():
             element = f"inputs.{name}"
             self.identifier(name, element)
@@ -216,36 +224,43 @@ class _Loader:
                 self.fail(f"{element}.range", f"[{float(lo):g}, {float(hi):g}] {unit} {problem}")
         return inputs
 
-    def number(self, value, element):
+    def number(self, value: object, element: str) -> sympy.Rational:
         saved, self.names = self.names, {}
         try:
-            value = self.expr(value, element)
+            number = self.expr(value, element)
         finally:
             self.names = saved
-        if not value.is_Rational:
-            self.fail(element, f"expected a rational number, got {value}")
-        return value
+        if not number.is_Rational:
+            self.fail(element, f"expected a rational number, got {number}")
+        return number
 
-    def pair(self, spec, key, element):
+    def pair(self, spec: Table, key: str, element: str) -> list[Any]:
         value = spec.get(key)
         if not isinstance(value, list) or len(value) != 2:
             self.fail(f"{element}.{key}", f"expected a list of two, got {value!r}")
         return value
 
-    def point_ref(self, value, element, names):
+    def point_pair(self, spec: Table, key: str, element: str, names: set[str]) -> tuple[str, str]:
+        """``key = [P, Q]``: two different points."""
+        first, second = (self.point_ref(p, f"{element}.{key}", names) for p in self.pair(spec, key, element))
+        if first == second:
+            self.fail(f"{element}.{key}", f"the two base points must differ, got {first!r} twice")
+        return first, second
+
+    def point_ref(self, value: object, element: str, names: Container[str]) -> str:
         if not isinstance(value, str) or value not in names:
             self.fail(element, f"unknown point {value!r}")
         return value
 
-    def positive(self, value, element):
+    def positive(self, value: object, element: str) -> sympy.Expr:
         expr = self.expr(value, element)
         if expr.is_number and not expr > 0:
             self.fail(element, f"length must be positive, got {expr}")
         return expr
 
-    def points(self, table, inputs):
+    def points(self, table: Table, inputs: dict[str, Input]) -> dict[str, Construction]:
         names = set(table)
-        points = {}
+        points: dict[str, Construction] = {}
         for name, spec in table.items():
             element = f"points.{name}"
             self.identifier(name, element)
@@ -262,11 +277,11 @@ class _Loader:
         self.check_acyclic(points)
         return points
 
-    def fixed(self, spec, element, names, inputs):
+    def fixed(self, spec: Table, element: str, names: set[str], inputs: dict[str, Input]) -> Fixed:
         x, y = self.pair(spec, "fixed", element)
         return Fixed(self.expr(x, f"{element}.fixed"), self.expr(y, f"{element}.fixed"))
 
-    def crank(self, spec, element, names, inputs):
+    def crank(self, spec: Table, element: str, names: set[str], inputs: dict[str, Input]) -> Crank:
         center = self.point_ref(spec["crank"], f"{element}.crank", names)
         if "length" not in spec:
             self.fail(f"{element}.length", "a crank needs a length")
@@ -280,17 +295,15 @@ class _Loader:
             self.fail(f"{element}.phase", f"phase must be a multiple of 90 degrees (0 in radians), got {phase}")
         return Crank(center, length, name, int(quarter))
 
-    def dyad(self, spec, element, names, inputs):
-        bases = tuple(self.point_ref(p, f"{element}.dyad", names) for p in self.pair(spec, "dyad", element))
-        if bases[0] == bases[1]:
-            self.fail(f"{element}.dyad", f"the two base points must differ, got {bases[0]!r} twice")
+    def dyad(self, spec: Table, element: str, names: set[str], inputs: dict[str, Input]) -> Dyad:
+        bases = self.point_pair(spec, "dyad", element, names)
         lengths = tuple(self.positive(v, f"{element}.lengths") for v in self.pair(spec, "lengths", element))
         branch = spec.get("branch", "left")
         if branch not in Dyad.labels:
             self.fail(f"{element}.branch", f"branch must be 'left' or 'right', got {branch!r}")
         return Dyad(bases, lengths, branch)
 
-    def subtable(self, spec, key, element, keys, example):
+    def subtable(self, spec: Table, key: str, element: str, keys: tuple[str, ...], example: str) -> Table:
         value = spec.get(key)
         if not isinstance(value, dict):
             self.fail(f"{element}.{key}", f"expected a table like {example}, got {value!r}")
@@ -302,7 +315,7 @@ class _Loader:
                 self.fail(f"{element}.{key}.{name}", f"missing (expected {example})")
         return value
 
-    def slider(self, spec, element, names, inputs):
+    def slider(self, spec: Table, element: str, names: set[str], inputs: dict[str, Input]) -> Slider:
         line = self.subtable(spec, "slider", element, ("through", "direction"),
                              '{ through = "O", direction = [1, 0] }')
         through = self.point_ref(line["through"], f"{element}.slider.through", names)
@@ -319,17 +332,15 @@ class _Loader:
                       f"from the foot of the perpendicular from {to}), got {branch!r}")
         return Slider(through, direction, to, length, branch)
 
-    def frame(self, spec, element, names, inputs):
-        bases = tuple(self.point_ref(p, f"{element}.frame", names) for p in self.pair(spec, "frame", element))
-        if bases[0] == bases[1]:
-            self.fail(f"{element}.frame", f"the two base points must differ, got {bases[0]!r} twice")
+    def frame(self, spec: Table, element: str, names: set[str], inputs: dict[str, Input]) -> Frame:
+        bases = self.point_pair(spec, "frame", element, names)
         at = tuple(self.expr(v, f"{element}.at") for v in self.pair(spec, "at", element))
         return Frame(bases, at)
 
-    def check_acyclic(self, points):
-        state = {}
+    def check_acyclic(self, points: Mapping[str, Construction]) -> None:
+        state: dict[str, str] = {}  # point -> 'active' (on the path) or 'done'
 
-        def visit(name, path):
+        def visit(name: str, path: list[str]) -> None:
             if state.get(name) == "done":
                 return
             if state.get(name) == "active":
@@ -343,8 +354,9 @@ class _Loader:
         for name in points:
             visit(name, [])
 
-    def outputs(self, table, points, inputs, parameters):
-        outputs = {}
+    def outputs(self, table: Table, points: Mapping[str, Construction], inputs: Mapping[str, Input],
+                parameters: Mapping[str, sympy.Expr]) -> dict[str, Output]:
+        outputs: dict[str, Output] = {}
         taken = set(points) | set(inputs) | set(parameters)
         for name, text in table.items():
             element = f"outputs.{name}"
@@ -361,7 +373,8 @@ _DIST = re.compile(r"^\s*dist\(\s*(\w+)\s*,\s*(\w+)\s*\)\s*$")
 _COORD = re.compile(r"^\s*(\w+)\.([xy])\s*$")
 
 
-def parse_output(name, text, points, source="<scene>", element=None):
+def parse_output(name: str, text: str, points: Container[str], source: str = "<scene>",
+                 element: str | None = None) -> Output:
     """Read an output string: a point name, ``dist(P, Q)``, ``P.x`` or ``P.y``."""
     element = element or f"outputs.{name}"
     if match := _DIST.match(text):
@@ -376,7 +389,7 @@ def parse_output(name, text, points, source="<scene>", element=None):
     return Output(name, kind, tuple(refs), text)
 
 
-def as_scene(scene):
+def as_scene(scene: object) -> Scene:
     """A ``Scene`` from a catalog name, a path, or a ``Scene`` (checked as a loaded file is).
 
     A scene built or changed in Python has not been through the loader: it is written

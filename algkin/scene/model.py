@@ -4,6 +4,8 @@ from dataclasses import dataclass, field
 
 import sympy
 
+from .constructions import Construction
+
 __all__ = ["Scene", "Input", "Output", "range_problem"]
 
 # The motion repeats after a turn; a range past two turns or far from zero only multiplies
@@ -12,7 +14,7 @@ MAX_SPAN_DEGREES = 720
 MAX_ABS_DEGREES = 36000
 
 
-def range_problem(lo_deg, hi_deg):
+def range_problem(lo_deg: float, hi_deg: float) -> str | None:
     """What is wrong with an input range in degrees, or None.
 
     >>> range_problem(0, 1e300)
@@ -37,16 +39,17 @@ class Input:
     unit: str = "deg"
 
     @property
-    def symbols(self):
+    def symbols(self) -> tuple[sympy.Symbol, sympy.Symbol]:
         return (sympy.Symbol(f"c_{self.name}", real=True), sympy.Symbol(f"s_{self.name}", real=True))
 
-    def to_radians(self, value):
+    def to_radians(self, value: sympy.Expr) -> sympy.Expr:
         return value * sympy.pi / 180 if self.unit == "deg" else value
 
     @property
-    def range_degrees(self):
+    def range_degrees(self) -> tuple[float, float]:
         """(lo, hi) in degrees, as floats."""
-        return tuple(float(sympy.deg(self.to_radians(v))) for v in (self.lo, self.hi))
+        lo, hi = (float(sympy.deg(self.to_radians(v))) for v in (self.lo, self.hi))
+        return lo, hi
 
 
 @dataclass(frozen=True)
@@ -55,7 +58,7 @@ class Output:
 
     name: str
     kind: str
-    points: tuple
+    points: tuple[str, ...]
     text: str
 
 
@@ -65,12 +68,13 @@ class Scene:
 
     name: str
     description: str
-    parameters: dict  # name -> default value (sympy expr, may use earlier parameters)
-    inputs: dict  # name -> Input
-    points: dict  # name -> construction, in file order
-    outputs: dict  # name -> Output
+    parameters: dict[str, sympy.Expr]  # name -> default value (may use earlier parameters)
+    inputs: dict[str, Input]
+    points: dict[str, Construction]  # in file order
+    outputs: dict[str, Output]
     source: str = field(default="<scene>", compare=False)
-    parameter_ranges: dict = field(default_factory=dict)  # name -> (lo, hi) rationals, for sliders and sweeps
+    # name -> (lo, hi), for sliders and sweeps
+    parameter_ranges: dict[str, tuple[sympy.Rational, sympy.Rational]] = field(default_factory=dict)
 
-    def parameter_symbols(self):
+    def parameter_symbols(self) -> dict[str, sympy.Symbol]:
         return {name: sympy.Symbol(name, real=True) for name in self.parameters}

@@ -18,28 +18,30 @@ algkin.errors.SceneError: s.toml: parameters.B_x: the name 'B_x' is taken by the
 """
 
 import keyword
+from collections.abc import Mapping
 from functools import lru_cache
 
 from ..errors import SceneError
+from .model import Output, Scene
 
 __all__ = ["generated_names", "check_names", "check_symbol_name", "misread"]
 
 
 @lru_cache(maxsize=1)
-def _sympy_namespace():
+def _sympy_namespace() -> frozenset[str]:
     import sympy
 
     return frozenset(sympy.__all__)  # what ``parse_expr`` sees: ``from sympy import *``
 
 
-def misread(name):
+def misread(name: str) -> bool:
     """Whether ``sympy.parse_expr(name)`` gives something other than the symbol ``name``."""
     return keyword.iskeyword(name) or name in _sympy_namespace()
 
 
-def generated_names(scene):
+def generated_names(scene: Scene) -> dict[str, str]:
     """Every variable name algkin makes for ``scene``, with what it stands for."""
-    made = {}
+    made: dict[str, str] = {}
     owners = [(f"{p}_{axis}", f"the {axis} coordinate of point {p}", f"points.{p}")
               for p in scene.points for axis in "xy"]
     owners += [(f"{prefix}_{t}", f"the {what} of input {t}", f"inputs.{t}")
@@ -53,7 +55,7 @@ def generated_names(scene):
     return made
 
 
-def check_symbol_name(source, element, name, generated):
+def check_symbol_name(source: str, element: str, name: str, generated: Mapping[str, str]) -> None:
     """Refuse a user name that would stand for a generated variable or read back wrongly."""
     if name in generated:
         raise SceneError(source, element, f"the name {name!r} is taken by {generated[name]}")
@@ -63,7 +65,7 @@ def check_symbol_name(source, element, name, generated):
                                           "from expression strings; choose another")
 
 
-def check_names(scene):
+def check_names(scene: Scene) -> dict[str, str]:
     """Raise SceneError if any scene name collides with a generated one (see the module doc)."""
     generated = generated_names(scene)
     for name in scene.parameters:
@@ -77,6 +79,6 @@ def check_names(scene):
     return generated
 
 
-def _coordinate_name(output):
+def _coordinate_name(output: Output) -> str | None:
     """The variable an ``P.x``/``P.y`` output stands for (None for other kinds)."""
     return f"{output.points[0]}_{output.kind}" if output.kind in ("x", "y") else None

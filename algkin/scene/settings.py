@@ -11,19 +11,21 @@ algkin.errors.UsageError: --set='zz=1': not a parameter of arm-string (parameter
 """
 
 import dataclasses
+from collections.abc import Iterable
 from fractions import Fraction
 
 import sympy
 
 from ..errors import UsageError
 from .expr import parse
+from .model import Scene
 
 __all__ = ["with_values", "parse_settings"]
 
 
-def parse_settings(texts):
+def parse_settings(texts: Iterable[str] | None) -> dict[str, str]:
     """``{name: value text}`` from the command line's ``NAME=VALUE`` strings (the last of a name wins)."""
-    values = {}
+    values: dict[str, str] = {}
     for text in texts or ():
         name, equals, value = text.partition("=")
         if not equals or not name.strip() or not value.strip():
@@ -32,7 +34,7 @@ def parse_settings(texts):
     return values
 
 
-def with_values(scene, values, params=()):
+def with_values(scene: Scene, values: dict[str, object] | None, params: Iterable[str] | None = ()) -> Scene:
     """A new ``Scene``: ``scene`` with the defaults of the parameters in ``values`` replaced, checked again.
 
     Values are exact: strings in the scene files' expression language (``"3/2"``, ``"0.1"`` is
@@ -58,7 +60,7 @@ def with_values(scene, values, params=()):
     return as_scene(dataclasses.replace(scene, parameters=defaults))
 
 
-def _exact(name, value):
+def _exact(name: str, value: object) -> sympy.Expr:
     """``value`` as an exact sympy number, read by the scene files' own parser (never eval)."""
     if isinstance(value, float):
         value = repr(value)

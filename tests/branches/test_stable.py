@@ -9,7 +9,8 @@ import sympy
 from hypothesis import given, settings, strategies as st
 
 from algkin.branches import closed_forms
-from algkin.branches.stable import StableBranch, stable_quadratic
+from algkin.branches.stable import StableBranch
+from algkin.scene.implicit.floats import stable_quadratic
 from algkin.scene.load import catalog_names
 from algkin.evaluate import MPMATH, evaluate
 from algkin.scene import compile_scene, load_scene

@@ -1,0 +1,43 @@
+"""Exact algebra the closed forms share: reduction on the inputs' unit circles, tidy factors."""
+
+from collections.abc import Callable, Mapping, Sequence
+
+import sympy
+
+__all__ = ["Circles", "reduce_on_circles", "reducer", "tidy_ratio", "tidy_product"]
+
+Circles = Sequence[tuple[sympy.Symbol, sympy.Symbol]]  # each input's (cos, sin) symbols
+
+
+def reduce_on_circles(expr: sympy.Expr, inputs: Circles) -> sympy.Expr:
+    """Normal form of a polynomial modulo ``c**2 + s**2 - 1`` for each input (s**2 -> 1 - c**2)."""
+    expr = sympy.expand(expr)
+    if not expr.is_polynomial():
+        return expr
+    for c, s in inputs:
+        expr = sympy.expand(sympy.rem(expr, s**2 + c**2 - 1, s)) if expr.has(s) else expr
+    return expr
+
+
+def reducer(substitution: Mapping[sympy.Symbol, sympy.Expr], inputs: Circles) -> Callable[[sympy.Expr], sympy.Expr]:
+    """``e -> e`` with earlier points' unknowns substituted, reduced on the circles."""
+    return lambda expr: reduce_on_circles(expr.xreplace(substitution), inputs)
+
+
+def _primitive(expr: sympy.Expr) -> tuple[sympy.Expr, sympy.Expr]:
+    """``(content, part)`` with ``expr = content * part`` and integer coprime numbers in ``part``:
+    a factor reads ``23 - 16*c``, not ``23/4 - 4*c`` (sympy would spread the 1/4 back in)."""
+    return expr.primitive() if expr.is_Add else (sympy.Integer(1), expr)
+
+
+def tidy_ratio(expr: sympy.Expr) -> sympy.Expr:
+    """A ratio of polynomials as ``k * p / q`` with ``p``, ``q`` primitive: ``(80*c - 103)/(8*(20*c - 29))``."""
+    numerator, denominator = sympy.fraction(sympy.cancel(expr))
+    (cn, pn), (cd, pd) = _primitive(numerator), _primitive(denominator)
+    return sympy.Mul(cn / cd, pn, 1 / pd)  # one Mul: a product by a number would spread it back in
+
+
+def tidy_product(*factors: sympy.Expr) -> sympy.Expr:
+    """The product of ``factors`` with every numeric content gathered in front."""
+    parts = [_primitive(sympy.expand(f)) for f in factors]
+    return sympy.Mul(*[c for c, _ in parts], *[sympy.factor_terms(p) for _, p in parts])

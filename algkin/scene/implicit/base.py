@@ -1,0 +1,67 @@
+"""What every implicit point's compiled spec supplies, so that nothing above dispatches on its kind.
+
+A construction that brings two unknowns (a dyad, a slider) compiles into a spec: its
+point's coordinates in system variables, and the behaviour branches and analyses ask of
+it (its closed form per label, a stable float evaluator, its toggle conditions). A new
+construction is one more subclass of ``ImplicitSpec``.
+"""
+
+from abc import ABC, abstractmethod
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import ClassVar, Protocol
+
+import sympy
+
+from .algebra import Circles
+from .floats import FloatArray
+
+__all__ = ["ImplicitSpec", "StableEvaluator", "Point", "Fix", "HalfAngle"]
+
+Point = tuple[sympy.Expr, sympy.Expr]
+Fix = Callable[[sympy.Expr], sympy.Expr]  # dimensions at their defaults, reduced on the circles
+HalfAngle = tuple[FloatArray, FloatArray]  # an input's t = tan(theta/2) and w = 1/(1 + t**2)
+
+
+class StableEvaluator(Protocol):
+    """One implicit point in float64, vectorised, without cancellation."""
+
+    unknowns: tuple[str, str]
+
+    def __call__(self, values: Sequence[FloatArray], half: Sequence[HalfAngle]) -> tuple[FloatArray, FloatArray]:
+        """``(x, y)`` from ``values`` (each input's c, s, then earlier points' x, y) and each input's ``half``."""
+        ...
+
+
+@dataclass(frozen=True)
+class ImplicitSpec(ABC):
+    """An implicit point compiled: its name, its two unknowns, the label the scene chose."""
+
+    point: str
+    unknowns: tuple[str, str]
+    branch: str
+    labels: ClassVar[tuple[str, str]]  # the two assembly modes; the first has sigma = +1
+    never_meets: ClassVar[str]  # why it cannot assemble, where its discriminant is negative
+
+    def sign(self, label: str) -> int:
+        """``sigma`` of the mode ``label``: +1 for the first label, -1 for the second."""
+        return 1 if label == self.labels[0] else -1
+
+    @abstractmethod
+    def closed_form(self, substitution: Mapping[sympy.Symbol, sympy.Expr], sigma: int,
+                    inputs: Circles) -> tuple[Point, sympy.Expr]:
+        """``((x, y), discriminant)`` on the mode ``sigma``, real where the discriminant is >= 0.
+
+        Earlier points' unknowns are replaced by ``substitution`` (their closed forms), and
+        polynomials are reduced on the ``inputs``' circles.
+        """
+
+    @abstractmethod
+    def toggle_conditions(self) -> dict[str, sympy.Expr]:
+        """``{kind: expression}`` in system variables, each zero where the two modes meet."""
+
+    @abstractmethod
+    def stable_evaluator(self, fix: Fix, arguments: list[sympy.Symbol], half_angles: Circles,
+                         sigma: float) -> StableEvaluator:
+        """The float evaluator of the mode ``sigma``, its expressions taken through ``fix`` and
+        compiled in ``arguments`` (each input's c, s, then earlier points' unknowns)."""
