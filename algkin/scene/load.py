@@ -13,12 +13,13 @@ import functools
 import os
 import re
 import stat
+import sys
 from collections.abc import Container, Mapping
 from typing import Any, NoReturn
 
-try:
+if sys.version_info >= (3, 11):
     import tomllib
-except ModuleNotFoundError:  # Python 3.10
+else:  # Python 3.10
     import tomli as tomllib
 
 import sympy
