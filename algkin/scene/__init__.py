@@ -1,5 +1,6 @@
 """Scenes: TOML loading with the safe expression parser, and compilation to a system."""
 
+from .builder import SceneBuilder
 from .compile import Compiled, compile_scene
 from .dump import dump_scene
 from .load import catalog_names, load_scene, load_scene_text
@@ -7,4 +8,4 @@ from .model import Input, Output, Scene
 from .settings import with_values
 
 __all__ = ["Scene", "Input", "Output", "Compiled", "compile_scene", "load_scene", "load_scene_text", "catalog_names",
-           "dump_scene", "with_values"]
+           "dump_scene", "with_values", "SceneBuilder"]
