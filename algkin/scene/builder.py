@@ -69,7 +69,7 @@ def _data(value: object) -> object:
     if isinstance(value, numbers.Rational):
         return f"{value.numerator}/{value.denominator}"
     if isinstance(value, numbers.Real):  # float, numpy's floats: the decimal repr spells, as in a file
-        return float_text(value)
+        return float_text(float(value))
     if isinstance(value, (list, tuple)):
         return [_data(item) for item in value]
     if isinstance(value, Mapping):

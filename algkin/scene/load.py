@@ -417,12 +417,12 @@ def as_scene(scene: object) -> Scene:
 
 # Shared with ``algkin.scene.builder``: a scene built in Python goes through the same checks.
 
-def scene_from_data(data, source="<scene>"):
+def scene_from_data(data: Table, source: str = "<scene>") -> Scene:
     """A ``Scene`` from ``data`` shaped as a parsed scene file (tables as dicts, arrays as
     lists, floats as ``float_text``), with the same checks and errors as ``load_scene_text``."""
     return _Loader(source).scene(data)
 
 
-def float_text(value):
+def float_text(value: float) -> str:
     """A float as a scene file's float literal: read back as the decimal that ``repr`` spells (0.1 is 1/10)."""
     return _FloatText(repr(float(value)))
