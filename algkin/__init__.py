@@ -25,10 +25,11 @@ __all__ = [
     "catalog_names",
     "interact",
     "AlgkinError",
+    "SceneBuilder",
 ]
 
 from .errors import AlgkinError
-from .scene import catalog_names, compile_scene, load_scene
+from .scene import SceneBuilder, catalog_names, compile_scene, load_scene
 
 if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ loads them at run time)
     from .analyses.extremum import extremum

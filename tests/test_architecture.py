@@ -14,7 +14,7 @@ ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / ".importlinter"
 
 PUBLIC = ["load", "load_scene", "compile_scene", "derive", "curve", "extremum", "catalog_names", "interact",
-          "AlgkinError"]
+          "AlgkinError", "SceneBuilder"]
 
 
 def test_the_import_contract_is_kept():
