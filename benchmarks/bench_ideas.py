@@ -27,6 +27,7 @@ Run: ``python benchmarks/bench_ideas.py [--problems ...]``.
 import argparse
 import time
 from contextlib import contextmanager
+from dataclasses import replace
 
 import algkin.eliminate as eliminate
 import algkin.eliminate.backends as backends
@@ -43,23 +44,22 @@ PROBLEMS = ("fourbar-symbolic", "watt-i", "stephenson-iii")
 ROUNDS = 5
 
 
-def _squarefree_only(backend, poly, witnesses, dropped):
+def _squarefree_only(backend, poly, witnesses):
     _, factors = poly.factor_squarefree()
     product = factors[0][0]
     for factor, _ in factors[1:]:
         product = product * factor
-    return product
+    return product, []
 
 
-def _coordinates_always(backend, polys, eliminate, witnesses, dropped, log, parameters=(), budget=None,
-                        multipliers=None):
+def _coordinates_always(backend, polys, request):
     # every kept variable counts as a dimension: multipliers may hold coordinates at every step
-    kept = tuple(n for n in backend.names if n not in eliminate)
-    return linear_elimination(backend, polys, eliminate, witnesses, dropped, log, kept, budget, multipliers)
+    kept = tuple(n for n in backend.names if n not in request.eliminate)
+    return linear_elimination(backend, polys, replace(request, parameters=kept))
 
 
-def _resultants_for_the_rest(backend, polys, remaining, witnesses, dropped, log, budget):
-    return methods.resultant_chain(backend, polys, remaining, witnesses, dropped, log, budget=budget), list(remaining)
+def _resultants_for_the_rest(backend, polys, remaining, request):
+    return methods.resultant_chain(backend, polys, replace(request, eliminate=tuple(remaining))), list(remaining)
 
 
 IDEAS = {  # the idea -> how to run without it

@@ -18,7 +18,12 @@ algkin.errors.BudgetExceeded: max_terms=5: the resultant in x has 11 terms, whil
 
 import functools
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import Any, Generic, TypeVar, cast
+
+import flint
+import sympy
 
 from ..errors import ComputationError, UsageError
 from ..runtime.budget import Budget, current
@@ -27,26 +32,30 @@ from .backends import BACKENDS
 from .linear import linear_elimination
 from .methods import groebner_basis, prepare, resultant_chain
 from .factor import factor_with
-from .select import Witness, select_factors, unreal_factors
+from .protocol import Backend, P
+from .request import EliminationRequest, LogEntry, Method
+from .select import Witness, WitnessGroups, select_factors, unreal_factors
 
 __all__ = ["eliminate", "Elimination", "Witness", "Budget", "current", "METHODS", "DEFAULT_METHOD", "BACKENDS",
            "method_names", "backend_names"]
 
 
-METHODS = {"resultant": resultant_chain, "groebner": groebner_basis, "linear": linear_elimination}
+METHODS: dict[str, Method] = {"resultant": resultant_chain, "groebner": groebner_basis, "linear": linear_elimination}
 DEFAULT_METHOD = "linear"  # measured fastest on every catalog problem: ``algkin bench``
 
+_T = TypeVar("_T")
 
-def method_names():
+
+def method_names() -> list[str]:
     return sorted(METHODS)
 
 
-def backend_names():
+def backend_names() -> list[str]:
     return sorted(BACKENDS)
 
 
 @dataclass
-class Elimination:
+class Elimination(Generic[P]):
     """An eliminant: primitive, squarefree, its factors kept and dropped, and its figures.
 
     The polynomials stay in the backend until first asked for as sympy expressions
@@ -54,41 +63,53 @@ class Elimination:
     benchmark or a budget check needs only the figures.
     """
 
-    engine: object
-    raw: object  # the eliminant in the backend's type
-    raw_factors: list
-    raw_dropped: list
-    variables: tuple
+    engine: Backend[P] | None  # None once pickled (``__getstate__``), as the three below
+    raw: P | None  # the eliminant in the backend's type
+    raw_factors: list[P] | None
+    raw_dropped: list[P] | None
+    variables: tuple[str, ...]
     method: str
     backend: str
     degree: int
     terms: int
     bits: int
     seconds: float
-    log: list = field(default_factory=list)
+    log: list[LogEntry] = field(default_factory=list)
 
     @functools.cached_property
-    def polynomial(self):
-        return self.engine.to_sympy(self.raw)
+    def polynomial(self) -> sympy.Expr:
+        engine, raw, _, _ = self._live()
+        return engine.to_sympy(raw)
 
     @functools.cached_property
-    def factors(self):
-        return [self.engine.to_sympy(self.engine.primitive(f)) for f in self.raw_factors]
+    def factors(self) -> list[sympy.Expr]:
+        engine, _, kept, _ = self._live()
+        return [engine.to_sympy(engine.primitive(f)) for f in kept]
 
     @functools.cached_property
-    def dropped(self):
-        return [self.engine.to_sympy(self.engine.primitive(f)) for f in self.raw_dropped]
+    def dropped(self) -> list[sympy.Expr]:
+        engine, _, _, dropped = self._live()
+        return [engine.to_sympy(engine.primitive(f)) for f in dropped]
 
     @functools.cached_property
-    def exact(self):
+    def exact(self) -> tuple[flint.fmpq_mpoly, list[flint.fmpq_mpoly]]:
         """``(polynomial, kept factors)`` as python-flint ``fmpq_mpoly``: on the flint backend,
         straight from the elimination, with no sympy on the way (a verification needs no more)."""
         if self.engine is not None and self.engine.name == "flint":
-            return self.raw, [self.engine.primitive(f) for f in self.raw_factors]
+            engine, raw, kept, _ = self._live()
+            exact = (raw, [engine.primitive(f) for f in kept])
+            return cast(tuple[flint.fmpq_mpoly, list[flint.fmpq_mpoly]], exact)  # the flint backend's P
         ctx = flint_context(sorted({str(v) for e in [self.polynomial, *self.factors] for v in e.free_symbols}) or ["_"])
         return to_flint(self.polynomial, ctx), [to_flint(f, ctx) for f in self.factors]
 
-    def __getstate__(self):
+    def _live(self) -> tuple[Backend[P], P, list[P], list[P]]:
+        """The backend and its polynomials, held until pickled: the sympy forms, worked out
+        before pickling, are all a pickled elimination is asked for."""
+        assert self.engine is not None and self.raw is not None, "a pickled elimination has only its sympy forms"
+        assert self.raw_factors is not None and self.raw_dropped is not None
+        return self.engine, self.raw, self.raw_factors, self.raw_dropped
+
+    def __getstate__(self) -> dict[str, Any]:
         """Out of a budget's child process an elimination travels as sympy: the backend's
         polynomials do not pickle."""
         state = dict(self.__dict__, polynomial=self.polynomial, factors=self.factors, dropped=self.dropped)
@@ -96,13 +117,13 @@ class Elimination:
         return dict(state, engine=None, raw=None, raw_factors=None, raw_dropped=None)
 
 
-def _lookup(table, kind, name):
+def _lookup(table: dict[str, _T], kind: str, name: str) -> _T:
     if name not in table:
         raise UsageError(kind, name, f"unknown elimination {kind}; valid: {', '.join(sorted(table))}")
     return table[name]
 
 
-def _consistent(engine, polys):
+def _consistent(engine: Backend[P], polys: list[P]) -> list[P]:
     """Drop zero polynomials; a non-zero constant means there is no solution at all."""
     polys = [p for p in polys if not engine.is_zero(p)]
     if any(engine.is_constant(p) for p in polys):
@@ -110,8 +131,9 @@ def _consistent(engine, polys):
     return polys
 
 
-def eliminate(equations, eliminate, keep, method=DEFAULT_METHOD, backend="flint", witnesses=(), parameters=(),
-              budget=None):
+def eliminate(equations: Sequence[sympy.Expr], eliminate: Sequence[str], keep: Sequence[str],
+              method: str = DEFAULT_METHOD, backend: str = "flint", witnesses: WitnessGroups = (),
+              parameters: Sequence[str] = (), budget: Budget | None = None) -> Elimination[Any]:
     """Eliminate the variables ``eliminate`` from ``equations`` (sympy polynomials over QQ).
 
     Returns the polynomial left in the variables ``keep``, with factors the witnesses
@@ -125,28 +147,25 @@ def eliminate(equations, eliminate, keep, method=DEFAULT_METHOD, backend="flint"
     budget = budget or current()
     budget.note(f"eliminating {', '.join(map(str, eliminate)) or 'nothing'} "
                 f"(keeping {', '.join(map(str, keep))}) by {method} on {backend}")
-    work = functools.partial(_eliminate, engine, method, run, equations, list(eliminate), list(keep),
-                             witnesses, parameters, budget)
-    return budget.run(work)
+    request = EliminationRequest(tuple(eliminate), witnesses, tuple(parameters), budget)
+    return budget.run(functools.partial(_eliminate, engine, method, run, equations, tuple(keep), request))
 
 
-def _eliminate(engine, method, run, equations, eliminate, keep, witnesses, parameters, budget):
+def _eliminate(engine: Backend[P], method: str, run: Method, equations: Sequence[sympy.Expr], keep: tuple[str, ...],
+               request: EliminationRequest) -> Elimination[P]:
     start = time.perf_counter()
-    polys = [engine.from_sympy(eq) for eq in equations]
-    log, dropped, multipliers = [], [], []
-    polys = _consistent(engine, prepare(engine, polys, eliminate, log))
-    left = _consistent(engine, run(engine, polys, eliminate, witnesses, dropped, log, parameters, budget,
-                                   multipliers))
+    prepared = prepare(engine, [engine.from_sympy(eq) for eq in equations], request.eliminate)
+    outcome = prepared.then(run(engine, _consistent(engine, prepared.left), request))
+    left = _consistent(engine, outcome.left)
     if not left:
-        raise ComputationError(f"nothing left after eliminating {', '.join(eliminate)}")
+        raise ComputationError(f"nothing left after eliminating {', '.join(request.eliminate)}")
     eliminant = left[0]
     for poly in left[1:]:
         eliminant = engine.gcd(eliminant, poly)
     if engine.is_constant(eliminant):
         eliminant = min(left, key=lambda p: (engine.total_degree(p), engine.nterms(p)))
-    real, unreal = unreal_factors(engine, factor_with(engine, eliminant, multipliers), parameters)
-    kept, lost = select_factors(engine, real, witnesses)
-    dropped.extend(unreal + lost)
+    real, unreal = unreal_factors(engine, factor_with(engine, eliminant, outcome.multipliers), request.parameters)
+    kept, lost = select_factors(engine, real, request.witnesses)
     product = kept[0]
     for factor in kept[1:]:
         product = product * factor
@@ -155,13 +174,13 @@ def _eliminate(engine, method, run, equations, eliminate, keep, witnesses, param
         engine=engine,
         raw=product,
         raw_factors=kept,
-        raw_dropped=dropped,
-        variables=tuple(keep),
+        raw_dropped=outcome.dropped + unreal + lost,
+        variables=keep,
         method=method,
         backend=engine.name,
         degree=engine.total_degree(product),
         terms=engine.nterms(product),
         bits=engine.coefficient_bits(product),
         seconds=time.perf_counter() - start,
-        log=log,
+        log=outcome.log,
     )

@@ -6,12 +6,15 @@ through ``algkin.system.convert``.
 """
 
 import math
+from collections.abc import Mapping, Sequence
+from typing import cast
 
 import flint
 import sympy
 
 from ..system import symbol
 from .factor import certified_irreducible
+from .protocol import BackendFactory, Term
 from ..system.convert import flint_context, to_flint, to_flint_integer, to_sympy
 
 __all__ = ["FlintBackend", "SympyBackend", "BACKENDS"]
@@ -22,43 +25,43 @@ class FlintBackend:
 
     name = "flint"
 
-    def __init__(self, names):
+    def __init__(self, names: Sequence[str]) -> None:
         self.names = tuple(names)
         self.index = {n: i for i, n in enumerate(self.names)}
         self.ctx = flint_context(self.names, "lex")
 
-    def from_sympy(self, expr):
+    def from_sympy(self, expr: sympy.Expr) -> flint.fmpq_mpoly:
         return to_flint(expr, self.ctx)
 
-    def to_sympy(self, poly):
+    def to_sympy(self, poly: flint.fmpq_mpoly) -> sympy.Expr:
         return to_sympy(poly, self.ctx)
 
-    def variables(self, poly):
+    def variables(self, poly: flint.fmpq_mpoly) -> set[str]:
         return {n for n, d in zip(self.names, poly.degrees()) if d > 0}
 
-    def degree(self, poly, var):
+    def degree(self, poly: flint.fmpq_mpoly, var: str) -> int:
         return int(poly.degrees()[self.index[var]])
 
-    def is_constant(self, poly):
+    def is_constant(self, poly: flint.fmpq_mpoly) -> bool:
         # flint's is_constant scans every term for the total degree; a constant has one term
         return len(poly) <= 1 and not any(poly.degrees())
 
-    def total_degree(self, poly):
+    def total_degree(self, poly: flint.fmpq_mpoly) -> int:
         return int(poly.total_degree())
 
-    def nterms(self, poly):
+    def nterms(self, poly: flint.fmpq_mpoly) -> int:
         return len(poly)
 
-    def coefficient_bits(self, poly):
+    def coefficient_bits(self, poly: flint.fmpq_mpoly) -> int:
         return max((int(c.p).bit_length() + int(c.q).bit_length() for c in poly.coeffs()), default=0)
 
-    def is_zero(self, poly):
+    def is_zero(self, poly: flint.fmpq_mpoly) -> bool:
         return poly.is_zero()
 
-    def resultant(self, f, g, var):
+    def resultant(self, f: flint.fmpq_mpoly, g: flint.fmpq_mpoly, var: str) -> flint.fmpq_mpoly:
         return f.resultant(g, var)
 
-    def factors(self, poly):
+    def factors(self, poly: flint.fmpq_mpoly) -> list[flint.fmpq_mpoly]:
         # beyond three variables, specializing to one proves irreducibility faster than flint's
         # multivariate factoring (benchmarks/bench_ideas.py); in up to three, flint is faster
         if len(self.variables(poly)) > 3 and certified_irreducible(poly):
@@ -66,20 +69,21 @@ class FlintBackend:
         _, factors = poly.factor()
         return [f for f, _ in factors]
 
-    def gcd(self, f, g):
+    def gcd(self, f: flint.fmpq_mpoly, g: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
         return f.gcd(g)
 
-    def derivative(self, poly, var):
+    def derivative(self, poly: flint.fmpq_mpoly, var: str) -> flint.fmpq_mpoly:
         return poly.derivative(var)
 
-    def specialize(self, poly, values):
+    def specialize(self, poly: flint.fmpq_mpoly, values: Mapping[str, flint.fmpq]) -> flint.fmpq_mpoly:
         """``poly`` with the variables of ``values`` (name -> fmpq) replaced by them."""
-        return poly.subs(values)
+        # python-flint's stub takes names or indices, in a Mapping invariant in its keys
+        return poly.subs(cast("Mapping[str | int, flint.fmpq]", values))
 
-    def scale(self, poly, numerator, denominator):
+    def scale(self, poly: flint.fmpq_mpoly, numerator: int, denominator: int) -> flint.fmpq_mpoly:
         return poly * flint.fmpq(numerator, denominator)
 
-    def substitute(self, poly, var, value):
+    def substitute(self, poly: flint.fmpq_mpoly, var: str, value: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
         """``poly`` with ``var`` replaced by the polynomial ``value`` (Horner in ``var``)."""
         parts = self.split(poly, [var])
         total = self.zero()
@@ -87,26 +91,26 @@ class FlintBackend:
             total = total * value + parts.get((degree,), self.zero())
         return total
 
-    def terms(self, poly):
+    def terms(self, poly: flint.fmpq_mpoly) -> list[Term]:
         """``(exponents, numerator, denominator)`` per term, for evaluation at witnesses."""
         return [(m, int(c.p), int(c.q)) for m, c in zip(poly.monoms(), poly.coeffs())]
 
-    def zero(self):
+    def zero(self) -> flint.fmpq_mpoly:
         return self.ctx.from_dict({})
 
-    def one(self):
+    def one(self) -> flint.fmpq_mpoly:
         return self.ctx.from_dict({(0,) * len(self.names): 1})
 
-    def divide(self, f, g):
+    def divide(self, f: flint.fmpq_mpoly, g: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
         """``f / g``, exact."""
         return f / g
 
-    def quotient(self, f, g):
+    def quotient(self, f: flint.fmpq_mpoly, g: flint.fmpq_mpoly) -> flint.fmpq_mpoly | None:
         """``f / g`` if ``g`` divides ``f``, else None."""
         quotient, remainder = divmod(f, g)
         return quotient if remainder.is_zero() else None
 
-    def split(self, poly, variables):
+    def split(self, poly: flint.fmpq_mpoly, variables: Sequence[str]) -> dict[tuple[int, ...], flint.fmpq_mpoly]:
         """``{exponents in variables: coefficient free of them}``, in C: the coefficient of
         ``x**k`` is the ``k``-th derivative at ``x = 0`` over ``k!`` (a Python loop over
         the terms is ten times slower)."""
@@ -122,7 +126,7 @@ class FlintBackend:
                 poly, factorial = poly.derivative(name), factorial * (degree + 1)
         return parts
 
-    def join(self, parts, variables):
+    def join(self, parts: Mapping[tuple[int, ...], flint.fmpq_mpoly], variables: Sequence[str]) -> flint.fmpq_mpoly:
         """The inverse of ``split``."""
         gens = self.ctx.gens()
         where = [gens[self.names.index(v)] for v in variables]
@@ -133,7 +137,7 @@ class FlintBackend:
             total = total + coefficient
         return total
 
-    def primitive(self, poly):
+    def primitive(self, poly: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
         """Integer coefficients with gcd 1, positive leading coefficient (lex)."""
         if poly.is_zero():
             return poly
@@ -143,7 +147,7 @@ class FlintBackend:
         scaled = poly * flint.fmpq(lcm, gcd)
         return -scaled if scaled.coeffs()[0] < 0 else scaled
 
-    def groebner_lex(self, polys, order):
+    def groebner_lex(self, polys: Sequence[flint.fmpq_mpoly], order: Sequence[str]) -> list[flint.fmpq_mpoly]:
         """Reduced lex Gröbner basis with variables ordered as ``order`` (first is largest)."""
         zctx = flint.fmpz_mpoly_ctx.get(tuple(order), "lex")
         qctx = flint_context(order, "lex")
@@ -157,108 +161,108 @@ class SympyBackend:
 
     name = "sympy"
 
-    def __init__(self, names):
+    def __init__(self, names: Sequence[str]) -> None:
         self.names = tuple(names)
         self.index = {n: i for i, n in enumerate(self.names)}
         self.gens = [symbol(n) for n in self.names]
 
-    def from_sympy(self, expr):
+    def from_sympy(self, expr: sympy.Expr) -> sympy.Poly:
         expr = sympy.sympify(expr).xreplace({sympy.Symbol(n): g for n, g in zip(self.names, self.gens)})
         return sympy.Poly(expr, *self.gens, domain=sympy.QQ)
 
-    def to_sympy(self, poly):
+    def to_sympy(self, poly: sympy.Poly) -> sympy.Expr:
         return poly.as_expr()
 
-    def variables(self, poly):
+    def variables(self, poly: sympy.Poly) -> set[str]:
         return {n for n, d in zip(self.names, poly.degree_list()) if d > 0}
 
-    def degree(self, poly, var):
+    def degree(self, poly: sympy.Poly, var: str) -> int:
         return poly.degree(self.gens[self.index[var]])
 
-    def is_constant(self, poly):
+    def is_constant(self, poly: sympy.Poly) -> bool:
         return poly.is_ground
 
-    def total_degree(self, poly):
+    def total_degree(self, poly: sympy.Poly) -> int:
         return poly.total_degree()
 
-    def nterms(self, poly):
+    def nterms(self, poly: sympy.Poly) -> int:
         return len(poly.terms())
 
-    def coefficient_bits(self, poly):
+    def coefficient_bits(self, poly: sympy.Poly) -> int:
         return max((int(c.p).bit_length() + int(c.q).bit_length() for c in poly.coeffs()), default=0)
 
-    def is_zero(self, poly):
+    def is_zero(self, poly: sympy.Poly) -> bool:
         return poly.is_zero
 
-    def resultant(self, f, g, var):
+    def resultant(self, f: sympy.Poly, g: sympy.Poly, var: str) -> sympy.Poly:
         gen = self.gens[self.names.index(var)]
         result = sympy.resultant(f.as_expr(), g.as_expr(), gen)
         return self.from_sympy(result)
 
-    def factors(self, poly):
+    def factors(self, poly: sympy.Poly) -> list[sympy.Poly]:
         _, factors = poly.factor_list()
         return [f for f, _ in factors]
 
-    def gcd(self, f, g):
+    def gcd(self, f: sympy.Poly, g: sympy.Poly) -> sympy.Poly:
         return f.gcd(g)
 
-    def derivative(self, poly, var):
+    def derivative(self, poly: sympy.Poly, var: str) -> sympy.Poly:
         return poly.diff(self.gens[self.names.index(var)])
 
-    def specialize(self, poly, values):
+    def specialize(self, poly: sympy.Poly, values: Mapping[str, flint.fmpq]) -> sympy.Poly:
         replaced = poly.as_expr().xreplace({self.gens[self.names.index(n)]: sympy.Rational(int(v.p), int(v.q))
                                             for n, v in values.items()})
         return self.from_sympy(replaced)
 
-    def scale(self, poly, numerator, denominator):
+    def scale(self, poly: sympy.Poly, numerator: int, denominator: int) -> sympy.Poly:
         return poly * sympy.Rational(numerator, denominator)
 
-    def substitute(self, poly, var, value):
+    def substitute(self, poly: sympy.Poly, var: str, value: sympy.Poly) -> sympy.Poly:
         return self.from_sympy(poly.as_expr().xreplace({self.gens[self.names.index(var)]: value.as_expr()}))
 
-    def terms(self, poly):
+    def terms(self, poly: sympy.Poly) -> list[Term]:
         return [(m, int(c.p), int(c.q)) for m, c in poly.terms()]
 
-    def zero(self):
+    def zero(self) -> sympy.Poly:
         return sympy.Poly(0, *self.gens, domain=sympy.QQ)
 
-    def one(self):
+    def one(self) -> sympy.Poly:
         return sympy.Poly(1, *self.gens, domain=sympy.QQ)
 
-    def divide(self, f, g):
+    def divide(self, f: sympy.Poly, g: sympy.Poly) -> sympy.Poly:
         return f.exquo(g)
 
-    def quotient(self, f, g):
+    def quotient(self, f: sympy.Poly, g: sympy.Poly) -> sympy.Poly | None:
         quotient, remainder = f.div(g)
         return quotient if remainder.is_zero else None
 
-    def split(self, poly, variables):
+    def split(self, poly: sympy.Poly, variables: Sequence[str]) -> dict[tuple[int, ...], sympy.Poly]:
         where = [self.names.index(v) for v in variables]
-        groups = {}
+        groups: dict[tuple[int, ...], dict[tuple[int, ...], sympy.Rational]] = {}
         for monomial, coefficient in poly.as_dict().items():
             key = tuple(monomial[i] for i in where)
             rest = tuple(0 if i in where else e for i, e in enumerate(monomial))
             groups.setdefault(key, {})[rest] = coefficient
         return {key: sympy.Poly.from_dict(terms, *self.gens, domain=sympy.QQ) for key, terms in groups.items()}
 
-    def join(self, parts, variables):
+    def join(self, parts: Mapping[tuple[int, ...], sympy.Poly], variables: Sequence[str]) -> sympy.Poly:
         total = self.zero()
         for exponents, coefficient in parts.items():
             monomial = sympy.Mul(*(self.gens[self.names.index(v)] ** e for v, e in zip(variables, exponents)))
             total = total + coefficient * sympy.Poly(monomial, *self.gens, domain=sympy.QQ)
         return total
 
-    def primitive(self, poly):
+    def primitive(self, poly: sympy.Poly) -> sympy.Poly:
         if poly.is_zero:
             return poly
         _, prim = poly.clear_denoms(convert=True)[1].primitive()
         prim = prim.to_field()
         return -prim if prim.LC() < 0 else prim
 
-    def groebner_lex(self, polys, order):
+    def groebner_lex(self, polys: Sequence[sympy.Poly], order: Sequence[str]) -> list[sympy.Poly]:
         gens = [symbol(n) for n in order]
         basis = sympy.groebner([p.as_expr() for p in polys], *gens, order="lex", domain=sympy.QQ)
         return [self.from_sympy(g) for g in basis.exprs]
 
 
-BACKENDS = {"flint": FlintBackend, "sympy": SympyBackend}
+BACKENDS: dict[str, BackendFactory] = {"flint": FlintBackend, "sympy": SympyBackend}

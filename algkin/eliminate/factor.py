@@ -20,7 +20,11 @@ irreducible. When the specializations tried factor, full factoring decides.
 (True, False)
 """
 
+from collections.abc import Sequence
+
 import flint
+
+from .protocol import Backend, P
 
 __all__ = ["factor_with", "certified_irreducible"]
 
@@ -28,15 +32,15 @@ SPECIALIZATIONS = ((3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47),
                    (-2, 9, -4, 6, -10, 15, -8, 21, -12, 25, -14, 27, -16, 33))
 
 
-def factor_with(backend, poly, divisors):
+def factor_with(backend: Backend[P], poly: P, divisors: Sequence[P]) -> list[P]:
     """Irreducible factors of ``poly`` (each once), the factors of ``divisors`` that divide it first."""
-    candidates = []
+    candidates: list[P] = []
     for divisor in divisors:
         for factor in backend.factors(divisor):
             factor = backend.primitive(factor)
             if factor not in candidates:
                 candidates.append(factor)
-    found = []
+    found: list[P] = []
     for factor in candidates:
         quotient = backend.quotient(poly, factor)
         if quotient is not None:
@@ -46,7 +50,7 @@ def factor_with(backend, poly, divisors):
     return found + ([] if backend.is_constant(poly) else backend.factors(poly))
 
 
-def certified_irreducible(poly):
+def certified_irreducible(poly: flint.fmpq_mpoly) -> bool:
     """True when the ``fmpq_mpoly`` ``poly`` is proved irreducible over QQ by specialization;
     False means not proved (it may still be irreducible)."""
     degrees = poly.degrees()
@@ -59,13 +63,14 @@ def certified_irreducible(poly):
     return False
 
 
-def _irreducible_at(poly, i, degree, values):
+def _irreducible_at(poly: flint.fmpq_mpoly, i: int, degree: int, values: tuple[int, ...]) -> bool:
     """Whether ``poly`` with every variable but the ``i``-th set to ``values`` is irreducible
     (its degree in that variable cannot drop: the leading coefficient is a number)."""
     names = poly.context().names()
-    fixed = {n: v for k, (n, v) in enumerate(zip(names, values * (len(names) // len(values) + 1))) if k != i}
+    cycled = values * (len(names) // len(values) + 1)
+    fixed: dict[str | int, int] = {n: v for k, (n, v) in enumerate(zip(names, cycled)) if k != i}
     univariate = poly.subs(fixed)
-    coefficients = [0] * (int(degree) + 1)
+    coefficients: list[flint.fmpq | int] = [0] * (int(degree) + 1)
     for exponents, coefficient in zip(univariate.monoms(), univariate.coeffs()):
         coefficients[exponents[i]] = coefficient
     _, factors = flint.fmpq_poly(coefficients).factor()

@@ -20,67 +20,65 @@ removed by factoring and selection at the witnesses, as for resultants.
 px*(px**2 - 2*px + py**2)*(px**4 - 4*px**3 + 2*px**2*py**2 + 5*px**2 - 4*px*py**2 - 2*px + py**4 + 5*py**2)
 """
 
-from ..runtime.budget import current
+from collections.abc import Sequence
+
 from .methods import cheapest, resultant_step
+from .protocol import Backend, P
+from .request import EliminationRequest, MethodOutcome
 
 __all__ = ["linear_elimination"]
 
 
-def linear_elimination(backend, polys, eliminate, witnesses, dropped, log, parameters=(), budget=None,
-                       multipliers=None):
+def linear_elimination(backend: Backend[P], polys: list[P], request: EliminationRequest) -> MethodOutcome[P]:
     """Substitute linear unknowns and reduce circles to radical axes; resultants for the rest.
 
-    A multiplier may hold numbers and ``parameters`` (kept variables: the dimensions, and a
-    derivation's inputs); it may hold the other kept variables (a curve's coordinates) only
-    for the last two unknowns (the closing Cramer step): earlier, it would raise the degree
-    of everything still to be eliminated, and resultants do better
+    A multiplier may hold numbers and the request's ``parameters`` (kept variables: the
+    dimensions, and a derivation's inputs); it may hold the other kept variables (a curve's
+    coordinates) only for the last two unknowns (the closing Cramer step): earlier, it would
+    raise the degree of everything still to be eliminated, and resultants do better
     (``benchmarks/bench_ideas.py``: the Stephenson III curve is ten times slower otherwise).
-    Every multiplier holding a variable is appended to ``multipliers``: the eliminant's
+    Every multiplier holding a variable is in the outcome's ``multipliers``: the eliminant's
     extraneous factors can only be theirs.
     """
-    multipliers = [] if multipliers is None else multipliers
-    remaining = list(eliminate)
+    outcome = MethodOutcome(polys)
+    remaining = list(request.eliminate)
     while True:
-        present = set().union(*(backend.variables(p) for p in polys))
+        present: set[str] = set().union(*(backend.variables(p) for p in outcome.left))
         remaining = [v for v in remaining if v in present]  # substituted away already (prepare)
         if not remaining:
-            return polys
-        allowed = set(parameters) if len(remaining) > 2 else set(backend.names) - set(remaining)
-        polys = [p for p in polys if not backend.is_zero(p)]
+            return outcome
+        allowed = set(request.parameters) if len(remaining) > 2 else set(backend.names) - set(remaining)
+        polys = [p for p in outcome.left if not backend.is_zero(p)]
         found = _linear_unknown(backend, polys, remaining, allowed)
         if found is not None:
             # after the last unknown, the multiplier's factors are left for factoring to divide out
-            polys = _substitute(backend, polys, *found, strip=len(remaining) > 1)
-            if not backend.is_constant(found[2]):
-                multipliers.append(found[2])
+            outcome = outcome.then(_substitution(backend, polys, found, len(remaining) > 1, request))
             remaining.remove(found[1])
-            log.append(("substituted", found[1]))
-            (budget or current()).check_terms(max(map(backend.nterms, polys), default=0),
-                                              f"an equation after substituting {found[1]}")
             continue
         reduced = _radical_axes(backend, polys, remaining, allowed)
-        if reduced is not None and _linear_unknown(backend, reduced[0], remaining, allowed) is not None:
-            polys, gained, used = reduced
-            multipliers.extend(used)
-            log.append(("radical-axis", gained))
+        if reduced is not None and _linear_unknown(backend, reduced.left, remaining, allowed) is not None:
+            outcome = outcome.then(reduced)
             continue
         # an axis no unknown can be substituted from only reshuffles the resultants
-        polys, done = _by_resultants(backend, polys, remaining, witnesses, dropped, log, budget)
+        step, done = _by_resultants(backend, polys, remaining, request)
+        outcome = outcome.then(step)
         remaining = [v for v in remaining if v not in done]
 
 
-def _by_resultants(backend, polys, remaining, witnesses, dropped, log, budget):
+def _by_resultants(backend: Backend[P], polys: list[P], remaining: Sequence[str], request: EliminationRequest
+                   ) -> tuple[MethodOutcome[P], list[str]]:
     """One resultant, on the cheapest unknown: with fewer unknowns left, a linear step may
     apply again (on the six-bars, the closing Cramer step, which brings in no mismatched
-    roots the way a second resultant does). The equations, and the unknowns eliminated."""
+    roots the way a second resultant does). The step, and the unknowns it eliminated."""
     var = cheapest(backend, polys, remaining)
-    return resultant_step(backend, polys, var, witnesses, dropped, log, budget), [var]
+    return resultant_step(backend, polys, var, request), [var]
 
 
-def _linear_unknown(backend, polys, remaining, allowed):
+def _linear_unknown(backend: Backend[P], polys: Sequence[P], remaining: Sequence[str], allowed: set[str]
+                    ) -> tuple[P, str, P, P] | None:
     """``(poly, var, coefficient, rest)`` for the simplest equation linear in an unknown whose
     coefficient holds only ``allowed`` variables, or None."""
-    best = None
+    best: tuple[tuple[bool, int, int], P, str, P] | None = None
     for var in remaining:
         for poly in polys:
             if backend.degree(poly, var) != 1:
@@ -99,12 +97,24 @@ def _linear_unknown(backend, polys, remaining, allowed):
     return poly, var, coefficient, backend.split(poly, [var]).get((0,), backend.zero())
 
 
-def _substitute(backend, polys, pivot, var, coefficient, rest, strip=True):
+def _substitution(backend: Backend[P], polys: list[P], found: tuple[P, str, P, P], strip: bool,
+                  request: EliminationRequest) -> MethodOutcome[P]:
+    """The step substituting the unknown of ``found`` (``_linear_unknown``) out of ``polys``;
+    its coefficient is a multiplier if it holds a variable."""
+    pivot, var, coefficient, rest = found
+    polys = _substitute(backend, polys, pivot, var, coefficient, rest, strip)
+    request.budget.check_terms(max(map(backend.nterms, polys), default=0), f"an equation after substituting {var}")
+    multipliers = [] if backend.is_constant(coefficient) else [coefficient]
+    return MethodOutcome(polys, log=[("substituted", var)], multipliers=multipliers)
+
+
+def _substitute(backend: Backend[P], polys: Sequence[P], pivot: P, var: str, coefficient: P, rest: P,
+                strip: bool) -> list[P]:
     """``a**k f(-rest/a)`` for every other equation ``f`` of degree ``k`` in ``var``, with the
     factors it shares with ``a`` stripped (if ``strip``)."""
     minus_rest, scales = [backend.one()], [backend.one()]  # powers of -rest and of a, as needed
     pieces = backend.factors(coefficient) if strip and not backend.is_constant(coefficient) else []
-    out = []
+    out: list[P] = []
     for poly in polys:
         if poly is pivot:
             continue
@@ -123,7 +133,7 @@ def _substitute(backend, polys, pivot, var, coefficient, rest, strip=True):
     return out
 
 
-def _strip(backend, poly, pieces):
+def _strip(backend: Backend[P], poly: P, pieces: Sequence[P]) -> P:
     """``poly`` without the irreducible factors ``pieces`` of the multiplier, by trial division."""
     for piece in pieces:
         quotient = backend.quotient(poly, piece) if not backend.is_zero(poly) else None
@@ -132,10 +142,12 @@ def _strip(backend, poly, pieces):
     return poly
 
 
-def _radical_axes(backend, polys, remaining, allowed):
-    """Fraction-free row reduction on the quadratic monomials in the unknowns: the equations, how
-    many became linear and the multipliers of the rows, or None if none became linear."""
-    rows, others = [], []
+def _radical_axes(backend: Backend[P], polys: Sequence[P], remaining: Sequence[str], allowed: set[str]
+                  ) -> MethodOutcome[P] | None:
+    """Fraction-free row reduction on the quadratic monomials in the unknowns: the step (how many
+    equations became linear, and the multipliers of the rows), or None if none became linear."""
+    rows: list[dict[tuple[int, ...], P]] = []
+    others: list[P] = []
     for poly in polys:
         # only a quadratic in the unknowns can become an axis: one of higher degree in any
         # unknown is passed over without splitting it
@@ -147,7 +159,8 @@ def _radical_axes(backend, polys, remaining, allowed):
     if len(rows) < 2:
         return None
     columns = sorted({e for parts in rows for e in parts if sum(e) == 2}, reverse=True)
-    pivots, used = set(), []
+    pivots: set[int] = set()
+    used: list[P] = []
     for column in columns:
         candidates = [i for i, parts in enumerate(rows) if i not in pivots and column in parts
                       and backend.variables(parts[column]) <= allowed]
@@ -164,16 +177,18 @@ def _radical_axes(backend, polys, remaining, allowed):
               and max(sum(e) for e in parts) == 1]
     if not linear:
         return None
-    return others + [backend.join(parts, remaining) for parts in rows if parts], len(linear), used
+    return MethodOutcome(others + [backend.join(parts, remaining) for parts in rows if parts],
+                         log=[("radical-axis", len(linear))], multipliers=used)
 
 
-def _combine(backend, pivot, row, column):
+def _combine(backend: Backend[P], pivot: dict[tuple[int, ...], P], row: dict[tuple[int, ...], P],
+             column: tuple[int, ...]) -> tuple[dict[tuple[int, ...], P], P]:
     """``a*row - b*pivot`` with the ``column`` coefficient cancelled (``a``, ``b`` over their gcd),
     and ``a``, the row's multiplier."""
     a, b = pivot[column], row[column]
     common = backend.gcd(a, b)
     a, b = backend.divide(a, common), backend.divide(b, common)
-    out = {}
+    out: dict[tuple[int, ...], P] = {}
     for exponent in set(pivot) | set(row):
         value = a * row.get(exponent, backend.zero()) - b * pivot.get(exponent, backend.zero())
         if not backend.is_zero(value):

@@ -5,14 +5,17 @@ Both run on any backend of ``backends.BACKENDS`` and share the same preparation
 to eliminate) and the same factor selection at witnesses.
 """
 
+from collections.abc import Sequence
+
 from ..errors import ComputationError
-from ..runtime.budget import current
-from .select import select_factors
+from .protocol import Backend, P
+from .request import EliminationRequest, LogEntry, MethodOutcome
+from .select import WitnessGroups, select_factors
 
 __all__ = ["prepare", "cheapest", "resultant_step", "resultant_chain", "groebner_basis"]
 
 
-def _linear_definition(backend, poly, var):
+def _linear_definition(backend: Backend[P], poly: P, var: str) -> P | None:
     """``value`` with ``var = value`` if ``poly`` is ``k*var + rest`` (k a number), else None."""
     if backend.degree(poly, var) != 1:
         return None
@@ -23,9 +26,10 @@ def _linear_definition(backend, poly, var):
     return backend.scale(backend.substitute(poly, var, backend.zero()), -denominator, numerator)
 
 
-def prepare(backend, polys, eliminate, log):
+def prepare(backend: Backend[P], polys: list[P], eliminate: Sequence[str]) -> MethodOutcome[P]:
     """Substitute linearly defined variables; drop equations alone in holding a variable."""
     polys = [p for p in polys if not backend.is_zero(p)]
+    log: list[LogEntry] = []
     changed = True
     while changed:
         changed = False
@@ -43,40 +47,41 @@ def prepare(backend, polys, eliminate, log):
                     log.append(("substituted", var))
                     changed = True
                     break
-    return polys
+    return MethodOutcome(polys, log=log)
 
 
-def _squarefree_kept(backend, poly, witnesses, dropped):
+def _squarefree_kept(backend: Backend[P], poly: P, witnesses: WitnessGroups) -> tuple[P, list[P]]:
+    """The product of the factors of ``poly`` the witnesses keep, and the factors dropped."""
     factors = backend.factors(poly)
     if len(factors) == 1:  # nothing to choose; the final eliminant's check answers for it
-        return factors[0]
+        return factors[0], []
     kept, lost = select_factors(backend, factors, witnesses, check=False)
-    dropped.extend(lost)
     if not kept:
         raise ComputationError("every factor of an intermediate resultant was dropped")
     product = kept[0]
     for factor in kept[1:]:
         product = product * factor
-    return product
+    return product, lost
 
 
-def cheapest(backend, polys, remaining):
+def cheapest(backend: Backend[P], polys: Sequence[P], remaining: Sequence[str]) -> str:
     """The unknown held by the fewest equations, then of the least degree in them."""
-    def cost(var):
+    def cost(var: str) -> tuple[int, int]:
         holders = [p for p in polys if backend.degree(p, var)]
         return (len(holders), min((backend.degree(p, var) for p in holders), default=0))
 
     return min(remaining, key=cost)
 
 
-def resultant_step(backend, polys, var, witnesses, dropped, log, budget=None):
+def resultant_step(backend: Backend[P], polys: list[P], var: str, request: EliminationRequest) -> MethodOutcome[P]:
     """``polys`` with ``var`` eliminated: resultants of its holders against the one of least
     degree in it, each factored and cut to the factors the witnesses satisfy."""
     holders = [p for p in polys if backend.degree(p, var)]
     others = [p for p in polys if not backend.degree(p, var)]
     if len(holders) <= 1:
-        return others
+        return MethodOutcome(others)
     pivot = min(holders, key=lambda p: (backend.degree(p, var), backend.nterms(p)))
+    dropped: list[P] = []
     for poly in holders:
         if poly is pivot:
             continue
@@ -85,29 +90,30 @@ def resultant_step(backend, polys, var, witnesses, dropped, log, budget=None):
             raise ComputationError(f"resultant in {var} vanished: the equations share a factor")
         if backend.is_constant(result):
             raise ComputationError(f"resultant in {var} is a non-zero constant: the system is inconsistent")
-        (budget or current()).check_terms(backend.nterms(result), f"the resultant in {var}")
-        others.append(_squarefree_kept(backend, result, witnesses, dropped))
-    log.append(("resultant", var))
-    return others
+        request.budget.check_terms(backend.nterms(result), f"the resultant in {var}")
+        kept, lost = _squarefree_kept(backend, result, request.witnesses)
+        others.append(kept)
+        dropped.extend(lost)
+    return MethodOutcome(others, dropped, [("resultant", var)])
 
 
-def resultant_chain(backend, polys, eliminate, witnesses, dropped, log, parameters=(), budget=None, multipliers=None):
+def resultant_chain(backend: Backend[P], polys: list[P], request: EliminationRequest) -> MethodOutcome[P]:
     """Eliminate one variable at a time by Sylvester resultants against a pivot."""
-    remaining = list(eliminate)
+    outcome = MethodOutcome(polys)
+    remaining = list(request.eliminate)
     while remaining:
-        var = cheapest(backend, polys, remaining)
+        var = cheapest(backend, outcome.left, remaining)
         remaining.remove(var)
-        polys = resultant_step(backend, polys, var, witnesses, dropped, log, budget)
-    return polys
+        outcome = outcome.then(resultant_step(backend, outcome.left, var, request))
+    return outcome
 
 
-def groebner_basis(backend, polys, eliminate, witnesses, dropped, log, parameters=(), budget=None, multipliers=None):
+def groebner_basis(backend: Backend[P], polys: list[P], request: EliminationRequest) -> MethodOutcome[P]:
     """The elimination ideal's generators from a lex basis, eliminated variables first."""
-    keep = [n for n in backend.names if n not in eliminate]
-    order = [n for n in eliminate] + keep
+    keep = [n for n in backend.names if n not in request.eliminate]
+    order = list(request.eliminate) + keep
     basis = backend.groebner_lex(polys, order)
-    log.append(("groebner", len(basis)))
     for element in basis:  # the basis is one call: its size is checked once it is there
-        (budget or current()).check_terms(backend.nterms(element), "an element of the Gröbner basis")
-    return [g for g in basis if not (backend.variables(g) & set(eliminate))]
-
+        request.budget.check_terms(backend.nterms(element), "an element of the Gröbner basis")
+    left = [g for g in basis if not (backend.variables(g) & set(request.eliminate))]
+    return MethodOutcome(left, log=[("groebner", len(basis))])

@@ -22,28 +22,37 @@ value, and would be kept for "containing" zero.
 """
 
 import math
+from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
 
 import flint
 
 from ..errors import ComputationError
+from .protocol import Backend, P, Term
 
-__all__ = ["Witness", "Evaluator", "select_factors", "unreal_factors", "unreal"]
+__all__ = ["Witness", "Point", "WitnessGroups", "Evaluator", "select_factors", "unreal_factors", "unreal"]
 
 MARGIN_BITS = 64
 
+Point = Mapping[str, flint.arb]
+"""A configuration: every variable's value as a ball (a ``Witness``, or a plain dict)."""
 
-class Witness(dict):
+WitnessGroups = Sequence[Sequence[Point]]
+"""Configurations in groups, one group per branch."""
+
+
+class Witness(dict[str, flint.arb]):
     """A configuration: name -> arb ball, ``exact``: name -> fmpq for the coordinates known
     exactly (their balls enclose these values), and ``scale`` (see ``_scale``), worked out
     when it is made, for every elimination that uses it."""
 
-    def __init__(self, balls=(), exact=None):
+    def __init__(self, balls: Mapping[str, flint.arb] | Iterable[tuple[str, flint.arb]] = (),
+                 exact: Mapping[str, flint.fmpq] | None = None) -> None:
         super().__init__(balls)
         self.exact = dict(exact or {})
         self.scale = _scale(self)
 
 
-def _scale(point):
+def _scale(point: Point) -> tuple[int, float]:
     """``(bits, magnitude)``: the most mantissa bits of the balls (the precision they were
     computed at) and the largest absolute midpoint."""
     return (max((_bits(v) for v in point.values()), default=0),
@@ -61,10 +70,13 @@ class Evaluator:
     term-by-term loop.
     """
 
-    def __init__(self, terms, names, base_bits, magnitude_bits=1):
+    def __init__(self, terms: Sequence[Term], names: Sequence[str], base_bits: int, magnitude_bits: int = 1) -> None:
         self.names = names
-        highest, degree, coefficient_bits = {}, 0, 0
-        steps, self.ends, nodes = [], [], {}  # (parent, variable, power) -> node; node 0 is 1
+        highest: dict[int, int] = {}  # variable -> highest power
+        degree, coefficient_bits = 0, 0
+        nodes: dict[tuple[int, int, int], int] = {}  # (parent, variable, power) -> node; node 0 is 1
+        steps: list[tuple[int, int, int, int]] = []
+        self.ends: list[int] = []
         for exponents, p, q in terms:
             coefficient_bits = max(coefficient_bits, p.bit_length() + q.bit_length())
             node, total = 0, 0
@@ -91,7 +103,7 @@ class Evaluator:
         with flint.ctx.workprec(self.bits):
             self.coefficients = [flint.arb(p) / q if q != 1 else flint.arb(p) for _, p, q in terms]
 
-    def __call__(self, point):
+    def __call__(self, point: Point) -> flint.arb:
         with flint.ctx.workprec(self.bits):
             powers = []
             for i, top in self.used:
@@ -100,7 +112,7 @@ class Evaluator:
                 for _ in range(top - 1):
                     power = power * value
                     powers.append(power)
-            products = [None] * self.size
+            products = [flint.arb(1)] * self.size  # node 0 is 1; every other is set before it is read
             for node, parent, slot in self.steps:
                 products[node] = powers[slot] if parent == 0 else products[parent] * powers[slot]
             total = flint.arb(0)
@@ -109,7 +121,8 @@ class Evaluator:
             return total
 
 
-def unreal_factors(backend, factors, parameters):
+def unreal_factors(backend: Backend[P], factors: Sequence[P], parameters: Collection[str]
+                   ) -> tuple[list[P], list[P]]:
     """Split ``factors`` into (kept, dropped): dropped, those in the ``parameters`` alone
     (dimensions, a derivation's inputs) that have no real zero, proved by ``unreal``.
 
@@ -120,14 +133,15 @@ def unreal_factors(backend, factors, parameters):
     extremum's stationary and value polynomials) have only this test. A parameter factor
     with a real zero is left to the witnesses.
     """
-    kept, dropped = [], []
+    kept: list[P] = []
+    dropped: list[P] = []
     for factor in factors:
         alone = backend.variables(factor) <= set(parameters)
         (dropped if alone and unreal(backend.terms(factor)) else kept).append(factor)
     return kept, dropped
 
 
-def unreal(terms):
+def unreal(terms: Sequence[Term]) -> bool:
     """True when the polynomial of ``terms`` (exponents, numerator, denominator) is proved to
     have no real zero: a nonzero constant; in one variable, by exact real root counting; in
     several, when every exponent is even, every coefficient has one sign and the constant
@@ -147,7 +161,8 @@ def unreal(terms):
     return len(signs) == 1 and constant and all(e % 2 == 0 for exponents, _, _ in terms for e in exponents)
 
 
-def select_factors(backend, factors, witness_groups, check=True):
+def select_factors(backend: Backend[P], factors: Sequence[P], witness_groups: WitnessGroups, check: bool = True
+                   ) -> tuple[list[P], list[P]]:
     """Split ``factors`` into (kept, dropped) by the witnesses; keep all without witnesses.
 
     With ``check``, every witness must also have a kept factor vanishing there (else a
@@ -165,7 +180,8 @@ def select_factors(backend, factors, witness_groups, check=True):
                    check)
 
 
-def _values(backend, factors, groups, base_bits, magnitude_bits):
+def _values(backend: Backend[P], factors: Sequence[P], groups: WitnessGroups, base_bits: int, magnitude_bits: int
+            ) -> Callable[[int, Point], flint.arb]:
     """``(i, point) -> ball of factor i at point``, its exactly known coordinates substituted
     exactly first: one evaluator per factor and set of exact values, which branches share at
     the same input (on the symbolic four-bar's curve, the dimensions take 239 terms down to
@@ -179,7 +195,7 @@ def _values(backend, factors, groups, base_bits, magnitude_bits):
         which[id(point)] = assignments.index(exact)
     evaluators = {}
 
-    def value(i, point):
+    def value(i: int, point: Point) -> flint.arb:
         fixed = {n: v for n, v in assignments[which[id(point)]].items() if n in held[i]}
         key = (i, which[id(point)] if fixed else None)
         if key not in evaluators:
@@ -190,25 +206,27 @@ def _values(backend, factors, groups, base_bits, magnitude_bits):
     return value
 
 
-def _exact(point):
+def _exact(point: Point) -> Mapping[str, flint.fmpq]:
     """The coordinates of ``point`` known exactly (none for a plain dict of balls)."""
     return getattr(point, "exact", {})
 
 
-def _bits(ball):
+def _bits(ball: flint.arb) -> int:
     """Bits of the ball's midpoint mantissa: the precision it was computed at."""
     return int(ball.mid().man_exp()[0]).bit_length() if ball.mid() != 0 else 0
 
 
-def _select(factors, groups, value, check):
-    known = {}
+def _select(factors: Sequence[P], groups: WitnessGroups, value: Callable[[int, Point], flint.arb], check: bool
+            ) -> tuple[list[P], list[P]]:
+    known: dict[tuple[int, int, int], bool] = {}
 
-    def vanishes(i, g, w):
+    def vanishes(i: int, g: int, w: int) -> bool:
         if (i, g, w) not in known:
             known[i, g, w] = value(i, groups[g][w]).contains(0)
         return known[i, g, w]
 
-    kept, dropped = [], []
+    kept: list[int] = []  # indices
+    dropped: list[P] = []
     for i, factor in enumerate(factors):
         if any(all(vanishes(i, g, w) for w in range(len(group))) for g, group in enumerate(groups)):
             kept.append(i)
