@@ -173,8 +173,10 @@ class Motion:
     def evaluate(self, branch, values):
         """Point -> (x, y) arrays, nan where the branch cannot assemble; and the blocked mask per point."""
         form = self.branches[branch]
-        blocked = {p: np.asarray(evaluate(d, values, NUMPY)) < 0 for p, d in form.discriminants.items()}
-        with np.errstate(invalid="ignore"):
+        # beyond where the branch assembles a later discriminant holds an earlier one's sqrt (nan),
+        # a mirror point the span of its coincident bases (a pole): neither is worth a warning
+        with np.errstate(all="ignore"):
+            blocked = {p: ~(np.asarray(evaluate(d, values, NUMPY)) >= 0) for p, d in form.discriminants.items()}
             points = {p: tuple(np.asarray(evaluate(v, values, NUMPY), dtype=float) for v in xy)
                       for p, xy in self.points[branch].items()}
         return points, blocked

@@ -26,11 +26,34 @@ def check_assembly(compiled: Compiled, branches: Sequence[Branch]) -> None:
         grid = np.linspace(float(given.to_radians(given.lo)), float(given.to_radians(given.hi)), GRID)
         angles[symbol(c)], angles[symbol(s)] = np.cos(grid), np.sin(grid)
     args = list(angles)
+    real = np.ones(GRID, dtype=bool)
     for point, disc in chosen.discriminants.items():
-        with np.errstate(all="ignore"):  # a discriminant's pole (an input where a base meets a base) is no real root
-            values = sympy.lambdify(args, disc.xreplace(defaults), "numpy")(*angles.values())
-            if not np.any(np.broadcast_to(values, (GRID,)) >= 0):
-                spec = next((d for d in compiled.implicit if d.point == point), None)
-                why = getattr(spec, "never_meets", "the two circles never meet")
-                raise SceneError(compiled.scene.source, f"points.{point}",
-                                 f"can never assemble: {why} over the input range")
+        values = _on_grid(args, disc.xreplace(defaults), angles)
+        if not np.any(values >= 0):
+            spec = next((d for d in compiled.implicit if d.point == point), None)
+            why = getattr(spec, "never_meets", "the two circles never meet")
+            raise SceneError(compiled.scene.source, f"points.{point}",
+                             f"can never assemble: {why} over the input range")
+        real &= values >= 0
+    _check_sides(compiled, chosen, defaults, args, angles, real)
+
+
+def _check_sides(compiled: Compiled, chosen: Branch, defaults: dict[sympy.Symbol, sympy.Expr],
+                 args: list[sympy.Symbol], angles: dict[sympy.Symbol, FloatArray], real: np.ndarray) -> None:
+    """Raise SceneError for a point without modes of its own that lies on the other side than its
+    scene says wherever the chosen branch assembles (an inversor's point named where its twin is)."""
+    closed = {symbol(u): v.xreplace(defaults) for u, v in chosen.values.items()}
+    for spec in compiled.implicit:
+        side = spec.side()
+        if side is None or not real.any():
+            continue
+        expression, why = side
+        values = _on_grid(args, expression.xreplace(defaults).xreplace(closed), angles)
+        if not np.any(values[real] > 0):
+            raise SceneError(compiled.scene.source, f"points.{spec.point}", why)
+
+
+def _on_grid(args: list[sympy.Symbol], expression: sympy.Expr, angles: dict[sympy.Symbol, FloatArray]) -> FloatArray:
+    with np.errstate(all="ignore"):  # a pole (an input where a base meets a base) or a nan is no real value
+        values = sympy.lambdify(args, expression, "numpy")(*angles.values())
+        return np.nan_to_num(np.broadcast_to(np.asarray(values, dtype=float), (GRID,)), nan=-np.inf)

@@ -16,6 +16,7 @@ there, or the balls are too wide), never guessed.
 [{'from_deg': 0.0, 'to_deg': 360.0, 'status': 'certified'}]
 """
 
+import heapq
 from collections.abc import Mapping, Sequence
 from typing import TypedDict
 
@@ -28,6 +29,10 @@ from .closed_form import Branch
 __all__ = ["certify_label", "Interval", "MIN_WIDTH_DEG"]
 
 MIN_WIDTH_DEG = 1e-7
+# Each interval splits until decided or narrower than MIN_WIDTH_DEG; where a discriminant stays
+# within rounding of zero over a stretch (a branch that touches its boundary without crossing),
+# that would be millions of intervals: past this many evaluations the rest is undecided.
+MAX_EVALUATIONS = 5_000
 BITS = 64
 
 
@@ -62,17 +67,24 @@ def certify_label(branch: Branch, c_name: str, s_name: str, lo_deg: float, hi_de
     if not discriminants:
         return [{"from_deg": float(lo_deg), "to_deg": float(hi_deg), "status": "certified"}]
     pieces: list[tuple[float, float, str]] = []
-    stack = [(float(lo_deg), float(hi_deg))]
+    # widest first: if the evaluations run out, what is left undecided is the finest part
+    queue = [(-(float(hi_deg) - float(lo_deg)), float(lo_deg), float(hi_deg))]
+    evaluations = 0
     with flint.ctx.workprec(BITS):
-        while stack:
-            lo, hi = stack.pop()
+        while queue:
+            _, lo, hi = heapq.heappop(queue)
+            evaluations += 1
+            if evaluations > MAX_EVALUATIONS:  # a discriminant flat at zero over a stretch: left undecided
+                pieces += [(lo, hi, "undecided")] + [(a, b, "undecided") for _, a, b in queue]
+                break
             status = _status(discriminants, c_name, s_name, lo, hi, parameters)
             if status is None and hi - lo < MIN_WIDTH_DEG:
                 with flint.ctx.workprec(4 * BITS):
                     status = _status(discriminants, c_name, s_name, lo, hi, parameters) or "undecided"
             if status is None:
                 middle = (lo + hi) / 2
-                stack += [(middle, hi), (lo, middle)]
+                heapq.heappush(queue, (lo - middle, lo, middle))
+                heapq.heappush(queue, (middle - hi, middle, hi))
             else:
                 pieces.append((lo, hi, status))
     return _merged(pieces)
@@ -80,7 +92,7 @@ def certify_label(branch: Branch, c_name: str, s_name: str, lo_deg: float, hi_de
 
 def _merged(pieces: Sequence[tuple[float, float, str]]) -> list[Interval]:
     merged: list[Interval] = []
-    for lo, hi, status in pieces:
+    for lo, hi, status in sorted(pieces):
         if merged and merged[-1]["status"] == status and merged[-1]["to_deg"] == lo:
             merged[-1]["to_deg"] = hi
         else:

@@ -59,25 +59,28 @@ def _without_positive_number(expr: sympy.Expr) -> sympy.Expr:
 
 
 def closed_forms(compiled: Compiled) -> list[Branch]:
-    """Every branch (all label combinations of the dyads and sliders) of ``compiled``."""
-    specs = compiled.implicit
-    return [_branch(compiled, labels) for labels in itertools.product(*(spec.labels for spec in specs))]
+    """Every branch (all label combinations of the dyads and sliders) of ``compiled``; a point
+    without modes of its own (an inversor's second intersection) follows the others."""
+    moded = [spec for spec in compiled.implicit if spec.labels]
+    return [_branch(compiled, dict(zip((spec.point for spec in moded), labels)))
+            for labels in itertools.product(*(spec.labels for spec in moded))]
 
 
-def _branch(compiled: Compiled, labels: Sequence[str]) -> Branch:
-    """The branch with ``labels[i]`` for the i-th implicit point, each built on the ones before it."""
+def _branch(compiled: Compiled, chosen: dict[str, str]) -> Branch:
+    """The branch with the label ``chosen[point]`` for each point with modes, each built on the ones before it."""
     inputs, specs = compiled.circles, compiled.implicit
     substitution: dict[sympy.Symbol, sympy.Expr] = {}
     discriminants: dict[str, sympy.Expr] = {}
-    for spec, label in zip(specs, labels):
-        (x, y), discriminants[spec.point] = spec.closed_form(substitution, spec.sign(label), inputs)
+    for spec in specs:
+        sigma = spec.sign(chosen[spec.point]) if spec.labels else 1
+        (x, y), discriminants[spec.point] = spec.closed_form(substitution, sigma, inputs)
         substitution.update({symbol(spec.unknowns[0]): x, symbol(spec.unknowns[1]): y})
     values = {u: substitution[symbol(u)] for spec in specs for u in spec.unknowns}
     for unknown, definition in compiled.definitions.items():
         values[unknown] = _output_value(definition, substitution, inputs)
-    chosen = dict(zip((spec.point for spec in specs), labels))
+    labels = list(chosen.values())
     label = labels[0] if len(labels) == 1 else " ".join(f"{p}:{l}" for p, l in chosen.items())
-    selected = all(chosen[spec.point] == spec.branch for spec in specs)
+    selected = all(chosen[spec.point] == spec.branch for spec in specs if spec.labels)
     return Branch(label or "unique", chosen, values, discriminants, selected)
 
 

@@ -48,7 +48,7 @@ class StableBranch:
         arguments = [v for pair in self.half_angles for v in pair]
         self.dyads: list[StableEvaluator] = []  # every implicit point's, in construction order
         for spec in compiled.implicit:
-            sigma = float(spec.sign(branch.labels[spec.point]))
+            sigma = float(spec.sign(branch.labels[spec.point])) if spec.labels else 1.0
             self.dyads.append(spec.stable_evaluator(fix, list(arguments), self.half_angles, sigma))
             arguments += [symbol(u) for u in spec.unknowns]
 

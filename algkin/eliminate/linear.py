@@ -22,7 +22,7 @@ px*(px**2 - 2*px + py**2)*(px**4 - 4*px**3 + 2*px**2*py**2 + 5*px**2 - 4*px*py**
 
 from collections.abc import Sequence
 
-from .methods import cheapest, resultant_step
+from .methods import cheapest, resultant_chain, resultant_step
 from .protocol import Backend, P
 from .request import EliminationRequest, MethodOutcome
 
@@ -41,16 +41,25 @@ def linear_elimination(backend: Backend[P], polys: list[P], request: Elimination
     extraneous factors can only be theirs.
     """
     outcome = MethodOutcome(polys)
+    original = polys
     remaining = list(request.eliminate)
+    closing = False  # whether a multiplier held a kept variable
     while True:
         present: set[str] = set().union(*(backend.variables(p) for p in outcome.left))
         remaining = [v for v in remaining if v in present]  # substituted away already (prepare)
         if not remaining:
+            if closing and all(backend.is_zero(p) for p in outcome.left):
+                # the multiplier was the eliminant itself, every equation divided by it (an inversor's
+                # straight line, where a spurious component hides it): resultants from the start,
+                # whose factors the witnesses choose step by step
+                return MethodOutcome(original, log=[("linear-left-nothing", "")]).then(
+                    resultant_chain(backend, original, request))
             return outcome
         allowed = set(request.parameters) if len(remaining) > 2 else set(backend.names) - set(remaining)
         polys = [p for p in outcome.left if not backend.is_zero(p)]
         found = _linear_unknown(backend, polys, remaining, allowed)
         if found is not None:
+            closing = closing or not backend.variables(found[2]) <= set(request.parameters)
             # after the last unknown, the multiplier's factors are left for factoring to divide out
             outcome = outcome.then(_substitution(backend, polys, found, len(remaining) > 1, request))
             remaining.remove(found[1])

@@ -19,7 +19,7 @@ import sympy
 
 from ..errors import SceneError, UsageError
 from ..system import System, symbol
-from .constructions import Builder, Construction, Indicator
+from .constructions import Builder, Construction, Indicator, Unbuildable
 from .expr import MAX_VALUE_BITS, bits_bound
 from .implicit import DyadSpec, ImplicitSpec, SliderSpec
 from .implicit.algebra import Circles
@@ -149,7 +149,10 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
                 _check_finite(scene, f"points.{name}", item)
         _check_lengths(scene, name, construction)
         _check_direction(scene, name, construction)
-        x, y = construction.build(name, coords, builder)
+        try:
+            x, y = construction.build(name, coords, builder)
+        except Unbuildable as err:
+            raise SceneError(scene.source, f"points.{name}", str(err)) from None
         coords[name] = (sympy.expand(x), sympy.expand(y))
     definitions, output_unknowns, nonnegative = _output_equations(resolved, coords, builder)
     equations = [sympy.expand(eq) for eq in builder.equations]

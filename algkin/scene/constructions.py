@@ -12,10 +12,15 @@ from typing import Protocol
 
 import sympy
 
-from .implicit import DyadSpec, ImplicitSpec, SliderSpec
+from .implicit import DyadSpec, ImplicitSpec, MirrorSpec, SliderSpec
+from .implicit.mirror import mirror_equations
 from .implicit.base import Point
 
-__all__ = ["Construction", "Fixed", "Crank", "Dyad", "Slider", "Frame", "CONSTRUCTIONS", "Builder", "Indicator"]
+__all__ = ["Construction", "Fixed", "Crank", "Dyad", "Slider", "Frame", "CONSTRUCTIONS", "Builder", "Indicator", "Unbuildable"]
+
+
+class Unbuildable(ValueError):
+    """A construction that cannot make a point of its own (compile names the scene and the point)."""
 
 
 @dataclass(frozen=True)
@@ -39,11 +44,23 @@ class Builder:
         self.indicators: list[Indicator] = []
         self.dyads: dict[str, DyadSpec] = {}
         self.implicit: dict[str, ImplicitSpec] = {}  # every implicit point (dyads and sliders), in construction order
+        self.distances: list[tuple[frozenset[str], sympy.Expr]] = []  # |PQ| = l, as the constructions impose it
 
     def unknown(self, name: str) -> sympy.Symbol:
         symbol = sympy.Symbol(name, real=True)
         self.unknowns.append(symbol)
         return symbol
+
+    def distance(self, p: str, q: str, length: sympy.Expr) -> None:
+        """Record that the constructions hold ``|pq| = length``."""
+        self.distances.append((frozenset((p, q)), length))
+
+    def on_both_circles(self, centres: tuple[str, str], lengths: tuple[sympy.Expr, sympy.Expr]) -> list[str]:
+        """The points already held at ``lengths`` from both ``centres``: intersections of the same two circles."""
+        def held(p: str, length: sympy.Expr) -> set[str]:
+            return {name for pair, known in self.distances if p in pair and sympy.expand(known - length) == 0
+                    for name in pair - {p}}
+        return sorted(held(centres[0], lengths[0]) & held(centres[1], lengths[1]))
 
 
 class Construction(Protocol):
@@ -95,6 +112,7 @@ class Crank:
         c, s = builder.inputs[self.input]
         cos_phase, sin_phase = [(1, 0), (0, 1), (-1, 0), (0, -1)][self.quarter_turns % 4]
         px, py = coords[self.center]
+        builder.distance(self.center, name, self.length)
         return (
             px + self.length * (cos_phase * c - sin_phase * s),
             py + self.length * (sin_phase * c + cos_phase * s),
@@ -115,6 +133,11 @@ class Dyad:
         return self.bases
 
     def build(self, name: str, coords: Mapping[str, Point], builder: Builder) -> Point:
+        met = builder.on_both_circles(self.bases, self.lengths)
+        for base, length in zip(self.bases, self.lengths):
+            builder.distance(base, name, length)
+        if met:  # the circles' other intersection: by Vieta, never the point already there
+            return self._mirror(name, met, coords, builder)
         (px, py), (qx, qy) = coords[self.bases[0]], coords[self.bases[1]]
         x, y = builder.unknown(f"{name}_x"), builder.unknown(f"{name}_y")
         l1, l2 = self.lengths
@@ -128,6 +151,16 @@ class Dyad:
         spec = DyadSpec(point=name, unknowns=(x.name, y.name), branch=self.branch, base_p=(px, py),
                         base_q=(qx, qy), lengths=self.lengths)
         builder.dyads[name] = builder.implicit[name] = spec
+        return (x, y)
+
+    def _mirror(self, name: str, met: list[str], coords: Mapping[str, Point], builder: Builder) -> Point:
+        if len(met) > 1:
+            raise Unbuildable(f"its two circles meet only at {met[0]} and {met[1]}, both built already")
+        u, v = coords[self.bases[0]], coords[self.bases[1]]
+        x, y = builder.unknown(f"{name}_x"), builder.unknown(f"{name}_y")
+        builder.equations += mirror_equations((x, y), coords[met[0]], u, v, self.lengths)
+        builder.implicit[name] = MirrorSpec(point=name, unknowns=(x.name, y.name), branch=self.branch, base_p=u,
+                                            base_q=v, lengths=self.lengths, other=met[0], other_at=coords[met[0]])
         return (x, y)
 
 
@@ -153,6 +186,7 @@ class Slider:
 
     def build(self, name: str, coords: Mapping[str, Point], builder: Builder) -> Point:
         (px, py), (qx, qy) = coords[self.through], coords[self.to]
+        builder.distance(self.to, name, self.length)
         x, y = builder.unknown(f"{name}_x"), builder.unknown(f"{name}_y")
         dx, dy = self.direction
         builder.equations += [

@@ -3,6 +3,7 @@
 from .algebra import reduce_on_circles
 from .base import ImplicitSpec, StableEvaluator
 from .dyad import DyadSpec
+from .mirror import MirrorSpec
 from .slider import SliderSpec
 
-__all__ = ["ImplicitSpec", "StableEvaluator", "DyadSpec", "SliderSpec", "reduce_on_circles"]
+__all__ = ["ImplicitSpec", "StableEvaluator", "DyadSpec", "MirrorSpec", "SliderSpec", "reduce_on_circles"]

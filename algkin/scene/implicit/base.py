@@ -40,7 +40,7 @@ class ImplicitSpec(ABC):
     point: str
     unknowns: tuple[str, str]
     branch: str
-    labels: ClassVar[tuple[str, str]]  # the two assembly modes; the first has sigma = +1
+    labels: ClassVar[tuple[str, ...]]  # the two assembly modes (the first has sigma = +1), or none
     never_meets: ClassVar[str]  # why it cannot assemble, where its discriminant is negative
 
     def sign(self, label: str) -> int:
@@ -55,6 +55,11 @@ class ImplicitSpec(ABC):
         Earlier points' unknowns are replaced by ``substitution`` (their closed forms), and
         polynomials are reduced on the ``inputs``' circles.
         """
+
+    def side(self) -> tuple[sympy.Expr, str] | None:
+        """For a point without modes of its own: an expression in system variables that is > 0
+        where it lies as its scene says, and what is wrong where it does not; else ``None``."""
+        return None
 
     @abstractmethod
     def toggle_conditions(self) -> dict[str, sympy.Expr]:
