@@ -13,7 +13,6 @@ c_angle/2 + s_angle*sqrt((5 - 4*c_angle)*(c_angle + 5))/(5 - 4*c_angle) + 1
 """
 
 import itertools
-from collections.abc import Sequence
 from dataclasses import dataclass
 
 import sympy
