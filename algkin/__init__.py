@@ -22,6 +22,7 @@ __all__ = [
     "derive",
     "curve",
     "extremum",
+    "rates",
     "catalog_names",
     "interact",
     "AlgkinError",
@@ -34,6 +35,7 @@ from .scene import SceneBuilder, catalog_names, compile_scene, load_scene
 if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ loads them at run time)
     from .analyses.extremum import extremum
     from .analyses.quantities import load
+    from .analyses.rates import rates
     from .derivation.pipeline import curve, derive
     from .ui.widgets import interact
 
@@ -48,6 +50,10 @@ def __getattr__(name: str) -> Callable[..., Any]:
         from .analyses.extremum import extremum
 
         return extremum
+    if name == "rates":
+        from .analyses.rates import rates
+
+        return rates
     if name == "interact":  # ipywidgets only when called
         from .ui.widgets import interact
 

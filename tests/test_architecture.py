@@ -13,7 +13,7 @@ import algkin
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / ".importlinter"
 
-PUBLIC = ["load", "load_scene", "compile_scene", "derive", "curve", "extremum", "catalog_names", "interact",
+PUBLIC = ["load", "load_scene", "compile_scene", "derive", "curve", "extremum", "rates", "catalog_names", "interact",
           "AlgkinError", "SceneBuilder"]
 
 

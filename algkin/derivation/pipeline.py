@@ -27,7 +27,8 @@ from ..system import symbol
 from ..verify import Verification, verify_branches
 from .tasks import curve_task, eliminant_tasks
 
-__all__ = ["derive", "curve", "Derivation", "CurveResult", "witnesses", "certify_labels", "compile_and_branch"]
+__all__ = ["derive", "curve", "Derivation", "CurveResult", "witnesses", "certify_labels", "compile_and_branch",
+           "check_setup"]
 
 WITNESS_BITS = 256
 WITNESSES_PER_BRANCH = 3
@@ -196,6 +197,12 @@ def _checked(compiled, branches):
         while len(_CHECKED) > PREPARED_SCENES:
             _CHECKED.pop(next(iter(_CHECKED)))
     return _CHECKED[key][:4]
+
+
+def check_setup(compiled, branches):
+    """What an independent check of ``branches`` starts from, the dimensions at their defaults:
+    ``(system, indicators, [(labels, values, discriminants)], {input: (lo, hi) radians})``."""
+    return _checked(compiled, branches)
 
 
 def certify_labels(compiled, branches):

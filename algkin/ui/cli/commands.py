@@ -211,7 +211,26 @@ def _cmd_derive(args):
     result = derive(_scene_of(args), args.outputs, _method(args), args.backend, args.param, args.samples, args.seed)
     forms = [(f"eliminant of {u}", e.polynomial, "= 0") for u, e in result.eliminations.items()]
     forms += [(f"{u}, branch {b.label}", v, "") for b in result.branches for u, v in b.values.items()]
-    return _finish(args, out, result.to_json(), _report_derive, forms, _verdict(result.verification))
+    document, code = result.to_json(), _verdict(result.verification)
+    if args.rates:
+        document, rate_forms, rate_code = _rates(result, document, args)
+        forms, code = forms + rate_forms, max(code, rate_code)
+    return _finish(args, out, document, _report_derive, forms, code)
+
+
+def _rates(result, document, args):
+    """``derive --rates``: ``document`` with the rates' keys and timings, their LaTeX forms, the exit code."""
+    from ...analyses.rates import rates_of
+
+    found = rates_of(result, args.samples, args.seed)
+    document = dict(document, **found.to_json())
+    timings = dict(document["timings"], **found.timings)
+    timings["total"] = timings.pop("total") + sum(found.timings.values())  # still last, and still the whole
+    document["timings"] = timings
+    forms = [(f"{kind} of {u} per {found.input}, branch {b.label}", expr, "")
+             for b in found.branches for kind, rates in (("velocity", b.velocity), ("acceleration", b.acceleration))
+             for u, expr in rates.items()]
+    return document, forms, _verdict(found.verification)
 
 
 def _check_latex(args):

@@ -119,6 +119,10 @@ def build_parser():
     _common(derive)
     derive.add_argument("--outputs", nargs="+", metavar="OUTPUT",
                         help="outputs (names, points, dist(P, Q), P.x); default: the scene's")
+    derive.add_argument("--rates", action="store_true",
+                        help="also each output coordinate's velocity and acceleration per branch (derivatives "
+                             "in the input angle, per radian), checked against central differences of "
+                             "independent numeric solutions on --samples inputs")
     _full_forms(derive)
     curve = _command(commands, "curve", "implicit trajectory curve of a point")
     _common(curve)

@@ -136,9 +136,30 @@ def _report_derive(d):
         mark = "  (scene's choice)" if branch["selected"] else ""
         lines.append(f"  [{branch['label']}]{mark} valid when {_brief(branch['valid_when'])}")
         lines += [f"      {u} = {_brief(v)}" for u, v in branch["values"].items()]
-    lines += [_verification_line(d["verification"]), _timings_line(d["timings"])]
+    lines.append(_verification_line(d["verification"]))
     forms = [*d["eliminants"].values(), *(f for b in d["branches"] for f in (b["valid_when"], *b["values"].values()))]
-    return "\n".join(lines + _hint(forms))
+    if "rates" in d:
+        lines += _rates_lines(d)
+        forms += [f for b in d["rates"].values() for r in b.values() for f in r.values()]
+    return "\n".join(lines + [_timings_line(d["timings"])] + _hint(forms))
+
+
+def _rates_lines(d):
+    """``derive --rates``: per branch, each coordinate's velocity (') and acceleration ('') in the input."""
+    name = d["rates_input"]["name"]
+    lines = [f"rates in {name} (x' = dx/d{name}, x'' = d2x/d{name}2, per radian: the velocity and "
+             "acceleration for a unit input rate):"]
+    for label, rates in d["rates"].items():
+        lines.append(f"  [{label}]")
+        for u, r in rates.items():
+            lines += [f"      {u}' = {_brief(r['velocity'])}", f"      {u}'' = {_brief(r['acceleration'])}"]
+    v = d["rates_verification"]
+    if v["status"] == "skipped":
+        return lines + ["rates verification skipped (--samples 0)"]
+    verdict = "passed" if v["passed"] else "FAILED"
+    lines.append(f"rates verification {verdict}: {v['compared']} branch rates on {v['samples']} samples against "
+                 f"central differences of independent numeric solutions, max rel error {v['max_rel_error']:.2e}")
+    return lines + [f"  {f}" for f in v["failures"]]
 
 
 def _report_curve(d):
