@@ -59,6 +59,11 @@ class Mechanism:
     def y(self, point):
         return Quantity(self, f"{point}.y")
 
+    def angle(self, p, q, r=None):
+        """The direction of ``p`` -> ``q``, or with ``r`` the angle at ``q`` between ``qp`` and ``qr``
+        (in [0, 180]), as a ``Quantity`` in degrees."""
+        return Quantity(self, f"angle({p}, {q})" if r is None else f"angle({p}, {q}, {r})")
+
     def output(self, name):
         """A named output of the scene file (or any output text, e.g. ``"dist(A, B)"``)."""
         return Quantity(self, name)
@@ -104,17 +109,25 @@ class Quantity:
     @property
     def expr(self):
         """The closed form on the scene's chosen branch, in the input angle (``cos(theta)``,
-        ``sin(theta)``) and symbolic dimensions."""
-        return self._in_angle(self._problem.closed)
+        ``sin(theta)``) and symbolic dimensions; an angle in degrees (``acos``/``atan`` of the
+        closed form of the scalar standing for it, see ``algkin.analyses.extremum.angles``)."""
+        return self._in_angle(self.expr_cs)
 
     @property
     def expr_cs(self):
         """``expr`` in the system's symbols ``c_theta``, ``s_theta`` (as in ``derive``'s results)."""
-        return self._problem.closed
+        problem = self._problem
+        return problem.closed if problem.scale is None else problem.scale.expr(problem.closed)
+
+    @property
+    def degrees(self):
+        """Whether the quantity is an angle, its values in degrees."""
+        return self._problem.scale is not None
 
     @property
     def relation(self):
-        """The polynomial the quantity satisfies (= 0), in ``cos`` and ``sin`` of the input angle."""
+        """The polynomial the quantity satisfies (= 0), in ``cos`` and ``sin`` of the input angle
+        (an angle's: the polynomial of the scalar standing for it, ``symbol``)."""
         return self._in_angle(self._problem.eliminant)
 
     @property
@@ -143,7 +156,8 @@ class Quantity:
             for p in problem.parameters:
                 default = self.derivation.compiled.parameter_values[p.name]
                 numbers[p.name] = mpmath.mpf(str(values.get(p.name, default)))
-            return float(evaluate(problem.closed, numbers, MPMATH))
+            value = evaluate(problem.closed, numbers, MPMATH)
+            return float(value if problem.scale is None else problem.scale.degrees(value))
 
     def extremum(self, range=None, largest=False):  # noqa: A002 (the seed's word)
         """Critical points, minimum and maximum; closed forms in the symbolic dimensions."""

@@ -19,7 +19,7 @@ import sympy
 
 from ..scene import Compiled
 from ..scene.implicit import reduce_on_circles
-from ..scene.implicit.algebra import Circles
+from ..scene.implicit.algebra import Circles, tidy_ratio
 from ..system import symbol
 
 __all__ = ["Branch", "closed_forms", "reduce_on_circles"]
@@ -87,4 +87,21 @@ def _output_value(definition: sympy.Expr, substitution: dict[sympy.Symbol, sympy
                   inputs: Circles) -> sympy.Expr:
     if definition.is_Pow and definition.exp == sympy.Rational(1, 2):
         return sympy.sqrt(reduce_on_circles(definition.base.xreplace(substitution), inputs))
-    return sympy.expand(reduce_on_circles(definition, inputs).xreplace(substitution), deep=False)
+    roots = [p for p in definition.atoms(sympy.Pow) if p.exp in (sympy.Rational(1, 2), sympy.Rational(-1, 2))]
+    if roots:  # an angle's cosine or sine over a length that varies: numerator / sqrt(square)
+        return _over_roots(definition, roots, substitution, inputs)
+    value = sympy.expand(reduce_on_circles(definition, inputs).xreplace(substitution), deep=False)
+    if not value.is_polynomial() and value.is_rational_function():  # over symbolic lengths: one fraction
+        return tidy_ratio(value)
+    return value
+
+
+def _over_roots(definition: sympy.Expr, roots: list[sympy.Pow], substitution: dict[sympy.Symbol, sympy.Expr],
+                inputs: Circles) -> sympy.Expr:
+    """``definition`` with each square root's radicand and the rest in closed form, apart: the
+    radicands reduced on the circles before they go under their roots."""
+    stand_ins = {p.base: sympy.Dummy("root") for p in roots}
+    plain = definition.xreplace({p: stand_ins[p.base] ** (2 * p.exp) for p in roots})
+    value = sympy.expand(reduce_on_circles(plain, inputs).xreplace(substitution), deep=False)
+    return value.xreplace({d: sympy.sqrt(reduce_on_circles(base.xreplace(substitution), inputs))
+                           for base, d in stand_ins.items()})

@@ -22,15 +22,37 @@ from ..system import System, symbol
 from .constructions import Builder, Construction, Indicator, Unbuildable
 from .expr import MAX_VALUE_BITS, bits_bound
 from .implicit import DyadSpec, ImplicitSpec, SliderSpec
-from .implicit.algebra import Circles
+from .implicit.algebra import Circles, reduce_on_circles
 from .implicit.base import Point
 from .load import parse_output
 from .model import Output, Scene
-from .names import check_names, check_symbol_name
+from .names import angle_unknowns, check_names, check_output_unknowns, check_symbol_name
 
-__all__ = ["Compiled", "DyadSpec", "SliderSpec", "compile_scene"]
+__all__ = ["Compiled", "DyadSpec", "SliderSpec", "AngleOutput", "compile_scene"]
 
 Substitution = Mapping[sympy.Symbol, sympy.Expr]
+
+
+@dataclass(frozen=True)
+class AngleOutput:
+    """An angle output compiled: the unknowns standing for it.
+
+    ``points`` (P, Q) is the direction of PQ, with ``cos`` and ``sin`` its cosine and sine;
+    (P, Q, R) the angle at Q between QP and QR, in [0, 180] degrees, with ``cos`` its
+    cosine (``sin`` is None). ``length`` is the divisor, |PQ| (or |QP|*|QR|), when it is a
+    constant of the mechanism; otherwise the helper unknown ``helper`` (>= 0) stands for it.
+    """
+
+    name: str
+    points: tuple[str, ...]
+    cos: str
+    sin: str | None
+    length: sympy.Expr | None
+    helper: str | None = None
+
+    @property
+    def direction(self) -> bool:
+        return len(self.points) == 2
 
 
 @dataclass(frozen=True)
@@ -47,6 +69,7 @@ class Compiled:
     parameter_values: dict[str, sympy.Expr]  # every scene parameter -> exact default
     symbolic: tuple[str, ...]  # parameters kept symbolic
     implicit: tuple[ImplicitSpec, ...] = ()  # dyads and sliders, in construction order
+    angles: dict[str, AngleOutput] = dataclasses.field(default_factory=dict)  # angle output name -> its unknowns
 
     @property
     def circles(self) -> Circles:
@@ -57,16 +80,29 @@ class Compiled:
 def _resolve_outputs(scene: Scene, requested: Sequence[str] | None) -> list[Output]:
     generated = check_names(scene)  # a scene built in Python has not been through the loader
     outputs: list[Output] = []
+    taken: dict[str, str] = {}  # unknowns of distance and angle outputs -> the output's name
     for text in requested or list(scene.outputs):
         if text in scene.outputs:
-            outputs.append(scene.outputs[text])
-            continue
-        output = parse_output(text, text, scene.points, scene.source, "--outputs")
-        if output.kind == "dist":
-            output = dataclasses.replace(output, name=f"dist_{output.points[0]}_{output.points[1]}")
-            if output.name in scene.parameters:
-                raise UsageError("--outputs", text, f"its unknown {output.name!r} is the name of a parameter")
-            check_symbol_name(scene.source, "--outputs", output.name, generated)
+            output = scene.outputs[text]
+        else:
+            output = parse_output(text, text, scene.points, scene.source, "--outputs")
+            if output.kind == "dist":
+                output = dataclasses.replace(output, name=f"dist_{output.points[0]}_{output.points[1]}")
+                if output.name in scene.parameters:
+                    raise UsageError("--outputs", text, f"its unknown {output.name!r} is the name of a parameter")
+                check_symbol_name(scene.source, "--outputs", output.name, generated)
+            elif output.kind == "angle":
+                output = dataclasses.replace(output, name="_".join(("angle",) + output.points))
+        if any(o.name == output.name and (o.kind, o.points) == (output.kind, output.points) for o in outputs):
+            continue  # asked for twice
+        unknowns = {"dist": (output.name,), "angle": angle_unknowns(output.name, output)}.get(output.kind, ())
+        try:
+            check_output_unknowns(scene.source, "--outputs", unknowns, generated, scene.parameters, taken,
+                                  output.name)
+        except SceneError as err:
+            if text in scene.outputs:
+                raise
+            raise UsageError("--outputs", text, str(err).split(": --outputs: ", 1)[-1]) from None
         outputs.append(output)
     if not outputs:
         raise SceneError(scene.source, "outputs", "the scene has no outputs; name some with --outputs")
@@ -154,7 +190,9 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
         except Unbuildable as err:
             raise SceneError(scene.source, f"points.{name}", str(err)) from None
         coords[name] = (sympy.expand(x), sympy.expand(y))
-    definitions, output_unknowns, nonnegative = _output_equations(resolved, coords, builder)
+    lengths = {v for c in scene.points.values() for length in _lengths(c) for v in length.free_symbols}
+    definitions, output_unknowns, nonnegative, angles = _output_equations(resolved, coords, builder, lengths,
+                                                                          scene.source)
     equations = [sympy.expand(eq) for eq in builder.equations]
     equations += [c**2 + s**2 - 1 for c, s in inputs.values()]
     _check_polynomial(scene, equations, symbolic)
@@ -167,7 +205,7 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
         nonnegative=tuple(nonnegative),
     )
     return Compiled(scene, system, coords, tuple(builder.dyads.values()), tuple(builder.indicators), definitions,
-                    output_unknowns, defaults, symbolic, tuple(builder.implicit.values()))
+                    output_unknowns, defaults, symbolic, tuple(builder.implicit.values()), angles)
 
 
 def _substituted(construction: Construction, substitution: Substitution) -> Construction:
@@ -223,10 +261,15 @@ def _check_polynomial(scene: Scene, equations: Sequence[sympy.Expr], symbolic: S
                              f"{scene.source} is not polynomial in it (keep it exact): {eq} = 0")
 
 
-def _check_lengths(scene: Scene, name: str, construction: Construction) -> None:
+def _lengths(construction: Construction) -> tuple[sympy.Expr, ...]:
+    """The lengths a construction declares (positive by the scene format)."""
     lengths = getattr(construction, "lengths", None) or (getattr(construction, "length", None),)
-    for length in lengths:
-        if length is not None and length.is_number and not length > 0:
+    return tuple(length for length in lengths if isinstance(length, sympy.Expr))
+
+
+def _check_lengths(scene: Scene, name: str, construction: Construction) -> None:
+    for length in _lengths(construction):
+        if length.is_number and not length > 0:
             raise SceneError(scene.source, f"points.{name}", f"length must be positive, got {length}")
 
 
@@ -237,11 +280,13 @@ def _check_direction(scene: Scene, name: str, construction: Construction) -> Non
                          "direction must not be zero, got [0, 0] with the parameters' default values")
 
 
-def _output_equations(outputs: Sequence[Output], coords: Mapping[str, Point], builder: Builder) \
-        -> tuple[dict[str, sympy.Expr], dict[str, tuple[str, ...]], list[str]]:
+def _output_equations(outputs: Sequence[Output], coords: Mapping[str, Point], builder: Builder,
+                      lengths: set[sympy.Symbol], source: str = "<scene>") \
+        -> tuple[dict[str, sympy.Expr], dict[str, tuple[str, ...]], list[str], dict[str, AngleOutput]]:
     definitions: dict[str, sympy.Expr] = {}
     output_unknowns: dict[str, tuple[str, ...]] = {}
     nonnegative: list[str] = []
+    angles: dict[str, AngleOutput] = {}
     implicit = {str(u) for u in builder.unknowns}
     for output in outputs:
         if output.kind == "dist":
@@ -252,6 +297,11 @@ def _output_equations(outputs: Sequence[Output], coords: Mapping[str, Point], bu
             definitions[output.name] = sympy.sqrt(square)
             nonnegative.append(output.name)
             output_unknowns[output.name] = (output.name,)
+            continue
+        if output.kind == "angle":
+            angles[output.name] = _angle_equations(output, coords, builder, lengths, definitions, nonnegative,
+                                                   source)
+            output_unknowns[output.name] = tuple(u for u in (angles[output.name].cos, angles[output.name].sin) if u)
             continue
         axes = {"point": "xy", "x": "x", "y": "y"}[output.kind]
         point = output.points[0]
@@ -265,4 +315,94 @@ def _output_equations(outputs: Sequence[Output], coords: Mapping[str, Point], bu
                 definitions[name] = value
             names.append(name)
         output_unknowns[output.name] = tuple(names)
-    return definitions, output_unknowns, nonnegative
+    return definitions, output_unknowns, nonnegative, angles
+
+
+def _angle_equations(output: Output, coords: Mapping[str, Point], builder: Builder, lengths: set[sympy.Symbol],
+                     definitions: dict[str, sympy.Expr], nonnegative: list[str], source: str) -> AngleOutput:
+    """The unknowns and equations of an angle output (see ``AngleOutput``).
+
+    A direction of PQ: ``L*cos - (Q - P)_x = 0``, ``L*sin - (Q - P)_y = 0`` with L = |PQ|;
+    an angle at Q: ``L*cos - dot(P - Q, R - Q) = 0`` with L = |QP|*|QR|. Where a length is
+    a constant of the mechanism (a bar: a crank, a dyad's or slider's length), L is that
+    constant and the equations are polynomial in the points' coordinates; otherwise the
+    helper unknown ``len_<name>`` (>= 0, with ``len**2 = L**2``) takes its place. Where both
+    sides at Q are bars, ``dot(P - Q, R - Q) = (|QP|**2 + |QR|**2 - |PR|**2) / 2``: the
+    cosine is then a polynomial in P and R alone (a four-bar's transmission angle, the
+    textbook's ``(l**2 + m**2 - a**2 - d**2 + 2*a*d*cos(theta)) / (2*l*m)``).
+    """
+    name = output.name
+    if len(output.points) == 2:
+        (px, py), (qx, qy) = (coords[p] for p in output.points)
+        sides = [(qx - px, qy - py)]
+        measures = [qx - px, qy - py]
+    else:
+        (px, py), (qx, qy), (rx, ry) = (coords[p] for p in output.points)
+        sides = [(px - qx, py - qy), (rx - qx, ry - qy)]
+        measures = [(px - qx) * (rx - qx) + (py - qy) * (ry - qy)]
+    squares = [sympy.expand(dx**2 + dy**2) for dx, dy in sides]
+    circles = list(builder.inputs.values())
+    if any(reduce_on_circles(square, circles) == 0 for square in squares):
+        raise SceneError(source, f"outputs.{name}", f"{output.text}: its points coincide, so it has no angle")
+    known = [_bar_square(square, builder) for square in squares]
+    first, second = known[0], known[-1]
+    if len(sides) == 2 and first is not None and second is not None:  # two bars at Q: the law of cosines
+        measures = [reduce_on_circles(sympy.expand((first + second - (px - rx) ** 2 - (py - ry) ** 2) / 2),
+                                      circles)]  # frees it of Q
+    constant_square = sympy.Mul(*[k for k in known if k is not None])
+    varying = sympy.expand(sympy.Mul(*[sq for sq, k in zip(squares, known) if k is None]))
+    constant = _length_of(constant_square, lengths)
+    if constant is None:  # an irrational length: left under the helper's square root
+        constant, varying = sympy.Integer(1), sympy.expand(constant_square * varying)
+    helper = None
+    divisor: sympy.Expr = constant
+    if any(k is None for k in known) or varying != 1:
+        helper = f"len_{name}"
+        unknown = builder.unknown(helper)
+        builder.equations.append(unknown**2 - varying)
+        definitions[helper] = sympy.sqrt(varying)
+        nonnegative.append(helper)
+        divisor = constant * unknown
+    names = [f"cos_{name}", f"sin_{name}"][:len(measures)]
+    for unknown_name, measure in zip(names, measures):
+        unknown = builder.unknown(unknown_name)
+        builder.equations.append(sympy.expand(divisor * unknown - measure))
+        definitions[unknown_name] = measure / (constant * sympy.sqrt(varying))
+    return AngleOutput(name, output.points, names[0], names[1] if len(names) > 1 else None,
+                       None if helper else constant, helper)
+
+
+def _bar_square(square: sympy.Expr, builder: Builder) -> sympy.Expr | None:
+    """``square`` = |PQ|**2 when it is a constant of the mechanism (free of the unknowns and the
+    inputs), else None.
+
+    It is constant when it reduces, on the inputs' circles, to a constant (a crank about its
+    centre, a frame point on a crank), or to a constant plus a multiple of one equation of the
+    points (a dyad's or a slider's circle ``|X - P|**2 - l**2``, a frame point on a dyad's bar).
+    """
+    moving = sorted(set(builder.unknowns) | {v for pair in builder.inputs.values() for v in pair}, key=str)
+    circles = list(builder.inputs.values())
+    reduced = reduce_on_circles(square, circles)
+    if not reduced.free_symbols & set(moving):
+        return reduced
+    monomial, coefficient = sympy.Poly(reduced, *moving).terms()[0]
+    for equation in builder.equations:
+        other = sympy.Poly(equation, *moving).coeff_monomial(monomial)
+        if other != 0:
+            rest = reduce_on_circles(sympy.expand(reduced - coefficient / other * equation), circles)
+            if not rest.free_symbols & set(moving):
+                return sympy.factor(rest)
+    return None
+
+
+def _length_of(square: sympy.Expr, lengths: set[sympy.Symbol]) -> sympy.Expr | None:
+    """The positive square root of a constant ``square`` as a polynomial over the rationals in
+    lengths the scene declares (so positive), or None (an irrational number, a coordinate)."""
+    if not square.free_symbols <= lengths:
+        return None
+    positive = {v: sympy.Dummy(v.name, positive=True) for v in square.free_symbols}
+    root = sympy.sqrt(sympy.factor(square).xreplace(positive)).xreplace({d: v for v, d in positive.items()})
+    if root == 0 or not root.is_polynomial(*root.free_symbols):
+        return None
+    coefficients = sympy.Poly(root, *root.free_symbols).coeffs() if root.free_symbols else [root]
+    return sympy.expand(root) if all(c.is_Rational for c in coefficients) else None

@@ -363,7 +363,7 @@ class _Loader:
             element = f"outputs.{name}"
             self.identifier(name, element)
             if not isinstance(text, str):
-                self.fail(element, "expected a string such as \"P\", \"dist(A, B)\" or \"P.x\"")
+                self.fail(element, "expected a string such as \"P\", \"dist(A, B)\", \"P.x\" or \"angle(A, B)\"")
             outputs[name] = parse_output(name, text, points, self.source, element)
             if outputs[name].kind == "dist" and name in taken:
                 self.fail(element, f"a distance output needs a name of its own, {name!r} is taken")
@@ -372,14 +372,27 @@ class _Loader:
 
 _DIST = re.compile(r"^\s*dist\(\s*(\w+)\s*,\s*(\w+)\s*\)\s*$")
 _COORD = re.compile(r"^\s*(\w+)\.([xy])\s*$")
+_ANGLE = re.compile(r"^\s*angle\s*\((.*)\)\s*$", re.DOTALL)
+_ANGLE_FORMS = "angle(P, Q) (the direction of PQ) or angle(P, Q, R) (the angle at Q between QP and QR)"
 
 
 def parse_output(name: str, text: str, points: Container[str], source: str = "<scene>",
                  element: str | None = None) -> Output:
-    """Read an output string: a point name, ``dist(P, Q)``, ``P.x`` or ``P.y``."""
+    """Read an output string: a point name, ``dist(P, Q)``, ``P.x``, ``P.y``, ``angle(P, Q)``
+    (the direction of PQ) or ``angle(P, Q, R)`` (the angle at Q between QP and QR, in [0, 180] deg).
+
+    >>> parse_output("mu", "angle(A, B, D)", "ABD")
+    Output(name='mu', kind='angle', points=('A', 'B', 'D'), text='angle(A, B, D)')
+    >>> parse_output("phi", "angle(D, D)", "D", "s.toml")
+    Traceback (most recent call last):
+    ...
+    algkin.errors.SceneError: s.toml: outputs.phi: angle(D, D) has no direction: its two points are the same point
+    """
     element = element or f"outputs.{name}"
     if match := _DIST.match(text):
         kind, refs = "dist", match.groups()
+    elif match := _ANGLE.match(text):
+        kind, refs = "angle", _angle_points(text, match.group(1), source, element)
     elif match := _COORD.match(text):
         kind, refs = match.group(2), (match.group(1),)
     else:
@@ -388,6 +401,21 @@ def parse_output(name: str, text: str, points: Container[str], source: str = "<s
         if ref not in points:
             raise SceneError(source, element, f"unknown point {ref!r} in {text!r}")
     return Output(name, kind, tuple(refs), text)
+
+
+def _angle_points(text: str, inside: str, source: str, element: str) -> tuple[str, ...]:
+    """The points of ``angle(...)``: two or three distinct names (the vertex apart from both ends)."""
+    refs = tuple(part.strip() for part in inside.split(","))
+    if len(refs) not in (2, 3) or not all(re.fullmatch(r"\w+", r) for r in refs):
+        raise SceneError(source, element, f"{text.strip()!r}: expected {_ANGLE_FORMS}")
+    if len(refs) == 2 and refs[0] == refs[1]:
+        raise SceneError(source, element, f"{text.strip()} has no direction: its two points are the same point")
+    if len(refs) == 3 and refs[1] in (refs[0], refs[2]):
+        raise SceneError(source, element, f"{text.strip()} has no angle at {refs[1]}: a side from {refs[1]} "
+                                          "to itself has no direction")
+    if len(refs) == 3 and refs[0] == refs[2]:
+        raise SceneError(source, element, f"{text.strip()} is the angle between a segment and itself (always 0)")
+    return refs
 
 
 def as_scene(scene: object) -> Scene:

@@ -2,7 +2,8 @@
 
 A point ``P`` brings the variables ``P_x`` and ``P_y``, an input ``t`` the pair ``c_t``,
 ``s_t`` (and ``t_t``, its half-angle tangent, where an extremum is sought), and a
-distance output its own name as an unknown. A parameter or output that takes one of
+distance output its own name as an unknown, an angle output ``phi`` the unknowns
+``cos_phi`` (and ``sin_phi`` for a direction; ``len_phi`` where a side's length varies). A parameter or output that takes one of
 those names, or two generated names that coincide (a point ``c`` and an input ``x`` both
 give ``c_x``), would silently merge two variables into one: that is bad input. So is a
 symbol name that ``sympy.parse_expr`` reads back as something else (``E``, ``I``,
@@ -24,7 +25,7 @@ from functools import lru_cache
 from ..errors import SceneError
 from .model import Output, Scene
 
-__all__ = ["generated_names", "check_names", "check_symbol_name", "misread"]
+__all__ = ["generated_names", "check_names", "check_symbol_name", "check_output_unknowns", "misread", "angle_unknowns"]
 
 
 @lru_cache(maxsize=1)
@@ -65,15 +66,47 @@ def check_symbol_name(source: str, element: str, name: str, generated: Mapping[s
                                           "from expression strings; choose another")
 
 
+def angle_unknowns(name: str, output: Output) -> tuple[str, ...]:
+    """The unknowns an angle output named ``name`` may bring: ``cos_<name>``, for a direction
+    ``sin_<name>`` too, and ``len_<name>``, the length its cosine is divided by where that is
+    not a constant of the mechanism (a helper, known to be >= 0).
+
+    >>> from algkin.scene.load import parse_output
+    >>> angle_unknowns("phi", parse_output("phi", "angle(D, B)", "DB"))
+    ('cos_phi', 'sin_phi', 'len_phi')
+    """
+    direction = len(output.points) == 2
+    return (f"cos_{name}",) + ((f"sin_{name}",) if direction else ()) + (f"len_{name}",)
+
+
+def check_output_unknowns(source: str, element: str, unknowns: tuple[str, ...], generated: Mapping[str, str],
+                          parameters: Mapping[str, object], taken: dict[str, str], owner: str) -> None:
+    """Refuse unknowns (of the output ``owner``) that would merge with a generated variable, a
+    parameter or another output's unknown (``taken``: unknown -> its output, updated here)."""
+    for unknown in unknowns:
+        check_symbol_name(source, element, unknown, generated)
+        if unknown in parameters:
+            raise SceneError(source, element, f"its unknown {unknown!r} is the name of a parameter; rename one")
+        if taken.get(unknown, owner) != owner:
+            raise SceneError(source, element, f"its unknown {unknown!r} is already an unknown of output "
+                                              f"{taken[unknown]!r}; rename one")
+        taken[unknown] = owner
+
+
 def check_names(scene: Scene) -> dict[str, str]:
     """Raise SceneError if any scene name collides with a generated one (see the module doc)."""
     generated = generated_names(scene)
     for name in scene.parameters:
         check_symbol_name(scene.source, f"parameters.{name}", name, generated)
+    taken: dict[str, str] = {}
     for name, output in scene.outputs.items():
         element = f"outputs.{name}"
         if output.kind == "dist":
             check_symbol_name(scene.source, element, name, generated)
+            check_output_unknowns(scene.source, element, (name,), generated, scene.parameters, taken, name)
+        elif output.kind == "angle":
+            check_output_unknowns(scene.source, element, angle_unknowns(name, output), generated,
+                                  scene.parameters, taken, name)
         elif name in generated and name != _coordinate_name(output):
             raise SceneError(scene.source, element, f"the name {name!r} is taken by {generated[name]}")
     return generated

@@ -70,6 +70,7 @@ def quantity_figure(quantity, found, derivative=False, points=721):
     figure = new_figure()
     axes = figure.add_subplot()
     name, text = quantity.input.name, quantity.text
+    text += " (degrees)" if quantity.degrees else ""
     label = f"d {text} / d {name}" if derivative else text
     axes.plot(degrees, values, color="tab:blue", label=label)
     mark = 0.0 if derivative else float(best.value)
@@ -124,10 +125,10 @@ def _within(region, x):
 
 def _certified_minimum(found, quantity, symbol, x):
     """The minimum at one dimension, by the fixed-dimension certified path (independent of the regions)."""
-    from ..analyses.extremum import extreme, points_at
+    from ..analyses.extremum import extreme_at
 
     values = {symbol: sympy.Rational(str(x))}
-    return float(extreme(points_at(found.problem, found.stationary, values, *found.range)).value)
+    return float(extreme_at(found.problem, found.stationary, values, *found.range).value)
 
 
 def accuracy_figure(result):

@@ -10,19 +10,22 @@ With a dimension symbolic, the minimum and its input come as closed forms in it:
 sqrt(b**2 + 160000) - 350
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
+import mpmath
 import sympy
 
 from ...derivation.pipeline import derive
 from ...errors import UsageError
 from ...scene.model import range_problem
 from ...system import symbol
-from .closed import ClosedForm, closed_form
-from .critical import CriticalPoint, Problem, critical_points, extreme, points_at, stationary_factors
+from .angles import AngleScale, direction_problem
+from .closed import ClosedForm, closed_form, describe, value_factors
+from .critical import (DIGITS, CriticalPoint, Problem, critical_points, extreme, meeting_factors, points_at,
+                       stationary_factors)
 
 __all__ = ["extremum", "extremum_of", "problem_for", "Extremum", "ClosedForm", "CriticalPoint",
-           "critical_points", "points_at", "extreme"]
+           "critical_points", "points_at", "extreme", "extreme_at", "AngleScale"]
 
 
 @dataclass
@@ -40,6 +43,7 @@ class Extremum:
     closed_form: ClosedForm = None
     problem: Problem = None
     stationary: list = None  # stationary factors in t and the symbolic dimensions
+    exact: dict = None  # an angle output: 'minimum'/'maximum' -> (degrees, via) exact expressions or None
 
     def to_json(self):
         document = {"scene": self.scene, "of": self.output, "input": self.input, "range": list(self.range),
@@ -47,24 +51,41 @@ class Extremum:
                     "critical_points": [p.to_json() for p in self.critical_points if p.kind != "endpoint"],
                     "endpoints": [p.to_json() for p in self.critical_points if p.kind == "endpoint"],
                     "minimum": self.minimum.to_json(), "maximum": self.maximum.to_json()}
+        scale = self.problem.scale if self.problem is not None else None
+        if scale is not None:
+            document["angle"] = scale.to_json()
+            for key, (degrees, via) in (self.exact or {}).items():
+                document[key].update(exact=_text(degrees), exact_via=_text(via))
         if self.closed_form is not None:
             document["closed_form"] = self.closed_form.to_json()
         return document
 
 
-def problem_for(derived, output):
-    """The extremum problem of ``output`` (a scalar) in a derivation of it."""
+def _text(expr):
+    return None if expr is None else str(expr)
+
+
+def problem_for(derived, output, degrees=None):
+    """The extremum problem of ``output`` (a scalar or an angle) in a derivation of it; a
+    direction's reference is chosen for its motion over ``degrees`` (lo, hi), by default the
+    input's range."""
     compiled = derived.compiled
     if len(compiled.system.inputs) != 1:
         raise UsageError("scene", compiled.scene.name, "an extremum needs exactly one input")
     (name, (c_name, s_name)), = compiled.system.inputs.items()
-    (unknowns,) = compiled.outputs.values()
+    ((output_name, unknowns),) = compiled.outputs.items()
+    c, s, t = symbol(c_name), symbol(s_name), symbol(f"t_{name}")
+    parameters = tuple(symbol(p) for p in compiled.system.parameters)
+    angle = compiled.angles.get(output_name)
+    if angle is not None and angle.direction:
+        lo, hi = degrees if degrees is not None else compiled.scene.inputs[name].range_degrees
+        return direction_problem(derived, angle, c, s, t, parameters, lo, hi, output)
     if len(unknowns) != 1:
-        raise UsageError("--of", output, "name a scalar output (a distance or a coordinate), not a point")
+        raise UsageError("--of", output, "name a scalar output (a distance, a coordinate or an angle), not a point")
     chosen = next(b for b in derived.branches if b.selected)
+    scale = AngleScale(angle.cos, None) if angle is not None else None
     return Problem(derived.eliminations[unknowns[0]].polynomial, chosen.values[unknowns[0]],
-                   symbol(unknowns[0]), symbol(c_name), symbol(s_name), symbol(f"t_{name}"),
-                   tuple(symbol(p) for p in compiled.system.parameters))
+                   symbol(unknowns[0]), c, s, t, parameters, scale, tuple(chosen.discriminants.values()))
 
 
 def _range_degrees(spec, angle_range):
@@ -93,14 +114,78 @@ def extremum(scene, output, angle_range=None, params=(), largest=False, method="
 
 
 def extremum_of(derived, output, angle_range=None, largest=False, backend="flint"):
-    """``extremum`` of an output of an existing derivation (with that output alone)."""
-    problem = problem_for(derived, output)
-    (name,) = derived.compiled.system.inputs
+    """``extremum`` of an output of an existing derivation (with that output alone).
+
+    An angle output's values are in degrees (see ``angles``): its extrema are the via's,
+    mapped, and the least and greatest exchanged where the angle falls as its via grows.
+    """
+    inputs = derived.compiled.system.inputs
+    if len(inputs) != 1:
+        raise UsageError("scene", derived.compiled.scene.name, "an extremum needs exactly one input")
+    (name,) = inputs
     lo, hi = _range_degrees(derived.compiled.scene.inputs[name], angle_range)
+    problem = problem_for(derived, output, (lo, hi))
+    scale = problem.scale
+    flip = scale is not None and scale.decreasing
     defaults = {p: sympy.Rational(str(derived.compiled.parameter_values[p.name])) for p in problem.parameters}
     stationary = stationary_factors(problem, backend)
     points = points_at(problem, stationary, defaults, lo, hi)
-    closed = closed_form(problem, stationary, defaults, lo, hi, largest) if problem.parameters else None
+    closed = closed_form(problem, stationary, defaults, lo, hi, largest != flip) if problem.parameters else None
+    exact = None
+    if scale is not None:
+        exact = {key: _exact(problem, stationary, defaults, extreme(points, largest=(key == "maximum") != flip))
+                 for key in ("minimum", "maximum")}
+        points = [in_degrees(p, scale) for p in points]
+        closed = closed if closed is None else closed_in_degrees(closed, scale)
     return Extremum(derived.compiled.scene.name, output, name, (float(lo), float(hi)),
                     {p.name: v for p, v in defaults.items()}, points, extreme(points), extreme(points, True),
-                    closed, problem, stationary)
+                    closed, problem, stationary, exact)
+
+
+def _exact(problem, stationary, defaults, best):
+    """``(degrees, via)`` of an angle's extremum ``best`` at the dimensions ``defaults``, as exact
+    expressions (radicals); ``(None, None)`` where the via's root has none of degree <= 4."""
+    fixed = problem.at(defaults)
+    factors = [sympy.expand(f.xreplace(defaults)) for f in stationary]
+    with mpmath.workdps(DIGITS):
+        found = describe(fixed, factors, value_factors(fixed), {}, best, meeting_factors(fixed))
+        if found.value is None or not _equal(found.value, best.value):
+            return None, None
+        return problem.scale.expr(found.value), found.value
+
+
+def _equal(expr, value):
+    number = complex(sympy.N(expr, DIGITS))
+    return abs(number.imag) < 1e-20 and abs(number.real - float(value)) <= 1e-12 * (1 + abs(float(value)))
+
+
+def in_degrees(point, scale):
+    """A critical point of an angle's via as one of the angle: its value in degrees, and its
+    kind turned round where the angle falls as the via grows."""
+    kind = {"minimum": "maximum", "maximum": "minimum"}.get(point.kind, point.kind) if scale.decreasing \
+        else point.kind
+    return CriticalPoint(point.input_deg, scale.degrees(point.value), kind, point.enclosure, point.value)
+
+
+def closed_in_degrees(form, scale):
+    """The closed form of an angle's via's extremum as the angle's, in degrees."""
+    values = [None if v is None else scale.expr(v) for v in form.region_values]
+    regions, k = [], 0
+    for region in form.regions:
+        region = dict(region)
+        if region["at"] != "nowhere":
+            region["value"] = _text(values[k])
+            if "sample_value" in region:
+                region["sample_value"] = float(scale.degrees(region["sample_value"]))
+        k += 1
+        regions.append(region)
+    return replace(form, value=scale.expr(form.value), regions=regions, region_values=values, via_value=form.value)
+
+
+def extreme_at(problem, stationary, values, lo, hi, largest=False):
+    """The certified minimum (maximum with ``largest``) of ``problem``'s output at the dimensions
+    ``values``, over ``[lo, hi]`` degrees: an angle's in degrees."""
+    scale = problem.scale
+    flip = scale is not None and scale.decreasing
+    best = extreme(points_at(problem, stationary, values, lo, hi), largest != flip)
+    return best if scale is None else in_degrees(best, scale)

@@ -44,11 +44,15 @@ class ClosedForm:
     valid_when: list  # strings in sympy syntax
     regions: list  # one parameter: [{from, to, at, input, value}], else []
     region_values: list  # each region's value as sympy: drawn without parsing the text back
+    via_value: sympy.Expr = None  # an angle output: the value of the scalar standing for it
 
     def to_json(self):
-        return {"value": _text(self.value), "input": _text(self.input), "at": self.at,
-                "input_polynomial": _text(self.input_polynomial), "valid_when": self.valid_when,
-                "regions": self.regions}
+        document = {"value": _text(self.value), "input": _text(self.input), "at": self.at,
+                    "input_polynomial": _text(self.input_polynomial), "valid_when": self.valid_when,
+                    "regions": self.regions}
+        if self.via_value is not None:
+            document["via_value"] = _text(self.via_value)
+        return document
 
 
 def _text(expr):
@@ -80,7 +84,7 @@ def _matching_factor(factors, variable, target, values):
             continue
         poly = sympy.Poly(factor.xreplace(values), variable)
         scale = sum(abs(mpmath.mpf(sympy.N(c, DIGITS))) * abs(target) ** k
-                    for k, c in enumerate(reversed(poly.all_coeffs())))
+                    for k, c in enumerate(reversed(poly.all_coeffs()))) or 1  # at 0, a root there is exact
         residual = abs(mpmath.polyval([mpmath.mpf(sympy.N(c, DIGITS)) for c in poly.all_coeffs()], target))
         if scale and residual <= MATCH * scale and (best is None or residual / scale < best[0]):
             best = (residual / scale, factor)
@@ -306,9 +310,11 @@ def _region(lo, hi, sample, found):
 
 
 def _inside(lo, hi):
-    """A simple rational strictly between two cuts (either may be None for infinity)."""
+    """A simple rational strictly between two cuts (either may be None for infinity); not 0,
+    where a dimension degenerates (a crank of length 0 moves nothing), when the interval has more."""
     if lo is None:
         return sympy.Rational(Fraction(hi - max(1.0, abs(hi))).limit_denominator(1000))
     if hi is None:
         return sympy.Rational(Fraction(lo + max(1.0, abs(lo))).limit_denominator(1000))
-    return sympy.Rational(Fraction((lo + hi) / 2).limit_denominator(10**6))
+    middle = sympy.Rational(Fraction((lo + hi) / 2).limit_denominator(10**6))
+    return middle or sympy.Rational(Fraction((lo + 3 * hi) / 4).limit_denominator(10**6))

@@ -9,6 +9,7 @@ square roots, no numeric minimiser.
 """
 
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 
 import flint
 import mpmath
@@ -19,6 +20,9 @@ from ...errors import ComputationError, UsageError
 from ...evaluate import MPMATH, evaluate
 from ...system.angles import half_angle_numerator, tangent_to_degrees
 from ...system.convert import real_roots
+
+if TYPE_CHECKING:
+    from .angles import AngleScale
 
 __all__ = ["Problem", "CriticalPoint", "critical_points", "points_at", "extreme",
            "stationary_factors", "meeting_factors", "ROOT_BITS"]
@@ -38,11 +42,14 @@ class Problem:
     s: sympy.Symbol
     t: sympy.Symbol  # tan(theta / 2)
     parameters: tuple  # symbols left symbolic
+    scale: "AngleScale | None" = None  # an angle output: how its degrees follow from u (``angles``)
+    valid: tuple = ()  # the chosen branch's discriminants: it assembles where all are >= 0
 
     def at(self, values):
         """The problem with parameters fixed (``values``: symbol -> rational)."""
         return replace(self, eliminant=sympy.expand(self.eliminant.xreplace(values)),
-                       closed=self.closed.xreplace(values), parameters=())
+                       closed=self.closed.xreplace(values), parameters=(),
+                       valid=tuple(d.xreplace(values) for d in self.valid))
 
     def half_angle(self):
         """``F`` and ``dF/dtheta`` as polynomials in ``u``, ``t`` and the parameters."""
@@ -56,10 +63,22 @@ class Problem:
         return half_angle_numerator(expr, self.c, self.s, self.t)
 
     def value(self, degrees):
-        """The closed form at ``degrees`` (mpmath), nan where it is not real."""
+        """The closed form at ``degrees`` (mpmath), nan where it is not real or the branch does
+        not assemble (a closed form may be real past that: a transmission angle's cosine)."""
         angle = mpmath.radians(degrees)
-        result = evaluate(self.closed, {self.c.name: mpmath.cos(angle), self.s.name: mpmath.sin(angle)}, MPMATH)
-        return result if isinstance(result, mpmath.mpf) else mpmath.nan
+        at = {self.c.name: mpmath.cos(angle), self.s.name: mpmath.sin(angle)}
+        result = _evaluated(self.closed, at)
+        if not isinstance(result, mpmath.mpf) or any(evaluate(d, at, MPMATH) < 0 for d in self.valid):
+            return mpmath.nan
+        return result
+
+
+def _evaluated(expr, values):
+    """``expr`` in mpmath, nan where it divides by zero (a direction's via at its cut)."""
+    try:
+        return evaluate(expr, values, MPMATH)
+    except ZeroDivisionError:
+        return mpmath.nan
 
 
 @dataclass(frozen=True)
@@ -70,11 +89,14 @@ class CriticalPoint:
     value: mpmath.mpf
     kind: str  # minimum, maximum, inflection, dead centre, endpoint
     enclosure: object = None  # arb ball of the input in degrees; None at a range end
+    via: mpmath.mpf = None  # an angle output: the value of the scalar standing for it (``angles``)
 
     def to_json(self):
         point = {"input_deg": float(self.input_deg), "value": float(self.value), "kind": self.kind}
         if self.enclosure is not None:
             point["enclosure_deg"] = self.enclosure.str(20)
+        if self.via is not None:
+            point["via"] = float(self.via)
         return point
 
 
@@ -90,16 +112,26 @@ def stationary_factors(problem, backend="flint"):
 
 def meeting_factors(problem):
     """Factors, in ``t`` and the parameters, of ``F``'s discriminant in ``u``: where two values
-    of the output meet (dead centres among them); none where ``u`` is polynomial in the input."""
+    of the output meet (dead centres among them); none where ``u`` is polynomial in the input.
+    With them, the factors of the branch's own discriminants (``Problem.valid``): where it
+    stops assembling even though the output's values do not meet (both modes give a
+    transmission angle the same cosine)."""
     eliminant = problem.numerator_in_t(problem.eliminant)
-    if sympy.degree(eliminant, problem.u) < 2:
-        return []
-    names = [p.name for p in problem.parameters]
-    try:
-        return eliminate([eliminant, sympy.diff(eliminant, problem.u)], [problem.u.name],
-                         [problem.t.name] + names, method="resultant").factors
-    except ComputationError:
-        return []  # the discriminant is a constant: the values never meet
+    found = []
+    if sympy.degree(eliminant, problem.u) >= 2:
+        names = [p.name for p in problem.parameters]
+        try:
+            found = eliminate([eliminant, sympy.diff(eliminant, problem.u)], [problem.u.name],
+                              [problem.t.name] + names, method="resultant").factors
+        except ComputationError:
+            pass  # the discriminant is a constant: the values never meet
+    for discriminant in problem.valid:
+        for factor, _ in sympy.factor_list(problem.numerator_in_t(discriminant))[1]:
+            factor = sympy.expand(factor)
+            if factor.has(problem.t) and not any(sympy.expand(factor - f) == 0 or sympy.expand(factor + f) == 0
+                                                 for f in found):
+                found.append(factor)
+    return found
 
 
 def critical_points(problem, factors, lo, hi, meeting=None):
@@ -169,7 +201,7 @@ def _value_at_meeting(problem, degrees):
     """The branch's value where its square root's argument is zero up to rounding (the
     imaginary part then tiny), nan where the branch is not real."""
     angle = mpmath.radians(degrees)
-    result = evaluate(problem.closed, {problem.c.name: mpmath.cos(angle), problem.s.name: mpmath.sin(angle)}, MPMATH)
+    result = _evaluated(problem.closed, {problem.c.name: mpmath.cos(angle), problem.s.name: mpmath.sin(angle)})
     if isinstance(result, mpmath.mpc):
         tiny = mpmath.mpf(10) ** (-DIGITS // 3) * (1 + abs(result))
         return result.real if abs(result.imag) <= tiny else mpmath.nan

@@ -111,14 +111,14 @@ def build_parser():
     show = _command(commands, "show", "the scene and the system it compiles to")
     _common(show, method=False)
     show.add_argument("--outputs", nargs="+", metavar="OUTPUT",
-                      help="outputs (names, points, dist(P, Q), P.x); default: the scene's")
+                      help="outputs (names, points, dist(P, Q), P.x, angle(P, Q), angle(P, Q, R)); default: the scene's")
     show.add_argument("--param", action="append", default=[], metavar="NAME",
                       help="keep this dimension symbolic (repeatable)")
     _budget_options(show, terms=False)
     derive = _command(commands, "derive", "eliminants, closed-form branches, verification")
     _common(derive)
     derive.add_argument("--outputs", nargs="+", metavar="OUTPUT",
-                        help="outputs (names, points, dist(P, Q), P.x); default: the scene's")
+                        help="outputs (names, points, dist(P, Q), P.x, angle(P, Q), angle(P, Q, R)); default: the scene's")
     derive.add_argument("--rates", action="store_true",
                         help="also each output coordinate's velocity and acceleration per branch (derivatives "
                              "in the input angle, per radian), checked against central differences of "
@@ -131,10 +131,10 @@ def build_parser():
     verify = _command(commands, "verify", "closed forms against independent numeric solutions")
     _common(verify)
     verify.add_argument("--outputs", nargs="+", metavar="OUTPUT",
-                        help="outputs (names, points, dist(P, Q), P.x); default: the scene's")
+                        help="outputs (names, points, dist(P, Q), P.x, angle(P, Q), angle(P, Q, R)); default: the scene's")
     extremum = _command(commands, "extremum", "stationary points of an output over the input")
     _scene(extremum)
-    extremum.add_argument("--of", required=True, help="a scalar output: distance or coordinate")
+    extremum.add_argument("--of", required=True, help="a scalar output: distance, coordinate or angle (in degrees)")
     extremum.add_argument("--range", metavar="LO:HI", help="lo:hi in the input's unit; default: its declared range")
     extremum.add_argument("--param", action="append", default=[], metavar="NAME",
                           help="keep this dimension symbolic: the minimum as a closed form in it")
@@ -169,7 +169,7 @@ def build_parser():
                       help="a dimension with a slider in the .html page (default: every dimension)")
     plot.add_argument("--range-of", action="append", default=[], metavar="NAME=LO:HI",
                       help="the range of dimension NAME's slider in the .html page (repeatable), e.g. a=0.5:2")
-    plot.add_argument("--of", help="a scalar output: draw it against the input instead")
+    plot.add_argument("--of", help="a scalar output (an angle in degrees): draw it against the input instead")
     plot.add_argument("--range", help="with --of: lo:hi of the input, in its unit")
     plot.add_argument("--derivative", action="store_true", help="with --of: the slope, with its zero marked")
     plot.add_argument("--against", help="with --of: p=lo:hi, the minimum against the dimension p")

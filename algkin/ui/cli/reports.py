@@ -23,13 +23,19 @@ def _extremum_forms(found):
 
 def _report_extremum(d):
     dims = ", ".join(f"{n} = {v}" for n, v in d["parameters"].items())
+    angle = d.get("angle")
+    unit = " deg" if angle else ""
     lines = [f"{d['of']} of {d['scene']} over {d['input']} in [{d['range'][0]:g}, {d['range'][1]:g}] deg"
              + (f" (at {dims})" if dims else "") + ":"]
-    lines += [f"  {p['kind']:10} {p['value']:.12g} at {p['enclosure_deg']} deg" for p in d["critical_points"]]
-    lines += [f"  {'end':10} {p['value']:.12g} at {p['input_deg']:g} deg" for p in d["endpoints"]]
+    if angle:
+        lines.append(f"  (an angle in degrees, {angle['degrees']}, found through {angle['via']})")
+    lines += [f"  {p['kind']:10} {p['value']:.12g}{unit} at {p['enclosure_deg']} deg" for p in d["critical_points"]]
+    lines += [f"  {'end':10} {p['value']:.12g}{unit} at {p['input_deg']:g} deg" for p in d["endpoints"]]
     for key in ("minimum", "maximum"):
         p = d[key]
-        lines.append(f"{key}: {p['value']:.12g} at {p['input_deg']:.12g} deg ({p['kind']})")
+        lines.append(f"{key}: {p['value']:.12g}{unit} at {p['input_deg']:.12g} deg ({p['kind']})")
+        if p.get("exact"):
+            lines.append(f"  exactly {p['exact']} deg, where {angle['via']} = {p['exact_via']}")
     if "closed_form" in d:
         lines += _report_closed_form(d["closed_form"], d["input"])
     return "\n".join(lines)
