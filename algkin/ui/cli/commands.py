@@ -97,9 +97,13 @@ def _cmd_extremum(args):
 
 
 def _cmd_toggles(args):
+    from ...analyses.limits import limits
     from ...analyses.toggles import toggles
 
-    return _render(args, toggles(_scene_of(args)).to_json(), _report_toggles), 0
+    scene = _scene_of(args)
+    document = toggles(scene).to_json()
+    document.update(limits(scene).to_json())  # the output's limit positions and time ratio
+    return _render(args, document, _report_toggles), 0
 
 
 def _cmd_accuracy(args):

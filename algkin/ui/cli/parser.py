@@ -141,7 +141,8 @@ def build_parser():
     _json(extremum)
     _latex(extremum)
     _budget_options(extremum)
-    toggles = _command(commands, "toggles", "input angles where assembly modes meet, certified")
+    toggles = _command(commands, "toggles", "input angles where assembly modes meet, the output's limit "
+                                            "positions and time ratio; certified")
     _scene(toggles)
     _json(toggles)
     _budget_options(toggles)

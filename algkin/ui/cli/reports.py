@@ -79,7 +79,67 @@ def _report_toggles(d):
     for artefact in d["artefacts"]:
         lines.append(f"dropped from disc({artefact['eliminant']}): {_brief(artefact['factor'])}: "
                      f"{_brief(' '.join(artefact['why'].split()))}")
-    return "\n".join(lines + _hint([a["factor"] for a in d["artefacts"]], "full factors: --json"))
+    lines += _hint([a["factor"] for a in d["artefacts"]], "full factors: --json")
+    if "limits" in d:  # the output's limit positions and time ratio (algkin.analyses.limits)
+        lines += _report_limits(d)
+    return "\n".join(lines)
+
+
+def _report_limits(d):
+    """The limit positions (where the output stops and turns back) and the time ratio, after the toggles."""
+    lines = ["limit positions (the output stops and turns back), certified:"]
+    for g in d["limits"]:
+        lines.append(f"  {g['kind']:10} {g['point']} [{g['branch']}]{' *' if g['selected'] else ''} "
+                     f"at {g['enclosure_deg']} deg: {g['point']} {_place(g['position'])}")
+        lines.append(f"      {d['input']} = {_brief(g['exact_deg'])} deg exactly")
+    if not d["limits"]:
+        lines.append("  none")
+    for skipped in d["limits_skipped"]:
+        lines.append(f"  {skipped['point']}: none looked for ({skipped['why']})")
+    if d["limits"] and not all(g["selected"] for g in d["limits"]):
+        lines.append("  (* on the scene's branch)")
+    dropped = [g for g in d["limits_dropped"] if not g["why"].startswith("undecided")]
+    for point in dict.fromkeys(g["point"] for g in dropped):
+        angles = ", ".join(f"{a:.12g}" for a in sorted({g["input_deg"] for g in dropped if g["point"] == point}))
+        lines.append(f"  not limits of {point}: roots of its eliminant at {angles} deg, where no branch stops "
+                     "(certified)")
+    lines += [f"  UNDECIDED: {g['point']} at {g['input_deg']:.12g} deg: {g['why']}"
+              for g in d["limits_dropped"] if g["why"].startswith("undecided")]
+    forms = [g["exact_deg"] for g in d["limits"]]
+    ratio = d["time_ratio"]
+    if ratio is None:
+        lines.append(f"time ratio: none ({d['time_ratio_reason']})")
+    else:
+        lines += _report_time_ratio(ratio)
+        forms += [ratio["exact"], *(s["exact"] for s in ratio["strokes"])]
+    return lines + _hint(forms, "full exact forms: --json")
+
+
+def _report_time_ratio(ratio):
+    working, quick = ratio["strokes"]
+    lines = [f"time ratio of {ratio['point']} [{ratio['branch']}]: {ratio['ratio']:.15g} "
+             f"= (180 + alpha)/(180 - alpha), alpha = {ratio['alpha_deg']:.12g} deg"]
+    for stroke in (working, quick):
+        lines.append(f"  {stroke['stroke']:7} stroke: {stroke['crank_deg']:.15g} deg of crank, "
+                     f"{stroke['from_deg']:.12g} ({stroke['from_kind']}) -> {stroke['to_deg']:.12g} deg "
+                     f"({stroke['to_kind']})")
+    stroke = ratio["stroke"]
+    if stroke["kind"] == "swing":
+        what = f"swing {stroke['angle_deg']:.15g} deg about {stroke['about']}"
+    else:
+        what = f"travel {stroke['length']:.15g}"
+    exact = f" = {_brief(stroke['exact'])}" if stroke["exact"] else ""
+    lines.append(f"  output stroke: {what}{exact}")
+    lines.append(f"  exactly Q = {_brief(ratio['exact'])}")
+    return lines
+
+
+def _place(position):
+    """A limit position in words: the rocker's angle about its pivot, or the slider's place on its line."""
+    if "angle_deg" in position:
+        return f"at {position['angle_deg']:.12g} deg about {position['about']}"
+    direction = ", ".join(position["direction"])
+    return f"at {position['along']:.15g} along ({direction})"
 
 
 def _report_accuracy(d):

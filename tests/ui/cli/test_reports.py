@@ -1,9 +1,12 @@
 """Text reports are summaries a person reads; --json, --out and --latex give the whole forms."""
 
 import json
+import math
+import re
 import subprocess
 import sys
 
+import pytest
 import sympy
 
 import algkin
@@ -70,3 +73,44 @@ def test_latex_with_json_is_refused(tmp_path):
         assert result.returncode == 2
         assert "--latex" in result.stderr and len(result.stderr.splitlines()) == 1
         assert json.loads(result.stdout)["error"]["kind"] == "usage"
+
+
+def test_toggles_gives_the_limit_positions_and_the_time_ratio(tmp_path):
+    # the offset slider-crank (crank 1, rod 3, offset 1/2): B stops where crank and rod line up,
+    # |OB| = 4 and 2; by hand its stroke is (sqrt(63) - sqrt(15))/2 and the return angle
+    # alpha = asin(1/4) - asin(1/8)
+    text = run_cli(["toggles", "slider-crank"], tmp_path)
+    assert text.returncode == 0, text.stderr
+    assert "  extended   B [ahead] * at [7.18075578145828" in text.stdout
+    assert "output stroke: travel 2.03213529349318 = (-sqrt(15) + 3*sqrt(7))/2" in text.stdout
+    alpha = math.degrees(math.asin(1 / 4) - math.asin(1 / 8))
+    printed = re.search(r"time ratio of B \[ahead\]: (\S+) = \(180 \+ alpha\)/\(180 - alpha\)", text.stdout)
+    assert float(printed.group(1)) == pytest.approx((180 + alpha) / (180 - alpha), rel=1e-14)
+    result = run_cli(["toggles", "slider-crank", "--json"], tmp_path)
+    document = json.loads(result.stdout)
+    assert {"scene", "input", "range", "toggles", "grashof", "artefacts", "limits", "time_ratio"} <= set(document)
+    ahead = [g for g in document["limits"] if g["selected"]]
+    assert [(g["kind"], g["point"], g["branch"], g["certified"]) for g in ahead] == [
+        ("extended", "B", "ahead", True), ("folded", "B", "ahead", True)]
+    for limit in document["limits"]:  # the exact angle is sympy's syntax, and the certified one
+        assert abs(float(sympy.sympify(limit["exact_deg"])) - limit["input_deg"]) < 1e-12
+    ratio = document["time_ratio"]
+    assert ratio["ratio"] == pytest.approx((180 + alpha) / (180 - alpha), rel=1e-14)
+    assert [s["stroke"] for s in ratio["strokes"]] == ["working", "return"]
+    assert ratio["stroke"]["exact"] == "(-sqrt(15) + 3*sqrt(7))/2"
+
+
+def test_toggles_time_ratio_follows_set_and_is_null_with_a_reason(tmp_path):
+    # crank 3/2, ground 4, coupler 3, rocker 7/2: a crank-rocker; by the law of cosines the crank
+    # is at acos((16 + 4.5**2 - 3.5**2)/36) extended and 180 + acos((16 + 1.5**2 - 3.5**2)/12) folded
+    set_crank = run_cli(["toggles", "fourbar", "--set", "a=3/2", "--json"], tmp_path)
+    assert set_crank.returncode == 0, set_crank.stderr
+    extended = math.degrees(math.acos((16 + 4.5**2 - 3.5**2) / 36))
+    folded = 180 + math.degrees(math.acos((16 + 1.5**2 - 3.5**2) / 12))
+    span = folded - extended
+    ratio = json.loads(set_crank.stdout)["time_ratio"]
+    assert ratio["ratio"] == pytest.approx(max(span, 360 - span) / min(span, 360 - span), rel=1e-12)
+    rocking = run_cli(["toggles", "fourbar-nongrashof", "--json"], tmp_path)
+    document = json.loads(rocking.stdout)
+    assert document["time_ratio"] is None and "does not turn fully" in document["time_ratio_reason"]
+    assert len(document["limits"]) == 2
