@@ -15,6 +15,9 @@ sqrt(b**2 - 700*b*c_theta - 280000*s_theta + 282500)
 sqrt(b**2 + 160000) - 350
 """
 
+from __future__ import annotations
+
+from collections.abc import Sequence
 from functools import cached_property
 
 import mpmath
@@ -23,14 +26,15 @@ import sympy
 from ..errors import UsageError
 from ..evaluate import MPMATH, evaluate
 from ..runtime import validation
-from ..scene.load import as_scene
+from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
 from ..system import symbol
 
 __all__ = ["load", "Mechanism", "Quantity"]
 
 
-def load(scene, params=(), set=None):  # noqa: A002 - ``set=`` is the public name (SPEC §3's --set)
+def load(scene: SceneLike, params: Sequence[str] = (),
+         set: Values | None = None) -> Mechanism:  # noqa: A002 - ``set=`` is the public name (SPEC §3's --set)
     """A mechanism from a catalog name, a path or a ``Scene``; ``params`` stay symbolic, and
     ``set`` gives others exact values in place of their defaults (``set={"b": "3/2"}``)."""
     params = validation.names("params", params)

@@ -5,23 +5,28 @@
 (6, 3, True, True)
 """
 
+from __future__ import annotations
+
 import collections
 import functools
 import math
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import Any
 
 import flint
 import sympy
 
 from ..branches import certify_label, check_assembly, closed_forms
-from ..eliminate import DEFAULT_METHOD, Witness, current as current_budget
+from ..branches import Branch
+from ..eliminate import DEFAULT_METHOD, Budget, Elimination, Witness, current as current_budget
 from ..errors import UsageError
 from ..evaluate import ARB, evaluate
 from ..runtime import validation
-from ..scene import compile_scene
-from ..scene.load import as_scene
+from ..scene import Compiled, compile_scene
+from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
 from ..system import symbol
 from ..verify import Verification, verify_branches
@@ -41,16 +46,16 @@ _CHECKED = collections.OrderedDict()
 class Derivation:
     """What ``derive`` found for a scene: system, eliminants, branches, verification."""
 
-    compiled: object
+    compiled: Compiled
     method: str
     backend: str
-    eliminations: dict  # unknown -> Elimination
-    branches: list
-    verification: object
-    timings: dict
-    certified: list = None  # per branch: [{from_deg, to_deg, status}], one-input scenes
+    eliminations: dict[str, Elimination[Any]]  # unknown -> its eliminant
+    branches: list[Branch]
+    verification: Verification
+    timings: dict[str, float]
+    certified: list[Any] | None = None  # per branch: [{from_deg, to_deg, status}], one-input scenes
 
-    def to_json(self):
+    def to_json(self) -> dict[str, Any]:
         system = self.compiled.system
         return {
             "scene": self.compiled.scene.name,
@@ -71,17 +76,17 @@ class Derivation:
 class CurveResult:
     """The implicit curve of a point: polynomial, figures, dropped factors, verification."""
 
-    compiled: object
+    compiled: Compiled
     point: str
-    variables: tuple
-    elimination: object
+    variables: tuple[str, ...]
+    elimination: Elimination[Any]
     degree: int
     circularity: int
     irreducible: bool
-    verification: object
-    timings: dict
+    verification: Verification
+    timings: dict[str, float]
 
-    def to_json(self):
+    def to_json(self) -> dict[str, Any]:
         return {
             "scene": self.compiled.scene.name,
             "point": self.point,
@@ -261,8 +266,10 @@ def _prepared(scene, outputs, params, timings):
     return _PREPARED[key]
 
 
-def derive(scene, outputs=None, method=DEFAULT_METHOD, backend="flint", params=(), samples=40, seed=0,
-           certify=True, budget=None, set=None):  # noqa: A002 - ``set=`` is the public name (SPEC §3's --set)
+def derive(scene: SceneLike, outputs: Sequence[str] | None = None, method: str = DEFAULT_METHOD,
+           backend: str = "flint", params: Sequence[str] = (), samples: int = 40, seed: int = 0,
+           certify: bool = True, budget: Budget | None = None,
+           set: Values | None = None) -> Derivation:  # noqa: A002 - ``set=`` is the public name (SPEC §3's --set)
     """Eliminants, closed-form branches and their verification for ``outputs`` of ``scene``.
 
     ``certify`` also certifies each branch's label per input interval (the slowest stage);
@@ -349,8 +356,9 @@ def _refuse_still(prepared, branches, point):
         raise UsageError("--point", point, f"is fixed at ({x}, {y}): its trajectory is a point, not a curve")
 
 
-def curve(scene, point, method=DEFAULT_METHOD, backend="flint", params=(), samples=40, seed=0, budget=None,
-          set=None):  # noqa: A002 - as in derive
+def curve(scene: SceneLike, point: str, method: str = DEFAULT_METHOD, backend: str = "flint",
+          params: Sequence[str] = (), samples: int = 40, seed: int = 0, budget: Budget | None = None,
+          set: Values | None = None) -> CurveResult:  # noqa: A002 - as in derive
     """The implicit curve ``F(point_x, point_y) = 0`` traced by ``point`` (a one-input motion).
 
     A ``Budget`` bounds the time of the whole computation, loading and compiling the scene

@@ -15,7 +15,8 @@ import re
 import stat
 import sys
 from collections.abc import Container, Mapping
-from typing import Any, NoReturn
+from fractions import Fraction
+from typing import Any, NoReturn, Union
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -30,13 +31,16 @@ from .expr import exact_number, parse
 from .model import Input, Output, Scene, range_problem
 from .names import check_names
 
-__all__ = ["load_scene", "load_scene_text", "as_scene", "catalog_names", "MAX_SCENE_BYTES"]
+__all__ = ["load_scene", "load_scene_text", "as_scene", "catalog_names", "MAX_SCENE_BYTES", "SceneLike",
+           "Values"]
 
 MAX_SCENE_BYTES = 256 * 1024
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
 _CATALOG = os.path.join(os.path.dirname(os.path.dirname(__file__)), "catalog")
 _TOP_KEYS = {"name", "description", "parameters", "inputs", "points", "outputs"}
-Table = dict[str, Any]  # a TOML table as tomllib reads it: values of any TOML type, checked here
+Table = dict[str, Any]
+SceneLike = Union[str, "os.PathLike[str]", Scene]  # what the public functions take for a scene
+Values = Mapping[str, Union[str, int, Fraction]]  # ``set=``: dimensions given exact values  # a TOML table as tomllib reads it: values of any TOML type, checked here
 Ranges = dict[str, tuple[sympy.Rational, sympy.Rational]]
 
 _EXTRA_KEYS = {
@@ -418,7 +422,7 @@ def _angle_points(text: str, inside: str, source: str, element: str) -> tuple[st
     return refs
 
 
-def as_scene(scene: object) -> Scene:
+def as_scene(scene: SceneLike) -> Scene:
     """A ``Scene`` from a catalog name, a path, or a ``Scene`` (checked as a loaded file is).
 
     A scene built or changed in Python has not been through the loader: it is written

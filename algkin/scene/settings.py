@@ -11,7 +11,7 @@ algkin.errors.UsageError: --set='zz=1': not a parameter of arm-string (parameter
 """
 
 import dataclasses
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from fractions import Fraction
 
 import sympy
@@ -34,7 +34,7 @@ def parse_settings(texts: Iterable[str] | None) -> dict[str, str]:
     return values
 
 
-def with_values(scene: Scene, values: dict[str, object] | None, params: Iterable[str] | None = ()) -> Scene:
+def with_values(scene: Scene, values: Mapping[str, object] | None, params: Iterable[str] | None = ()) -> Scene:
     """A new ``Scene``: ``scene`` with the defaults of the parameters in ``values`` replaced, checked again.
 
     Values are exact: strings in the scene files' expression language (``"3/2"``, ``"0.1"`` is

@@ -17,8 +17,11 @@ hide the function ``algkin.interact``); the logic lives in ``Explorer`` and need
 """
 
 import functools
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 from ..analyses.motion import Motion
+from ..scene.load import SceneLike
 from .html import _slider, parameter_range
 
 __all__ = ["interact", "Explorer"]
@@ -88,7 +91,8 @@ class Explorer:
         return self.live.png()
 
 
-def interact(scene, params=None, ranges=None):
+def interact(scene: SceneLike | Motion, params: Sequence[str] | None = None,
+             ranges: Mapping[str, tuple[float, float]] | None = None) -> Any:
     """A widget with a slider per input and symbolic dimension driving the drawing.
 
     ``scene``: a catalog name, a path, a ``Scene`` or a ``Motion``; ``params``: the

@@ -10,6 +10,9 @@ With a dimension symbolic, the minimum and its input come as closed forms in it:
 sqrt(b**2 + 160000) - 350
 """
 
+from __future__ import annotations
+
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 import mpmath
@@ -17,6 +20,7 @@ import sympy
 
 from ...derivation.pipeline import derive
 from ...errors import UsageError
+from ...scene.load import SceneLike, Values
 from ...scene.model import range_problem
 from ...system import symbol
 from .angles import AngleScale, direction_problem
@@ -101,8 +105,9 @@ def _range_degrees(spec, angle_range):
     return lo, hi
 
 
-def extremum(scene, output, angle_range=None, params=(), largest=False, method="resultant", backend="flint",
-             set=None):  # noqa: A002 - the public API's name, as in derive
+def extremum(scene: SceneLike, output: str, angle_range: tuple[float | str, float | str] | None = None,
+             params: Sequence[str] = (), largest: bool = False, method: str = "resultant", backend: str = "flint",
+             set: Values | None = None) -> Extremum:  # noqa: A002 - the public API's name, as in derive
     """Critical points, minimum and maximum of ``output`` over the scene's one input.
 
     ``angle_range`` is in the input's unit (default: its declared range). With ``params``

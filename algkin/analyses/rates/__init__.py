@@ -26,6 +26,7 @@ from ...derivation.pipeline import Derivation, check_setup, derive
 from ...eliminate import DEFAULT_METHOD
 from ...errors import UsageError
 from ...runtime import validation
+from ...scene.load import SceneLike
 from ...system import symbol
 from .check import RatesCheck, check_rates
 from .forms import Rate, rates_of_values
@@ -66,7 +67,7 @@ class Rates:
                 "rates_verification": self.verification.to_json()}
 
 
-def rates(scene: Any, outputs: list[str] | None = None, params: tuple[str, ...] | list[str] = (),
+def rates(scene: SceneLike, outputs: list[str] | None = None, params: tuple[str, ...] | list[str] = (),
           samples: int = SAMPLES, seed: int = 0, method: str = DEFAULT_METHOD, backend: str = "flint",
           set: dict[str, Any] | None = None) -> Rates:  # noqa: A002 - ``set=`` as in derive
     """Velocity and acceleration of every coordinate of ``outputs`` of a one-input ``scene``, per
