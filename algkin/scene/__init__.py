@@ -1,4 +1,6 @@
-"""Scenes: TOML loading with the safe expression parser, and compilation to a system."""
+"""Scenes: TOML loading with the safe expression parser (or built in Python: ``SceneBuilder``),
+and compilation to a system plus one spec per implicit point (``implicit``). Below it only
+``system``, ``evaluate`` and ``runtime``: a scene knows nothing of elimination or verification."""
 
 from .builder import SceneBuilder
 from .compile import Compiled, compile_scene
