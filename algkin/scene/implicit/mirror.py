@@ -17,9 +17,9 @@ touch, where the two are one). ``X`` has no assembly mode of its own: its side o
 ``U -> V`` is the one ``Y`` is not on, and the scene's ``branch`` for it must say so
 (``side``, checked where the mechanism assembles).
 
->>> import sympy
->>> spec = MirrorSpec("P", ("P_x", "P_y"), "right", base_p=(0, 0), base_q=(2, 0),
-...                   lengths=(sympy.sqrt(2), sympy.sqrt(2)), other="A", other_at=(1, 1))
+>>> from sympy import Integer, sqrt
+>>> spec = MirrorSpec("P", ("P_x", "P_y"), "right", base_p=(Integer(0), Integer(0)), base_q=(Integer(2), Integer(0)),
+...                   lengths=(sqrt(2), sqrt(2)), other="A", other_at=(Integer(1), Integer(1)))
 >>> spec.closed_form({}, 1, [])[0]  # the circles of radius sqrt(2) about (0, 0) and (2, 0) meet at (1, 1)
 (1, -1)
 """
