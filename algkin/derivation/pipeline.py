@@ -8,10 +8,11 @@
 from __future__ import annotations
 
 import collections
+import contextlib
 import functools
 import math
 import time
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
@@ -243,11 +244,10 @@ class _Prepared:
     def branch(self, timings):
         """``(branches, witnesses)``, found on the first call."""
         if self.built is None:
-            mark = time.perf_counter()
-            branches = closed_forms(self.compiled)
-            check_assembly(self.compiled, branches)
-            self.built = branches, witnesses(self.compiled, branches)
-            timings["branches"] = time.perf_counter() - mark
+            with _timed(timings, "branches"):
+                branches = closed_forms(self.compiled)
+                check_assembly(self.compiled, branches)
+                self.built = branches, witnesses(self.compiled, branches)
         timings.setdefault("branches", 0.0)
         return self.built
 
@@ -255,15 +255,24 @@ class _Prepared:
 def _prepared(scene, outputs, params, timings):
     """The compiled scene, from the cache when the same scene was compiled before."""
     key = (repr(scene), tuple(outputs or ()), tuple(params))
-    mark = time.perf_counter()
-    if key in _PREPARED:
-        _PREPARED.move_to_end(key)
-    else:
-        _PREPARED[key] = _Prepared(compile_scene(scene, outputs, params))
-        while len(_PREPARED) > PREPARED_SCENES:
-            _PREPARED.popitem(last=False)
-    timings["compile"] = time.perf_counter() - mark
+    with _timed(timings, "compile"):
+        if key in _PREPARED:
+            _PREPARED.move_to_end(key)
+        else:
+            _PREPARED[key] = _Prepared(compile_scene(scene, outputs, params))
+            while len(_PREPARED) > PREPARED_SCENES:
+                _PREPARED.popitem(last=False)
     return _PREPARED[key]
+
+
+@contextlib.contextmanager
+def _timed(timings: dict[str, float], stage: str) -> Iterator[None]:
+    """``timings[stage]``: the seconds the block took."""
+    mark = time.perf_counter()
+    try:
+        yield
+    finally:
+        timings[stage] = time.perf_counter() - mark
 
 
 def derive(scene: SceneLike, outputs: Sequence[str] | None = None, method: str = DEFAULT_METHOD,
@@ -288,19 +297,16 @@ def _derive(scene, values, outputs, params, start, method, backend, samples, see
     scene = _load(scene, values, params, budget)
     budget.note(f"compiling {scene.name} and finding its branches")
     compiled, branches, groups, timings = compile_and_branch(scene, outputs, params)
-    mark = time.perf_counter()
-    eliminations = {u: task.run(method, backend, budget) for u, task in eliminant_tasks(compiled, groups).items()}
-    timings["eliminate"] = time.perf_counter() - mark
-    mark = time.perf_counter()
+    with _timed(timings, "eliminate"):
+        eliminations = {u: task.run(method, backend, budget) for u, task in eliminant_tasks(compiled, groups).items()}
     budget.note(f"verifying the branches of {compiled.scene.name}")
-    verification = _verify(compiled, branches, samples, seed,
-                           {u: e.exact[0] for u, e in eliminations.items()},
-                           {u: e.exact[1] for u, e in eliminations.items()})
-    timings["verify"] = time.perf_counter() - mark
-    mark = time.perf_counter()
+    with _timed(timings, "verify"):
+        verification = _verify(compiled, branches, samples, seed,
+                               {u: e.exact[0] for u, e in eliminations.items()},
+                               {u: e.exact[1] for u, e in eliminations.items()})
     budget.note(f"certifying the branch labels of {compiled.scene.name}")
-    certified = certify_labels(compiled, branches) if certify else [None] * len(branches)
-    timings["certify"] = time.perf_counter() - mark
+    with _timed(timings, "certify"):
+        certified = certify_labels(compiled, branches) if certify else [None] * len(branches)
     timings["total"] = time.perf_counter() - start
     return Derivation(compiled, method, backend, eliminations, branches, verification, timings, certified)
 
@@ -386,17 +392,15 @@ def _curve(scene, values, point, params, start, method, backend, samples, seed, 
     budget.note(f"finding the branches of {compiled.scene.name}")
     branches, groups = prepared.branch(timings)
     _refuse_still(prepared, branches, point)
-    mark = time.perf_counter()
-    task = curve_task(compiled, groups, point)
-    result = task.run(method, backend, budget)
+    with _timed(timings, "eliminate"):
+        task = curve_task(compiled, groups, point)
+        result = task.run(method, backend, budget)
     variables = task.keep[:2]
-    timings["eliminate"] = time.perf_counter() - mark
     figures = _curve_figures(result, variables)
-    mark = time.perf_counter()
     budget.note(f"verifying the curve of {point} in {compiled.scene.name}")
-    verification = _verify(compiled, branches, samples, seed, {"curve": result.exact[0]},
-                           {"curve": result.exact[1]})
-    timings["verify"] = time.perf_counter() - mark
+    with _timed(timings, "verify"):
+        verification = _verify(compiled, branches, samples, seed, {"curve": result.exact[0]},
+                               {"curve": result.exact[1]})
     timings["total"] = time.perf_counter() - start
     return CurveResult(compiled, point, variables, result, figures[0], figures[1],
                        len(result.raw_factors) == 1, verification, timings)
