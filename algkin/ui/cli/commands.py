@@ -212,7 +212,7 @@ def _cmd_derive(args):
     from ...derivation.pipeline import derive
 
     out = _full_forms_target(args)
-    result = derive(_scene_of(args), args.outputs, _method(args), args.backend, args.param, args.samples, args.seed)
+    result = derive(_scene_of(args), args.outputs, **_engine(args))
     forms = [(f"eliminant of {u}", e.polynomial, "= 0") for u, e in result.eliminations.items()]
     forms += [(f"{u}, branch {b.label}", v, "") for b in result.branches for u, v in b.values.items()]
     document, code = result.to_json(), _verdict(result.verification)
@@ -265,6 +265,11 @@ def _finish(args, out, document, report, forms, code):
     return text, code, [(out, json.dumps(document, indent=2) + "\n")]
 
 
+def _engine(args):
+    """The options derive, curve and verify share, by name: method, backend, symbolic dimensions, sampling."""
+    return dict(method=_method(args), backend=args.backend, params=args.param, samples=args.samples, seed=args.seed)
+
+
 def _verdict(verification):
     """Exit code: 0 when the check passed or was skipped on request, 1 when it failed."""
     return 0 if verification.status in ("passed", "skipped") else 1
@@ -274,7 +279,7 @@ def _cmd_curve(args):
     from ...derivation.pipeline import curve
 
     out = _full_forms_target(args)
-    result = curve(_scene_of(args), args.point, _method(args), args.backend, args.param, args.samples, args.seed)
+    result = curve(_scene_of(args), args.point, **_engine(args))
     forms = [(f"curve of {result.point}", result.elimination.polynomial, "= 0")]
     return _finish(args, out, result.to_json(), _report_curve, forms, _verdict(result.verification))
 
@@ -284,8 +289,7 @@ def _cmd_verify(args):
 
     if args.samples == 0:
         raise UsageError("--samples", 0, "verify needs at least one sample (derive and curve take 0 to skip it)")
-    result = derive(_scene_of(args), args.outputs, _method(args), args.backend, args.param, args.samples, args.seed,
-                    certify=False)
+    result = derive(_scene_of(args), args.outputs, certify=False, **_engine(args))
     document = {"scene": result.compiled.scene.name, "verification": result.verification.to_json(),
                 "branches": [b.label for b in result.branches], "timings": result.timings}
     text = _render(args, document, lambda d: f"scene {d['scene']}, branches {', '.join(d['branches'])}\n"
