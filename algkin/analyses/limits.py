@@ -535,7 +535,8 @@ def _stroke(path: Path, first: Limit, second: Limit) -> Json:
         exact = None
         if exact_one and exact_two:
             difference = sympy.sympify(exact_two["angle_deg"]) - sympy.sympify(exact_one["angle_deg"])
-            exact = str(_tidy(difference if float(difference) >= 0 else -difference))
+            difference = difference if float(difference) >= 0 else -difference
+            exact = str(_tidy(difference if float(difference) <= 180 else 360 - difference))  # as the float
         return {"kind": "swing", "about": one["about"], "angle_deg": swing, "exact": exact}
     travel = abs(two["along"] - one["along"])
     exact = None

@@ -109,6 +109,8 @@ class Motion:
                 bars += [(c.bases[0], name), (c.bases[1], name)]
             elif isinstance(c, Slider):
                 bars.append((c.to, name))
+                if c.toward is not None:  # a moving line: the slotted bar through its two points
+                    bars.append((c.through, c.toward))
         return bars
 
     @property
@@ -118,9 +120,10 @@ class Motion:
 
     @property
     def guides(self):
-        """The fixed line of each slider point: (slider point, a point on the line, direction)."""
+        """The fixed line of each slider point: (slider point, a point on the line, direction); a line
+        through two points is drawn as their bar (``bars``)."""
         return [(n, c.through, tuple(float(d.xreplace(self._default_subs)) for d in c.direction))
-                for n, c in self.scene.points.items() if isinstance(c, Slider)]
+                for n, c in self.scene.points.items() if isinstance(c, Slider) and c.direction is not None]
 
     @property
     def _default_subs(self):

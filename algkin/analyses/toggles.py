@@ -80,16 +80,25 @@ def toggle_conditions(compiled: Compiled, spec: ImplicitSpec) -> dict[str, sympy
 
 
 def _eliminate_earlier(compiled, condition, spec):
-    """The condition with earlier points' unknowns eliminated (a polynomial in c, s)."""
-    earlier = sorted(str(v) for v in condition.free_symbols if str(v) in compiled.system.unknowns)
+    """The condition with earlier points' unknowns eliminated (a polynomial in c, s): those it
+    names, and every unknown their equations bring in (a slider on a horizontal guide names
+    only its rod end's y, whose equations hold its x too)."""
+    unknowns = set(compiled.system.unknowns) - set(spec.unknowns)
+    earlier = {str(v) for v in condition.free_symbols} & unknowns
     if not earlier:
         return condition
     defaults = _defaults(compiled)
-    equations = [sympy.expand(e.xreplace(defaults)) for e in compiled.system.equations
-                 if {str(v) for v in e.free_symbols} & set(earlier)
-                 and not {str(v) for v in e.free_symbols} & set(spec.unknowns)]
+    names = lambda e: {str(v) for v in e.free_symbols}  # noqa: E731
+    system = [e for e in compiled.system.equations if not names(e) & set(spec.unknowns)]
+    while True:
+        equations = [e for e in system if names(e) & earlier]
+        grown = earlier.union(*(names(e) & unknowns for e in equations))
+        if grown == earlier:
+            break
+        earlier = grown
     (c, s), = compiled.system.inputs.values()
-    return eliminate([condition] + equations, earlier, [c, s], method="resultant").polynomial
+    equations = [sympy.expand(e.xreplace(defaults)) for e in equations]
+    return eliminate([condition] + equations, sorted(earlier), [c, s], method="resultant").polynomial
 
 
 def _single_input(compiled):
@@ -172,14 +181,22 @@ def _why_not_a_toggle(compiled, branches, factor, c, s, t):
 
 
 def _separated(compiled, branches, values):
-    discriminants = [evaluate(d, values, ARB) for d in branches[0].discriminants.values()]
-    if any(d < 0 for d in discriminants):
+    signs = [[evaluate(d, values, ARB) for d in b.discriminants.values()] for b in branches]
+    if any(not (all(d > 0 for d in ds) or any(d < 0 for d in ds)) for ds in signs):
+        return None  # a branch at its own dead centre, or undecided
+    # the branches that assemble there (on another mode of an earlier point, a later one may not)
+    branches = [b for b, ds in zip(branches, signs) if all(d > 0 for d in ds)]
+    if not branches:
         return "a dyad or slider cannot assemble there"
     points = [{u: evaluate(v, values, ARB) for u, v in b.values.items()} for b in branches]
     for spec in compiled.implicit:
         x, y = spec.unknowns
+        # its two modes on the same modes of every other point (the branches that differ in its label
+        # alone): on the same earlier points, where it toggles they meet
+        pairs = [(p, q) for p, a in zip(points, branches) for q, b in zip(points, branches)
+                 if {n for n in a.labels if a.labels[n] != b.labels[n]} == {spec.point}]
         # d * d, not d ** 2: python-flint's arb power is nan on a ball around zero.
-        gaps = [_square(p[x] - q[x]) + _square(p[y] - q[y]) for p in points for q in points if p is not q]
+        gaps = [_square(p[x] - q[x]) + _square(p[y] - q[y]) for p, q in pairs]
         if not all(g > 0 for g in gaps):
             return None
     return "the modes share this coordinate but are apart"

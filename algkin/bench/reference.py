@@ -6,10 +6,11 @@ quantity is a numpy array of ``arb`` (one per sample), so the Python overhead of
 is paid once per batch, not per sample. The system is triangular by construction: each dyad
 or slider's two equations involve only its own point and earlier ones. So it is certified
 one construction at a time (a 2 x 2 system, its equations as the construction writes them,
-unexpanded, checked equal to the system's), the earlier points entering as their enclosures:
+unexpanded (its spec's ``written``), checked equal to the system's), the earlier points entering as their enclosures:
 
-1. a float starting point straight from the construction (each dyad's two circles met in
-   the textbook way, on the side its label names; each slider's line and circle likewise);
+1. a float starting point straight from the construction (its spec's ``start``: each dyad's
+   two circles met in the textbook way, on the side its label names; each slider's line and
+   circle likewise; an inversor's second point as the mirror image of the first);
 2. Newton steps in ``arb`` at the working precision: ``x <- mid(x - Y F(x))`` with ``Y`` the
    inverse of ``J(x)`` (by its adjugate); from a float start one step reaches about 2**-106,
    near a toggle it takes more, and a sample whose steps stop shrinking is given up;
@@ -39,7 +40,6 @@ import numpy as np
 import sympy
 from flint import arb, ctx
 
-from ..scene.compile import SliderSpec
 from ..system import symbol
 
 __all__ = ["Reference", "Certified", "BITS", "NotCertified"]
@@ -176,14 +176,7 @@ class Reference:
 def _written(spec, fix):
     """A construction's two equations as it writes them (unexpanded: the circles about P and Q,
     or the slider's line and circle), which take fewer operations in balls than expanded."""
-    x, y = (symbol(u) for u in spec.unknowns)
-    if isinstance(spec, SliderSpec):
-        (px, py), (dx, dy), (qx, qy) = spec.through, spec.direction, spec.center
-        equations = [dx * (y - py) - dy * (x - px), (x - qx) ** 2 + (y - qy) ** 2 - spec.length**2]
-    else:
-        (px, py), (qx, qy), (l1, l2) = spec.base_p, spec.base_q, spec.lengths
-        equations = [(x - px) ** 2 + (y - py) ** 2 - l1**2, (x - qx) ** 2 + (y - qy) ** 2 - l2**2]
-    return [fix(e) for e in equations]
+    return [fix(e) for e in spec.written()]
 
 
 def _kappas(theta, points, slopes):
@@ -331,13 +324,9 @@ class _Start:
         self.steps = []
         known = list(cs)
         for spec in compiled.implicit:
-            sigma = 1.0 if spec.branch == spec.labels[0] else -1.0
-            if isinstance(spec, SliderSpec):
-                parts = [*spec.through, *spec.direction, *spec.center, spec.length]
-            else:
-                parts = [*spec.base_p, *spec.base_q, *spec.lengths]
-            self.steps.append((spec.unknowns, _float_function([fix(p) for p in parts], known), sigma,
-                               _slider if isinstance(spec, SliderSpec) else _dyad))
+            sigma = float(spec.sign(spec.branch)) if spec.labels else 1.0
+            parts = _float_function([fix(p) for p in spec.start_parts()], known)
+            self.steps.append((spec.unknowns, parts, sigma, spec.start))
             known = known + [symbol(u) for u in spec.unknowns]
         self.known = [str(v) for v in known]
         rest = [u for u in compiled.system.unknowns if u not in self.known]
@@ -346,31 +335,9 @@ class _Start:
 
     def __call__(self, theta):
         values = {str(v): a for v, a in zip(self.known[:2], (np.cos(theta), np.sin(theta)))}
-        for unknowns, parts, sigma, meet in self.steps:
-            point = meet(*np.broadcast_arrays(*parts(*values.values()), theta)[:-1], sigma)
+        for unknowns, parts, sigma, start in self.steps:
+            point = start(np.broadcast_arrays(*parts(*values.values()), theta)[:-1], sigma)
             values.update(zip(unknowns, point))
         names, formulas = self.rest
         values.update(zip(names, formulas(*values.values())))
         return np.array([np.broadcast_to(values[u], theta.shape) for u in self.order], dtype=float)
-
-
-def _dyad(px, py, qx, qy, l1, l2, sigma):
-    """Two circles meet: the foot on PQ, then the half-chord to the labelled side. Where they
-    miss, the half-chord of the discriminant's size: a start off the fold, whose J is singular
-    (Newton's first step from there would fly off, and take ~50 steps to come back)."""
-    dx, dy = qx - px, qy - py
-    d2 = dx * dx + dy * dy
-    along = (d2 + l1 * l1 - l2 * l2) / (2 * d2)
-    across = sigma * np.sqrt(np.abs(l1 * l1 / d2 - along * along))
-    return px + along * dx - across * dy, py + along * dy + across * dx
-
-
-def _slider(px, py, dx, dy, qx, qy, length, sigma):
-    """The line through P along d meets the circle about Q: ``X = P + a d``, ahead or behind Q's
-    foot (where they miss, by the discriminant's size, as for a dyad)."""
-    wx, wy = qx - px, qy - py
-    d2 = dx * dx + dy * dy
-    foot = (dx * wx + dy * wy) / d2
-    half = np.sqrt(np.abs(length * length / d2 - (dx * wy - dy * wx) ** 2 / d2**2))
-    along = foot + sigma * half
-    return px + along * dx, py + along * dy

@@ -130,8 +130,11 @@ class SceneBuilder:
     def slider(self, name: str, slider: Mapping[str, Any], *, distance: Mapping[str, Any] | None = None,
                branch: str | None = None, **extra: Any) -> None:
         """``B = { slider = { through = "L", direction = [1, 0] }, distance = { to = "A", length = "l" },
-        branch = "ahead" }``: the two sub-tables as mappings, e.g. ``dict(through="L", direction=(1, 0))``."""
-        self.point(name, slider=slider, distance=distance, branch=branch, **extra)
+        branch = "ahead" }``: the two sub-tables as mappings, e.g. ``dict(through="L", direction=(1, 0))``,
+        or ``dict(through="C", toward="A")`` for the line through two points (a key given as None is
+        left out, so ``dict(through=P, direction=None, toward="A")`` is the line toward A)."""
+        line = _given(slider) if isinstance(slider, Mapping) else slider
+        self.point(name, slider=line, distance=distance, branch=branch, **extra)
 
     def output(self, name: str, text: str | None = None) -> None:
         """``AB = "dist(A, B)"``; without ``text``, the point of the same name (``P = "P"``)."""

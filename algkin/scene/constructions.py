@@ -166,29 +166,43 @@ class Dyad:
 
 @dataclass(frozen=True)
 class Slider:
-    """``slider = {through = P, direction = [dx, dy]}, distance = {to = Q, length = l}``.
+    """``slider = {through = P, direction = [dx, dy]}, distance = {to = Q, length = l}``, or
+    ``slider = {through = P, toward = R}``: the line through two points, moving with them.
 
-    On the line through P with the fixed direction d, at distance l from Q. The branch is
-    ``ahead`` when ``dot(d, X - Q) > 0`` (X lies ahead of the foot of the perpendicular
-    from Q, along d), ``behind`` when it is < 0: the same all along the motion.
+    On the line through P with the direction d (fixed, or ``R - P``), at distance l from Q. The
+    branch is ``ahead`` when ``dot(d, X - Q) > 0`` (X lies ahead of the foot of the perpendicular
+    from Q, along d), ``behind`` when it is < 0: the same all along the motion. Exactly one of
+    ``direction`` and ``toward`` is given.
     """
 
     through: str
-    direction: tuple[sympy.Expr, sympy.Expr]
+    direction: tuple[sympy.Expr, sympy.Expr] | None
     to: str
     length: sympy.Expr
     branch: str
+    toward: str | None = None
     labels = SliderSpec.labels
 
     @property
     def references(self) -> tuple[str, ...]:
-        return (self.through, self.to)
+        return (self.through, self.to) if self.toward is None else (self.through, self.toward, self.to)
+
+    def line_direction(self, coords: Mapping[str, Point]) -> tuple[sympy.Expr, sympy.Expr]:
+        """The line's direction: the fixed one, or ``R - P`` in system variables."""
+        if self.toward is None:
+            assert self.direction is not None
+            return self.direction
+        (px, py), (rx, ry) = coords[self.through], coords[self.toward]
+        return (sympy.expand(rx - px), sympy.expand(ry - py))
 
     def build(self, name: str, coords: Mapping[str, Point], builder: Builder) -> Point:
         (px, py), (qx, qy) = coords[self.through], coords[self.to]
+        dx, dy = self.line_direction(coords)
+        if self.toward is not None and dx == 0 and dy == 0:
+            raise Unbuildable(f"its line through {self.through} toward {self.toward} has no direction: "
+                              "the two points coincide")
         builder.distance(self.to, name, self.length)
         x, y = builder.unknown(f"{name}_x"), builder.unknown(f"{name}_y")
-        dx, dy = self.direction
         builder.equations += [
             dx * (y - py) - dy * (x - px),  # X - P is parallel to d
             (x - qx) ** 2 + (y - qy) ** 2 - self.length**2,
@@ -196,7 +210,7 @@ class Slider:
         along = dx * (x - qx) + dy * (y - qy)
         builder.indicators.append(Indicator(name, along, "ahead", "behind", self.branch))
         builder.implicit[name] = SliderSpec(point=name, unknowns=(x.name, y.name), branch=self.branch,
-                                            through=(px, py), direction=self.direction, center=(qx, qy),
+                                            through=(px, py), direction=(dx, dy), center=(qx, qy),
                                             length=self.length)
         return (x, y)
 

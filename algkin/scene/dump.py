@@ -43,8 +43,9 @@ def _point(construction: Construction, scene: Scene) -> str:
     if isinstance(construction, Frame):
         return f"frame = {_exprs(construction.bases)}, at = {_exprs(construction.at)}"
     if isinstance(construction, Slider):
-        return (f"slider = {{ through = {_string(construction.through)}, "
-                f"direction = {_exprs(construction.direction)} }}, "
+        line = f"toward = {_string(construction.toward)}" if construction.direction is None \
+            else f"direction = {_exprs(construction.direction)}"
+        return (f"slider = {{ through = {_string(construction.through)}, {line} }}, "
                 f"distance = {{ to = {_string(construction.to)}, length = {_string(construction.length)} }}, "
                 f"branch = {_string(construction.branch)}")
     raise TypeError(f"no TOML form for a {type(construction).__name__} construction")

@@ -321,13 +321,31 @@ class _Loader:
         return value
 
     def slider(self, spec: Table, element: str, names: set[str], inputs: dict[str, Input]) -> Slider:
-        line = self.subtable(spec, "slider", element, ("through", "direction"),
-                             '{ through = "O", direction = [1, 0] }')
+        line = spec.get("slider")
+        given = [key for key in ("direction", "toward") if isinstance(line, dict) and key in line]
+        if isinstance(line, dict) and len(given) != 1:
+            extra = sorted(set(line) - {"through", "direction", "toward"})
+            where, what = (f"{element}.slider.{extra[0]}", "unknown key (expected through, and direction or toward)") \
+                if extra else (f"{element}.slider", "give either direction = [dx, dy] (a fixed line) or "
+                               "toward = \"R\" (the line through two points, moving with them)"
+                               + (", not both" if given else ""))
+            self.fail(where, what)
+        keys = ("through", given[0]) if given else ("through", "direction")
+        example = '{ through = "O", toward = "A" }' if given == ["toward"] else '{ through = "O", direction = [1, 0] }'
+        line = self.subtable(spec, "slider", element, keys, example)
         through = self.point_ref(line["through"], f"{element}.slider.through", names)
-        direction = tuple(self.expr(v, f"{element}.slider.direction")
-                          for v in self.pair(line, "direction", f"{element}.slider"))
-        if all(d.is_number and d == 0 for d in direction):
-            self.fail(f"{element}.slider.direction", "direction must not be zero, got [0, 0]")
+        direction: tuple[sympy.Expr, sympy.Expr] | None = None
+        toward: str | None = None
+        if given == ["toward"]:
+            toward = self.point_ref(line["toward"], f"{element}.slider.toward", names)
+            if toward == through:
+                self.fail(f"{element}.slider.toward", f"the line through {through} toward {toward} has no "
+                          "direction: name two different points")
+        else:
+            x, y = (self.expr(v, f"{element}.slider.direction") for v in self.pair(line, "direction", f"{element}.slider"))
+            direction = (x, y)
+            if all(d.is_number and d == 0 for d in direction):
+                self.fail(f"{element}.slider.direction", "direction must not be zero, got [0, 0]")
         distance = self.subtable(spec, "distance", element, ("to", "length"), '{ to = "A", length = 3 }')
         to = self.point_ref(distance["to"], f"{element}.distance.to", names)
         length = self.positive(distance["length"], f"{element}.distance.length")
@@ -335,7 +353,7 @@ class _Loader:
         if branch not in Slider.labels:
             self.fail(f"{element}.branch", "branch must be 'ahead' or 'behind' (along the direction, "
                       f"from the foot of the perpendicular from {to}), got {branch!r}")
-        return Slider(through, direction, to, length, branch)
+        return Slider(through, direction, to, length, branch, toward)
 
     def frame(self, spec: Table, element: str, names: set[str], inputs: dict[str, Input]) -> Frame:
         bases = self.point_pair(spec, "frame", element, names)

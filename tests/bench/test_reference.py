@@ -70,13 +70,17 @@ def test_four_bar_equals_its_circles_met_by_hand(four_bar):
         assert certified.points[:, k].tolist() == [float(v) for v in exact]  # correctly rounded
 
 
-@pytest.mark.parametrize("name, of", [("chebyshev-lambda", "P"), ("watt-i", "P"), ("arm-string", "AB")])
+@pytest.mark.parametrize("name, of", [("chebyshev-lambda", "P"), ("watt-i", "P"), ("arm-string", "AB"),
+                                      ("whitworth-quick-return", "D"), ("inverted-slider-crank", "H"),
+                                      ("peaucellier-lipkin", "P")])
 def test_equals_mpmath_newton_on_the_whole_system(name, of):
     # A frame point on a dyad (chebyshev-lambda), a dyad on a dyad (watt-i), a distance with no
-    # dyad (arm-string): mpmath's findroot polishes the reference's float root to 60 digits,
-    # from the scene's own equations taken all at once.
+    # dyad (arm-string), sliders on a moving line (whitworth, inverted slider-crank), an inversor's
+    # mirrored points (peaucellier): mpmath's findroot polishes the reference's float root to 60
+    # digits, from the scene's own equations taken all at once.
     compiled, reference = _reference(load_scene(name), of)
-    theta = np.array([0.1, 1.0, 2.5, 4.0, 6.0])
+    # the inversor assembles within +-120 deg only
+    theta = np.array([0.1, 1.0, 2.0, 4.5, 6.0] if name == "peaucellier-lipkin" else [0.1, 1.0, 2.5, 4.0, 6.0])
     certified = reference.certify(theta)
     assert certified.ok.all()
     defaults = {symbol(n): sympy.Rational(str(v)) for n, v in compiled.parameter_values.items()}

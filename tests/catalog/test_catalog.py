@@ -17,7 +17,7 @@ def test_list_shows_at_least_ten_scenes():
     assert len(names) >= 10
     assert {"fourbar", "fourbar-nongrashof", "fourbar-near-toggle", "slider-crank", "watt-straight-line",
             "hoekens-straight-line", "chebyshev-straight-line", "watt-i", "stephenson-iii",
-            "five-bar", "arm-string", "chebyshev-lambda"} <= set(names)
+            "five-bar", "arm-string", "chebyshev-lambda", "whitworth-quick-return", "inverted-slider-crank"} <= set(names)
     assert all(s["description"] for s in listed)
 
 

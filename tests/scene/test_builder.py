@@ -98,8 +98,23 @@ def arm_string():
     return b.build()
 
 
+def inverted_slider_crank():
+    b = SceneBuilder("inverted-slider-crank", load_scene("inverted-slider-crank").description)
+    for name, value in dict(r=2, c=5, k=2).items():
+        b.parameter(name, value)
+    b.input("theta", range=(0, 360), unit="deg")
+    b.fixed("O", (0, 0))
+    b.fixed("C", ("c", 0))
+    b.crank("A", "O", length="r", input="theta")
+    b.slider("H", dict(through="C", toward="A"), distance=dict(to="C", length="k"), branch="ahead")
+    b.output("H")
+    b.output("stroke", "dist(A, C)")
+    b.output("swing", "angle(C, A)")
+    return b.build()
+
+
 BY_HAND = {"chebyshev-lambda": chebyshev_lambda, "fourbar": fourbar, "slider-crank": slider_crank,
-           "watt-i": watt_i, "arm-string": arm_string}
+           "watt-i": watt_i, "arm-string": arm_string, "inverted-slider-crank": inverted_slider_crank}
 
 
 @pytest.mark.parametrize("name", sorted(BY_HAND))
@@ -180,8 +195,8 @@ def from_scene(scene):
             b.frame(name, c.bases, at=c.at)
         else:
             assert isinstance(c, Slider)
-            b.slider(name, dict(through=c.through, direction=c.direction), distance=dict(to=c.to, length=c.length),
-                     branch=c.branch)
+            b.slider(name, dict(through=c.through, direction=c.direction, toward=c.toward),
+                     distance=dict(to=c.to, length=c.length), branch=c.branch)
     for name, output in scene.outputs.items():
         b.output(name, output.text)
     return b

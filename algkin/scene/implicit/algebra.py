@@ -4,7 +4,7 @@ from collections.abc import Callable, Mapping, Sequence
 
 import sympy
 
-__all__ = ["Circles", "reduce_on_circles", "reducer", "tidy_ratio", "tidy_product"]
+__all__ = ["Circles", "reduce_on_circles", "reducer", "tidy_ratio", "tidy_product", "tidy_sqrt"]
 
 Circles = Sequence[tuple[sympy.Symbol, sympy.Symbol]]  # each input's (cos, sin) symbols
 
@@ -41,3 +41,20 @@ def tidy_product(*factors: sympy.Expr) -> sympy.Expr:
     """The product of ``factors`` with every numeric content gathered in front."""
     parts = [_primitive(sympy.expand(f)) for f in factors]
     return sympy.Mul(*[c for c, _ in parts], *[sympy.factor_terms(p) for _, p in parts])
+
+
+def tidy_sqrt(expr: sympy.Expr) -> sympy.Expr:
+    """``sqrt(expr)`` with the square part of its numeric content in front: ``10*sqrt(30*s + 34)``
+    for ``sqrt(3000*s + 3400)`` (sympy does so for a product, never for a sum).
+
+    >>> s = sympy.Symbol("s")
+    >>> tidy_sqrt(3000*s + 3400), tidy_sqrt(s/8 + sympy.Rational(1, 8))
+    (10*sqrt(30*s + 34), sqrt(2*s + 2)/4)
+    """
+    if not expr.is_Add:  # a product keeps its factors (sympy takes a number's squares out of one)
+        return sympy.sqrt(expr)
+    content, part = _primitive(expr)
+    if not (content.is_Rational and content > 0 and content != 1):
+        return sympy.sqrt(expr)
+    outside, inside = sympy.sqrt(content).as_coeff_Mul()  # sqrt(200) = 10 * sqrt(2)
+    return outside * sympy.sqrt(sympy.expand(inside**2 * part))

@@ -2,7 +2,8 @@
 
 A construction that brings two unknowns (a dyad, a slider) compiles into a spec: its
 point's coordinates in system variables, and the behaviour branches and analyses ask of
-it (its closed form per label, a stable float evaluator, its toggle conditions). A new
+it (its closed form per label, a stable float evaluator, its toggle conditions, and for the
+certified reference its equations as written and a textbook float start). A new
 construction is one more subclass of ``ImplicitSpec``.
 """
 
@@ -16,11 +17,12 @@ import sympy
 from .algebra import Circles
 from .floats import FloatArray
 
-__all__ = ["ImplicitSpec", "StableEvaluator", "Point", "Fix", "HalfAngle"]
+__all__ = ["ImplicitSpec", "StableEvaluator", "Point", "Fix", "HalfAngle", "FloatPoint"]
 
 Point = tuple[sympy.Expr, sympy.Expr]
 Fix = Callable[[sympy.Expr], sympy.Expr]  # dimensions at their defaults, reduced on the circles
 HalfAngle = tuple[FloatArray, FloatArray]  # an input's t = tan(theta/2) and w = 1/(1 + t**2)
+FloatPoint = tuple[FloatArray, FloatArray]
 
 
 class StableEvaluator(Protocol):
@@ -47,6 +49,11 @@ class ImplicitSpec(ABC):
         """``sigma`` of the mode ``label``: +1 for the first label, -1 for the second."""
         return 1 if label == self.labels[0] else -1
 
+    def unknown_symbols(self) -> tuple[sympy.Symbol, sympy.Symbol]:
+        """Its two unknowns as the system's symbols."""
+        x, y = (sympy.Symbol(u, real=True) for u in self.unknowns)
+        return x, y
+
     @abstractmethod
     def closed_form(self, substitution: Mapping[sympy.Symbol, sympy.Expr], sigma: int,
                     inputs: Circles) -> tuple[Point, sympy.Expr]:
@@ -70,3 +77,18 @@ class ImplicitSpec(ABC):
                          sigma: float) -> StableEvaluator:
         """The float evaluator of the mode ``sigma``, its expressions taken through ``fix`` and
         compiled in ``arguments`` (each input's c, s, then earlier points' unknowns)."""
+
+    @abstractmethod
+    def written(self) -> list[sympy.Expr]:
+        """Its two equations as the construction writes them (unexpanded, in system variables):
+        expanded, the system's own; in balls, fewer operations than expanded."""
+
+    @abstractmethod
+    def start_parts(self) -> tuple[sympy.Expr, ...]:
+        """The expressions (in system variables) that ``start`` takes, in its order."""
+
+    @staticmethod
+    @abstractmethod
+    def start(parts: Sequence[FloatArray], sigma: float) -> FloatPoint:
+        """A float starting point for Newton from ``start_parts``' values, on the mode ``sigma``: the
+        textbook formula, no stabilisation (where it cannot assemble, a point off the fold)."""

@@ -30,7 +30,7 @@ import numpy as np
 import sympy
 
 from .algebra import Circles, reducer, tidy_product, tidy_ratio
-from .base import Fix, HalfAngle, ImplicitSpec, Point, StableEvaluator
+from .base import Fix, FloatPoint, HalfAngle, ImplicitSpec, Point, StableEvaluator
 from .floats import FloatArray, heron_area, stable_quadratic
 
 __all__ = ["DyadSpec"]
@@ -70,6 +70,26 @@ class DyadSpec(ImplicitSpec):
     def stable_evaluator(self, fix: Fix, arguments: list[sympy.Symbol], half_angles: Circles,
                          sigma: float) -> StableEvaluator:
         return _Stable(self, fix, arguments, half_angles, sigma)
+
+    def written(self) -> list[sympy.Expr]:
+        (px, py), (qx, qy), (l1, l2) = self.base_p, self.base_q, self.lengths
+        x, y = self.unknown_symbols()
+        return [(x - px) ** 2 + (y - py) ** 2 - l1**2, (x - qx) ** 2 + (y - qy) ** 2 - l2**2]
+
+    def start_parts(self) -> tuple[sympy.Expr, ...]:
+        return (*self.base_p, *self.base_q, *self.lengths)
+
+    @staticmethod
+    def start(parts: Sequence[FloatArray], sigma: float) -> FloatPoint:
+        """Two circles meet: the foot on PQ, then the half-chord to the labelled side. Where they
+        miss, the half-chord of the discriminant's size: a start off the fold, whose J is singular
+        (Newton's first step from there would fly off, and take ~50 steps to come back)."""
+        px, py, qx, qy, l1, l2 = parts
+        dx, dy = qx - px, qy - py
+        d2 = dx * dx + dy * dy
+        along = (d2 + l1 * l1 - l2 * l2) / (2 * d2)
+        across = sigma * np.sqrt(np.abs(l1 * l1 / d2 - along * along))
+        return px + along * dx - across * dy, py + along * dy + across * dx
 
 
 class _Stable:

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import sympy
 
 from .algebra import Circles, reducer, tidy_ratio
-from .base import Fix, HalfAngle, ImplicitSpec, Point, StableEvaluator
+from .base import Fix, FloatPoint, HalfAngle, ImplicitSpec, Point, StableEvaluator
 from .floats import FloatArray
 
 __all__ = ["MirrorSpec", "mirror_equations"]
@@ -87,20 +87,35 @@ class MirrorSpec(ImplicitSpec):
                          sigma: float) -> StableEvaluator:
         return _Stable(self, fix, arguments)
 
+    def written(self) -> list[sympy.Expr]:
+        return mirror_equations(self.unknown_symbols(), self.other_at, self.base_p, self.base_q, self.lengths)
+
+    def start_parts(self) -> tuple[sympy.Expr, ...]:
+        return _mirror_parts(self)
+
+    @staticmethod
+    def start(parts: Sequence[FloatArray], sigma: float) -> FloatPoint:
+        """``2 U + a d - Y``, the mirror image of the earlier point (``sigma`` plays no part)."""
+        bx, by, dx, dy, along = parts
+        return bx + along * dx, by + along * dy
+
+
+def _mirror_parts(mirror: MirrorSpec) -> tuple[sympy.Expr, ...]:
+    """``(2 U - Y, d, a)``: ``X = 2 U - Y + a d`` with ``a = (l1**2 - l2**2) / |d|**2 + 1``."""
+    (px, py), (qx, qy) = mirror.base_p, mirror.base_q
+    ox, oy = mirror.other_at
+    dx, dy = qx - px, qy - py
+    l1, l2 = mirror.lengths
+    return 2 * px - ox, 2 * py - oy, dx, dy, (l1**2 - l2**2) / (dx**2 + dy**2) + 1
+
 
 class _Stable:
     """The mirror image in floats: ``2 U + a d - Y`` with ``a`` from the lengths (no cancellation to fear
     beyond the foot's, which the dyads it is built on already carry)."""
 
     def __init__(self, mirror: MirrorSpec, fix: Fix, arguments: list[sympy.Symbol]) -> None:
-        (px, py), (qx, qy) = mirror.base_p, mirror.base_q
-        ox, oy = mirror.other_at
-        dx, dy = qx - px, qy - py
-        l1, l2 = mirror.lengths
-        along = (l1**2 - l2**2) / (dx**2 + dy**2) + 1
         self.unknowns = mirror.unknowns
-        self.formula = sympy.lambdify(arguments, [fix(e) for e in (2 * px - ox, 2 * py - oy, dx, dy, along)],
-                                      "numpy", cse=True)
+        self.formula = sympy.lambdify(arguments, [fix(e) for e in _mirror_parts(mirror)], "numpy", cse=True)
 
     def __call__(self, values: Sequence[FloatArray], half: Sequence[HalfAngle]) -> tuple[FloatArray, FloatArray]:
         bx, by, dx, dy, along = self.formula(*values)
