@@ -71,6 +71,9 @@ class Motion:
         self.params, self.compiled = symbolic_parameters(self.scene, params)
         self.branches = closed_forms(self.compiled)
         self.inputs = {n: self.scene.inputs[n] for n in self.compiled.system.inputs}
+        if not self.inputs:  # a scene of dimensions alone (a length swept as a parameter): nothing to sweep
+            raise UsageError("scene", self.scene.name, "has no input angle: nothing moves to draw "
+                                                      "(derive and curve take --param for a swept dimension)")
         self.defaults = {n: float(v) for n, v in self.compiled.parameter_values.items()}
         self.points = self._point_forms()
 

@@ -141,3 +141,25 @@ def test_a_zero_error_is_drawn_on_the_axis_and_no_labels_overlap():
     case_colours = [tuple(h.get_color()) if not isinstance(h.get_color(), str) else h.get_color()
                     for h in figure.legends[1].legend_handles]
     assert len(set(case_colours)) == 3
+
+
+NO_INPUT = """
+name = "arm-by-string"
+[parameters]
+u = { default = 300, range = [60, 700] }
+[points]
+O = { fixed = [0, 0] }
+B = { fixed = [400, -80] }
+A = { dyad = ["O", "B"], lengths = [350, "u"], branch = "right" }
+[outputs]
+A = "A"
+"""
+
+
+def test_a_scene_without_an_input_is_refused_in_one_line_and_writes_nothing(tmp_path):
+    scene, out = tmp_path / "arm.toml", tmp_path / "arm.png"
+    scene.write_text(NO_INPUT)
+    done = subprocess.run([sys.executable, "-m", "algkin", "plot", str(scene), "--out", str(out)],
+                          capture_output=True, text=True)
+    assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
+    assert "has no input angle" in done.stderr and not out.exists()
