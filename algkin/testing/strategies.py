@@ -14,6 +14,15 @@ link decides the class), ``s + w = u + v`` (change point) or ``s + w > u + v``
 (non-Grashof). Every scene assembles on at least ``MIN_ASSEMBLED_DEGREES`` of its input
 range, checked in floating point from the lengths alone.
 
+Besides four-bars and slider-cranks: sliders on a moving line (``moving_sliders``: B on the
+line through the ground point L and the crank tip A, ``toward``, at ``l`` from L, A or a
+ground point Q) and inversor cells (``inversors``: a four-bar's B and its twin E, the other
+intersection of the same two circles, with P on the bar AE (a kite) or the rhombus ABPE
+closed at P, a Peaucellier cell). Every scene keeps the points O, A (the crank), B and P
+(a point of the bar AB, or of the cell) and the outputs ``B`` and ``P``; some carry an angle
+output ``phi = "angle(X, B)"`` too, X a point at a fixed distance from B (or
+``angle(O, A)``, the crank's own).
+
 >>> from hypothesis import given, settings
 >>> @settings(max_examples=10, database=None)
 ... @given(four_bars("crank-rocker"))
@@ -31,11 +40,15 @@ from fractions import Fraction
 import numpy as np
 import sympy
 from hypothesis import assume, strategies as st
+from numpy.typing import NDArray
 
-from ..scene import load_scene_text
+from ..scene import Scene, load_scene_text
+from ..scene.implicit.base import FloatPoint
+
+Point = tuple[Fraction, Fraction]
 
 __all__ = ["GRASHOF_KINDS", "lengths", "four_bar_lengths", "four_bars", "near_toggle_four_bars",
-           "slider_cranks", "scenes", "with_symbolic", "MIN_ASSEMBLED_DEGREES"]
+           "slider_cranks", "moving_sliders", "inversors", "scenes", "with_symbolic", "MIN_ASSEMBLED_DEGREES"]
 
 # Which link is the shortest decides a Grashof four-bar's class.
 _SHORTEST = {"crank-rocker": "crank", "double-crank": "ground", "double-rocker": "coupler",
@@ -102,10 +115,22 @@ def _assembled_degrees(center, crank, phase, pivot, span_lo, span_hi):
     return np.count_nonzero((float(span_lo) < span) & (span < float(span_hi))) * 360 / _GRID
 
 
-def _four_bar_text(bars, origin, direction, phase, at, branch, name):
+def _angle_line(angle: tuple[str, str] | None) -> str:
+    """The optional angle output's line of ``[outputs]``: ``phi = "angle(X, Y)"``, or nothing."""
+    return "" if angle is None else f'phi = "angle({angle[0]}, {angle[1]})"\n'
+
+
+def _angle_output(pairs: list[tuple[str, str]]) -> st.SearchStrategy[tuple[str, str] | None]:
+    """None (no angle output) or one of ``pairs``: two points a fixed distance apart."""
+    return st.none() | st.sampled_from(pairs)
+
+
+def _four_bar_text(bars: dict[str, Fraction], origin: Point, direction: Point, phase: int, at: Point, branch: str,
+                   name: str, angle: tuple[str, str] | None = None, extra_points: str = "", p_line: str | None = None,
+                   what: str = "four-bar") -> str:
     (ox, oy), (ux, uy) = origin, direction
     return f"""name = "{name}"
-description = "random four-bar: crank {bars['crank']}, ground {bars['ground']}, coupler {bars['coupler']}, \
+description = "random {what}: crank {bars['crank']}, ground {bars['ground']}, coupler {bars['coupler']}, \
 rocker {bars['rocker']}"
 [parameters]
 a = {_q(bars['crank'])}
@@ -121,11 +146,11 @@ O = {{ fixed = [{_q(ox)}, {_q(oy)}] }}
 D = {{ fixed = ["{ox} + ({ux})*g", "{oy} + ({uy})*g"] }}
 A = {{ crank = "O", length = "a", input = "theta", phase = {phase} }}
 B = {{ dyad = ["A", "D"], lengths = ["l", "m"], branch = "{branch}" }}
-P = {{ frame = ["A", "B"], at = ["p", "q"] }}
+{extra_points}{p_line or 'P = { frame = ["A", "B"], at = ["p", "q"] }'}
 [outputs]
 B = "B"
 P = "P"
-"""
+{_angle_line(angle)}"""
 
 
 def _assembles(bars, origin, direction, phase):
@@ -142,7 +167,8 @@ def _four_bar(draw, bars, name):
     assume(_assembles(bars, origin, direction, phase))
     at = (draw(_frame), draw(_frame))
     branch = draw(st.sampled_from(["left", "right"]))
-    return load_scene_text(_four_bar_text(bars, origin, direction, phase, at, branch, name), f"{name}.toml")
+    angle = draw(_angle_output([("A", "B"), ("D", "B"), ("O", "A")]))
+    return load_scene_text(_four_bar_text(bars, origin, direction, phase, at, branch, name, angle), f"{name}.toml")
 
 
 def four_bars(kind=None):
@@ -165,7 +191,8 @@ def near_toggle_four_bars(digits=(3, 8)):
     return _near_toggle_lengths(digits).flatmap(lambda bars: _four_bar(bars, "near-toggle"))
 
 
-def _slider_text(r, rod, origin, line, direction, at, branch):
+def _slider_text(r: Fraction, rod: Fraction, origin: Point, line: Point, direction: tuple[int, int], at: Point,
+                 branch: str, angle: tuple[str, str] | None = None) -> str:
     return f"""name = "slider-crank"
 description = "random slider-crank: crank {r}, rod {rod}"
 [parameters]
@@ -185,7 +212,7 @@ P = {{ frame = ["A", "B"], at = ["p", "q"] }}
 [outputs]
 B = "B"
 P = "P"
-"""
+{_angle_line(angle)}"""
 
 
 @st.composite
@@ -205,12 +232,128 @@ def slider_cranks(draw):
     rod = Fraction(math.ceil(reach * 8) + 1, 8) + draw(lengths(min_value=Fraction(0), max_value=Fraction(4)))
     at = (draw(_frame), draw(_frame))
     branch = draw(st.sampled_from(["ahead", "behind"]))
-    return load_scene_text(_slider_text(r, rod, origin, line, direction, at, branch), "slider-crank.toml")
+    angle = draw(_angle_output([("A", "B"), ("O", "A")]))
+    return load_scene_text(_slider_text(r, rod, origin, line, direction, at, branch, angle), "slider-crank.toml")
 
 
-def scenes():
-    """Any of the above: four-bars of every class, near-toggle four-bars, slider-cranks."""
-    return st.one_of(four_bars(), near_toggle_four_bars(), slider_cranks())
+def _moving_slider_text(r: Fraction, l: Fraction, origin: Point, line: Point, other: Point, through: str, to: str,
+                        at: Point, branch: str, angle: tuple[str, str] | None) -> str:
+    q = f'Q = {{ fixed = [{_q(other[0])}, {_q(other[1])}] }}\n' if to == "Q" else ""
+    toward = "A" if through == "L" else "L"
+    return f"""name = "moving-slider"
+description = "random slider on the line through L and the crank tip A: crank {r}, {l} from {to}"
+[parameters]
+r = {_q(r)}
+l = {_q(l)}
+p = {_q(at[0])}
+q = {_q(at[1])}
+[inputs]
+theta = {{ range = [0, 360], unit = "deg" }}
+[points]
+O = {{ fixed = [{_q(origin[0])}, {_q(origin[1])}] }}
+L = {{ fixed = [{_q(line[0])}, {_q(line[1])}] }}
+{q}A = {{ crank = "O", length = "r", input = "theta" }}
+B = {{ slider = {{ through = "{through}", toward = "{toward}" }}, distance = {{ to = "{to}", length = "l" }}, \
+branch = "{branch}" }}
+P = {{ frame = ["A", "B"], at = ["p", "q"] }}
+[outputs]
+B = "B"
+P = "P"
+{_angle_line(angle)}"""
+
+
+def _line_meets(origin: Point, r: Fraction, line: Point, other: Point, length: Fraction) -> float:
+    """Degrees of the input turn where the line through L and the crank tip A passes within
+    ``length`` of ``other`` (by a margin), the tip at least 1/2 from L."""
+    angles = np.radians(np.arange(_GRID) * 360 / _GRID)
+    ax, ay = float(origin[0]) + float(r) * np.cos(angles), float(origin[1]) + float(r) * np.sin(angles)
+    dx, dy = ax - float(line[0]), ay - float(line[1])
+    norm = np.hypot(dx, dy)
+    gap = np.abs(dx * (float(other[1]) - float(line[1])) - dy * (float(other[0]) - float(line[0]))) / norm
+    return np.count_nonzero((gap < float(length) * (1 - 1 / 64)) & (norm > 0.5)) * 360 / _GRID
+
+
+@st.composite
+def moving_sliders(draw: st.DrawFn) -> Scene:
+    """Sliders on a moving line: B on the line through the ground point L and the crank tip A
+    (``slider = { through = L, toward = A }`` or through A toward L), at ``l`` from L, from A or
+    from a ground point Q, ahead or behind; P rigid with AB.
+
+    The crank's circle stays at least 1/2 from L, so the line always has a direction; with Q,
+    the line passes within ``l`` of it on at least ``MIN_ASSEMBLED_DEGREES`` of the turn.
+    """
+    origin, line = (draw(_coordinates), draw(_coordinates)), (draw(_coordinates), draw(_coordinates))
+    r = draw(lengths(max_value=Fraction(4)))
+    assume(abs(math.hypot(float(line[0] - origin[0]), float(line[1] - origin[1])) - float(r)) >= 0.5)
+    through, to = draw(st.sampled_from(["L", "A"])), draw(st.sampled_from(["L", "A", "Q"]))
+    other = (draw(_coordinates), draw(_coordinates)) if to == "Q" else line
+    length = draw(lengths())
+    if to == "Q":
+        assume(_line_meets(origin, r, line, other, length) >= MIN_ASSEMBLED_DEGREES)
+    at = (draw(_frame), draw(_frame))
+    branch = draw(st.sampled_from(["ahead", "behind"]))
+    angle = draw(_angle_output([(to, "B"), ("O", "A")]))
+    return load_scene_text(_moving_slider_text(r, length, origin, line, other, through, to, at, branch, angle),
+                           "moving-slider.toml")
+
+
+def _twins(bars: dict[str, Fraction], origin: Point, direction: Point, phase: int,
+           branch: str) -> tuple[NDArray[np.bool_], FloatPoint, FloatPoint, FloatPoint]:
+    """Per assembled grid angle: the crank tip A, B on ``branch`` of A -> D and its twin E (floats)."""
+    angles = np.radians(np.arange(_GRID) * 360 / _GRID + phase)
+    ax = float(origin[0]) + float(bars["crank"]) * np.cos(angles)
+    ay = float(origin[1]) + float(bars["crank"]) * np.sin(angles)
+    gx, gy = (float(o + bars["ground"] * d) for o, d in zip(origin, direction))
+    dx, dy = gx - ax, gy - ay
+    d2 = dx * dx + dy * dy
+    l, m = float(bars["coupler"]), float(bars["rocker"])
+    along = (l * l - m * m + d2) / (2 * d2)
+    with np.errstate(invalid="ignore"):
+        across = np.sqrt(l * l / d2 - along * along) * (1 if branch == "left" else -1)
+    ok = np.isfinite(across) & (np.abs(across) * np.sqrt(d2) > 1e-3)
+    b = (ax + along * dx - across * dy, ay + along * dy + across * dx)
+    e = (ax + along * dx + across * dy, ay + along * dy - across * dx)
+    return ok, (ax, ay), b, e
+
+
+@st.composite
+def inversors(draw: st.DrawFn) -> Scene:
+    """Inversor cells on a four-bar: B (``dyad = [A, D]``) and its twin E, the other intersection
+    of the same two circles (the same dyad, the other branch), with P on the bar AE (``kite``)
+    or the cell closed at P, the second intersection of the circles of radius ``l`` about B and
+    E (``cell``: the rhombus ABPE, P the inverse of A about D; its branch is the side A is not
+    on, constant over the turn by construction, a margin kept).
+    """
+    bars = draw(four_bar_lengths())
+    origin = (draw(_coordinates), draw(_coordinates))
+    direction = draw(_directions)
+    phase = draw(st.sampled_from([0, 90, 180, 270, -90]))
+    assume(_assembles(bars, origin, direction, phase))
+    at = (draw(_frame), draw(_frame))
+    branch = draw(st.sampled_from(["left", "right"]))
+    other = "right" if branch == "left" else "left"
+    twin = f'E = {{ dyad = ["A", "D"], lengths = ["l", "m"], branch = "{other}" }}\n'
+    kind = draw(st.sampled_from(["kite", "cell"]))
+    if kind == "kite":
+        p_line = 'P = { frame = ["A", "E"], at = ["p", "q"] }'
+    else:
+        ok, a, b, e = _twins(bars, origin, direction, phase, branch)
+        # A's side of B -> E, relative to the cell's size: it never comes near the line BE
+        cross = ((e[0] - b[0]) * (a[1] - b[1]) - (e[1] - b[1]) * (a[0] - b[0])) / float(bars["coupler"]) ** 2
+        assume(np.count_nonzero(ok) and (np.all(cross[ok] > 1e-2) or np.all(cross[ok] < -1e-2)))
+        side = "right" if cross[ok][0] > 0 else "left"  # A is left of B -> E: P is on its right
+        p_line = f'P = {{ dyad = ["B", "E"], lengths = ["l", "l"], branch = "{side}" }}'
+    angle = draw(_angle_output([("A", "B"), ("D", "B"), ("O", "A")]))
+    name = f"inversor-{kind}"
+    text = _four_bar_text(bars, origin, direction, phase, at, branch, name, angle, twin, p_line,
+                          f"{kind} on the four-bar")
+    return load_scene_text(text, f"{name}.toml")
+
+
+def scenes() -> st.SearchStrategy[Scene]:
+    """Any of the above: four-bars of every class, near-toggle four-bars, slider-cranks, sliders on
+    a moving line, inversor cells."""
+    return st.one_of(four_bars(), near_toggle_four_bars(), slider_cranks(), moving_sliders(), inversors())
 
 
 @st.composite

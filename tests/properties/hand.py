@@ -51,19 +51,39 @@ def slider(through, direction, center, length, sign):
 
 
 def trajectory(scene, degrees, label):
-    """The scene's points B and P at the input angle, on the branch ``label``; None where B is not."""
+    """The scene's points B and P (and A, and an inversor's twin E) at the input angle, on the branch
+    ``label``; None where B is not."""
     values, fixed = numbers(scene)
     crank = scene.points["A"]
     angle = mpmath.radians(degrees + 90 * crank.quarter_turns)
     center = fixed[crank.center]
     length = values["a"] if "a" in values else values["r"]
     a = (center[0] + length * mpmath.cos(angle), center[1] + length * mpmath.sin(angle))
-    if "D" in scene.points:  # a four-bar
-        b = dyad(a, values["l"], fixed["D"], values["m"], 1 if label == "left" else -1)
+    points = {"A": a, **fixed}
+    if "D" in scene.points:  # a four-bar, or an inversor on one
+        side = 1 if label == "left" else -1
+        b = dyad(a, values["l"], fixed["D"], values["m"], side)
+        if b is None:
+            return None
+        points["B"] = b
+        if "E" in scene.points:  # the twin: the same two circles, the other side
+            points["E"] = e = dyad(a, values["l"], fixed["D"], values["m"], -side)
+            if scene.name == "inversor-cell":  # the rhombus A B P E closed at P
+                points["P"] = (b[0] + e[0] - a[0], b[1] + e[1] - a[1])
+            else:  # a kite: P on the bar A E
+                points["P"] = frame(a, e, values["p"], values["q"])
+            return points
     else:
-        direction = scene.points["B"].direction
-        b = slider(fixed["L"], [int(v) for v in direction], a, values["l"], 1 if label == "ahead" else -1)
-    if b is None:
-        return None
-    return {"A": a, "B": b, "P": frame(a, b, values["p"], values["q"])}
+        line = scene.points["B"]
+        if line.direction is not None:  # a fixed line through L
+            through, direction = fixed["L"], [int(v) for v in line.direction]
+        else:  # the line through L and A, toward the other one
+            through, toward = points[line.through], points[line.toward]
+            direction = [toward[0] - through[0], toward[1] - through[1]]
+        b = slider(through, direction, points[line.to], values["l"], 1 if label == "ahead" else -1)
+        if b is None:
+            return None
+        points["B"] = b
+    points["P"] = frame(a, points["B"], values["p"], values["q"])
+    return points
 

@@ -1,8 +1,11 @@
 """A scene compiles only what the asked-for output needs (SPEC §1: "model only what a scene needs").
 
 The expected unknowns, parameters and inputs come from the construction graph, read off by
-hand: A is a crank (explicit) on O; B a dyad on A and D (four-bar) or a slider on L and A;
-P a frame on A and B; O, D and L are fixed, D at ``O + g*(u, v)``.
+hand: A is a crank (explicit) on O; B a dyad on A and D (four-bar) or a slider on L and A
+(on a fixed line, or the line through L and A); P a frame on A and B; O, D and L are fixed,
+D at ``O + g*(u, v)``. An inversor's P hangs on the twin E instead (a kite: P on the bar AE,
+so B is not needed and E is an ordinary dyad), or on B and E (a cell: P the rhombus ABPE
+closed, the mirror image of A; its lengths are l, so p and q are not needed).
 """
 
 import pytest
@@ -25,10 +28,21 @@ NEEDS = {
 }
 
 
+FOUR_BAR = {"a", "g", "l", "m"}
+CELL = {"B_x", "B_y", "E_x", "E_y", "P_x", "P_y"}
+INVERSORS = {  # output -> (unknowns, parameters), where they differ from the four-bar's
+    "inversor-kite": {"P": ({"E_x", "E_y", "P_x", "P_y"}, FOUR_BAR | {"p", "q"}),
+                      "P.y": ({"E_x", "E_y", "P_y"}, FOUR_BAR | {"p", "q"})},
+    "inversor-cell": {"P": (CELL, FOUR_BAR), "P.y": (CELL, FOUR_BAR)},
+}
+
+
 @settings(max_examples=590)
 @given(strategies.scenes(), st.sampled_from(sorted(NEEDS)))
 def test_only_what_the_output_needs(scene, output):
     unknowns, four_bar, slider, moves = NEEDS[output]
+    if output in INVERSORS.get(scene.name, {}):
+        unknowns, four_bar = INVERSORS[scene.name][output]
     parameters = four_bar if "D" in scene.points else slider
     if parameters is None:
         with pytest.raises(ValueError, match="unknown point"):

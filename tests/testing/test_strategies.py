@@ -1,5 +1,6 @@
 """The strategies draw what they promise: the Grashof class by the rule, scenes that assemble."""
 
+import collections
 import importlib.metadata
 import os
 import subprocess
@@ -12,6 +13,8 @@ from hypothesis import given, settings, strategies as st
 
 from algkin.branches import check_assembly, closed_forms
 from algkin.scene import compile_scene
+from algkin.scene.constructions import Slider
+from algkin.scene.implicit import MirrorSpec
 from algkin.testing import strategies
 from algkin.analyses.toggles import grashof
 
@@ -59,6 +62,42 @@ def test_near_toggle_four_bars_are_crank_rockers_just_short_of_the_change_point(
     bars = [scene.parameters[n] for n in "aglm"]
     margin = sorted(bars)[1] + sorted(bars)[2] - min(bars) - max(bars)
     assert min(bars) == bars[0] and margin in {sympy.Rational(1, 10**k) for k in range(3, 9)}
+
+
+def test_scenes_draw_every_construction():
+    # Over a sample of draws: sliders on a fixed and on a moving line, inversor kites and cells
+    # (compiled with a mirrored point: the twin E, and the cell's P), and angle outputs.
+    seen = collections.Counter()
+
+    @settings(max_examples=300, database=None)
+    @given(strategies.scenes())
+    def draw(scene):
+        b = scene.points["B"]
+        seen["fixed line"] += isinstance(b, Slider) and b.direction is not None
+        seen["moving line"] += isinstance(b, Slider) and b.toward is not None
+        if isinstance(b, Slider) and b.toward is not None:
+            seen[f"moving line {b.through} to {b.to}"] += 1
+        seen[scene.name] += scene.name.startswith("inversor")
+        if "E" in scene.points:
+            mirrored = [s.point for s in compile_scene(scene, ["B", "P"]).implicit if isinstance(s, MirrorSpec)]
+            seen["mirrored E"] += "E" in mirrored
+            seen["mirrored P"] += "P" in mirrored
+        seen["angle output"] += "phi" in scene.outputs
+
+    draw()
+    kinds = ["fixed line", "moving line", "inversor-kite", "inversor-cell", "mirrored E", "mirrored P", "angle output"]
+    assert all(seen[kind] >= 5 for kind in kinds), str(sorted(seen.items()))
+    # every line (through L toward A, or through A toward L) at a distance from each point (L, A, Q)
+    assert all(seen[f"moving line {through} to {to}"] for through in "LA" for to in "LAQ"), str(sorted(seen.items()))
+    assert seen["mirrored E"] == seen["inversor-kite"] + seen["inversor-cell"]  # B and P built: E is B's twin
+    assert seen["mirrored P"] == seen["inversor-cell"]
+
+
+@settings(max_examples=40)
+@given(st.one_of(strategies.moving_sliders(), strategies.inversors()))
+def test_moving_sliders_and_inversors_assemble(scene):
+    compiled = compile_scene(scene, ["B", "P"])
+    check_assembly(compiled, closed_forms(compiled))  # raises SceneError if never, or a mirror on the wrong side
 
 
 def run(code, **env):
