@@ -57,6 +57,7 @@ def test_the_readme_shows_commands():
 @pytest.fixture(scope="module")
 def walked(tmp_path_factory):
     """Every README command run, two at a time, each in its own empty directory."""
+    tmp_path_factory.getbasetemp()  # made once here: two threads making it at once would race
 
     def run(args):
         workdir = tmp_path_factory.mktemp("readme")
