@@ -159,14 +159,19 @@ def _assembles(bars, origin, direction, phase):
     return _assembled_degrees(origin, bars["crank"], phase, pivot, *span) >= MIN_ASSEMBLED_DEGREES
 
 
-@st.composite
-def _four_bar(draw, bars, name):
+def _placed(draw: st.DrawFn, bars: dict[str, Fraction]) -> tuple[Point, Point, int, Point, str]:
+    """Where a four-bar of ``bars`` lies (its crank's centre, the ground's direction, the crank's
+    phase), assembling over enough of the turn, with a coupler point and a branch."""
     origin = (draw(_coordinates), draw(_coordinates))
     direction = draw(_directions)
     phase = draw(st.sampled_from([0, 90, 180, 270, -90]))
     assume(_assembles(bars, origin, direction, phase))
-    at = (draw(_frame), draw(_frame))
-    branch = draw(st.sampled_from(["left", "right"]))
+    return origin, direction, phase, (draw(_frame), draw(_frame)), draw(st.sampled_from(["left", "right"]))
+
+
+@st.composite
+def _four_bar(draw, bars, name):
+    origin, direction, phase, at, branch = _placed(draw, bars)
     angle = draw(_angle_output([("A", "B"), ("D", "B"), ("O", "A")]))
     return load_scene_text(_four_bar_text(bars, origin, direction, phase, at, branch, name, angle), f"{name}.toml")
 
@@ -191,10 +196,12 @@ def near_toggle_four_bars(digits=(3, 8)):
     return _near_toggle_lengths(digits).flatmap(lambda bars: _four_bar(bars, "near-toggle"))
 
 
-def _slider_text(r: Fraction, rod: Fraction, origin: Point, line: Point, direction: tuple[int, int], at: Point,
-                 branch: str, angle: tuple[str, str] | None = None) -> str:
-    return f"""name = "slider-crank"
-description = "random slider-crank: crank {r}, rod {rod}"
+def _crank_and_line(name: str, description: str, r: Fraction, rod: Fraction, at: Point, origin: Point,
+                    line: Point) -> str:
+    """A slider scene's opening: its dimensions (crank r, rod l, coupler point p, q), its input,
+    the crank's centre O and the ground point L of the slider's line."""
+    return f"""name = "{name}"
+description = "{description}"
 [parameters]
 r = {_q(r)}
 l = {_q(rod)}
@@ -205,7 +212,13 @@ theta = {{ range = [0, 360], unit = "deg" }}
 [points]
 O = {{ fixed = [{_q(origin[0])}, {_q(origin[1])}] }}
 L = {{ fixed = [{_q(line[0])}, {_q(line[1])}] }}
-A = {{ crank = "O", length = "r", input = "theta" }}
+"""
+
+
+def _slider_text(r: Fraction, rod: Fraction, origin: Point, line: Point, direction: tuple[int, int], at: Point,
+                 branch: str, angle: tuple[str, str] | None = None) -> str:
+    head = _crank_and_line("slider-crank", f"random slider-crank: crank {r}, rod {rod}", r, rod, at, origin, line)
+    return head + f"""A = {{ crank = "O", length = "r", input = "theta" }}
 B = {{ slider = {{ through = "L", direction = [{direction[0]}, {direction[1]}] }}, \
 distance = {{ to = "A", length = "l" }}, branch = "{branch}" }}
 P = {{ frame = ["A", "B"], at = ["p", "q"] }}
@@ -240,19 +253,9 @@ def _moving_slider_text(r: Fraction, l: Fraction, origin: Point, line: Point, ot
                         at: Point, branch: str, angle: tuple[str, str] | None) -> str:
     q = f'Q = {{ fixed = [{_q(other[0])}, {_q(other[1])}] }}\n' if to == "Q" else ""
     toward = "A" if through == "L" else "L"
-    return f"""name = "moving-slider"
-description = "random slider on the line through L and the crank tip A: crank {r}, {l} from {to}"
-[parameters]
-r = {_q(r)}
-l = {_q(l)}
-p = {_q(at[0])}
-q = {_q(at[1])}
-[inputs]
-theta = {{ range = [0, 360], unit = "deg" }}
-[points]
-O = {{ fixed = [{_q(origin[0])}, {_q(origin[1])}] }}
-L = {{ fixed = [{_q(line[0])}, {_q(line[1])}] }}
-{q}A = {{ crank = "O", length = "r", input = "theta" }}
+    head = _crank_and_line("moving-slider", f"random slider on the line through L and the crank tip A: crank {r}, "
+                           f"{l} from {to}", r, l, at, origin, line)
+    return head + f"""{q}A = {{ crank = "O", length = "r", input = "theta" }}
 B = {{ slider = {{ through = "{through}", toward = "{toward}" }}, distance = {{ to = "{to}", length = "l" }}, \
 branch = "{branch}" }}
 P = {{ frame = ["A", "B"], at = ["p", "q"] }}
@@ -325,12 +328,7 @@ def inversors(draw: st.DrawFn) -> Scene:
     on, constant over the turn by construction, a margin kept).
     """
     bars = draw(four_bar_lengths())
-    origin = (draw(_coordinates), draw(_coordinates))
-    direction = draw(_directions)
-    phase = draw(st.sampled_from([0, 90, 180, 270, -90]))
-    assume(_assembles(bars, origin, direction, phase))
-    at = (draw(_frame), draw(_frame))
-    branch = draw(st.sampled_from(["left", "right"]))
+    origin, direction, phase, at, branch = _placed(draw, bars)
     other = "right" if branch == "left" else "left"
     twin = f'E = {{ dyad = ["A", "D"], lengths = ["l", "m"], branch = "{other}" }}\n'
     kind = draw(st.sampled_from(["kite", "cell"]))
