@@ -33,7 +33,7 @@ from .minimal import FactorCheck, structure_failures
 from .residual import ExactValue, Polynomial, PolynomialLike, polynomial_of
 from .solve import STARTS, ArrayProgram, Floats, blocks_of, solve_floats
 
-__all__ = ["Verification", "verify_branches", "WORKING_BITS"]
+__all__ = ["Verification", "verify_branches", "WORKING_BITS", "real_floats", "decided_real"]
 
 WORKING_BITS = 192
 TOLERANCE = 1e-30  # relative residual a polynomial must reach on every root (the enclosures reach ~1e-50)
@@ -158,10 +158,15 @@ class _Branch:
         self.discriminant_floats: ArrayProgram = compile_program(self.discriminants, known, NUMPY)
 
     def real_floats(self, floats: Mapping[str, Floats], known: Sequence[str]) -> NDArray[np.bool_]:
-        count = len(next(iter(floats.values())))
-        with np.errstate(all="ignore"):  # a later discriminant holds an earlier one's sqrt: nan where that is negative
-            values = self.discriminant_floats(*(floats.get(n, np.zeros(count)) for n in known))
-        return np.all([np.broadcast_to(v, (count,)) > 0 for v in values], axis=0) if values else np.ones(count, bool)
+        return real_floats(self.discriminant_floats, floats, known)
+
+
+def real_floats(discriminants: ArrayProgram, floats: Mapping[str, Floats], known: Sequence[str]) -> NDArray[np.bool_]:
+    """Per sample, whether every discriminant (a numpy program of ``known``) is positive in floats."""
+    count = len(next(iter(floats.values())))
+    with np.errstate(all="ignore"):  # a later discriminant holds an earlier one's sqrt: nan where that is negative
+        values = discriminants(*(floats.get(n, np.zeros(count)) for n in known))
+    return np.all([np.broadcast_to(v, (count,)) > 0 for v in values], axis=0) if values else np.ones(count, bool)
 
 
 def verify_branches(system: System, indicators: Sequence[Indicator], branches: Sequence[BranchForms],
@@ -259,7 +264,7 @@ class _Sample:
         closed = iter(plan.closed(*self.known))
         self.real, self.values = [], []
         for branch in plan.branches:
-            self.real.append(_real([next(closed) for _ in branch.discriminants]))
+            self.real.append(decided_real([next(closed) for _ in branch.discriminants]))
             self.values.append([next(closed) for _ in branch.values])
 
     def lacks_a_root(self, plan: _Plan) -> bool:
@@ -327,7 +332,7 @@ def _labels(plan: _Plan, root: Root, known: list[flint.arb]) -> Label | None:
     return tuple(sorted(labels.items()))
 
 
-def _real(values: list[flint.arb | int]) -> bool | None:
+def decided_real(values: Sequence[flint.arb | int]) -> bool | None:
     """``True`` or ``False`` where the branch (its discriminants' ``values``) is decided real or not,
     ``None`` near its boundary."""
     if all(v > 0 for v in values):

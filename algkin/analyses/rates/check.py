@@ -34,6 +34,7 @@ from ...evaluate import ARB, NUMPY
 from ...evaluate.program import BallProgram, compile_program
 from ...system import System, symbol
 from ...verify.balls import certifier_of, certify_parameters
+from ...verify.check import decided_real, real_floats
 from ...verify.solve import STARTS, blocks_of, solve_floats
 
 __all__ = ["RatesCheck", "check_rates", "WORKING_BITS", "STEP_BITS", "MAX_REL_ERROR"]
@@ -232,16 +233,11 @@ class _Branch:
         self.known = known
 
     def real_floats(self, known: Mapping[str, np.ndarray]) -> np.ndarray:
-        count = len(next(iter(known.values())))
-        values = self.discriminant_floats(*(known[n] for n in self.known))
-        return np.all([np.broadcast_to(v, (count,)) > 0 for v in values], axis=0) if values else np.ones(count, bool)
+        return real_floats(self.discriminant_floats, known, self.known)
 
     def real(self, known: Mapping[str, arb]) -> bool | None:
         """``True`` or ``False`` where decided in balls, ``None`` near the branch's edge (a toggle)."""
-        values = self.discriminants(*(known[n] for n in self.known))
-        if all(v > 0 for v in values):
-            return True
-        return False if any(v < 0 for v in values) else None
+        return decided_real(self.discriminants(*(known[n] for n in self.known)))
 
     def values(self, known: Mapping[str, arb]) -> dict[str, tuple[arb, arb]]:
         """Each coordinate's velocity and acceleration closed forms, in balls at ``known``."""
