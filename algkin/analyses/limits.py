@@ -60,6 +60,7 @@ from ..scene.model import Scene
 from ..scene.settings import with_values
 from ..system import symbol
 from ..system.angles import tangent_to_degrees, vanishes_at_half_turn
+from .toggles import single_input
 from ..system.convert import flint_context, fmpq_to_rational, to_flint
 
 __all__ = ["limits", "stationary_condition", "Limit", "Limits", "TimeRatio"]
@@ -398,13 +399,6 @@ def _centre_name(scene: Scene, compiled: Compiled, path: Path) -> str | None:
                  if isinstance(scene.points[n], Fixed) and (x, y) == path.centre), None)
 
 
-def _single_input(compiled: Compiled) -> tuple[str, sympy.Symbol, sympy.Symbol]:
-    if len(compiled.system.inputs) != 1:
-        raise UsageError("scene", compiled.scene.name, "limit positions are computed for one-input scenes")
-    (name, (c, s)), = compiled.system.inputs.items()
-    return name, symbol(c), symbol(s)
-
-
 @dataclass
 class PointLimits:
     """One point's limit positions on every branch, the roots that are none, or why it has none."""
@@ -421,7 +415,7 @@ class PointLimits:
 def _point_limits(scene: Scene, point: str, lo: float, hi: float) -> PointLimits:
     """The limits of one point (every branch), the roots dropped, or why the point has none."""
     compiled = compile_scene(scene, [point])
-    _, c, s = _single_input(compiled)
+    _, c, s = single_input(compiled, "limit positions")
     stationary = stationary_condition(compiled, point)
     if isinstance(stationary, str):
         return PointLimits(point, compiled, None, [], [], [], stationary)
@@ -475,7 +469,7 @@ def _turns_fully(compiled: Compiled, lo: float, hi: float) -> str | None:
 
     if hi - lo < 360:
         return f"the input's range [{lo:g}, {hi:g}] deg is less than a full turn"
-    _, c, s = _single_input(compiled)
+    _, c, s = single_input(compiled, "limit positions")
     t = sympy.Symbol("t")
     with flint.ctx.workprec(ROOT_BITS):
         for spec in compiled.implicit:
@@ -494,7 +488,7 @@ def _time_ratio(found: PointLimits, lo: float, hi: float) -> tuple[TimeRatio | N
     if why is not None:
         return None, why
     branch = next(b for b in found.branches if b.selected)
-    _, c, s = _single_input(compiled)
+    _, c, s = single_input(compiled, "limit positions")
     with flint.ctx.workprec(CHECK_BITS):
         if not all(evaluate(d, _angle_values(flint.arb(lo), str(c), str(s)), ARB) > 0
                    for d in branch.discriminants.values()):

@@ -36,7 +36,7 @@ from ..system import symbol
 from ..system.angles import half_angle_numerator, tangent_to_degrees, vanishes_at_half_turn
 from ..system.convert import real_roots
 
-__all__ = ["toggles", "Toggle", "Toggles", "grashof"]
+__all__ = ["toggles", "Toggle", "Toggles", "grashof", "single_input"]
 
 ROOT_BITS = 128
 
@@ -101,9 +101,10 @@ def _eliminate_earlier(compiled, condition, spec):
     return eliminate([condition] + equations, sorted(earlier), [c, s], method="resultant").polynomial
 
 
-def _single_input(compiled):
+def single_input(compiled, what="toggles"):
+    """``(name, c, s)`` of the scene's one input; a usage error naming ``what`` if it has more."""
     if len(compiled.system.inputs) != 1:
-        raise UsageError("scene", compiled.scene.name, "toggles are computed for one-input scenes")
+        raise UsageError("scene", compiled.scene.name, f"{what} are computed for one-input scenes")
     (name, (c, s)), = compiled.system.inputs.items()
     return name, symbol(c), symbol(s)
 
@@ -119,7 +120,7 @@ def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name, S
     if not implicit:
         raise UsageError("scene", scene.name, "has no dyad or slider, so no assembly modes to meet")
     compiled = compile_scene(scene, implicit)
-    name, c, s = _single_input(compiled)
+    name, c, s = single_input(compiled)
     lo, hi = scene.inputs[name].range_degrees
     t = symbol(f"t_{name}")
     found = []
