@@ -102,8 +102,11 @@ class Quantity:
         return symbol(name)
 
     def _in_angle(self, expr):
-        problem = self._problem
-        return expr.xreplace({problem.c: sympy.cos(self.input), problem.s: sympy.sin(self.input)})
+        line = self._problem.line
+        if not line.is_angle:  # a length input is its own variable already
+            return expr
+        c, s = line.variables
+        return expr.xreplace({c: sympy.cos(self.input), s: sympy.sin(self.input)})
 
     # Two spellings of the same forms: ``expr``/``relation`` in the input angle itself
     # (``cos(theta)``, as the seed documents write them, to differentiate or plot), and
@@ -152,11 +155,10 @@ class Quantity:
         """The quantity at an input in degrees (and dimensions), e.g. ``at(theta=90, b=80)``."""
         (name,) = self.derivation.compiled.system.inputs
         if name not in values:
-            raise UsageError(name, None, f"give the input {name} in degrees")
+            raise UsageError(name, None, f"give the input {name} in degrees (a length input as it is)")
         problem = self._problem
         with mpmath.workdps(30):
-            angle = mpmath.radians(mpmath.mpf(values[name]))
-            numbers = {problem.c.name: mpmath.cos(angle), problem.s.name: mpmath.sin(angle)}
+            numbers = problem.line.numbers_at(mpmath.mpf(values[name]))
             for p in problem.parameters:
                 default = self.derivation.compiled.parameter_values[p.name]
                 numbers[p.name] = mpmath.mpf(str(values.get(p.name, default)))

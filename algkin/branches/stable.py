@@ -8,7 +8,7 @@ Every input enters through one transcendental, ``t = tan(theta/2)`` (numpy's is
 vectorised and correctly rounded to within an ulp), with ``c = (1 - t**2) w``,
 ``s = 2 t w``, ``w = 1 / (1 + t**2)``; an evaluator may use ``t`` and ``w`` themselves.
 The base coordinates are compiled once (``sympy.lambdify`` with common subexpressions
-shared) and the samples are run in cache-sized chunks.
+shared) and the samples are run in cache-sized chunks. A length input enters as it is.
 
 >>> import numpy as np
 >>> from algkin.scene import load_scene, compile_scene
@@ -45,7 +45,8 @@ class StableBranch:
         defaults = {symbol(n): sympy.Rational(str(v)) for n, v in compiled.parameter_values.items()}
         self.half_angles = compiled.circles
         fix = lambda e: reduce_on_circles(sympy.sympify(e).xreplace(defaults), self.half_angles)  # noqa: E731
-        arguments = [v for pair in self.half_angles for v in pair]
+        self.turning = [len(variables) == 2 for variables in compiled.system.inputs.values()]
+        arguments = [symbol(v) for variables in compiled.system.inputs.values() for v in variables]
         self.dyads: list[StableEvaluator] = []  # every implicit point's, in construction order
         for spec in compiled.implicit:
             sigma = float(spec.sign(branch.labels[spec.point])) if spec.labels else 1.0
@@ -53,7 +54,7 @@ class StableBranch:
             arguments += [symbol(u) for u in spec.unknowns]
 
     def __call__(self, *angles: npt.ArrayLike) -> dict[str, FloatArray]:
-        """Dyad coordinates (unknown -> array) from each input's angles in radians."""
+        """Dyad coordinates (unknown -> array) from each input's angles in radians (a length as it is)."""
         arrays = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in angles))
         flat = [a.ravel() for a in arrays]
         out = {u: np.empty(flat[0].size) for d in self.dyads for u in d.unknowns}
@@ -66,7 +67,10 @@ class StableBranch:
     def _chunk(self, angles: Sequence[FloatArray]) -> dict[str, FloatArray]:
         values: list[FloatArray] = []
         half: list[HalfAngle] = []
-        for theta in angles:
+        for theta, turning in zip(angles, self.turning):
+            if not turning:
+                values.append(theta)
+                continue
             t = np.tan(0.5 * theta)
             w = 1 / (1 + t * t)
             values += [(1 - t) * (1 + t) * w, 2 * t * w]

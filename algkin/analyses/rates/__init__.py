@@ -84,7 +84,11 @@ def rates_of(derivation: Derivation, samples: int = SAMPLES, seed: int = 0) -> R
         inputs = compiled.system.inputs
         raise UsageError("--rates", compiled.scene.name, f"needs outputs moved by one input angle; they move with "
                          f"{len(inputs)}" + (f" ({', '.join(inputs)})" if inputs else ""))
-    (name, (c, s)), = compiled.system.inputs.items()
+    (name, variables), = compiled.system.inputs.items()
+    if len(variables) != 2:  # the forms and their check are written per radian of a turning input
+        raise UsageError("--rates", compiled.scene.name, f"rates are taken per radian of an input angle; "
+                         f"{name} is a length")
+    c, s = variables
     unknowns = [u for names in compiled.outputs.values() for u in names]
     mark = time.perf_counter()
     forms = [rates_of_values(b.values, unknowns, symbol(c), symbol(s)) for b in derivation.branches]
