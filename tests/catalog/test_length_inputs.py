@@ -13,7 +13,7 @@ import mpmath
 import pytest
 import sympy
 
-from algkin import derive, extremum
+from algkin import derive, extremum, rates
 from algkin.analyses.limits import limits
 from algkin.analyses.toggles import toggles
 from algkin.errors import UsageError
@@ -124,11 +124,9 @@ def test_the_string_s_is_a_variable_of_the_system_not_an_angle():
     assert any(sympy.parse_expr(e).has(x) for e in document["system"]["equations"])
 
 
-@pytest.mark.parametrize("args", [["derive", "hydraulic-boom", "--rates"], ["accuracy", "hydraulic-boom"]],
-                         ids=["rates", "accuracy"])
-def test_what_is_laid_out_per_radian_refuses_a_length_input_in_one_line(args):
-    done = subprocess.run([sys.executable, "-m", "algkin", *args], capture_output=True, text=True,
-                          env=dict(os.environ, PYTHONPATH=str(ROOT)))
+def test_accuracy_is_laid_out_on_a_turning_input_and_refuses_a_length_in_one_line():
+    done = subprocess.run([sys.executable, "-m", "algkin", "accuracy", "hydraulic-boom"], capture_output=True,
+                          text=True, env=dict(os.environ, PYTHONPATH=str(ROOT)))
     assert done.returncode == 2 and done.stdout == ""
     assert len(done.stderr.splitlines()) == 1 and "s is a length" in done.stderr
 
@@ -137,3 +135,23 @@ def test_limit_positions_are_for_a_turning_input():
     with pytest.raises(UsageError, match="s is a length"):
         limits("hydraulic-boom")
     assert "limits" not in run("toggles", "hydraulic-boom")  # toggles still answer, without them
+
+
+def test_the_boom_tip_rates_per_unit_of_cylinder_length_are_the_hand_triangle_differentiated():
+    """dT/ds and d2T/ds2 against mpmath's derivatives of the law-of-cosines construction."""
+    found = rates("hydraulic-boom", outputs=["T"], samples=6)
+    assert found.verification.passed and found.to_json()["rates_input"] == {"name": "s", "per": "length"}
+    left = next(b for b in found.branches if b.label == "left")
+
+    def tip(s, k):
+        oc = mpmath.hypot(mpmath.mpf(3) / 2, mpmath.mpf(1) / 2)
+        boom = mpmath.atan2(-mpmath.mpf(1) / 2, mpmath.mpf(3) / 2) + mpmath.acos((1 + oc**2 - s**2) / (2 * oc))
+        return 3 * (mpmath.cos(boom), mpmath.sin(boom))[k]
+
+    with mpmath.workdps(40):
+        for s in ("0.9", "1.5", "2.3"):
+            at = {"s": mpmath.mpf(s)}
+            for k, unknown in enumerate(("T_x", "T_y")):
+                for order, form in ((1, left.velocity[unknown]), (2, left.acceleration[unknown])):
+                    expected = mpmath.diff(lambda v: tip(v, k), mpmath.mpf(s), order)
+                    assert abs(evaluate(form, at, MPMATH) - expected) < mpmath.mpf(10) ** -25, (s, unknown, order)

@@ -217,7 +217,8 @@ def _report_derive(d):
 def _rates_lines(d):
     """``derive --rates``: per branch, each coordinate's velocity (') and acceleration ('') in the input."""
     name = d["rates_input"]["name"]
-    lines = [f"rates in {name} (x' = dx/d{name}, x'' = d2x/d{name}2, per radian: the velocity and "
+    per = "per radian" if d["rates_input"]["per"] == "radian" else "per unit of the length"
+    lines = [f"rates in {name} (x' = dx/d{name}, x'' = d2x/d{name}2, {per}: the velocity and "
              "acceleration for a unit input rate):"]
     for label, rates in d["rates"].items():
         lines.append(f"  [{label}]")
