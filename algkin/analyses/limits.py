@@ -59,9 +59,9 @@ from ..scene.constructions import Crank, Fixed
 from ..scene.model import Scene
 from ..scene.settings import with_values
 from ..system import symbol
-from ..system.angles import tangent_to_degrees, vanishes_at_half_turn
+from ..system.angles import half_angle_poly, tangent_to_degrees, vanishes_at_half_turn
 from .toggles import single_input
-from ..system.convert import flint_context, fmpq_to_rational, to_flint
+from ..system.convert import fmpq_to_rational
 
 __all__ = ["limits", "stationary_condition", "Limit", "Limits", "TimeRatio"]
 
@@ -219,21 +219,6 @@ def _eliminant(stationary: Stationary, c: sympy.Symbol, s: sympy.Symbol) -> tupl
     return result.polynomial, dropped
 
 
-def _half_angle(poly: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol) -> flint.fmpz_poly:
-    """The numerator, in ``t = tan(theta/2)``, of ``poly(c, s)``: ``c = (1 - t^2)/(1 + t^2)``,
-    ``s = 2t/(1 + t^2)`` (in python-flint: a sympy substitution takes minutes on thousands of terms)."""
-    terms = to_flint(poly, flint_context([str(c), str(s)])).to_dict()
-    degree = max((i + j for i, j in terms), default=0)
-    cosine, sine, one = flint.fmpq_poly([1, 0, -1]), flint.fmpq_poly([0, 2]), flint.fmpq_poly([1, 0, 1])
-    total = flint.fmpq_poly([])
-    for (i, j), coefficient in terms.items():
-        total += coefficient * cosine**i * sine**j * one ** (degree - i - j)
-    if total.degree() < 0:
-        return flint.fmpz_poly([])
-    denominator = math.lcm(*(int(flint.fmpq(a).q) for a in total.coeffs()))
-    return flint.fmpz_poly([int(flint.fmpq(a) * denominator) for a in total.coeffs()])
-
-
 @dataclass(frozen=True)
 class Root:
     """A real root of an eliminant: its enclosure in degrees, the factor in t and its exact angle."""
@@ -248,7 +233,7 @@ def _roots(polys: Sequence[sympy.Expr], c: sympy.Symbol, s: sympy.Symbol, t: sym
     """Every real root (as an angle) of every polynomial in ``c, s``, each with its factor."""
     found: list[Root] = []
     for poly in polys:
-        numerator = _half_angle(poly, c, s)
+        numerator = half_angle_poly(poly, c, s)
         if vanishes_at_half_turn(poly, c, s):
             found.append(Root(flint.arb(180), None, sympy.Integer(180), None))
         if numerator.degree() < 1:

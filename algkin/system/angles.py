@@ -15,19 +15,48 @@ True
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 
 import flint
 import mpmath
 import sympy
 
-__all__ = ["half_angle_numerator", "tangent_to_degrees", "vanishes_at_half_turn", "Parametrisation"]
+from .convert import flint_context, to_flint
+
+__all__ = ["half_angle_numerator", "half_angle_poly", "tangent_to_degrees", "vanishes_at_half_turn", "Parametrisation"]
 
 
 def half_angle_numerator(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol, t: sympy.Symbol) -> sympy.Expr:
-    """The numerator, in ``t``, of ``expr`` with ``c``, ``s`` in the half-angle form."""
+    """The numerator, in ``t``, of ``expr`` with ``c``, ``s`` in the half-angle form (through
+    ``half_angle_poly`` where ``expr`` holds numbers alone)."""
+    expr = sympy.expand(expr)
+    if expr.free_symbols <= {c, s}:
+        poly = half_angle_poly(expr, c, s)
+        return sympy.Add(*[sympy.Integer(int(a)) * t**k for k, a in enumerate(poly.coeffs())])
     half = {c: (1 - t**2) / (1 + t**2), s: 2 * t / (1 + t**2)}
-    return sympy.expand(sympy.numer(sympy.together(sympy.expand(expr).xreplace(half))))
+    return sympy.expand(sympy.numer(sympy.together(expr.xreplace(half))))
+
+
+def half_angle_poly(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol) -> flint.fmpz_poly:
+    """The numerator, in ``t = tan(theta/2)``, of ``expr(c, s)`` (numbers alone besides ``c, s``):
+    ``c = (1 - t^2)/(1 + t^2)``, ``s = 2t/(1 + t^2)``, times ``(1 + t^2)**degree``, in python-flint
+    (a sympy substitution takes minutes on thousands of terms).
+
+    >>> c, s = sympy.symbols("c s")
+    >>> half_angle_poly(c**2 + s**2, c, s)  # (1 + t**2)**2 / (1 + t**2)**2: no root
+    x^4 + 2*x^2 + 1
+    """
+    terms = to_flint(expr, flint_context([str(c), str(s)])).to_dict()
+    degree = max((i + j for i, j in terms), default=0)
+    cosine, sine, one = flint.fmpq_poly([1, 0, -1]), flint.fmpq_poly([0, 2]), flint.fmpq_poly([1, 0, 1])
+    total = flint.fmpq_poly([])
+    for (i, j), coefficient in terms.items():
+        total += coefficient * cosine**i * sine**j * one ** (degree - i - j)
+    if total.degree() < 0:
+        return flint.fmpz_poly([])
+    denominator = math.lcm(*(int(flint.fmpq(a).q) for a in total.coeffs()))
+    return flint.fmpz_poly([int(flint.fmpq(a) * denominator) for a in total.coeffs()])
 
 
 def vanishes_at_half_turn(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol) -> bool:
