@@ -4,10 +4,10 @@ The candidates' coordinate ``t = x + shear*y`` is a root of
 ``gcd(res_y(G, G_y), res_y(G_t, G_y), res_y(G, G_t))``, with ``G(t, y) = F(t - shear*y, y)``
 (python-flint resultants and gcd over the integers). For each irreducible factor ``p`` of that
 gcd, the gcd of ``G, G_t, G_y`` over ``Q[t]/(p)`` (as polynomials in ``y``) decides it: a
-constant means no singular point has that ``t`` (the resultants met by coincidence); a linear
-``y - q(t)`` gives one singular point per root of ``p``, ``(t - shear*q(t), q(t))``, exactly (a
-rational univariate representation); higher degree means two singular points share ``t``,
-and a different shear separates them. The shear is also chosen so that ``y**n`` keeps a
+constant means no singular point has that ``t`` (the resultants met by coincidence); a power
+``(y - q(t))**k`` (``k > 1`` at a point of multiplicity ``k + 1``) gives one singular point per
+root of ``p``, ``(t - shear*q(t), q(t))``, exactly (a rational univariate representation);
+anything else means two singular points share ``t``, and a different shear separates them. The shear is also chosen so that ``y**n`` keeps a
 nonzero coefficient in ``G`` (``n`` the degree): no singular point escapes the resultants
 through a vanishing leading coefficient.
 
@@ -84,13 +84,25 @@ def _with_shear(curve, shear):
             continue
         field = NumberField(factor)
         common = poly_gcd(field, *(_specialised(field, p) for p in (g, gt, gy)))
-        if len(common) > 2:
+        if len(common) < 2:
+            continue
+        y_value = _single_root(field, common)
+        if y_value is None:
             return None
-        if len(common) == 2:  # monic y - q(t)
-            y_value = -common[0]
-            x_value = field.sub(field.gen(), field.mul(field.const(shear), y_value))
-            points.append(ExactPoint(field, x_value, field.reduce(y_value), shear))
+        x_value = field.sub(field.gen(), field.mul(field.const(shear), y_value))
+        points.append(ExactPoint(field, x_value, y_value, shear))
     return points
+
+
+def _single_root(field, monic):
+    """``r`` if the monic ``monic`` is ``(y - r)**k`` (a point of multiplicity ``k + 1`` makes the
+    gcd a power), else None: two singular points share ``t``."""
+    k = len(monic) - 1
+    root = field.mul(monic[k - 1], field.const(flint.fmpq(-1, k)))
+    power = [field.one()]
+    for _ in range(k):  # (y - root)**k, low to high
+        power = [field.sub(a, field.mul(root, b)) for a, b in zip([field.zero()] + power, power + [field.zero()])]
+    return root if all(field.reduce(a - b).is_zero() for a, b in zip(power, monic)) else None
 
 
 def _univariate(poly):
