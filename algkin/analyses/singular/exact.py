@@ -77,7 +77,7 @@ def _exact(minimal, text, element, root):
     while bits <= MAX_BITS:
         ball = root.value(element, bits)
         with flint.ctx.workprec(bits):
-            reals = sorted((r.real for r, _ in minimal.complex_roots() if r.imag.is_zero()), key=lambda r: float(r.mid()))
+            reals = sorted((r.real for r, _ in minimal.complex_roots() if r.imag.is_zero()), key=lambda r: r.mid())
         meeting = [k for k, r in enumerate(reals) if r.overlaps(ball)]
         if len(meeting) == 1:
             return sympy.CRootOf(text, meeting[0], radicals=minimal.degree() == 2)

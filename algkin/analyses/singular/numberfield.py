@@ -93,7 +93,7 @@ class RealRoot:
         if bits not in self._balls:
             with flint.ctx.workprec(bits):
                 reals = [r.real for r, _ in self.field.minimal.complex_roots() if r.imag.is_zero()]
-            reals.sort(key=lambda r: float(r.mid()))
+            reals.sort(key=lambda r: r.mid())  # disjoint balls: their exact midpoints order them
             self._balls[bits] = reals[self.index]
         return self._balls[bits]
 
