@@ -35,7 +35,7 @@ import sympy
 
 from ...errors import ComputationError, UsageError
 from ...system.convert import flint_context, to_flint, to_flint_integer
-from .exact import ENCLOSURE_BITS, Coordinate, coordinate, polynomial_text
+from .exact import ENCLOSURE_BITS, Coordinate, coordinates, polynomial_text
 from .local import Local, describe, multiplicity, shift
 from .locate import ExactPoint, locate, top_form
 
@@ -117,8 +117,11 @@ def singular_points(curve: Any, variables: Sequence[str] | None = None) -> Singu
     terms = {(int(i), int(j)): int(c) for (i, j), c in integer.to_dict().items()}
     real, complex_ = [], []
     for exact in locate(integer):
-        real += [_real_point(exact, terms, degree, root, names) for root in exact.field.real_roots()]
-        complex_ += _complex_points(exact, terms)
+        roots = exact.field.real_roots()
+        representation = _representation(exact)
+        xs, ys = (coordinates(exact.field, value, roots, name) for value, name in zip((exact.x, exact.y), names))
+        real += [_real_point(exact, terms, degree, root, x, y, representation) for root, x, y in zip(roots, xs, ys)]
+        complex_ += _complex_points(exact, terms, len(roots), representation)
     real.sort(key=lambda p: (p.x.value, p.y.value))
     return Singularities(expr, names, degree, circularity, real, complex_,
                          {"singular": time.perf_counter() - start})
@@ -131,7 +134,9 @@ def _polynomial(curve, variables):
             raise UsageError("--param", ", ".join(curve.compiled.system.parameters),
                              "singular points need every dimension a number: set it (--set NAME=VALUE)")
         return curve.elimination.polynomial, tuple(curve.variables)
-    expr = sympy.sympify(curve) if not isinstance(curve, sympy.Basic) else curve
+    if not isinstance(curve, sympy.Expr):
+        raise UsageError("curve", type(curve).__name__, "expected a sympy polynomial or what algkin.curve returns")
+    expr = curve
     names = tuple(variables) if variables is not None else tuple(sorted(str(s) for s in expr.free_symbols))
     if len(names) != 2 or len(set(names)) != 2:
         raise UsageError("variables", names, "a plane curve needs two distinct variables")
@@ -177,12 +182,10 @@ def degree_and_circularity(curve: flint.fmpz_mpoly) -> tuple[int, int]:
     return int(curve.total_degree()), count
 
 
-def _real_point(exact: ExactPoint, terms, degree, root, names):
-    x = coordinate(exact.field, exact.x, root, names[0])
-    y = coordinate(exact.field, exact.y, root, names[1])
+def _real_point(exact: ExactPoint, terms, degree, root, x, y, representation):
     _check_enclosure(terms, x.ball, y.ball)
     local = describe(exact.field, shift(exact.field, terms, exact.x, exact.y), degree, root)
-    return SingularPoint(x, y, local, _representation(exact))
+    return SingularPoint(x, y, local, representation)
 
 
 def _representation(exact):
@@ -191,12 +194,12 @@ def _representation(exact):
             "x": str(polynomial_text(exact.x, "t")), "y": str(polynomial_text(exact.y, "t"))}
 
 
-def _complex_points(exact, terms):
-    count = exact.field.degree - len(exact.field.real_roots())
+def _complex_points(exact, terms, real, representation):
+    count = exact.field.degree - real
     if not count:
         return []
     m = multiplicity(shift(exact.field, terms, exact.x, exact.y))
-    return [{"count": count, "multiplicity": m, "representation": _representation(exact)}]
+    return [{"count": count, "multiplicity": m, "representation": representation}]
 
 
 def _check_enclosure(terms, x, y):

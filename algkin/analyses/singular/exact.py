@@ -12,7 +12,7 @@ overlaps alone (a rational as itself, a quadratic's root in radicals).
 >>> half = field.mul(field.gen(), field.const(flint.fmpq(1, 2)))    # sqrt(2)/2
 >>> minimal_polynomial(field, half)
 2*x^2 + (-1)
->>> value = coordinate(field, half, root, "x")
+>>> value, = coordinates(field, half, [root], "x")
 >>> value.exact, value.minimal, round(value.value, 12)
 (sqrt(2)/2, 2*x**2 - 1, 0.707106781187)
 """
@@ -28,7 +28,7 @@ from ...errors import ComputationError
 from ...system.convert import fmpq_to_rational, to_sympy
 from .numberfield import START_BITS, MAX_BITS, Element, NumberField, RealRoot
 
-__all__ = ["Coordinate", "coordinate", "minimal_polynomial", "polynomial_text", "ENCLOSURE_BITS"]
+__all__ = ["Coordinate", "coordinates", "minimal_polynomial", "polynomial_text", "ENCLOSURE_BITS"]
 
 ENCLOSURE_BITS = 192
 
@@ -43,12 +43,16 @@ class Coordinate:
     minimal: sympy.Expr
 
 
-def coordinate(field: NumberField, element: Element, root: RealRoot, name: str) -> Coordinate:
-    """``element`` at ``root``: its ball at ``ENCLOSURE_BITS`` and exact forms (variable ``name``)."""
+def coordinates(field: NumberField, element: Element, roots: list[RealRoot], name: str) -> list[Coordinate]:
+    """``element`` at each of ``roots``: its ball at ``ENCLOSURE_BITS`` and exact forms (variable
+    ``name``); the minimal polynomial, shared by the conjugates, found once."""
+    if not roots:
+        return []
     minimal = minimal_polynomial(field, element)
-    ball = root.value(element, ENCLOSURE_BITS)
     text = polynomial_text(minimal, name)
-    return Coordinate(float(ball.mid()), ball, _exact(minimal, text, element, root), text)
+    balls = [root.value(element, ENCLOSURE_BITS) for root in roots]
+    return [Coordinate(float(ball.mid()), ball, _exact(minimal, text, element, root), text)
+            for ball, root in zip(balls, roots)]
 
 
 def minimal_polynomial(field: NumberField, element: Element) -> flint.fmpz_poly:

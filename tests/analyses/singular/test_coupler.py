@@ -193,3 +193,20 @@ def test_a_curve_given_by_algkin_curve_is_taken_as_it_is():
     curve = algkin.curve("chebyshev-lambda", "P", samples=0)
     assert [p.to_json() for p in singular_points(curve).points] == \
         [p.to_json() for p in singular("chebyshev-lambda", "P", samples=0).points]
+
+
+def test_cusp_where_the_coupler_point_is_the_instant_centre():
+    """A coupler point at rest is a cusp of its path: at the crank angle with A = (3/5, 4/5), the
+    four-bar with a = 1, d = 3, l = 5/2, m = 3/2 has B = (3, 3/2) (|AB| = 5/2, |DB| = 3/2); the
+    instant centre of the coupler is where the lines OA and DB meet, I = (3, 4). The coupler point
+    placed there: P - A = (12/5, 16/5) = p (B - A) + q rot90(B - A) with B - A = (12/5, 7/10)
+    gives p = 32/25, q = 24/25. The same four-bar is a change point (1 + 3 = 5/2 + 3/2): flat
+    at A = (-1, 0), B = (3/2, 0), where its two circuits meet, at P = A + (5/2)(p, q) = (11/5, 12/5),
+    a crunode; with it, four finite double points (the curve's genus drops from 1 to 0)."""
+    found = singular("fourbar", "P", set={"a": 1, "d": 3, "l": "5/2", "m": "3/2", "p": "32/25", "q": "24/25"},
+                     samples=0)
+    kinds = {(p.x.exact, p.y.exact): p for p in found.points}
+    cusp = kinds[sympy.Integer(3), sympy.Integer(4)]
+    assert (cusp.kind, cusp.local["a_k"], cusp.local["tangents"]) == ("cusp", 2, {"distinct": 1, "real": 1})
+    assert kinds[sympy.Rational(11, 5), sympy.Rational(12, 5)].kind == "crunode"
+    assert len(found.points) + sum(c["count"] for c in found.complex) == 4
