@@ -21,6 +21,8 @@ multiplicity of the circular points at infinity on it).
 ['cusp']
 >>> [(p.x.exact, p.kind) for p in singular_points(y**2 - (x**2 - 2)**2*(x + 3)).points]
 [(-sqrt(2), 'crunode'), (sqrt(2), 'crunode')]
+>>> singular_points(y**2 + (x**2 + 1)**2*(x - 5)).counts     # nodes at x = +-i only
+{'complex': 2}
 """
 
 from __future__ import annotations
@@ -34,6 +36,7 @@ import flint
 import sympy
 
 from ...errors import ComputationError, UsageError
+from ...runtime.budget import current
 from ...system.convert import flint_context, to_flint, to_flint_integer
 from .exact import ENCLOSURE_BITS, Coordinate, coordinates, polynomial_text
 from .local import Local, describe, multiplicity, shift
@@ -84,9 +87,18 @@ class Singularities:
     timings: dict[str, float] = field(default_factory=dict)
     source: dict[str, Any] = field(default_factory=dict)  # scene, point, verification: when from a scene
 
+    @property
+    def counts(self) -> dict[str, int]:
+        """How many real singular points of each kind, and ``complex``: how many non-real ones
+        (a sweep's columns, an atlas's filters)."""
+        counts: dict[str, int] = {}
+        for point in self.points:
+            counts[point.kind] = counts.get(point.kind, 0) + 1
+        return dict(sorted(counts.items()), complex=sum(c["count"] for c in self.complex))
+
     def to_json(self) -> dict[str, Any]:
         return {**self.source, "variables": list(self.variables), "curve": str(self.curve),
-                "degree": self.degree, "circularity": self.circularity,
+                "degree": self.degree, "circularity": self.circularity, "counts": self.counts,
                 "singular_points": [p.to_json() for p in self.points],
                 "complex_singular_points": self.complex, "timings": self.timings}
 
@@ -98,6 +110,7 @@ def singular(scene: Any, point: str, *, set: Any = None, samples: int = 40,  # n
     from ...derivation.pipeline import curve
 
     traced = curve(scene, point, samples=samples, seed=seed, set=set)
+    current().note(f"finding the singular points of the curve of {point} in {traced.compiled.scene.name}")
     found = singular_points(traced)
     found.source = {"scene": traced.compiled.scene.name, "point": point,
                     "curve_verification": traced.verification.to_json()}

@@ -17,7 +17,7 @@ def test_json_lists_the_crossing_of_watts_figure_eight(capsys):
     acnodes at ±(8, -2)·sqrt(34)/17 (tests/analyses/singular check them by a Gröbner basis)."""
     assert main(["singular", "watt-straight-line", "--point", "P", "--json", "--samples", "0"]) == 0
     document = json.loads(capsys.readouterr().out)
-    assert {"scene", "point", "variables", "curve", "degree", "circularity", "singular_points",
+    assert {"scene", "point", "variables", "curve", "degree", "circularity", "counts", "singular_points",
             "complex_singular_points", "curve_verification", "timings"} <= set(document)
     assert (document["degree"], document["circularity"]) == (6, 3)
     points = document["singular_points"]
@@ -27,6 +27,7 @@ def test_json_lists_the_crossing_of_watts_figure_eight(capsys):
         ("acnode", "8*sqrt(34)/17", "-2*sqrt(34)/17")]
     assert points[0]["minimal_polynomials"] == {"x": "17*P_x**2 - 128", "y": "17*P_y**2 - 8"}
     assert document["curve_verification"]["status"] == "skipped"
+    assert document["counts"] == {"acnode": 2, "crunode": 1, "complex": 0}
 
 
 def test_text_report_gives_each_point_its_class_and_enclosure(capsys):
@@ -54,10 +55,15 @@ def test_a_smooth_curve_has_none(capsys):
     (["singular", "fourbar", "--point", "P", "--set", "a=-1"], ["a", "positive"]),
     (["singular", "fourbar", "--point", "P", "--samples", "-3"], ["samples=-3"]),
 ])
-def test_bad_input_is_one_line_and_exit_2(tmp_path, args, words):
-    result = run_cli(args, tmp_path)
-    assert result.returncode == 2, result.stderr
-    assert result.stdout == "" and result.stderr.count("\n") == 1
-    assert all(word in result.stderr for word in words), result.stderr
-    with_json = run_cli([*args, "--json"], tmp_path)
-    assert with_json.returncode == 2 and json.loads(with_json.stdout)["error"]["kind"] in ("usage", "scene")
+def test_bad_input_is_one_line_and_exit_2(capsys, args, words):
+    assert main(args) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err.count("\n") == 1
+    assert all(word in err for word in words), err
+    assert main([*args, "--json"]) == 2
+    assert json.loads(capsys.readouterr().out)["error"]["kind"] in ("usage", "scene")
+
+
+def test_bad_input_from_a_shell_too(tmp_path):
+    result = run_cli(["singular", "fourbar", "--point", "Q"], tmp_path)
+    assert (result.returncode, result.stdout, result.stderr.count("\n")) == (2, "", 1)
