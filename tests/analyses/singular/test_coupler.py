@@ -58,6 +58,9 @@ def test_real_singular_points_agree_with_a_groebner_basis(found, name):
         assert len(got) == len(expected)
         for (gx, gy), (ex, ey) in zip(got, expected):
             assert abs(gx - ex) < AGREE and abs(gy - ey) < AGREE
+        for point, (ex, ey) in zip(result.points, expected):  # the exact forms, evaluated by sympy, agree too
+            assert abs(mpmath.mpf(str(sympy.N(point.x.exact, 50))) - ex) < AGREE
+            assert abs(mpmath.mpf(str(sympy.N(point.y.exact, 50))) - ey) < AGREE
     # every singular point, complex ones too: the eliminant of a radical ideal has one root each
     assert len(result.points) + sum(c["count"] for c in result.complex) == total
 
