@@ -23,6 +23,7 @@ __all__ = [
     "curve",
     "extremum",
     "rates",
+    "singular",
     "catalog_names",
     "interact",
     "AlgkinError",
@@ -36,6 +37,7 @@ if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ 
     from .analyses.extremum import extremum
     from .analyses.quantities import load
     from .analyses.rates import rates
+    from .analyses.singular import singular
     from .derivation.pipeline import curve, derive
     from .ui.widgets import interact
 
@@ -54,6 +56,10 @@ def __getattr__(name: str) -> Callable[..., Any]:
         from .analyses.rates import rates
 
         return rates
+    if name == "singular":
+        from .analyses.singular import singular
+
+        return singular
     if name == "interact":  # ipywidgets only when called
         from .ui.widgets import interact
 

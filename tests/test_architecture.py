@@ -13,8 +13,8 @@ import algkin
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / ".importlinter"
 
-PUBLIC = ["load", "load_scene", "compile_scene", "derive", "curve", "extremum", "rates", "catalog_names", "interact",
-          "AlgkinError", "SceneBuilder"]
+PUBLIC = ["load", "load_scene", "compile_scene", "derive", "curve", "extremum", "rates", "singular", "catalog_names",
+          "interact", "AlgkinError", "SceneBuilder"]
 
 
 def test_the_import_contract_is_kept():

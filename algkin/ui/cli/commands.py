@@ -7,7 +7,8 @@ import pathlib
 
 from ...errors import UsageError
 from .reports import (_extremum_forms, _latex_lines, _render, _report_accuracy, _report_curve, _report_derive,
-                      _report_extremum, _report_show, _report_toggles, _verification_line, terminal_safe)
+                      _report_extremum, _report_show, _report_singular, _report_toggles, _verification_line,
+                      terminal_safe)
 
 __all__ = ["COMMANDS"]
 
@@ -105,6 +106,19 @@ def _cmd_toggles(args):
     if document["unit"] == "deg":  # a turning input's: the output's limit positions and time ratio
         document.update(limits(scene).to_json())
     return _render(args, document, _report_toggles), 0
+
+
+def _cmd_singular(args):
+    from ...analyses.singular import singular
+
+    found = singular(_scene_of(args, ()), args.point, samples=args.samples, seed=args.seed)
+    document = found.to_json()
+    return _render(args, document, _report_singular), _verdict_of(document["curve_verification"])
+
+
+def _verdict_of(verification):
+    """``_verdict`` of a verification's JSON document."""
+    return 0 if verification["status"] in ("passed", "skipped") else 1
 
 
 def _cmd_accuracy(args):
@@ -301,4 +315,4 @@ def _cmd_verify(args):
 
 COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
             "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot,
-            "toggles": _cmd_toggles, "accuracy": _cmd_accuracy, "bench": _cmd_bench}
+            "toggles": _cmd_toggles, "singular": _cmd_singular, "accuracy": _cmd_accuracy, "bench": _cmd_bench}

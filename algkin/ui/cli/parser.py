@@ -146,6 +146,15 @@ def build_parser():
     _scene(toggles)
     _json(toggles)
     _budget_options(toggles)
+    singular = _command(commands, "singular", "singular points of a point's implicit curve (crunodes, acnodes, "
+                                              "cusps, ...), exact and certified; the curve's degree and circularity")
+    _scene(singular)
+    singular.add_argument("--point", required=True, help="the point whose trajectory's curve is examined")
+    singular.add_argument("--samples", type=int, default=40,
+                          help="numeric samples the curve is checked on (0 skips the check)")
+    singular.add_argument("--seed", type=int, default=0, help="random seed of the verification samples")
+    _json(singular)
+    _budget_options(singular)
     accuracy = _command(commands, "accuracy", "speed against error of each evaluation strategy")
     _scene(accuracy)
     accuracy.add_argument("--samples", type=int, default=2000, help="samples per case")

@@ -245,6 +245,24 @@ def _report_curve(d):
     return "\n".join(lines + _hint([d["curve"], *d["dropped_factors"]]))
 
 
+def _report_singular(d):
+    lines = [f"singular points of the curve of {d['point']} in {d['scene']}: degree {d['degree']}, "
+             f"circularity {d['circularity']}"]
+    for p in d["singular_points"]:
+        order = f"A{p['a_k']}, " if p["a_k"] else ""
+        tangents = p["tangents"]
+        lines += [f"  {p['kind']} ({order}multiplicity {p['multiplicity']}, {tangents['real']} real of "
+                  f"{tangents['distinct']} tangents) at ({p['x']:.12g}, {p['y']:.12g})"]
+        lines += [f"      {c} = {_brief(p['exact'][c])}" + ("" if p["enclosure"][c] == p["exact"][c]
+                                                          else f" in {p['enclosure'][c]}") for c in ("x", "y")]
+    if not d["singular_points"]:
+        lines.append("  no real singular point")
+    for c in d["complex_singular_points"]:
+        lines.append(f"  and {c['count']} complex (not real) singular points of multiplicity {c['multiplicity']}")
+    lines += [_verification_line(d["curve_verification"]), _timings_line(d["timings"])]
+    return "\n".join(lines + _hint([p["exact"][c] for p in d["singular_points"] for c in ("x", "y")]))
+
+
 # A text report is read by a person: a form longer than this is summarised there (its leading
 # terms); --json and --out keep every form whole. The seed lambda's sextic (213) stays whole.
 _WHOLE = 230

@@ -1,0 +1,226 @@
+"""Singular points of an implicit plane curve, found exactly, certified and classified.
+
+``singular_points(F)`` takes a curve ``F(x, y) = 0`` with rational coefficients (a sympy
+polynomial, or what ``algkin.curve`` returns with every dimension a number) and finds every
+point where ``F = F_x = F_y = 0``: exactly, by resultants and gcds over number fields
+(``locate``), as a rational univariate representation ``t = x + shear*y``, ``p(t) = 0``,
+``x = x(t)``, ``y = y(t)``. The real ones get certified enclosures (balls about the real roots of
+``p``, python-flint), exact values (sympy) and their type (``local``): multiplicity, tangents,
+and for a double point crunode, acnode, cusp, tacnode..., told by the Hessian and, where it
+vanishes, by the ``A_k`` of the splitting lemma. ``singular(scene, point)`` finds the curve first.
+
+Also the curve's degree and circularity (how many times ``x**2 + y**2`` divides its top form: the
+multiplicity of the circular points at infinity on it).
+
+>>> import sympy
+>>> x, y = sympy.symbols("x y")
+>>> found = singular_points((x**2 + y**2)**2 - 2*(x**2 - y**2))       # the lemniscate
+>>> [(p.x.exact, p.y.exact, p.kind) for p in found.points], found.degree, found.circularity
+([(0, 0, 'crunode')], 4, 2)
+>>> [p.kind for p in singular_points(y**2 - x**3).points]
+['cusp']
+>>> [(p.x.exact, p.kind) for p in singular_points(y**2 - (x**2 - 2)**2*(x + 3)).points]
+[(-sqrt(2), 'crunode'), (sqrt(2), 'crunode')]
+>>> singular_points(y**2 + (x**2 + 1)**2*(x - 5)).counts     # nodes at x = +-i only
+{'complex': 2}
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import flint
+import sympy
+
+from ...errors import ComputationError, UsageError
+from ...runtime.budget import current
+from ...system.convert import flint_context, to_flint, to_flint_integer
+from .exact import ENCLOSURE_BITS, Coordinate, coordinates, polynomial_text
+from .local import Local, describe, multiplicity, shift
+from .locate import ExactPoint, locate, top_form
+
+__all__ = ["singular", "singular_points", "SingularPoint", "Singularities", "degree_and_circularity"]
+
+_INTEGER = flint.fmpz_mpoly_ctx.get(("x", "y"), "lex")
+
+
+@dataclass
+class SingularPoint:
+    """One real singular point: coordinates (each exact, as a ball and a float) and local type."""
+
+    x: Coordinate
+    y: Coordinate
+    local: Local
+    representation: dict[str, Any]  # t = x + shear*y: {shear, polynomial p(t), x(t), y(t)}
+
+    @property
+    def kind(self) -> str:
+        return self.local["kind"]
+
+    @property
+    def multiplicity(self) -> int:
+        return self.local["multiplicity"]
+
+    def to_json(self) -> dict[str, Any]:
+        return {"x": self.x.value, "y": self.y.value, "kind": self.kind, "multiplicity": self.multiplicity,
+                "a_k": self.local["a_k"], "hessian_sign": self.local["hessian_sign"],
+                "real_branches": self.local["real_branches"], "tangents": self.local["tangents"],
+                "enclosure": {"x": self.x.ball.str(20), "y": self.y.ball.str(20)},
+                "exact": {"x": str(self.x.exact), "y": str(self.y.exact)},
+                "minimal_polynomials": {"x": str(self.x.minimal), "y": str(self.y.minimal)},
+                "representation": self.representation, "certified": True}
+
+
+@dataclass
+class Singularities:
+    """The singular points of a curve: the real ones in full, the complex ones counted."""
+
+    curve: sympy.Expr
+    variables: tuple[str, str]
+    degree: int
+    circularity: int
+    points: list[SingularPoint]
+    complex: list[dict[str, Any]]  # per conjugate class: {count, multiplicity, polynomial}
+    timings: dict[str, float] = field(default_factory=dict)
+    source: dict[str, Any] = field(default_factory=dict)  # scene, point, verification: when from a scene
+
+    @property
+    def counts(self) -> dict[str, int]:
+        """How many real singular points of each kind, and ``complex``: how many non-real ones
+        (a sweep's columns, an atlas's filters)."""
+        counts: dict[str, int] = {}
+        for point in self.points:
+            counts[point.kind] = counts.get(point.kind, 0) + 1
+        return dict(sorted(counts.items()), complex=sum(c["count"] for c in self.complex))
+
+    def to_json(self) -> dict[str, Any]:
+        return {**self.source, "variables": list(self.variables), "curve": str(self.curve),
+                "degree": self.degree, "circularity": self.circularity, "counts": self.counts,
+                "singular_points": [p.to_json() for p in self.points],
+                "complex_singular_points": self.complex, "timings": self.timings}
+
+
+def singular(scene: Any, point: str, *, set: Any = None, samples: int = 40,  # noqa: A002 - SPEC §3's --set
+             seed: int = 0) -> Singularities:
+    """The singular points of the curve ``point`` traces in ``scene`` (``algkin.curve``, its
+    verification on ``samples`` inputs included), every dimension at its default or ``set``."""
+    from ...derivation.pipeline import curve
+
+    traced = curve(scene, point, samples=samples, seed=seed, set=set)
+    current().note(f"finding the singular points of the curve of {point} in {traced.compiled.scene.name}")
+    found = singular_points(traced)
+    found.source = {"scene": traced.compiled.scene.name, "point": point,
+                    "curve_verification": traced.verification.to_json()}
+    found.timings = {"curve": traced.timings["total"], **found.timings}
+    return found
+
+
+def singular_points(curve: Any, variables: Sequence[str] | None = None) -> Singularities:
+    """The singular points of ``curve = 0``: a sympy polynomial with rational coefficients in two
+    ``variables`` (default: its two free symbols, sorted), or a ``CurveResult``."""
+    start = time.perf_counter()
+    expr, names = _polynomial(curve, variables)
+    integer = to_flint_integer(to_flint(expr, flint_context(names)), flint.fmpz_mpoly_ctx.get(names, "lex"))
+    integer = _INTEGER.from_dict(integer.to_dict())
+    _check_squarefree(integer, expr)
+    degree, circularity = degree_and_circularity(integer)
+    terms = {(int(i), int(j)): int(c) for (i, j), c in integer.to_dict().items()}
+    real, complex_ = [], []
+    for exact in locate(integer):
+        roots = exact.field.real_roots()
+        representation = _representation(exact)
+        xs, ys = (coordinates(exact.field, value, roots, name) for value, name in zip((exact.x, exact.y), names))
+        real += [_real_point(exact, terms, degree, root, x, y, representation) for root, x, y in zip(roots, xs, ys)]
+        complex_ += _complex_points(exact, terms, len(roots), representation)
+    real.sort(key=lambda p: (p.x.value, p.y.value))
+    return Singularities(expr, names, degree, circularity, real, complex_,
+                         {"singular": time.perf_counter() - start})
+
+
+def _polynomial(curve, variables):
+    """``(sympy polynomial, (x name, y name))`` from what ``singular_points`` accepts."""
+    if hasattr(curve, "elimination") and hasattr(curve, "variables"):  # a CurveResult
+        if curve.compiled.system.parameters:
+            raise UsageError("--param", ", ".join(curve.compiled.system.parameters),
+                             "singular points need every dimension a number: set it (--set NAME=VALUE)")
+        return curve.elimination.polynomial, tuple(curve.variables)
+    if not isinstance(curve, sympy.Expr):
+        raise UsageError("curve", type(curve).__name__, "expected a sympy polynomial or what algkin.curve returns")
+    expr = curve
+    names = tuple(variables) if variables is not None else tuple(sorted(str(s) for s in expr.free_symbols))
+    if len(names) != 2 or len(set(names)) != 2:
+        raise UsageError("variables", names, "a plane curve needs two distinct variables")
+    extra = sorted(str(s) for s in expr.free_symbols if str(s) not in names)
+    if extra:
+        raise UsageError("curve", str(expr), f"has symbols besides {names[0]}, {names[1]}: {', '.join(extra)}")
+    by_name = {str(s): s for s in expr.free_symbols}
+    gens = [by_name.get(n, sympy.Symbol(n)) for n in names]
+    try:
+        poly = sympy.Poly(expr, *gens)
+    except sympy.PolynomialError:
+        raise UsageError("curve", str(expr), "is not a polynomial") from None
+    if poly.domain not in (sympy.ZZ, sympy.QQ):
+        raise UsageError("curve", str(expr), f"needs rational coefficients, has {poly.domain}")
+    if poly.total_degree() < 1:
+        raise UsageError("curve", str(expr), "is a constant, not a curve")
+    return poly.as_expr(), names
+
+
+def _check_squarefree(integer, expr):
+    """A repeated factor is singular all along: no finite set of points to report."""
+    _, factors = integer.factor_squarefree()
+    repeated = [str(f) for f, e in factors if e > 1]
+    if repeated:
+        raise UsageError("curve", str(expr), f"has a repeated factor ({repeated[0]}): every point on it is singular")
+
+
+def degree_and_circularity(curve: flint.fmpz_mpoly) -> tuple[int, int]:
+    """The total degree, and how many times ``x**2 + y**2`` divides the top-degree form.
+
+    >>> x, y = _INTEGER.gens()
+    >>> degree_and_circularity((x**2 + y**2 - 2*x)**2 - 4*(x**2 + y**2))    # a cardioid
+    (4, 2)
+    """
+    top = _INTEGER.from_dict(top_form(curve))
+    x, y = _INTEGER.gens()
+    circle, count = x * x + y * y, 0
+    while not top.is_constant():
+        quotient, remainder = divmod(top, circle)
+        if not remainder.is_zero():
+            break
+        top, count = quotient, count + 1
+    return int(curve.total_degree()), count
+
+
+def _real_point(exact: ExactPoint, terms, degree, root, x, y, representation):
+    _check_enclosure(terms, x.ball, y.ball)
+    local = describe(exact.field, shift(exact.field, terms, exact.x, exact.y), degree, root)
+    return SingularPoint(x, y, local, representation)
+
+
+def _representation(exact):
+    return {"t": f"x + {exact.shear}*y" if exact.shear else "x", "shear": exact.shear,
+            "polynomial": str(polynomial_text(exact.field.minimal, "t")),
+            "x": str(polynomial_text(exact.x, "t")), "y": str(polynomial_text(exact.y, "t"))}
+
+
+def _complex_points(exact, terms, real, representation):
+    count = exact.field.degree - real
+    if not count:
+        return []
+    m = multiplicity(shift(exact.field, terms, exact.x, exact.y))
+    return [{"count": count, "multiplicity": m, "representation": representation}]
+
+
+def _check_enclosure(terms, x, y):
+    """The exact algebra's point must make ``F, F_x, F_y`` contain zero in balls (a guard on the
+    whole chain: ball, field element, shear)."""
+    with flint.ctx.workprec(ENCLOSURE_BITS + 64):
+        values = [sum((c * x ** i * y ** j for (i, j), c in terms.items()), flint.arb(0)),
+                  sum((c * i * x ** (i - 1) * y ** j for (i, j), c in terms.items() if i), flint.arb(0)),
+                  sum((c * j * x ** i * y ** (j - 1) for (i, j), c in terms.items() if j), flint.arb(0))]
+    if not all(v.contains(0) for v in values):
+        raise ComputationError(f"a singular point's enclosure ({x}, {y}) does not meet F = F_x = F_y = 0")
