@@ -20,12 +20,14 @@ shared) and the samples are run in cache-sized chunks.
 (1.5, 2.449489742783)
 """
 
-from collections.abc import Sequence
+from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 import numpy.typing as npt
 import sympy
 
+from ..evaluate.fused import Kernel
+from ..evaluate.trace import trace
 from ..scene import Compiled
 from ..scene.implicit import StableEvaluator, reduce_on_circles
 from ..scene.implicit.base import HalfAngle
@@ -33,8 +35,9 @@ from ..scene.implicit.floats import FloatArray
 from ..system import symbol
 from .closed_form import Branch
 
-__all__ = ["StableBranch"]
+__all__ = ["StableBranch", "chunked", "Outputs"]
 
+Outputs = Callable[[Mapping[str, FloatArray]], Sequence[FloatArray]]  # variables -> the outputs wanted
 CHUNK = 4096  # samples per pass: temporaries stay in cache and below malloc's mmap threshold
 
 
@@ -54,26 +57,63 @@ class StableBranch:
 
     def __call__(self, *angles: npt.ArrayLike) -> dict[str, FloatArray]:
         """Dyad coordinates (unknown -> array) from each input's angles in radians."""
-        arrays = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in angles))
-        flat = [a.ravel() for a in arrays]
-        out = {u: np.empty(flat[0].size) for d in self.dyads for u in d.unknowns}
-        for start in range(0, flat[0].size, CHUNK):
-            part = slice(start, start + CHUNK)
-            for unknown, value in self._chunk([a[part] for a in flat]).items():
-                out[unknown][part] = value
-        return {u: v.reshape(arrays[0].shape) for u, v in out.items()}
+        unknowns = [u for d in self.dyads for u in d.unknowns]
+        values = chunked(lambda *part: self._unknowns(part, unknowns), angles)
+        return dict(zip(unknowns, values))
 
-    def _chunk(self, angles: Sequence[FloatArray]) -> dict[str, FloatArray]:
+    def _unknowns(self, angles: Sequence[FloatArray], unknowns: Sequence[str]) -> list[FloatArray]:
+        variables = self.variables(angles)
+        return [variables[u] for u in unknowns]
+
+    def variables(self, angles: Sequence[FloatArray]) -> dict[str, FloatArray]:
+        """Every variable (each input's cos and sin, then each point's unknowns) on one chunk of
+        inputs; numpy's operations only, in an order ``algkin.evaluate.trace`` records."""
+        result: dict[str, FloatArray] = {}
         values: list[FloatArray] = []
         half: list[HalfAngle] = []
-        for theta in angles:
+        for (c, s), theta in zip(self.half_angles, angles):
             t = np.tan(0.5 * theta)
             w = 1 / (1 + t * t)
             values += [(1 - t) * (1 + t) * w, 2 * t * w]
+            result.update({str(c): values[-2], str(s): values[-1]})
             half.append((t, w))
-        result: dict[str, FloatArray] = {}
         for dyad in self.dyads:
             x, y = dyad(values, half)
             values += [x, y]
             result.update(zip(dyad.unknowns, (x, y)))
         return result
+
+    def kernel(self, outputs: Outputs | None = None) -> Kernel:
+        """The fused evaluator of ``outputs`` (a function of ``variables``' dictionary returning a
+        list of arrays; default: every unknown), numba's loop where it pays, this numpy form elsewhere.
+
+        >>> from algkin.scene import load_scene, compile_scene
+        >>> from algkin.branches import closed_forms
+        >>> compiled = compile_scene(load_scene("chebyshev-lambda"), ["B"])
+        >>> stable = StableBranch(compiled, closed_forms(compiled)[0])
+        >>> [round(float(v[0]), 12) for v in stable.kernel()(np.array([0.0]), engine="numpy")]
+        [1.5, 2.449489742783]
+        """
+        if outputs is None:
+            unknowns = [u for d in self.dyads for u in d.unknowns]
+            outputs = lambda variables: [variables[u] for u in unknowns]  # noqa: E731
+        step = lambda *angles: list(outputs(self.variables(angles)))  # noqa: E731
+        names = [f"theta{k}" for k in range(len(self.half_angles))]
+        return Kernel(trace(step, names), lambda *angles: chunked(step, angles))
+
+
+def chunked(step: Callable[..., Sequence[FloatArray]], angles: Sequence[npt.ArrayLike]) -> list[FloatArray]:
+    """``step``'s outputs over ``angles`` (broadcast), run on ``CHUNK`` samples at a time."""
+    arrays = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in angles))
+    flat = [a.ravel() for a in arrays]
+    out: list[FloatArray] = []
+    for start in range(0, flat[0].size, CHUNK):
+        part = slice(start, start + CHUNK)
+        values = step(*(a[part] for a in flat))
+        if not out:
+            out = [np.empty(flat[0].size) for _ in values]
+        for k, value in enumerate(values):
+            out[k][part] = value
+    if not out:  # no samples: one empty array per output
+        out = [np.empty(0) for _ in step(*flat)]
+    return [v.reshape(arrays[0].shape) for v in out]
