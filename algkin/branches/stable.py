@@ -29,13 +29,14 @@ import sympy
 from ..evaluate.fused import Kernel
 from ..evaluate.trace import trace
 from ..scene import Compiled
+from ..scene.compile import _resolve_outputs
 from ..scene.implicit import StableEvaluator, reduce_on_circles
 from ..scene.implicit.base import HalfAngle
 from ..scene.implicit.floats import FloatArray
 from ..system import symbol
 from .closed_form import Branch
 
-__all__ = ["StableBranch", "chunked", "Outputs"]
+__all__ = ["StableBranch", "chunked", "output_forms", "Outputs"]
 
 Outputs = Callable[[Mapping[str, FloatArray]], Sequence[FloatArray]]  # variables -> the outputs wanted
 CHUNK = 4096  # samples per pass: temporaries stay in cache and below malloc's mmap threshold
@@ -46,8 +47,10 @@ class StableBranch:
 
     def __init__(self, compiled: Compiled, branch: Branch) -> None:
         defaults = {symbol(n): sympy.Rational(str(v)) for n, v in compiled.parameter_values.items()}
+        self.compiled, self.branch = compiled, branch
         self.half_angles = compiled.circles
         fix = lambda e: reduce_on_circles(sympy.sympify(e).xreplace(defaults), self.half_angles)  # noqa: E731
+        self.fix = fix
         arguments = [v for pair in self.half_angles for v in pair]
         self.dyads: list[StableEvaluator] = []  # every implicit point's, in construction order
         for spec in compiled.implicit:
@@ -100,6 +103,40 @@ class StableBranch:
         step = lambda *angles: list(outputs(self.variables(angles)))  # noqa: E731
         names = [f"theta{k}" for k in range(len(self.half_angles))]
         return Kernel(trace(step, names), lambda *angles: chunked(step, angles))
+
+
+def output_forms(stable: StableBranch, requested: Sequence[str] | None = None) -> tuple[list[str], Outputs]:
+    """``(unknowns, outputs)``: the unknowns of the ``requested`` outputs (default: the compiled
+    scene's) in order, and their stabilised forms from ``variables``: a dyad or slider point's
+    own, an explicit one from its definition with its offsets cancelled exactly (a distance is
+    the ``hypot`` of exact coordinate differences, no square root of expanded squares).
+
+    >>> from algkin.scene import load_scene, compile_scene
+    >>> from algkin.branches import closed_forms
+    >>> compiled = compile_scene(load_scene("chebyshev-lambda"), ["P", "dist(O, P)"])
+    >>> stable = StableBranch(compiled, closed_forms(compiled)[0])
+    >>> names, forms = output_forms(stable, ["P", "dist(O, P)"])
+    >>> names, [round(float(v), 12) for v in forms(stable.variables([np.array(0.0)]))]
+    (['P_x', 'P_y', 'dist_O_P'], [2.0, 4.898979485566, 5.291502622129])
+    """
+    compiled, fix = stable.compiled, stable.fix
+    arguments = [v for pair in stable.half_angles for v in pair] + [symbol(u) for d in stable.dyads for u in d.unknowns]
+    names, parts = [], []
+    for output in _resolve_outputs(compiled.scene, requested or list(compiled.scene.outputs)):
+        unknowns = list(compiled.outputs[output.name])
+        if output.kind == "dist":  # offsets cancel symbolically before any rounding
+            (px, py), (qx, qy) = (compiled.coordinates[p] for p in output.points)
+            span = sympy.lambdify(arguments, [fix(px - qx), fix(py - qy)], "numpy")
+            parts.append(lambda *values, span=span: [np.hypot(*span(*values))])
+        else:
+            formulas = [fix(compiled.definitions.get(u, symbol(u))) for u in unknowns]
+            parts.append(sympy.lambdify(arguments, formulas, "numpy"))
+        names += unknowns
+
+    def forms(variables: Mapping[str, FloatArray]) -> list[FloatArray]:
+        values = [variables[str(a)] for a in arguments]
+        return [v for part in parts for v in part(*values)]
+    return names, forms
 
 
 def chunked(step: Callable[..., Sequence[FloatArray]], angles: Sequence[npt.ArrayLike]) -> list[FloatArray]:

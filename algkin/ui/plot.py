@@ -148,7 +148,7 @@ def accuracy_figure(result):
     floor = _zero_floor([r["max_rel_error"] for r in rows])
     cases = list(dict.fromkeys(r["case"] for r in rows))
     colors = {case: f"C{k % 10}" for k, case in enumerate(cases)}
-    markers = {"closed-form": "s", "stabilised": "o", "numeric": "^", "reference": "D"}
+    markers = {"closed-form": "s", "stabilised": "o", "compiled": "P", "numeric": "^", "reference": "D"}
     for r in rows:
         exact = r["max_rel_error"] == 0
         axes.scatter([r["ns_per_sample"]], [floor if exact else r["max_rel_error"]],

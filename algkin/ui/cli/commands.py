@@ -297,6 +297,19 @@ def _cmd_verify(args):
     return text, _verdict(result.verification)
 
 
+def _cmd_export(args):
+    from ...runtime.files import check_output
+    from ..export import export
+
+    if args.out is not None:
+        check_output("--out", args.out)
+    text = export(_scene_of(args), args.outputs, args.to, args.param)
+    if args.out is None:
+        return text, 0
+    return terminal_safe(f"wrote {args.to} to {args.out}\n"), 0, [(pathlib.Path(args.out), text)]
+
+
 COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
             "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot,
-            "toggles": _cmd_toggles, "accuracy": _cmd_accuracy, "bench": _cmd_bench}
+            "toggles": _cmd_toggles, "accuracy": _cmd_accuracy, "bench": _cmd_bench,
+            "export": _cmd_export}
