@@ -186,8 +186,9 @@ def _operand(value: object) -> object:
 
 
 def trace(function: Callable[..., Sequence[object]], inputs: Sequence[str]) -> Program:
-    """``function``'s operations on one sample of each input, as a program returning its outputs."""
+    """``function``'s operations on one sample of each input, as a program returning its outputs
+    (the operations no output needs left out)."""
     program = Program(list(inputs))
     results = function(*(Value(program, n) for n in inputs))
     program.outputs = [_operand(r) for r in results]
-    return program
+    return program.select(range(len(program.outputs)))
