@@ -55,7 +55,7 @@ ENGINES = ("auto", "compiled", "numpy")
 # imported and the kernel in the disk cache, a load costs ~15 ms; else importing numba ~0.4 s, or compiling ~1 s
 WARM_SAMPLES = 1_000_000
 COLD_SAMPLES = 20_000_000
-BLOCK = 16_384  # samples per block: its tangents (128 kB) stay in cache between numpy's tan and the kernel
+BLOCK = 16384  # samples per block: its tangents (128 kB) stay in cache between numpy's tan and the kernel
 
 _loaded: dict[str, ModuleType] = {}  # source hash -> the generated module, compiled in this process
 

@@ -122,3 +122,10 @@ def test_out_is_written_whole_and_a_bad_path_writes_nothing(tmp_path):
     assert (tmp_path / "p.js").read_text() == export("chebyshev-lambda", ["P"], "js")
     bad = run_cli(["export", "chebyshev-lambda", "--to", "c", "--out", "missing/p.c"], tmp_path)
     assert bad.returncode == 2 and sorted(p.name for p in tmp_path.iterdir()) == ["p.js"]
+
+
+def test_json_holds_the_code_as_printed(tmp_path):
+    run = run_cli(["export", "chebyshev-lambda", "--outputs", "B", "--to", "numpy", "--json"], tmp_path)
+    assert run.returncode == 0
+    document = json.loads(run.stdout)
+    assert document["to"] == "numpy" and document["code"] == export("chebyshev-lambda", ["B"], "numpy")

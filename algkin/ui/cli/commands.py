@@ -303,10 +303,12 @@ def _cmd_export(args):
 
     if args.out is not None:
         check_output("--out", args.out)
-    text = export(_scene_of(args), args.outputs, args.to, args.param)
+    code = export(_scene_of(args), args.outputs, args.to, args.param)
+    document = {"scene": args.scene, "to": args.to, "outputs": args.outputs, "out": args.out}
     if args.out is None:
-        return text, 0
-    return terminal_safe(f"wrote {args.to} to {args.out}\n"), 0, [(pathlib.Path(args.out), text)]
+        return _render(args, dict(document, code=code), lambda d: d["code"].rstrip("\n")), 0
+    text = _render(args, document, lambda d: f"wrote {d['to']} to {d['out']}")
+    return text, 0, [(pathlib.Path(args.out), code)]
 
 
 COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,

@@ -183,6 +183,7 @@ def build_parser():
     export.add_argument("--out", metavar="FILE", help="write to FILE instead of stdout")
     export.add_argument("--param", action="append", default=[], metavar="NAME",
                         help="with --to latex: keep this dimension symbolic (repeatable)")
+    _json(export, "the scene, the language, and the code (or the file it was written to)")
     _budget_options(export, terms=False)
     bench = _command(commands, "bench", "elimination methods compared on a problem set, peers beside")
     bench.add_argument("--problems", nargs="+", help="problem names (default: the whole suite)")
