@@ -2,10 +2,10 @@
 
 ``Kernel(program, fallback)`` evaluates a ``trace.Program`` (one sample of each input to its
 outputs) over arrays of samples. With numba installed (the ``fast`` extra) the program is
-printed as the body of one ``@njit`` function, inlined into a loop over the samples (serial,
-and ``prange`` over the machine's cores for large counts): every intermediate is a
-register, nothing is allocated but the outputs. Without numba, or where compiling would not
-pay, ``fallback`` (the numpy form the program was traced from) gives the same values.
+printed as the body of one loop over the samples in an ``@njit`` function: every
+intermediate is a register, nothing is allocated but the outputs, and LLVM vectorises the
+loop. Without numba, or where compiling would not pay, ``fallback`` (the numpy form the
+program was traced from) gives the same values.
 
 Compiling costs about a second per kernel, and importing numba about half of one. The
 generated module is therefore written once to ``cache_directory()`` under a hash of its
@@ -55,18 +55,18 @@ ENGINES = ("auto", "compiled", "numpy")
 # imported and the kernel in the disk cache, a load costs ~15 ms; else importing numba ~0.4 s, or compiling ~1 s
 WARM_SAMPLES = 1_000_000
 COLD_SAMPLES = 20_000_000
-BLOCK = 16384  # samples per block: its tangents (128 kB) stay in cache between numpy's tan and the kernel
+BLOCK = 16_384  # samples per block: its tangents (128 kB) stay in cache between numpy's tan and the kernel
 
 _loaded: dict[str, ModuleType] = {}  # source hash -> the generated module, compiled in this process
 
 
 def numba_available() -> bool:
-    """Whether numba can be imported (a test hides it by ``sys.modules["numba"] = None``)."""
+    """Whether numba is installed, found without importing it (a few tenths of a second that a call
+    left to numpy must not pay); a test hides it by ``sys.modules["numba"] = None``."""
     try:
-        import numba  # noqa: F401
-    except ImportError:
+        return importlib.util.find_spec("numba") is not None
+    except (ImportError, ValueError):
         return False
-    return True
 
 
 def cache_directory() -> pathlib.Path:
