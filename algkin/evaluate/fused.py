@@ -12,7 +12,7 @@ generated module is therefore written once to ``cache_directory()`` under a hash
 source, and numba's own cache (``cache=True``) keeps the machine code beside it: a later
 process loads the kernel from disk. ``engine="auto"`` takes the compiled kernel when numba
 is installed and the kernel is already loaded in this process, or the call is large enough to
-pay for loading it (``WARM_SAMPLES`` with numba imported and the kernel compiled before,
+pay for loading it (``WARM_SAMPLES`` with another kernel loaded and this one compiled before,
 ``COLD_SAMPLES`` otherwise): a command or a test that evaluates a few hundred samples never
 waits for numba.
 
@@ -51,8 +51,9 @@ from .trace import Program
 __all__ = ["Kernel", "ENGINES", "WARM_SAMPLES", "COLD_SAMPLES", "BLOCK", "numba_available", "cache_directory", "split"]
 
 ENGINES = ("auto", "compiled", "numpy")
-# auto: the fewest samples for which loading the kernel pays, at ~20 ns a sample saved: with numba
-# imported and the kernel in the disk cache, a load costs ~15 ms; else importing numba ~0.4 s, or compiling ~1 s
+# auto: the fewest samples for which loading the kernel pays, at 50-60 ns a sample saved: with another
+# kernel loaded and this one in the disk cache, a load costs ~15-20 ms; in a fresh process importing numba
+# and loading the first kernel cost ~0.3 s each (benchmarks/bench_compiled.py), compiling ~1 s
 WARM_SAMPLES = 1_000_000
 COLD_SAMPLES = 20_000_000
 BLOCK = 16_384  # samples per block: its tangents (128 kB) stay in cache between numpy's tan and the kernel
@@ -109,7 +110,7 @@ class Kernel:
             return "numpy"
         if engine == "compiled" or self.loaded:
             return "compiled"
-        warm = "numba" in sys.modules and self.path.exists()  # imported, and compiled once before
+        warm = bool(_loaded) and self.path.exists()  # numba warmed by another kernel; this one compiled before
         return "compiled" if samples >= (WARM_SAMPLES if warm else COLD_SAMPLES) else "numpy"
 
     def __call__(self, *inputs: np.ndarray, engine: str = "auto", threads: int | None = None) -> list[np.ndarray]:
