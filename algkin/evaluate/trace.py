@@ -28,6 +28,8 @@ v6 = t if v4 else v5
 
 from __future__ import annotations
 
+import re
+
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
@@ -70,9 +72,14 @@ class Program:
     inputs: list[str]
     lines: list[tuple[str, str, tuple]] = field(default_factory=list)
     outputs: list = field(default_factory=list)  # names, or floats where an output is constant
+    prefix: str = "v"  # of the temporaries' names: v0, v1, ... (v_0, ... if an input is called v0)
+
+    def __post_init__(self) -> None:
+        while any(re.fullmatch(re.escape(self.prefix) + r"\d+", n) for n in self.inputs):
+            self.prefix += "_"
 
     def emit(self, op: str, *operands: object) -> Value:
-        name = f"v{len(self.lines)}"
+        name = f"{self.prefix}{len(self.lines)}"
         self.lines.append((name, op, tuple(_operand(a) for a in operands)))
         return Value(self, name)
 
@@ -116,7 +123,7 @@ class Program:
             if name in needed:
                 lines.append((name, op, operands))
                 needed.update(a for a in operands if isinstance(a, str))
-        return Program(list(self.inputs), lines[::-1], kept)
+        return Program(list(self.inputs), lines[::-1], kept, self.prefix)
 
 
 class Value:

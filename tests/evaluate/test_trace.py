@@ -45,3 +45,9 @@ def test_select_drops_what_no_kept_output_needs():
     program = trace(lambda t: [t * 2.0, np.sqrt(t) + 1.0], ["t"])
     second = program.select([1])
     assert [op for _, op, _ in second.lines] == ["sqrt", "add"] and second.outputs == [program.outputs[1]]
+
+
+def test_an_input_named_like_a_temporary_gets_temporaries_of_another_name():
+    program = trace(lambda v0, v1: [v0 * v1 + 1.0], ["v0", "v1"])
+    assert [name for name, _, _ in program.lines] == ["v_0", "v_1"]
+    assert _run(program, v0=np.array([2.0]), v1=np.array([3.0]))[0][0] == 7.0
