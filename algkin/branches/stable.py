@@ -68,14 +68,15 @@ class StableBranch:
         variables = self.variables(angles)
         return [variables[u] for u in unknowns]
 
-    def variables(self, angles: Sequence[FloatArray]) -> dict[str, FloatArray]:
+    def variables(self, angles: Sequence[FloatArray], tangents: bool = False) -> dict[str, FloatArray]:
         """Every variable (each input's cos and sin, then each point's unknowns) on one chunk of
-        inputs; numpy's operations only, in an order ``algkin.evaluate.trace`` records."""
+        inputs (angles in radians, or with ``tangents`` their half-angle tangents ``tan(theta/2)``);
+        numpy's operations only, in an order ``algkin.evaluate.trace`` records."""
         result: dict[str, FloatArray] = {}
         values: list[FloatArray] = []
         half: list[HalfAngle] = []
         for (c, s), theta in zip(self.half_angles, angles):
-            t = np.tan(0.5 * theta)
+            t = theta if tangents else np.tan(0.5 * theta)
             w = 1 / (1 + t * t)
             values += [(1 - t) * (1 + t) * w, 2 * t * w]
             result.update({str(c): values[-2], str(s): values[-1]})
@@ -86,9 +87,11 @@ class StableBranch:
             result.update(zip(dyad.unknowns, (x, y)))
         return result
 
-    def kernel(self, outputs: Outputs | None = None) -> Kernel:
+    def kernel(self, outputs: Outputs | None = None, tangents: bool = False) -> Kernel:
         """The fused evaluator of ``outputs`` (a function of ``variables``' dictionary returning a
-        list of arrays; default: every unknown), numba's loop where it pays, this numpy form elsewhere.
+        list of arrays; default: every unknown), numba's loop where it pays, this numpy form elsewhere;
+        from the input angles, or with ``tangents`` from their half-angle tangents (no transcendental
+        left: the whole evaluation in the compiled loop).
 
         >>> from algkin.scene import load_scene, compile_scene
         >>> from algkin.branches import closed_forms
@@ -100,8 +103,8 @@ class StableBranch:
         if outputs is None:
             unknowns = [u for d in self.dyads for u in d.unknowns]
             outputs = lambda variables: [variables[u] for u in unknowns]  # noqa: E731
-        step = lambda *angles: list(outputs(self.variables(angles)))  # noqa: E731
-        names = [f"theta{k}" for k in range(len(self.half_angles))]
+        step = lambda *angles: list(outputs(self.variables(angles, tangents)))  # noqa: E731
+        names = [f"{'t' if tangents else 'theta'}{k}" for k in range(len(self.half_angles))]
         return Kernel(trace(step, names), lambda *angles: chunked(step, angles))
 
 

@@ -127,3 +127,15 @@ def test_every_point_of_inversors_six_bars_and_two_inputs_compiles_to_the_numpy_
     for want, got in zip(kernel(*angles, engine="numpy"), kernel(*angles, engine="compiled")):
         assert (np.isnan(want) == np.isnan(got)).all() and (~np.isnan(want)).any()
         assert _ulps(want[~np.isnan(want)], got[~np.isnan(want)]).max() <= ULPS
+
+
+@needs_numba
+def test_from_half_angle_tangents_the_values_are_those_from_the_angles():
+    compiled = compile_scene(load_scene("fourbar"), ["B", "P"])
+    stable = StableBranch(compiled, next(b for b in closed_forms(compiled) if b.selected))
+    theta = np.random.default_rng(4).uniform(-np.pi, np.pi, 30_000)
+    tangents = stable.kernel(tangents=True)
+    assert not any(op == "tan" for _, op, _ in tangents.program.lines)
+    for engine in ("numpy", "compiled"):  # numpy's tan is the one both take: the same values, bit for bit
+        for got, want in zip(tangents(np.tan(0.5 * theta), engine=engine), stable.kernel()(theta, engine="numpy")):
+            np.testing.assert_array_equal(got, want)
