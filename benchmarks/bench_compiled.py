@@ -4,7 +4,8 @@ the compiled (numba) form, same run, same angles; and each one's error against t
 For the lambda's B and P and the four-bar's P, at 10**6 uniform angles (best of repeats, warm):
 the seeds' way (``sympy.solve`` of the eliminants, ``lambdify`` in the angle, the root credited
 that is nearest the truth), ``StableBranch``'s numpy form (``engine="numpy"``) and its fused
-kernel (``engine="compiled"``) on one thread (as with ``NUMBA_NUM_THREADS=1``) and on every core.
+kernel (``engine="compiled"``) on one thread (as with ``NUMBA_NUM_THREADS=1``) and on every core,
+and on one thread from the half-angle tangents given (``kernel(tangents=True)``: no ``tan`` to take).
 Ratios are to the numpy form of the same run. Errors: on a subset of the angles, against the
 root of the original equations certified in balls (``algkin.bench.reference``), relative to the
 point's size, in units of 2**-53 (median, max). The run asserts that the compiled values are the
@@ -57,7 +58,7 @@ def subject(name, point):
     branch = next(b for b in closed_forms(compiled) if b.selected)
     stable = StableBranch(compiled, branch)
     unknowns, forms = output_forms(stable, [point])
-    return scene, compiled, branch, unknowns, stable.kernel(forms)
+    return scene, compiled, branch, unknowns, stable.kernel(forms), stable.kernel(forms, tangents=True)
 
 
 def errors(estimate, truth):
@@ -66,7 +67,7 @@ def errors(estimate, truth):
 
 
 def bench(name, point, samples, repeats, cores):
-    scene, compiled, branch, unknowns, kernel = subject(name, point)
+    scene, compiled, branch, unknowns, kernel, from_tangents = subject(name, point)
     theta = np.sort(np.random.default_rng(0).uniform(0, 2 * np.pi, samples))
     check = theta[:: max(1, samples // CHECKED)]
     certified = Reference(compiled, branch, unknowns).certify(check)
@@ -78,13 +79,18 @@ def bench(name, point, samples, repeats, cores):
             "stabilised numpy": lambda t: np.array(kernel(t, engine="numpy")),
             "compiled, 1 thread": lambda t: np.array(kernel(t, engine="compiled", threads=1)),
             f"compiled, {cores} threads": lambda t: np.array(kernel(t, engine="compiled", threads=cores))}
+    tangents = {"check": np.tan(0.5 * check), "all": np.tan(0.5 * theta)}  # given, not timed
     rows, values = [], {}
     for label, run in runs.items():
         values[label], seconds = timed(lambda: run(theta), repeats)
         error = errors(run(check), truth)
         rows.append((label, seconds / samples * 1e9, float(np.median(error)), float(error.max())))
+    half = lambda which: np.array(from_tangents(tangents[which], engine="compiled", threads=1))  # noqa: E731
+    values["compiled from tan(theta/2)"], seconds = timed(lambda: half("all"), repeats)
+    error = errors(half("check"), truth)
+    rows.append(("compiled from tan/2", seconds / samples * 1e9, float(np.median(error)), float(error.max())))
     baseline = values["stabilised numpy"]
-    for label in runs:
+    for label in values:
         if label.startswith("compiled"):
             same = np.abs(values[label] - baseline) <= ULPS * np.spacing(np.abs(baseline))
             assert same.all(), f"{name} {point} {label}: not the numpy form's values"
@@ -98,7 +104,7 @@ def cold_costs(name, point):
     and evaluating one sample (the kernel compiled by this run already)."""
     code = ("import time, numpy as np; t0 = time.perf_counter(); import numba; t1 = time.perf_counter(); "
             "import sys; sys.path.insert(0, 'benchmarks'); from bench_compiled import subject; "
-            f"k = subject({name!r}, {point!r})[-1]; t2 = time.perf_counter(); "
+            f"k = subject({name!r}, {point!r})[-2]; t2 = time.perf_counter(); "
             "k(np.zeros(1), engine='compiled'); t3 = time.perf_counter(); print(t1 - t0, t3 - t2)")
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([root, os.environ.get("PYTHONPATH", "")]))
@@ -127,7 +133,7 @@ def main():
             print(f"{'':22} target <= {TARGET_NS:.0f} ns/sample on one thread: "
                   f"{'met' if one <= TARGET_NS else 'missed'} ({one:.1f})")
     import_seconds, load_seconds = cold_costs("chebyshev-lambda", "B")
-    _, _, _, _, kernel = subject("chebyshev-lambda", "B")
+    kernel = subject("chebyshev-lambda", "B")[-2]
     print(f"fresh process: import numba {import_seconds * 1e3:.0f} ms, load the cached kernel and run it "
           f"{load_seconds * 1e3:.0f} ms; numpy's form of chebyshev-lambda B, for comparison:")
     for n in (200, 10**4, 10**5, 10**6):
