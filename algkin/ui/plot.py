@@ -65,7 +65,10 @@ def quantity_figure(quantity, found, derivative=False, points=721):
     lo, hi = found.range
     degrees = np.linspace(lo, hi, points)
     expr = quantity.derivative if derivative else quantity.expr
-    values = np.broadcast_to(_sampler(quantity, expr)(np.radians(degrees)), degrees.shape)
+    if derivative or quantity.degrees:
+        values = np.broadcast_to(_sampler(quantity, expr)(np.radians(degrees)), degrees.shape)
+    else:  # the stabilised form (numba's loop where installed and it pays): no cancellation in the curve
+        values = quantity.at(**{quantity.input.name: degrees})
     best = found.minimum
     figure = new_figure()
     axes = figure.add_subplot()
