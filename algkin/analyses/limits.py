@@ -415,7 +415,8 @@ class PointLimits:
 def _point_limits(scene: Scene, point: str, lo: float, hi: float) -> PointLimits:
     """The limits of one point (every branch), the roots dropped, or why the point has none."""
     compiled = compile_scene(scene, [point])
-    _, c, s = single_input(compiled, "limit positions")
+    _, line = single_input(compiled, "limit positions")
+    c, s = line.variables
     stationary = stationary_condition(compiled, point)
     if isinstance(stationary, str):
         return PointLimits(point, compiled, None, [], [], [], stationary)
@@ -465,16 +466,15 @@ def _point_limits(scene: Scene, point: str, lo: float, hi: float) -> PointLimits
 
 def _turns_fully(compiled: Compiled, lo: float, hi: float) -> str | None:
     """None when the input turns fully with every point the output needs assembled; else why not."""
-    from .toggles import _angles, toggle_conditions
+    from .toggles import _roots, toggle_conditions
 
     if hi - lo < 360:
         return f"the input's range [{lo:g}, {hi:g}] deg is less than a full turn"
-    _, c, s = single_input(compiled, "limit positions")
-    t = sympy.Symbol("t")
+    _, line = single_input(compiled, "limit positions")
     with flint.ctx.workprec(ROOT_BITS):
         for spec in compiled.implicit:
             for kind, condition in toggle_conditions(compiled, spec).items():
-                balls = _angles(condition, c, s, t)
+                balls = _roots(condition, line)
                 if balls:
                     angles = ", ".join(f"{float(b.mid()):.6g}" for b in balls)
                     return f"the input does not turn fully: {spec.point} has dead centres ({kind}) at {angles} deg"
@@ -488,7 +488,8 @@ def _time_ratio(found: PointLimits, lo: float, hi: float) -> tuple[TimeRatio | N
     if why is not None:
         return None, why
     branch = next(b for b in found.branches if b.selected)
-    _, c, s = single_input(compiled, "limit positions")
+    _, line = single_input(compiled, "limit positions")
+    c, s = line.variables
     with flint.ctx.workprec(CHECK_BITS):
         if not all(evaluate(d, _angle_values(flint.arb(lo), str(c), str(s)), ARB) > 0
                    for d in branch.discriminants.values()):
@@ -550,7 +551,10 @@ def limits(scene: Scene | str, set: Mapping[str, object] | None = None) -> Limit
     name = next(iter(scene.inputs)) if len(scene.inputs) == 1 else None
     if name is None:
         raise UsageError("scene", scene.name, "limit positions are computed for one-input scenes")
-    lo, hi = scene.inputs[name].range_degrees
+    if not scene.inputs[name].is_angle:
+        raise UsageError("scene", scene.name, f"limit positions and the time ratio are for a turning input; "
+                                              f"{name} is a length (its toggles end the strokes)")
+    lo, hi = scene.inputs[name].span
     points = [_point_limits(scene, point, lo, hi) for point in implicit]
     found = sorted((g for p in points for g in p.limits), key=lambda g: (g.input_deg, g.point, g.branch))
     dropped = [d for p in points for d in p.dropped]

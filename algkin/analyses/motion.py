@@ -27,7 +27,7 @@ from ..errors import UsageError
 from ..evaluate import NUMPY, evaluate
 from ..scene import Scene, compile_scene, load_scene
 from ..scene.constructions import Crank, Dyad, Fixed, Frame, Slider
-from ..system import symbol
+from ..system import input_values, symbol
 
 __all__ = ["Motion", "Pose", "symbolic_parameters"]
 
@@ -72,8 +72,8 @@ class Motion:
         self.branches = closed_forms(self.compiled)
         self.inputs = {n: self.scene.inputs[n] for n in self.compiled.system.inputs}
         if not self.inputs:  # a scene of dimensions alone (a length swept as a parameter): nothing to sweep
-            raise UsageError("scene", self.scene.name, "has no input angle: nothing moves to draw "
-                                                      "(derive and curve take --param for a swept dimension)")
+            raise UsageError("scene", self.scene.name, "has no input: nothing moves to draw (a length that "
+                                                      "moves is an input with unit = \"length\")")
         self.defaults = {n: float(v) for n, v in self.compiled.parameter_values.items()}
         self.points = self._point_forms()
 
@@ -151,12 +151,13 @@ class Motion:
         return [p for p in moving if p in named] or moving[-1:]
 
     def values(self, inputs=None, parameters=None):
-        """Variable name -> value for ``evaluate``: c_*, s_* of inputs in degrees, dimensions."""
+        """Variable name -> value for ``evaluate``: c_*, s_* of inputs in degrees (a length input
+        as it is), dimensions."""
         inputs, parameters = self.complete(inputs, parameters)
         values = {}
-        for name, (c, s) in self.compiled.system.inputs.items():
-            angle = np.radians(np.asarray(inputs[name], dtype=float))
-            values[c], values[s] = np.cos(angle), np.sin(angle)
+        for name, variables in self.compiled.system.inputs.items():
+            given = np.asarray(inputs[name], dtype=float)
+            values.update(input_values(variables, np.radians(given) if self.inputs[name].is_angle else given))
         values.update({p: np.asarray(v, dtype=float) for p, v in parameters.items()})
         return values
 
@@ -168,7 +169,7 @@ class Motion:
                 raise UsageError("--input", name, f"not an input of {self.scene.name} "
                                                   f"(inputs: {', '.join(self.inputs)})")
         for name, spec in self.inputs.items():
-            inputs.setdefault(name, spec.range_degrees[0])
+            inputs.setdefault(name, spec.span[0])
         parameters = dict(parameters or {})
         for name in parameters:
             if name not in self.params:
@@ -204,7 +205,7 @@ class Motion:
     def _sweep(self, parameters, branch, samples, inputs, endpoint=True):
         inputs, parameters = self.complete(inputs, parameters)
         name, spec = next(iter(self.inputs.items()))
-        angles = np.linspace(*spec.range_degrees, samples, endpoint=endpoint)
+        angles = np.linspace(*spec.span, samples, endpoint=endpoint)
         points, blocked = self.evaluate(self.branch_index(branch), self.values({**inputs, name: angles}, parameters))
         blocked = {p: np.broadcast_to(m, angles.shape) for p, m in blocked.items()}
         mask = np.any(list(blocked.values()), axis=0) if blocked else np.zeros(angles.shape, bool)
@@ -215,12 +216,12 @@ class Motion:
         """Input angles a picture starts from: the first input near 7/20 of its range (the
         seed's 63 deg of a turn), moved to the nearest angle where the branch assembles."""
         name, spec = next(iter(self.inputs.items()))
-        lo, hi = spec.range_degrees
+        lo, hi = spec.span
         angles, points = self.sweep(parameters, branch, samples=361)
         alive = np.isfinite(next(iter(points.values()))[0])
         order = np.argsort(np.abs(angles - (lo + 0.175 * (hi - lo))))
         chosen = next((angles[k] for k in order if alive[k]), lo + 0.175 * (hi - lo))
-        return {name: float(chosen), **{n: s.range_degrees[0] for n, s in list(self.inputs.items())[1:]}}
+        return {name: float(chosen), **{n: s.span[0] for n, s in list(self.inputs.items())[1:]}}
 
     def poses(self, parameters=None, branch=None, samples=72, inputs=None):
         """``samples`` configurations turning the first input through its range, evaluated at once.
@@ -228,9 +229,9 @@ class Motion:
         A full turn leaves out its last angle (the first one again), so an animation loops.
         """
         spec = next(iter(self.inputs.values()))
-        lo, hi = spec.range_degrees
+        lo, hi = spec.span
         angles, points, blocked, inputs, parameters = self._sweep(parameters, branch, samples, inputs,
-                                                                  endpoint=hi - lo < 360)
+                                                                  endpoint=not spec.is_angle or hi - lo < 360)
         label = self.branches[self.branch_index(branch)].label
         name = next(iter(self.inputs))
         result = []

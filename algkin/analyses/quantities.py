@@ -103,8 +103,11 @@ class Quantity:
         return symbol(name)
 
     def _in_angle(self, expr):
-        problem = self._problem
-        return expr.xreplace({problem.c: sympy.cos(self.input), problem.s: sympy.sin(self.input)})
+        line = self._problem.line
+        if not line.is_angle:  # a length input is its own variable already
+            return expr
+        c, s = line.variables
+        return expr.xreplace({c: sympy.cos(self.input), s: sympy.sin(self.input)})
 
     # Two spellings of the same forms: ``expr``/``relation`` in the input angle itself
     # (``cos(theta)``, as the seed documents write them, to differentiate or plot), and
@@ -162,13 +165,12 @@ class Quantity:
         """
         (name,) = self.derivation.compiled.system.inputs
         if name not in values:
-            raise UsageError(name, None, f"give the input {name} in degrees")
+            raise UsageError(name, None, f"give the input {name} in degrees (a length input as it is)")
         if np.ndim(values[name]) > 0 and not self.degrees:
             return self._sweep(name, values)
         problem = self._problem
         with mpmath.workdps(30):
-            angle = mpmath.radians(mpmath.mpf(values[name]))
-            numbers = {problem.c.name: mpmath.cos(angle), problem.s.name: mpmath.sin(angle)}
+            numbers = problem.line.numbers_at(mpmath.mpf(values[name]))
             for p in problem.parameters:
                 default = self.derivation.compiled.parameter_values[p.name]
                 numbers[p.name] = mpmath.mpf(str(values.get(p.name, default)))
@@ -188,7 +190,8 @@ class Quantity:
             compiled = compile_scene(with_values(self.mechanism.scene, settings or None), [self.text])
             stable = StableBranch(compiled, next(b for b in closed_forms(compiled) if b.selected))
             kernels[key] = stable.kernel(output_forms(stable, [self.text])[1])
-        return kernels[key](np.radians(np.asarray(values[name], dtype=float)))[0]
+        given = np.asarray(values[name], dtype=float)
+        return kernels[key](np.radians(given) if self._problem.line.is_angle else given)[0]
 
     def extremum(self, range=None, largest=False):  # noqa: A002 (the seed's word)
         """Critical points, minimum and maximum; closed forms in the symbolic dimensions."""

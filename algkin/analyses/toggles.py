@@ -32,8 +32,8 @@ from ..scene import Compiled, compile_scene, load_scene
 from ..scene.constructions import Crank, Fixed
 from ..scene.implicit import ImplicitSpec
 from ..scene.settings import with_values
-from ..system import symbol
-from ..system.angles import half_angle_numerator, tangent_to_degrees, vanishes_at_half_turn
+from ..system import input_values, symbol
+from ..system.angles import Parametrisation
 from ..system.convert import real_roots
 
 __all__ = ["toggles", "Toggle", "Toggles", "grashof", "single_input"]
@@ -43,13 +43,15 @@ ROOT_BITS = 128
 
 @dataclass
 class Toggle:
-    input_deg: float
-    enclosure: object  # arb ball, degrees
+    input_deg: float  # a length input's value, for a length
+    enclosure: object  # arb ball, degrees (or the length)
     point: str  # the dyad or slider
     kind: str  # extended / folded (dyad), tangent (slider)
+    angle: bool = True  # False: the input is a length, its keys have no _deg
 
     def to_json(self):
-        return {"input_deg": self.input_deg, "enclosure_deg": self.enclosure.str(20), "point": self.point,
+        suffix = "_deg" if self.angle else "_length"
+        return {f"input{suffix}": self.input_deg, f"enclosure{suffix}": self.enclosure.str(20), "point": self.point,
                 "kind": self.kind, "certified": True}
 
 
@@ -61,9 +63,10 @@ class Toggles:
     toggles: list
     grashof: dict = None
     artefacts: list = field(default_factory=list)  # dropped discriminant factors, with why
+    unit: str = "deg"  # the range's and the toggles' unit: "deg", or "length" for a length input
 
     def to_json(self):
-        return {"scene": self.scene, "input": self.input, "range": list(self.range),
+        return {"scene": self.scene, "input": self.input, "unit": self.unit, "range": list(self.range),
                 "toggles": [t.to_json() for t in self.toggles], "grashof": self.grashof,
                 "artefacts": self.artefacts}
 
@@ -96,17 +99,19 @@ def _eliminate_earlier(compiled, condition, spec):
         if grown == earlier:
             break
         earlier = grown
-    (c, s), = compiled.system.inputs.values()
+    (variables,) = compiled.system.inputs.values()
     equations = [sympy.expand(e.xreplace(defaults)) for e in equations]
-    return eliminate([condition] + equations, sorted(earlier), [c, s], method="resultant").polynomial
+    return eliminate([condition] + equations, sorted(earlier), list(variables), method="resultant").polynomial
 
 
 def single_input(compiled, what="toggles"):
-    """``(name, c, s)`` of the scene's one input; a usage error naming ``what`` if it has more."""
+    """``(name, parametrisation)`` of the scene's one input (``system.angles.Parametrisation``,
+    in ``t_<name>`` for an angle); a usage error naming ``what`` if it has more."""
     if len(compiled.system.inputs) != 1:
         raise UsageError("scene", compiled.scene.name, f"{what} are computed for one-input scenes")
-    (name, (c, s)), = compiled.system.inputs.items()
-    return name, symbol(c), symbol(s)
+    (name, variables), = compiled.system.inputs.items()
+    t = symbol(f"t_{name}") if len(variables) == 2 else symbol(name)
+    return name, Parametrisation(tuple(symbol(v) for v in variables), t)
 
 
 def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name, SPEC §3's --set
@@ -120,36 +125,34 @@ def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name, S
     if not implicit:
         raise UsageError("scene", scene.name, "has no dyad or slider, so no assembly modes to meet")
     compiled = compile_scene(scene, implicit)
-    name, c, s = single_input(compiled)
-    lo, hi = scene.inputs[name].range_degrees
-    t = symbol(f"t_{name}")
+    name, line = single_input(compiled)
+    lo, hi = scene.inputs[name].span
     found = []
     with flint.ctx.workprec(ROOT_BITS):
         for spec in compiled.implicit:
             for kind, condition in toggle_conditions(compiled, spec).items():
-                for ball in _angles(condition, c, s, t):
-                    found += [Toggle(float(ball.mid()) + turn, ball + turn, spec.point, kind)
-                              for turn in (-360, 0, 360) if lo <= float(ball.mid()) + turn <= hi]
-        dropped = _artefacts(compiled, c, s, t) if artefacts else []
+                for ball in _roots(condition, line):
+                    found += [Toggle(float(ball.mid()) + turn, ball + turn, spec.point, kind, line.is_angle)
+                              for turn in line.turns if lo <= float(ball.mid()) + turn <= hi]
+        dropped = _artefacts(compiled, line) if artefacts else []
     found.sort(key=lambda g: g.input_deg)
-    return Toggles(scene.name, name, (lo, hi), found, grashof(compiled), dropped)
+    unit = "deg" if line.is_angle else "length"
+    return Toggles(scene.name, name, (lo, hi), found, grashof(compiled), dropped, unit)
 
 
-def _angles(condition, c, s, t):
-    """Certified enclosures (degrees) of the angles where ``condition(c, s) = 0``."""
-    balls = [tangent_to_degrees(r) for r in real_roots(half_angle_numerator(condition, c, s, t), t)]
-    if vanishes_at_half_turn(condition, c, s):
-        balls.append(flint.arb(180))
-    return balls
+def _roots(condition, line):
+    """Certified enclosures (degrees, or lengths) of the inputs where ``condition`` vanishes."""
+    return [line.shown(r) for r in real_roots(line.numerator(condition), line.t)] + line.at_infinity(condition)
 
 
-def _artefacts(compiled, c, s, t):
+def _artefacts(compiled, line):
     """Factors of the eliminants' discriminants that are not toggles, with the certificate."""
     from ..derivation.pipeline import derive
 
     derived = derive(compiled.scene, [d.point for d in compiled.implicit], samples=0)
-    geometric = [half_angle_numerator(cond, c, s, t) for d in compiled.implicit
+    geometric = [line.numerator(cond) for d in compiled.implicit
                  for cond in toggle_conditions(compiled, d).values()]
+    t = line.t
     branches = closed_forms(compiled)
     dropped = []
     for unknown, elimination in derived.eliminations.items():
@@ -158,22 +161,22 @@ def _artefacts(compiled, c, s, t):
             continue
         discriminant = sympy.discriminant(elimination.polynomial, u)
         for factor, _ in sympy.factor_list(sympy.expand(discriminant.xreplace(_defaults(compiled))))[1]:
-            numerator = half_angle_numerator(factor, c, s, t)
+            numerator = line.numerator(factor)
             if not numerator.has(t) or any(sympy.rem(g, numerator, t) == 0 for g in geometric if g.has(t)):
                 continue
             dropped.append({"eliminant": unknown, "factor": str(factor),
-                            "why": _why_not_a_toggle(compiled, branches, factor, c, s, t)})
+                            "why": _why_not_a_toggle(compiled, branches, factor, line)})
     return dropped
 
 
-def _why_not_a_toggle(compiled, branches, factor, c, s, t):
+def _why_not_a_toggle(compiled, branches, factor, line):
     """At every real root of ``factor``, ball arithmetic shows the modes apart or not assembled."""
     defaults = {k.name: ARB.number(int(sympy.Rational(v).p), int(sympy.Rational(v).q))
                 for k, v in _defaults(compiled).items()}
     reasons = set()
-    for ball in _angles(factor, c, s, t):
-        angle = ball * flint.arb.pi() / 180
-        values = dict(defaults, **{c.name: angle.cos(), s.name: angle.sin()})
+    names = tuple(v.name for v in line.variables)
+    for ball in _roots(factor, line):
+        values = dict(defaults, **input_values(names, ball * flint.arb.pi() / 180 if line.is_angle else ball))
         reason = _separated(compiled, branches, values)
         if reason is None:
             return "undecided: the balls could not separate the modes"

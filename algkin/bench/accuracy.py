@@ -335,6 +335,9 @@ def accuracy(scene, samples=2000, seed=0, set=None, of=None):  # noqa: A002 - th
         of = next((n for n, p in scene.points.items() if isinstance(p, Dyad)), None) or next(iter(scene.outputs), None)
     if of is None:
         raise UsageError("scene", scene.name, "has no dyad and no output to evaluate; name one with --of")
+    lengths = [n for n, i in scene.inputs.items() if not i.is_angle]
+    if lengths:  # the stabilised forms and the hard cases near toggles are laid out on a turning input
+        raise UsageError("scene", scene.name, f"accuracy is measured over an input angle; {lengths[0]} is a length")
     rng = np.random.default_rng(seed)
     subject = _Subject(scene, of)
     rows = []

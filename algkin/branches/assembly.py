@@ -8,7 +8,7 @@ import sympy
 from ..errors import SceneError
 from ..scene import Compiled
 from ..scene.implicit.floats import FloatArray
-from ..system import symbol
+from ..system import input_values, symbol
 from .closed_form import Branch
 
 __all__ = ["check_assembly", "GRID"]
@@ -21,10 +21,10 @@ def check_assembly(compiled: Compiled, branches: Sequence[Branch]) -> None:
     chosen = next(b for b in branches if b.selected)
     defaults = {symbol(n): v for n, v in compiled.parameter_values.items()}
     angles: dict[sympy.Symbol, FloatArray] = {}
-    for name, (c, s) in compiled.system.inputs.items():
+    for name, variables in compiled.system.inputs.items():
         given = compiled.scene.inputs[name]
         grid = np.linspace(float(given.to_radians(given.lo)), float(given.to_radians(given.hi)), GRID)
-        angles[symbol(c)], angles[symbol(s)] = np.cos(grid), np.sin(grid)
+        angles.update({symbol(v): x for v, x in input_values(variables, grid).items()})
     args = list(angles)
     real = np.ones(GRID, dtype=bool)
     for point, disc in chosen.discriminants.items():

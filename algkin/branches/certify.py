@@ -12,8 +12,10 @@ there, or the balls are too wide), never guessed.
 >>> from algkin.branches import closed_forms
 >>> compiled = compile_scene(load_scene("chebyshev-lambda"), ["B"])
 >>> left = closed_forms(compiled)[0]
->>> certify_label(left, "c_angle", "s_angle", 0, 360, {})
+>>> certify_label(left, ("c_angle", "s_angle"), 0, 360, {})
 [{'from_deg': 0.0, 'to_deg': 360.0, 'status': 'certified'}]
+
+A length input's intervals are lengths, under the keys ``from_length`` and ``to_length``.
 """
 
 import heapq
@@ -24,9 +26,10 @@ import flint
 import sympy
 
 from ..evaluate import ARB, evaluate
+from ..system import input_values
 from .closed_form import Branch
 
-__all__ = ["certify_label", "Interval", "MIN_WIDTH_DEG"]
+__all__ = ["certify_label", "Interval", "MIN_WIDTH_DEG", "interval_keys"]
 
 MIN_WIDTH_DEG = 1e-7
 # Each interval splits until decided or narrower than MIN_WIDTH_DEG; where a discriminant stays
@@ -44,11 +47,18 @@ class Interval(TypedDict):
     status: str
 
 
-def _status(discriminants: Sequence[sympy.Expr], c_name: str, s_name: str, lo: float, hi: float,
+def interval_keys(variables: Sequence[str]) -> tuple[str, str]:
+    """The keys of an interval's ends: degrees for an angle's (cos, sin), a length as it is."""
+    return ("from_deg", "to_deg") if len(variables) == 2 else ("from_length", "to_length")
+
+
+def _status(discriminants: Sequence[sympy.Expr], variables: tuple[str, ...], lo: float, hi: float,
             parameters: Mapping[str, flint.arb]) -> str | None:
     middle, radius = (flint.arb(lo) + flint.arb(hi)) / 2, (flint.arb(hi) - flint.arb(lo)) / 2
-    angle = flint.arb(middle.mid(), radius.mid() + radius.rad()) * flint.arb.pi() / 180
-    values = dict(parameters, **{c_name: angle.cos(), s_name: angle.sin()})
+    value = flint.arb(middle.mid(), radius.mid() + radius.rad())
+    if len(variables) == 2:
+        value *= flint.arb.pi() / 180
+    values = dict(parameters, **input_values(variables, value))
     balls = [evaluate(d, values, ARB) for d in discriminants]
     if any(b < 0 for b in balls):
         return "no-assembly"
@@ -57,15 +67,17 @@ def _status(discriminants: Sequence[sympy.Expr], c_name: str, s_name: str, lo: f
     return None
 
 
-def certify_label(branch: Branch, c_name: str, s_name: str, lo_deg: float, hi_deg: float,
+def certify_label(branch: Branch, variables: tuple[str, ...], lo_deg: float, hi_deg: float,
                   parameters: Mapping[str, flint.arb]) -> list[Interval]:
     """[{from_deg, to_deg, status}] covering ``[lo_deg, hi_deg]``, merged by status.
 
-    ``parameters``: name -> arb for every dimension in the discriminants.
+    ``variables``: the input's, an angle's (cos, sin) (the range in degrees) or a length's one
+    (the range in lengths, the keys ``from_length``, ``to_length``); ``parameters``: name -> arb for every
+    dimension in the discriminants.
     """
     discriminants = list(branch.discriminants.values())
     if not discriminants:
-        return [{"from_deg": float(lo_deg), "to_deg": float(hi_deg), "status": "certified"}]
+        return _merged([(float(lo_deg), float(hi_deg), "certified")], variables)
     pieces: list[tuple[float, float, str]] = []
     # widest first: if the evaluations run out, what is left undecided is the finest part
     queue = [(-(float(hi_deg) - float(lo_deg)), float(lo_deg), float(hi_deg))]
@@ -77,24 +89,25 @@ def certify_label(branch: Branch, c_name: str, s_name: str, lo_deg: float, hi_de
             if evaluations > MAX_EVALUATIONS:  # a discriminant flat at zero over a stretch: left undecided
                 pieces += [(lo, hi, "undecided")] + [(a, b, "undecided") for _, a, b in queue]
                 break
-            status = _status(discriminants, c_name, s_name, lo, hi, parameters)
+            status = _status(discriminants, variables, lo, hi, parameters)
             if status is None and hi - lo < MIN_WIDTH_DEG:
                 with flint.ctx.workprec(4 * BITS):
-                    status = _status(discriminants, c_name, s_name, lo, hi, parameters) or "undecided"
+                    status = _status(discriminants, variables, lo, hi, parameters) or "undecided"
             if status is None:
                 middle = (lo + hi) / 2
                 heapq.heappush(queue, (lo - middle, lo, middle))
                 heapq.heappush(queue, (middle - hi, middle, hi))
             else:
                 pieces.append((lo, hi, status))
-    return _merged(pieces)
+    return _merged(pieces, variables)
 
 
-def _merged(pieces: Sequence[tuple[float, float, str]]) -> list[Interval]:
-    merged: list[Interval] = []
+def _merged(pieces: Sequence[tuple[float, float, str]], variables: Sequence[str]) -> list[Interval]:
+    start, end = interval_keys(variables)
+    merged: list[dict[str, float | str]] = []
     for lo, hi, status in sorted(pieces):
-        if merged and merged[-1]["status"] == status and merged[-1]["to_deg"] == lo:
-            merged[-1]["to_deg"] = hi
+        if merged and merged[-1]["status"] == status and merged[-1][end] == lo:
+            merged[-1][end] = hi
         else:
-            merged.append({"from_deg": lo, "to_deg": hi, "status": status})
-    return merged
+            merged.append({start: lo, end: hi, "status": status})
+    return merged  # type: ignore[return-value]  # an angle's keys, or a length's

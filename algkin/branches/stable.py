@@ -8,7 +8,7 @@ Every input enters through one transcendental, ``t = tan(theta/2)`` (numpy's is
 vectorised and correctly rounded to within an ulp), with ``c = (1 - t**2) w``,
 ``s = 2 t w``, ``w = 1 / (1 + t**2)``; an evaluator may use ``t`` and ``w`` themselves.
 The base coordinates are compiled once (``sympy.lambdify`` with common subexpressions
-shared) and the samples are run in cache-sized chunks.
+shared) and the samples are run in cache-sized chunks. A length input enters as it is.
 
 >>> import numpy as np
 >>> from algkin.scene import load_scene, compile_scene
@@ -51,7 +51,9 @@ class StableBranch:
         self.half_angles = compiled.circles
         fix = lambda e: reduce_on_circles(sympy.sympify(e).xreplace(defaults), self.half_angles)  # noqa: E731
         self.fix = fix
-        arguments = [v for pair in self.half_angles for v in pair]
+        self.inputs = [tuple(variables) for variables in compiled.system.inputs.values()]  # (c, s), or a length's
+        self.arguments = [symbol(v) for variables in self.inputs for v in variables]
+        arguments = list(self.arguments)
         self.dyads: list[StableEvaluator] = []  # every implicit point's, in construction order
         for spec in compiled.implicit:
             sigma = float(spec.sign(branch.labels[spec.point])) if spec.labels else 1.0
@@ -59,7 +61,7 @@ class StableBranch:
             arguments += [symbol(u) for u in spec.unknowns]
 
     def __call__(self, *angles: npt.ArrayLike) -> dict[str, FloatArray]:
-        """Dyad coordinates (unknown -> array) from each input's angles in radians."""
+        """Dyad coordinates (unknown -> array) from each input's angles in radians (a length as it is)."""
         unknowns = [u for d in self.dyads for u in d.unknowns]
         values = chunked(lambda *part: self._unknowns(part, unknowns), angles)
         return dict(zip(unknowns, values))
@@ -75,11 +77,15 @@ class StableBranch:
         result: dict[str, FloatArray] = {}
         values: list[FloatArray] = []
         half: list[HalfAngle] = []
-        for (c, s), theta in zip(self.half_angles, angles):
+        for variables, theta in zip(self.inputs, angles):
+            if len(variables) == 1:  # a length input enters as it is
+                values.append(theta)
+                result[variables[0]] = theta
+                continue
             t = theta if tangents else np.tan(0.5 * theta)
             w = 1 / (1 + t * t)
             values += [(1 - t) * (1 + t) * w, 2 * t * w]
-            result.update({str(c): values[-2], str(s): values[-1]})
+            result.update(zip(variables, values[-2:]))
             half.append((t, w))
         for dyad in self.dyads:
             x, y = dyad(values, half)
@@ -104,7 +110,7 @@ class StableBranch:
             unknowns = [u for d in self.dyads for u in d.unknowns]
             outputs = lambda variables: [variables[u] for u in unknowns]  # noqa: E731
         step = lambda *angles: list(outputs(self.variables(angles, tangents)))  # noqa: E731
-        names = [f"{'t' if tangents else 'theta'}{k}" for k in range(len(self.half_angles))]
+        names = [f"{'t' if tangents else 'theta'}{k}" for k in range(len(self.inputs))]
         return Kernel(trace(step, names), lambda *angles: chunked(step, angles))
 
 
@@ -123,7 +129,7 @@ def output_forms(stable: StableBranch, requested: Sequence[str] | None = None) -
     (['P_x', 'P_y', 'dist_O_P'], [2.0, 4.898979485566, 5.291502622129])
     """
     compiled, fix = stable.compiled, stable.fix
-    arguments = [v for pair in stable.half_angles for v in pair] + [symbol(u) for d in stable.dyads for u in d.unknowns]
+    arguments = stable.arguments + [symbol(u) for d in stable.dyads for u in d.unknowns]
     names, parts = [], []
     for output in _resolve_outputs(compiled.scene, requested or list(compiled.scene.outputs)):
         unknowns = list(compiled.outputs[output.name])

@@ -29,7 +29,7 @@ from ..runtime import validation
 from ..scene import Compiled, compile_scene
 from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
-from ..system import symbol
+from ..system import inputs_json, symbol
 from ..verify import Verification, verify_branches
 from .tasks import curve_task, eliminant_tasks
 
@@ -62,7 +62,7 @@ class Derivation:
             "scene": self.compiled.scene.name,
             "method": self.method,
             "backend": self.backend,
-            "inputs": {n: {"cos": c, "sin": s} for n, (c, s) in system.inputs.items()},
+            "inputs": inputs_json(system.inputs),
             "system": system.to_json(),
             "outputs": {n: list(v) for n, v in self.compiled.outputs.items()},
             "eliminants": {u: str(e.polynomial) for u, e in self.eliminations.items()},
@@ -124,21 +124,24 @@ def _arguments(outputs, params, samples, seed, budget):
             (validation.budget(budget) or current_budget()).start())
 
 
-def _tangent_samples(spec, count):
-    """Rational tangent half-angles spread over the input's range (exact points on the circle)."""
+def _exact_samples(spec, count):
+    """Rationals spread over the input's range: tangent half-angles for an angle (exact points
+    on the circle), lengths for a length."""
     lo, hi = float(spec.to_radians(spec.lo)), float(spec.to_radians(spec.hi))
     values = []
     for k in range(4 * count):
-        angle = lo + (k + 0.5) / (4 * count) * (hi - lo)
-        if abs(math.cos(angle / 2)) > 0.02:
-            values.append(Fraction(math.tan(angle / 2)).limit_denominator(97))
+        value = lo + (k + 0.5) / (4 * count) * (hi - lo)
+        if not spec.is_angle:
+            values.append(Fraction(value).limit_denominator(97))
+        elif abs(math.cos(value / 2)) > 0.02:
+            values.append(Fraction(math.tan(value / 2)).limit_denominator(97))
     # Interleave so that the first few samples already spread over the range.
     return values[::4] + values[1::4] + values[2::4] + values[3::4]
 
 
 def witnesses(compiled, branches):
     """Per branch, configurations in ball arithmetic at exact rational inputs."""
-    spread = {n: _tangent_samples(compiled.scene.inputs[n], WITNESSES_PER_BRANCH * 3)
+    spread = {n: _exact_samples(compiled.scene.inputs[n], WITNESSES_PER_BRANCH * 3)
               for n in compiled.system.inputs}
     groups = []
     with flint.ctx.workprec(WITNESS_BITS):
@@ -155,10 +158,10 @@ def witnesses(compiled, branches):
 
 
 def _witness(compiled, branch, spread, k):
-    exact = {}  # the inputs' cos and sin and the dimensions are rational: kept exactly too
-    for name, (c, s) in compiled.system.inputs.items():
+    exact = {}  # the inputs' cos and sin (or lengths) and the dimensions are rational: kept exactly too
+    for name, variables in compiled.system.inputs.items():
         t = spread[name][k]
-        exact[c], exact[s] = (1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)
+        exact.update(zip(variables, ((1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)) if len(variables) == 2 else (t,)))
     for n in compiled.system.parameters:
         default = Fraction(str(compiled.parameter_values[n]))
         exact[n] = default * (1 + Fraction(k + 1, 211)) if default else Fraction(k + 1, 211)
@@ -215,12 +218,11 @@ def certify_labels(compiled, branches):
     """Per branch, the input intervals where its label is certified (dimensions at defaults)."""
     if len(compiled.system.inputs) != 1:
         return [None] * len(branches)
-    (name, (c, s)), = compiled.system.inputs.items()
-    spec = compiled.scene.inputs[name]
-    lo, hi = spec.range_degrees
+    (name, variables), = compiled.system.inputs.items()
+    lo, hi = compiled.scene.inputs[name].span
     defaults = {n: ARB.number(Fraction(str(v)).numerator, Fraction(str(v)).denominator)
                 for n, v in compiled.parameter_values.items()}
-    return [certify_label(b, c, s, lo, hi, defaults) for b in branches]
+    return [certify_label(b, variables, lo, hi, defaults) for b in branches]
 
 
 def compile_and_branch(scene, outputs, params):

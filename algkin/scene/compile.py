@@ -73,8 +73,8 @@ class Compiled:
 
     @property
     def circles(self) -> Circles:
-        """Each input's (cos, sin) symbols, on whose unit circles closed forms are reduced."""
-        return [(symbol(c), symbol(s)) for c, s in self.system.inputs.values()]
+        """Each input angle's (cos, sin) symbols, on whose unit circles closed forms are reduced."""
+        return [(symbol(pair[0]), symbol(pair[1])) for pair in self.system.inputs.values() if len(pair) == 2]
 
 
 def _resolve_outputs(scene: Scene, requested: Sequence[str] | None) -> list[Output]:
@@ -173,9 +173,8 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
     defaults, substitution, bits = _parameter_values(scene, symbolic)
     resolved = _resolve_outputs(scene, outputs)
     points = _needed_points(scene, resolved)
-    used_inputs = {getattr(scene.points[p], "input", None) for p in points}  # the cranks' inputs
-    inputs = {n: i.symbols for n, i in scene.inputs.items() if n in used_inputs}
-    builder = Builder(inputs)
+    inputs = _used_inputs(scene, points)
+    builder = Builder({n: pair for n, pair in inputs.items() if len(pair) == 2})
     coords: dict[str, Point] = {}
     for name in points:
         _check_bits(scene, name, scene.points[name], bits)
@@ -183,7 +182,7 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
         for value in vars(construction).values():
             for item in value if isinstance(value, tuple) else (value,):
                 _check_finite(scene, f"points.{name}", item)
-        _check_lengths(scene, name, construction)
+        _check_lengths(scene, name, construction, inputs)
         _check_direction(scene, name, construction)
         try:
             x, y = construction.build(name, coords, builder)
@@ -194,18 +193,29 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
     definitions, output_unknowns, nonnegative, angles = _output_equations(resolved, coords, builder, lengths,
                                                                           scene.source)
     equations = [sympy.expand(eq) for eq in builder.equations]
-    equations += [c**2 + s**2 - 1 for c, s in inputs.values()]
+    equations += [pair[0]**2 + pair[1]**2 - 1 for pair in inputs.values() if len(pair) == 2]
     _check_polynomial(scene, equations, symbolic)
     used = set().union(*(eq.free_symbols for eq in equations)) if equations else set()
     system = System(
         unknowns=tuple(str(u) for u in builder.unknowns),
         parameters=tuple(p for p in symbolic if symbol(p) in used),
-        inputs={n: (str(c), str(s)) for n, (c, s) in inputs.items()},
+        inputs={n: tuple(str(v) for v in variables) for n, variables in inputs.items()},
         equations=tuple(equations),
         nonnegative=tuple(nonnegative),
     )
     return Compiled(scene, system, coords, tuple(builder.dyads.values()), tuple(builder.indicators), definitions,
                     output_unknowns, defaults, symbolic, tuple(builder.implicit.values()), angles)
+
+
+def _used_inputs(scene: Scene, points: Sequence[str]) -> dict[str, tuple[sympy.Symbol, ...]]:
+    """The inputs the ``points`` move with (a crank's angle, a length in an expression) -> their variables."""
+    used = {getattr(scene.points[p], "input", None) for p in points}  # the cranks' angles
+    for name in points:
+        for value in vars(scene.points[name]).values():
+            for item in value if isinstance(value, tuple) else (value,):
+                if isinstance(item, sympy.Basic):
+                    used.update(str(s) for s in item.free_symbols)
+    return {n: i.symbols for n, i in scene.inputs.items() if n in used}
 
 
 def _substituted(construction: Construction, substitution: Substitution) -> Construction:
@@ -267,10 +277,18 @@ def _lengths(construction: Construction) -> tuple[sympy.Expr, ...]:
     return tuple(length for length in lengths if isinstance(length, sympy.Expr))
 
 
-def _check_lengths(scene: Scene, name: str, construction: Construction) -> None:
+def _check_lengths(scene: Scene, name: str, construction: Construction,
+                   inputs: Mapping[str, tuple[sympy.Symbol, ...]]) -> None:
+    """Each length positive, at both ends of a length input's range where it moves with one."""
+    moving = [(variables[0], scene.inputs[n]) for n, variables in inputs.items() if len(variables) == 1]
     for length in _lengths(construction):
-        if length.is_number and not length > 0:
-            raise SceneError(scene.source, f"points.{name}", f"length must be positive, got {length}")
+        ends = [length]
+        for variable, given in moving:
+            ends = [e.xreplace({variable: end}) for e in ends for end in (given.lo, given.hi)]
+        for end in ends:
+            if end.is_number and not end > 0:
+                raise SceneError(scene.source, f"points.{name}", f"length must be positive, got {length}"
+                                 + (f" = {end} at an end of its input's range" if end != length else ""))
 
 
 def _check_direction(scene: Scene, name: str, construction: Construction) -> None:
@@ -341,7 +359,7 @@ def _angle_equations(output: Output, coords: Mapping[str, Point], builder: Build
         sides = [(px - qx, py - qy), (rx - qx, ry - qy)]
         measures = [(px - qx) * (rx - qx) + (py - qy) * (ry - qy)]
     squares = [sympy.expand(dx**2 + dy**2) for dx, dy in sides]
-    circles = list(builder.inputs.values())
+    circles = list(builder.inputs.values())  # the angles' (cos, sin): the builder holds no length input
     if any(reduce_on_circles(square, circles) == 0 for square in squares):
         raise SceneError(source, f"outputs.{name}", f"{output.text}: its points coincide, so it has no angle")
     known = [_bar_square(square, builder) for square in squares]

@@ -28,7 +28,7 @@ import sympy
 from ..errors import SceneError, UsageError
 from .constructions import CONSTRUCTIONS, Construction, Crank, Dyad, Fixed, Frame, Slider
 from .expr import exact_number, parse
-from .model import Input, Output, Scene, range_problem
+from .model import Input, Output, Scene, length_range_problem, range_problem
 from .names import check_names
 
 __all__ = ["load_scene", "load_scene_text", "as_scene", "catalog_names", "MAX_SCENE_BYTES", "SceneLike",
@@ -215,8 +215,10 @@ class _Loader:
             if extra:
                 self.fail(f"{element}.{sorted(extra)[0]}", "unknown key (expected range, unit)")
             unit = spec.get("unit", "deg")
-            if unit not in ("deg", "rad"):
-                self.fail(f"{element}.unit", f"unit must be 'deg' or 'rad', got {unit!r}")
+            if unit not in ("deg", "rad", "length"):
+                self.fail(f"{element}.unit", f"unit must be 'deg', 'rad' or 'length', got {unit!r}")
+            if unit == "length" and "range" not in spec:
+                self.fail(f"{element}.range", "a length input needs its range = [lo, hi]")
             bounds = spec.get("range", [0, 360] if unit == "deg" else [0, "6283185307/1000000000"])
             if not isinstance(bounds, list) or len(bounds) != 2:
                 self.fail(f"{element}.range", "expected [lo, hi]")
@@ -224,9 +226,11 @@ class _Loader:
             if not lo < hi:
                 self.fail(f"{element}.range", f"empty range [{lo}, {hi}]")
             inputs[name] = Input(name, lo, hi, unit)
-            problem = range_problem(*inputs[name].range_degrees)
+            problem = range_problem(*inputs[name].span) if unit != "length" else length_range_problem(lo, hi)
             if problem:
                 self.fail(f"{element}.range", f"[{float(lo):g}, {float(hi):g}] {unit} {problem}")
+        # a length input is a dimension that moves: the points' expressions may use it
+        self.names.update({name: i.symbols[0] for name, i in inputs.items() if not i.is_angle})
         return inputs
 
     def number(self, value: object, element: str) -> sympy.Rational:
@@ -294,6 +298,9 @@ class _Loader:
         name = spec.get("input")
         if name not in inputs:
             self.fail(f"{element}.input", f"unknown input {name!r} (inputs: {', '.join(inputs) or 'none'})")
+        if not inputs[name].is_angle:
+            self.fail(f"{element}.input", f"{name!r} is a length input: a crank turns with an angle "
+                                          "(use the length in a dyad's lengths or a frame's at)")
         phase = self.number(spec.get("phase", 0), f"{element}.phase")
         quarter = phase / 90 if inputs[name].unit == "deg" else phase
         if not quarter.is_Integer or (inputs[name].unit == "rad" and phase != 0):

@@ -1,12 +1,13 @@
 """Scene data: parameters, inputs, points built by constructions, named outputs."""
 
+import math
 from dataclasses import dataclass, field
 
 import sympy
 
 from .constructions import Construction
 
-__all__ = ["Scene", "Input", "Output", "range_problem"]
+__all__ = ["Scene", "Input", "Output", "range_problem", "length_range_problem"]
 
 # The motion repeats after a turn; a range past two turns or far from zero only multiplies
 # the work (certificates and samples are spread over it).
@@ -29,9 +30,30 @@ def range_problem(lo_deg: float, hi_deg: float) -> str | None:
     return None
 
 
+def length_range_problem(lo: sympy.Rational, hi: sympy.Rational) -> str | None:
+    """What is wrong with a length input's range, or None: floats square its values.
+
+    >>> length_range_problem(sympy.Integer(0), sympy.Integer(10)**200)
+    'must lie within the magnitudes 1e-100 to 1e100'
+    """
+    if max(abs(lo), abs(hi)) > sympy.Integer(10) ** 100 or 0 < hi - lo < sympy.Rational(1, 10**100):
+        return "must lie within the magnitudes 1e-100 to 1e100"
+    return None
+
+
 @dataclass(frozen=True)
 class Input:
-    """A driving angle; ``lo``/``hi`` in ``unit`` ('deg' or 'rad')."""
+    """What drives the mechanism: an angle (``lo``/``hi`` in ``unit``, 'deg' or 'rad') or, with
+    ``unit`` 'length', a length (a linear actuator, a string) taking the values ``lo``..``hi``.
+
+    An angle enters the polynomial system as its (cos, sin) pair on the unit circle; a length
+    as itself, a variable named like the input (a dimension that moves).
+
+    >>> Input("s", sympy.Integer(1), sympy.Integer(3), "length").symbols
+    (s,)
+    >>> Input("s", sympy.Integer(1), sympy.Integer(3), "length").span
+    (1.0, 3.0)
+    """
 
     name: str
     lo: sympy.Rational
@@ -39,17 +61,34 @@ class Input:
     unit: str = "deg"
 
     @property
-    def symbols(self) -> tuple[sympy.Symbol, sympy.Symbol]:
+    def is_angle(self) -> bool:
+        return self.unit != "length"
+
+    @property
+    def symbols(self) -> tuple[sympy.Symbol, ...]:
+        if not self.is_angle:
+            return (sympy.Symbol(self.name, real=True),)
         return (sympy.Symbol(f"c_{self.name}", real=True), sympy.Symbol(f"s_{self.name}", real=True))
 
     def to_radians(self, value: sympy.Expr) -> sympy.Expr:
+        """``value`` in the unit the system takes it in: radians for an angle, a length as it is."""
         return value * sympy.pi / 180 if self.unit == "deg" else value
 
     @property
-    def range_degrees(self) -> tuple[float, float]:
-        """(lo, hi) in degrees, as floats."""
+    def span(self) -> tuple[float, float]:
+        """(lo, hi) as floats in the unit users read: degrees for an angle, the length itself."""
+        if not self.is_angle:
+            return float(self.lo), float(self.hi)
         lo, hi = (float(sympy.deg(self.to_radians(v))) for v in (self.lo, self.hi))
         return lo, hi
+
+    def internal(self, shown: float) -> float:
+        """``shown`` (degrees for an angle) in the system's unit (radians; a length as it is)."""
+        return math.radians(shown) if self.is_angle else shown
+
+    def shown(self, value: float) -> str:
+        """A value in users' units as text: ``30°`` for an angle, ``0.25`` for a length."""
+        return f"{value:g}°" if self.is_angle else f"{value:g}"
 
 
 @dataclass(frozen=True)

@@ -46,8 +46,9 @@ def generated_names(scene: Scene) -> dict[str, str]:
     owners = [(f"{p}_{axis}", f"the {axis} coordinate of point {p}", f"points.{p}")
               for p in scene.points for axis in "xy"]
     owners += [(f"{prefix}_{t}", f"the {what} of input {t}", f"inputs.{t}")
-               for t in scene.inputs for prefix, what in
+               for t, given in scene.inputs.items() if given.is_angle for prefix, what in
                (("c", "cosine"), ("s", "sine"), ("t", "half-angle tangent"))]
+    owners += [(t, f"the length input {t}", f"inputs.{t}") for t, given in scene.inputs.items() if not given.is_angle]
     for name, meaning, element in owners:
         if name in made:
             raise SceneError(scene.source, element,

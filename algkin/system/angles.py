@@ -15,10 +15,13 @@ True
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import flint
+import mpmath
 import sympy
 
-__all__ = ["half_angle_numerator", "tangent_to_degrees", "vanishes_at_half_turn"]
+__all__ = ["half_angle_numerator", "tangent_to_degrees", "vanishes_at_half_turn", "Parametrisation"]
 
 
 def half_angle_numerator(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol, t: sympy.Symbol) -> sympy.Expr:
@@ -35,3 +38,90 @@ def vanishes_at_half_turn(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol) ->
 def tangent_to_degrees(t: flint.arb) -> flint.arb:
     """``2 atan(t)`` in degrees, for an arb ball ``t``: in (-180, 180)."""
     return 2 * t.atan() * 180 / flint.arb.pi()
+
+
+class Parametrisation:
+    """An input's variables as polynomials (after clearing denominators) in one variable ``t``.
+
+    An angle's ``(c, s)`` takes the half-angle form, ``t = tan(theta/2)``, its values shown in
+    degrees, with ``theta = 180`` at ``t`` infinite and the motion repeating every turn; a
+    length's one variable is ``t`` itself, shown as it is.
+
+    >>> c, s, t = sympy.symbols("c s t")
+    >>> angle = Parametrisation((c, s), t)
+    >>> angle.numerator(c - s), angle.derivative(c * s)
+    (-t**2 - 2*t + 1, c**2 - s**2)
+    >>> length = Parametrisation((t,), t)
+    >>> length.numerator(t**2 - 2), length.derivative(t**2 - 2), length.turns
+    (t**2 - 2, 2*t, (0,))
+    """
+
+    def __init__(self, variables: tuple[sympy.Symbol, ...], t: sympy.Symbol) -> None:
+        self.variables, self.t = variables, t
+        self.is_angle = len(variables) == 2
+        self.turns: tuple[int, ...] = (-360, 0, 360) if self.is_angle else (0,)
+
+    def numerator(self, expr: sympy.Expr) -> sympy.Expr:
+        """``expr`` as a polynomial in ``t`` (the numerator of its half-angle form for an angle)."""
+        if self.is_angle:
+            c, s = self.variables
+            return half_angle_numerator(expr, c, s, self.t)
+        return sympy.expand(expr.xreplace({self.variables[0]: self.t}))
+
+    def derivative(self, expr: sympy.Expr) -> sympy.Expr:
+        """``d expr / d input``: ``-s*d/dc + c*d/ds`` along an angle, ``d/dt`` along a length."""
+        if self.is_angle:
+            c, s = self.variables
+            return sympy.expand(-s * sympy.diff(expr, c) + c * sympy.diff(expr, s))
+        return sympy.expand(sympy.diff(expr, self.variables[0]))
+
+    def shown(self, root: flint.arb) -> flint.arb:
+        """A root in ``t`` as the input users read: degrees for an angle, the length itself."""
+        return tangent_to_degrees(root) if self.is_angle else root
+
+    def at_infinity(self, expr: sympy.Expr) -> list[flint.arb]:
+        """Where ``expr`` vanishes that no root in ``t`` shows: an angle's half turn."""
+        return [flint.arb(180)] if self.is_angle and vanishes_at_half_turn(expr, *self.variables[:2]) else []
+
+    def exact_shown(self, t: sympy.Expr) -> sympy.Expr:
+        """An exact value of ``t`` as the input users read (degrees: ``360 atan(t) / pi``)."""
+        return 360 * sympy.atan(t) / sympy.pi if self.is_angle else t
+
+    def exact_at(self, shown: sympy.Expr) -> dict[sympy.Symbol, sympy.Expr]:
+        """The input's variables at an exact value as users read it (degrees for an angle)."""
+        if not self.is_angle:
+            return {self.variables[0]: shown}
+        angle = sympy.pi * shown / 180
+        return dict(zip(self.variables, (sympy.cos(angle), sympy.sin(angle))))
+
+    def exact_in_t(self, t: sympy.Expr) -> dict[sympy.Symbol, sympy.Expr]:
+        """The input's variables at an exact ``t`` (an angle's half-angle tangent)."""
+        if not self.is_angle:
+            return {self.variables[0]: t}
+        return dict(zip(self.variables, ((1 - t**2) / (1 + t**2), 2 * t / (1 + t**2))))
+
+    def t_of(self, shown: mpmath.mpf) -> mpmath.mpf:
+        """``t`` at a value as users read it, in mpmath (``tan(theta/2)`` from degrees)."""
+        return mpmath.tan(mpmath.radians(shown) / 2) if self.is_angle else shown
+
+    def numbers_at(self, shown: mpmath.mpf) -> dict[str, mpmath.mpf]:
+        """Variable name -> mpmath value at a value as users read it."""
+        if not self.is_angle:
+            return {self.variables[0].name: shown}
+        angle = mpmath.radians(shown)
+        return {self.variables[0].name: mpmath.cos(angle), self.variables[1].name: mpmath.sin(angle)}
+
+    def at_end(self, end: sympy.Rational) -> Callable[[sympy.Expr], sympy.Expr]:
+        """A polynomial in ``t`` -> one without it that vanishes where it vanishes at ``end``.
+
+        For an angle, 180 degrees is ``t`` at infinity: the leading coefficient; otherwise the
+        resultant with the minimal polynomial of ``tan(end/2)`` (linear at multiples of 90 degrees).
+        """
+        t = self.t
+        if not self.is_angle:
+            return lambda poly: sympy.expand(poly.xreplace({t: end}))
+        half_turns = sympy.Rational(end) / 360
+        if half_turns.q == 2:
+            return lambda poly: sympy.Poly(poly, t).LC()
+        minimal = sympy.minimal_polynomial(sympy.tan(sympy.pi * half_turns), t)
+        return lambda poly: sympy.resultant(poly, minimal, t)

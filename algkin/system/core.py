@@ -15,11 +15,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
+import numpy as np
 import sympy
 
 from ..errors import ComputationError
 
-__all__ = ["System", "symbol", "variables_of"]
+__all__ = ["System", "symbol", "variables_of", "inputs_json", "input_values"]
 
 
 def symbol(name: str) -> sympy.Symbol:
@@ -32,18 +33,40 @@ def variables_of(expr: sympy.Basic) -> list[str]:
     return sorted(str(s) for s in expr.free_symbols)
 
 
+def inputs_json(inputs: dict[str, tuple[str, ...]]) -> dict[str, dict[str, str]]:
+    """Each input's variables by role: ``{"cos": c, "sin": s}`` for an angle, ``{"value": t}`` for a length."""
+    return {name: dict(zip(("cos", "sin") if len(v) == 2 else ("value",), v)) for name, v in inputs.items()}
+
+
+def input_values(variables: tuple[str, ...], value: Any) -> dict[str, Any]:
+    """An input's variables at ``value`` (radians for an angle's pair, the length itself):
+    floats, numpy arrays or python-flint balls (which know their own ``cos`` and ``sin``).
+
+    >>> input_values(("t",), 2.5)
+    {'t': 2.5}
+    >>> input_values(("c", "s"), np.array([0.0]))
+    {'c': array([1.]), 's': array([0.])}
+    """
+    if len(variables) == 1:
+        return {variables[0]: value}
+    if hasattr(value, "cos"):
+        return {variables[0]: value.cos(), variables[1]: value.sin()}
+    return {variables[0]: np.cos(value), variables[1]: np.sin(value)}
+
+
 @dataclass(frozen=True)
 class System:
     """Polynomial equations ``= 0`` with exact rational coefficients.
 
-    ``unknowns`` are solved for; ``inputs`` map an input name to its ``(cos, sin)``
-    variable pair, tied by ``cos**2 + sin**2 - 1`` among the equations; ``parameters``
-    are symbolic dimensions; ``nonnegative`` lists unknowns known to be >= 0 (distances).
+    ``unknowns`` are solved for; ``inputs`` map an input name to its variables: an angle's
+    ``(cos, sin)`` pair, tied by ``cos**2 + sin**2 - 1`` among the equations, or a length's
+    one variable ``(t,)``; ``parameters`` are symbolic dimensions; ``nonnegative`` lists
+    unknowns known to be >= 0 (distances).
     """
 
     unknowns: tuple[str, ...]
     parameters: tuple[str, ...]
-    inputs: dict[str, tuple[str, str]]
+    inputs: dict[str, tuple[str, ...]]
     equations: tuple[sympy.Expr, ...]
     nonnegative: tuple[str, ...] = field(default=())
 
@@ -69,6 +92,6 @@ class System:
         return {
             "unknowns": list(self.unknowns),
             "parameters": list(self.parameters),
-            "inputs": {name: {"cos": c, "sin": s} for name, (c, s) in self.inputs.items()},
+            "inputs": inputs_json(self.inputs),
             "equations": [str(eq) for eq in self.equations],
         }

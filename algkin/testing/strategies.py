@@ -48,7 +48,7 @@ from ..scene.implicit.base import FloatPoint
 Point = tuple[Fraction, Fraction]
 
 __all__ = ["GRASHOF_KINDS", "lengths", "four_bar_lengths", "four_bars", "near_toggle_four_bars",
-           "slider_cranks", "moving_sliders", "inversors", "scenes", "with_symbolic", "MIN_ASSEMBLED_DEGREES"]
+           "slider_cranks", "moving_sliders", "inversors", "length_driven", "scenes", "with_symbolic", "MIN_ASSEMBLED_DEGREES"]
 
 # Which link is the shortest decides a Grashof four-bar's class.
 _SHORTEST = {"crank-rocker": "crank", "double-crank": "ground", "double-rocker": "coupler",
@@ -346,6 +346,56 @@ def inversors(draw: st.DrawFn) -> Scene:
     text = _four_bar_text(bars, origin, direction, phase, at, branch, name, angle, twin, p_line,
                           f"{kind} on the four-bar")
     return load_scene_text(text, f"{name}.toml")
+
+
+@st.composite
+def length_driven(draw: st.DrawFn) -> Scene:
+    """Scenes driven by a length ``s`` (an actuator, a string), not an angle: a bar OA of length
+    ``r`` about the ground point O, with A at ``s`` from the ground point D (``actuator``), or A
+    at ``l`` from the slider B = O + s (D - O) (``piston``: B runs along OD). The range of ``s``
+    is drawn inside the one where the triangle closes, a margin from its ends (the toggles);
+    P is a point of the bar OA, the output ``phi`` its direction.
+    """
+    origin = (draw(_coordinates), draw(_coordinates))
+    toward = (origin[0] + draw(lengths()), origin[1] + draw(_coordinates))
+    ground = math.hypot(*(float(toward[k] - origin[k]) for k in (0, 1)))
+    r, l = draw(lengths()), draw(lengths())
+    kind = draw(st.sampled_from(["actuator", "piston"]))
+    # where |OA| = r, |AX| = l close a triangle: |r - l| < |OX| < r + l, X = D or the piston B
+    low, high = (abs(float(r) - ground), float(r) + ground) if kind == "actuator" \
+        else (abs(float(r - l)) / ground, float(r + l) / ground)
+    margin = (high - low) / 16
+    assume(high - low > 1e-3 and low + margin > 1e-3)
+    lo = Fraction(low + margin).limit_denominator(64)
+    hi = Fraction(high - margin).limit_denominator(64)
+    assume(low < lo < hi < high)
+    a_line = (f'A = {{ dyad = ["O", "D"], lengths = ["r", "s"], branch = "{draw(st.sampled_from(["left", "right"]))}" }}'
+              if kind == "actuator" else
+              f'B = {{ frame = ["O", "D"], at = ["s", 0] }}\n'
+              f'A = {{ dyad = ["O", "B"], lengths = ["r", "l"], branch = "{draw(st.sampled_from(["left", "right"]))}" }}')
+    text = f"""name = "length-{kind}"
+description = "A bar OA moved by a length s ({kind})."
+
+[parameters]
+r = {_q(r)}
+l = {_q(l)}
+u = {_q(draw(_frame))}
+
+[inputs]
+s = {{ range = [{_q(lo)}, {_q(hi)}], unit = "length" }}
+
+[points]
+O = {{ fixed = [{_q(origin[0])}, {_q(origin[1])}] }}
+D = {{ fixed = [{_q(toward[0])}, {_q(toward[1])}] }}
+{a_line}
+P = {{ frame = ["O", "A"], at = ["u", 0] }}
+
+[outputs]
+A = "A"
+P = "P"
+phi = "angle(O, A)"
+"""
+    return load_scene_text(text, f"length-{kind}.toml")
 
 
 def scenes() -> st.SearchStrategy[Scene]:

@@ -149,7 +149,7 @@ def _finish(axes, title):
 def _pose_title(motion):
     """The title of a figure of one configuration: the scene, its input angles, its branch."""
     def title(pose):
-        angles = ", ".join(f"{n} = {v:g}°" for n, v in pose.inputs.items())
+        angles = ", ".join(f"{n} = {motion.inputs[n].shown(v)}" for n, v in pose.inputs.items())
         return f"{motion.scene.name}: {angles}, {pose.branch}"
     return title
 
@@ -258,7 +258,7 @@ def modes_figure(motion, inputs=None, parameters=None):
         axes.set_ylim(bounds[2], bounds[3])
         _finish(axes, f"{branch.label}" + (" (scene's choice)" if branch.selected else ""))
         axes.label_outer()  # the shared y scale is read off the first panel
-    angles = ", ".join(f"{n} = {v:g}°" for n, v in motion.complete(inputs)[0].items())
+    angles = ", ".join(f"{n} = {motion.inputs[n].shown(v)}" for n, v in motion.complete(inputs)[0].items())
     figure.suptitle(f"{motion.scene.name}: assembly modes at {angles}", parse_math=False)
     return figure
 
@@ -282,7 +282,8 @@ def animate(motion, out, parameters=None, branch=None, frames=72, fps=24):
         raise UsageError("--out", str(out), "an .mp4 needs ffmpeg on PATH (not found); write a .gif instead")
     name = next(iter(motion.inputs))
     # One figure moved frame by frame: the artists' data change, nothing is drawn anew.
-    live = LiveFigure(motion, parameters, branch, title=lambda pose: f"{motion.scene.name}: {name} = {pose.inputs[name]:.1f}°")
+    shown = motion.inputs[name].shown
+    live = LiveFigure(motion, parameters, branch, title=lambda pose: f"{motion.scene.name}: {name} = {shown(pose.inputs[name])}")
 
     movie = animation.FuncAnimation(live.figure, live.show, frames=motion.poses(parameters, branch, frames),
                                     cache_frame_data=False)
@@ -293,7 +294,8 @@ def animate(motion, out, parameters=None, branch=None, frames=72, fps=24):
 
 
 def parse_inputs(motion, texts):
-    """``--input`` values: ``VALUE`` (a one-input scene) or ``NAME=VALUE``, degrees within range.
+    """``--input`` values: ``VALUE`` (a one-input scene) or ``NAME=VALUE``, degrees (a length input's
+    length) within range.
 
     >>> from algkin.analyses.motion import Motion
     >>> parse_inputs(Motion("chebyshev-lambda"), ["angle=30"])
@@ -309,9 +311,10 @@ def parse_inputs(motion, texts):
             degrees = float(value)
         except ValueError:
             degrees = float("nan")
-        lo, hi = motion.inputs[name].range_degrees
+        lo, hi = motion.inputs[name].span
         if not lo <= degrees <= hi:
-            raise UsageError("--input", text, f"expected a number of degrees in [{lo:g}, {hi:g}]")
+            what = "a number of degrees" if motion.inputs[name].is_angle else "a length"
+            raise UsageError("--input", text, f"expected {what} in [{lo:g}, {hi:g}]")
         inputs[name] = degrees
     return inputs
 

@@ -38,7 +38,7 @@ class Explorer:
     def sliders(self):
         """[{name, lo, hi, value}]: inputs in degrees (starting where the scene assembles), then dimensions."""
         start = self.motion.start()
-        inputs = [dict(name=n, lo=s.range_degrees[0], hi=s.range_degrees[1], value=start[n])
+        inputs = [dict(name=n, lo=s.span[0], hi=s.span[1], value=start[n])
                   for n, s in self.motion.inputs.items()]
         return inputs + [_slider(p, parameter_range(self.motion, p, self.ranges), self.motion.defaults[p])
                          for p in self.motion.params]
@@ -57,7 +57,7 @@ class Explorer:
         return self._caption(self.pose(**values))
 
     def _caption(self, pose):
-        angles = ", ".join(f"{n} = {v:g}°" for n, v in pose.inputs.items())
+        angles = ", ".join(f"{n} = {self.motion.inputs[n].shown(v)}" for n, v in pose.inputs.items())
         if pose.assembles:
             return f"{pose.branch}: {angles}"
         reasons = {d.point: d.never_meets for d in self.motion.compiled.implicit}

@@ -27,7 +27,7 @@ from numpy.typing import NDArray
 from ..evaluate import ARB, NUMPY
 from ..evaluate.program import compile_program
 from ..runtime import progress
-from ..system import System
+from ..system import System, input_values
 from .balls import BallProgram, Block, BlockCertifier, certifier_of, certify_parameters
 from .minimal import FactorCheck, structure_failures
 from .residual import ExactValue, Polynomial, PolynomialLike, polynomial_of
@@ -124,21 +124,18 @@ class _Plan:
         self.index = {u: k for k, u in enumerate(system.unknowns)}
 
     def floats(self, angles: Mapping[str, Floats]) -> dict[str, Floats]:
-        """The known variables as float arrays over the samples (``angles``: input -> radians)."""
+        """The known variables as float arrays over the samples (``angles``: input -> radians, or lengths)."""
         count = len(next(iter(angles.values()), [0]))
         values = {n: np.full(count, float(v)) for n, v in self.parameters.items()}
         for name, angle in angles.items():
-            cos_name, sin_name = self.system.inputs[name]
-            values[cos_name], values[sin_name] = np.cos(angle), np.sin(angle)
+            values.update(input_values(self.system.inputs[name], angle))
         return values
 
     def balls(self, angles: Mapping[str, Floats], k: int) -> list[flint.arb]:
         """The known variables of sample ``k`` as balls, in ``self.known`` order."""
         values = {n: ARB.number(v.numerator, v.denominator) for n, v in self.parameters.items()}
         for name, angle in angles.items():
-            cos_name, sin_name = self.system.inputs[name]
-            ball = flint.arb(float(angle[k]))
-            values[cos_name], values[sin_name] = ball.cos(), ball.sin()
+            values.update(input_values(self.system.inputs[name], flint.arb(float(angle[k]))))
         return [values[n] for n in self.known]
 
     def any_real(self, floats: Mapping[str, Floats]) -> NDArray[np.bool_]:

@@ -136,7 +136,7 @@ def test_the_forms_read_back_from_their_text_to_the_same_values(six_bar_rates, l
 def test_the_memoised_chain_rule_agrees_with_sympy_diff():
     c, s = symbol("c_angle"), symbol("s_angle")
     (left, _) = derive("chebyshev-lambda", outputs=["P"], samples=0).branches
-    d = Derivative(c, s)
+    d = Derivative((c, s))
     for form in left.values.values():
         by_sympy = -s * sympy.diff(form, c) + c * sympy.diff(form, s)
         for k in range(5):

@@ -25,14 +25,15 @@ def _truth(branch, compiled, angles):
     (its own dyad, or one it is built on, cannot assemble); and per sample whether some
     discriminant of the branch is negative."""
     defaults = {symbol(n): sympy.Rational(str(v)) for n, v in compiled.parameter_values.items()}
-    inputs = list(compiled.system.inputs.values())
+    inputs = list(compiled.system.inputs.values())  # an angle's (c, s), a length's (s,)
     real = lambda v: float(v) if not isinstance(v, mpmath.mpc) else (float(v.real) if v.imag == 0 else np.nan)  # noqa: E731
     with mpmath.workdps(40):
         rows, blocked = [], []
         for sample in zip(*angles):
             values = {}
-            for (c, s), angle in zip(inputs, sample):
-                values[c], values[s] = mpmath.cos(angle), mpmath.sin(angle)
+            for variables, angle in zip(inputs, sample):
+                values.update(zip(variables, (mpmath.cos(angle), mpmath.sin(angle)) if len(variables) == 2
+                                  else (mpmath.mpf(angle),)))
             rows.append([real(evaluate(v.xreplace(defaults), values, MPMATH)) for v in branch.values.values()])
             # a form may lose its square roots (an inversor's straight line, P_x = 5/2): where some
             # discriminant is negative the branch does not assemble, whatever such a form says
@@ -45,7 +46,8 @@ def _truth(branch, compiled, angles):
 def test_every_branch_matches_its_closed_form(name):
     compiled = compile_scene(load_scene(name))
     rng = np.random.default_rng(7)
-    angles = [rng.uniform(-np.pi, np.pi, 60) for _ in compiled.system.inputs]
+    angles = [rng.uniform(-np.pi, np.pi, 60) if compiled.scene.inputs[n].is_angle
+              else rng.uniform(*compiled.scene.inputs[n].span, 60) for n in compiled.system.inputs]
     for branch in closed_forms(compiled):
         truth, blocked = _truth(branch, compiled, angles)
         got = StableBranch(compiled, branch)(*angles)

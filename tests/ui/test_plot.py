@@ -162,7 +162,7 @@ def test_a_scene_without_an_input_is_refused_in_one_line_and_writes_nothing(tmp_
     done = subprocess.run([sys.executable, "-m", "algkin", "plot", str(scene), "--out", str(out)],
                           capture_output=True, text=True)
     assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
-    assert "has no input angle" in done.stderr and not out.exists()
+    assert "has no input" in done.stderr and 'unit = "length"' in done.stderr and not out.exists()
 
 
 def test_the_quantity_curve_is_the_closed_form_at_each_plotted_angle():

@@ -21,8 +21,9 @@ import sympy
 from ...derivation.pipeline import derive
 from ...errors import UsageError
 from ...scene.load import SceneLike, Values
-from ...scene.model import range_problem
+from ...scene.model import length_range_problem, range_problem
 from ...system import symbol
+from ..toggles import single_input
 from .angles import AngleScale, direction_problem
 from .closed import ClosedForm, closed_form, describe, value_factors
 from .critical import (DIGITS, CriticalPoint, Problem, critical_points, extreme, meeting_factors, points_at,
@@ -50,11 +51,13 @@ class Extremum:
     exact: dict = None  # an angle output: 'minimum'/'maximum' -> (degrees, via) exact expressions or None
 
     def to_json(self):
-        document = {"scene": self.scene, "of": self.output, "input": self.input, "range": list(self.range),
-                    "parameters": {n: str(v) for n, v in self.parameters.items()},
-                    "critical_points": [p.to_json() for p in self.critical_points if p.kind != "endpoint"],
-                    "endpoints": [p.to_json() for p in self.critical_points if p.kind == "endpoint"],
-                    "minimum": self.minimum.to_json(), "maximum": self.maximum.to_json()}
+        angle = self.problem is None or self.problem.line.is_angle
+        point = lambda p: p.to_json() if angle else _in_lengths(p.to_json())  # noqa: E731
+        document = {"scene": self.scene, "of": self.output, "input": self.input, "unit": "deg" if angle else "length",
+                    "range": list(self.range), "parameters": {n: str(v) for n, v in self.parameters.items()},
+                    "critical_points": [point(p) for p in self.critical_points if p.kind != "endpoint"],
+                    "endpoints": [point(p) for p in self.critical_points if p.kind == "endpoint"],
+                    "minimum": point(self.minimum), "maximum": point(self.maximum)}
         scale = self.problem.scale if self.problem is not None else None
         if scale is not None:
             document["angle"] = scale.to_json()
@@ -63,6 +66,11 @@ class Extremum:
         if self.closed_form is not None:
             document["closed_form"] = self.closed_form.to_json()
         return document
+
+
+def _in_lengths(point):
+    """A critical point's JSON for a length input: ``input_length``, ``enclosure_length``."""
+    return {key.replace("_deg", "_length"): value for key, value in point.items()}
 
 
 def _text(expr):
@@ -76,30 +84,30 @@ def problem_for(derived, output, degrees=None):
     compiled = derived.compiled
     if len(compiled.system.inputs) != 1:
         raise UsageError("scene", compiled.scene.name, "an extremum needs exactly one input")
-    (name, (c_name, s_name)), = compiled.system.inputs.items()
+    name, line = single_input(compiled, "extrema")
     ((output_name, unknowns),) = compiled.outputs.items()
-    c, s, t = symbol(c_name), symbol(s_name), symbol(f"t_{name}")
     parameters = tuple(symbol(p) for p in compiled.system.parameters)
     angle = compiled.angles.get(output_name)
     if angle is not None and angle.direction:
-        lo, hi = degrees if degrees is not None else compiled.scene.inputs[name].range_degrees
-        return direction_problem(derived, angle, c, s, t, parameters, lo, hi, output)
+        lo, hi = degrees if degrees is not None else compiled.scene.inputs[name].span
+        return direction_problem(derived, angle, line, parameters, lo, hi, output)
     if len(unknowns) != 1:
         raise UsageError("--of", output, "name a scalar output (a distance, a coordinate or an angle), not a point")
     chosen = next(b for b in derived.branches if b.selected)
     scale = AngleScale(angle.cos, None) if angle is not None else None
     return Problem(derived.eliminations[unknowns[0]].polynomial, chosen.values[unknowns[0]],
-                   symbol(unknowns[0]), c, s, t, parameters, scale, tuple(chosen.discriminants.values()))
+                   symbol(unknowns[0]), line, parameters, scale, tuple(chosen.discriminants.values()))
 
 
-def _range_degrees(spec, angle_range):
+def _span(spec, angle_range):
     lo, hi = angle_range if angle_range is not None else (spec.lo, spec.hi)
-    to_degrees = lambda v: sympy.Rational(str(v)) * (1 if spec.unit == "deg" else 180 / sympy.pi)  # noqa: E731
+    to_degrees = lambda v: sympy.Rational(str(v)) * (1 if spec.unit != "rad" else 180 / sympy.pi)  # noqa: E731
     try:
         lo, hi = to_degrees(lo), to_degrees(hi)
     except (TypeError, ValueError, sympy.SympifyError):
         raise UsageError("--range", angle_range, "expected two finite numbers (lo, hi)") from None
-    problem = range_problem(float(lo), float(hi)) if lo.is_finite and hi.is_finite else "must be finite"
+    check = range_problem if spec.is_angle else lambda a, b: length_range_problem(lo, hi) if a < b else "lo must be below hi"
+    problem = check(float(lo), float(hi)) if lo.is_finite and hi.is_finite else "must be finite"
     if problem:
         raise UsageError("--range", f"{float(lo):g}:{float(hi):g}", problem)
     return lo, hi
@@ -128,7 +136,7 @@ def extremum_of(derived, output, angle_range=None, largest=False, backend="flint
     if len(inputs) != 1:
         raise UsageError("scene", derived.compiled.scene.name, "an extremum needs exactly one input")
     (name,) = inputs
-    lo, hi = _range_degrees(derived.compiled.scene.inputs[name], angle_range)
+    lo, hi = _span(derived.compiled.scene.inputs[name], angle_range)
     problem = problem_for(derived, output, (lo, hi))
     scale = problem.scale
     flip = scale is not None and scale.decreasing

@@ -34,7 +34,8 @@ from ...derivation.tasks import equations_for
 from ...eliminate import Witness, eliminate
 from ...errors import ComputationError, UsageError
 from ...evaluate import NUMPY, evaluate
-from ...system import symbol
+from ...system import input_values, symbol
+from ...system.angles import Parametrisation
 from .critical import Problem
 
 if TYPE_CHECKING:
@@ -90,12 +91,13 @@ def _rotated(cos: Any, sin: Any, quarter_turns: int) -> tuple[Any, Any]:
     return cos, sin
 
 
-def _reference(cos_form: sympy.Expr, sin_form: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol,
+def _reference(cos_form: sympy.Expr, sin_form: sympy.Expr, line: Parametrisation,
                defaults: Mapping[str, sympy.Expr], lo: float, hi: float, output: str) -> int:
     """The quarter-turn reference k whose opposite direction the sampled motion stays farthest from."""
-    angles = np.radians(np.linspace(float(lo), float(hi), SAMPLES))
+    angles = np.linspace(float(lo), float(hi), SAMPLES)
     values = {n: float(sympy.Rational(str(v))) for n, v in defaults.items()}
-    values.update({c.name: np.cos(angles), s.name: np.sin(angles)})
+    names = tuple(v.name for v in line.variables)
+    values.update(input_values(names, np.radians(angles) if line.is_angle else angles))
     with np.errstate(invalid="ignore", divide="ignore"):
         x, y = (np.broadcast_to(evaluate(f, values, NUMPY), angles.shape) for f in (cos_form, sin_form))
     phi = np.degrees(np.arctan2(y, x))
@@ -119,21 +121,21 @@ def _fresh(name: str, taken: set[str]) -> sympy.Symbol:
     return symbol(name)
 
 
-def direction_problem(derived: Derivation, angle: AngleOutput, c: sympy.Symbol, s: sympy.Symbol, t: sympy.Symbol,
+def direction_problem(derived: Derivation, angle: AngleOutput, line: Parametrisation,
                       parameters: tuple[sympy.Symbol, ...], lo: float, hi: float, output: str) -> Problem:
     """The ``Problem`` of a direction output: ``w = tan((phi - k*90)/2)`` on the chosen branch,
-    and its eliminant in ``w``, the input's ``c, s`` and the symbolic dimensions."""
+    and its eliminant in ``w``, the input's variables and the symbolic dimensions."""
     compiled = cast("Compiled", derived.compiled)
     system = compiled.system
     chosen = next(b for b in derived.branches if b.selected)
     cos_form, sin_form = chosen.values[angle.cos], chosen.values[angle.sin]
-    k = _reference(cos_form, sin_form, c, s, compiled.parameter_values, lo, hi, output)
+    k = _reference(cos_form, sin_form, line, compiled.parameter_values, lo, hi, output)
     taken = set(system.variables) | set(compiled.parameter_values)
     w = _fresh(f"tan_half_{angle.name}", taken)
     turned_cos, turned_sin = _rotated(cos_form, sin_form, -k)
     closed = turned_sin / (1 + turned_cos)
     eliminant = _eliminant(derived, angle, k, w)
-    return Problem(eliminant, closed, w, c, s, t, parameters, AngleScale(w.name, k),
+    return Problem(eliminant, closed, w, line, parameters, AngleScale(w.name, k),
                    tuple(chosen.discriminants.values()))
 
 

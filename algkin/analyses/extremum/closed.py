@@ -109,8 +109,7 @@ def _exact_degrees(value):
 
 def _at_angle(problem, degrees, values):
     """The closed form at an exact angle, tidied (denested when that is shorter and equal)."""
-    angle = sympy.pi * degrees / 180
-    raw = problem.closed.xreplace({problem.c: sympy.cos(angle), problem.s: sympy.sin(angle)})
+    raw = problem.closed.xreplace(problem.line.exact_at(degrees))
     target = _numeric(raw, values)
     forms = [f for f in (raw, sympy.sqrtdenest(raw), sympy.radsimp(raw), sympy.factor(raw))
              if abs(_numeric(f, values) - target) <= MATCH * (1 + abs(target))]
@@ -131,24 +130,24 @@ class Description:
 def describe(problem, stationary, values_factors, values, best, meeting=()):
     """The closed form, in the parameters, of the certified extremum ``best`` at ``values``;
     at a dead centre its input is a root of one of the ``meeting`` factors, not a stationary one."""
-    turn = 360 * mpmath.floor((best.input_deg + 180) / 360)
-    if best.kind == "endpoint" or abs(best.input_deg - turn + 180) < MATCH:  # t at infinity
+    line = problem.line
+    turn = 360 * mpmath.floor((best.input_deg + 180) / 360) if line.is_angle else 0
+    if best.kind == "endpoint" or (line.is_angle and abs(best.input_deg - turn + 180) < MATCH):  # t at infinity
         degrees = _exact_degrees(best.input_deg)
-        end_value = _at_end(degrees, problem.t)(problem.numerator_in_t(problem.eliminant))
+        end_value = line.at_end(degrees)(problem.numerator_in_t(problem.eliminant))
         return Description("endpoint" if best.kind == "endpoint" else "stationary", degrees,
                            _at_angle(problem, degrees, values), None, end_value)
-    t_star = mpmath.tan(mpmath.radians(best.input_deg) / 2)
+    t_star = line.t_of(best.input_deg)
     at = "dead centre" if best.kind == "dead centre" else "stationary"
     factor = _matching_factor(meeting if at == "dead centre" else stationary, problem.t, t_star, values)
     root = _root_matching(factor, problem.t, t_star, values)
-    degrees = None if root is None else 360 * sympy.atan(root) / sympy.pi + int(turn)
+    degrees = None if root is None else line.exact_shown(root) + int(turn)
     u_factor = _matching_factor(values_factors, problem.u, best.value, values)
     value = _root_matching(u_factor, problem.u, best.value, values)
     if value is None and root is not None and at == "dead centre":
         value = _double_root(problem, root)
     if value is None and root is not None:
-        value = sympy.sqrtdenest(problem.closed.xreplace(
-            {problem.c: (1 - root**2) / (1 + root**2), problem.s: 2 * root / (1 + root**2)}))
+        value = sympy.sqrtdenest(problem.closed.xreplace(line.exact_in_t(root)))
     return Description(at, degrees, value, factor, u_factor)
 
 
@@ -170,9 +169,9 @@ def event_polynomials(problem, stationary, values_factors, ends, own=None):
     """
     t, u = problem.t, problem.u
     eliminant = problem.numerator_in_t(problem.eliminant)
-    end_values = [_at_end(end, t)(eliminant) for end in ends]
+    end_values = [problem.line.at_end(end)(eliminant) for end in ends]
     moving = stationary if own is None else [f for f in (own.input_factor,) if f is not None]
-    events = [_at_end(end, t)(f) for end in ends for f in moving if f.has(t)]
+    events = [problem.line.at_end(end)(f) for end in ends for f in moving if f.has(t)]
     for factor in moving:
         if sympy.degree(factor, t) >= 1:
             events += [sympy.discriminant(factor, t), sympy.Poly(factor, t).LC()]
@@ -183,19 +182,6 @@ def event_polynomials(problem, stationary, values_factors, ends, own=None):
     events += [sympy.resultant(f, g, u) for f, g in itertools.combinations(candidates, 2)
                if own is None or own.value_factor in (f, g)]
     return _event_factors(events, problem.parameters)
-
-
-def _at_end(end, t):
-    """A polynomial in ``t`` -> one without it that vanishes where it vanishes at the angle ``end``.
-
-    180 degrees is ``t`` at infinity: the leading coefficient. Otherwise the resultant
-    with the minimal polynomial of ``tan(end/2)`` (linear at multiples of 90 degrees).
-    """
-    half_turns = sympy.Rational(end) / 360
-    if half_turns.q == 2:
-        return lambda poly: sympy.Poly(poly, t).LC()
-    minimal = sympy.minimal_polynomial(sympy.tan(sympy.pi * half_turns), t)
-    return lambda poly: sympy.resultant(poly, minimal, t)
 
 
 def _event_factors(events, parameters):

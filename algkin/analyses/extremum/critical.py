@@ -1,11 +1,12 @@
-"""Critical points of an output over one input angle, at fixed dimensions, certified.
+"""Critical points of an output over one input, at fixed dimensions, certified.
 
 On the motion the output ``u`` satisfies its eliminant ``F(u, c, s) = 0``; it is
 stationary where ``dF/dtheta = -s*F_c + c*F_s = 0`` (the ``F_u * du/dtheta`` term
 vanishes there). With the half-angle ``t = tan(theta/2)`` both become polynomials in
 ``(u, t)``; their resultant in ``u`` is a polynomial in ``t`` whose real roots, isolated
 by python-flint with certified enclosures, hold every stationary input. No calculus on
-square roots, no numeric minimiser.
+square roots, no numeric minimiser. A length input is ``t`` itself (``F_t = 0``), its
+values shown as lengths where an angle's are in degrees (``input_deg`` holds either).
 """
 
 from dataclasses import dataclass, replace
@@ -18,7 +19,7 @@ import sympy
 from ...eliminate import eliminate
 from ...errors import ComputationError, UsageError
 from ...evaluate import MPMATH, evaluate
-from ...system.angles import half_angle_numerator, tangent_to_degrees
+from ...system.angles import Parametrisation
 from ...system.convert import real_roots
 
 if TYPE_CHECKING:
@@ -35,12 +36,10 @@ DIGITS = 40
 class Problem:
     """An output ``u`` on the motion: its eliminant and the chosen branch's closed form."""
 
-    eliminant: sympy.Expr  # F(u, c, s; parameters)
+    eliminant: sympy.Expr  # F(u, c, s; parameters), or F(u, t; parameters) for a length input t
     closed: sympy.Expr  # u(c, s; parameters) on the selected branch
     u: sympy.Symbol
-    c: sympy.Symbol
-    s: sympy.Symbol
-    t: sympy.Symbol  # tan(theta / 2)
+    line: Parametrisation  # the input's variables in t = tan(theta / 2), or the length t
     parameters: tuple  # symbols left symbolic
     scale: "AngleScale | None" = None  # an angle output: how its degrees follow from u (``angles``)
     valid: tuple = ()  # the chosen branch's discriminants: it assembles where all are >= 0
@@ -51,22 +50,25 @@ class Problem:
                        closed=self.closed.xreplace(values), parameters=(),
                        valid=tuple(d.xreplace(values) for d in self.valid))
 
+    @property
+    def t(self):
+        return self.line.t
+
     def half_angle(self):
         """``F`` and ``dF/dtheta`` as polynomials in ``u``, ``t`` and the parameters."""
-        along = sympy.expand(-self.s * sympy.diff(self.eliminant, self.c)
-                             + self.c * sympy.diff(self.eliminant, self.s))
+        along = self.line.derivative(self.eliminant)
         if along == 0:
             raise UsageError("--of", str(self.u), "the output does not depend on the input")
         return [self.numerator_in_t(e) for e in (self.eliminant, along)]
 
     def numerator_in_t(self, expr):
-        return half_angle_numerator(expr, self.c, self.s, self.t)
+        return self.line.numerator(expr)
 
     def value(self, degrees):
-        """The closed form at ``degrees`` (mpmath), nan where it is not real or the branch does
-        not assemble (a closed form may be real past that: a transmission angle's cosine)."""
-        angle = mpmath.radians(degrees)
-        at = {self.c.name: mpmath.cos(angle), self.s.name: mpmath.sin(angle)}
+        """The closed form at ``degrees`` (a length input's value; mpmath), nan where it is not
+        real or the branch does not assemble (a closed form may be real past that: a
+        transmission angle's cosine)."""
+        at = self.line.numbers_at(degrees)
         result = _evaluated(self.closed, at)
         if not isinstance(result, mpmath.mpf) or any(evaluate(d, at, MPMATH) < 0 for d in self.valid):
             return mpmath.nan
@@ -147,12 +149,13 @@ def critical_points(problem, factors, lo, hi, meeting=None):
     found = []
     with flint.ctx.workprec(ROOT_BITS), mpmath.workdps(DIGITS):
         lo, hi = _mp(lo), _mp(hi)
-        balls = [tangent_to_degrees(r) for p in polys if p.has(problem.t)
+        balls = [problem.line.shown(r) for p in polys if p.has(problem.t)
                  for r in real_roots(p, problem.t)]
-        balls.append(flint.arb(180))  # t = infinity
+        if problem.line.is_angle:
+            balls.append(flint.arb(180))  # t = infinity
         for ball in balls:
             middle = mpmath.mpf(ball.mid().str(DIGITS, radius=False))
-            for turn in (-360, 0, 360):
+            for turn in problem.line.turns:
                 degrees = middle + turn
                 if lo <= degrees <= hi and _is_stationary(problem, degrees) and not _seen(found, degrees):
                     found.append(CriticalPoint(degrees, problem.value(degrees), _kind(problem, degrees),
@@ -179,10 +182,10 @@ def _dead_centres(problem, meeting, lo, hi, found):
     where the branch is real on one side only; at the others two branches merely share a value.
     """
     points = []
-    for ball in (tangent_to_degrees(r) for f in meeting if f.has(problem.t)
+    for ball in (problem.line.shown(r) for f in meeting if f.has(problem.t)
                  for r in real_roots(f, problem.t)):
         middle = mpmath.mpf(ball.mid().str(DIGITS, radius=False))
-        for degrees in (middle + turn for turn in (-360, 0, 360)):
+        for degrees in (middle + turn for turn in problem.line.turns):
             value = _value_at_meeting(problem, degrees)
             if lo <= degrees <= hi and value == value and _ends_here(problem, degrees) \
                     and not _seen(found + points, degrees):
@@ -200,8 +203,7 @@ def _ends_here(problem, degrees):
 def _value_at_meeting(problem, degrees):
     """The branch's value where its square root's argument is zero up to rounding (the
     imaginary part then tiny), nan where the branch is not real."""
-    angle = mpmath.radians(degrees)
-    result = _evaluated(problem.closed, {problem.c.name: mpmath.cos(angle), problem.s.name: mpmath.sin(angle)})
+    result = _evaluated(problem.closed, problem.line.numbers_at(degrees))
     if isinstance(result, mpmath.mpc):
         tiny = mpmath.mpf(10) ** (-DIGITS // 3) * (1 + abs(result))
         return result.real if abs(result.imag) <= tiny else mpmath.nan

@@ -1,7 +1,7 @@
 """Velocities and accelerations of a scene's outputs as closed forms per branch, checked by finite differences.
 
 Each output coordinate's first and second derivatives in the input angle (per radian: the
-velocity and acceleration for a unit input rate) come from its branch closed form by the
+velocity and acceleration for a unit input rate; per unit of a length input) come from its branch closed form by the
 chain rule (``forms``), and are checked against central differences of the original
 system's roots, solved and proved independently of every closed form (``check``).
 
@@ -55,15 +55,16 @@ class Rates:
     """The rates of a derivation's outputs: per branch closed forms, and their check."""
 
     derivation: Derivation
-    input: str  # the input angle the derivatives are taken in, per radian
+    input: str  # the input the derivatives are taken in
     branches: list[BranchRates]
     verification: RatesCheck
     timings: dict[str, float]
+    per: str = "radian"  # "radian" for an input angle, "length" for a length input
 
     def to_json(self) -> dict[str, Any]:
         """The keys ``derive --rates --json`` adds to the derivation's document."""
         return {"rates": {b.label: b.to_json() for b in self.branches},
-                "rates_input": {"name": self.input, "per": "radian"},
+                "rates_input": {"name": self.input, "per": self.per},
                 "rates_verification": self.verification.to_json()}
 
 
@@ -84,17 +85,17 @@ def rates_of(derivation: Derivation, samples: int = SAMPLES, seed: int = 0) -> R
         inputs = compiled.system.inputs
         raise UsageError("--rates", compiled.scene.name, f"needs outputs moved by one input angle; they move with "
                          f"{len(inputs)}" + (f" ({', '.join(inputs)})" if inputs else ""))
-    (name, (c, s)), = compiled.system.inputs.items()
+    (name, variables), = compiled.system.inputs.items()
     unknowns = [u for names in compiled.outputs.values() for u in names]
     mark = time.perf_counter()
-    forms = [rates_of_values(b.values, unknowns, symbol(c), symbol(s)) for b in derivation.branches]
+    forms = [rates_of_values(b.values, unknowns, tuple(symbol(v) for v in variables)) for b in derivation.branches]
     branches = [BranchRates(b.label, b.selected, {u: r.velocity for u, r in f.items()},
                             {u: r.acceleration for u, r in f.items()}) for b, f in zip(derivation.branches, forms)]
     timings = {"rate_forms": time.perf_counter() - mark}
     mark = time.perf_counter()
     verification = check_forms(derivation, forms, samples, seed)
     timings["rate_check"] = time.perf_counter() - mark
-    return Rates(derivation, name, branches, verification, timings)
+    return Rates(derivation, name, branches, verification, timings, "radian" if len(variables) == 2 else "length")
 
 
 def check_forms(derivation: Derivation, forms: list[dict[str, Rate]], samples: int = SAMPLES,

@@ -1,6 +1,6 @@
 """Velocities and accelerations checked against central differences of independent numeric solutions.
 
-At seeded random inputs ``theta`` the original system is solved, with no closed form, at
+At seeded random inputs ``theta`` (or lengths, for a length input) the original system is solved, with no closed form, at
 ``theta - h``, ``theta`` and ``theta + h`` (``h = 2**-60``): in floats once at ``theta``
 (``verify.solve``), then each candidate is proved in python-flint balls at each of the
 three inputs (``verify.balls``, block by block) and tightened by Krawczyk steps on the
@@ -32,7 +32,7 @@ from flint import arb, arb_mat
 
 from ...evaluate import ARB, NUMPY
 from ...evaluate.program import BallProgram, compile_program
-from ...system import System, symbol
+from ...system import System, input_values, symbol
 from ...verify.balls import certifier_of, certify_parameters
 from ...verify.check import decided_real, real_floats
 from ...verify.solve import STARTS, blocks_of, solve_floats
@@ -112,39 +112,38 @@ class _Plan:
     """What is compiled once: the blocks and their certifiers, the whole system, indicators, branches."""
 
     def __init__(self, system: System, indicators: Sequence[Indicator], branches: Sequence[RateForms]) -> None:
-        (self.cos, self.sin), = system.inputs.values()
+        (self.variables,) = system.inputs.values()  # an angle's (cos, sin), or a length's one
         self.system = system
         self.blocks = blocks_of(system)
         self.certifiers = [(block, certifier_of(block), certify_parameters(block)) for block in self.blocks.blocks]
         self.unknowns = list(system.unknowns)
-        names = self.unknowns + [self.cos, self.sin]
+        names = self.unknowns + list(self.variables)
         equations = self.blocks.equations  # square: one per unknown, block-triangular
         self.residual: BallProgram = compile_program(equations, names, ARB)
         jacobian = sympy.Matrix(equations).jacobian([symbol(u) for u in self.unknowns])
         self.jacobian: BallProgram = compile_program(list(jacobian), names, ARB)
         self.labels = [(point, positive, negative) for point, _, positive, negative in indicators]
         self.indicators: BallProgram = compile_program([e for _, e, _, _ in indicators], names, ARB)
-        self.branches = [_Branch(labels, rates, discriminants, [self.cos, self.sin])
+        self.branches = [_Branch(labels, rates, discriminants, list(self.variables))
                          for labels, rates, discriminants in branches]
         self.nonnegative = [self.unknowns.index(n) for n in system.nonnegative]
 
     def draw(self, rng: np.random.Generator, span: tuple[float, float], samples: int) -> np.ndarray:
         """``samples`` inputs where some branch is real in floats (fewer if few are found)."""
         pool = rng.uniform(span[0], span[1], samples * MAX_DRAWS)
-        known = {self.cos: np.cos(pool), self.sin: np.sin(pool)}
+        known = input_values(self.variables, pool)
         real = np.zeros(len(pool), dtype=bool)
         for branch in self.branches:
             real |= branch.real_floats(known)
         return pool[real][:samples]
 
     def known(self, theta: float, shift: int) -> dict[str, arb]:
-        """The input's cos and sin in balls at ``theta + shift * h`` (exact in the working precision)."""
-        angle = arb(theta) + shift * arb(2) ** -STEP_BITS
-        return {self.cos: angle.cos(), self.sin: angle.sin()}
+        """The input's cos and sin (or length) in balls at ``theta + shift * h`` (exact in the working precision)."""
+        return input_values(self.variables, arb(theta) + shift * arb(2) ** -STEP_BITS)
 
     def roots(self, angles: np.ndarray, rng: np.random.Generator, starts: int) -> list[list[list[_Root]]]:
         """Per input, per shift, the proved roots there (from the float candidates at ``theta``)."""
-        candidates = solve_floats(self.blocks, {self.cos: np.cos(angles), self.sin: np.sin(angles)}, rng, starts)
+        candidates = solve_floats(self.blocks, input_values(self.variables, angles), rng, starts)
         owners = candidates.owner.tolist()
         rows = [[[float(candidates.values[n][k]) for n in block.names] for k in range(len(owners))]
                 for block, _, _ in self.certifiers]
@@ -177,7 +176,7 @@ class _Plan:
     def _refined(self, root: list[arb], known: dict[str, arb]) -> list[arb] | None:
         """The root's enclosure tightened: ``K(X) = m - Y F(m) + (I - Y J(X)) (X - m)`` holds
         every root in ``X``, whatever ``Y``; ``X`` holds exactly one (the blocks' proof)."""
-        n, given = len(root), [known[self.cos], known[self.sin]]
+        n, given = len(root), [known[v] for v in self.variables]
         identity = arb_mat([[int(i == j) for j in range(n)] for i in range(n)])
         for _ in range(REFINEMENTS):
             middle = [arb(v.mid()) for v in root]
@@ -196,7 +195,8 @@ class _Plan:
 
     def _label(self, values: list[arb], known: dict[str, arb]) -> Label | None:
         labels = {}
-        for (point, positive, negative), value in zip(self.labels, self.indicators(*values, known[self.cos], known[self.sin])):
+        given = [known[v] for v in self.variables]
+        for (point, positive, negative), value in zip(self.labels, self.indicators(*values, *given)):
             if not (value > 0 or value < 0):
                 return None
             labels[point] = positive if value > 0 else negative

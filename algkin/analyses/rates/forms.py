@@ -8,11 +8,12 @@ towards the pivot:
 
 >>> from algkin.system import symbol
 >>> c, s = symbol("c_t"), symbol("s_t")
->>> [rate_of(x, c, s) for x in (3 * c, 3 * s)]
+>>> [rate_of(x, (c, s)) for x in (3 * c, 3 * s)]
 [Rate(velocity=-3*s_t, acceleration=-3*c_t), Rate(velocity=3*c_t, acceleration=-3*s_t)]
 
 Small forms are then tidied: over one denominator, reduced with ``c**2 + s**2 = 1`` and
-with ``sqrt(D)**2 = D``, kept only where that reads shorter (``tidy``).
+with ``sqrt(D)**2 = D``, kept only where that reads shorter (``tidy``). A length input ``x``
+is its own variable: ``d/dx`` is the plain derivative (per unit of length), no circle.
 """
 
 from __future__ import annotations
@@ -34,14 +35,16 @@ SMALL = 1000  # a derivative with more nodes than this is left as the chain rule
 
 @dataclass(frozen=True)
 class Rate:
-    """One coordinate's first and second derivatives in the input angle (per radian, per radian**2)."""
+    """One coordinate's first and second derivatives in the input (per radian, per radian**2 of an
+    angle; per unit, per unit**2 of a length)."""
 
     velocity: sympy.Expr
     acceleration: sympy.Expr
 
 
 class Derivative:
-    """``d/dtheta`` on expressions in ``c``, ``s`` and constants, memoised per subexpression.
+    """``d/dtheta`` on expressions in ``c``, ``s`` and constants, memoised per subexpression
+    (``d/dx`` given a length input's one variable ``x``).
 
     A six-bar's closed form repeats the first dyad's form many times over: each distinct
     subexpression is differentiated once, and the result shares the derivatives of the
@@ -49,12 +52,14 @@ class Derivative:
 
     >>> from algkin.system import symbol
     >>> c, s = symbol("c"), symbol("s")
-    >>> Derivative(c, s)(sympy.sqrt(5 - 4 * c))
-    2*s/sqrt(5 - 4*c)
+    >>> Derivative((c, s))(sympy.sqrt(5 - 4 * c)), Derivative((c,))(sympy.sqrt(5 - 4 * c))
+    (2*s/sqrt(5 - 4*c), -2/sqrt(5 - 4*c))
     """
 
-    def __init__(self, cos: sympy.Symbol, sin: sympy.Symbol) -> None:
-        self.memo: dict[sympy.Basic, sympy.Expr] = {cos: -sin, sin: cos}
+    def __init__(self, variables: tuple[sympy.Symbol, ...]) -> None:
+        self.memo: dict[sympy.Basic, sympy.Expr] = \
+            {variables[0]: -variables[1], variables[1]: variables[0]} if len(variables) == 2 \
+            else {variables[0]: sympy.Integer(1)}
 
     def __call__(self, node: sympy.Expr) -> sympy.Expr:
         known = self.memo.get(node)
@@ -79,35 +84,36 @@ class Derivative:
         raise TypeError(f"cannot differentiate {type(node).__name__} in a closed form: {node}")
 
 
-def rate_of(expr: sympy.Expr, cos: sympy.Symbol, sin: sympy.Symbol,
-            derivative: Derivative | None = None) -> Rate:
-    """The velocity and acceleration of ``expr`` (in ``cos``, ``sin`` of the input), tidied."""
-    d = derivative or Derivative(cos, sin)
+def rate_of(expr: sympy.Expr, variables: tuple[sympy.Symbol, ...], derivative: Derivative | None = None) -> Rate:
+    """The velocity and acceleration of ``expr`` (in the input's ``variables``: an angle's cos and
+    sin, or a length), tidied."""
+    d = derivative or Derivative(variables)
     velocity = d(expr)
     acceleration = d(velocity)  # from the untidied velocity: its derivatives are memoised
-    return Rate(tidy(velocity, cos, sin), tidy(acceleration, cos, sin))
+    return Rate(tidy(velocity, variables), tidy(acceleration, variables))
 
 
-def rates_of_values(values: Mapping[str, sympy.Expr], unknowns: Sequence[str], cos: sympy.Symbol,
-                    sin: sympy.Symbol) -> dict[str, Rate]:
+def rates_of_values(values: Mapping[str, sympy.Expr], unknowns: Sequence[str],
+                    variables: tuple[sympy.Symbol, ...]) -> dict[str, Rate]:
     """``unknown -> Rate`` for ``unknowns`` of one branch (``values``: its closed forms); the
     coordinates share one memo, since a point's two coordinates share most of their parts."""
-    derivative = Derivative(cos, sin)
-    return {u: rate_of(values[u], cos, sin, derivative) for u in unknowns}
+    derivative = Derivative(variables)
+    return {u: rate_of(values[u], variables, derivative) for u in unknowns}
 
 
-def tidy(expr: sympy.Expr, cos: sympy.Symbol, sin: sympy.Symbol) -> sympy.Expr:
+def tidy(expr: sympy.Expr, variables: tuple[sympy.Symbol, ...]) -> sympy.Expr:
     """``expr`` over one denominator, reduced on the circle and by each root's square, where that
     is shorter; a large form as it is (over one denominator it would only grow).
 
     The algebra is python-flint's: each square root ``sqrt(D)`` becomes a generator ``r``, the
     form a ratio of polynomials in ``r``, ``s``, ``c`` and the dimensions, and each polynomial
     is divided by ``r**2 - D`` and ``s**2 + c**2 - 1`` (lex, ``r`` first: the remainders are
-    of degree 1 in every ``r`` and in ``s``), the ratio cancelled and factored.
+    of degree 1 in every ``r`` and in ``s``; no circle for a length input's ``variables``), the
+    ratio cancelled and factored.
 
     >>> from algkin.system import symbol
     >>> c, s = symbol("c"), symbol("s")
-    >>> tidy(c * c / sympy.sqrt(2 - c) + s * s / sympy.sqrt(2 - c), c, s)
+    >>> tidy(c * c / sympy.sqrt(2 - c) + s * s / sympy.sqrt(2 - c), (c, s))
     1/sqrt(2 - c)
     """
     if printed_size(expr) > SMALL:
@@ -115,7 +121,7 @@ def tidy(expr: sympy.Expr, cos: sympy.Symbol, sin: sympy.Symbol) -> sympy.Expr:
     roots: list[tuple[sympy.Symbol, sympy.Expr]] = []
     try:
         atomic = _atomize(expr, roots)
-        tidied = _Rational(atomic, [r for r, _ in reversed(roots)], cos, sin).tidied(roots)
+        tidied = _Rational(atomic, [r for r, _ in reversed(roots)], variables).tidied(roots)
     except _NotRational:
         return expr
     # python-flint knows names only: the form's own symbols back, whatever their assumptions
@@ -128,12 +134,13 @@ class _NotRational(Exception):
 
 
 class _Rational:
-    """A rational function of the roots, ``s``, ``c`` and the dimensions, as two python-flint polynomials."""
+    """A rational function of the roots, ``s``, ``c`` (or a length) and the dimensions, as two
+    python-flint polynomials."""
 
-    def __init__(self, atomic: sympy.Expr, roots: Sequence[sympy.Symbol], cos: sympy.Symbol,
-                 sin: sympy.Symbol) -> None:
-        rest = sorted(atomic.free_symbols - {*roots, cos, sin}, key=str)
-        self.names = [str(v) for v in (*roots, sin, cos, *rest)]
+    def __init__(self, atomic: sympy.Expr, roots: Sequence[sympy.Symbol], variables: tuple[sympy.Symbol, ...]) -> None:
+        rest = sorted(atomic.free_symbols - {*roots, *variables}, key=str)
+        self.names = [str(v) for v in (*roots, *variables[::-1], *rest)]
+        self.turning = len(variables) == 2
         self.ctx = flint_context(self.names)
         self.gens = dict(zip(self.names, self.ctx.gens()))
         self.numerator, self.denominator = self._convert(atomic)
@@ -146,8 +153,9 @@ class _Rational:
             if not one.is_one():
                 raise _NotRational(base)
             relations.append(self.gens[str(root)] ** 2 - value)
-        sin, cos = self.gens[self.names[len(roots)]], self.gens[self.names[len(roots) + 1]]
-        relations.append(sin**2 + cos**2 - 1)
+        if self.turning:
+            sin, cos = self.gens[self.names[len(roots)]], self.gens[self.names[len(roots) + 1]]
+            relations.append(sin**2 + cos**2 - 1)
         numerator, denominator = (_remainder(p, relations) for p in (self.numerator, self.denominator))
         common = numerator.gcd(denominator)
         return _restored(self._ratio(numerator / common, denominator / common), roots)

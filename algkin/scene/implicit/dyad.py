@@ -102,16 +102,22 @@ class _Stable:
         self.unknowns = dyad.unknowns
         self.base = sympy.lambdify(arguments, base, "numpy", cse=True)
         l1, l2 = (fix(v) for v in dyad.lengths)
-        self.l1, self.l2, self.sigma = float(l1), float(l2), sigma
-        self.lengths_term = float(l1**2 - l2**2)
-        self.factored = _factored_span(fix(base[2] ** 2 + base[3] ** 2), l1, l2, half_angles)
+        self.sigma = sigma
+        # a length input (an actuator, a string) moves a length: evaluated per sample then
+        self.moving = None if l1.is_number and l2.is_number else \
+            sympy.lambdify(arguments, [l1, l2, l1**2 - l2**2], "numpy")
+        self.l1, self.l2, self.lengths_term = (float(v) if v.is_number else 0.0 for v in (l1, l2, l1**2 - l2**2))
+        self.factored = _factored_span(fix(base[2] ** 2 + base[3] ** 2), l1, l2, half_angles) \
+            if self.moving is None else None
 
     def __call__(self, values: Sequence[FloatArray], half: Sequence[HalfAngle]) -> tuple[FloatArray, FloatArray]:
         mx, my, dx, dy = self.base(*values)
+        l1, l2, lengths_term = (self.l1, self.l2, self.lengths_term) if self.moving is None \
+            else self.moving(*values)
         if self.factored is None:
             span = np.hypot(dx, dy)
             span2 = span * span
-            height = 2 * heron_area(self.l1, self.l2, span) / span2
+            height = 2 * heron_area(l1, l2, span) / span2
         else:
             index, factors = self.factored
             t, w = half[index]
@@ -121,9 +127,9 @@ class _Stable:
             span2 = span2 * w
         # both scaled by 1/|d|: no square root of |d|**2 is taken and undone
         across = self.sigma * height
-        if not self.lengths_term:  # equal lengths: the point is straight across from the midpoint
+        if self.moving is None and not lengths_term:  # equal lengths: straight across from the midpoint
             return mx - across * dy, my + across * dx
-        along = self.lengths_term / (2 * span2)
+        along = lengths_term / (2 * span2)
         return mx + (along * dx - across * dy), my + (along * dy + across * dx)
 
 

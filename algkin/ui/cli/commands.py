@@ -102,7 +102,8 @@ def _cmd_toggles(args):
 
     scene = _scene_of(args)
     document = toggles(scene).to_json()
-    document.update(limits(scene).to_json())  # the output's limit positions and time ratio
+    if document["unit"] == "deg":  # a turning input's: the output's limit positions and time ratio
+        document.update(limits(scene).to_json())
     return _render(args, document, _report_toggles), 0
 
 
@@ -192,6 +193,7 @@ def _cmd_show(args):
     from ...runtime.budget import current
     from ...scene import compile_scene
     from ...scene.load import as_scene
+    from ...system import inputs_json
 
     current().note(f"loading {args.scene}")
     scene = as_scene(_scene_of(args))
@@ -202,7 +204,7 @@ def _cmd_show(args):
         "description": scene.description,
         "points": {n: type(c).__name__.lower() for n, c in scene.points.items()},
         "outputs": {n: list(v) for n, v in compiled.outputs.items()},
-        "inputs": {n: {"cos": c, "sin": s} for n, (c, s) in compiled.system.inputs.items()},
+        "inputs": inputs_json(compiled.system.inputs),
         "system": compiled.system.to_json(),
     }
     return _render(args, document, _report_show), 0

@@ -25,26 +25,28 @@ def _report_extremum(d):
     dims = ", ".join(f"{n} = {v}" for n, v in d["parameters"].items())
     angle = d.get("angle")
     unit = " deg" if angle else ""
-    lines = [f"{d['of']} of {d['scene']} over {d['input']} in [{d['range'][0]:g}, {d['range'][1]:g}] deg"
+    suffix = "_deg" if d["unit"] == "deg" else "_length"  # the input's unit, in the keys and after values
+    at = " deg" if d["unit"] == "deg" else ""
+    lines = [f"{d['of']} of {d['scene']} over {d['input']} in [{d['range'][0]:g}, {d['range'][1]:g}]{at}"
              + (f" (at {dims})" if dims else "") + ":"]
     if angle:
         lines.append(f"  (an angle in degrees, {angle['degrees']}, found through {angle['via']})")
-    lines += [f"  {p['kind']:10} {p['value']:.12g}{unit} at {p['enclosure_deg']} deg" for p in d["critical_points"]]
-    lines += [f"  {'end':10} {p['value']:.12g}{unit} at {p['input_deg']:g} deg" for p in d["endpoints"]]
+    lines += [f"  {p['kind']:10} {p['value']:.12g}{unit} at {p['enclosure' + suffix]}{at}" for p in d["critical_points"]]
+    lines += [f"  {'end':10} {p['value']:.12g}{unit} at {p['input' + suffix]:g}{at}" for p in d["endpoints"]]
     for key in ("minimum", "maximum"):
         p = d[key]
-        lines.append(f"{key}: {p['value']:.12g}{unit} at {p['input_deg']:.12g} deg ({p['kind']})")
+        lines.append(f"{key}: {p['value']:.12g}{unit} at {p['input' + suffix]:.12g}{at} ({p['kind']})")
         if p.get("exact"):
             lines.append(f"  exactly {p['exact']} deg, where {angle['via']} = {p['exact_via']}")
     if "closed_form" in d:
-        lines += _report_closed_form(d["closed_form"], d["input"])
+        lines += _report_closed_form(d["closed_form"], d["input"], at)
     return "\n".join(lines)
 
 
-def _report_closed_form(form, name):
+def _report_closed_form(form, name, at=" deg"):
     lines = ["minimum as a closed form:",
              f"  value = {form['value']}",
-             f"  {name} = {form['input']} deg" + ("  (a range end)" if form["at"] == "endpoint" else ""),
+             f"  {name} = {form['input']}{at}" + ("  (a range end)" if form["at"] == "endpoint" else ""),
              "  holds for " + " or ".join(form["valid_when"]) if form["regions"]
              else "  holds where " + " and ".join(form["valid_when"]) + " (the defaults' cell)"]
     if len(form["regions"]) > 1:
@@ -57,7 +59,7 @@ def _report_closed_form(form, name):
             what = {"endpoint": "the minimiser leaves the range; the minimum is at the end",
                     "dead centre": "at the dead centre (where the branch stops assembling)"}.get(region["at"],
                                                                                               "stationary")
-            lines.append(f"    {where}: {what} {name} = {region['input']} deg, value {region['value']}")
+            lines.append(f"    {where}: {what} {name} = {region['input']}{at}, value {region['value']}")
     return lines
 
 
@@ -68,8 +70,10 @@ def _interval(region):
 
 def _report_toggles(d):
     lo, hi = d["range"]
-    lines = [f"toggles of {d['scene']} over {d['input']} in [{lo:g}, {hi:g}] deg:"]
-    lines += [f"  {g['kind']:9} {g['point']} at {g['enclosure_deg']} deg (certified)" for g in d["toggles"]]
+    unit = " deg" if d["unit"] == "deg" else ""
+    lines = [f"toggles of {d['scene']} over {d['input']} in [{lo:g}, {hi:g}]{unit}:"]
+    lines += [f"  {g['kind']:9} {g['point']} at {g.get('enclosure_deg', g.get('enclosure_length'))}{unit} (certified)"
+              for g in d["toggles"]]
     if not d["toggles"]:
         lines.append("  none: every dyad and slider assembles, in both modes apart, over the whole range")
     if d["grashof"]:
@@ -213,7 +217,8 @@ def _report_derive(d):
 def _rates_lines(d):
     """``derive --rates``: per branch, each coordinate's velocity (') and acceleration ('') in the input."""
     name = d["rates_input"]["name"]
-    lines = [f"rates in {name} (x' = dx/d{name}, x'' = d2x/d{name}2, per radian: the velocity and "
+    per = "per radian" if d["rates_input"]["per"] == "radian" else "per unit of the length"
+    lines = [f"rates in {name} (x' = dx/d{name}, x'' = d2x/d{name}2, {per}: the velocity and "
              "acceleration for a unit input rate):"]
     for label, rates in d["rates"].items():
         lines.append(f"  [{label}]")

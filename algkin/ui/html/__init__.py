@@ -75,7 +75,7 @@ def model(motion, inputs=None, branch=None, ranges=None):
     return {
         "scene": motion.scene.name,
         "description": motion.scene.description,
-        "inputs": [{"name": n, "lo": s.range_degrees[0], "hi": s.range_degrees[1], "value": starts[n]}
+        "inputs": [{"name": n, "lo": s.span[0], "hi": s.span[1], "value": starts[n], "angle": s.is_angle}
                    for n, s in motion.inputs.items()],
         "params": [_slider(p, parameter_range(motion, p, ranges), motion.defaults[p]) for p in motion.params],
         "branches": [{"label": b.label, "selected": b.selected, "blocks": list(b.discriminants)}

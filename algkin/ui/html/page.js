@@ -35,10 +35,12 @@ function addBranchChoice() {
   controls.append(label, select);
 }
 
-// The variables a branch function reads: cos and sin of each input, and the dimensions.
+// The variables a branch function reads: cos and sin of each input angle (a length input as
+// it is), and the dimensions.
 function variables(angles) {
   const v = {};
   for (const spec of MODEL.inputs) {
+    if (!spec.angle) { v[spec.name] = angles[spec.name]; continue; }  // a length input: its own variable
     const radians = angles[spec.name] * Math.PI / 180;
     v["c_" + spec.name] = Math.cos(radians);
     v["s_" + spec.name] = Math.sin(radians);
@@ -154,7 +156,7 @@ function update() {
   stateOut.dataset.positions = JSON.stringify(positions);
 }
 
-MODEL.inputs.forEach(spec => addSlider(spec, "°"));
+MODEL.inputs.forEach(spec => addSlider(spec, spec.angle ? "°" : ""));
 MODEL.params.forEach(spec => addSlider(spec, ""));
 if (MODEL.branches.length > 1) addBranchChoice();
 update();

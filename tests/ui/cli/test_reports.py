@@ -43,7 +43,7 @@ def test_short_forms_stay_whole_with_no_hint(tmp_path):
 
 def test_toggles_text_puts_each_dropped_factor_on_one_short_line():
     long_factor = " + ".join(f"{k}*c_t**{k}" for k in range(1, 80))
-    document = {"scene": "s", "input": "t", "range": [0, 360], "toggles": [], "grashof": None,
+    document = {"scene": "s", "input": "t", "unit": "deg", "range": [0, 360], "toggles": [], "grashof": None,
                 "artefacts": [{"eliminant": "B_x", "factor": long_factor, "why": "no real root\n  (certified)"}]}
     lines = _report_toggles(document).splitlines()
     assert all(len(line) <= 250 for line in lines), lines

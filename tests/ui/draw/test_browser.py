@@ -4,6 +4,7 @@ The page's JavaScript evaluates closed forms printed from sympy; the positions i
 must match hand geometry (law of cosines, no algkin) and algkin's own values to ~1e-9.
 """
 
+import math
 import subprocess
 import sys
 
@@ -71,6 +72,7 @@ def test_cannot_assemble_where_the_discriminant_is_negative(pages):
     ("watt-straight-line", "?phi=-12.5&r=2.5", {"phi": -12.5}),        # sqrt(r**2) = |r| in the forms
     ("stephenson-iii", "?theta=77&branch=B:left F:right", {"theta": 77}),  # four modes
     ("stephenson-iii", "?theta=77&branch=B:right F:left", {"theta": 77}),  # ... one that never assembles
+    ("hydraulic-boom", "?s=1.7", {"s": 1.7}),                          # a length input: no cos and sin
 ])
 def test_generated_javascript_agrees_with_python(tmp_path, scene, query, values):
     """The page's JavaScript and algkin's numpy evaluation of the same closed forms."""
@@ -85,3 +87,14 @@ def test_generated_javascript_agrees_with_python(tmp_path, scene, query, values)
         close(circles, pose.points)
     else:
         assert state["positions"] == {} and circles == {}
+
+
+def test_a_length_slider_moves_the_boom_as_the_law_of_cosines_does(tmp_path):
+    """The cylinder's length s: A at 1 from O and s from C = (3/2, -1/2), left of O -> C."""
+    state, circles, _ = load(write(Motion("hydraulic-boom"), tmp_path / "boom.html"), "?s=1.7")
+    assert state["values"]["s"] == 1.7 and state["assembles"] == "true"
+    oc = math.hypot(1.5, 0.5)
+    boom = math.atan2(-0.5, 1.5) + math.acos((1 + oc**2 - 1.7**2) / (2 * oc))
+    hand = {"O": (0, 0), "C": (1.5, -0.5), "A": (math.cos(boom), math.sin(boom)),
+            "T": (3 * math.cos(boom), 3 * math.sin(boom))}
+    close(state["positions"], hand)
