@@ -139,3 +139,16 @@ def test_from_half_angle_tangents_the_values_are_those_from_the_angles():
     for engine in ("numpy", "compiled"):  # numpy's tan is the one both take: the same values, bit for bit
         for got, want in zip(tangents(np.tan(0.5 * theta), engine=engine), stable.kernel()(theta, engine="numpy")):
             np.testing.assert_array_equal(got, want)
+
+
+@needs_numba
+def test_a_length_input_enters_the_kernel_as_it_is():
+    # hydraulic-boom: a boom lifted by a cylinder of length s (a dyad on two ground pivots), s in [4/5, 12/5]
+    compiled = compile_scene(load_scene("hydraulic-boom"))
+    stable = StableBranch(compiled, next(b for b in closed_forms(compiled) if b.selected))
+    kernel = stable.kernel()
+    assert not any(op == "tan" for _, op, _ in kernel.program.lines)
+    s = np.linspace(0.8, 2.4, 20_001)
+    for want, got in zip(kernel(s, engine="numpy"), kernel(s, engine="compiled")):
+        assert np.isfinite(want).all()
+        np.testing.assert_array_equal(got, want)
