@@ -9,7 +9,7 @@ STAMP := $(VENV)/.installed
 $(STAMP): pyproject.toml Makefile
 	$(PY) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e '.[test,plot,notebook]'
+	$(BIN)/python -m pip install -q -e '.[test,plot,notebook,fast]'
 	touch $(STAMP)
 
 DOCS_STAMP := $(VENV)/.docs-installed
@@ -37,6 +37,7 @@ bench: $(STAMP)
 	@status=0; $(BIN)/algkin bench --budget 60 --out bench-results || status=$$?; \
 	$(BIN)/python benchmarks/bench_verify.py || status=$$?; \
 	$(BIN)/python benchmarks/bench_evaluation.py && \
+	$(BIN)/python benchmarks/bench_compiled.py && \
 	$(BIN)/python benchmarks/bench_reference.py && \
 	$(BIN)/python benchmarks/bench_ideas.py && \
 	$(BIN)/python benchmarks/bench_widget.py && \

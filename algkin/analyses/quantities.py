@@ -21,6 +21,7 @@ from collections.abc import Sequence
 from functools import cached_property
 
 import mpmath
+import numpy as np
 import sympy
 
 from ..errors import UsageError
@@ -152,10 +153,21 @@ class Quantity:
         return sympy.diff(self.expr, self.input)
 
     def at(self, **values):
-        """The quantity at an input in degrees (and dimensions), e.g. ``at(theta=90, b=80)``."""
+        """The quantity at an input in degrees (and dimensions), e.g. ``at(theta=90, b=80)``.
+
+        One input: the closed form in mpmath at 30 digits. An array of inputs (not of an angle
+        quantity): an array, the stabilised form in floats on the scene's branch, numba's fused
+        loop where it is installed and pays (``algkin.evaluate.fused``), numpy's otherwise.
+
+        >>> AB = load("arm-string", params=["b"]).dist("A", "B")
+        >>> [round(float(v), 9) for v in AB.at(theta=np.array([90.0, 0.0]), b=80)]   # at 0: sqrt(232900)
+        [94.339811321, 482.597140481]
+        """
         (name,) = self.derivation.compiled.system.inputs
         if name not in values:
             raise UsageError(name, None, f"give the input {name} in degrees (a length input as it is)")
+        if np.ndim(values[name]) > 0 and not self.degrees:
+            return self._sweep(name, values)
         problem = self._problem
         with mpmath.workdps(30):
             numbers = problem.line.numbers_at(mpmath.mpf(values[name]))
@@ -164,6 +176,22 @@ class Quantity:
                 numbers[p.name] = mpmath.mpf(str(values.get(p.name, default)))
             value = evaluate(problem.closed, numbers, MPMATH)
             return float(value if problem.scale is None else problem.scale.degrees(value))
+
+    def _sweep(self, name, values):
+        """``at`` over an array of inputs: the stabilised kernel at these dimensions (made once per set)."""
+        settings = {p.name: str(values[p.name]) for p in self._problem.parameters if p.name in values}
+        key = tuple(sorted(settings.items()))
+        kernels = self.__dict__.setdefault("_kernels", {})
+        if key not in kernels:
+            from ..branches import closed_forms
+            from ..branches.stable import StableBranch, output_forms
+            from ..scene import compile_scene
+
+            compiled = compile_scene(with_values(self.mechanism.scene, settings or None), [self.text])
+            stable = StableBranch(compiled, next(b for b in closed_forms(compiled) if b.selected))
+            kernels[key] = stable.kernel(output_forms(stable, [self.text])[1])
+        given = np.asarray(values[name], dtype=float)
+        return kernels[key](np.radians(given) if self._problem.line.is_angle else given)[0]
 
     def extremum(self, range=None, largest=False):  # noqa: A002 (the seed's word)
         """Critical points, minimum and maximum; closed forms in the symbolic dimensions."""

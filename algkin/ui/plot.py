@@ -65,7 +65,10 @@ def quantity_figure(quantity, found, derivative=False, points=721):
     lo, hi = found.range
     degrees = np.linspace(lo, hi, points)
     expr = quantity.derivative if derivative else quantity.expr
-    values = np.broadcast_to(_sampler(quantity, expr)(np.radians(degrees)), degrees.shape)
+    if derivative or quantity.degrees:
+        values = np.broadcast_to(_sampler(quantity, expr)(np.radians(degrees)), degrees.shape)
+    else:  # the stabilised form (numba's loop where installed and it pays): no cancellation in the curve
+        values = quantity.at(**{quantity.input.name: degrees})
     best = found.minimum
     figure = new_figure()
     axes = figure.add_subplot()
@@ -148,7 +151,7 @@ def accuracy_figure(result):
     floor = _zero_floor([r["max_rel_error"] for r in rows])
     cases = list(dict.fromkeys(r["case"] for r in rows))
     colors = {case: f"C{k % 10}" for k, case in enumerate(cases)}
-    markers = {"closed-form": "s", "stabilised": "o", "numeric": "^", "reference": "D"}
+    markers = {"closed-form": "s", "stabilised": "o", "compiled": "P", "numeric": "^", "reference": "D"}
     for r in rows:
         exact = r["max_rel_error"] == 0
         axes.scatter([r["ns_per_sample"]], [floor if exact else r["max_rel_error"]],

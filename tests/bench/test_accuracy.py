@@ -26,7 +26,7 @@ def rows():
 def test_every_case_of_the_spec_is_measured(rows):
     cases = {r["case"] for r in rows}
     assert {"uniform", "toggle-1e-06", "toggle-1e-10", "toggle-1e-14", "far-1e7"} <= cases
-    assert {r["strategy"] for r in rows} == {"closed-form", "stabilised", "numeric", "reference"}
+    assert {r["strategy"] for r in rows} == {"closed-form", "stabilised", "compiled", "numeric", "reference"}
     assert all("unsolved" in r for r in rows if r["strategy"] == "numeric")
 
 
@@ -213,3 +213,21 @@ def test_numeric_row_counts_unsolved_samples_and_leaves_them_out():
     assert row["ns_per_sample"] == pytest.approx(1000) and "1 of 3 samples unsolved" in row["note"]
     nothing = _numeric_row("uniform", np.array([0.1]), np.array([[np.nan]]), 1e-6, truth[:, :1], np.ones(1))
     assert nothing["unsolved"] == 1 and nothing["max_rel_error"] == float("inf")
+
+
+def test_compiled_rows_have_the_stabilised_errors(rows):
+    by = {(r["strategy"], r["case"]): r for r in rows}
+    compiled = [case for strategy, case in by if strategy == "compiled"]
+    assert set(compiled) == {case for strategy, case in by if strategy == "stabilised"}
+    for case in compiled:
+        assert by["compiled", case]["max_rel_error"] <= by["stabilised", case]["max_rel_error"] + 4 * EPS, case
+
+
+def test_without_numba_the_compiled_row_says_it_is_numpy(monkeypatch):
+    import sys
+
+    monkeypatch.setitem(sys.modules, "numba", None)
+    rows = accuracy("chebyshev-lambda", samples=10, seed=2).rows
+    by = {(r["strategy"], r["case"]): r for r in rows}
+    assert "numba is not installed" in by["compiled", "uniform"]["note"]
+    assert by["compiled", "uniform"]["max_rel_error"] == by["stabilised", "uniform"]["max_rel_error"]

@@ -163,3 +163,11 @@ def test_a_scene_without_an_input_is_refused_in_one_line_and_writes_nothing(tmp_
                           capture_output=True, text=True)
     assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
     assert "has no input" in done.stderr and 'unit = "length"' in done.stderr and not out.exists()
+
+
+def test_the_quantity_curve_is_the_closed_form_at_each_plotted_angle():
+    quantity = load("fourbar").dist("O", "P")  # a distance of a coupler point: the stabilised form drawn
+    found = quantity.extremum()
+    x, y = quantity_figure(quantity, found, points=37).axes[0].lines[0].get_data()
+    expected = [quantity.at(theta=float(a)) for a in x]  # the closed form in mpmath at 30 digits, one by one
+    np.testing.assert_allclose(y, expected, rtol=1e-13)

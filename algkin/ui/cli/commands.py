@@ -313,6 +313,21 @@ def _cmd_verify(args):
     return text, _verdict(result.verification)
 
 
+def _cmd_export(args):
+    from ...runtime.files import check_output
+    from ..export import export
+
+    if args.out is not None:
+        check_output("--out", args.out)
+    code = export(_scene_of(args), args.outputs, args.to, args.param)
+    document = {"scene": args.scene, "to": args.to, "outputs": args.outputs, "out": args.out}
+    if args.out is None:
+        return _render(args, dict(document, code=code), lambda d: d["code"].rstrip("\n")), 0
+    text = _render(args, document, lambda d: f"wrote {d['to']} to {d['out']}")
+    return text, 0, [(pathlib.Path(args.out), code)]
+
+
 COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
             "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot,
-            "toggles": _cmd_toggles, "singular": _cmd_singular, "accuracy": _cmd_accuracy, "bench": _cmd_bench}
+            "toggles": _cmd_toggles, "singular": _cmd_singular, "accuracy": _cmd_accuracy, "bench": _cmd_bench,
+            "export": _cmd_export}

@@ -183,6 +183,17 @@ def build_parser():
     plot.add_argument("--range", help="with --of: lo:hi of the input, in its unit")
     plot.add_argument("--derivative", action="store_true", help="with --of: the slope, with its zero marked")
     plot.add_argument("--against", help="with --of: p=lo:hi, the minimum against the dimension p")
+    export = _command(commands, "export", "every branch's stabilised formulas as a self-contained function "
+                                          "(C, numpy, JavaScript) or its closed forms (LaTeX)")
+    _scene(export)
+    export.add_argument("--outputs", nargs="+", metavar="OUTPUT",
+                        help="outputs (names, points, dist(P, Q), P.x, angle(P, Q), angle(P, Q, R)); default: the scene's")
+    export.add_argument("--to", required=True, choices=("c", "numpy", "js", "latex"), help="the language written")
+    export.add_argument("--out", metavar="FILE", help="write to FILE instead of stdout")
+    export.add_argument("--param", action="append", default=[], metavar="NAME",
+                        help="with --to latex: keep this dimension symbolic (repeatable)")
+    _json(export, "the scene, the language, and the code (or the file it was written to)")
+    _budget_options(export, terms=False)
     bench = _command(commands, "bench", "elimination methods compared on a problem set, peers beside")
     bench.add_argument("--problems", nargs="+", help="problem names (default: the whole suite)")
     bench.add_argument("--methods", nargs="+", help="elimination methods (default: all)")
