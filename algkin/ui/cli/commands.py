@@ -6,6 +6,7 @@ import math
 import pathlib
 
 from ...errors import UsageError
+from .sweep import COMMANDS as SWEEP_COMMANDS
 from .reports import (_extremum_forms, _latex_lines, _render, _report_accuracy, _report_curve, _report_derive,
                       _report_extremum, _report_show, _report_toggles, _verification_line, terminal_safe)
 
@@ -299,4 +300,4 @@ def _cmd_verify(args):
 
 COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
             "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot,
-            "toggles": _cmd_toggles, "accuracy": _cmd_accuracy, "bench": _cmd_bench}
+            "toggles": _cmd_toggles, "accuracy": _cmd_accuracy, "bench": _cmd_bench, **SWEEP_COMMANDS}
