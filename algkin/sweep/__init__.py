@@ -118,7 +118,7 @@ def sweep(scene: Any, out: str | pathlib.Path, grid: Iterable[str] = (), random:
 
     planned = plan(scene, grid, random, seed, analyses, point, budget, chunk)
     _check_executor(executor, workers, scheduler)
-    open_directory(out, planned.manifest)
+    open_directory(out, planned.manifest, check_only=True)
     done = done_chunks(out)
     pending = [(k, [(d, planned.designs[d]) for d in range(k * chunk, min((k + 1) * chunk, len(planned.designs)))])
                for k in range(math.ceil(len(planned.designs) / chunk)) if k not in done]
@@ -130,7 +130,8 @@ def sweep(scene: Any, out: str | pathlib.Path, grid: Iterable[str] = (), random:
             for _ in rows:
                 progress.step()
 
-        run_chunks(planned.job, pending, written, executor, workers, scheduler)
+        run_chunks(planned.job, pending, written, executor, workers, scheduler,
+                   ready=lambda: open_directory(out, planned.manifest))
     dataset = merge(out, planned.columns)
     statuses = read_dataset(out).column("status").to_pylist()
     counts = {s: statuses.count(s) for s in ("ok", "does-not-assemble", "failed") if s in statuses}

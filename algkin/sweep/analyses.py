@@ -56,7 +56,8 @@ def _curve(design: Design) -> dict[str, Any]:
 
     found = curve(design.scene, design.point)
     if found.verification.status == "failed":
-        raise ComputationError(f"the curve of {design.point} failed its check: {found.verification.to_json()}")
+        failures = "; ".join(found.verification.to_json().get("failures") or ["no reason given"])
+        raise ComputationError(f"the curve of {design.point} failed its check: {failures}")
     return {"curve_point": design.point, "curve_degree": found.degree, "curve_circularity": found.circularity,
             "curve_irreducible": bool(found.irreducible), "curve_polynomial": str(found.elimination.polynomial),
             "curve_verification": found.verification.status}

@@ -25,13 +25,17 @@ CONNECT_SECONDS = 10  # how long to wait for the scheduler at --scheduler ADDRES
 
 
 def run_chunks(job: Job, chunks: Sequence[tuple[int, list]], done: Callable[[int, list], None],
-               executor: str = "dask", workers: int | None = None, scheduler: str | None = None) -> None:
-    """Evaluate every ``(index, designs)`` chunk and hand each one's rows to ``done(index, rows)`` as it ends."""
+               executor: str = "dask", workers: int | None = None, scheduler: str | None = None,
+               ready: Callable[[], None] = lambda: None) -> None:
+    """Evaluate every ``(index, designs)`` chunk and hand each one's rows to ``done(index, rows)`` as it ends;
+    ``ready()`` first, once the executor is (a scheduler that cannot be reached: nothing written)."""
     if executor == "serial":
+        ready()
         for index, designs in chunks:
             done(*evaluate_chunk(job, index, designs))
         return
     with _client(workers, scheduler) as (client, as_completed):
+        ready()
         futures = [client.submit(evaluate_chunk, job, index, designs, pure=False) for index, designs in chunks]
         for future in as_completed(futures):
             done(*future.result())
