@@ -78,6 +78,7 @@ def plan(scene: Any, grid: Iterable[str] = (), random: int | None = None, seed: 
     scene = load_scene(scene) if isinstance(scene, (str, pathlib.Path)) else scene
     chosen = tuple(a.name for a in analyses_named(analyses))
     grid = list(grid)
+    space: dict[str, Any]
     if random is None:
         axes = parse_grid(grid)
         designs, space = grid_designs(axes), {"grid": {n: [_text(v) for v in vs] for n, vs in axes.items()}}

@@ -121,7 +121,7 @@ def _transmission(design: Design) -> dict[str, Any]:
     output = transmission_output(design)
     found = extremum(design.scene, output)
     exact = found.exact or {}
-    row = {"transmission_of": output}
+    row: dict[str, Any] = {"transmission_of": output}
     for key, point in (("min", found.minimum), ("max", found.maximum)):
         degrees = exact.get("minimum" if key == "min" else "maximum", (None, None))[0]
         row.update({f"transmission_{key}_deg": float(point.value), f"transmission_{key}_at_deg": float(point.input_deg),

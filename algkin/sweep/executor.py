@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import contextlib
 import logging
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
 from ..errors import UsageError
@@ -41,7 +41,7 @@ def run_chunks(job: Job, chunks: Sequence[tuple[int, list]], done: Callable[[int
             done(*future.result())
 
 
-def dask_modules():
+def dask_modules() -> tuple[Any, Any]:
     try:
         import dask
         import distributed
@@ -52,7 +52,7 @@ def dask_modules():
 
 
 @contextlib.contextmanager
-def _client(workers: int | None, scheduler: str | None) -> Any:
+def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, Any]]:
     """A Dask client on a LocalCluster of ``workers`` processes, or on the scheduler at ``scheduler``;
     everything it started closed when the block ends."""
     dask, distributed = dask_modules()
@@ -74,7 +74,7 @@ def _client(workers: int | None, scheduler: str | None) -> Any:
 
 
 @contextlib.contextmanager
-def _quiet_logs():
+def _quiet_logs() -> Iterator[None]:
     """Dask's loggers quiet while the run lasts (its closing chatter is no line of ours on stderr)."""
     loggers = [logging.getLogger(n) for n in ("distributed", "dask", "tornado", "asyncio")]
     levels = [g.level for g in loggers]

@@ -29,7 +29,7 @@ PARTS = "parts"
 _PART = re.compile(r"part-(\d{6})\.parquet")
 
 
-def _pyarrow():
+def _pyarrow() -> Any:
     try:
         import pyarrow
         import pyarrow.parquet  # noqa: F401 - the submodule, loaded for the callers
