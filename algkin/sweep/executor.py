@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import contextlib
 import logging
+import warnings
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
@@ -59,10 +60,14 @@ def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, A
     # Workers that may fork (a per-design budget runs in a forked child): not daemonic.
     settings = {"distributed.worker.daemon": False, "distributed.admin.tick.limit": "1h",
                 "logging.distributed": "critical"}
-    with dask.config.set(settings), _quiet_logs(), contextlib.ExitStack() as stack:
+    with dask.config.set(settings), _quiet_logs(), warnings.catch_warnings(), contextlib.ExitStack() as stack:
+        warnings.simplefilter("ignore")  # dask's warnings are no line of ours on stderr either
         if scheduler is None:
+            # no dashboard, and the scheduler's HTTP server (health checks) on a free local port:
+            # its default, 8787, is taken by any other cluster on the machine
             cluster = stack.enter_context(distributed.LocalCluster(
-                n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
+                n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1", dashboard_address=None,
+                scheduler_kwargs={"dashboard": False, "dashboard_address": "127.0.0.1:0"},
                 silence_logs=logging.CRITICAL))
             client = stack.enter_context(distributed.Client(cluster))
         else:

@@ -66,3 +66,16 @@ def test_ctrl_c_stops_the_cluster_and_leaves_no_process(tmp_path):
     for name in names:  # every part there is whole
         assert pq.read_table(tmp_path / "parts" / name).num_rows == 1
     assert not (tmp_path / "designs.parquet").exists()
+
+
+def test_an_existing_cluster_by_its_address_is_used_and_left_running(tmp_path):
+    from distributed import Client, LocalCluster
+
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=None,
+                      scheduler_kwargs={"dashboard": False, "dashboard_address": "127.0.0.1:0"}) as cluster:
+        code, out, err, _ = finish(start(algkin("sweep", "fourbar", "--grid", "a=1/2:1:2", "--analyses", "grashof",
+                                                "--out", tmp_path, "--scheduler", cluster.scheduler_address)), 120)
+        assert (code, err) == (0, ""), err
+        assert out == f"2 designs (2 computed now): ok 2\nwrote {tmp_path / 'designs.parquet'}\n"
+        with Client(cluster) as client:  # still there for its owner
+            assert client.submit(sum, [1, 2]).result() == 3
