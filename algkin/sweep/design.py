@@ -16,6 +16,7 @@ input range: ``algkin.branches.check_assembly``, the same test as ``derive``'s) 
 
 from __future__ import annotations
 
+import contextvars
 import time
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -23,6 +24,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..errors import BudgetExceeded, SceneError
+from ..runtime import progress
 from ..scene import load_scene
 from .analyses import ANALYSES, Design
 
@@ -55,8 +57,15 @@ def columns(job: Job, names: Sequence[str]) -> dict[str, str]:
 
 
 def evaluate_chunk(job: Job, index: int, designs: Sequence[tuple[int, Mapping[str, Fraction]]]) -> tuple[int, list]:
-    """``(index, rows)`` of the designs ``(id, values)`` of one chunk (what a worker runs)."""
-    return index, [evaluate_design(job, design, values) for design, values in designs]
+    """``(index, rows)`` of the designs ``(id, values)`` of one chunk (what a worker runs).
+
+    The analyses' own progress (stages, counts of samples) is shown nowhere: in this process it
+    would replace the sweep's count of designs."""
+    def quietly() -> tuple[int, list]:
+        progress.hand_over(None)
+        return index, [evaluate_design(job, design, values) for design, values in designs]
+
+    return contextvars.copy_context().run(quietly)
 
 
 def evaluate_design(job: Job, design: int, values: Mapping[str, Fraction]) -> dict[str, Any]:

@@ -58,3 +58,24 @@ def test_a_sweep_and_its_atlas(tmp_path, capsys):
 def test_the_atlas_of_a_directory_without_a_sweep(tmp_path, capsys):
     assert main(["atlas", str(tmp_path), "--out", str(tmp_path / "atlas.html")]) == 2
     assert "holds no sweep" in capsys.readouterr().err and not (tmp_path / "atlas.html").exists()
+
+
+def test_a_terminal_sees_the_count_of_designs(tmp_path):
+    from ...processes import algkin, run_on_terminal
+
+    code, out, err, _ = run_on_terminal(algkin(*GOOD, "--grid", "d=4:5:2", "--out", tmp_path / "out", "--chunk", "1"),
+                                        120)
+    assert code == 0 and out.startswith("4 designs (4 computed now)")
+    # the sweep's own count, not replaced by the analyses' stages
+    assert "sweeping 4 designs, 0 done before: 0/4 designs" in err and err.endswith("\r")
+
+
+def test_a_design_past_its_budget_fails_saying_so(tmp_path, capsys):
+    argv = ["sweep", "fourbar", "--grid", "a=1:2:2", "--analyses", "curve", "--executor", "serial",
+            "--budget", "0.001", "--out", str(tmp_path / "out"), "--json"]
+    assert main(argv) == 0
+    assert json.loads(capsys.readouterr().out)["status"] == {"failed": 2}
+    from algkin.sweep import read_dataset
+
+    reasons = read_dataset(tmp_path / "out").column("reason").to_pylist()
+    assert all(r.startswith("budget: max_seconds=0.001: stopped after") for r in reasons), reasons
