@@ -8,6 +8,12 @@ asserted equal apart from the timing columns (byte for byte once those are dropp
 wall times and their ratio are printed. The LocalCluster's start-up (worker processes,
 algkin imported in each) is inside the timed run, as a user would pay it.
 
+Beside the wall times: the designs' own seconds summed (the ``seconds_total`` column) over
+the wall time, how many designs were being computed at once on average (1 at most serially,
+2 at most on two workers, less by the cluster's start-up and idle ends), and the machine's
+load average before and after: on a machine shared with other work the two workers get less
+than two cores (Linux shares the CPU between sessions first), and the speed-up with them.
+
 Run: ``python benchmarks/bench_sweep.py [--count-per-axis N] [--workers W] [--analyses A,B]``.
 """
 
@@ -35,6 +41,11 @@ def timed(folder, grid, analyses, **executor):
     return time.perf_counter() - begun, done
 
 
+def busy(folder, wall):
+    """The designs' own seconds summed, over the wall time: designs computed at once, on average."""
+    return sum(read_dataset(folder).column("seconds_total").to_pylist()) / wall
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--count-per-axis", type=int, default=10, help="values per axis (designs: its cube)")
@@ -44,6 +55,7 @@ def main():
     n = args.count_per_axis
     grid = [f"a=1/2:2:{n}", f"l=2:5:{n}", f"m=2:5:{n}"]
     analyses = args.analyses.split(",")
+    load = os.getloadavg()[0]
     with tempfile.TemporaryDirectory() as scratch:
         serial_dir, dask_dir = os.path.join(scratch, "serial"), os.path.join(scratch, "dask")
         serial_s, serial = timed(serial_dir, grid, analyses, executor="serial")
@@ -51,12 +63,15 @@ def main():
         assert serial.counts == distributed.counts, (serial.counts, distributed.counts)
         assert canonical(serial_dir) == canonical(dask_dir), "the two datasets differ beyond their timings"
         assert serial.designs == n ** 3 and serial.computed == distributed.computed == n ** 3
+        at_once = busy(serial_dir, serial_s), busy(dask_dir, dask_s)
     print(f"sweep of {n ** 3} four-bars (fourbar: {', '.join(grid)}; analyses {', '.join(analyses)}), "
-          f"{os.cpu_count()} cores")
+          f"{os.cpu_count()} cores, load average {load:.1f} before, {os.getloadavg()[0]:.1f} after")
     print(f"designs by status: {serial.counts}")
-    print(f"serial                      {serial_s:8.1f} s  ({1000 * serial_s / n ** 3:.0f} ms/design)")
-    print(f"dask LocalCluster, {args.workers} workers {dask_s:8.1f} s  (start-up included)")
-    print(f"speed-up                    {serial_s / dask_s:8.2f}x   same dataset apart from timings: yes")
+    print(f"serial                        {serial_s:8.1f} s  ({1000 * serial_s / n ** 3:.0f} ms/design, "
+          f"{at_once[0]:.2f} designs at once)")
+    print(f"dask LocalCluster, {args.workers} workers   {dask_s:8.1f} s  (start-up included, "
+          f"{at_once[1]:.2f} designs at once)")
+    print(f"speed-up                      {serial_s / dask_s:8.2f}x   same dataset apart from timings: yes")
 
 
 if __name__ == "__main__":

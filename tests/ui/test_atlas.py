@@ -111,3 +111,24 @@ def test_thumbnails_are_the_coupler_curves_by_hand(atlas):
                 for x, y in (c["P"] for c in tracks[side] if c is not None)]
         assert len(drawn) == len(hand) == samples  # a crank-rocker: every angle assembles
         assert np.allclose(drawn, hand, atol=0.051)  # drawn to 0.1 of the 100-wide box
+
+
+def test_the_singular_points_filter_appears_with_its_column(atlas, tmp_path):
+    """A sweep with a ``singular_count`` column (as the singular analysis will give) gets the filter."""
+    import shutil
+
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    shutil.copytree(atlas / "sweep", tmp_path / "sweep")
+    table = read_dataset(tmp_path / "sweep")
+    counts = [k % 4 if status != "does-not-assemble" else None
+              for k, status in enumerate(table.column("status").to_pylist())]
+    pq.write_table(table.append_column("singular_count", pa.array(counts, pa.int64())),
+                   tmp_path / "sweep" / "designs.parquet")
+    done = subprocess.run([sys.executable, "-m", "algkin", "atlas", str(tmp_path / "sweep"), "--out",
+                           str(tmp_path / "atlas.html")], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    state, cards = load(tmp_path / "atlas.html", "?singular=2")
+    assert [not c["hidden"] for c in cards] == [n == 2 for n in counts] and state["shown"] == str(counts.count(2))
+    assert not atlas_data(atlas / "sweep")["filters"]["singular"]
