@@ -91,17 +91,18 @@ def evaluate_design(job: Job, design: int, values: Mapping[str, Fraction]) -> di
 
 def _analyse(job: Job, values: Mapping[str, Fraction]) -> dict[str, Any]:
     """The status, reason, analyses' columns and timings of one design (no design id, no values)."""
-    found: dict[str, Any] = {"status": "ok"}
     begun = time.perf_counter()
     try:
         design = _assembled(job, values)
+        found: dict[str, Any] = {"status": "ok"}
     except SceneError as err:
         kind = "does-not-assemble" if "never assemble" in str(err) else "failed"
-        return {"status": kind, "reason": _one_line(str(err))}
+        found = {"status": kind, "reason": _one_line(str(err))}
     except Exception as err:  # noqa: BLE001 - a bad design is a row that says why, not a stopped sweep
-        return {"status": "failed", "reason": _one_line(f"scene: {err}")}
-    finally:
-        found[f"{TIMING_PREFIX}assembly"] = time.perf_counter() - begun
+        found = {"status": "failed", "reason": _one_line(f"scene: {err}")}
+    found[f"{TIMING_PREFIX}assembly"] = time.perf_counter() - begun
+    if found["status"] != "ok":
+        return found
     for name in job.analyses:
         begun = time.perf_counter()
         try:

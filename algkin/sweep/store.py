@@ -73,6 +73,8 @@ def open_directory(folder: str | pathlib.Path, manifest: Mapping[str, Any], chec
     if check_only:
         return
     (folder / PARTS).mkdir(parents=True, exist_ok=True)
+    for stale in (folder / PARTS).glob(".part-*.tmp.parquet"):  # a run killed while writing a part
+        stale.unlink(missing_ok=True)
     if found is None:
         write_atomic(folder / MANIFEST, json.dumps(manifest, indent=2, sort_keys=True) + "\n")
 

@@ -19,6 +19,7 @@ from __future__ import annotations
 import html
 import math
 import pathlib
+from fractions import Fraction
 from importlib import resources
 from typing import Any
 
@@ -80,20 +81,13 @@ class _Tracer:
         from ..scene.settings import with_values
 
         motion = self.shared or Motion(with_values(self.scene, values))
-        numbers = {n: float(sympy_number(v)) for n, v in values.items() if n in motion.params}
+        numbers = {n: float(Fraction(v)) for n, v in values.items() if n in motion.params}
         found = []
-        for k, branch in enumerate(motion.branches):
+        for branch in motion.branches:
             _, points = motion.sweep(numbers, branch=branch.label, samples=self.samples)
             xs, ys = points[self.point]
             found.append((bool(branch.selected), list(zip(map(float, xs), map(float, ys)))))
         return found
-
-
-def sympy_number(text: str) -> Any:
-    """An exact value written by the sweep (``3/2``) as a sympy number."""
-    import sympy
-
-    return sympy.Rational(text)
 
 
 def atlas_data(folder: str | pathlib.Path, samples: int = 181) -> dict[str, Any]:

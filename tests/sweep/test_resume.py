@@ -76,10 +76,13 @@ def test_interrupted_while_writing_a_part(tmp_path, uninterrupted, monkeypatch):
         sweep("fourbar", tmp_path, grid=GRID, analyses=ANALYSES, executor="serial", chunk=1)
     assert sorted(store.done_chunks(tmp_path)) == written and not (tmp_path / "designs.parquet").exists()
     monkeypatch.undo()
+    # what a SIGKILL in the middle of a write leaves: the part's hidden temporary file, half written
+    (tmp_path / "parts" / ".part-000002.x1y2.tmp.parquet").write_bytes(b"PAR1 half")
     done = sweep("fourbar", tmp_path, grid=GRID, analyses=ANALYSES, executor="serial", chunk=1)
     assert done.computed == 6 and done.designs == 8
     assert canonical(tmp_path) == canonical(uninterrupted)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["designs.parquet", "manifest.json", "parts"]
+    assert sorted(p.name for p in (tmp_path / "parts").iterdir()) == [f"part-{k:06d}.parquet" for k in range(8)]
 
 
 def test_a_finished_sweep_run_again_computes_nothing(tmp_path, uninterrupted):
