@@ -9,7 +9,7 @@ STAMP := $(VENV)/.installed
 $(STAMP): pyproject.toml Makefile
 	$(PY) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e '.[test,plot,notebook,fast]'
+	$(BIN)/python -m pip install -q -e '.[test,plot,notebook,fast,sweep]'
 	touch $(STAMP)
 
 DOCS_STAMP := $(VENV)/.docs-installed
@@ -41,7 +41,9 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_reference.py && \
 	$(BIN)/python benchmarks/bench_ideas.py && \
 	$(BIN)/python benchmarks/bench_widget.py && \
-	$(BIN)/python benchmarks/bench_floor.py && exit $$status
+	$(BIN)/python benchmarks/bench_floor.py && \
+	$(BIN)/python benchmarks/bench_singular.py && \
+	$(BIN)/python benchmarks/bench_sweep.py && exit $$status
 
 # Optional peer engines for `algkin bench` only; algkin itself needs none of them.
 peers: $(STAMP)

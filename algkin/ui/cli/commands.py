@@ -6,6 +6,7 @@ import math
 import pathlib
 
 from ...errors import UsageError
+from .sweep import COMMANDS as SWEEP_COMMANDS
 from .reports import (_extremum_forms, _latex_lines, _render, _report_accuracy, _report_curve, _report_derive,
                       _report_extremum, _report_show, _report_singular, _report_toggles, _verification_line,
                       terminal_safe)
@@ -330,4 +331,4 @@ def _cmd_export(args):
 COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
             "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot,
             "toggles": _cmd_toggles, "singular": _cmd_singular, "accuracy": _cmd_accuracy, "bench": _cmd_bench,
-            "export": _cmd_export}
+            "export": _cmd_export, **SWEEP_COMMANDS}

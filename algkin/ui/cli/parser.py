@@ -204,6 +204,9 @@ def build_parser():
                        help="rows under 2 s are measured this many times in turn, each keeping its best")
     bench.add_argument("--out", help="directory for bench.json, bench.csv and bench.png")
     _json(bench)
+    from .sweep import add_commands
+
+    add_commands(commands, _command, _json)
     for command in commands.choices.values():
         # after the command too; SUPPRESS: not given there, it leaves the value given before the command
         _quiet(command, default=argparse.SUPPRESS)

@@ -1,0 +1,156 @@
+"""Sweeps: named analyses over a grid (or seeded random draws) of a scene's dimensions, to Parquet.
+
+One row per design (``algkin.sweep.design``), computed in chunks, in this process or on Dask
+(``executor``), each chunk written as a part file when done (``store``): a run stopped
+anywhere resumes where it stopped, and the merged ``designs.parquet`` is the same, its
+timing columns aside, whatever the executor, the number of workers or the interruptions.
+
+>>> import tempfile
+>>> folder = tempfile.mkdtemp()
+>>> done = sweep("fourbar", folder, grid=["a=1/2:1:2", "d=4:10:2"], analyses=["grashof"], executor="serial")
+>>> done.counts, done.computed
+({'ok': 2, 'does-not-assemble': 2}, 4)
+>>> table = read_dataset(folder)
+>>> table.column("grashof_class").to_pylist()
+['crank-rocker', None, 'crank-rocker', None]
+>>> sweep("fourbar", folder, grid=["a=1/2:1:2", "d=4:10:2"], analyses=["grashof"], executor="serial").computed
+0
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+import pathlib
+import sys
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Any
+
+from ..errors import UsageError
+from .analyses import ANALYSES, Analysis, analyses_named, register
+from .design import TIMING_PREFIX, Job, columns
+from .executor import EXECUTORS, dask_modules, run_chunks
+from .grid import grid_designs, parse_grid, parse_ranges, random_designs
+from .store import DATASET, MANIFEST, done_chunks, merge, open_directory, read_dataset, read_manifest, \
+    without_timings, write_part
+
+__all__ = ["sweep", "Sweep", "plan", "ANALYSES", "Analysis", "register", "read_dataset", "read_manifest",
+           "without_timings", "TIMING_PREFIX", "DATASET", "MANIFEST", "EXECUTORS", "CHUNK"]
+
+CHUNK = 8  # designs per part file (and per Dask task), by default
+
+
+@dataclass
+class Sweep:
+    """A sweep run: its directory and dataset, how many designs there are and were computed now, by status."""
+
+    out: pathlib.Path
+    dataset: pathlib.Path
+    designs: int
+    computed: int  # in this run (the others were found done)
+    counts: dict[str, int] = field(default_factory=dict)
+
+    def to_json(self) -> dict[str, Any]:
+        return {"out": str(self.out), "dataset": str(self.dataset), "designs": self.designs,
+                "computed": self.computed, "status": self.counts}
+
+
+@dataclass
+class Plan:
+    """What a sweep will compute, checked before anything is written."""
+
+    job: Job
+    designs: list[dict[str, Fraction]]
+    manifest: dict[str, Any]
+    columns: dict[str, str]
+    chunk: int
+
+
+def plan(scene: Any, grid: Iterable[str] = (), random: int | None = None, seed: int = 0,
+         analyses: Iterable[str] = ("curve",), point: str | None = None, budget: float | None = None,
+         chunk: int = CHUNK) -> Plan:
+    """The sweep's job, designs and manifest, every argument checked (UsageError, SceneError)."""
+    from ..scene import load_scene
+    from ..scene.dump import dump_scene
+
+    scene = load_scene(scene) if isinstance(scene, (str, pathlib.Path)) else scene
+    chosen = tuple(a.name for a in analyses_named(analyses))
+    grid = list(grid)
+    space: dict[str, Any]
+    if random is None:
+        axes = parse_grid(grid)
+        designs, space = grid_designs(axes), {"grid": {n: [_text(v) for v in vs] for n, vs in axes.items()}}
+    else:
+        ranges = parse_ranges(grid)
+        designs = random_designs(ranges, random, seed)
+        space = {"random": {"count": random, "seed": seed,
+                            "ranges": {n: [_text(lo), _text(hi)] for n, (lo, hi) in ranges.items()}}}
+    for name in designs[0]:
+        if name not in scene.parameters:
+            raise UsageError("--grid", name, f"not a parameter of {scene.name} "
+                                             f"(parameters: {', '.join(scene.parameters) or 'none'})")
+    point = point or list(scene.points)[-1]
+    if point not in scene.points:
+        raise UsageError("--point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
+    if budget is not None and not 0 < budget < math.inf:
+        raise UsageError("--budget", budget, "must be a positive number of seconds")
+    if not isinstance(chunk, int) or chunk < 1:
+        raise UsageError("--chunk", chunk, "must be a whole number of designs from 1")
+    toml = dump_scene(scene)
+    # the package's version from the facade, loaded before any of its subpackages (importing it
+    # here would be an import of the facade's lazy names, the layers above, for the linter)
+    version = sys.modules["algkin"].__version__
+    manifest = {"algkin": version, "scene": {"name": scene.name, "toml": toml,
+                                                 "sha256": hashlib.sha256(toml.encode()).hexdigest()},
+                "designs": space, "analyses": list(chosen), "point": point, "budget": budget, "chunk": chunk,
+                "count": len(designs)}
+    job = Job(scene, chosen, point, budget)
+    return Plan(job, designs, manifest, columns(job, list(designs[0])), chunk)
+
+
+def sweep(scene: Any, out: str | pathlib.Path, grid: Iterable[str] = (), random: int | None = None, seed: int = 0,
+          analyses: Iterable[str] = ("curve",), point: str | None = None, executor: str = "dask",
+          workers: int | None = None, scheduler: str | None = None, budget: float | None = None,
+          chunk: int = CHUNK) -> Sweep:
+    """Run (or resume) the sweep into the directory ``out``; its merged dataset is ``out/designs.parquet``."""
+    from ..runtime import progress
+
+    planned = plan(scene, grid, random, seed, analyses, point, budget, chunk)
+    _check_executor(executor, workers, scheduler)
+    open_directory(out, planned.manifest, check_only=True)
+    done = done_chunks(out)
+    pending = [(k, [(d, planned.designs[d]) for d in range(k * chunk, min((k + 1) * chunk, len(planned.designs)))])
+               for k in range(math.ceil(len(planned.designs) / chunk)) if k not in done]
+    computed = sum(len(designs) for _, designs in pending)
+    progress.stage(f"sweeping {len(planned.designs)} designs, {len(planned.designs) - computed} done before")
+    with progress.counting(computed, "designs"):
+        def written(index: int, rows: list) -> None:
+            write_part(out, index, rows, planned.columns)
+            for _ in rows:
+                progress.step()
+
+        run_chunks(planned.job, pending, written, executor, workers, scheduler,
+                   ready=lambda: open_directory(out, planned.manifest))
+    dataset = merge(out, planned.columns)
+    statuses = read_dataset(out).column("status").to_pylist()
+    counts = {s: statuses.count(s) for s in ("ok", "does-not-assemble", "failed") if s in statuses}
+    return Sweep(pathlib.Path(out), dataset, len(planned.designs), computed, counts)
+
+
+def _check_executor(executor: str, workers: int | None, scheduler: str | None) -> None:
+    if executor not in EXECUTORS:
+        raise UsageError("--executor", executor, f"unknown; valid: {', '.join(EXECUTORS)}")
+    if workers is not None and (executor != "dask" or scheduler is not None):
+        raise UsageError("--workers", workers, "sizes the LocalCluster: goes with --executor dask, not --scheduler")
+    if scheduler is not None and executor != "dask":
+        raise UsageError("--scheduler", scheduler, "goes with --executor dask")
+    if workers is not None and not 1 <= workers <= 256:
+        raise UsageError("--workers", workers, "expected a number of worker processes from 1 to 256")
+    if executor == "dask":
+        dask_modules()  # missing, it is a usage error before anything is written
+
+
+def _text(value: Fraction) -> str:
+    return str(value.numerator) if value.denominator == 1 else f"{value.numerator}/{value.denominator}"

@@ -1,0 +1,180 @@
+"""The analyses a sweep runs on each design, by name: each one's columns and how it fills them.
+
+An ``Analysis`` says its columns (name -> Arrow type, in order) and computes them from a
+``Design`` (the scene with the design's exact dimensions, compiled, known to assemble). Exact
+results are strings (sympy's, or JSON of exact pieces), figures are floats. An analysis that
+cannot answer raises; the sweep records the design as failed with that one line.
+
+``register`` adds one: the singular points of the coupler curve join with one entry
+(``singular_count``, an int64 column, is what the atlas filters on).
+
+>>> list(ANALYSES)
+['curve', 'grashof', 'toggles', 'limits', 'transmission']
+>>> ANALYSES["grashof"].columns
+{'grashof_class': 'string', 'grashof_margin': 'string', 'grashof_margin_float': 'float64'}
+>>> analyses_named(["grashof", "wobble"])
+Traceback (most recent call last):
+...
+algkin.errors.UsageError: --analyses='wobble': unknown; valid: curve, grashof, toggles, limits, transmission
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from typing import Any
+
+from ..errors import ComputationError, UsageError
+
+__all__ = ["Analysis", "Design", "ANALYSES", "register", "analyses_named", "GRASHOF_CLASSES"]
+
+# algkin.analyses.toggles.grashof's words -> the sweep's class names (the input link's view)
+GRASHOF_CLASSES = {"crank-rocker": "crank-rocker", "double crank": "double-crank", "double rocker": "double-rocker",
+                   "rocker-crank": "rocker-crank", "non-grashof (triple rocker)": "triple-rocker",
+                   "change point": "change-point"}
+
+
+@dataclass
+class Design:
+    """One design: its scene (exact dimensions), compiled with its implicit points, and the traced point."""
+
+    scene: Any
+    compiled: Any
+    point: str
+
+
+@dataclass(frozen=True)
+class Analysis:
+    name: str
+    columns: dict[str, str]  # column -> Arrow type: string, float64, int64, bool, list<float64>
+    run: Callable[[Design], dict[str, Any]]
+
+
+def _curve(design: Design) -> dict[str, Any]:
+    from ..derivation.pipeline import curve
+
+    found = curve(design.scene, design.point)
+    if found.verification.status == "failed":
+        failures = "; ".join(found.verification.to_json().get("failures") or ["no reason given"])
+        raise ComputationError(f"the curve of {design.point} failed its check: {failures}")
+    return {"curve_point": design.point, "curve_degree": found.degree, "curve_circularity": found.circularity,
+            "curve_irreducible": bool(found.irreducible), "curve_polynomial": str(found.elimination.polynomial),
+            "curve_verification": found.verification.status}
+
+
+def _grashof(design: Design) -> dict[str, Any]:
+    import sympy
+
+    from ..analyses.toggles import grashof
+
+    found = grashof(design.compiled)
+    if found is None:
+        raise ComputationError("not a four-bar: no dyad on a crank tip and a ground pivot")
+    margin = sympy.sympify(found["margin"])
+    return {"grashof_class": GRASHOF_CLASSES[found["class"]], "grashof_margin": found["margin"],
+            "grashof_margin_float": float(margin)}
+
+
+def _toggles(design: Design) -> dict[str, Any]:
+    from ..analyses.toggles import toggles
+
+    found = toggles(design.scene, artefacts=False).toggles
+    return {"toggles_count": len(found), "toggles_deg": [t.input_deg for t in found],
+            "toggles_exact": json.dumps([{k: v for k, v in t.to_json().items() if k != "certified"} for t in found])}
+
+
+def _limits(design: Design) -> dict[str, Any]:
+    from ..analyses.limits import limits
+
+    found = limits(design.scene)
+    chosen = [g for g in found.limits if g.selected]
+    ratio = found.time_ratio
+    stroke = ratio.stroke if ratio is not None else {}
+    return {"limits_count": len(chosen), "limits_deg": [g.input_deg for g in chosen],
+            "limits_exact": json.dumps([{"point": g.point, "kind": g.kind, "exact_deg": str(g.exact_deg),
+                                         "enclosure_deg": g.enclosure.str(20)} for g in chosen]),
+            "limits_time_ratio": None if ratio is None else ratio.ratio,
+            "limits_time_ratio_exact": None if ratio is None else str(ratio.exact),
+            "limits_time_ratio_reason": found.time_ratio_reason,
+            "limits_stroke": stroke.get("angle_deg", stroke.get("length")), "limits_stroke_exact": stroke.get("exact")}
+
+
+def transmission_output(design: Design) -> str:
+    """``angle(A, B, D)``: at the coupler-rocker joint B, between the crank tip A and the ground pivot D."""
+    from ..scene.constructions import Crank, Dyad, Fixed
+
+    points = design.scene.points
+    for name, point in points.items():
+        if isinstance(point, Dyad):
+            tip, pivot = point.bases
+            if isinstance(points[pivot], Crank) and isinstance(points[tip], Fixed):
+                tip, pivot = pivot, tip
+            if isinstance(points[tip], Crank) and isinstance(points[pivot], Fixed):
+                return f"angle({tip}, {name}, {pivot})"
+    raise ComputationError("no transmission angle: no dyad on a crank tip and a ground pivot")
+
+
+def _transmission(design: Design) -> dict[str, Any]:
+    from ..analyses.extremum import extremum
+
+    output = transmission_output(design)
+    found = extremum(design.scene, output)
+    exact = found.exact or {}
+    row: dict[str, Any] = {"transmission_of": output}
+    for key, point in (("min", found.minimum), ("max", found.maximum)):
+        degrees = exact.get("minimum" if key == "min" else "maximum", (None, None))[0]
+        row.update({f"transmission_{key}_deg": float(point.value), f"transmission_{key}_at_deg": float(point.input_deg),
+                    f"transmission_{key}_exact": None if degrees is None else str(degrees)})
+    return row
+
+
+ANALYSES: dict[str, Analysis] = {}
+
+
+def register(analysis: Analysis) -> Analysis:
+    """Add ``analysis`` to the table (a new name, its columns prefixed by it), so that ``--analyses`` takes it.
+
+    >>> register(Analysis("limits", {}, len))
+    Traceback (most recent call last):
+    ...
+    algkin.errors.UsageError: analysis='limits': is registered already
+    """
+    if analysis.name in ANALYSES:
+        raise UsageError("analysis", analysis.name, "is registered already")
+    # each column named after its analysis: no clash with another's, the design's or the timings
+    strays = [c for c in analysis.columns if not c.startswith(f"{analysis.name}_")]
+    if strays:
+        raise UsageError("analysis", analysis.name, f"columns must start with {analysis.name}_: {', '.join(strays)}")
+    ANALYSES[analysis.name] = analysis
+    return analysis
+
+
+register(Analysis("curve", {"curve_point": "string", "curve_degree": "int64", "curve_circularity": "int64",
+                            "curve_irreducible": "bool", "curve_polynomial": "string",
+                            "curve_verification": "string"}, _curve))
+register(Analysis("grashof", {"grashof_class": "string", "grashof_margin": "string",
+                              "grashof_margin_float": "float64"}, _grashof))
+register(Analysis("toggles", {"toggles_count": "int64", "toggles_deg": "list<float64>",
+                              "toggles_exact": "string"}, _toggles))
+register(Analysis("limits", {"limits_count": "int64", "limits_deg": "list<float64>", "limits_exact": "string",
+                             "limits_time_ratio": "float64", "limits_time_ratio_exact": "string",
+                             "limits_time_ratio_reason": "string", "limits_stroke": "float64",
+                             "limits_stroke_exact": "string"}, _limits))
+register(Analysis("transmission", {"transmission_of": "string",
+                                   **{f"transmission_{k}_{f}": t for k in ("min", "max")
+                                      for f, t in (("deg", "float64"), ("at_deg", "float64"), ("exact", "string"))}},
+                  _transmission))
+
+
+def analyses_named(names: Iterable[str]) -> list[Analysis]:
+    """The analyses called ``names`` (comma-separated on the command line), in that order, each once."""
+    names = [n.strip() for n in names]
+    for name in names:
+        if name not in ANALYSES:
+            raise UsageError("--analyses", name, f"unknown; valid: {', '.join(ANALYSES)}")
+        if names.count(name) > 1:
+            raise UsageError("--analyses", name, "given twice")
+    if not names:
+        raise UsageError("--analyses", "", f"name at least one of {', '.join(ANALYSES)}")
+    return [ANALYSES[n] for n in names]

@@ -1,0 +1,137 @@
+"""One design of a sweep evaluated: its row (status, the analyses' columns, timings).
+
+A row never depends on where or when it was computed, but for its ``seconds_`` columns: the
+status is ``ok``, ``does-not-assemble`` (the scene's branch cannot assemble anywhere in the
+input range: ``algkin.branches.check_assembly``, the same test as ``derive``'s) or
+``failed`` with the one-line reason (the first analysis that failed, named).
+
+>>> from fractions import Fraction
+>>> job = Job(load_scene("fourbar"), ("grashof",), "P")
+>>> row = evaluate_design(job, 0, {"d": Fraction(10)})   # |DA| >= 9 > l + m = 6.5: B never meets
+>>> row["status"], row["param_d"], row["grashof_class"]
+('does-not-assemble', '10', None)
+>>> evaluate_design(job, 1, {"a": Fraction(1, 2)})["grashof_class"]
+'crank-rocker'
+"""
+
+from __future__ import annotations
+
+import contextvars
+import time
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Any
+
+from ..errors import BudgetExceeded, SceneError
+from ..runtime import progress
+from ..scene import load_scene
+from .analyses import ANALYSES, Design
+
+__all__ = ["Job", "evaluate_design", "evaluate_chunk", "columns", "TIMING_PREFIX", "REASON_CHARS"]
+
+TIMING_PREFIX = "seconds_"  # the only columns that may differ between two runs of the same sweep
+REASON_CHARS = 400  # a failure's reason is one line, at most this long
+
+
+@dataclass(frozen=True)
+class Job:
+    """What every design of a sweep shares: the scene, the analyses by name, the traced point, the budget."""
+
+    scene: Any
+    analyses: tuple[str, ...]
+    point: str
+    budget: float | None = None  # seconds per design
+
+
+def columns(job: Job, names: Sequence[str]) -> dict[str, str]:
+    """Every column of a row, in order, with its Arrow type; ``names``: the swept parameters."""
+    found = {"design": "int64"}
+    for name in names:
+        found.update({f"param_{name}": "string", f"param_{name}_float": "float64"})
+    found.update({"status": "string", "reason": "string"})
+    for name in job.analyses:
+        found.update(ANALYSES[name].columns)
+    found.update({f"{TIMING_PREFIX}{stage}": "float64" for stage in ("assembly", *job.analyses, "total")})
+    return found
+
+
+def evaluate_chunk(job: Job, index: int, designs: Sequence[tuple[int, Mapping[str, Fraction]]]) -> tuple[int, list]:
+    """``(index, rows)`` of the designs ``(id, values)`` of one chunk (what a worker runs).
+
+    The analyses' own progress (stages, counts of samples) is shown nowhere: in this process it
+    would replace the sweep's count of designs."""
+    def quietly() -> tuple[int, list]:
+        progress.hand_over(None)
+        return index, [evaluate_design(job, design, values) for design, values in designs]
+
+    return contextvars.copy_context().run(quietly)
+
+
+def evaluate_design(job: Job, design: int, values: Mapping[str, Fraction]) -> dict[str, Any]:
+    """The row of one design: its values, status, each analysis's columns and the timings."""
+    row: dict[str, Any] = dict.fromkeys(columns(job, list(values)))
+    row["design"] = design
+    for name, value in values.items():
+        row[f"param_{name}"], row[f"param_{name}_float"] = _exact_text(value), float(value)
+    begun = time.perf_counter()
+    if job.budget is None:
+        found = _analyse(job, values)
+    else:
+        from ..runtime.budget import Budget
+
+        try:
+            found = Budget(seconds=job.budget).run(lambda: _analyse(job, values))
+        except BudgetExceeded as err:
+            found = {"status": "failed", "reason": _one_line(f"budget: {err}")}
+    row.update(found)
+    row[f"{TIMING_PREFIX}total"] = time.perf_counter() - begun
+    return row
+
+
+def _analyse(job: Job, values: Mapping[str, Fraction]) -> dict[str, Any]:
+    """The status, reason, analyses' columns and timings of one design (no design id, no values)."""
+    begun = time.perf_counter()
+    try:
+        design = _assembled(job, values)
+        found: dict[str, Any] = {"status": "ok"}
+    except SceneError as err:
+        kind = "does-not-assemble" if "never assemble" in str(err) else "failed"
+        found = {"status": kind, "reason": _one_line(str(err))}
+    except Exception as err:  # noqa: BLE001 - a bad design is a row that says why, not a stopped sweep
+        found = {"status": "failed", "reason": _one_line(f"scene: {err}")}
+    found[f"{TIMING_PREFIX}assembly"] = time.perf_counter() - begun
+    if found["status"] != "ok":
+        return found
+    for name in job.analyses:
+        begun = time.perf_counter()
+        try:
+            found.update(ANALYSES[name].run(design))
+        except Exception as err:  # noqa: BLE001 - the other analyses still run; the first failure is said
+            if found["status"] == "ok":
+                found.update(status="failed", reason=_one_line(f"{name}: {type(err).__name__}: {err}"))
+        found[f"{TIMING_PREFIX}{name}"] = time.perf_counter() - begun
+    return found
+
+
+def _assembled(job: Job, values: Mapping[str, Fraction]) -> Design:
+    """The design's scene, compiled with its dyads and sliders; SceneError if its branch never assembles."""
+    from ..branches import check_assembly, closed_forms
+    from ..scene import compile_scene
+    from ..scene.settings import with_values
+
+    scene = with_values(job.scene if not isinstance(job.scene, str) else load_scene(job.scene), dict(values))
+    implicit = [n for n, p in scene.points.items() if p.labels]
+    compiled = compile_scene(scene, implicit or [job.point])
+    if implicit:
+        check_assembly(compiled, closed_forms(compiled))
+    return Design(scene, compiled, job.point)
+
+
+def _exact_text(value: Fraction) -> str:
+    return str(value.numerator) if value.denominator == 1 else f"{value.numerator}/{value.denominator}"
+
+
+def _one_line(text: str) -> str:
+    line = " ".join(str(text).split())
+    return line if len(line) <= REASON_CHARS else line[:REASON_CHARS - 3] + "..."

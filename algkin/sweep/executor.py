@@ -1,0 +1,92 @@
+"""Where a sweep's chunks are evaluated: in this process, or on Dask distributed.
+
+``serial`` runs each chunk here. ``dask`` starts a ``LocalCluster`` of worker processes (one
+thread each) on this machine, or connects to the scheduler at an address; either way each
+chunk is one task, and its rows come back here, where they are written (``done``). The
+cluster this module started is closed however the run ends (an error, Ctrl-C as the
+command line's exception): its worker processes are stopped and joined. dask and
+distributed (the ``sweep`` extra) are imported only here, only for a Dask run.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import logging
+import warnings
+from collections.abc import Callable, Iterator, Sequence
+from typing import Any
+
+from ..errors import UsageError
+from .design import Job, evaluate_chunk
+
+__all__ = ["EXECUTORS", "run_chunks", "dask_modules"]
+
+EXECUTORS = ("dask", "serial")
+CONNECT_SECONDS = 10  # how long to wait for the scheduler at --scheduler ADDRESS
+
+
+def run_chunks(job: Job, chunks: Sequence[tuple[int, list]], done: Callable[[int, list], None],
+               executor: str = "dask", workers: int | None = None, scheduler: str | None = None,
+               ready: Callable[[], None] = lambda: None) -> None:
+    """Evaluate every ``(index, designs)`` chunk and hand each one's rows to ``done(index, rows)`` as it ends;
+    ``ready()`` first, once the executor is (a scheduler that cannot be reached: nothing written)."""
+    if executor == "serial":
+        ready()
+        for index, designs in chunks:
+            done(*evaluate_chunk(job, index, designs))
+        return
+    with _client(workers, scheduler) as (client, as_completed):
+        ready()
+        futures = [client.submit(evaluate_chunk, job, index, designs, pure=False) for index, designs in chunks]
+        for future in as_completed(futures):
+            done(*future.result())
+
+
+def dask_modules() -> tuple[Any, Any]:
+    try:
+        import dask
+        import distributed
+    except ImportError:
+        raise UsageError("--executor", "dask", "needs the sweep extra: pip install 'algkin[sweep]' "
+                                               "(or --executor serial)") from None
+    return dask, distributed
+
+
+@contextlib.contextmanager
+def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, Any]]:
+    """A Dask client on a LocalCluster of ``workers`` processes, or on the scheduler at ``scheduler``;
+    everything it started closed when the block ends."""
+    dask, distributed = dask_modules()
+    # Workers that may fork (a per-design budget runs in a forked child): not daemonic.
+    settings = {"distributed.worker.daemon": False, "distributed.admin.tick.limit": "1h",
+                "logging.distributed": "critical"}
+    with dask.config.set(settings), _quiet_logs(), warnings.catch_warnings(), contextlib.ExitStack() as stack:
+        warnings.simplefilter("ignore")  # dask's warnings are no line of ours on stderr either
+        if scheduler is None:
+            # no dashboard, and the scheduler's HTTP server (health checks) on a free local port:
+            # its default, 8787, is taken by any other cluster on the machine
+            cluster = stack.enter_context(distributed.LocalCluster(
+                n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1", dashboard_address=None,
+                scheduler_kwargs={"dashboard": False, "dashboard_address": "127.0.0.1:0"},
+                silence_logs=logging.CRITICAL))
+            client = stack.enter_context(distributed.Client(cluster))
+        else:
+            try:
+                client = stack.enter_context(distributed.Client(scheduler, timeout=CONNECT_SECONDS))
+            except (OSError, TimeoutError, ValueError) as err:
+                raise UsageError("--scheduler", scheduler, f"cannot connect: {' '.join(str(err).split())}") from None
+        yield client, distributed.as_completed
+
+
+@contextlib.contextmanager
+def _quiet_logs() -> Iterator[None]:
+    """Dask's loggers quiet while the run lasts (its closing chatter is no line of ours on stderr)."""
+    loggers = [logging.getLogger(n) for n in ("distributed", "dask", "tornado", "asyncio")]
+    levels = [g.level for g in loggers]
+    for g in loggers:
+        g.setLevel(logging.CRITICAL)
+    try:
+        yield
+    finally:
+        for g, level in zip(loggers, levels):
+            g.setLevel(level)

@@ -1,0 +1,66 @@
+"""The ``sweep`` and ``atlas`` commands: their grammar and what they run (``algkin.sweep``, ``algkin.ui.atlas``)."""
+
+import argparse
+import json
+
+__all__ = ["add_commands", "COMMANDS"]
+
+
+def add_commands(commands, command, json_option):
+    """Add ``sweep`` and ``atlas`` to the subcommands (``command``: how a subcommand is made)."""
+    sweep = command(commands, "sweep", "named analyses over a grid (or random draws) of a scene's dimensions, "
+                                       "one Parquet row per design; resumable, on Dask or in this process")
+    sweep.add_argument("scene", help="catalog name (see `algkin list`) or path of a scene file (.toml)")
+    sweep.add_argument("--grid", action="append", default=[], required=True, metavar="NAME=LO:HI:COUNT",
+                       help="COUNT exact values of dimension NAME from LO to HI (repeatable: their product); "
+                            "with --random, NAME=LO:HI")
+    sweep.add_argument("--random", type=_positive, metavar="N", help="N designs drawn in the --grid ranges")
+    sweep.add_argument("--seed", type=int, default=0, help="random seed of the --random draws")
+    sweep.add_argument("--analyses", default="curve", metavar="A,B,...",
+                       help="comma-separated: curve, grashof, toggles, limits, transmission")
+    sweep.add_argument("--point", help="the point whose coupler curve is found and drawn (default: the scene's last)")
+    sweep.add_argument("--out", required=True, metavar="DIR", help="the sweep's directory (resumed if it holds it)")
+    sweep.add_argument("--executor", default="dask", help="dask (a LocalCluster, or --scheduler) or serial")
+    sweep.add_argument("--workers", type=_positive, help="worker processes of the LocalCluster (default: one per core)")
+    sweep.add_argument("--scheduler", metavar="ADDRESS", help="an existing Dask scheduler, e.g. tcp://host:8786")
+    sweep.add_argument("--budget", type=float, metavar="SECONDS", help="seconds per design; past it, the design fails")
+    sweep.add_argument("--chunk", type=_positive, default=8, help="designs per part file and per Dask task")
+    json_option(sweep, "the counts and the dataset written")
+    atlas = command(commands, "atlas", "a self-contained page browsing a sweep's coupler curves, with filters")
+    atlas.add_argument("dir", metavar="DIR", help="a finished sweep's directory (algkin sweep --out DIR)")
+    atlas.add_argument("--out", required=True, help="the .html page to write")
+    atlas.add_argument("--samples", type=_positive, default=181, help="inputs sampled per curve for its thumbnail")
+    json_option(atlas, "what was written")
+
+
+def _positive(text):
+    if not text.strip().isdigit() or int(text) < 1:
+        raise argparse.ArgumentTypeError(f"expected a whole number from 1, got {text!r}")
+    return int(text)
+
+
+def _cmd_sweep(args):
+    from ...sweep import sweep
+
+    done = sweep(args.scene, args.out, grid=args.grid, random=args.random, seed=args.seed,
+                 analyses=[a for a in args.analyses.split(",")], point=args.point, executor=args.executor,
+                 workers=args.workers, scheduler=args.scheduler, budget=args.budget, chunk=args.chunk)
+    document = done.to_json()
+    if args.json:
+        return json.dumps(document, indent=2) + "\n", 0
+    counts = ", ".join(f"{k} {v}" for k, v in document["status"].items())
+    return (f"{document['designs']} designs ({document['computed']} computed now): {counts}\n"
+            f"wrote {document['dataset']}\n"), 0
+
+
+def _cmd_atlas(args):
+    from ..atlas import write_atlas
+
+    written = write_atlas(args.dir, args.out, samples=args.samples)
+    document = {"out": str(args.out), "designs": written["designs"], "drawn": written["drawn"]}
+    if args.json:
+        return json.dumps(document, indent=2) + "\n", 0
+    return f"wrote {args.out}: {document['drawn']} of {document['designs']} designs drawn\n", 0
+
+
+COMMANDS = {"sweep": _cmd_sweep, "atlas": _cmd_atlas}

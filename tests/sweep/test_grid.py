@@ -1,0 +1,63 @@
+"""Grid and random designs: exact values by hand, bad specs refused in one line."""
+
+from fractions import Fraction
+
+import pytest
+from hypothesis import given, strategies as st
+
+from algkin.errors import UsageError
+from algkin.sweep.grid import RANDOM_STEPS, grid_designs, parse_grid, parse_ranges, random_designs
+
+
+def test_values_are_exact_and_include_both_ends():
+    axes = parse_grid(["a=0.1:0.3:3", "m=3/2:2:2"])
+    assert axes == {"a": [Fraction(1, 10), Fraction(2, 10), Fraction(3, 10)], "m": [Fraction(3, 2), Fraction(2)]}
+
+
+def test_the_first_axis_varies_slowest():
+    designs = grid_designs(parse_grid(["a=1:2:2", "l=5:7:3"]))
+    assert [(int(d["a"]), int(d["l"])) for d in designs] == [(1, 5), (1, 6), (1, 7), (2, 5), (2, 6), (2, 7)]
+
+
+@pytest.mark.parametrize("spec, says", [
+    ("a=1:2", "expected NAME=LO:HI:COUNT"),
+    ("a", "expected NAME=LO:HI:COUNT"),
+    ("=1:2:3", "expected NAME=LO:HI:COUNT"),
+    ("a=1:x:3", "'x' is not a number"),
+    ("a=2:1:3", "LO must not exceed HI"),
+    ("a=1:2:0", "COUNT must be a whole number from 1"),
+    ("a=1:2:2.5", "COUNT must be a whole number from 1"),
+    ("a=1:2:1", "COUNT 1 needs LO = HI"),
+    ("a=1e200:1e201:2", "outside 1e-100 to 1e100"),
+])
+def test_bad_grids_are_refused(spec, says):
+    with pytest.raises(UsageError, match=says) as raised:
+        parse_grid([spec])
+    assert "\n" not in str(raised.value)
+
+
+def test_a_name_given_twice_is_refused():
+    with pytest.raises(UsageError, match="given twice"):
+        parse_grid(["a=1:2:2", "a=3:4:2"])
+
+
+def test_too_many_designs_are_refused_before_any_is_made():
+    with pytest.raises(UsageError, match="more than"):
+        parse_grid([f"{n}=0:1:1000" for n in "abc"])
+
+
+@given(st.integers(0, 2**32), st.integers(1, 20))
+def test_random_draws_repeat_with_the_seed_and_stay_in_range(seed, count):
+    ranges = parse_ranges(["a=1/3:2", "l=-1:1"])
+    drawn = random_designs(ranges, count, seed)
+    assert drawn == random_designs(ranges, count, seed)
+    for design in drawn:
+        for name, (lo, hi) in ranges.items():
+            assert lo <= design[name] <= hi
+            # on the lattice: (value - lo) / (hi - lo) is k / RANDOM_STEPS for a whole k
+            assert ((design[name] - lo) / (hi - lo) * RANDOM_STEPS).denominator == 1
+
+
+def test_random_ranges_take_no_count():
+    with pytest.raises(UsageError, match="expected NAME=LO:HI"):
+        parse_ranges(["a=1:2:3"])

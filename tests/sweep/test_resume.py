@@ -1,0 +1,117 @@
+"""A sweep stopped anywhere resumes where it stopped: killed by SIGKILL after some parts, or
+interrupted while writing a part; restarted, it computes only the missing chunks and its dataset
+is the uninterrupted one, byte for byte once the timing columns are dropped."""
+
+import io
+import json
+import os
+import signal
+import time
+
+import pyarrow.parquet as pq
+import pytest
+
+from algkin.sweep import read_dataset, store, sweep, without_timings
+from algkin.ui.cli import main
+
+from ..processes import algkin, finish, kill_group, start
+
+GRID = ["a=1/2:3/2:4", "m=3:4:2"]  # 8 four-bars
+ANALYSES = ["curve", "grashof"]
+
+
+def canonical(folder):
+    buffer = io.BytesIO()
+    pq.write_table(without_timings(read_dataset(folder)), buffer)
+    return buffer.getvalue()
+
+
+@pytest.fixture(scope="module")
+def uninterrupted(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("whole")
+    done = sweep("fourbar", folder, grid=GRID, analyses=ANALYSES, executor="serial", chunk=1)
+    assert done.computed == 8 and done.counts == {"ok": 8}
+    return folder
+
+
+def parts(folder):
+    return {p.name: (p.stat().st_ino, p.stat().st_mtime_ns) for p in (folder / "parts").iterdir()}
+
+
+def test_killed_by_sigkill_and_restarted(tmp_path, uninterrupted):
+    argv = ["sweep", "fourbar", *(f"--grid={g}" for g in GRID), "--analyses", ",".join(ANALYSES),
+            "--out", tmp_path, "--executor", "serial", "--chunk", "1"]
+    process = start(algkin(*argv))
+    try:
+        deadline = time.monotonic() + 120
+        while len(store.done_chunks(tmp_path)) < 3 and process.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.02)
+        os.killpg(process.pid, signal.SIGKILL)
+        finish(process, 30)
+    finally:
+        kill_group(process)
+    before = parts(tmp_path)
+    assert 3 <= len(before) < 8, "killed too late to test a resumption"
+    assert all(not n.startswith(".") for n in before), "a partial part file was left"
+    code = main([*map(str, argv), "--json", "--quiet"])
+    assert code == 0
+    after = parts(tmp_path)
+    # the parts of the killed run are the same files, untouched; only the missing ones were computed
+    assert {n: after[n] for n in before} == before and len(after) == 8
+    assert canonical(tmp_path) == canonical(uninterrupted)
+
+
+def test_interrupted_while_writing_a_part(tmp_path, uninterrupted, monkeypatch):
+    written = []
+    real = store.write_part
+
+    def interrupted(folder, index, rows, columns):
+        if len(written) == 2:
+            raise KeyboardInterrupt  # as Ctrl-C, in the middle of the third part
+        written.append(index)
+        real(folder, index, rows, columns)
+
+    monkeypatch.setattr("algkin.sweep.write_part", interrupted)
+    with pytest.raises(KeyboardInterrupt):
+        sweep("fourbar", tmp_path, grid=GRID, analyses=ANALYSES, executor="serial", chunk=1)
+    assert sorted(store.done_chunks(tmp_path)) == written and not (tmp_path / "designs.parquet").exists()
+    monkeypatch.undo()
+    # what a SIGKILL in the middle of a write leaves: the part's hidden temporary file, half written
+    (tmp_path / "parts" / ".part-000002.x1y2.tmp.parquet").write_bytes(b"PAR1 half")
+    done = sweep("fourbar", tmp_path, grid=GRID, analyses=ANALYSES, executor="serial", chunk=1)
+    assert done.computed == 6 and done.designs == 8
+    assert canonical(tmp_path) == canonical(uninterrupted)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["designs.parquet", "manifest.json", "parts"]
+    assert sorted(p.name for p in (tmp_path / "parts").iterdir()) == [f"part-{k:06d}.parquet" for k in range(8)]
+
+
+def test_a_finished_sweep_run_again_computes_nothing(tmp_path, uninterrupted):
+    import shutil
+
+    shutil.copytree(uninterrupted, tmp_path, dirs_exist_ok=True)
+    done = sweep("fourbar", tmp_path, grid=GRID, analyses=ANALYSES, executor="serial", chunk=1)
+    assert done.computed == 0 and canonical(tmp_path) == canonical(uninterrupted)
+
+
+@pytest.mark.parametrize("change", [["--grid", "a=1/2:3/2:3"], ["--analyses", "curve"], ["--chunk", "2"],
+                                    ["--point", "B"]])
+def test_resuming_with_other_arguments_is_refused(tmp_path, uninterrupted, capsys, change):
+    import shutil
+
+    shutil.copytree(uninterrupted, tmp_path, dirs_exist_ok=True)
+    argv = {"--grid": GRID[0], "--analyses": ",".join(ANALYSES), "--chunk": "1", "--point": "P"}
+    argv[change[0]] = change[1]
+    files = {p: p.read_bytes() for p in tmp_path.rglob("*") if p.is_file()}
+    code = main(["sweep", "fourbar", "--grid", argv["--grid"], *([] if change[0] == "--grid" else ["--grid", GRID[1]]),
+                 *(x for k in ("--analyses", "--chunk", "--point") for x in (k, argv[k])),
+                 "--out", str(tmp_path), "--executor", "serial"])
+    err = capsys.readouterr().err
+    assert code == 2 and err.count("\n") == 1 and "holds a different sweep" in err
+    assert {p: p.read_bytes() for p in tmp_path.rglob("*") if p.is_file()} == files
+
+
+def test_the_manifest_says_what_the_sweep_is(uninterrupted):
+    manifest = json.loads((uninterrupted / "manifest.json").read_text())
+    assert manifest["scene"]["name"] == "fourbar" and "[points]" in manifest["scene"]["toml"]
+    assert manifest["designs"] == {"grid": {"a": ["1/2", "5/6", "7/6", "3/2"], "m": ["3", "4"]}}
+    assert manifest["analyses"] == ANALYSES and manifest["count"] == 8 and manifest["algkin"]

@@ -1,0 +1,134 @@
+"""The atlas page in a headless browser: it opens, draws a thumbnail per design that assembles,
+and its filters show the designs they should (counted by hand: Grashof classes from the lengths)."""
+
+import html.parser
+import subprocess
+import sys
+import tempfile
+from fractions import Fraction
+
+import pytest
+
+from algkin.sweep import read_dataset
+from algkin.ui.atlas import atlas_data
+
+from ..hand_linkages import SIDES, fourbar
+from ..sweep.hand import hand_grashof
+from .draw.browser import FLAGS, chromium
+
+A, L, D = ("1/2", "3"), ("2", "3"), ("2", "4", "10")  # rocker m = 7/2; with d = 10 nothing assembles
+
+
+@pytest.fixture(scope="module")
+def atlas(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("atlas")
+    grid = [f"a={A[0]}:{A[1]}:2", f"l={L[0]}:{L[1]}:2", "d=2:10:3"]
+    for argv in (["sweep", "fourbar", *(f"--grid={g}" for g in grid), "--analyses", "curve,grashof,transmission",
+                  "--out", folder / "sweep", "--executor", "serial"],
+                 ["atlas", folder / "sweep", "--out", folder / "atlas.html"]):
+        done = subprocess.run([sys.executable, "-m", "algkin", *map(str, argv)], capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr
+    return folder
+
+
+def designs():
+    """(a, l, d) of every design, in design order, as exact values."""
+    return [(Fraction(a), Fraction(l), Fraction(d)) for a in A for l in L for d in ("2", "6", "10")]
+
+
+class _Cards(html.parser.HTMLParser):
+    """The state output's data, and each card: shown or hidden, and its paths' data."""
+
+    def __init__(self):
+        super().__init__()
+        self.state, self.cards = {}, []
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        if tag == "output" and attrs.get("id") == "state":
+            self.state = {k[5:]: v for k, v in attrs.items() if k.startswith("data-")}
+        if tag == "div" and "card" in (attrs.get("class") or "").split():
+            self.cards.append({"hidden": "hidden" in attrs, "paths": []})
+        if tag == "path" and self.cards:
+            self.cards[-1]["paths"].append(attrs.get("d", ""))
+
+
+def load(page, query=""):
+    with tempfile.TemporaryDirectory() as profile:
+        done = subprocess.run([chromium(), *FLAGS, f"--user-data-dir={profile}", "--dump-dom",
+                               page.resolve().as_uri() + query], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr[-2000:]
+    parser = _Cards()
+    parser.feed(done.stdout)
+    assert parser.state, "the page wrote no state: its script did not run"
+    return parser.state, parser.cards
+
+
+def test_the_page_opens_and_draws_each_design_that_assembles(atlas):
+    state, cards = load(atlas / "atlas.html")
+    # by hand: with d = 10, |AD| >= 10 - 3 = 7 > l + m (at most 6.5): those 4 never assemble
+    assembles = [d < 10 for _, _, d in designs()]
+    assert (state["total"], state["shown"], state["drawn"]) == ("12", "12", str(sum(assembles)))
+    assert [bool(c["paths"]) and all(c["paths"]) for c in cards] == assembles
+
+
+@pytest.mark.parametrize("kind", ["crank-rocker", "double-crank", "triple-rocker"])
+def test_the_class_filter_shows_the_designs_of_that_class(atlas, kind):
+    state, cards = load(atlas / "atlas.html", f"?class={kind}")
+    expected = [d < 10 and hand_grashof(a, d, l, Fraction(7, 2)) == kind for a, l, d in designs()]
+    assert sum(expected) > 0
+    assert [not c["hidden"] for c in cards] == expected
+    assert state["shown"] == str(sum(expected))
+
+
+def test_the_transmission_filter_and_a_class_together(atlas):
+    table = read_dataset(atlas / "sweep").to_pylist()
+    state, cards = load(atlas / "atlas.html", "?tmin=10&tmax=130&degree=6")
+    expected = [r["transmission_min_deg"] is not None and r["transmission_min_deg"] >= 10
+                and r["transmission_max_deg"] <= 130 and r["curve_degree"] == 6 for r in table]
+    assert 0 < sum(expected) < 8
+    assert [not c["hidden"] for c in cards] == expected
+
+
+def test_thumbnails_are_the_coupler_curves_by_hand(atlas):
+    """A thumbnail's points are the coupler point P by hand (law of cosines) on both assembly
+    modes, at the sampled crank angles, in the square frame around them all."""
+    import numpy as np
+
+    samples = 37
+    data = atlas_data(atlas / "sweep", samples=samples)
+    assert not data["filters"]["singular"] and data["filters"]["class"]
+    (a, l, d), design = next((v, e) for v, e in zip(designs(), data["designs"]) if e["class"] == "crank-rocker")
+    dims = dict(a=float(a), d=float(d), l=float(l), m=3.5, p=0.5, q=0.5)
+    tracks = {side: [fourbar(t, **dims, branch=side) for t in np.linspace(0, 360, samples)] for side in SIDES}
+    every = np.array([c["P"] for track in tracks.values() for c in track if c is not None])
+    lo, hi = every.min(axis=0), every.max(axis=0)
+    size, corner = max(hi - lo), (lo + hi) / 2 - max(hi - lo) / 2
+    for path, side in zip(design["paths"], SIDES):  # the branches in the scene's order: left, right
+        assert path["selected"] == (side == "left")
+        drawn = [tuple(map(float, p.split(","))) for p in path["d"].replace("M", " ").replace("L", " ").split()]
+        hand = [(5 + (x - corner[0]) * 90 / size, 95 - (y - corner[1]) * 90 / size)
+                for x, y in (c["P"] for c in tracks[side] if c is not None)]
+        assert len(drawn) == len(hand) == samples  # a crank-rocker: every angle assembles
+        assert np.allclose(drawn, hand, atol=0.051)  # drawn to 0.1 of the 100-wide box
+
+
+def test_the_singular_points_filter_appears_with_its_column(atlas, tmp_path):
+    """A sweep with a ``singular_count`` column (as the singular analysis will give) gets the filter."""
+    import shutil
+
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    shutil.copytree(atlas / "sweep", tmp_path / "sweep")
+    table = read_dataset(tmp_path / "sweep")
+    counts = [k % 4 if status != "does-not-assemble" else None
+              for k, status in enumerate(table.column("status").to_pylist())]
+    pq.write_table(table.append_column("singular_count", pa.array(counts, pa.int64())),
+                   tmp_path / "sweep" / "designs.parquet")
+    done = subprocess.run([sys.executable, "-m", "algkin", "atlas", str(tmp_path / "sweep"), "--out",
+                           str(tmp_path / "atlas.html")], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    state, cards = load(tmp_path / "atlas.html", "?singular=2")
+    assert [not c["hidden"] for c in cards] == [n == 2 for n in counts] and state["shown"] == str(counts.count(2))
+    assert not atlas_data(atlas / "sweep")["filters"]["singular"]
