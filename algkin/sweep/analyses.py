@@ -5,24 +5,25 @@ An ``Analysis`` says its columns (name -> Arrow type, in order) and computes the
 results are strings (sympy's, or JSON of exact pieces), figures are floats. An analysis that
 cannot answer raises; the sweep records the design as failed with that one line.
 
-``register`` adds one: the singular points of the coupler curve join with one entry
-(``singular_count``, an int64 column, is what the atlas filters on).
+``register`` adds one (a new name, its columns prefixed by it). ``singular`` gives the real
+singular points of the coupler curve, exactly (``algkin.analyses.singular``): their count by
+kind (``singular_count``, all real ones, is what the atlas filters on) and the points.
 
 >>> list(ANALYSES)
-['curve', 'grashof', 'toggles', 'limits', 'transmission']
+['curve', 'grashof', 'toggles', 'limits', 'transmission', 'singular']
 >>> ANALYSES["grashof"].columns
 {'grashof_class': 'string', 'grashof_margin': 'string', 'grashof_margin_float': 'float64'}
 >>> analyses_named(["grashof", "wobble"])
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: --analyses='wobble': unknown; valid: curve, grashof, toggles, limits, transmission
+algkin.errors.UsageError: --analyses='wobble': unknown; valid: curve, grashof, toggles, limits, transmission, singular
 """
 
 from __future__ import annotations
 
 import json
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 from ..errors import ComputationError, UsageError
@@ -42,6 +43,20 @@ class Design:
     scene: Any
     compiled: Any
     point: str
+    found: dict[str, Any] = field(default_factory=dict)  # what one analysis computed that another reuses
+
+
+def _verified_curve(design: Design) -> Any:
+    """The design's coupler curve, verified, computed once for every analysis that needs it."""
+    from ..derivation.pipeline import curve
+
+    if "curve" not in design.found:
+        found = curve(design.scene, design.point)
+        if found.verification.status == "failed":
+            failures = "; ".join(found.verification.to_json().get("failures") or ["no reason given"])
+            raise ComputationError(f"the curve of {design.point} failed its check: {failures}")
+        design.found["curve"] = found
+    return design.found["curve"]
 
 
 @dataclass(frozen=True)
@@ -52,12 +67,7 @@ class Analysis:
 
 
 def _curve(design: Design) -> dict[str, Any]:
-    from ..derivation.pipeline import curve
-
-    found = curve(design.scene, design.point)
-    if found.verification.status == "failed":
-        failures = "; ".join(found.verification.to_json().get("failures") or ["no reason given"])
-        raise ComputationError(f"the curve of {design.point} failed its check: {failures}")
+    found = _verified_curve(design)
     return {"curve_point": design.point, "curve_degree": found.degree, "curve_circularity": found.circularity,
             "curve_irreducible": bool(found.irreducible), "curve_polynomial": str(found.elimination.polynomial),
             "curve_verification": found.verification.status}
@@ -129,6 +139,18 @@ def _transmission(design: Design) -> dict[str, Any]:
     return row
 
 
+def _singular(design: Design) -> dict[str, Any]:
+    from ..analyses.singular import singular_points
+
+    found = singular_points(_verified_curve(design))
+    counts = found.counts
+    return {"singular_count": len(found.points), **{f"singular_{kind}s": counts.get(kind, 0) for kind in _KINDS},
+            "singular_complex": counts["complex"],
+            "singular_points": json.dumps([p.to_json() for p in found.points])}
+
+
+_KINDS = ("crunode", "acnode", "cusp")  # a four-bar's double points; others count in singular_count alone
+
 ANALYSES: dict[str, Analysis] = {}
 
 
@@ -165,6 +187,8 @@ register(Analysis("transmission", {"transmission_of": "string",
                                    **{f"transmission_{k}_{f}": t for k in ("min", "max")
                                       for f, t in (("deg", "float64"), ("at_deg", "float64"), ("exact", "string"))}},
                   _transmission))
+register(Analysis("singular", {"singular_count": "int64", **{f"singular_{kind}s": "int64" for kind in _KINDS},
+                               "singular_complex": "int64", "singular_points": "string"}, _singular))
 
 
 def analyses_named(names: Iterable[str]) -> list[Analysis]:

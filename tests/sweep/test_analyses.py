@@ -2,6 +2,7 @@
 transmission angles by the law of cosines, limit positions from crank and coupler in line, and
 the coupler curve vanishing on hand-computed coupler points."""
 
+import json
 import math
 from fractions import Fraction
 
@@ -98,3 +99,15 @@ def test_a_failing_analysis_is_named_and_the_others_kept():
     found = evaluate_design(Job(scene, ("grashof", "toggles"), "B"), 3, {})
     assert found["status"] == "failed" and found["reason"].startswith("grashof: ComputationError: not a four-bar")
     assert found["toggles_count"] is not None and found["design"] == 3
+
+
+def test_singular_points_of_a_designed_coupler_curve():
+    """A coupler point at the instant centre (3, 4) traces a cusp, and at the change point the
+    two assembly modes' paths cross at (11/5, 12/5) (a = 1, d = 3, l = 5/2, m = 3/2: 1 + 3 = 5/2
+    + 3/2), as constructed by hand in tests/analyses/singular/test_coupler.py."""
+    found = row(["curve", "singular"], a=1, d=3, l="5/2", m="3/2", p="32/25", q="24/25")
+    assert found["status"] == "ok", found["reason"]
+    assert found["singular_cusps"] >= 1 and found["singular_crunodes"] >= 1
+    assert found["singular_count"] >= found["singular_cusps"] + found["singular_crunodes"]
+    places = {(p["kind"], p["exact"]["x"], p["exact"]["y"]) for p in json.loads(found["singular_points"])}
+    assert ("cusp", "3", "4") in places and ("crunode", "11/5", "12/5") in places
