@@ -157,7 +157,8 @@ class Quantity:
 
         One input: the closed form in mpmath at 30 digits. An array of inputs (not of an angle
         quantity): an array, the stabilised form in floats on the scene's branch, numba's fused
-        loop where it is installed and pays (``algkin.evaluate.fused``), numpy's otherwise.
+        loop where it is installed and pays (``algkin.evaluate.fused``), numpy's otherwise; nan
+        where the branch's label is not certified (by a toggle: ``undecided``) or it does not assemble.
 
         >>> AB = load("arm-string", params=["b"]).dist("A", "B")
         >>> [round(float(v), 9) for v in AB.at(theta=np.array([90.0, 0.0]), b=80)]   # at 0: sqrt(232900)
@@ -185,13 +186,23 @@ class Quantity:
         if key not in kernels:
             from ..branches import closed_forms
             from ..branches.stable import StableBranch, output_forms
+            from ..derivation.pipeline import certify_labels
             from ..scene import compile_scene
 
             compiled = compile_scene(with_values(self.mechanism.scene, settings or None), [self.text])
-            stable = StableBranch(compiled, next(b for b in closed_forms(compiled) if b.selected))
-            kernels[key] = stable.kernel(output_forms(stable, [self.text])[1])
+            chosen = next(b for b in closed_forms(compiled) if b.selected)
+            stable = StableBranch(compiled, chosen)
+            # floats say nothing where the branch's label is not certified (a toggle's neighbourhood)
+            kernels[key] = (stable.kernel(output_forms(stable, [self.text])[1]), certify_labels(compiled, [chosen])[0])
+        kernel, intervals = kernels[key]
         given = np.asarray(values[name], dtype=float)
-        return kernels[key](np.radians(given) if self._problem.line.is_angle else given)[0]
+        turning = self._problem.line.is_angle
+        found = kernel(np.radians(given) if turning else given)[0]
+        if intervals:
+            from ..branches.certify import uncertified
+
+            found = np.where(uncertified(intervals, given, turning), np.nan, found)
+        return found
 
     def extremum(self, range=None, largest=False):  # noqa: A002 (the seed's word)
         """Critical points, minimum and maximum; closed forms in the symbolic dimensions."""

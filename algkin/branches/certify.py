@@ -23,13 +23,15 @@ from collections.abc import Mapping, Sequence
 from typing import TypedDict
 
 import flint
+import numpy as np
 import sympy
+from numpy.typing import NDArray
 
 from ..evaluate import ARB, evaluate
 from ..system import input_values
 from .closed_form import Branch
 
-__all__ = ["certify_label", "Interval", "MIN_WIDTH_DEG", "interval_keys"]
+__all__ = ["certify_label", "Interval", "MIN_WIDTH_DEG", "interval_keys", "uncertified"]
 
 MIN_WIDTH_DEG = 1e-7
 # Each interval splits until decided or narrower than MIN_WIDTH_DEG; where a discriminant stays
@@ -100,6 +102,29 @@ def certify_label(branch: Branch, variables: tuple[str, ...], lo_deg: float, hi_
             else:
                 pieces.append((lo, hi, status))
     return _merged(pieces, variables)
+
+
+def uncertified(intervals: Sequence[Interval], shown: NDArray[np.float64], turning: bool) -> NDArray[np.bool_]:
+    """Where the inputs ``shown`` (degrees, or lengths) fall in an interval of ``intervals`` that is
+    not ``certified`` (``undecided`` at a toggle, or ``no-assembly``): where a float evaluation must
+    say nothing. An angle is taken a turn at a time into the intervals' range when they cover a
+    whole turn; an input outside their range is not held against them.
+
+    >>> pieces = [{"from_deg": 0.0, "to_deg": 10.0, "status": "certified"},
+    ...           {"from_deg": 10.0, "to_deg": 20.0, "status": "undecided"}]
+    >>> uncertified(pieces, np.array([5.0, 15.0, 375.0, 30.0]), turning=True).tolist()
+    [False, True, False, False]
+    """
+    start, end = interval_keys(("c", "s") if turning else ("t",))
+    lows = np.array([i[start] for i in intervals])  # type: ignore[literal-required]
+    highs = np.array([i[end] for i in intervals])  # type: ignore[literal-required]
+    values = np.asarray(shown, dtype=float)
+    if turning and highs[-1] - lows[0] >= 360:
+        values = lows[0] + np.mod(values - lows[0], 360.0)
+    index = np.clip(np.searchsorted(highs, values, side="left"), 0, len(intervals) - 1)
+    inside = (values >= lows[0]) & (values <= highs[-1])
+    bad = np.array([i["status"] != "certified" for i in intervals])
+    return inside & bad[index]
 
 
 def _merged(pieces: Sequence[tuple[float, float, str]], variables: Sequence[str]) -> list[Interval]:

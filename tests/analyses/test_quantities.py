@@ -2,11 +2,15 @@
 
 import math
 
+import mpmath
+import numpy as np
+
 import pytest
 import sympy
 
 import algkin
 
+from ..hand_linkages import fourbar
 from .extremum.arm_by_hand import hand_minimum
 
 theta, b = sympy.Symbol("theta", real=True), sympy.Symbol("b", real=True)
@@ -59,3 +63,15 @@ def test_quantity_gives_both_spellings_of_the_input():
     chosen = next(b for b in derived.branches if b.to_json()["selected"])
     assert AB.expr_cs == chosen.values["AB"]
     assert not AB.expr_cs.has(sympy.cos) and {c, s} <= AB.expr_cs.free_symbols
+
+
+def test_an_array_of_inputs_is_nan_where_the_label_is_not_certified_never_a_branch_guessed():
+    """The triple rocker's dead centre by the law of cosines, |AD| = l + m: cos(theta) = -13.25/20.
+    There, and past it where B cannot assemble, floats say nothing; inside, they are B by hand."""
+    toggle = math.degrees(math.acos(-13.25 / 20))
+    bx = algkin.load("fourbar-nongrashof").x("B")
+    inside = [0.0, 90.0, toggle - 1e-3, -toggle + 1e-3]
+    found = bx.at(theta=np.array([toggle, -toggle, toggle + 1e-9, 170.0, *inside]))
+    assert np.all(np.isnan(found[:4]))
+    hand = [fourbar(theta, a=2, d=5, l=3, m=mpmath.mpf(7) / 2, p=0, q=0)["B"][0] for theta in inside]
+    assert np.allclose(found[4:], hand, rtol=0, atol=1e-12)
