@@ -1,0 +1,319 @@
+"""A family's eliminant by evaluation and interpolation in its parameters.
+
+When symbolic parameters enter only where they cost most (a tracing point's frame
+coordinates ``u, v`` on a six-bar, carried through every resultant), eliminating them along
+with everything else is out of reach, while each specialisation (the parameters set to
+numbers) is an ordinary fixed curve, eliminated in milliseconds. The ``interpolate`` method
+rebuilds the family's eliminant from such images:
+
+- images modulo word-size primes (``ModularBackend``), the parameters set to residues; each
+  image eliminated by the ``linear`` method, factored, and cut to the factors of the
+  *signature*: their degrees in the kept variables, read once from an exact elimination at
+  the first witness's parameters and its ball check (the factors the motion lies on);
+- each image made monic (lex-leading coefficient 1): the eliminant is defined up to a factor
+  in the parameters, and this fixes it when the leading coefficient is a number (on the
+  catalog's families it is); when it is not, the line test below fails and says so;
+- the total degree in the parameters found first, on a random line through them (Newton
+  interpolation in one variable until two further images are predicted exactly); then dense
+  Newton interpolation on a triangular grid (``(D + 1)(D + 2)/2`` images for two parameters
+  of total degree ``D``), recursively, one parameter at a time;
+- unlucky points (the image's factors not of the signature's degrees: a degree drop or an
+  extra split) skipped, another residue drawn;
+- images under several primes joined by the Chinese remainder theorem and rational
+  reconstruction, primes added until reconstruction succeeds and the check passes;
+- the check: at ``CHECKS`` random rational parameter values beyond the interpolation's
+  needs, the interpolated eliminant specialised must equal, exactly, the eliminant computed
+  directly at that point (both monic). It is recorded in the log as ``("checked-at", k)``.
+
+>>> import sympy
+>>> from algkin.eliminate import eliminate
+>>> x, y, r = sympy.symbols("x y r")
+>>> circles = [x**2 + y**2 - r**2, (x - 3)**2 + y**2 - 4]   # y of the crossing, radius r symbolic
+>>> result = eliminate(circles, ["x"], ["y", "r"], method="interpolate", parameters=["r"])
+>>> sympy.factor(result.polynomial)
+r**4 - 26*r**2 + 36*y**2 + 25
+>>> [entry for entry in result.log if entry[0] in ("interpolated", "checked-at")]  # degree 4 in r: 5 images, one prime
+[('interpolated', 5), ('checked-at', 2)]
+"""
+
+import math
+import random
+from collections.abc import Callable, Sequence
+
+import flint
+
+from ..errors import ComputationError
+from .linear import linear_elimination
+from .methods import prepare
+from .modular import PRIMES, ModularBackend
+from .protocol import Backend, P
+from .request import EliminationRequest, LogEntry, MethodOutcome
+from .select import select_factors
+
+__all__ = ["interpolation", "MAX_DEGREE", "CHECKS"]
+
+MAX_DEGREE = 80  # the largest total degree in the parameters looked for
+CHECKS = 2  # exact checks at random rational parameters, beyond the interpolation's needs
+RETRIES = 20  # unlucky points skipped in a row before giving up
+
+Image = Callable[[dict[str, int]], "flint.nmod_mpoly | None"]
+
+
+class _Unlucky(Exception):
+    """Too many unlucky points in a row."""
+
+
+def interpolation(backend: Backend[P], polys: list[P], request: EliminationRequest) -> MethodOutcome[P]:
+    """The eliminant of ``polys`` with ``request.parameters`` symbolic, by interpolating
+    specialisations; ``linear`` itself when no parameter is held or the backend is not flint."""
+    held = set().union(*(backend.variables(p) for p in polys)) if polys else set()
+    parameters = [n for n in backend.names if n in request.parameters and n in held]
+    if not parameters or backend.name != "flint":
+        return linear_elimination(backend, polys, request)
+    family = _Family(backend, polys, request, parameters)
+    return MethodOutcome([family.solve()], log=family.log)
+
+
+class _Family:
+    """One interpolation: the equations, the parameters, the signature, and what was done."""
+
+    def __init__(self, backend: Backend[P], polys: list[P], request: EliminationRequest,
+                 parameters: list[str]) -> None:
+        self.backend, self.polys, self.request, self.parameters = backend, polys, request, parameters
+        self.kept = [n for n in backend.names if n not in request.eliminate and n not in parameters]
+        self.random = random.Random(0x5EED)
+        self.log: list[LogEntry] = []
+        self.signature = self._signature()
+
+    # -- exact images, over QQ --------------------------------------------------------------
+
+    def _exact(self, values: dict[str, flint.fmpq]) -> list[P]:
+        """The factors of the eliminant at the parameters ``values``, over QQ."""
+        backend = self.backend
+        polys = [backend.specialize(p, values) for p in self.polys]
+        return _eliminant_factors(backend, polys, self.request)
+
+    def _signature(self) -> list[tuple[int, ...]]:
+        """The kept variables' degrees of each factor the motion lies on, at the first witness."""
+        point = next((w for group in self.request.witnesses for w in group), None)
+        exact = getattr(point, "exact", {}) if point is not None else {}
+        if point is not None and all(n in exact for n in self.parameters):
+            factors = self._exact({n: exact[n] for n in self.parameters})
+            kept, _ = select_factors(self.backend, factors, [[point]], check=False)
+        else:  # no witness: every factor of a random specialisation
+            kept = self._exact(self._rational_point())
+        return sorted(self._degrees(f) for f in kept)
+
+    def _degrees(self, poly: P) -> tuple[int, ...]:
+        return tuple(self.backend.degree(poly, n) for n in self.kept)
+
+    def _rational_point(self) -> dict[str, flint.fmpq]:
+        return {n: flint.fmpq(self.random.randrange(-999, 1000), self.random.randrange(1, 1000))
+                for n in self.parameters}
+
+    def _pick(self, backend: Backend[P], factors: Sequence[P]) -> P | None:
+        """The monic product of the factors of the signature's degrees; None (an unlucky point)
+        unless they are exactly the signature's."""
+        chosen = [f for f in factors if self._degrees_in(backend, f) in self.signature]
+        if sorted(self._degrees_in(backend, f) for f in chosen) != self.signature:
+            return None
+        product = chosen[0]
+        for factor in chosen[1:]:
+            product = product * factor
+        return backend.primitive(product)
+
+    def _degrees_in(self, backend: Backend[P], poly: P) -> tuple[int, ...]:
+        return tuple(backend.degree(poly, n) for n in self.kept)
+
+    # -- modular images -----------------------------------------------------------------------
+
+    def _images(self, prime: int) -> Image:
+        """``residues -> the monic image mod prime`` (None at an unlucky point)."""
+        modular = ModularBackend(self.backend.names, prime)
+        reduced = [modular.reduce(p) for p in self.polys]
+
+        def image(point: dict[str, int]) -> flint.nmod_mpoly | None:
+            polys = [p.subs(point) for p in reduced]
+            try:
+                return self._pick(modular, _eliminant_factors(modular, polys, self.request))
+            except (ComputationError, ZeroDivisionError):
+                return None  # a vanishing resultant or leading coefficient: not generic here
+
+        return image
+
+    def solve(self) -> P:
+        """The interpolated eliminant over QQ, checked."""
+        residues: dict[tuple[int, ...], int] = {}
+        modulus, degree, count = 1, None, 0
+        for prime in PRIMES:
+            image = self._images(prime)
+            if degree is None:
+                degree = _line_degree(image, self.parameters, prime, self.random)
+                self.log.append(("parameter-degree", degree))
+            try:
+                poly, used = _newton(image, self.parameters, degree, prime, self.random)
+            except _Unlucky:
+                continue
+            count += used
+            residues, modulus = _crt(residues, modulus, poly, prime)
+            candidate = self._lift(residues, modulus)
+            if candidate is not None and self._check(candidate):
+                self.log += [("interpolated", count), ("checked-at", CHECKS)]
+                return candidate
+        raise ComputationError(f"interpolating the family in {', '.join(self.parameters)}: "
+                               f"no check passed after {len(PRIMES)} primes")
+
+    def _lift(self, residues: dict[tuple[int, ...], int], modulus: int) -> P | None:
+        """The rational polynomial the residues reconstruct, or None if one does not."""
+        terms = {}
+        for monomial, residue in residues.items():
+            value = _rational(residue, modulus)
+            if value is None:
+                return None
+            terms[monomial] = value
+        ctx = self.polys[0].context()  # type: ignore[attr-defined]  # the flint backend's fmpq_mpoly
+        return ctx.from_dict(terms)  # type: ignore[no-any-return]
+
+    def _check(self, candidate: P) -> bool:
+        """Whether ``candidate`` specialised equals the direct eliminant at ``CHECKS`` random points."""
+        backend = self.backend
+        for _ in range(CHECKS):
+            values = self._rational_point()
+            direct = self._pick(backend, self._exact(values))
+            if direct is None or backend.primitive(backend.specialize(candidate, values)) != direct:
+                return False
+        return True
+
+
+def _eliminant_factors(backend: Backend[P], polys: list[P], request: EliminationRequest) -> list[P]:
+    """The irreducible factors of the eliminant of ``polys`` by the linear method, unselected."""
+    bare = EliminationRequest(request.eliminate, (), (), request.budget)
+    prepared = prepare(backend, polys, bare.eliminate)
+    left = [p for p in linear_elimination(backend, prepared.left, bare).left if not backend.is_zero(p)]
+    if not left:
+        raise ComputationError("nothing left after eliminating")
+    eliminant = left[0]
+    for poly in left[1:]:
+        eliminant = backend.gcd(eliminant, poly)
+    return [] if backend.is_constant(eliminant) else backend.factors(eliminant)
+
+
+def _line_degree(image: Image, parameters: Sequence[str], prime: int, rng: random.Random) -> int:
+    """The total degree in the parameters: Newton interpolation along a random line through
+    them until the next two images are predicted exactly."""
+    start = {n: rng.randrange(prime) for n in parameters}
+    slope = {n: rng.randrange(1, prime) for n in parameters}
+    ts: list[int] = []
+    table: list[flint.nmod_mpoly] = []  # Newton coefficients
+    hits = 0
+    while len(ts) <= MAX_DEGREE + 2:
+        t = rng.randrange(prime)
+        value = image({n: (start[n] + slope[n] * t) % prime for n in parameters})
+        if value is None or t in ts:
+            continue
+        predicted = _newton_value(table, ts, t, prime)
+        if table and value == predicted:
+            hits += 1
+            if hits == 2:
+                return len(table) - 1
+            continue
+        hits = 0
+        table.append(_divided(value, table, ts, t, prime))
+        ts.append(t)
+    raise ComputationError(f"the family's eliminant, made monic, is not a polynomial of degree at most "
+                           f"{MAX_DEGREE} in {', '.join(parameters)}: its leading coefficient depends on them")
+
+
+def _newton_value(table: Sequence[flint.nmod_mpoly], ts: Sequence[int], t: int, prime: int) -> flint.nmod_mpoly:
+    """The Newton form ``table`` on nodes ``ts`` at ``t`` (Horner)."""
+    total = None
+    for k in range(len(table) - 1, -1, -1):
+        total = table[k] if total is None else total * ((t - ts[k]) % prime) + table[k]
+    return total
+
+
+def _divided(value: flint.nmod_mpoly, table: Sequence[flint.nmod_mpoly], ts: Sequence[int], t: int,
+             prime: int) -> flint.nmod_mpoly:
+    """The next Newton coefficient, for the node ``t`` with ``value``."""
+    residual = value - _newton_value(table, ts, t, prime) if table else value
+    weight = 1
+    for node in ts:
+        weight = weight * (t - node) % prime
+    return residual * pow(weight, -1, prime)
+
+
+def _newton(image: Image, parameters: Sequence[str], degree: int, prime: int, rng: random.Random
+            ) -> tuple[flint.nmod_mpoly, int]:
+    """The polynomial of total degree ``degree`` in ``parameters`` whose values ``image`` gives,
+    by Newton interpolation on a triangular grid; and how many images it took."""
+    if not parameters:
+        value = image({})
+        if value is None:
+            raise _Unlucky
+        return value, 1
+    first, rest = parameters[0], parameters[1:]
+    nodes: list[int] = []
+    parts: list[flint.nmod_mpoly] = []  # h_i: G = sum_i prod_{k<i} (first - nodes[k]) h_i(rest)
+    used = 0
+    for i in range(degree + 1):
+        for _ in range(RETRIES):
+            node = rng.randrange(prime)
+            if node in nodes:
+                continue
+            try:
+                part, count = _newton(_peeled(image, first, node, nodes, parts, prime), rest, degree - i, prime, rng)
+            except _Unlucky:
+                continue
+            used += count
+            nodes.append(node)
+            parts.append(part)
+            break
+        else:
+            raise _Unlucky
+    gen = parts[0].context().gens()[parts[0].context().names().index(first)]
+    total, basis = parts[0] * 0, parts[0] * 0 + 1
+    for node, part in zip(nodes, parts):
+        total = total + basis * part
+        basis = basis * (gen - node)
+    return total, used
+
+
+def _peeled(image: Image, first: str, node: int, nodes: Sequence[int], parts: Sequence[flint.nmod_mpoly],
+            prime: int) -> Image:
+    """Images of the next Newton part at ``first = node``: the known parts subtracted, divided
+    by their basis there."""
+    def peeled(point: dict[str, int]) -> flint.nmod_mpoly | None:
+        value = image({first: node, **point})
+        if value is None:
+            return None
+        weight = 1
+        for k, part in enumerate(parts):
+            value = value - part.subs(point) * weight if point else value - part * weight
+            weight = weight * (node - nodes[k]) % prime
+        return value * pow(weight, -1, prime)
+
+    return peeled
+
+
+def _crt(residues: dict[tuple[int, ...], int], modulus: int, poly: flint.nmod_mpoly, prime: int
+         ) -> tuple[dict[tuple[int, ...], int], int]:
+    """The residues mod ``modulus`` joined with ``poly``'s mod ``prime``."""
+    new = {m: int(c) for m, c in zip(poly.monoms(), poly.coeffs())}
+    inverse = pow(modulus, -1, prime)
+    joined = {}
+    for monomial in set(residues) | set(new):
+        old = residues.get(monomial, 0)
+        joined[monomial] = old + modulus * ((new.get(monomial, 0) - old) * inverse % prime)
+    return joined, modulus * prime
+
+
+def _rational(residue: int, modulus: int) -> flint.fmpq | None:
+    """The fraction ``n/d`` with ``|n|, d < sqrt(modulus/2)`` congruent to ``residue``, or None."""
+    bound = math.isqrt(modulus // 2)
+    r0, r1, s0, s1 = modulus, residue % modulus, 0, 1
+    while r1 >= bound:
+        q = r0 // r1
+        r0, r1, s0, s1 = r1, r0 - q * r1, s1, s0 - q * s1
+    if s1 == 0 or abs(s1) >= bound:
+        return None
+    return flint.fmpq(r1, s1) if s1 > 0 else flint.fmpq(-r1, -s1)

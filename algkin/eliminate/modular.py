@@ -1,0 +1,167 @@
+"""A backend over a word-size prime field: the same methods, on residues.
+
+``ModularBackend`` implements the backend protocol on python-flint's ``nmod_mpoly``: the
+elimination methods run on it unchanged, with coefficients mod a prime. It is the engine of
+``interpolate`` (a family's eliminant rebuilt from cheap specialisations); polynomials enter
+as ``fmpq_mpoly`` reduced mod the prime (``reduce``), never through sympy. ``terms`` gives
+every coefficient as a residue over 1, and ``primitive`` makes a polynomial monic (the
+lex-leading coefficient 1): the normalisation a modular image is compared and
+interpolated under.
+
+>>> import flint
+>>> ctx = flint.fmpq_mpoly_ctx.get(("x", "y"), "lex")
+>>> x, y = ctx.gens()
+>>> backend = ModularBackend(("x", "y"), 101)
+>>> f, g = backend.reduce(x**2 + y**2 - 1), backend.reduce(x - y / 2)
+>>> backend.resultant(f, g, "x")   # 5/4 y**2 - 1: 5/4 is 77 mod 101 (4 * 77 = 308 = 3*101 + 5)
+77*y^2 + 100
+>>> backend.primitive(backend.resultant(f, g, "x"))   # y**2 - 4/5: -4/5 is 80 mod 101 (5 * 80 = 400 = 4*101 - 4)
+y^2 + 80
+"""
+
+from collections.abc import Mapping, Sequence
+
+import flint
+import sympy
+
+from .protocol import Term
+
+__all__ = ["ModularBackend", "PRIMES"]
+
+
+
+def _primes_below(bound: int, count: int) -> tuple[int, ...]:
+    found: list[int] = []
+    candidate = bound - 1
+    while len(found) < count:
+        if flint.fmpz(candidate).is_prime():
+            found.append(candidate)
+        candidate -= 2
+    return tuple(found)
+
+
+# below 2**31: python-flint 0.9 fails sorting the factors of an nmod_mpoly whose coefficients
+# pass a C int (an OverflowError in its sort key), so larger word-size primes cannot be used
+PRIMES = _primes_below(2**31, 64)
+"""Primes below 2**31, largest first: one modular image each."""
+
+
+class ModularBackend:
+    """python-flint ``nmod_mpoly`` over ``names``, modulo the prime ``modulus``."""
+
+    name = "nmod"
+
+    def __init__(self, names: Sequence[str], modulus: int) -> None:
+        self.names = tuple(names)
+        self.modulus = modulus
+        self.index = {n: i for i, n in enumerate(self.names)}
+        self.ctx = flint.nmod_mpoly_ctx.get(self.names, modulus=modulus, ordering="lex")
+
+    def reduce(self, poly: flint.fmpq_mpoly) -> flint.nmod_mpoly:
+        """The rational polynomial ``poly`` (same names) mod the prime; a ZeroDivisionError if
+        the prime divides a denominator."""
+        p = self.modulus
+        return self.ctx.from_dict({m: int(c.p) * pow(int(c.q), -1, p) % p for m, c in poly.to_dict().items()})
+
+    def from_sympy(self, expr: sympy.Expr) -> flint.nmod_mpoly:
+        from ..system.convert import flint_context, to_flint  # sympy enters through convert only
+
+        return self.reduce(to_flint(expr, flint_context(self.names)))
+
+    def to_sympy(self, poly: flint.nmod_mpoly) -> sympy.Expr:
+        raise TypeError("a modular image has no sympy form: lift it first")
+
+    def variables(self, poly: flint.nmod_mpoly) -> set[str]:
+        return {n for n, d in zip(self.names, poly.degrees()) if d > 0}
+
+    def degree(self, poly: flint.nmod_mpoly, var: str) -> int:
+        return int(poly.degrees()[self.index[var]])
+
+    def is_constant(self, poly: flint.nmod_mpoly) -> bool:
+        return len(poly) <= 1 and not any(poly.degrees())
+
+    def total_degree(self, poly: flint.nmod_mpoly) -> int:
+        return int(poly.total_degree())
+
+    def nterms(self, poly: flint.nmod_mpoly) -> int:
+        return len(poly)
+
+    def coefficient_bits(self, poly: flint.nmod_mpoly) -> int:
+        return self.modulus.bit_length()
+
+    def is_zero(self, poly: flint.nmod_mpoly) -> bool:
+        return poly.is_zero()
+
+    def resultant(self, f: flint.nmod_mpoly, g: flint.nmod_mpoly, var: str) -> flint.nmod_mpoly:
+        return f.resultant(g, var)
+
+    def factors(self, poly: flint.nmod_mpoly) -> list[flint.nmod_mpoly]:
+        _, factors = poly.factor()
+        return [f for f, _ in factors]
+
+    def gcd(self, f: flint.nmod_mpoly, g: flint.nmod_mpoly) -> flint.nmod_mpoly:
+        return f.gcd(g)
+
+    def derivative(self, poly: flint.nmod_mpoly, var: str) -> flint.nmod_mpoly:
+        return poly.derivative(var)
+
+    def specialize(self, poly: flint.nmod_mpoly, values: Mapping[str, flint.fmpq]) -> flint.nmod_mpoly:
+        p = self.modulus
+        return poly.subs({n: int(v.p) * pow(int(v.q), -1, p) % p for n, v in values.items()})
+
+    def scale(self, poly: flint.nmod_mpoly, numerator: int, denominator: int) -> flint.nmod_mpoly:
+        return poly * (numerator * pow(denominator, -1, self.modulus) % self.modulus)
+
+    def substitute(self, poly: flint.nmod_mpoly, var: str, value: flint.nmod_mpoly) -> flint.nmod_mpoly:
+        parts = self.split(poly, [var])
+        total = self.zero()
+        for degree in range(max(e for (e,) in parts), -1, -1):
+            total = total * value + parts.get((degree,), self.zero())
+        return total
+
+    def terms(self, poly: flint.nmod_mpoly) -> list[Term]:
+        return [(m, int(c), 1) for m, c in zip(poly.monoms(), poly.coeffs())]
+
+    def zero(self) -> flint.nmod_mpoly:
+        return self.ctx.from_dict({})
+
+    def one(self) -> flint.nmod_mpoly:
+        return self.ctx.from_dict({(0,) * len(self.names): 1})
+
+    def divide(self, f: flint.nmod_mpoly, g: flint.nmod_mpoly) -> flint.nmod_mpoly:
+        quotient, _ = divmod(f, g)
+        return quotient
+
+    def quotient(self, f: flint.nmod_mpoly, g: flint.nmod_mpoly) -> flint.nmod_mpoly | None:
+        quotient, remainder = divmod(f, g)
+        return quotient if remainder.is_zero() else None
+
+    def split(self, poly: flint.nmod_mpoly, variables: Sequence[str]) -> dict[tuple[int, ...], flint.nmod_mpoly]:
+        """``{exponents in variables: coefficient}``, grouped from the terms (no division by
+        factorials: a small prime could divide them)."""
+        where = [self.index[v] for v in variables]
+        groups: dict[tuple[int, ...], dict[tuple[int, ...], int]] = {}
+        for monomial, coefficient in zip(poly.monoms(), poly.coeffs()):
+            key = tuple(monomial[i] for i in where)
+            rest = tuple(0 if i in where else e for i, e in enumerate(monomial))
+            groups.setdefault(key, {})[rest] = int(coefficient)
+        return {key: self.ctx.from_dict(terms) for key, terms in groups.items()}
+
+    def join(self, parts: Mapping[tuple[int, ...], flint.nmod_mpoly], variables: Sequence[str]) -> flint.nmod_mpoly:
+        gens = self.ctx.gens()
+        where = [gens[self.index[v]] for v in variables]
+        total = self.zero()
+        for exponents, coefficient in parts.items():
+            for gen, e in zip(where, exponents):
+                coefficient = coefficient * gen**e
+            total = total + coefficient
+        return total
+
+    def primitive(self, poly: flint.nmod_mpoly) -> flint.nmod_mpoly:
+        """``poly`` made monic: its lex-leading coefficient 1."""
+        if poly.is_zero():
+            return poly
+        return poly * pow(int(poly.coeffs()[0]), -1, self.modulus)
+
+    def groebner_lex(self, polys: Sequence[flint.nmod_mpoly], order: Sequence[str]) -> list[flint.nmod_mpoly]:
+        raise TypeError("no Gröbner bases mod a prime: the modular backend runs resultants and linear steps")
