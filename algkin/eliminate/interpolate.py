@@ -19,8 +19,9 @@ rebuilds the family's eliminant from such images:
   of total degree ``D``), recursively, one parameter at a time;
 - unlucky points (the image's factors not of the signature's degrees: a degree drop or an
   extra split) skipped, another residue drawn;
-- images under several primes joined by the Chinese remainder theorem and rational
-  reconstruction, primes added until reconstruction succeeds and the check passes;
+- images under several primes joined by the Chinese remainder theorem; the denominators
+  found by rational reconstruction, the numerators lifted as integers; primes added until
+  the check passes;
 - the check: at ``CHECKS`` random rational parameter values beyond the interpolation's
   needs, the interpolated eliminant specialised must equal, exactly, the eliminant computed
   directly at that point (both monic). It is recorded in the log as ``("checked-at", k)``.
@@ -36,6 +37,8 @@ r**4 - 26*r**2 + 36*y**2 + 25
 [('interpolated', 5), ('checked-at', 2)]
 """
 
+import collections
+import functools
 import math
 import random
 from collections.abc import Callable, Sequence
@@ -164,13 +167,21 @@ class _Family:
                                f"no check passed after {len(PRIMES)} primes")
 
     def _lift(self, residues: dict[tuple[int, ...], int], modulus: int) -> P | None:
-        """The rational polynomial the residues reconstruct, or None if one does not."""
+        """The rational polynomial the residues stand for: the denominators found by rational
+        reconstruction where it succeeds (those found more than once), then every coefficient times their lcm lifted as an
+        integer (symmetric range): half the bits rational reconstruction needs, so fewer primes
+        (the check decides). None if no coefficient reconstructs."""
+        seen = collections.Counter(int(value.q) for value in map(functools.partial(_rational, modulus=modulus),
+                                                                residues.values()) if value is not None)
+        # a false reconstruction's denominator is a random number: it does not come back
+        repeated = [q for q, count in seen.items() if count > 1]
+        if not repeated:
+            return None
+        common = math.lcm(*repeated)
         terms = {}
         for monomial, residue in residues.items():
-            value = _rational(residue, modulus)
-            if value is None:
-                return None
-            terms[monomial] = value
+            lifted = residue * common % modulus
+            terms[monomial] = flint.fmpq(lifted - modulus if 2 * lifted > modulus else lifted, common)
         ctx = self.polys[0].context()  # type: ignore[attr-defined]  # the flint backend's fmpq_mpoly
         return ctx.from_dict(terms)  # type: ignore[no-any-return]
 

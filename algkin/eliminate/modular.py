@@ -137,15 +137,21 @@ class ModularBackend:
         return quotient if remainder.is_zero() else None
 
     def split(self, poly: flint.nmod_mpoly, variables: Sequence[str]) -> dict[tuple[int, ...], flint.nmod_mpoly]:
-        """``{exponents in variables: coefficient}``, grouped from the terms (no division by
-        factorials: a small prime could divide them)."""
-        where = [self.index[v] for v in variables]
-        groups: dict[tuple[int, ...], dict[tuple[int, ...], int]] = {}
-        for monomial, coefficient in zip(poly.monoms(), poly.coeffs()):
-            key = tuple(monomial[i] for i in where)
-            rest = tuple(0 if i in where else e for i, e in enumerate(monomial))
-            groups.setdefault(key, {})[rest] = int(coefficient)
-        return {key: self.ctx.from_dict(terms) for key, terms in groups.items()}
+        """``{exponents in variables: coefficient}``, in C as on the flint backend: the
+        coefficient of ``x**k`` is the ``k``-th derivative at ``x = 0`` over ``k!`` (the
+        primes pass every degree, so ``k!`` is invertible)."""
+        if not variables:
+            return {(): poly}
+        name, parts, factorial, top = variables[0], {}, 1, self.degree(poly, variables[0])
+        for degree in range(top + 1):
+            part = poly.subs({name: 0}) if degree < top else poly
+            if not part.is_zero():
+                scaled = part * pow(factorial, -1, self.modulus) if factorial > 1 else part
+                for key, value in self.split(scaled, variables[1:]).items():
+                    parts[(degree,) + key] = value
+            if degree < top:
+                poly, factorial = poly.derivative(name), factorial * (degree + 1)
+        return parts
 
     def join(self, parts: Mapping[tuple[int, ...], flint.nmod_mpoly], variables: Sequence[str]) -> flint.nmod_mpoly:
         gens = self.ctx.gens()
