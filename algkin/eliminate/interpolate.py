@@ -12,7 +12,9 @@ rebuilds the family's eliminant from such images:
   the first witness's parameters and its ball check (the factors the motion lies on);
 - each image made monic (lex-leading coefficient 1): the eliminant is defined up to a factor
   in the parameters, and this fixes it when the leading coefficient is a number (on the
-  catalog's families it is); when it is not, the line test below fails and says so;
+  catalog's tracing-point families it is); when it is not, the line test below finds no
+  polynomial, and the method declines: the ``linear`` method runs instead, and the log says
+  ``("interpolation-declined", ...)``;
 - the total degree in the parameters found first, on a random line through them (Newton
   interpolation in one variable until two further images are predicted exactly); then dense
   Newton interpolation on a triangular grid (``(D + 1)(D + 2)/2`` images for two parameters
@@ -66,6 +68,10 @@ class _Unlucky(Exception):
     """Too many unlucky points in a row."""
 
 
+class _NotPolynomial(Exception):
+    """The monic images are not a polynomial of degree up to ``MAX_DEGREE`` in the parameters."""
+
+
 def interpolation(backend: Backend[P], polys: list[P], request: EliminationRequest) -> MethodOutcome[P]:
     """The eliminant of ``polys`` with ``request.parameters`` symbolic, by interpolating
     specialisations; ``linear`` itself when no parameter is held or the backend is not flint."""
@@ -74,7 +80,11 @@ def interpolation(backend: Backend[P], polys: list[P], request: EliminationReque
     if not parameters or backend.name != "flint":
         return linear_elimination(backend, polys, request)
     family = _Family(backend, polys, request, parameters)
-    return MethodOutcome([family.solve()], log=family.log)
+    try:
+        return MethodOutcome([family.solve()], log=family.log)
+    except _NotPolynomial:  # the leading coefficient holds a parameter: no monic normalisation
+        return MethodOutcome(polys, log=[("interpolation-declined", "leading coefficient")]).then(
+            linear_elimination(backend, polys, request))
 
 
 class _Family:
@@ -231,8 +241,7 @@ def _line_degree(image: Image, parameters: Sequence[str], prime: int, rng: rando
         hits = 0
         table.append(_divided(value, table, ts, t, prime))
         ts.append(t)
-    raise ComputationError(f"the family's eliminant, made monic, is not a polynomial of degree at most "
-                           f"{MAX_DEGREE} in {', '.join(parameters)}: its leading coefficient depends on them")
+    raise _NotPolynomial
 
 
 def _newton_value(table: Sequence[flint.nmod_mpoly], ts: Sequence[int], t: int, prime: int) -> flint.nmod_mpoly:
