@@ -39,7 +39,6 @@ r**4 - 26*r**2 + 36*y**2 + 25
 [('interpolated', 5), ('checked-at', 2)]
 """
 
-import collections
 import functools
 import math
 import random
@@ -59,6 +58,7 @@ __all__ = ["interpolation", "MAX_DEGREE", "CHECKS"]
 
 MAX_DEGREE = 80  # the largest total degree in the parameters looked for
 CHECKS = 2  # exact checks at random rational parameters, beyond the interpolation's needs
+SPARE_BITS = 6  # a reconstructed fraction is trusted for its denominator with this many bits to spare
 RETRIES = 20  # unlucky points skipped in a row before giving up
 
 Image = Callable[[dict[str, int]], "flint.nmod_mpoly | None"]
@@ -178,20 +178,27 @@ class _Family:
 
     def _lift(self, residues: dict[tuple[int, ...], int], modulus: int) -> P | None:
         """The rational polynomial the residues stand for: the denominators found by rational
-        reconstruction where it succeeds (those found more than once), then every coefficient times their lcm lifted as an
+        reconstruction where it succeeds with bits to spare, then every coefficient times their lcm lifted as an
         integer (symmetric range): half the bits rational reconstruction needs, so fewer primes
         (the check decides). None if no coefficient reconstructs."""
-        seen = collections.Counter(int(value.q) for value in map(functools.partial(_rational, modulus=modulus),
-                                                                residues.values()) if value is not None)
-        # a false reconstruction's denominator is a random number: it does not come back
-        repeated = [q for q, count in seen.items() if count > 1]
-        if not repeated:
+        # denominators are small (they divide the integer eliminant's leading coefficient), numerators
+        # not: reconstructions allowed a quarter of the bits for the denominator
+        rational = functools.partial(_rational, modulus=modulus, denominator_bits=modulus.bit_length() // 4)
+        found = [value for value in map(rational, residues.values()) if value is not None]
+        # a false reconstruction fills the bound (numerator times denominator near the modulus);
+        # a true one, of a small coefficient, leaves bits to spare
+        room = modulus.bit_length() - SPARE_BITS
+        denominators = {int(v.q) for v in found if int(v.p).bit_length() + int(v.q).bit_length() < room}
+        if not denominators:
             return None
-        common = math.lcm(*repeated)
+        common = math.lcm(*denominators)
         terms = {}
         for monomial, residue in residues.items():
             lifted = residue * common % modulus
-            terms[monomial] = flint.fmpq(lifted - modulus if 2 * lifted > modulus else lifted, common)
+            lifted = lifted - modulus if 2 * lifted > modulus else lifted
+            if abs(lifted).bit_length() >= room:  # a numerator filling the modulus: the lcm is short of a factor
+                return None
+            terms[monomial] = flint.fmpq(lifted, common)
         ctx = self.polys[0].context()  # type: ignore[attr-defined]  # the flint backend's fmpq_mpoly
         return ctx.from_dict(terms)  # type: ignore[no-any-return]
 
@@ -216,7 +223,10 @@ def _eliminant_factors(backend: Backend[P], polys: list[P], request: Elimination
     eliminant = left[0]
     for poly in left[1:]:
         eliminant = backend.gcd(eliminant, poly)
-    return [] if backend.is_constant(eliminant) else backend.factors(eliminant)
+    if backend.is_constant(eliminant):
+        return []
+    # the modular backend's ``factors`` gives squarefree parts: an image is cut to irreducibles
+    return getattr(backend, "irreducible", backend.factors)(eliminant)
 
 
 def _line_degree(image: Image, parameters: Sequence[str], prime: int, rng: random.Random) -> int:
@@ -327,13 +337,18 @@ def _crt(residues: dict[tuple[int, ...], int], modulus: int, poly: flint.nmod_mp
     return joined, modulus * prime
 
 
-def _rational(residue: int, modulus: int) -> flint.fmpq | None:
-    """The fraction ``n/d`` with ``|n|, d < sqrt(modulus/2)`` congruent to ``residue``, or None."""
-    bound = math.isqrt(modulus // 2)
+def _rational(residue: int, modulus: int, denominator_bits: int | None = None) -> flint.fmpq | None:
+    """The fraction ``n/d`` congruent to ``residue`` with ``d`` below ``2**denominator_bits``
+    and ``|n| d < modulus/2`` (by default ``|n|, d < sqrt(modulus/2)``), or None."""
+    if denominator_bits is None:
+        numerator_bound = denominator_bound = math.isqrt(modulus // 2)
+    else:
+        denominator_bound = 1 << denominator_bits
+        numerator_bound = modulus // (2 * denominator_bound)
     r0, r1, s0, s1 = modulus, residue % modulus, 0, 1
-    while r1 >= bound:
+    while r1 >= numerator_bound:
         q = r0 // r1
         r0, r1, s0, s1 = r1, r0 - q * r1, s1, s0 - q * s1
-    if s1 == 0 or abs(s1) >= bound:
+    if s1 == 0 or abs(s1) >= denominator_bound:
         return None
     return flint.fmpq(r1, s1) if s1 > 0 else flint.fmpq(-r1, -s1)

