@@ -47,6 +47,7 @@ from collections.abc import Callable, Sequence
 import flint
 
 from ..errors import ComputationError
+from .backends import FlintBackend
 from .linear import linear_elimination
 from .methods import prepare
 from .modular import PRIMES, ModularBackend
@@ -96,7 +97,8 @@ class _Family:
         self.kept = [n for n in backend.names if n not in request.eliminate and n not in parameters]
         self.random = random.Random(0x5EED)
         self.log: list[LogEntry] = []
-        self.signature = self._signature()
+        self.signature, self.drop = self._learn()
+        self.total = tuple(map(sum, zip(*self.signature)))  # the kept variables' degrees of their product
 
     # -- exact images, over QQ --------------------------------------------------------------
 
@@ -106,16 +108,25 @@ class _Family:
         polys = [backend.specialize(p, values) for p in self.polys]
         return _eliminant_factors(backend, polys, self.request)
 
-    def _signature(self) -> list[tuple[int, ...]]:
-        """The kept variables' degrees of each factor the motion lies on, at the first witness."""
+    def _learn(self) -> tuple[list[tuple[int, ...]], frozenset[tuple[int, ...]]]:
+        """At the first witness's parameters, over QQ with the witness choosing factors: the
+        signature (the kept variables' degrees of each final factor the motion lies on), and the
+        degree vectors of the intermediate factors it dropped (and no kept one shares): images
+        drop those too, early, and stay as small as the fixed curve's elimination."""
         point = next((w for group in self.request.witnesses for w in group), None)
         exact = getattr(point, "exact", {}) if point is not None else {}
-        if point is not None and all(n in exact for n in self.parameters):
-            factors = self._exact({n: exact[n] for n in self.parameters})
-            kept, _ = select_factors(self.backend, factors, [[point]], check=False)
-        else:  # no witness: every factor of a random specialisation
-            kept = self._exact(self._rational_point())
-        return sorted(self._degrees(f) for f in kept)
+        if point is None or not all(n in exact for n in self.parameters):  # no witness: keep every factor
+            return sorted(self._degrees(f) for f in self._exact(self._rational_point())), frozenset()
+        recording = _Recording(self.backend.names)
+        polys = [recording.specialize(p, {n: exact[n] for n in self.parameters}) for p in self.polys]
+        request = EliminationRequest(self.request.eliminate, [[point]], (), self.request.budget)
+        prepared = prepare(recording, polys, request.eliminate)
+        outcome = linear_elimination(recording, prepared.left, request)
+        final = _eliminant_factors(recording, outcome.left, EliminationRequest((), (), (), request.budget))
+        kept, _ = select_factors(recording, final, [[point]], check=False)
+        dropped = {tuple(f.degrees()) for f in outcome.dropped}
+        others = {tuple(f.degrees()) for f in recording.seen if not any(f == g for g in outcome.dropped)}
+        return sorted(self._degrees(f) for f in kept), frozenset(dropped - others)
 
     def _degrees(self, poly: P) -> tuple[int, ...]:
         return tuple(self.backend.degree(poly, n) for n in self.kept)
@@ -142,13 +153,18 @@ class _Family:
 
     def _images(self, prime: int) -> Image:
         """``residues -> the monic image mod prime`` (None at an unlucky point)."""
-        modular = ModularBackend(self.backend.names, prime)
+        modular = ModularBackend(self.backend.names, prime, self.drop)
         reduced = [modular.reduce(p) for p in self.polys]
 
         def image(point: dict[str, int]) -> flint.nmod_mpoly | None:
             polys = [p.subs(point) for p in reduced]
             try:
-                return self._pick(modular, _eliminant_factors(modular, polys, self.request))
+                eliminant = _eliminant(modular, polys, self.request)
+                if eliminant is None:
+                    return None
+                if self._degrees_in(modular, eliminant) == self.total:  # the signature's degrees already:
+                    return modular.primitive(eliminant)  # G here, up to a number (its factors, if it splits)
+                return self._pick(modular, modular.irreducible(eliminant))
             except (ComputationError, ZeroDivisionError):
                 return None  # a vanishing resultant or leading coefficient: not generic here
 
@@ -213,8 +229,21 @@ class _Family:
         return True
 
 
-def _eliminant_factors(backend: Backend[P], polys: list[P], request: EliminationRequest) -> list[P]:
-    """The irreducible factors of the eliminant of ``polys`` by the linear method, unselected."""
+class _Recording(FlintBackend):
+    """The flint backend, keeping every factor it was asked for."""
+
+    def __init__(self, names: Sequence[str]) -> None:
+        super().__init__(names)
+        self.seen: list[flint.fmpq_mpoly] = []
+
+    def factors(self, poly: flint.fmpq_mpoly) -> list[flint.fmpq_mpoly]:
+        found = super().factors(poly)
+        self.seen.extend(found)
+        return found
+
+
+def _eliminant(backend: Backend[P], polys: list[P], request: EliminationRequest) -> P | None:
+    """The eliminant of ``polys`` by the linear method, unselected (None: a number)."""
     bare = EliminationRequest(request.eliminate, (), (), request.budget)
     prepared = prepare(backend, polys, bare.eliminate)
     left = [p for p in linear_elimination(backend, prepared.left, bare).left if not backend.is_zero(p)]
@@ -223,10 +252,14 @@ def _eliminant_factors(backend: Backend[P], polys: list[P], request: Elimination
     eliminant = left[0]
     for poly in left[1:]:
         eliminant = backend.gcd(eliminant, poly)
-    if backend.is_constant(eliminant):
-        return []
+    return None if backend.is_constant(eliminant) else eliminant
+
+
+def _eliminant_factors(backend: Backend[P], polys: list[P], request: EliminationRequest) -> list[P]:
+    """The irreducible factors of the eliminant of ``polys`` by the linear method, unselected."""
+    eliminant = _eliminant(backend, polys, request)
     # the modular backend's ``factors`` gives squarefree parts: an image is cut to irreducibles
-    return getattr(backend, "irreducible", backend.factors)(eliminant)
+    return [] if eliminant is None else getattr(backend, "irreducible", backend.factors)(eliminant)
 
 
 def _line_degree(image: Image, parameters: Sequence[str], prime: int, rng: random.Random) -> int:

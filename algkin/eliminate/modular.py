@@ -47,13 +47,15 @@ PRIMES = _primes_below(2**31, 64)
 
 
 class ModularBackend:
-    """python-flint ``nmod_mpoly`` over ``names``, modulo the prime ``modulus``."""
+    """python-flint ``nmod_mpoly`` over ``names``, modulo the prime ``modulus``; ``drop``: the
+    degree vectors of factors ``factors`` leaves out (learned where witnesses chose)."""
 
     name = "nmod"
 
-    def __init__(self, names: Sequence[str], modulus: int) -> None:
+    def __init__(self, names: Sequence[str], modulus: int, drop: frozenset[tuple[int, ...]] = frozenset()) -> None:
         self.names = tuple(names)
         self.modulus = modulus
+        self.drop = drop
         self.index = {n: i for i, n in enumerate(self.names)}
         self.ctx = flint.nmod_mpoly_ctx.get(self.names, modulus=modulus, ordering="lex")
 
@@ -96,9 +98,14 @@ class ModularBackend:
         return f.resultant(g, var)
 
     def factors(self, poly: flint.nmod_mpoly) -> list[flint.nmod_mpoly]:
-        """The squarefree parts of ``poly``, not its irreducible factors: without witnesses the
-        methods keep every factor, and their product, the radical, is the same (a third faster
-        on the Stephenson III family's images). ``irreducible`` factors in full."""
+        """With ``drop`` (degree vectors of factors known not to hold the motion): the
+        irreducible factors but those, unless that leaves none. Without: the squarefree parts,
+        not the irreducible factors: without witnesses the methods keep every factor, and
+        their product, the radical, is the same (a third faster). ``irreducible`` factors in full."""
+        if self.drop:
+            found = self.irreducible(poly)
+            kept = [f for f in found if tuple(f.degrees()) not in self.drop]
+            return kept or found
         _, parts = poly.factor_squarefree()
         return [f for f, _ in parts]
 
