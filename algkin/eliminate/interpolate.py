@@ -44,6 +44,8 @@ import math
 import random
 from collections.abc import Callable, Sequence
 
+from typing import Any, cast
+
 import flint
 
 from ..errors import ComputationError
@@ -80,9 +82,9 @@ def interpolation(backend: Backend[P], polys: list[P], request: EliminationReque
     parameters = [n for n in backend.names if n in request.parameters and n in held]
     if not parameters or backend.name != "flint":
         return linear_elimination(backend, polys, request)
-    family = _Family(backend, polys, request, parameters)
+    family = _Family(cast(FlintBackend, backend), cast(list[flint.fmpq_mpoly], polys), request, parameters)
     try:
-        return MethodOutcome([family.solve()], log=family.log)
+        return MethodOutcome([cast(P, family.solve())], log=family.log)
     except _NotPolynomial:  # the leading coefficient holds a parameter: no monic normalisation
         return MethodOutcome(polys, log=[("interpolation-declined", "leading coefficient")]).then(
             linear_elimination(backend, polys, request))
@@ -91,7 +93,7 @@ def interpolation(backend: Backend[P], polys: list[P], request: EliminationReque
 class _Family:
     """One interpolation: the equations, the parameters, the signature, and what was done."""
 
-    def __init__(self, backend: Backend[P], polys: list[P], request: EliminationRequest,
+    def __init__(self, backend: FlintBackend, polys: list[flint.fmpq_mpoly], request: EliminationRequest,
                  parameters: list[str]) -> None:
         self.backend, self.polys, self.request, self.parameters = backend, polys, request, parameters
         self.kept = [n for n in backend.names if n not in request.eliminate and n not in parameters]
@@ -102,7 +104,7 @@ class _Family:
 
     # -- exact images, over QQ --------------------------------------------------------------
 
-    def _exact(self, values: dict[str, flint.fmpq]) -> list[P]:
+    def _exact(self, values: dict[str, flint.fmpq]) -> list[flint.fmpq_mpoly]:
         """The factors of the eliminant at the parameters ``values``, over QQ."""
         backend = self.backend
         polys = [backend.specialize(p, values) for p in self.polys]
@@ -128,14 +130,14 @@ class _Family:
         others = {tuple(f.degrees()) for f in recording.seen if not any(f == g for g in outcome.dropped)}
         return sorted(self._degrees(f) for f in kept), frozenset(dropped - others)
 
-    def _degrees(self, poly: P) -> tuple[int, ...]:
+    def _degrees(self, poly: flint.fmpq_mpoly) -> tuple[int, ...]:
         return tuple(self.backend.degree(poly, n) for n in self.kept)
 
     def _rational_point(self) -> dict[str, flint.fmpq]:
         return {n: flint.fmpq(self.random.randrange(-999, 1000), self.random.randrange(1, 1000))
                 for n in self.parameters}
 
-    def _pick(self, backend: Backend[P], factors: Sequence[P]) -> P | None:
+    def _pick(self, backend: Backend[Any], factors: Sequence[Any]) -> Any:
         """The monic product of the factors of the signature's degrees; None (an unlucky point)
         unless they are exactly the signature's."""
         chosen = [f for f in factors if self._degrees_in(backend, f) in self.signature]
@@ -146,7 +148,7 @@ class _Family:
             product = product * factor
         return backend.primitive(product)
 
-    def _degrees_in(self, backend: Backend[P], poly: P) -> tuple[int, ...]:
+    def _degrees_in(self, backend: Backend[Any], poly: Any) -> tuple[int, ...]:
         return tuple(backend.degree(poly, n) for n in self.kept)
 
     # -- modular images -----------------------------------------------------------------------
@@ -157,7 +159,7 @@ class _Family:
         reduced = [modular.reduce(p) for p in self.polys]
 
         def image(point: dict[str, int]) -> flint.nmod_mpoly | None:
-            polys = [p.subs(point) for p in reduced]
+            polys = [p.subs(cast("dict[str | int, int]", point)) for p in reduced]
             try:
                 eliminant = _eliminant(modular, polys, self.request)
                 if eliminant is None:
@@ -170,7 +172,7 @@ class _Family:
 
         return image
 
-    def solve(self) -> P:
+    def solve(self) -> flint.fmpq_mpoly:
         """The interpolated eliminant over QQ, checked."""
         residues: dict[tuple[int, ...], int] = {}
         modulus, degree, count = 1, None, 0
@@ -192,7 +194,7 @@ class _Family:
         raise ComputationError(f"interpolating the family in {', '.join(self.parameters)}: "
                                f"no check passed after {len(PRIMES)} primes")
 
-    def _lift(self, residues: dict[tuple[int, ...], int], modulus: int) -> P | None:
+    def _lift(self, residues: dict[tuple[int, ...], int], modulus: int) -> flint.fmpq_mpoly | None:
         """The rational polynomial the residues stand for: the denominators found by rational
         reconstruction where it succeeds with bits to spare, then every coefficient times their lcm lifted as an
         integer (symmetric range): half the bits rational reconstruction needs, so fewer primes
@@ -215,10 +217,9 @@ class _Family:
             if abs(lifted).bit_length() >= room:  # a numerator filling the modulus: the lcm is short of a factor
                 return None
             terms[monomial] = flint.fmpq(lifted, common)
-        ctx = self.polys[0].context()  # type: ignore[attr-defined]  # the flint backend's fmpq_mpoly
-        return ctx.from_dict(terms)  # type: ignore[no-any-return]
+        return self.backend.ctx.from_dict(terms)
 
-    def _check(self, candidate: P) -> bool:
+    def _check(self, candidate: flint.fmpq_mpoly) -> bool:
         """Whether ``candidate`` specialised equals the direct eliminant at ``CHECKS`` random points."""
         backend = self.backend
         for _ in range(CHECKS):
@@ -269,14 +270,17 @@ def _line_degree(image: Image, parameters: Sequence[str], prime: int, rng: rando
     slope = {n: rng.randrange(1, prime) for n in parameters}
     ts: list[int] = []
     table: list[flint.nmod_mpoly] = []  # Newton coefficients
-    hits = 0
+    hits, misses = 0, 0
     while len(ts) <= MAX_DEGREE + 2:
         t = rng.randrange(prime)
         value = image({n: (start[n] + slope[n] * t) % prime for n in parameters})
         if value is None or t in ts:
+            misses += 1
+            if misses > RETRIES:
+                raise ComputationError(f"interpolating in {', '.join(parameters)}: every image unlucky")
             continue
-        predicted = _newton_value(table, ts, t, prime)
-        if table and value == predicted:
+        misses = 0
+        if table and value == _newton_value(table, ts, t, prime):
             hits += 1
             if hits == 2:
                 return len(table) - 1
@@ -288,10 +292,10 @@ def _line_degree(image: Image, parameters: Sequence[str], prime: int, rng: rando
 
 
 def _newton_value(table: Sequence[flint.nmod_mpoly], ts: Sequence[int], t: int, prime: int) -> flint.nmod_mpoly:
-    """The Newton form ``table`` on nodes ``ts`` at ``t`` (Horner)."""
-    total = None
-    for k in range(len(table) - 1, -1, -1):
-        total = table[k] if total is None else total * ((t - ts[k]) % prime) + table[k]
+    """The Newton form ``table`` (not empty) on nodes ``ts`` at ``t`` (Horner)."""
+    total = table[-1]
+    for k in range(len(table) - 2, -1, -1):
+        total = total * ((t - ts[k]) % prime) + table[k]
     return total
 
 
@@ -351,7 +355,7 @@ def _peeled(image: Image, first: str, node: int, nodes: Sequence[int], parts: Se
             return None
         weight = 1
         for k, part in enumerate(parts):
-            value = value - part.subs(point) * weight if point else value - part * weight
+            value = value - (part.subs(cast("dict[str | int, int]", point)) if point else part) * weight
             weight = weight * (node - nodes[k]) % prime
         return value * pow(weight, -1, prime)
 

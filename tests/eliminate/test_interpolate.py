@@ -121,3 +121,14 @@ def test_stephenson_iii_family_equals_the_fixed_point_curves():
     for _ in range(2):
         values = {n: sympy.Rational(rng.randrange(-40, 40), rng.randrange(1, 20)) for n in ("u", "v")}
         assert _among(_at(family.elimination.polynomial, values), _direct(task, values))
+
+
+def test_curve_interpolates_a_symbolic_tracing_point_beyond_a_four_bar():
+    from algkin.derivation.pipeline import family_method
+
+    family = _curve_task("stephenson-iii-family", ["u", "v"])
+    assert family_method(family, "linear") == "interpolate"
+    assert family_method(family, "resultant") == "resultant"  # a method asked for by name is kept
+    assert family_method(_curve_task("stephenson-iii-family", []), "linear") == "linear"  # nothing symbolic
+    assert family_method(_curve_task("fourbar", ["p", "q"]), "linear") == "linear"  # four unknowns: linear is fast
+    assert family_method(_curve_task("fourbar", ["a", "d", "l", "m", "p", "q"]), "linear") == "linear"
