@@ -35,20 +35,23 @@ rebuilds the family's eliminant from such images:
 >>> result = eliminate(circles, ["x"], ["y", "r"], method="interpolate", parameters=["r"])
 >>> sympy.factor(result.polynomial)
 r**4 - 26*r**2 + 36*y**2 + 25
->>> [entry for entry in result.log if entry[0] in ("interpolated", "checked-at")]  # degree 4 in r: 5 images, one prime
-[('interpolated', 5), ('checked-at', 2)]
+>>> [entry for entry in result.log if entry[0] in ("interpolated", "checked-at")]  # degree 4 in r: 5 images, two primes
+[('interpolated', 10), ('checked-at', 2)]
 """
 
 import functools
 import math
+import multiprocessing
+import os
 import random
 from collections.abc import Callable, Sequence
 
-from typing import Any, cast
+from typing import Any, TypeVar, cast
 
 import flint
 
 from ..errors import ComputationError
+from ..runtime.budget import bind_to_parent
 from .backends import FlintBackend
 from .linear import linear_elimination
 from .methods import prepare
@@ -63,6 +66,8 @@ MAX_DEGREE = 80  # the largest total degree in the parameters looked for
 CHECKS = 2  # exact checks at random rational parameters, beyond the interpolation's needs
 SPARE_BITS = 6  # a reconstructed fraction is trusted for its denominator with this many bits to spare
 RETRIES = 20  # unlucky points skipped in a row before giving up
+
+_T = TypeVar("_T")
 
 Image = Callable[[dict[str, int]], "flint.nmod_mpoly | None"]
 
@@ -173,26 +178,33 @@ class _Family:
         return image
 
     def solve(self) -> flint.fmpq_mpoly:
-        """The interpolated eliminant over QQ, checked."""
+        """The interpolated eliminant over QQ, checked: primes two at a time, the second's
+        images in a forked child (the two cores of a small machine)."""
         residues: dict[tuple[int, ...], int] = {}
-        modulus, degree, count = 1, None, 0
-        for prime in PRIMES:
-            image = self._images(prime)
-            if degree is None:
-                degree = _line_degree(image, self.parameters, prime, self.random)
-                self.log.append(("parameter-degree", degree))
-            try:
-                poly, used = _newton(image, self.parameters, degree, prime, self.random)
-            except _Unlucky:
-                continue
-            count += used
-            residues, modulus = _crt(residues, modulus, poly, prime)
-            candidate = self._lift(residues, modulus)
+        modulus, count = 1, 0
+        degree = _line_degree(self._images(PRIMES[0]), self.parameters, PRIMES[0], self.random)
+        self.log.append(("parameter-degree", degree))
+        for first, second in zip(PRIMES[::2], PRIMES[1::2]):
+            for prime, found in zip((first, second), _both(self._interpolated, (first, degree), (second, degree))):
+                if found is None:  # unlucky throughout: the next prime
+                    continue
+                values, used = found
+                count += used
+                residues, modulus = _crt(residues, modulus, values, prime)
+            candidate = self._lift(residues, modulus) if residues else None
             if candidate is not None and self._check(candidate):
                 self.log += [("interpolated", count), ("checked-at", CHECKS)]
                 return candidate
         raise ComputationError(f"interpolating the family in {', '.join(self.parameters)}: "
                                f"no check passed after {len(PRIMES)} primes")
+
+    def _interpolated(self, prime: int, degree: int) -> tuple[dict[tuple[int, ...], int], int] | None:
+        """The family mod ``prime`` (monomial -> residue) and the images it took; None if unlucky."""
+        try:
+            poly, used = _newton(self._images(prime), self.parameters, degree, prime, random.Random(prime))
+        except _Unlucky:
+            return None
+        return {m: int(c) for m, c in zip(poly.monoms(), poly.coeffs())}, used
 
     def _lift(self, residues: dict[tuple[int, ...], int], modulus: int) -> flint.fmpq_mpoly | None:
         """The rational polynomial the residues stand for: the denominators found by rational
@@ -362,16 +374,43 @@ def _peeled(image: Image, first: str, node: int, nodes: Sequence[int], parts: Se
     return peeled
 
 
-def _crt(residues: dict[tuple[int, ...], int], modulus: int, poly: flint.nmod_mpoly, prime: int
+def _crt(residues: dict[tuple[int, ...], int], modulus: int, new: dict[tuple[int, ...], int], prime: int
          ) -> tuple[dict[tuple[int, ...], int], int]:
-    """The residues mod ``modulus`` joined with ``poly``'s mod ``prime``."""
-    new = {m: int(c) for m, c in zip(poly.monoms(), poly.coeffs())}
+    """The residues mod ``modulus`` joined with ``new``'s mod ``prime``."""
     inverse = pow(modulus, -1, prime)
     joined = {}
     for monomial in set(residues) | set(new):
         old = residues.get(monomial, 0)
         joined[monomial] = old + modulus * ((new.get(monomial, 0) - old) * inverse % prime)
     return joined, modulus * prime
+
+
+def _both(work: Callable[..., _T], here: tuple[Any, ...], there: tuple[Any, ...]) -> tuple[_T, _T]:
+    """``(work(*here), work(*there))``, the second in a forked child while the first runs here;
+    both here where fork is missing. The child dies with this process and is always reaped."""
+    if "fork" not in multiprocessing.get_all_start_methods():
+        return work(*here), work(*there)
+    receive, send = multiprocessing.Pipe(duplex=False)
+    child = multiprocessing.get_context("fork").Process(target=_child, args=(work, there, send, os.getpid()),
+                                                         daemon=True)
+    child.start()
+    try:
+        mine = work(*here)
+        ok, theirs = receive.recv()
+        if not ok:
+            raise ComputationError(f"interpolating in a child process: {theirs}")
+        return mine, theirs
+    finally:
+        child.kill()
+        child.join()
+
+
+def _child(work: Callable[..., Any], arguments: tuple[Any, ...], pipe: Any, parent: int) -> None:
+    bind_to_parent(parent)
+    try:
+        pipe.send((True, work(*arguments)))
+    except Exception as error:  # the parent raises it
+        pipe.send((False, f"{type(error).__name__}: {error}"))
 
 
 def _rational(residue: int, modulus: int, denominator_bits: int | None = None) -> flint.fmpq | None:
