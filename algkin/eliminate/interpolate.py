@@ -387,8 +387,9 @@ def _crt(residues: dict[tuple[int, ...], int], modulus: int, new: dict[tuple[int
 
 def _both(work: Callable[..., _T], here: tuple[Any, ...], there: tuple[Any, ...]) -> tuple[_T, _T]:
     """``(work(*here), work(*there))``, the second in a forked child while the first runs here;
-    both here where fork is missing. The child dies with this process and is always reaped."""
-    if "fork" not in multiprocessing.get_all_start_methods():
+    both here where fork is missing or this process may have no children (a daemonic one, such
+    as a bench measurement's). The child dies with this process and is always reaped."""
+    if "fork" not in multiprocessing.get_all_start_methods() or multiprocessing.current_process().daemon:
         return work(*here), work(*there)
     receive, send = multiprocessing.Pipe(duplex=False)
     child = multiprocessing.get_context("fork").Process(target=_child, args=(work, there, send, os.getpid()),

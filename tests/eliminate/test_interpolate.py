@@ -37,6 +37,16 @@ def test_a_leading_coefficient_in_the_parameters_declines_to_linear():
     assert _same_up_to_constant(result.polynomial, 4 * d**2 * y**2 + (r**2 - 4 + d**2)**2 - 4 * d**2 * r**2)
 
 
+def test_a_daemonic_process_interpolates_without_a_child():
+    from algkin.bench.measure import measure
+
+    circles = [x**2 + y**2 - r**2, (x - 3)**2 + y**2 - s**2]
+    seconds, log, note = measure(lambda: eliminate(circles, ["x"], ["y", "r", "s"], method="interpolate",
+                                                   parameters=["r", "s"]), lambda e: e.log, 60)
+    assert seconds is not None, note  # a bench measurement runs in a daemonic child
+    assert ("checked-at", 2) in log
+
+
 def test_no_parameter_is_the_linear_method():
     circles = [x**2 + y**2 - 1, (x - 1)**2 + y**2 - 1]
     result = eliminate(circles, ["x"], ["y"], method="interpolate")
