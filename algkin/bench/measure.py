@@ -4,7 +4,8 @@ sympy and python-flint cannot be interrupted from inside a call, so each measure
 in a child that is killed at the budget. The first run is a warm-up and is not counted
 (caches, imports); then runs repeat until they add up to ``MIN_SECONDS`` over at least
 ``MIN_REPEATS`` runs, stopping when one more would pass half the budget. The median is
-reported.
+reported, with the child's peak resident memory (``getrusage``: it counts what the child
+shares with the parent it was forked from, so it bounds the run's own peak from above).
 
 >>> seconds, summary, note = measure(lambda: sum(range(1000)), lambda total: total, budget=10)
 >>> summary, seconds < 0.01, note.startswith("median of")
@@ -13,6 +14,7 @@ reported.
 
 import multiprocessing
 import os
+import resource
 import statistics
 import time
 
@@ -40,6 +42,11 @@ def measure(run, summarize, budget):
         child.join()
 
 
+def _peak():
+    """The process's peak resident memory so far, as a note (Linux reports kilobytes)."""
+    return f"peak RSS {resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024:.0f} MB"
+
+
 def _child(run, summarize, pipe, budget, parent_pid):
     bind_to_parent(parent_pid)
     progress.hand_over(None)  # the stages of every run repeated would only flicker: the parent says the row
@@ -56,8 +63,9 @@ def _child(run, summarize, pipe, budget, parent_pid):
             result = run()
             times.append(time.perf_counter() - mark)
         if times:
-            pipe.send((statistics.median(times), summarize(result), f"median of {len(times)} runs after a warm-up"))
+            pipe.send((statistics.median(times), summarize(result),
+                       f"median of {len(times)} runs after a warm-up; {_peak()}"))
         else:
-            pipe.send((warm_up, summarize(result), "one run (no time left for repeats)"))
+            pipe.send((warm_up, summarize(result), f"one run (no time left for repeats); {_peak()}"))
     except Exception as error:  # the parent reports it in the row and goes on
         pipe.send((None, None, f"failed: {type(error).__name__}: {str(error)[:120]}"))

@@ -18,6 +18,7 @@ from ..errors import UsageError
 __all__ = ["Problem", "PROBLEMS", "problem_names", "build"]
 
 FOURBAR_DIMENSIONS = ("a", "d", "l", "m", "p", "q")
+FAMILY_PARAMETERS = ("u", "v")  # the tracing point's frame coordinates in stephenson-iii-family
 
 
 @dataclass(frozen=True)
@@ -86,6 +87,10 @@ PROBLEMS = {
     "watt-i": ("the Watt I six-bar coupler curve", lambda: _curve("watt-i", "P"), lambda: _curve_run("watt-i", "P")),
     "stephenson-iii": ("the Stephenson III six-bar coupler curve (degree 18, circularity 9)",
                        lambda: _curve("stephenson-iii", "P"), lambda: _curve_run("stephenson-iii", "P")),
+    "stephenson-iii-family": ("the Stephenson III's coupler curves with the tracing point (u, v) symbolic: "
+                              "one polynomial in x, y, u, v",
+                              lambda: _curve("stephenson-iii-family", "P", FAMILY_PARAMETERS),
+                              lambda: _curve_run("stephenson-iii-family", "P", FAMILY_PARAMETERS)),
 }
 
 

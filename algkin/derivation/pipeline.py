@@ -33,11 +33,12 @@ from ..system import inputs_json, symbol
 from ..verify import Verification, verify_branches
 from .tasks import curve_task, eliminant_tasks
 
-__all__ = ["derive", "curve", "Derivation", "CurveResult", "witnesses", "certify_labels", "compile_and_branch",
+__all__ = ["derive", "curve", "family_method", "Derivation", "CurveResult", "witnesses", "certify_labels", "compile_and_branch",
            "check_setup"]
 
 WITNESS_BITS = 256
 WITNESSES_PER_BRANCH = 3
+FAMILY_UNKNOWNS = 4  # eliminated unknowns up to which a family stays with the linear method
 PREPARED_SCENES = 32  # compiled scenes (with their branches) kept for the next call
 _PREPARED = collections.OrderedDict()
 _CHECKED = collections.OrderedDict()
@@ -364,6 +365,20 @@ def _refuse_still(prepared, branches, point):
         raise UsageError("--point", point, f"is fixed at ({x}, {y}): its trajectory is a point, not a curve")
 
 
+def family_method(task, method):
+    """``interpolate`` for the default method when the curve's parameters enter only the
+    traced point's own equations (a symbolic tracing point: every specialisation is a fixed
+    curve, cheap to eliminate, while the linear method would carry them through every
+    resultant), and more than a four-bar's four unknowns are eliminated (a four-bar's
+    family takes the linear method milliseconds); ``method`` otherwise."""
+    coordinates = {symbol(v) for v in task.keep[:2]}
+    held = [e for e in task.equations if e.free_symbols & {symbol(p) for p in task.parameters}]
+    if method != DEFAULT_METHOD or len(task.eliminate) <= FAMILY_UNKNOWNS or not held \
+            or any(not e.free_symbols & coordinates for e in held):
+        return method
+    return "interpolate"
+
+
 def curve(scene: SceneLike, point: str, method: str = DEFAULT_METHOD, backend: str = "flint",
           params: Sequence[str] = (), samples: int = 40, seed: int = 0, budget: Budget | None = None,
           set: Values | None = None) -> CurveResult:  # noqa: A002 - as in derive
@@ -396,7 +411,7 @@ def _curve(scene, values, point, params, start, method, backend, samples, seed, 
     _refuse_still(prepared, branches, point)
     with _timed(timings, "eliminate"):
         task = curve_task(compiled, groups, point)
-        result = task.run(method, backend, budget)
+        result = task.run(family_method(task, method), backend, budget)
     variables = task.keep[:2]
     figures = _curve_figures(result, variables)
     budget.note(f"verifying the curve of {point} in {compiled.scene.name}")

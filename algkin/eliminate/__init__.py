@@ -9,7 +9,7 @@
 >>> eliminate(circles, ["x"], ["y", "c", "s"], method="magic")
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: method='magic': unknown elimination method; valid: groebner, linear, resultant
+algkin.errors.UsageError: method='magic': unknown elimination method; valid: groebner, interpolate, linear, resultant
 >>> eliminate(circles, ["x"], ["y", "c", "s"], method="resultant", budget=Budget(terms=5))
 Traceback (most recent call last):
 ...
@@ -29,6 +29,7 @@ from ..errors import ComputationError, UsageError
 from ..runtime.budget import Budget, current
 from ..system.convert import flint_context, to_flint
 from .backends import BACKENDS
+from .interpolate import interpolation
 from .linear import linear_elimination
 from .methods import groebner_basis, prepare, resultant_chain
 from .factor import factor_with
@@ -40,7 +41,8 @@ __all__ = ["eliminate", "Elimination", "Witness", "Budget", "current", "METHODS"
            "method_names", "backend_names"]
 
 
-METHODS: dict[str, Method] = {"resultant": resultant_chain, "groebner": groebner_basis, "linear": linear_elimination}
+METHODS: dict[str, Method] = {"resultant": resultant_chain, "groebner": groebner_basis, "linear": linear_elimination,
+                             "interpolate": interpolation}
 DEFAULT_METHOD = "linear"  # measured fastest on every catalog problem: ``algkin bench``
 
 _T = TypeVar("_T")

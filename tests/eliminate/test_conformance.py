@@ -74,7 +74,7 @@ def test_inconsistent_system_fails_loudly(method, backend):
 
 
 def test_unknown_names_list_the_valid_ones():
-    with pytest.raises(UsageError, match="valid: groebner, linear, resultant"):
+    with pytest.raises(UsageError, match="valid: groebner, interpolate, linear, resultant"):
         eliminate([x - 1], [], ["x"], method="magic")
     with pytest.raises(UsageError, match="valid: flint, sympy"):
         eliminate([x - 1], [], ["x"], backend="maple")

@@ -1,0 +1,431 @@
+"""A family's eliminant by evaluation and interpolation in its parameters.
+
+When symbolic parameters enter only where they cost most (a tracing point's frame
+coordinates ``u, v`` on a six-bar, carried through every resultant), eliminating them along
+with everything else is out of reach, while each specialisation (the parameters set to
+numbers) is an ordinary fixed curve, eliminated in milliseconds. The ``interpolate`` method
+rebuilds the family's eliminant from such images:
+
+- images modulo word-size primes (``ModularBackend``), the parameters set to residues; each
+  image eliminated by the ``linear`` method, factored, and cut to the factors of the
+  *signature*: their degrees in the kept variables, read once from an exact elimination at
+  the first witness's parameters and its ball check (the factors the motion lies on);
+- each image made monic (lex-leading coefficient 1): the eliminant is defined up to a factor
+  in the parameters, and this fixes it when the leading coefficient is a number (on the
+  catalog's tracing-point families it is); when it is not, the line test below finds no
+  polynomial, and the method declines: the ``linear`` method runs instead, and the log says
+  ``("interpolation-declined", ...)``;
+- the total degree in the parameters found first, on a random line through them (Newton
+  interpolation in one variable until two further images are predicted exactly); then dense
+  Newton interpolation on a triangular grid (``(D + 1)(D + 2)/2`` images for two parameters
+  of total degree ``D``), recursively, one parameter at a time;
+- unlucky points (the image's factors not of the signature's degrees: a degree drop or an
+  extra split) skipped, another residue drawn;
+- images under several primes joined by the Chinese remainder theorem; the denominators
+  found by rational reconstruction, the numerators lifted as integers; primes added until
+  the check passes;
+- the check: at ``CHECKS`` random rational parameter values beyond the interpolation's
+  needs, the interpolated eliminant specialised must equal, exactly, the eliminant computed
+  directly at that point (both monic). It is recorded in the log as ``("checked-at", k)``.
+
+>>> import sympy
+>>> from algkin.eliminate import eliminate
+>>> x, y, r = sympy.symbols("x y r")
+>>> circles = [x**2 + y**2 - r**2, (x - 3)**2 + y**2 - 4]   # y of the crossing, radius r symbolic
+>>> result = eliminate(circles, ["x"], ["y", "r"], method="interpolate", parameters=["r"])
+>>> sympy.factor(result.polynomial)
+r**4 - 26*r**2 + 36*y**2 + 25
+>>> [entry for entry in result.log if entry[0] in ("interpolated", "checked-at")]  # degree 4 in r: 5 images, two primes
+[('interpolated', 10), ('checked-at', 2)]
+"""
+
+import functools
+import math
+import multiprocessing
+import os
+import random
+from collections.abc import Callable, Sequence
+
+from typing import Any, TypeVar, cast
+
+import flint
+
+from ..errors import ComputationError
+from ..runtime.budget import bind_to_parent
+from .backends import FlintBackend
+from .linear import linear_elimination
+from .methods import prepare
+from .modular import PRIMES, ModularBackend
+from .protocol import Backend, P
+from .request import EliminationRequest, LogEntry, MethodOutcome
+from .select import select_factors
+
+__all__ = ["interpolation", "MAX_DEGREE", "CHECKS"]
+
+MAX_DEGREE = 80  # the largest total degree in the parameters looked for
+CHECKS = 2  # exact checks at random rational parameters, beyond the interpolation's needs
+SPARE_BITS = 6  # a reconstructed fraction is trusted for its denominator with this many bits to spare
+RETRIES = 20  # unlucky points skipped in a row before giving up
+
+_T = TypeVar("_T")
+
+Image = Callable[[dict[str, int]], "flint.nmod_mpoly | None"]
+
+
+class _Unlucky(Exception):
+    """Too many unlucky points in a row."""
+
+
+class _NotPolynomial(Exception):
+    """The monic images are not a polynomial of degree up to ``MAX_DEGREE`` in the parameters."""
+
+
+def interpolation(backend: Backend[P], polys: list[P], request: EliminationRequest) -> MethodOutcome[P]:
+    """The eliminant of ``polys`` with ``request.parameters`` symbolic, by interpolating
+    specialisations; ``linear`` itself when no parameter is held or the backend is not flint."""
+    held = set().union(*(backend.variables(p) for p in polys)) if polys else set()
+    parameters = [n for n in backend.names if n in request.parameters and n in held]
+    if not parameters or backend.name != "flint":
+        return linear_elimination(backend, polys, request)
+    family = _Family(cast(FlintBackend, backend), cast(list[flint.fmpq_mpoly], polys), request, parameters)
+    try:
+        return MethodOutcome([cast(P, family.solve())], log=family.log)
+    except _NotPolynomial:  # the leading coefficient holds a parameter: no monic normalisation
+        return MethodOutcome(polys, log=[("interpolation-declined", "leading coefficient")]).then(
+            linear_elimination(backend, polys, request))
+
+
+class _Family:
+    """One interpolation: the equations, the parameters, the signature, and what was done."""
+
+    def __init__(self, backend: FlintBackend, polys: list[flint.fmpq_mpoly], request: EliminationRequest,
+                 parameters: list[str]) -> None:
+        self.backend, self.polys, self.request, self.parameters = backend, polys, request, parameters
+        self.kept = [n for n in backend.names if n not in request.eliminate and n not in parameters]
+        self.random = random.Random(0x5EED)
+        self.log: list[LogEntry] = []
+        self.signature, self.drop = self._learn()
+        self.total = tuple(map(sum, zip(*self.signature)))  # the kept variables' degrees of their product
+
+    # -- exact images, over QQ --------------------------------------------------------------
+
+    def _exact(self, values: dict[str, flint.fmpq]) -> list[flint.fmpq_mpoly]:
+        """The factors of the eliminant at the parameters ``values``, over QQ."""
+        backend = self.backend
+        polys = [backend.specialize(p, values) for p in self.polys]
+        return _eliminant_factors(backend, polys, self.request)
+
+    def _learn(self) -> tuple[list[tuple[int, ...]], frozenset[tuple[int, ...]]]:
+        """At the first witness's parameters, over QQ with the witness choosing factors: the
+        signature (the kept variables' degrees of each final factor the motion lies on), and the
+        degree vectors of the intermediate factors it dropped (and no kept one shares): images
+        drop those too, early, and stay as small as the fixed curve's elimination."""
+        point = next((w for group in self.request.witnesses for w in group), None)
+        exact = getattr(point, "exact", {}) if point is not None else {}
+        if point is None or not all(n in exact for n in self.parameters):  # no witness: keep every factor
+            return sorted(self._degrees(f) for f in self._exact(self._rational_point())), frozenset()
+        recording = _Recording(self.backend.names)
+        polys = [recording.specialize(p, {n: exact[n] for n in self.parameters}) for p in self.polys]
+        request = EliminationRequest(self.request.eliminate, [[point]], (), self.request.budget)
+        prepared = prepare(recording, polys, request.eliminate)
+        outcome = linear_elimination(recording, prepared.left, request)
+        final = _eliminant_factors(recording, outcome.left, EliminationRequest((), (), (), request.budget))
+        kept, _ = select_factors(recording, final, [[point]], check=False)
+        dropped = {tuple(f.degrees()) for f in outcome.dropped}
+        others = {tuple(f.degrees()) for f in recording.seen if not any(f == g for g in outcome.dropped)}
+        return sorted(self._degrees(f) for f in kept), frozenset(dropped - others)
+
+    def _degrees(self, poly: flint.fmpq_mpoly) -> tuple[int, ...]:
+        return tuple(self.backend.degree(poly, n) for n in self.kept)
+
+    def _rational_point(self) -> dict[str, flint.fmpq]:
+        return {n: flint.fmpq(self.random.randrange(-999, 1000), self.random.randrange(1, 1000))
+                for n in self.parameters}
+
+    def _pick(self, backend: Backend[Any], factors: Sequence[Any]) -> Any:
+        """The monic product of the factors of the signature's degrees; None (an unlucky point)
+        unless they are exactly the signature's."""
+        chosen = [f for f in factors if self._degrees_in(backend, f) in self.signature]
+        if sorted(self._degrees_in(backend, f) for f in chosen) != self.signature:
+            return None
+        product = chosen[0]
+        for factor in chosen[1:]:
+            product = product * factor
+        return backend.primitive(product)
+
+    def _degrees_in(self, backend: Backend[Any], poly: Any) -> tuple[int, ...]:
+        return tuple(backend.degree(poly, n) for n in self.kept)
+
+    # -- modular images -----------------------------------------------------------------------
+
+    def _images(self, prime: int) -> Image:
+        """``residues -> the monic image mod prime`` (None at an unlucky point)."""
+        modular = ModularBackend(self.backend.names, prime, self.drop)
+        reduced = [modular.reduce(p) for p in self.polys]
+
+        def image(point: dict[str, int]) -> flint.nmod_mpoly | None:
+            polys = [p.subs(cast("dict[str | int, int]", point)) for p in reduced]
+            try:
+                eliminant = _eliminant(modular, polys, self.request)
+                if eliminant is None:
+                    return None
+                if self._degrees_in(modular, eliminant) == self.total:  # the signature's degrees already:
+                    return modular.primitive(eliminant)  # G here, up to a number (its factors, if it splits)
+                return self._pick(modular, modular.irreducible(eliminant))
+            except (ComputationError, ZeroDivisionError):
+                return None  # a vanishing resultant or leading coefficient: not generic here
+
+        return image
+
+    def solve(self) -> flint.fmpq_mpoly:
+        """The interpolated eliminant over QQ, checked: primes two at a time, the second's
+        images in a forked child (the two cores of a small machine)."""
+        residues: dict[tuple[int, ...], int] = {}
+        modulus, count = 1, 0
+        degree = _line_degree(self._images(PRIMES[0]), self.parameters, PRIMES[0], self.random)
+        self.log.append(("parameter-degree", degree))
+        for first, second in zip(PRIMES[::2], PRIMES[1::2]):
+            for prime, found in zip((first, second), _both(self._interpolated, (first, degree), (second, degree))):
+                if found is None:  # unlucky throughout: the next prime
+                    continue
+                values, used = found
+                count += used
+                residues, modulus = _crt(residues, modulus, values, prime)
+            candidate = self._lift(residues, modulus) if residues else None
+            if candidate is not None and self._check(candidate):
+                self.log += [("interpolated", count), ("checked-at", CHECKS)]
+                return candidate
+        raise ComputationError(f"interpolating the family in {', '.join(self.parameters)}: "
+                               f"no check passed after {len(PRIMES)} primes")
+
+    def _interpolated(self, prime: int, degree: int) -> tuple[dict[tuple[int, ...], int], int] | None:
+        """The family mod ``prime`` (monomial -> residue) and the images it took; None if unlucky."""
+        try:
+            poly, used = _newton(self._images(prime), self.parameters, degree, prime, random.Random(prime))
+        except _Unlucky:
+            return None
+        return {m: int(c) for m, c in zip(poly.monoms(), poly.coeffs())}, used
+
+    def _lift(self, residues: dict[tuple[int, ...], int], modulus: int) -> flint.fmpq_mpoly | None:
+        """The rational polynomial the residues stand for: the denominators found by rational
+        reconstruction where it succeeds with bits to spare, then every coefficient times their lcm lifted as an
+        integer (symmetric range): half the bits rational reconstruction needs, so fewer primes
+        (the check decides). None if no coefficient reconstructs."""
+        # denominators are small (they divide the integer eliminant's leading coefficient), numerators
+        # not: reconstructions allowed a quarter of the bits for the denominator
+        rational = functools.partial(_rational, modulus=modulus, denominator_bits=modulus.bit_length() // 4)
+        found = [value for value in map(rational, residues.values()) if value is not None]
+        # a false reconstruction fills the bound (numerator times denominator near the modulus);
+        # a true one, of a small coefficient, leaves bits to spare
+        room = modulus.bit_length() - SPARE_BITS
+        denominators = {int(v.q) for v in found if int(v.p).bit_length() + int(v.q).bit_length() < room}
+        if not denominators:
+            return None
+        common = math.lcm(*denominators)
+        terms = {}
+        for monomial, residue in residues.items():
+            lifted = residue * common % modulus
+            lifted = lifted - modulus if 2 * lifted > modulus else lifted
+            if abs(lifted).bit_length() >= room:  # a numerator filling the modulus: the lcm is short of a factor
+                return None
+            terms[monomial] = flint.fmpq(lifted, common)
+        return self.backend.ctx.from_dict(terms)
+
+    def _check(self, candidate: flint.fmpq_mpoly) -> bool:
+        """Whether ``candidate`` specialised equals the direct eliminant at ``CHECKS`` random points."""
+        backend = self.backend
+        for _ in range(CHECKS):
+            values = self._rational_point()
+            direct = self._pick(backend, self._exact(values))
+            if direct is None or backend.primitive(backend.specialize(candidate, values)) != direct:
+                return False
+        return True
+
+
+class _Recording(FlintBackend):
+    """The flint backend, keeping every factor it was asked for."""
+
+    def __init__(self, names: Sequence[str]) -> None:
+        super().__init__(names)
+        self.seen: list[flint.fmpq_mpoly] = []
+
+    def factors(self, poly: flint.fmpq_mpoly) -> list[flint.fmpq_mpoly]:
+        found = super().factors(poly)
+        self.seen.extend(found)
+        return found
+
+
+def _eliminant(backend: Backend[P], polys: list[P], request: EliminationRequest) -> P | None:
+    """The eliminant of ``polys`` by the linear method, unselected (None: a number)."""
+    bare = EliminationRequest(request.eliminate, (), (), request.budget)
+    prepared = prepare(backend, polys, bare.eliminate)
+    left = [p for p in linear_elimination(backend, prepared.left, bare).left if not backend.is_zero(p)]
+    if not left:
+        raise ComputationError("nothing left after eliminating")
+    eliminant = left[0]
+    for poly in left[1:]:
+        eliminant = backend.gcd(eliminant, poly)
+    return None if backend.is_constant(eliminant) else eliminant
+
+
+def _eliminant_factors(backend: Backend[P], polys: list[P], request: EliminationRequest) -> list[P]:
+    """The irreducible factors of the eliminant of ``polys`` by the linear method, unselected."""
+    eliminant = _eliminant(backend, polys, request)
+    # the modular backend's ``factors`` gives squarefree parts: an image is cut to irreducibles
+    return [] if eliminant is None else getattr(backend, "irreducible", backend.factors)(eliminant)
+
+
+def _line_degree(image: Image, parameters: Sequence[str], prime: int, rng: random.Random) -> int:
+    """The total degree in the parameters: Newton interpolation along a random line through
+    them until the next two images are predicted exactly."""
+    start = {n: rng.randrange(prime) for n in parameters}
+    slope = {n: rng.randrange(1, prime) for n in parameters}
+    ts: list[int] = []
+    table: list[flint.nmod_mpoly] = []  # Newton coefficients
+    hits, misses = 0, 0
+    while len(ts) <= MAX_DEGREE + 2:
+        t = rng.randrange(prime)
+        value = image({n: (start[n] + slope[n] * t) % prime for n in parameters})
+        if value is None or t in ts:
+            misses += 1
+            if misses > RETRIES:
+                raise ComputationError(f"interpolating in {', '.join(parameters)}: every image unlucky")
+            continue
+        misses = 0
+        if table and value == _newton_value(table, ts, t, prime):
+            hits += 1
+            if hits == 2:
+                return len(table) - 1
+            continue
+        hits = 0
+        table.append(_divided(value, table, ts, t, prime))
+        ts.append(t)
+    raise _NotPolynomial
+
+
+def _newton_value(table: Sequence[flint.nmod_mpoly], ts: Sequence[int], t: int, prime: int) -> flint.nmod_mpoly:
+    """The Newton form ``table`` (not empty) on nodes ``ts`` at ``t`` (Horner)."""
+    total = table[-1]
+    for k in range(len(table) - 2, -1, -1):
+        total = total * ((t - ts[k]) % prime) + table[k]
+    return total
+
+
+def _divided(value: flint.nmod_mpoly, table: Sequence[flint.nmod_mpoly], ts: Sequence[int], t: int,
+             prime: int) -> flint.nmod_mpoly:
+    """The next Newton coefficient, for the node ``t`` with ``value``."""
+    residual = value - _newton_value(table, ts, t, prime) if table else value
+    weight = 1
+    for node in ts:
+        weight = weight * (t - node) % prime
+    return residual * pow(weight, -1, prime)
+
+
+def _newton(image: Image, parameters: Sequence[str], degree: int, prime: int, rng: random.Random
+            ) -> tuple[flint.nmod_mpoly, int]:
+    """The polynomial of total degree ``degree`` in ``parameters`` whose values ``image`` gives,
+    by Newton interpolation on a triangular grid; and how many images it took."""
+    if not parameters:
+        value = image({})
+        if value is None:
+            raise _Unlucky
+        return value, 1
+    first, rest = parameters[0], parameters[1:]
+    nodes: list[int] = []
+    parts: list[flint.nmod_mpoly] = []  # h_i: G = sum_i prod_{k<i} (first - nodes[k]) h_i(rest)
+    used = 0
+    for i in range(degree + 1):
+        for _ in range(RETRIES):
+            node = rng.randrange(prime)
+            if node in nodes:
+                continue
+            try:
+                part, count = _newton(_peeled(image, first, node, nodes, parts, prime), rest, degree - i, prime, rng)
+            except _Unlucky:
+                continue
+            used += count
+            nodes.append(node)
+            parts.append(part)
+            break
+        else:
+            raise _Unlucky
+    gen = parts[0].context().gens()[parts[0].context().names().index(first)]
+    total, basis = parts[0] * 0, parts[0] * 0 + 1
+    for node, part in zip(nodes, parts):
+        total = total + basis * part
+        basis = basis * (gen - node)
+    return total, used
+
+
+def _peeled(image: Image, first: str, node: int, nodes: Sequence[int], parts: Sequence[flint.nmod_mpoly],
+            prime: int) -> Image:
+    """Images of the next Newton part at ``first = node``: the known parts subtracted, divided
+    by their basis there."""
+    def peeled(point: dict[str, int]) -> flint.nmod_mpoly | None:
+        value = image({first: node, **point})
+        if value is None:
+            return None
+        weight = 1
+        for k, part in enumerate(parts):
+            value = value - (part.subs(cast("dict[str | int, int]", point)) if point else part) * weight
+            weight = weight * (node - nodes[k]) % prime
+        return value * pow(weight, -1, prime)
+
+    return peeled
+
+
+def _crt(residues: dict[tuple[int, ...], int], modulus: int, new: dict[tuple[int, ...], int], prime: int
+         ) -> tuple[dict[tuple[int, ...], int], int]:
+    """The residues mod ``modulus`` joined with ``new``'s mod ``prime``."""
+    inverse = pow(modulus, -1, prime)
+    joined = {}
+    for monomial in set(residues) | set(new):
+        old = residues.get(monomial, 0)
+        joined[monomial] = old + modulus * ((new.get(monomial, 0) - old) * inverse % prime)
+    return joined, modulus * prime
+
+
+def _both(work: Callable[..., _T], here: tuple[Any, ...], there: tuple[Any, ...]) -> tuple[_T, _T]:
+    """``(work(*here), work(*there))``, the second in a forked child while the first runs here;
+    both here where fork is missing or this process may have no children (a daemonic one, such
+    as a bench measurement's). The child dies with this process and is always reaped."""
+    if "fork" not in multiprocessing.get_all_start_methods() or multiprocessing.current_process().daemon:
+        return work(*here), work(*there)
+    receive, send = multiprocessing.Pipe(duplex=False)
+    child = multiprocessing.get_context("fork").Process(target=_child, args=(work, there, send, os.getpid()),
+                                                         daemon=True)
+    child.start()
+    try:
+        mine = work(*here)
+        ok, theirs = receive.recv()
+        if not ok:
+            raise ComputationError(f"interpolating in a child process: {theirs}")
+        return mine, theirs
+    finally:
+        child.kill()
+        child.join()
+
+
+def _child(work: Callable[..., Any], arguments: tuple[Any, ...], pipe: Any, parent: int) -> None:
+    bind_to_parent(parent)
+    try:
+        pipe.send((True, work(*arguments)))
+    except Exception as error:  # the parent raises it
+        pipe.send((False, f"{type(error).__name__}: {error}"))
+
+
+def _rational(residue: int, modulus: int, denominator_bits: int | None = None) -> flint.fmpq | None:
+    """The fraction ``n/d`` congruent to ``residue`` with ``d`` below ``2**denominator_bits``
+    and ``|n| d < modulus/2`` (by default ``|n|, d < sqrt(modulus/2)``), or None."""
+    if denominator_bits is None:
+        numerator_bound = denominator_bound = math.isqrt(modulus // 2)
+    else:
+        denominator_bound = 1 << denominator_bits
+        numerator_bound = modulus // (2 * denominator_bound)
+    r0, r1, s0, s1 = modulus, residue % modulus, 0, 1
+    while r1 >= numerator_bound:
+        q = r0 // r1
+        r0, r1, s0, s1 = r1, r0 - q * r1, s1, s0 - q * s1
+    if s1 == 0 or abs(s1) >= denominator_bound:
+        return None
+    return flint.fmpq(r1, s1) if s1 > 0 else flint.fmpq(-r1, -s1)

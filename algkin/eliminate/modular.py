@@ -1,0 +1,188 @@
+"""A backend over a word-size prime field: the same methods, on residues.
+
+``ModularBackend`` implements the backend protocol on python-flint's ``nmod_mpoly``: the
+elimination methods run on it unchanged, with coefficients mod a prime. It is the engine of
+``interpolate`` (a family's eliminant rebuilt from cheap specialisations); polynomials enter
+as ``fmpq_mpoly`` reduced mod the prime (``reduce``), never through sympy. ``terms`` gives
+every coefficient as a residue over 1, and ``primitive`` makes a polynomial monic (the
+lex-leading coefficient 1): the normalisation a modular image is compared and
+interpolated under.
+
+>>> import flint
+>>> ctx = flint.fmpq_mpoly_ctx.get(("x", "y"), "lex")
+>>> x, y = ctx.gens()
+>>> backend = ModularBackend(("x", "y"), 101)
+>>> f, g = backend.reduce(x**2 + y**2 - 1), backend.reduce(x - y / 2)
+>>> backend.resultant(f, g, "x")   # 5/4 y**2 - 1: 5/4 is 77 mod 101 (4 * 77 = 308 = 3*101 + 5)
+77*y^2 + 100
+>>> backend.primitive(backend.resultant(f, g, "x"))   # y**2 - 4/5: -4/5 is 80 mod 101 (5 * 80 = 400 = 4*101 - 4)
+y^2 + 80
+"""
+
+from collections.abc import Mapping, Sequence
+
+import flint
+import sympy
+
+from .protocol import Term
+
+__all__ = ["ModularBackend", "PRIMES"]
+
+
+
+def _primes_below(bound: int, count: int) -> tuple[int, ...]:
+    found: list[int] = []
+    candidate = bound - 1
+    while len(found) < count:
+        if flint.fmpz(candidate).is_prime():
+            found.append(candidate)
+        candidate -= 2
+    return tuple(found)
+
+
+# below 2**31: python-flint 0.9 fails sorting the factors of an nmod_mpoly whose coefficients
+# pass a C int (an OverflowError in its sort key), so larger word-size primes cannot be used
+PRIMES = _primes_below(2**31, 64)
+"""Primes below 2**31, largest first: one modular image each."""
+
+
+class ModularBackend:
+    """python-flint ``nmod_mpoly`` over ``names``, modulo the prime ``modulus``; ``drop``: the
+    degree vectors of factors ``factors`` leaves out (learned where witnesses chose)."""
+
+    name = "nmod"
+
+    def __init__(self, names: Sequence[str], modulus: int, drop: frozenset[tuple[int, ...]] = frozenset()) -> None:
+        self.names = tuple(names)
+        self.modulus = modulus
+        self.drop = drop
+        self.index = {n: i for i, n in enumerate(self.names)}
+        self.ctx = flint.nmod_mpoly_ctx.get(self.names, modulus=modulus, ordering="lex")
+
+    def reduce(self, poly: flint.fmpq_mpoly) -> flint.nmod_mpoly:
+        """The rational polynomial ``poly`` (same names) mod the prime; a ZeroDivisionError if
+        the prime divides a denominator."""
+        p = self.modulus
+        return self.ctx.from_dict({m: int(c.p) * pow(int(c.q), -1, p) % p for m, c in poly.to_dict().items()})
+
+    def from_sympy(self, expr: sympy.Expr) -> flint.nmod_mpoly:
+        from ..system.convert import flint_context, to_flint  # sympy enters through convert only
+
+        return self.reduce(to_flint(expr, flint_context(self.names)))
+
+    def to_sympy(self, poly: flint.nmod_mpoly) -> sympy.Expr:
+        raise TypeError("a modular image has no sympy form: lift it first")
+
+    def variables(self, poly: flint.nmod_mpoly) -> set[str]:
+        return {n for n, d in zip(self.names, poly.degrees()) if d > 0}
+
+    def degree(self, poly: flint.nmod_mpoly, var: str) -> int:
+        return int(poly.degrees()[self.index[var]])
+
+    def is_constant(self, poly: flint.nmod_mpoly) -> bool:
+        return len(poly) <= 1 and not any(poly.degrees())
+
+    def total_degree(self, poly: flint.nmod_mpoly) -> int:
+        return int(poly.total_degree())
+
+    def nterms(self, poly: flint.nmod_mpoly) -> int:
+        return len(poly)
+
+    def coefficient_bits(self, poly: flint.nmod_mpoly) -> int:
+        return self.modulus.bit_length()
+
+    def is_zero(self, poly: flint.nmod_mpoly) -> bool:
+        return poly.is_zero()
+
+    def resultant(self, f: flint.nmod_mpoly, g: flint.nmod_mpoly, var: str) -> flint.nmod_mpoly:
+        return f.resultant(g, var)
+
+    def factors(self, poly: flint.nmod_mpoly) -> list[flint.nmod_mpoly]:
+        """With ``drop`` (degree vectors of factors known not to hold the motion): the
+        irreducible factors but those, unless that leaves none. Without: the squarefree parts,
+        not the irreducible factors: without witnesses the methods keep every factor, and
+        their product, the radical, is the same (a third faster). ``irreducible`` factors in full."""
+        if self.drop:
+            found = self.irreducible(poly)
+            kept = [f for f in found if tuple(f.degrees()) not in self.drop]
+            return kept or found
+        _, parts = poly.factor_squarefree()
+        return [f for f, _ in parts]
+
+    def irreducible(self, poly: flint.nmod_mpoly) -> list[flint.nmod_mpoly]:
+        """The distinct irreducible factors of ``poly``."""
+        _, factors = poly.factor()
+        return [f for f, _ in factors]
+
+    def gcd(self, f: flint.nmod_mpoly, g: flint.nmod_mpoly) -> flint.nmod_mpoly:
+        return f.gcd(g)
+
+    def derivative(self, poly: flint.nmod_mpoly, var: str) -> flint.nmod_mpoly:
+        return poly.derivative(var)
+
+    def specialize(self, poly: flint.nmod_mpoly, values: Mapping[str, flint.fmpq]) -> flint.nmod_mpoly:
+        p = self.modulus
+        return poly.subs({n: int(v.p) * pow(int(v.q), -1, p) % p for n, v in values.items()})
+
+    def scale(self, poly: flint.nmod_mpoly, numerator: int, denominator: int) -> flint.nmod_mpoly:
+        return poly * (numerator * pow(denominator, -1, self.modulus) % self.modulus)
+
+    def substitute(self, poly: flint.nmod_mpoly, var: str, value: flint.nmod_mpoly) -> flint.nmod_mpoly:
+        parts = self.split(poly, [var])
+        total = self.zero()
+        for degree in range(max(e for (e,) in parts), -1, -1):
+            total = total * value + parts.get((degree,), self.zero())
+        return total
+
+    def terms(self, poly: flint.nmod_mpoly) -> list[Term]:
+        return [(m, int(c), 1) for m, c in zip(poly.monoms(), poly.coeffs())]
+
+    def zero(self) -> flint.nmod_mpoly:
+        return self.ctx.from_dict({})
+
+    def one(self) -> flint.nmod_mpoly:
+        return self.ctx.from_dict({(0,) * len(self.names): 1})
+
+    def divide(self, f: flint.nmod_mpoly, g: flint.nmod_mpoly) -> flint.nmod_mpoly:
+        quotient, _ = divmod(f, g)
+        return quotient
+
+    def quotient(self, f: flint.nmod_mpoly, g: flint.nmod_mpoly) -> flint.nmod_mpoly | None:
+        quotient, remainder = divmod(f, g)
+        return quotient if remainder.is_zero() else None
+
+    def split(self, poly: flint.nmod_mpoly, variables: Sequence[str]) -> dict[tuple[int, ...], flint.nmod_mpoly]:
+        """``{exponents in variables: coefficient}``, in C as on the flint backend: the
+        coefficient of ``x**k`` is the ``k``-th derivative at ``x = 0`` over ``k!`` (the
+        primes pass every degree, so ``k!`` is invertible)."""
+        if not variables:
+            return {(): poly}
+        name, parts, factorial, top = variables[0], {}, 1, self.degree(poly, variables[0])
+        for degree in range(top + 1):
+            part = poly.subs({name: 0}) if degree < top else poly
+            if not part.is_zero():
+                scaled = part * pow(factorial, -1, self.modulus) if factorial > 1 else part
+                for key, value in self.split(scaled, variables[1:]).items():
+                    parts[(degree,) + key] = value
+            if degree < top:
+                poly, factorial = poly.derivative(name), factorial * (degree + 1)
+        return parts
+
+    def join(self, parts: Mapping[tuple[int, ...], flint.nmod_mpoly], variables: Sequence[str]) -> flint.nmod_mpoly:
+        gens = self.ctx.gens()
+        where = [gens[self.index[v]] for v in variables]
+        total = self.zero()
+        for exponents, coefficient in parts.items():
+            for gen, e in zip(where, exponents):
+                coefficient = coefficient * gen**e
+            total = total + coefficient
+        return total
+
+    def primitive(self, poly: flint.nmod_mpoly) -> flint.nmod_mpoly:
+        """``poly`` made monic: its lex-leading coefficient 1."""
+        if poly.is_zero():
+            return poly
+        return poly * pow(int(poly.coeffs()[0]), -1, self.modulus)
+
+    def groebner_lex(self, polys: Sequence[flint.nmod_mpoly], order: Sequence[str]) -> list[flint.nmod_mpoly]:
+        raise TypeError("no Gröbner bases mod a prime: the modular backend runs resultants and linear steps")

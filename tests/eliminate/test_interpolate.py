@@ -1,0 +1,144 @@
+"""The interpolate method: hand-derived families, exact agreement with direct specialisation,
+unlucky points skipped, and the cases it declines."""
+
+import random
+
+import flint
+import pytest
+import sympy
+
+from algkin.eliminate import eliminate
+from algkin.eliminate.interpolate import _newton, _rational
+from algkin.eliminate.modular import PRIMES, ModularBackend
+
+x, y, r, s, d = sympy.symbols("x y r s d", real=True)  # algkin's symbols are real
+
+
+def _same_up_to_constant(a, b):
+    ratio = sympy.cancel(sympy.expand(a) / sympy.expand(b))
+    return ratio.is_number and ratio != 0
+
+
+def test_two_circles_with_symbolic_radii_by_hand():
+    # circles about (0, 0) and (3, 0) with radii r and s: subtracting, 6x = r**2 - s**2 + 9,
+    # and 36 y**2 = 36 r**2 - (r**2 - s**2 + 9)**2
+    circles = [x**2 + y**2 - r**2, (x - 3)**2 + y**2 - s**2]
+    result = eliminate(circles, ["x"], ["y", "r", "s"], method="interpolate", parameters=["r", "s"])
+    assert _same_up_to_constant(result.polynomial, 36 * y**2 + (r**2 - s**2 + 9)**2 - 36 * r**2)
+    assert dict(result.log)["parameter-degree"] == 4
+    assert ("checked-at", 2) in result.log
+
+
+def test_a_leading_coefficient_in_the_parameters_declines_to_linear():
+    # centres 0 and d apart: 4 d**2 y**2 = 4 d**2 r**2 - (r**2 - 4 + d**2)**2, the y**2 term holds d
+    circles = [x**2 + y**2 - r**2, (x - d)**2 + y**2 - 4]
+    result = eliminate(circles, ["x"], ["y", "r", "d"], method="interpolate", parameters=["r", "d"])
+    assert ("interpolation-declined", "leading coefficient") in result.log
+    assert _same_up_to_constant(result.polynomial, 4 * d**2 * y**2 + (r**2 - 4 + d**2)**2 - 4 * d**2 * r**2)
+
+
+def test_a_daemonic_process_interpolates_without_a_child():
+    from algkin.bench.measure import measure
+
+    circles = [x**2 + y**2 - r**2, (x - 3)**2 + y**2 - s**2]
+    seconds, log, note = measure(lambda: eliminate(circles, ["x"], ["y", "r", "s"], method="interpolate",
+                                                   parameters=["r", "s"]), lambda e: e.log, 60)
+    assert seconds is not None, note  # a bench measurement runs in a daemonic child
+    assert ("checked-at", 2) in log
+
+
+def test_no_parameter_is_the_linear_method():
+    circles = [x**2 + y**2 - 1, (x - 1)**2 + y**2 - 1]
+    result = eliminate(circles, ["x"], ["y"], method="interpolate")
+    assert _same_up_to_constant(result.polynomial, 4 * y**2 - 3)  # x = 1/2
+
+
+def test_unlucky_points_are_skipped():
+    prime = PRIMES[0]
+    backend = ModularBackend(("x", "u", "v"), prime)
+    gx, gu, gv = backend.ctx.gens()
+    family = gx**2 + (3 * gu**2 - gv) * gx + gu * gv**3 + 5
+    refused = []
+
+    def image(point):
+        if point["u"] % 3 == 0 or (point["u"] + point["v"]) % 5 == 0:  # a third and a fifth unlucky
+            refused.append(point)
+            return None
+        return family.subs(point)
+
+    found, used = _newton(image, ["u", "v"], 4, prime, random.Random(3))
+    assert found == family
+    assert used == 15  # (4 + 1)(4 + 2)/2 grid points, the refused ones not counted
+    assert refused
+
+
+@pytest.mark.parametrize("numerator,denominator", [(3, 7), (-123456, 7919), (0, 1), (5, 1)])
+def test_rational_reconstruction(numerator, denominator):
+    modulus = PRIMES[0] * PRIMES[1]
+    residue = numerator * pow(denominator, -1, modulus) % modulus
+    assert _rational(residue, modulus) == flint.fmpq(numerator, denominator)
+
+
+def _curve_task(scene, params):
+    from algkin.derivation.pipeline import compile_and_branch
+    from algkin.derivation.tasks import curve_task
+    from algkin.scene import load_scene
+
+    compiled, _, groups, _ = compile_and_branch(load_scene(scene), ["P"], params)
+    return curve_task(compiled, groups, "P")
+
+
+def _direct(task, values):
+    """The irreducible factors of the eliminant of the equations specialised at ``values``
+    (no witnesses: they hold other values of the parameters)."""
+    from algkin.system import symbol
+
+    replace = {symbol(n): v for n, v in values.items()}
+    equations = [sympy.expand(e.xreplace(replace)) for e in task.equations]
+    return eliminate(equations, task.eliminate, task.keep[:2]).factors
+
+
+def _among(poly, factors):
+    return any(_same_up_to_constant(poly, f) for f in factors)
+
+
+def _at(poly, values):
+    return sympy.expand(poly.xreplace({sympy.Symbol(n, real=True): v for n, v in values.items()}))
+
+
+def test_fourbar_coupler_point_family_equals_direct_specialisation():
+    # P's frame coordinates p, q symbolic: every rational (p, q) gives the fixed four-bar's curve
+    task = _curve_task("fourbar", ["p", "q"])
+    family = task.run("interpolate", "flint")
+    assert family.method == "interpolate" and ("checked-at", 2) in family.log
+    rng = random.Random(11)
+    for _ in range(3):
+        values = {n: sympy.Rational(rng.randrange(-50, 50), rng.randrange(1, 30)) for n in ("p", "q")}
+        assert _among(_at(family.polynomial, values), _direct(task, values))
+
+
+@pytest.mark.slow
+def test_stephenson_iii_family_equals_the_fixed_point_curves():
+    from algkin.derivation.pipeline import curve
+
+    family = curve("stephenson-iii-family", "P", params=["u", "v"], samples=8)
+    assert family.elimination.method == "interpolate" and family.verification.passed
+    fixed = curve("stephenson-iii", "P", samples=0).elimination.polynomial  # the catalog's (1/2, 1/4)
+    assert _same_up_to_constant(_at(family.elimination.polynomial, {"u": sympy.Rational(1, 2),
+                                                                    "v": sympy.Rational(1, 4)}), fixed)
+    task = _curve_task("stephenson-iii-family", ["u", "v"])
+    rng = random.Random(5)
+    for _ in range(2):
+        values = {n: sympy.Rational(rng.randrange(-40, 40), rng.randrange(1, 20)) for n in ("u", "v")}
+        assert _among(_at(family.elimination.polynomial, values), _direct(task, values))
+
+
+def test_curve_interpolates_a_symbolic_tracing_point_beyond_a_four_bar():
+    from algkin.derivation.pipeline import family_method
+
+    family = _curve_task("stephenson-iii-family", ["u", "v"])
+    assert family_method(family, "linear") == "interpolate"
+    assert family_method(family, "resultant") == "resultant"  # a method asked for by name is kept
+    assert family_method(_curve_task("stephenson-iii-family", []), "linear") == "linear"  # nothing symbolic
+    assert family_method(_curve_task("fourbar", ["p", "q"]), "linear") == "linear"  # four unknowns: linear is fast
+    assert family_method(_curve_task("fourbar", ["a", "d", "l", "m", "p", "q"]), "linear") == "linear"
