@@ -7,7 +7,7 @@ through ``algkin.system.convert``.
 
 import math
 from collections.abc import Mapping, Sequence
-from typing import cast
+from typing import Any, cast
 
 import flint
 import sympy
@@ -17,17 +17,108 @@ from .factor import certified_irreducible
 from .protocol import BackendFactory, Term
 from ..system.convert import flint_context, to_flint, to_flint_integer, to_sympy
 
-__all__ = ["FlintBackend", "SympyBackend", "BACKENDS"]
+__all__ = ["FlintBackend", "FlintMpolys", "SympyBackend", "BACKENDS"]
 
 
-class FlintBackend:
+class FlintMpolys:
+    """What python-flint's multivariate polynomials answer alike over the rationals
+    (``fmpq_mpoly``) and modulo a prime (``nmod_mpoly``): the two backends share these, each
+    adding what its coefficients decide (conversion, factoring, scaling, normalisation).
+    ``self.ctx`` is the subclass's polynomial context over ``names``."""
+
+    ctx: Any
+
+    def __init__(self, names: Sequence[str]) -> None:
+        self.names = tuple(names)
+        self.index = {n: i for i, n in enumerate(self.names)}
+
+    def variables(self, poly: Any) -> set[str]:
+        return {n for n, d in zip(self.names, poly.degrees()) if d > 0}
+
+    def degree(self, poly: Any, var: str) -> int:
+        return int(poly.degrees()[self.index[var]])
+
+    def is_constant(self, poly: Any) -> bool:
+        # flint's is_constant scans every term for the total degree; a constant has one term
+        return len(poly) <= 1 and not any(poly.degrees())
+
+    def total_degree(self, poly: Any) -> int:
+        return int(poly.total_degree())
+
+    def nterms(self, poly: Any) -> int:
+        return len(poly)
+
+    def is_zero(self, poly: Any) -> bool:
+        return bool(poly.is_zero())
+
+    def resultant(self, f: Any, g: Any, var: str) -> Any:
+        return f.resultant(g, var)
+
+    def gcd(self, f: Any, g: Any) -> Any:
+        return f.gcd(g)
+
+    def derivative(self, poly: Any, var: str) -> Any:
+        return poly.derivative(var)
+
+    def scale(self, poly: Any, numerator: int, denominator: int) -> Any:
+        """``poly * numerator / denominator``: what the coefficients' ring says (each backend's own)."""
+        raise NotImplementedError
+
+    def substitute(self, poly: Any, var: str, value: Any) -> Any:
+        """``poly`` with ``var`` replaced by the polynomial ``value`` (Horner in ``var``)."""
+        parts = self.split(poly, [var])
+        total = self.zero()
+        for degree in range(max(e for (e,) in parts), -1, -1):
+            total = total * value + parts.get((degree,), self.zero())
+        return total
+
+    def zero(self) -> Any:
+        return self.ctx.from_dict({})
+
+    def one(self) -> Any:
+        return self.ctx.from_dict({(0,) * len(self.names): 1})
+
+    def quotient(self, f: Any, g: Any) -> Any | None:
+        """``f / g`` if ``g`` divides ``f``, else None."""
+        quotient, remainder = divmod(f, g)
+        return quotient if remainder.is_zero() else None
+
+    def split(self, poly: Any, variables: Sequence[str]) -> dict[tuple[int, ...], Any]:
+        """``{exponents in variables: coefficient free of them}``, in C: the coefficient of
+        ``x**k`` is the ``k``-th derivative at ``x = 0`` over ``k!`` (a Python loop over
+        the terms is ten times slower; modulo a prime above every degree ``k!`` is invertible)."""
+        if not variables:
+            return {(): poly}
+        name, parts, factorial, top = variables[0], {}, 1, self.degree(poly, variables[0])
+        for degree in range(top + 1):
+            part = poly.subs({name: 0}) if degree < top else poly
+            if not part.is_zero():
+                scaled = self.scale(part, 1, factorial) if factorial > 1 else part
+                for key, value in self.split(scaled, variables[1:]).items():
+                    parts[(degree,) + key] = value
+            if degree < top:
+                poly, factorial = poly.derivative(name), factorial * (degree + 1)
+        return parts
+
+    def join(self, parts: Mapping[tuple[int, ...], Any], variables: Sequence[str]) -> Any:
+        """The inverse of ``split``."""
+        gens = self.ctx.gens()
+        where = [gens[self.index[v]] for v in variables]
+        total = self.zero()
+        for exponents, coefficient in parts.items():
+            for gen, e in zip(where, exponents):
+                coefficient = coefficient * gen**e
+            total = total + coefficient
+        return total
+
+
+class FlintBackend(FlintMpolys):
     """python-flint ``fmpq_mpoly``: resultants, factoring and Buchberger in C."""
 
     name = "flint"
 
     def __init__(self, names: Sequence[str]) -> None:
-        self.names = tuple(names)
-        self.index = {n: i for i, n in enumerate(self.names)}
+        super().__init__(names)
         self.ctx = flint_context(self.names, "lex")
 
     def from_sympy(self, expr: sympy.Expr) -> flint.fmpq_mpoly:
@@ -36,30 +127,8 @@ class FlintBackend:
     def to_sympy(self, poly: flint.fmpq_mpoly) -> sympy.Expr:
         return to_sympy(poly, self.ctx)
 
-    def variables(self, poly: flint.fmpq_mpoly) -> set[str]:
-        return {n for n, d in zip(self.names, poly.degrees()) if d > 0}
-
-    def degree(self, poly: flint.fmpq_mpoly, var: str) -> int:
-        return int(poly.degrees()[self.index[var]])
-
-    def is_constant(self, poly: flint.fmpq_mpoly) -> bool:
-        # flint's is_constant scans every term for the total degree; a constant has one term
-        return len(poly) <= 1 and not any(poly.degrees())
-
-    def total_degree(self, poly: flint.fmpq_mpoly) -> int:
-        return int(poly.total_degree())
-
-    def nterms(self, poly: flint.fmpq_mpoly) -> int:
-        return len(poly)
-
     def coefficient_bits(self, poly: flint.fmpq_mpoly) -> int:
         return max((int(c.p).bit_length() + int(c.q).bit_length() for c in poly.coeffs()), default=0)
-
-    def is_zero(self, poly: flint.fmpq_mpoly) -> bool:
-        return poly.is_zero()
-
-    def resultant(self, f: flint.fmpq_mpoly, g: flint.fmpq_mpoly, var: str) -> flint.fmpq_mpoly:
-        return f.resultant(g, var)
 
     def factors(self, poly: flint.fmpq_mpoly) -> list[flint.fmpq_mpoly]:
         # beyond three variables, specializing to one proves irreducibility faster than flint's
@@ -69,12 +138,6 @@ class FlintBackend:
         _, factors = poly.factor()
         return [f for f, _ in factors]
 
-    def gcd(self, f: flint.fmpq_mpoly, g: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
-        return f.gcd(g)
-
-    def derivative(self, poly: flint.fmpq_mpoly, var: str) -> flint.fmpq_mpoly:
-        return poly.derivative(var)
-
     def specialize(self, poly: flint.fmpq_mpoly, values: Mapping[str, flint.fmpq]) -> flint.fmpq_mpoly:
         """``poly`` with the variables of ``values`` (name -> fmpq) replaced by them."""
         # python-flint's stub takes names or indices, in a Mapping invariant in its keys
@@ -83,59 +146,13 @@ class FlintBackend:
     def scale(self, poly: flint.fmpq_mpoly, numerator: int, denominator: int) -> flint.fmpq_mpoly:
         return poly * flint.fmpq(numerator, denominator)
 
-    def substitute(self, poly: flint.fmpq_mpoly, var: str, value: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
-        """``poly`` with ``var`` replaced by the polynomial ``value`` (Horner in ``var``)."""
-        parts = self.split(poly, [var])
-        total = self.zero()
-        for degree in range(max(e for (e,) in parts), -1, -1):
-            total = total * value + parts.get((degree,), self.zero())
-        return total
-
     def terms(self, poly: flint.fmpq_mpoly) -> list[Term]:
         """``(exponents, numerator, denominator)`` per term, for evaluation at witnesses."""
         return [(m, int(c.p), int(c.q)) for m, c in zip(poly.monoms(), poly.coeffs())]
 
-    def zero(self) -> flint.fmpq_mpoly:
-        return self.ctx.from_dict({})
-
-    def one(self) -> flint.fmpq_mpoly:
-        return self.ctx.from_dict({(0,) * len(self.names): 1})
-
     def divide(self, f: flint.fmpq_mpoly, g: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
         """``f / g``, exact."""
         return f / g
-
-    def quotient(self, f: flint.fmpq_mpoly, g: flint.fmpq_mpoly) -> flint.fmpq_mpoly | None:
-        """``f / g`` if ``g`` divides ``f``, else None."""
-        quotient, remainder = divmod(f, g)
-        return quotient if remainder.is_zero() else None
-
-    def split(self, poly: flint.fmpq_mpoly, variables: Sequence[str]) -> dict[tuple[int, ...], flint.fmpq_mpoly]:
-        """``{exponents in variables: coefficient free of them}``, in C: the coefficient of
-        ``x**k`` is the ``k``-th derivative at ``x = 0`` over ``k!`` (a Python loop over
-        the terms is ten times slower)."""
-        if not variables:
-            return {(): poly}
-        name, parts, factorial, top = variables[0], {}, 1, self.degree(poly, variables[0])
-        for degree in range(top + 1):
-            part = poly.subs({name: 0}) if degree < top else poly
-            if not part.is_zero():
-                for key, value in self.split(part / factorial if factorial > 1 else part, variables[1:]).items():
-                    parts[(degree,) + key] = value
-            if degree < top:
-                poly, factorial = poly.derivative(name), factorial * (degree + 1)
-        return parts
-
-    def join(self, parts: Mapping[tuple[int, ...], flint.fmpq_mpoly], variables: Sequence[str]) -> flint.fmpq_mpoly:
-        """The inverse of ``split``."""
-        gens = self.ctx.gens()
-        where = [gens[self.names.index(v)] for v in variables]
-        total = self.zero()
-        for exponents, coefficient in parts.items():
-            for gen, e in zip(where, exponents):
-                coefficient = coefficient * gen**e
-            total = total + coefficient
-        return total
 
     def primitive(self, poly: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
         """Integer coefficients with gcd 1, positive leading coefficient (lex)."""

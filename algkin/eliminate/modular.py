@@ -24,6 +24,7 @@ from collections.abc import Mapping, Sequence
 import flint
 import sympy
 
+from .backends import FlintMpolys
 from .protocol import Term
 
 __all__ = ["ModularBackend", "PRIMES"]
@@ -46,17 +47,16 @@ PRIMES = _primes_below(2**31, 64)
 """Primes below 2**31, largest first: one modular image each."""
 
 
-class ModularBackend:
+class ModularBackend(FlintMpolys):
     """python-flint ``nmod_mpoly`` over ``names``, modulo the prime ``modulus``; ``drop``: the
     degree vectors of factors ``factors`` leaves out (learned where witnesses chose)."""
 
     name = "nmod"
 
     def __init__(self, names: Sequence[str], modulus: int, drop: frozenset[tuple[int, ...]] = frozenset()) -> None:
-        self.names = tuple(names)
+        super().__init__(names)
         self.modulus = modulus
         self.drop = drop
-        self.index = {n: i for i, n in enumerate(self.names)}
         self.ctx = flint.nmod_mpoly_ctx.get(self.names, modulus=modulus, ordering="lex")
 
     def reduce(self, poly: flint.fmpq_mpoly) -> flint.nmod_mpoly:
@@ -73,29 +73,8 @@ class ModularBackend:
     def to_sympy(self, poly: flint.nmod_mpoly) -> sympy.Expr:
         raise TypeError("a modular image has no sympy form: lift it first")
 
-    def variables(self, poly: flint.nmod_mpoly) -> set[str]:
-        return {n for n, d in zip(self.names, poly.degrees()) if d > 0}
-
-    def degree(self, poly: flint.nmod_mpoly, var: str) -> int:
-        return int(poly.degrees()[self.index[var]])
-
-    def is_constant(self, poly: flint.nmod_mpoly) -> bool:
-        return len(poly) <= 1 and not any(poly.degrees())
-
-    def total_degree(self, poly: flint.nmod_mpoly) -> int:
-        return int(poly.total_degree())
-
-    def nterms(self, poly: flint.nmod_mpoly) -> int:
-        return len(poly)
-
     def coefficient_bits(self, poly: flint.nmod_mpoly) -> int:
         return self.modulus.bit_length()
-
-    def is_zero(self, poly: flint.nmod_mpoly) -> bool:
-        return poly.is_zero()
-
-    def resultant(self, f: flint.nmod_mpoly, g: flint.nmod_mpoly, var: str) -> flint.nmod_mpoly:
-        return f.resultant(g, var)
 
     def factors(self, poly: flint.nmod_mpoly) -> list[flint.nmod_mpoly]:
         """With ``drop`` (degree vectors of factors known not to hold the motion): the
@@ -114,12 +93,6 @@ class ModularBackend:
         _, factors = poly.factor()
         return [f for f, _ in factors]
 
-    def gcd(self, f: flint.nmod_mpoly, g: flint.nmod_mpoly) -> flint.nmod_mpoly:
-        return f.gcd(g)
-
-    def derivative(self, poly: flint.nmod_mpoly, var: str) -> flint.nmod_mpoly:
-        return poly.derivative(var)
-
     def specialize(self, poly: flint.nmod_mpoly, values: Mapping[str, flint.fmpq]) -> flint.nmod_mpoly:
         p = self.modulus
         return poly.subs({n: int(v.p) * pow(int(v.q), -1, p) % p for n, v in values.items()})
@@ -127,56 +100,12 @@ class ModularBackend:
     def scale(self, poly: flint.nmod_mpoly, numerator: int, denominator: int) -> flint.nmod_mpoly:
         return poly * (numerator * pow(denominator, -1, self.modulus) % self.modulus)
 
-    def substitute(self, poly: flint.nmod_mpoly, var: str, value: flint.nmod_mpoly) -> flint.nmod_mpoly:
-        parts = self.split(poly, [var])
-        total = self.zero()
-        for degree in range(max(e for (e,) in parts), -1, -1):
-            total = total * value + parts.get((degree,), self.zero())
-        return total
-
     def terms(self, poly: flint.nmod_mpoly) -> list[Term]:
         return [(m, int(c), 1) for m, c in zip(poly.monoms(), poly.coeffs())]
-
-    def zero(self) -> flint.nmod_mpoly:
-        return self.ctx.from_dict({})
-
-    def one(self) -> flint.nmod_mpoly:
-        return self.ctx.from_dict({(0,) * len(self.names): 1})
 
     def divide(self, f: flint.nmod_mpoly, g: flint.nmod_mpoly) -> flint.nmod_mpoly:
         quotient, _ = divmod(f, g)
         return quotient
-
-    def quotient(self, f: flint.nmod_mpoly, g: flint.nmod_mpoly) -> flint.nmod_mpoly | None:
-        quotient, remainder = divmod(f, g)
-        return quotient if remainder.is_zero() else None
-
-    def split(self, poly: flint.nmod_mpoly, variables: Sequence[str]) -> dict[tuple[int, ...], flint.nmod_mpoly]:
-        """``{exponents in variables: coefficient}``, in C as on the flint backend: the
-        coefficient of ``x**k`` is the ``k``-th derivative at ``x = 0`` over ``k!`` (the
-        primes pass every degree, so ``k!`` is invertible)."""
-        if not variables:
-            return {(): poly}
-        name, parts, factorial, top = variables[0], {}, 1, self.degree(poly, variables[0])
-        for degree in range(top + 1):
-            part = poly.subs({name: 0}) if degree < top else poly
-            if not part.is_zero():
-                scaled = part * pow(factorial, -1, self.modulus) if factorial > 1 else part
-                for key, value in self.split(scaled, variables[1:]).items():
-                    parts[(degree,) + key] = value
-            if degree < top:
-                poly, factorial = poly.derivative(name), factorial * (degree + 1)
-        return parts
-
-    def join(self, parts: Mapping[tuple[int, ...], flint.nmod_mpoly], variables: Sequence[str]) -> flint.nmod_mpoly:
-        gens = self.ctx.gens()
-        where = [gens[self.index[v]] for v in variables]
-        total = self.zero()
-        for exponents, coefficient in parts.items():
-            for gen, e in zip(where, exponents):
-                coefficient = coefficient * gen**e
-            total = total + coefficient
-        return total
 
     def primitive(self, poly: flint.nmod_mpoly) -> flint.nmod_mpoly:
         """``poly`` made monic: its lex-leading coefficient 1."""

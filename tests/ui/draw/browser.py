@@ -52,14 +52,19 @@ class _State(html.parser.HTMLParser):
         self._in_status = False
 
 
-def load(page, query=""):
-    """Open ``page`` (a path) with ``query`` in headless chromium; the page's state after scripts ran."""
+def dump_dom(page, query=""):
+    """Open ``page`` (a path) with ``query`` in headless chromium; the document after scripts ran."""
     with tempfile.TemporaryDirectory() as profile:
         done = subprocess.run([chromium(), *FLAGS, f"--user-data-dir={profile}", "--dump-dom",
                                page.resolve().as_uri() + query], capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr[-2000:]
+    return done.stdout
+
+
+def load(page, query=""):
+    """The slider page's state after its scripts ran (``dump_dom``)."""
     parser = _State()
-    parser.feed(done.stdout)
+    parser.feed(dump_dom(page, query))
     assert parser.state, "the page wrote no state: its script did not run"
     state = dict(parser.state)
     state["positions"] = {k: tuple(v) for k, v in json.loads(state["positions"]).items()}
