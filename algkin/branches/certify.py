@@ -49,9 +49,9 @@ class Interval(TypedDict):
     status: str
 
 
-def interval_keys(variables: Sequence[str]) -> tuple[str, str]:
-    """The keys of an interval's ends: degrees for an angle's (cos, sin), a length as it is."""
-    return ("from_deg", "to_deg") if len(variables) == 2 else ("from_length", "to_length")
+def interval_keys(turning: bool) -> tuple[str, str]:
+    """The keys of an interval's ends: degrees for a turning input, a length as it is."""
+    return ("from_deg", "to_deg") if turning else ("from_length", "to_length")
 
 
 def _status(discriminants: Sequence[sympy.Expr], variables: tuple[str, ...], lo: float, hi: float,
@@ -115,7 +115,7 @@ def uncertified(intervals: Sequence[Interval], shown: NDArray[np.float64], turni
     >>> uncertified(pieces, np.array([5.0, 15.0, 375.0, 30.0]), turning=True).tolist()
     [False, True, False, False]
     """
-    start, end = interval_keys(("c", "s") if turning else ("t",))
+    start, end = interval_keys(turning)
     lows = np.array([i[start] for i in intervals])  # type: ignore[literal-required]
     highs = np.array([i[end] for i in intervals])  # type: ignore[literal-required]
     values = np.asarray(shown, dtype=float)
@@ -128,7 +128,7 @@ def uncertified(intervals: Sequence[Interval], shown: NDArray[np.float64], turni
 
 
 def _merged(pieces: Sequence[tuple[float, float, str]], variables: Sequence[str]) -> list[Interval]:
-    start, end = interval_keys(variables)
+    start, end = interval_keys(len(variables) == 2)
     merged: list[dict[str, float | str]] = []
     for lo, hi, status in sorted(pieces):
         if merged and merged[-1]["status"] == status and merged[-1][end] == lo:

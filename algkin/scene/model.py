@@ -1,6 +1,5 @@
 """Scene data: parameters, inputs, points built by constructions, named outputs."""
 
-import math
 from dataclasses import dataclass, field
 
 import sympy
@@ -36,6 +35,8 @@ def length_range_problem(lo: sympy.Rational, hi: sympy.Rational) -> str | None:
     >>> length_range_problem(sympy.Integer(0), sympy.Integer(10)**200)
     'must lie within the magnitudes 1e-100 to 1e100'
     """
+    if not lo < hi:
+        return "lo must be below hi"
     if max(abs(lo), abs(hi)) > sympy.Integer(10) ** 100 or 0 < hi - lo < sympy.Rational(1, 10**100):
         return "must lie within the magnitudes 1e-100 to 1e100"
     return None
@@ -81,10 +82,6 @@ class Input:
             return float(self.lo), float(self.hi)
         lo, hi = (float(sympy.deg(self.to_radians(v))) for v in (self.lo, self.hi))
         return lo, hi
-
-    def internal(self, shown: float) -> float:
-        """``shown`` (degrees for an angle) in the system's unit (radians; a length as it is)."""
-        return math.radians(shown) if self.is_angle else shown
 
     def shown(self, value: float) -> str:
         """A value in users' units as text: ``30°`` for an angle, ``0.25`` for a length."""

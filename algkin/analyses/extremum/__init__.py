@@ -106,8 +106,10 @@ def _span(spec, angle_range):
         lo, hi = to_degrees(lo), to_degrees(hi)
     except (TypeError, ValueError, sympy.SympifyError):
         raise UsageError("--range", angle_range, "expected two finite numbers (lo, hi)") from None
-    check = range_problem if spec.is_angle else lambda a, b: length_range_problem(lo, hi) if a < b else "lo must be below hi"
-    problem = check(float(lo), float(hi)) if lo.is_finite and hi.is_finite else "must be finite"
+    if not (lo.is_finite and hi.is_finite):
+        problem = "must be finite"
+    else:
+        problem = range_problem(float(lo), float(hi)) if spec.is_angle else length_range_problem(lo, hi)
     if problem:
         raise UsageError("--range", f"{float(lo):g}:{float(hi):g}", problem)
     return lo, hi
