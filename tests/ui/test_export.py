@@ -11,7 +11,7 @@ import pytest
 
 from algkin.bench.accuracy import _cases, _Subject
 from algkin.scene import load_scene
-from algkin.ui.export import export, function_name
+from algkin.ui.export import export
 
 from .cli.test_usage import run_cli
 
@@ -60,8 +60,7 @@ int main(void) {{
 @pytest.mark.skipif(shutil.which("cc") is None, reason="no system C compiler (cc)")
 def test_exported_c_of_the_lambda_coupler_point_meets_the_certified_reference(lambda_p, tmp_path):
     subject, theta, truth = lambda_p
-    got = _c_outputs(export("chebyshev-lambda", ["P"], "c"), function_name("chebyshev-lambda", "left"), theta,
-                     tmp_path)
+    got = _c_outputs(export("chebyshev-lambda", ["P"], "c"), "chebyshev_lambda_left", theta, tmp_path)
     assert _relative(got, truth).max() <= TOLERANCE
     stable = subject.stable(theta)  # the same operations: the stabilised form's values to a few ulps
     assert (np.abs(got - stable) <= ULPS * np.spacing(np.abs(stable))).all()
@@ -71,10 +70,10 @@ def test_exported_numpy_meets_the_certified_reference(lambda_p):
     subject, theta, truth = lambda_p
     scope = {}
     exec(export("chebyshev-lambda", ["P"], "numpy"), scope)  # noqa: S102 - the exported module under test
-    got = np.array(scope[function_name("chebyshev-lambda", "left")](theta))
+    got = np.array(scope["chebyshev_lambda_left"](theta))
     assert _relative(got, truth).max() <= TOLERANCE
     np.testing.assert_array_equal(got, subject.stable(theta))  # numpy both: the same operations, bit for bit
-    mirrored = np.array(scope[function_name("chebyshev-lambda", "right")](theta))
+    mirrored = np.array(scope["chebyshev_lambda_right"](theta))
     assert (np.hypot(*(mirrored - got)) > 1e-3).all()  # the other branch is another point
 
 
@@ -84,7 +83,7 @@ def test_exported_javascript_meets_the_certified_reference(lambda_p, tmp_path):
     script = tmp_path / "lambda.js"
     script.write_text(export("chebyshev-lambda", ["P"], "js") + f"""
 const angles = {json.dumps([float(t) for t in theta])};
-console.log(JSON.stringify(angles.map((a) => {function_name("chebyshev-lambda", "left")}(a))));
+console.log(JSON.stringify(angles.map((a) => chebyshev_lambda_left(a))));
 """)
     run = subprocess.run([shutil.which("node"), str(script)], capture_output=True, text=True, check=True)
     got = np.array(json.loads(run.stdout)).T
@@ -94,7 +93,7 @@ console.log(JSON.stringify(angles.map((a) => {function_name("chebyshev-lambda", 
 def test_a_branch_past_its_toggles_exports_nan():
     scope = {}
     exec(export("fourbar-nongrashof", ["B"], "numpy"), scope)  # noqa: S102
-    bx, by = scope[function_name("fourbar-nongrashof", "left")](np.linspace(0, 2 * np.pi, 721))
+    bx, by = scope["fourbar_nongrashof_left"](np.linspace(0, 2 * np.pi, 721))
     assert np.isnan(bx).any() and not np.isnan(bx).all() and (np.isnan(bx) == np.isnan(by)).all()
 
 
