@@ -30,7 +30,7 @@ from typing import Any
 
 from ..errors import UsageError
 from .analyses import ANALYSES, Analysis, analyses_named, register
-from .design import TIMING_PREFIX, Job, columns
+from .design import STATUSES, TIMING_PREFIX, Job, columns
 from .executor import EXECUTORS, dask_modules, run_chunks
 from .grid import grid_designs, parse_grid, parse_ranges, random_designs
 from .store import DATASET, MANIFEST, done_chunks, merge, open_directory, read_dataset, read_manifest, \
@@ -135,7 +135,7 @@ def sweep(scene: Any, out: str | pathlib.Path, grid: Iterable[str] = (), random:
                    ready=lambda: open_directory(out, planned.manifest))
     dataset = merge(out, planned.columns)
     statuses = read_dataset(out).column("status").to_pylist()
-    counts = {s: statuses.count(s) for s in ("ok", "does-not-assemble", "failed") if s in statuses}
+    counts = {s: statuses.count(s) for s in STATUSES if s in statuses}
     return Sweep(pathlib.Path(out), dataset, len(planned.designs), computed, counts)
 
 

@@ -115,7 +115,7 @@ def _entry(row: dict[str, Any], swept: list[str], tracer: _Tracer) -> dict[str, 
              "class": row.get("grashof_class"), "degree": row.get("curve_degree"),
              "circularity": row.get("curve_circularity"), "singular": row.get("singular_count"),
              "tmin": row.get("transmission_min_deg"), "tmax": row.get("transmission_max_deg"), "paths": []}
-    if row["status"] == "does-not-assemble":
+    if row["status"] in ("does-not-assemble", "structure"):  # no motion: nothing to draw
         return entry
     tracks = tracer.tracks(values)
     frame = _frame([t for _, t in tracks])

@@ -55,6 +55,23 @@ def test_a_sweep_and_its_atlas(tmp_path, capsys):
     assert capsys.readouterr().out == f"wrote {tmp_path / 'atlas.html'}: 2 of 4 designs drawn\n"
 
 
+def test_a_structure_among_moving_designs_has_its_own_status(tmp_path, capsys):
+    # a = 5/6 and d = 16/3, 19/3, 22/3 (coupler 3, rocker 7/2): |AD| runs from d - a to d + a, B needs
+    # 1/2 <= |AD| <= 13/2. d = 16/3: 9/2 to 37/6, the whole turn; d = 19/3: from 11/2, part of it;
+    # d = 22/3: from 13/2, reached at theta = 0 only: a structure, no curve, no thumbnail
+    argv = ["sweep", "fourbar", "--grid", "a=5/6:5/6:1", "--grid", "d=16/3:22/3:3", "--analyses", "curve",
+            "--executor", "serial", "--out", str(tmp_path / "out"), "--json"]
+    assert main(argv) == 0
+    assert json.loads(capsys.readouterr().out)["status"] == {"ok": 2, "structure": 1}
+    from algkin.sweep import read_dataset
+
+    table = read_dataset(tmp_path / "out")
+    assert table.column("status").to_pylist() == ["ok", "ok", "structure"]
+    assert table.column("curve_degree").to_pylist() == [6, 6, None]
+    assert main(["atlas", str(tmp_path / "out"), "--out", str(tmp_path / "atlas.html")]) == 0
+    assert capsys.readouterr().out.endswith(": 2 of 3 designs drawn\n")
+
+
 def test_the_atlas_of_a_directory_without_a_sweep(tmp_path, capsys):
     assert main(["atlas", str(tmp_path), "--out", str(tmp_path / "atlas.html")]) == 2
     assert "holds no sweep" in capsys.readouterr().err and not (tmp_path / "atlas.html").exists()
