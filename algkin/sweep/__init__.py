@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import hashlib
 import math
+import os
 import pathlib
 import sys
 from collections.abc import Iterable
@@ -37,9 +38,12 @@ from .store import DATASET, MANIFEST, done_chunks, merge, open_directory, read_d
     without_timings, write_part
 
 __all__ = ["sweep", "Sweep", "plan", "ANALYSES", "Analysis", "register", "read_dataset", "read_manifest",
-           "without_timings", "TIMING_PREFIX", "DATASET", "MANIFEST", "EXECUTORS", "CHUNK"]
+           "without_timings", "TIMING_PREFIX", "DATASET", "MANIFEST", "EXECUTORS", "CHUNK", "DAY",
+           "projected_seconds"]
 
 CHUNK = 8  # designs per part file (and per Dask task), by default
+DAY = 86400.0  # a run projected to take longer (seconds) starts only with --yes
+ASSEMBLY_SECONDS = 0.02  # assembling one design at least (a four-bar's, as the analyses' ``seconds``)
 
 
 @dataclass
@@ -113,8 +117,11 @@ def plan(scene: Any, grid: Iterable[str] = (), random: int | None = None, seed: 
 def sweep(scene: Any, out: str | pathlib.Path, grid: Iterable[str] = (), random: int | None = None, seed: int = 0,
           analyses: Iterable[str] = ("curve",), point: str | None = None, executor: str = "dask",
           workers: int | None = None, scheduler: str | None = None, budget: float | None = None,
-          chunk: int = CHUNK) -> Sweep:
-    """Run (or resume) the sweep into the directory ``out``; its merged dataset is ``out/designs.parquet``."""
+          chunk: int = CHUNK, yes: bool = False) -> Sweep:
+    """Run (or resume) the sweep into the directory ``out``; its merged dataset is ``out/designs.parquet``.
+
+    A run projected to take longer than ``DAY`` (``projected_seconds``) is refused before it starts,
+    unless ``yes``."""
     from ..runtime import progress
 
     planned = plan(scene, grid, random, seed, analyses, point, budget, chunk)
@@ -124,6 +131,8 @@ def sweep(scene: Any, out: str | pathlib.Path, grid: Iterable[str] = (), random:
     pending = [(k, [(d, planned.designs[d]) for d in range(k * chunk, min((k + 1) * chunk, len(planned.designs)))])
                for k in range(math.ceil(len(planned.designs) / chunk)) if k not in done]
     computed = sum(len(designs) for _, designs in pending)
+    if not yes:
+        _check_length(planned, computed, _parallel(executor, workers, scheduler))
     progress.stage(f"sweeping {len(planned.designs)} designs, {len(planned.designs) - computed} done before")
     with progress.counting(computed, "designs"):
         def written(index: int, rows: list) -> None:
@@ -137,6 +146,47 @@ def sweep(scene: Any, out: str | pathlib.Path, grid: Iterable[str] = (), random:
     statuses = read_dataset(out).column("status").to_pylist()
     counts = {s: statuses.count(s) for s in STATUSES if s in statuses}
     return Sweep(pathlib.Path(out), dataset, len(planned.designs), computed, counts)
+
+
+def projected_seconds(analyses: Iterable[str], designs: int, budget: float | None = None, parallel: int = 1) -> float:
+    """How long ``designs`` designs take at least: each its assembly and analyses' ``seconds`` (no more than
+    its ``budget``), ``parallel`` at once.
+
+    >>> projected_seconds(["curve", "limits"], 10**6, parallel=2) / DAY   # (0.02 + 0.05 + 0.2) s each
+    1.5625
+    >>> projected_seconds(["curve", "limits"], 10**6, budget=0.1, parallel=2) / DAY
+    0.5787037037037037
+    """
+    each = ASSEMBLY_SECONDS + sum(ANALYSES[name].seconds for name in analyses)
+    return designs * (each if budget is None else min(each, budget)) / parallel
+
+
+def _parallel(executor: str, workers: int | None, scheduler: str | None) -> int:
+    """Designs computed at once: the LocalCluster's workers (one a core by default); one in this process,
+    and one on a scheduler's cluster, whose size is not known before connecting."""
+    if executor != "dask" or scheduler is not None:
+        return 1
+    return workers or os.cpu_count() or 1
+
+
+def _check_length(planned: Plan, count: int, parallel: int) -> None:
+    seconds = projected_seconds(planned.job.analyses, count, planned.job.budget, parallel)
+    if seconds <= DAY:
+        return
+    space = planned.manifest["designs"]
+    flag, value = ("--random", space["random"]["count"]) if "random" in space else \
+        ("--grid", " ".join(f"{n}={v[0]}:{v[-1]}:{len(v)}" for n, v in space["grid"].items()))
+    raise UsageError(flag, value, f"{count} designs would take at least {_duration(seconds)} "
+                                  f"({_duration(seconds * parallel / count)} each, {parallel} at once); "
+                                  "give --yes to start anyway")
+
+
+def _duration(seconds: float) -> str:
+    """``2.5 days``, ``3.1 hours``, ``0.27 s``: a length of time, readable."""
+    for unit, size in (("days", DAY), ("hours", 3600.0)):
+        if seconds >= size:
+            return f"{seconds / size:.3g} {unit}"
+    return f"{seconds:.2g} s"
 
 
 def _check_executor(executor: str, workers: int | None, scheduler: str | None) -> None:

@@ -11,6 +11,10 @@ and the same on every machine.
 (['1', '3/2', '2'], ['3/2'])
 >>> [{k: str(v) for k, v in d.items()} for d in grid_designs(axes)][:2]
 [{'a': '1', 'l': '3/2'}, {'a': '3/2', 'l': '3/2'}]
+>>> parse_grid(["a=1:1:3"])
+Traceback (most recent call last):
+...
+algkin.errors.UsageError: --grid='a=1:1:3': LO = HI is one value, not 3: give COUNT 1
 >>> parse_grid(["a=2:1:3"])
 Traceback (most recent call last):
 ...
@@ -22,6 +26,7 @@ algkin.errors.UsageError: --grid='a=2:1:3': LO must not exceed HI
 from __future__ import annotations
 
 import itertools
+import math
 from collections.abc import Iterable, Mapping, Sequence
 from fractions import Fraction
 
@@ -32,7 +37,9 @@ from ..errors import UsageError
 __all__ = ["parse_grid", "parse_ranges", "grid_designs", "random_designs", "RANDOM_STEPS", "MAX_DESIGNS"]
 
 RANDOM_STEPS = 10**6  # a random value is LO + (HI - LO) * k / RANDOM_STEPS, k drawn whole
-MAX_DESIGNS = 10**7  # more rows than one Parquet dataset of a sweep is meant to hold
+# designs of one sweep at most: each is held in memory while planned (the grid's or the draws'
+# values, about half a gigabyte at this many), and a million four-bars take days already
+MAX_DESIGNS = 10**6
 
 
 def _exact(text: str, spec: str) -> Fraction:
@@ -74,21 +81,36 @@ def _once(specs: Iterable[str]) -> list[str]:
 
 
 def parse_grid(specs: Iterable[str]) -> dict[str, list[Fraction]]:
-    """``{name: exact values}`` from ``NAME=LO:HI:COUNT`` strings."""
-    axes = {}
-    for spec in _once(specs):
-        name, fields = _split(spec, 3)
-        lo, hi = _bounds(spec, fields)
-        count = fields[2].strip()
-        if not count.isdigit() or int(count) < 1:
-            raise UsageError("--grid", spec, f"COUNT must be a whole number from 1, got {count!r}")
-        n = int(count)
-        if n == 1 and lo != hi:
-            raise UsageError("--grid", spec, "COUNT 1 needs LO = HI (one value)")
-        axes[name] = [lo] if n == 1 else [lo + (hi - lo) * k / (n - 1) for k in range(n)]
-    if np.prod([len(v) for v in axes.values()], dtype=float) > MAX_DESIGNS:
-        raise UsageError("--grid", " ".join(specs), f"more than {MAX_DESIGNS} designs")
-    return axes
+    """``{name: exact values}`` from ``NAME=LO:HI:COUNT`` strings; their product counted (and refused
+    past ``MAX_DESIGNS``) before any value is made.
+
+    >>> parse_grid(["a=1:2:1000000000"])
+    Traceback (most recent call last):
+    ...
+    algkin.errors.UsageError: --grid='a=1:2:1000000000': 1000000000 designs, more than 1000000
+    """
+    specs = _once(specs)
+    axes = [_axis(spec) for spec in specs]
+    total = math.prod(n for _, _, _, n in axes)
+    if total > MAX_DESIGNS:
+        raise UsageError("--grid", " ".join(specs), f"{total} designs, more than {MAX_DESIGNS}")
+    return {name: [lo] if n == 1 else [lo + (hi - lo) * k / (n - 1) for k in range(n)] for name, lo, hi, n in axes}
+
+
+def _axis(spec: str) -> tuple[str, Fraction, Fraction, int]:
+    """``(name, lo, hi, count)`` of one ``NAME=LO:HI:COUNT``: COUNT distinct values, so LO = HI with COUNT 1
+    and only then."""
+    name, fields = _split(spec, 3)
+    lo, hi = _bounds(spec, fields)
+    count = fields[2].strip()
+    if not count.isdigit() or int(count) < 1:
+        raise UsageError("--grid", spec, f"COUNT must be a whole number from 1, got {count!r}")
+    n = int(count)
+    if n == 1 and lo != hi:
+        raise UsageError("--grid", spec, "COUNT 1 needs LO = HI (one value)")
+    if n > 1 and lo == hi:
+        raise UsageError("--grid", spec, f"LO = HI is one value, not {n}: give COUNT 1")
+    return name, lo, hi, n
 
 
 def parse_ranges(specs: Iterable[str]) -> dict[str, tuple[Fraction, Fraction]]:

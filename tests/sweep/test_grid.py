@@ -28,6 +28,7 @@ def test_the_first_axis_varies_slowest():
     ("a=1:2:0", "COUNT must be a whole number from 1"),
     ("a=1:2:2.5", "COUNT must be a whole number from 1"),
     ("a=1:2:1", "COUNT 1 needs LO = HI"),
+    ("a=1:1:3", "LO = HI is one value, not 3: give COUNT 1"),  # three identical designs
     ("a=1e200:1e201:2", "outside 1e-100 to 1e100"),
 ])
 def test_bad_grids_are_refused(spec, says):
@@ -44,6 +45,25 @@ def test_a_name_given_twice_is_refused():
 def test_too_many_designs_are_refused_before_any_is_made():
     with pytest.raises(UsageError, match="more than"):
         parse_grid([f"{n}=0:1:1000" for n in "abc"])
+
+
+def test_a_billion_values_are_counted_not_made():
+    import tracemalloc
+
+    tracemalloc.start()
+    try:
+        with pytest.raises(UsageError, match="1000000000 designs, more than 1000000"):
+            parse_grid(["a=1:2:1000000000"])
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert peak < 10**6  # bytes: not one value per design (a billion Fractions would be ~100 GB)
+
+
+def test_the_cap_is_the_product_of_the_counts():
+    assert len(grid_designs(parse_grid(["a=0:1:1000", "b=0:1:1000"]))) == 10**6  # at the cap: taken
+    with pytest.raises(UsageError, match="1001000 designs"):
+        parse_grid(["a=0:1:1000", "b=0:1:1001"])
 
 
 @given(st.integers(0, 2**32), st.integers(1, 20))
