@@ -33,7 +33,7 @@ from ..errors import UsageError
 from .analyses import ANALYSES, Analysis, analyses_named, register
 from .design import STATUSES, TIMING_PREFIX, Job, columns
 from .executor import EXECUTORS, dask_modules, run_chunks
-from .grid import grid_designs, parse_grid, parse_ranges, random_designs
+from .grid import Designs, grid_designs, parse_grid, parse_ranges, random_designs
 from .store import DATASET, MANIFEST, done_chunks, merge, open_directory, read_dataset, read_manifest, \
     without_timings, write_part
 
@@ -66,7 +66,7 @@ class Plan:
     """What a sweep will compute, checked before anything is written."""
 
     job: Job
-    designs: list[dict[str, Fraction]]
+    designs: Designs
     manifest: dict[str, Any]
     columns: dict[str, str]
     chunk: int
@@ -128,12 +128,13 @@ def sweep(scene: Any, out: str | pathlib.Path, grid: Iterable[str] = (), random:
     _check_executor(executor, workers, scheduler)
     open_directory(out, planned.manifest, check_only=True)
     done = done_chunks(out)
-    pending = [(k, [(d, planned.designs[d]) for d in range(k * chunk, min((k + 1) * chunk, len(planned.designs)))])
-               for k in range(math.ceil(len(planned.designs) / chunk)) if k not in done]
-    computed = sum(len(designs) for _, designs in pending)
-    if not yes:
+    total = len(planned.designs)
+    chunks = [k for k in range(math.ceil(total / chunk)) if k not in done]
+    computed = sum(min((k + 1) * chunk, total) - k * chunk for k in chunks)
+    if not yes:  # counted, not made: a run refused here has made no design
         _check_length(planned, computed, _parallel(executor, workers, scheduler))
-    progress.stage(f"sweeping {len(planned.designs)} designs, {len(planned.designs) - computed} done before")
+    pending = [(k, [(d, planned.designs[d]) for d in range(k * chunk, min((k + 1) * chunk, total))]) for k in chunks]
+    progress.stage(f"sweeping {total} designs, {total - computed} done before")
     with progress.counting(computed, "designs"):
         def written(index: int, rows: list) -> None:
             write_part(out, index, rows, planned.columns)
@@ -145,7 +146,7 @@ def sweep(scene: Any, out: str | pathlib.Path, grid: Iterable[str] = (), random:
     dataset = merge(out, planned.columns)
     statuses = read_dataset(out).column("status").to_pylist()
     counts = {s: statuses.count(s) for s in STATUSES if s in statuses}
-    return Sweep(pathlib.Path(out), dataset, len(planned.designs), computed, counts)
+    return Sweep(pathlib.Path(out), dataset, total, computed, counts)
 
 
 def projected_seconds(analyses: Iterable[str], designs: int, budget: float | None = None, parallel: int = 1) -> float:

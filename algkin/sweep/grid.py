@@ -25,16 +25,16 @@ algkin.errors.UsageError: --grid='a=2:1:3': LO must not exceed HI
 
 from __future__ import annotations
 
-import itertools
 import math
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from fractions import Fraction
+from typing import overload
 
 import numpy as np
 
 from ..errors import UsageError
 
-__all__ = ["parse_grid", "parse_ranges", "grid_designs", "random_designs", "RANDOM_STEPS", "MAX_DESIGNS"]
+__all__ = ["parse_grid", "parse_ranges", "grid_designs", "random_designs", "Designs", "RANDOM_STEPS", "MAX_DESIGNS"]
 
 RANDOM_STEPS = 10**6  # a random value is LO + (HI - LO) * k / RANDOM_STEPS, k drawn whole
 # designs of one sweep at most: each is held in memory while planned (the grid's or the draws'
@@ -122,13 +122,56 @@ def parse_ranges(specs: Iterable[str]) -> dict[str, tuple[Fraction, Fraction]]:
     return ranges
 
 
-def grid_designs(axes: Mapping[str, Sequence[Fraction]]) -> list[dict[str, Fraction]]:
+class Designs(Sequence[dict[str, Fraction]]):
+    """A sweep's designs, each ``{name: exact value}`` made only when asked for by its index: a plan
+    of a million designs holds their recipe, not a million dictionaries.
+
+    >>> designs = grid_designs({"a": [Fraction(1), Fraction(2)], "l": [Fraction(5), Fraction(6), Fraction(7)]})
+    >>> len(designs), designs[4], designs[-1] == designs[5]
+    (6, {'a': Fraction(2, 1), 'l': Fraction(6, 1)}, True)
+    """
+
+    def __init__(self, names: Sequence[str], count: int, values: Callable[[int], Sequence[Fraction]]) -> None:
+        self.names, self.size, self.values = list(names), count, values
+
+    def __len__(self) -> int:
+        return self.size
+
+    @overload
+    def __getitem__(self, index: int) -> dict[str, Fraction]: ...
+
+    @overload
+    def __getitem__(self, index: slice) -> list[dict[str, Fraction]]: ...
+
+    def __getitem__(self, index: int | slice) -> dict[str, Fraction] | list[dict[str, Fraction]]:
+        if isinstance(index, slice):
+            return [self[k] for k in range(*index.indices(self.size))]
+        k = index + self.size if index < 0 else index
+        if not 0 <= k < self.size:
+            raise IndexError(index)
+        return dict(zip(self.names, self.values(k)))
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Sequence) and len(self) == len(other) and all(a == b for a, b in zip(self, other))
+
+    __hash__ = None  # type: ignore[assignment]  # compared by value, as a list is
+
+
+def grid_designs(axes: Mapping[str, Sequence[Fraction]]) -> Designs:
     """Every combination of the axes' values, the first axis varying slowest."""
-    names = list(axes)
-    return [dict(zip(names, values)) for values in itertools.product(*(axes[n] for n in names))]
+    lists = [list(values) for values in axes.values()]
+
+    def values(k: int) -> list[Fraction]:
+        found = []
+        for axis in reversed(lists):  # the last axis varies fastest: the lowest digit of k
+            k, digit = divmod(k, len(axis))
+            found.append(axis[digit])
+        return found[::-1]
+
+    return Designs(list(axes), math.prod(len(v) for v in lists), values)
 
 
-def random_designs(ranges: Mapping[str, tuple[Fraction, Fraction]], count: int, seed: int) -> list[dict[str, Fraction]]:
+def random_designs(ranges: Mapping[str, tuple[Fraction, Fraction]], count: int, seed: int) -> Designs:
     """``count`` designs drawn uniformly (on a lattice of RANDOM_STEPS steps) in ``ranges``, from ``seed``."""
     if not 1 <= count <= MAX_DESIGNS:
         raise UsageError("--random", count, f"expected a number of designs from 1 to {MAX_DESIGNS}")
@@ -136,5 +179,6 @@ def random_designs(ranges: Mapping[str, tuple[Fraction, Fraction]], count: int, 
         raise UsageError("--seed", seed, "expected a whole number from 0")
     steps = np.random.Generator(np.random.PCG64(seed)).integers(0, RANDOM_STEPS, size=(count, len(ranges)),
                                                                 endpoint=True)
-    return [{name: lo + (hi - lo) * Fraction(int(k), RANDOM_STEPS) for (name, (lo, hi)), k in zip(ranges.items(), row)}
-            for row in steps]
+    bounds = list(ranges.values())
+    return Designs(list(ranges), count, lambda k: [lo + (hi - lo) * Fraction(int(step), RANDOM_STEPS)
+                                                   for (lo, hi), step in zip(bounds, steps[k])])

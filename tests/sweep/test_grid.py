@@ -81,3 +81,17 @@ def test_random_draws_repeat_with_the_seed_and_stay_in_range(seed, count):
 def test_random_ranges_take_no_count():
     with pytest.raises(UsageError, match="expected NAME=LO:HI"):
         parse_ranges(["a=1:2:3"])
+
+
+def test_a_run_refused_for_its_length_made_no_design(tmp_path, monkeypatch):
+    from algkin.sweep import sweep
+    from algkin.sweep.grid import Designs
+
+    made = []
+    get = Designs.__getitem__
+    monkeypatch.setattr(Designs, "__getitem__", lambda self, k: made.append(k) or get(self, k))
+    # 10^6 designs of limits, at least 0.22 s each one at a time: 2.5 days
+    with pytest.raises(UsageError, match="give --yes"):
+        sweep("fourbar", tmp_path / "out", grid=["a=1:2:1000", "d=1:2:1000"], analyses=["limits"], executor="serial")
+    assert made == [0, 0]  # the first design's names, read by the plan; no other made
+    assert not (tmp_path / "out").exists()
