@@ -20,7 +20,7 @@ from typing import Any
 import flint
 import sympy
 
-from ..branches import certify_label, check_assembly, closed_forms
+from ..branches import check_assembly, closed_forms
 from ..branches import Branch
 from ..eliminate import DEFAULT_METHOD, Budget, Elimination, Witness, current as current_budget
 from ..errors import UsageError
@@ -31,6 +31,7 @@ from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
 from ..system import inputs_json, symbol
 from ..verify import Verification, verify_branches
+from .assembles import certify_labels, where_assembled
 from .tasks import curve_task, eliminant_tasks
 
 __all__ = ["derive", "curve", "family_method", "Derivation", "CurveResult", "witnesses", "certify_labels", "compile_and_branch",
@@ -127,13 +128,14 @@ def _arguments(outputs, params, samples, seed, budget):
             (validation.budget(budget) or current_budget()).start())
 
 
-def _exact_samples(spec, count):
-    """Rationals spread over the input's range: tangent half-angles for an angle (exact points
-    on the circle), lengths for a length."""
-    lo, hi = float(spec.to_radians(spec.lo)), float(spec.to_radians(spec.hi))
+def _exact_samples(spec, count, pieces=None):
+    """Rationals spread over the input's range (or over ``pieces`` of it, in radians or lengths:
+    where something assembles): tangent half-angles for an angle (exact points on the circle),
+    lengths for a length."""
+    pieces = pieces or [(float(spec.to_radians(spec.lo)), float(spec.to_radians(spec.hi)))]
     values = []
     for k in range(4 * count):
-        value = lo + (k + 0.5) / (4 * count) * (hi - lo)
+        value = _along(pieces, (k + 0.5) / (4 * count))
         if not spec.is_angle:
             values.append(Fraction(value).limit_denominator(97))
         elif abs(math.cos(value / 2)) > 0.02:
@@ -142,9 +144,20 @@ def _exact_samples(spec, count):
     return values[::4] + values[1::4] + values[2::4] + values[3::4]
 
 
+def _along(pieces, share):
+    """The point ``share`` (0 to 1) of the way along the intervals ``pieces`` put end to end."""
+    left = share * sum(hi - lo for lo, hi in pieces)
+    for lo, hi in pieces:
+        if left <= hi - lo:
+            return lo + left
+        left -= hi - lo
+    return pieces[-1][1]
+
+
 def witnesses(compiled, branches):
     """Per branch, configurations in ball arithmetic at exact rational inputs."""
-    spread = {n: _exact_samples(compiled.scene.inputs[n], WITNESSES_PER_BRANCH * 3)
+    where = where_assembled(compiled, branches) or {}
+    spread = {n: _exact_samples(compiled.scene.inputs[n], WITNESSES_PER_BRANCH * 3, where.get(n))
               for n in compiled.system.inputs}
     groups = []
     with flint.ctx.workprec(WITNESS_BITS):
@@ -186,7 +199,8 @@ def _verify(compiled, branches, samples, seed, polynomials, factors=None):
         return Verification.skipped()
     fixed, indicators, fixed_branches, inputs = _checked(compiled, branches)
     return verify_branches(fixed, indicators, fixed_branches, inputs, dict(compiled.parameter_values),
-                           samples=samples, seed=seed, polynomials=polynomials, factors=factors)
+                           samples=samples, seed=seed, polynomials=polynomials, factors=factors,
+                           where=where_assembled(compiled, branches))
 
 
 def _checked(compiled, branches):
@@ -217,17 +231,6 @@ def check_setup(compiled, branches):
     return _checked(compiled, branches)
 
 
-def certify_labels(compiled, branches):
-    """Per branch, the input intervals where its label is certified (dimensions at defaults)."""
-    if len(compiled.system.inputs) != 1:
-        return [None] * len(branches)
-    (name, variables), = compiled.system.inputs.items()
-    lo, hi = compiled.scene.inputs[name].span
-    defaults = {n: ARB.number(Fraction(str(v)).numerator, Fraction(str(v)).denominator)
-                for n, v in compiled.parameter_values.items()}
-    return [certify_label(b, variables, lo, hi, defaults) for b in branches]
-
-
 def compile_and_branch(scene, outputs, params):
     """The stages derive and curve share: compile, closed forms, assembly check, witnesses.
 
@@ -252,6 +255,7 @@ class _Prepared:
             with _timed(timings, "branches"):
                 branches = closed_forms(self.compiled)
                 check_assembly(self.compiled, branches)
+                where_assembled(self.compiled, branches)  # a structure refused before its witnesses
                 self.built = branches, witnesses(self.compiled, branches)
         timings.setdefault("branches", 0.0)
         return self.built

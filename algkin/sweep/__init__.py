@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import hashlib
 import math
+import os
 import pathlib
 import sys
 from collections.abc import Iterable
@@ -30,16 +31,19 @@ from typing import Any
 
 from ..errors import UsageError
 from .analyses import ANALYSES, Analysis, analyses_named, register
-from .design import TIMING_PREFIX, Job, columns
+from .design import STATUSES, TIMING_PREFIX, Job, columns
 from .executor import EXECUTORS, dask_modules, run_chunks
-from .grid import grid_designs, parse_grid, parse_ranges, random_designs
+from .grid import Designs, grid_designs, parse_grid, parse_ranges, random_designs
 from .store import DATASET, MANIFEST, done_chunks, merge, open_directory, read_dataset, read_manifest, \
     without_timings, write_part
 
 __all__ = ["sweep", "Sweep", "plan", "ANALYSES", "Analysis", "register", "read_dataset", "read_manifest",
-           "without_timings", "TIMING_PREFIX", "DATASET", "MANIFEST", "EXECUTORS", "CHUNK"]
+           "without_timings", "TIMING_PREFIX", "DATASET", "MANIFEST", "EXECUTORS", "CHUNK", "DAY",
+           "projected_seconds"]
 
 CHUNK = 8  # designs per part file (and per Dask task), by default
+DAY = 86400.0  # a run projected to take longer (seconds) starts only with --yes
+ASSEMBLY_SECONDS = 0.02  # assembling one design at least (a four-bar's, as the analyses' ``seconds``)
 
 
 @dataclass
@@ -62,7 +66,7 @@ class Plan:
     """What a sweep will compute, checked before anything is written."""
 
     job: Job
-    designs: list[dict[str, Fraction]]
+    designs: Designs
     manifest: dict[str, Any]
     columns: dict[str, str]
     chunk: int
@@ -113,18 +117,24 @@ def plan(scene: Any, grid: Iterable[str] = (), random: int | None = None, seed: 
 def sweep(scene: Any, out: str | pathlib.Path, grid: Iterable[str] = (), random: int | None = None, seed: int = 0,
           analyses: Iterable[str] = ("curve",), point: str | None = None, executor: str = "dask",
           workers: int | None = None, scheduler: str | None = None, budget: float | None = None,
-          chunk: int = CHUNK) -> Sweep:
-    """Run (or resume) the sweep into the directory ``out``; its merged dataset is ``out/designs.parquet``."""
+          chunk: int = CHUNK, yes: bool = False) -> Sweep:
+    """Run (or resume) the sweep into the directory ``out``; its merged dataset is ``out/designs.parquet``.
+
+    A run projected to take longer than ``DAY`` (``projected_seconds``) is refused before it starts,
+    unless ``yes``."""
     from ..runtime import progress
 
     planned = plan(scene, grid, random, seed, analyses, point, budget, chunk)
     _check_executor(executor, workers, scheduler)
     open_directory(out, planned.manifest, check_only=True)
     done = done_chunks(out)
-    pending = [(k, [(d, planned.designs[d]) for d in range(k * chunk, min((k + 1) * chunk, len(planned.designs)))])
-               for k in range(math.ceil(len(planned.designs) / chunk)) if k not in done]
-    computed = sum(len(designs) for _, designs in pending)
-    progress.stage(f"sweeping {len(planned.designs)} designs, {len(planned.designs) - computed} done before")
+    total = len(planned.designs)
+    chunks = [k for k in range(math.ceil(total / chunk)) if k not in done]
+    computed = sum(min((k + 1) * chunk, total) - k * chunk for k in chunks)
+    if not yes:  # counted, not made: a run refused here has made no design
+        _check_length(planned, computed, _parallel(executor, workers, scheduler))
+    pending = [(k, [(d, planned.designs[d]) for d in range(k * chunk, min((k + 1) * chunk, total))]) for k in chunks]
+    progress.stage(f"sweeping {total} designs, {total - computed} done before")
     with progress.counting(computed, "designs"):
         def written(index: int, rows: list) -> None:
             write_part(out, index, rows, planned.columns)
@@ -135,8 +145,49 @@ def sweep(scene: Any, out: str | pathlib.Path, grid: Iterable[str] = (), random:
                    ready=lambda: open_directory(out, planned.manifest))
     dataset = merge(out, planned.columns)
     statuses = read_dataset(out).column("status").to_pylist()
-    counts = {s: statuses.count(s) for s in ("ok", "does-not-assemble", "failed") if s in statuses}
-    return Sweep(pathlib.Path(out), dataset, len(planned.designs), computed, counts)
+    counts = {s: statuses.count(s) for s in STATUSES if s in statuses}
+    return Sweep(pathlib.Path(out), dataset, total, computed, counts)
+
+
+def projected_seconds(analyses: Iterable[str], designs: int, budget: float | None = None, parallel: int = 1) -> float:
+    """How long ``designs`` designs take at least: each its assembly and analyses' ``seconds`` (no more than
+    its ``budget``), ``parallel`` at once.
+
+    >>> projected_seconds(["curve", "limits"], 10**6, parallel=2) / DAY   # (0.02 + 0.05 + 0.2) s each
+    1.5625
+    >>> projected_seconds(["curve", "limits"], 10**6, budget=0.1, parallel=2) / DAY
+    0.5787037037037037
+    """
+    each = ASSEMBLY_SECONDS + sum(ANALYSES[name].seconds for name in analyses)
+    return designs * (each if budget is None else min(each, budget)) / parallel
+
+
+def _parallel(executor: str, workers: int | None, scheduler: str | None) -> int:
+    """Designs computed at once: the LocalCluster's workers (one a core by default); one in this process,
+    and one on a scheduler's cluster, whose size is not known before connecting."""
+    if executor != "dask" or scheduler is not None:
+        return 1
+    return workers or os.cpu_count() or 1
+
+
+def _check_length(planned: Plan, count: int, parallel: int) -> None:
+    seconds = projected_seconds(planned.job.analyses, count, planned.job.budget, parallel)
+    if seconds <= DAY:
+        return
+    space = planned.manifest["designs"]
+    flag, value = ("--random", space["random"]["count"]) if "random" in space else \
+        ("--grid", " ".join(f"{n}={v[0]}:{v[-1]}:{len(v)}" for n, v in space["grid"].items()))
+    raise UsageError(flag, value, f"{count} designs would take at least {_duration(seconds)} "
+                                  f"({_duration(seconds * parallel / count)} each, {parallel} at once); "
+                                  "give --yes to start anyway")
+
+
+def _duration(seconds: float) -> str:
+    """``2.5 days``, ``3.1 hours``, ``0.27 s``: a length of time, readable."""
+    for unit, size in (("days", DAY), ("hours", 3600.0)):
+        if seconds >= size:
+            return f"{seconds / size:.3g} {unit}"
+    return f"{seconds:.2g} s"
 
 
 def _check_executor(executor: str, workers: int | None, scheduler: str | None) -> None:

@@ -5,7 +5,10 @@ An ``Analysis`` says its columns (name -> Arrow type, in order) and computes the
 results are strings (sympy's, or JSON of exact pieces), figures are floats. An analysis that
 cannot answer raises; the sweep records the design as failed with that one line.
 
-``register`` adds one (a new name, its columns prefixed by it). ``singular`` gives the real
+``register`` adds one (a new name, its columns prefixed by it). Each says how long it takes on
+one design at least (``seconds``): the median on a catalog four-bar on the project's 2-core
+machine, rounded down, as measured for the 12 designs of ``a=1/2:3/2:4, d=7/2:9/2:3``; a sweep
+refuses to start a run projected from them past a day without ``--yes``. ``singular`` gives the real
 singular points of the coupler curve, exactly (``algkin.analyses.singular``): their count by
 kind (``singular_count``, all real ones, is what the atlas filters on) and the points.
 
@@ -64,6 +67,8 @@ class Analysis:
     name: str
     columns: dict[str, str]  # column -> Arrow type: string, float64, int64, bool, list<float64>
     run: Callable[[Design], dict[str, Any]]
+    # seconds one design takes at least (a four-bar's, rounded down): what a sweep's length is projected from
+    seconds: float = 0.0
 
 
 def _curve(design: Design) -> dict[str, Any]:
@@ -157,7 +162,7 @@ ANALYSES: dict[str, Analysis] = {}
 def register(analysis: Analysis) -> Analysis:
     """Add ``analysis`` to the table (a new name, its columns prefixed by it), so that ``--analyses`` takes it.
 
-    >>> register(Analysis("limits", {}, len))
+    >>> register(Analysis("limits", {}, len, seconds=0.2))
     Traceback (most recent call last):
     ...
     algkin.errors.UsageError: analysis='limits': is registered already
@@ -174,21 +179,21 @@ def register(analysis: Analysis) -> Analysis:
 
 register(Analysis("curve", {"curve_point": "string", "curve_degree": "int64", "curve_circularity": "int64",
                             "curve_irreducible": "bool", "curve_polynomial": "string",
-                            "curve_verification": "string"}, _curve))
+                            "curve_verification": "string"}, _curve, seconds=0.05))
 register(Analysis("grashof", {"grashof_class": "string", "grashof_margin": "string",
-                              "grashof_margin_float": "float64"}, _grashof))
+                              "grashof_margin_float": "float64"}, _grashof, seconds=0.001))
 register(Analysis("toggles", {"toggles_count": "int64", "toggles_deg": "list<float64>",
-                              "toggles_exact": "string"}, _toggles))
+                              "toggles_exact": "string"}, _toggles, seconds=0.003))
 register(Analysis("limits", {"limits_count": "int64", "limits_deg": "list<float64>", "limits_exact": "string",
                              "limits_time_ratio": "float64", "limits_time_ratio_exact": "string",
                              "limits_time_ratio_reason": "string", "limits_stroke": "float64",
-                             "limits_stroke_exact": "string"}, _limits))
+                             "limits_stroke_exact": "string"}, _limits, seconds=0.2))
 register(Analysis("transmission", {"transmission_of": "string",
                                    **{f"transmission_{k}_{f}": t for k in ("min", "max")
                                       for f, t in (("deg", "float64"), ("at_deg", "float64"), ("exact", "string"))}},
-                  _transmission))
+                  _transmission, seconds=0.05))
 register(Analysis("singular", {"singular_count": "int64", **{f"singular_{kind}s": "int64" for kind in _KINDS},
-                               "singular_complex": "int64", "singular_points": "string"}, _singular))
+                               "singular_complex": "int64", "singular_points": "string"}, _singular, seconds=0.01))
 
 
 def analyses_named(names: Iterable[str]) -> list[Analysis]:

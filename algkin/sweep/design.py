@@ -2,8 +2,10 @@
 
 A row never depends on where or when it was computed, but for its ``seconds_`` columns: the
 status is ``ok``, ``does-not-assemble`` (the scene's branch cannot assemble anywhere in the
-input range: ``algkin.branches.check_assembly``, the same test as ``derive``'s) or
-``failed`` with the one-line reason (the first analysis that failed, named).
+input range: ``algkin.branches.check_assembly``, the same test as ``derive``'s),
+``structure`` (it assembles at isolated inputs only: no motion, no curve;
+``algkin.derivation.assembles``) or ``failed`` with the one-line reason (the first analysis
+that failed, named).
 
 >>> from fractions import Fraction
 >>> job = Job(load_scene("fourbar"), ("grashof",), "P")
@@ -12,6 +14,8 @@ input range: ``algkin.branches.check_assembly``, the same test as ``derive``'s) 
 ('does-not-assemble', '10', None)
 >>> evaluate_design(job, 1, {"a": Fraction(1, 2)})["grashof_class"]
 'crank-rocker'
+>>> evaluate_design(job, 2, {"a": Fraction(5, 6), "d": Fraction(22, 3)})["status"]  # |DA| = l + m at 0 only
+'structure'
 """
 
 from __future__ import annotations
@@ -28,9 +32,10 @@ from ..runtime import progress
 from ..scene import load_scene
 from .analyses import ANALYSES, Design
 
-__all__ = ["Job", "evaluate_design", "evaluate_chunk", "columns", "TIMING_PREFIX", "REASON_CHARS"]
+__all__ = ["Job", "evaluate_design", "evaluate_chunk", "columns", "TIMING_PREFIX", "REASON_CHARS", "STATUSES"]
 
 TIMING_PREFIX = "seconds_"  # the only columns that may differ between two runs of the same sweep
+STATUSES = ("ok", "does-not-assemble", "structure", "failed")  # a row's status, in the order they are counted
 REASON_CHARS = 400  # a failure's reason is one line, at most this long
 
 
@@ -96,8 +101,7 @@ def _analyse(job: Job, values: Mapping[str, Fraction]) -> dict[str, Any]:
         design = _assembled(job, values)
         found: dict[str, Any] = {"status": "ok"}
     except SceneError as err:
-        kind = "does-not-assemble" if "never assemble" in str(err) else "failed"
-        found = {"status": kind, "reason": _one_line(str(err))}
+        found = {"status": _status_of(err), "reason": _one_line(str(err))}
     except Exception as err:  # noqa: BLE001 - a bad design is a row that says why, not a stopped sweep
         found = {"status": "failed", "reason": _one_line(f"scene: {err}")}
     found[f"{TIMING_PREFIX}assembly"] = time.perf_counter() - begun
@@ -114,9 +118,19 @@ def _analyse(job: Job, values: Mapping[str, Fraction]) -> dict[str, Any]:
     return found
 
 
+def _status_of(err: SceneError) -> str:
+    """``does-not-assemble``, ``structure`` (it assembles at isolated inputs only) or ``failed``."""
+    from ..derivation.assembles import STRUCTURE
+
+    if "never assemble" in str(err):
+        return "does-not-assemble"
+    return "structure" if STRUCTURE in str(err) else "failed"
+
+
 def _assembled(job: Job, values: Mapping[str, Fraction]) -> Design:
     """The design's scene, compiled with its dyads and sliders; SceneError if its branch never assembles."""
     from ..branches import check_assembly, closed_forms
+    from ..derivation.assembles import where_assembled
     from ..scene import compile_scene
     from ..scene.settings import with_values
 
@@ -124,7 +138,9 @@ def _assembled(job: Job, values: Mapping[str, Fraction]) -> Design:
     implicit = [n for n, p in scene.points.items() if p.labels]
     compiled = compile_scene(scene, implicit or [job.point])
     if implicit:
-        check_assembly(compiled, closed_forms(compiled))
+        branches = closed_forms(compiled)
+        check_assembly(compiled, branches)
+        where_assembled(compiled, branches)  # SceneError for a structure
     return Design(scene, compiled, job.point)
 
 

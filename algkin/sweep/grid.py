@@ -11,6 +11,10 @@ and the same on every machine.
 (['1', '3/2', '2'], ['3/2'])
 >>> [{k: str(v) for k, v in d.items()} for d in grid_designs(axes)][:2]
 [{'a': '1', 'l': '3/2'}, {'a': '3/2', 'l': '3/2'}]
+>>> parse_grid(["a=1:1:3"])
+Traceback (most recent call last):
+...
+algkin.errors.UsageError: --grid='a=1:1:3': LO = HI is one value, not 3: give COUNT 1
 >>> parse_grid(["a=2:1:3"])
 Traceback (most recent call last):
 ...
@@ -21,18 +25,21 @@ algkin.errors.UsageError: --grid='a=2:1:3': LO must not exceed HI
 
 from __future__ import annotations
 
-import itertools
-from collections.abc import Iterable, Mapping, Sequence
+import math
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from fractions import Fraction
+from typing import overload
 
 import numpy as np
 
 from ..errors import UsageError
 
-__all__ = ["parse_grid", "parse_ranges", "grid_designs", "random_designs", "RANDOM_STEPS", "MAX_DESIGNS"]
+__all__ = ["parse_grid", "parse_ranges", "grid_designs", "random_designs", "Designs", "RANDOM_STEPS", "MAX_DESIGNS"]
 
 RANDOM_STEPS = 10**6  # a random value is LO + (HI - LO) * k / RANDOM_STEPS, k drawn whole
-MAX_DESIGNS = 10**7  # more rows than one Parquet dataset of a sweep is meant to hold
+# designs of one sweep at most: each is held in memory while planned (the grid's or the draws'
+# values, about half a gigabyte at this many), and a million four-bars take days already
+MAX_DESIGNS = 10**6
 
 
 def _exact(text: str, spec: str) -> Fraction:
@@ -74,21 +81,36 @@ def _once(specs: Iterable[str]) -> list[str]:
 
 
 def parse_grid(specs: Iterable[str]) -> dict[str, list[Fraction]]:
-    """``{name: exact values}`` from ``NAME=LO:HI:COUNT`` strings."""
-    axes = {}
-    for spec in _once(specs):
-        name, fields = _split(spec, 3)
-        lo, hi = _bounds(spec, fields)
-        count = fields[2].strip()
-        if not count.isdigit() or int(count) < 1:
-            raise UsageError("--grid", spec, f"COUNT must be a whole number from 1, got {count!r}")
-        n = int(count)
-        if n == 1 and lo != hi:
-            raise UsageError("--grid", spec, "COUNT 1 needs LO = HI (one value)")
-        axes[name] = [lo] if n == 1 else [lo + (hi - lo) * k / (n - 1) for k in range(n)]
-    if np.prod([len(v) for v in axes.values()], dtype=float) > MAX_DESIGNS:
-        raise UsageError("--grid", " ".join(specs), f"more than {MAX_DESIGNS} designs")
-    return axes
+    """``{name: exact values}`` from ``NAME=LO:HI:COUNT`` strings; their product counted (and refused
+    past ``MAX_DESIGNS``) before any value is made.
+
+    >>> parse_grid(["a=1:2:1000000000"])
+    Traceback (most recent call last):
+    ...
+    algkin.errors.UsageError: --grid='a=1:2:1000000000': 1000000000 designs, more than 1000000
+    """
+    specs = _once(specs)
+    axes = [_axis(spec) for spec in specs]
+    total = math.prod(n for _, _, _, n in axes)
+    if total > MAX_DESIGNS:
+        raise UsageError("--grid", " ".join(specs), f"{total} designs, more than {MAX_DESIGNS}")
+    return {name: [lo] if n == 1 else [lo + (hi - lo) * k / (n - 1) for k in range(n)] for name, lo, hi, n in axes}
+
+
+def _axis(spec: str) -> tuple[str, Fraction, Fraction, int]:
+    """``(name, lo, hi, count)`` of one ``NAME=LO:HI:COUNT``: COUNT distinct values, so LO = HI with COUNT 1
+    and only then."""
+    name, fields = _split(spec, 3)
+    lo, hi = _bounds(spec, fields)
+    count = fields[2].strip()
+    if not count.isdigit() or int(count) < 1:
+        raise UsageError("--grid", spec, f"COUNT must be a whole number from 1, got {count!r}")
+    n = int(count)
+    if n == 1 and lo != hi:
+        raise UsageError("--grid", spec, "COUNT 1 needs LO = HI (one value)")
+    if n > 1 and lo == hi:
+        raise UsageError("--grid", spec, f"LO = HI is one value, not {n}: give COUNT 1")
+    return name, lo, hi, n
 
 
 def parse_ranges(specs: Iterable[str]) -> dict[str, tuple[Fraction, Fraction]]:
@@ -100,13 +122,56 @@ def parse_ranges(specs: Iterable[str]) -> dict[str, tuple[Fraction, Fraction]]:
     return ranges
 
 
-def grid_designs(axes: Mapping[str, Sequence[Fraction]]) -> list[dict[str, Fraction]]:
+class Designs(Sequence[dict[str, Fraction]]):
+    """A sweep's designs, each ``{name: exact value}`` made only when asked for by its index: a plan
+    of a million designs holds their recipe, not a million dictionaries.
+
+    >>> designs = grid_designs({"a": [Fraction(1), Fraction(2)], "l": [Fraction(5), Fraction(6), Fraction(7)]})
+    >>> len(designs), designs[4], designs[-1] == designs[5]
+    (6, {'a': Fraction(2, 1), 'l': Fraction(6, 1)}, True)
+    """
+
+    def __init__(self, names: Sequence[str], count: int, values: Callable[[int], Sequence[Fraction]]) -> None:
+        self.names, self.size, self.values = list(names), count, values
+
+    def __len__(self) -> int:
+        return self.size
+
+    @overload
+    def __getitem__(self, index: int) -> dict[str, Fraction]: ...
+
+    @overload
+    def __getitem__(self, index: slice) -> list[dict[str, Fraction]]: ...
+
+    def __getitem__(self, index: int | slice) -> dict[str, Fraction] | list[dict[str, Fraction]]:
+        if isinstance(index, slice):
+            return [self[k] for k in range(*index.indices(self.size))]
+        k = index + self.size if index < 0 else index
+        if not 0 <= k < self.size:
+            raise IndexError(index)
+        return dict(zip(self.names, self.values(k)))
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Sequence) and len(self) == len(other) and all(a == b for a, b in zip(self, other))
+
+    __hash__ = None  # type: ignore[assignment]  # compared by value, as a list is
+
+
+def grid_designs(axes: Mapping[str, Sequence[Fraction]]) -> Designs:
     """Every combination of the axes' values, the first axis varying slowest."""
-    names = list(axes)
-    return [dict(zip(names, values)) for values in itertools.product(*(axes[n] for n in names))]
+    lists = [list(values) for values in axes.values()]
+
+    def values(k: int) -> list[Fraction]:
+        found = []
+        for axis in reversed(lists):  # the last axis varies fastest: the lowest digit of k
+            k, digit = divmod(k, len(axis))
+            found.append(axis[digit])
+        return found[::-1]
+
+    return Designs(list(axes), math.prod(len(v) for v in lists), values)
 
 
-def random_designs(ranges: Mapping[str, tuple[Fraction, Fraction]], count: int, seed: int) -> list[dict[str, Fraction]]:
+def random_designs(ranges: Mapping[str, tuple[Fraction, Fraction]], count: int, seed: int) -> Designs:
     """``count`` designs drawn uniformly (on a lattice of RANDOM_STEPS steps) in ``ranges``, from ``seed``."""
     if not 1 <= count <= MAX_DESIGNS:
         raise UsageError("--random", count, f"expected a number of designs from 1 to {MAX_DESIGNS}")
@@ -114,5 +179,6 @@ def random_designs(ranges: Mapping[str, tuple[Fraction, Fraction]], count: int, 
         raise UsageError("--seed", seed, "expected a whole number from 0")
     steps = np.random.Generator(np.random.PCG64(seed)).integers(0, RANDOM_STEPS, size=(count, len(ranges)),
                                                                 endpoint=True)
-    return [{name: lo + (hi - lo) * Fraction(int(k), RANDOM_STEPS) for (name, (lo, hi)), k in zip(ranges.items(), row)}
-            for row in steps]
+    bounds = list(ranges.values())
+    return Designs(list(ranges), count, lambda k: [lo + (hi - lo) * Fraction(int(step), RANDOM_STEPS)
+                                                   for (lo, hi), step in zip(bounds, steps[k])])

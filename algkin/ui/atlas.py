@@ -25,11 +25,13 @@ from typing import Any
 
 import numpy as np
 
+from ..errors import UsageError
 from ..runtime.files import check_output, write_atomic
 from .html import fill, script_json
 
-__all__ = ["write_atlas", "atlas_data", "atlas_page", "BOX", "FILTERS"]
+__all__ = ["write_atlas", "atlas_data", "atlas_page", "BOX", "FILTERS", "MAX_SAMPLES"]
 
+MAX_SAMPLES = 3601  # inputs per thumbnail at most: a tenth of a degree apart, finer than its 100 units show
 BOX = 100  # each thumbnail's SVG view box is BOX x BOX, the curve inside a margin of MARGIN
 MARGIN = 5
 FILTERS = {"class": "grashof_class", "degree": "curve_degree", "singular": "singular_count"}
@@ -94,7 +96,6 @@ def atlas_data(folder: str | pathlib.Path, samples: int = 181) -> dict[str, Any]
     """The page's data: one entry per design (values, status, the filtered columns, thumbnail paths)."""
     from ..scene.load import load_scene_text
     from ..sweep import read_dataset, read_manifest
-    from ..errors import UsageError
 
     manifest = read_manifest(folder)
     if manifest is None:
@@ -115,7 +116,7 @@ def _entry(row: dict[str, Any], swept: list[str], tracer: _Tracer) -> dict[str, 
              "class": row.get("grashof_class"), "degree": row.get("curve_degree"),
              "circularity": row.get("curve_circularity"), "singular": row.get("singular_count"),
              "tmin": row.get("transmission_min_deg"), "tmax": row.get("transmission_max_deg"), "paths": []}
-    if row["status"] == "does-not-assemble":
+    if row["status"] in ("does-not-assemble", "structure"):  # no motion: nothing to draw
         return entry
     tracks = tracer.tracks(values)
     frame = _frame([t for _, t in tracks])
@@ -133,6 +134,8 @@ def atlas_page(data: dict[str, Any]) -> str:
 
 def write_atlas(folder: str | pathlib.Path, out: str | pathlib.Path, samples: int = 181) -> dict[str, int]:
     """Write the atlas of the sweep in ``folder`` to ``out``; how many designs it holds and how many it draws."""
+    if not 1 <= samples <= MAX_SAMPLES:
+        raise UsageError("--samples", samples, f"expected a number of inputs per thumbnail from 1 to {MAX_SAMPLES}")
     check_output("--out", str(out))
     data = atlas_data(folder, samples)
     write_atomic(out, atlas_page(data))

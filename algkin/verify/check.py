@@ -169,7 +169,8 @@ def real_floats(discriminants: ArrayProgram, floats: Mapping[str, Floats], known
 def verify_branches(system: System, indicators: Sequence[Indicator], branches: Sequence[BranchForms],
                     inputs: Mapping[str, tuple[float, float]], parameters: Mapping[str, ExactValue],
                     samples: int = 50, seed: int = 0, polynomials: Mapping[str, PolynomialLike] | None = None,
-                    factors: Mapping[str, Sequence[PolynomialLike]] | None = None) -> Verification:
+                    factors: Mapping[str, Sequence[PolynomialLike]] | None = None,
+                    where: Mapping[str, Sequence[tuple[float, float]]] | None = None) -> Verification:
     """Check ``branches`` (list of ``(labels, values, discriminants)``) on ``samples`` inputs
     where something could be compared.
 
@@ -178,7 +179,10 @@ def verify_branches(system: System, indicators: Sequence[Indicator], branches: S
     parameter; ``polynomials`` (name -> expression) must vanish on every root and be
     squarefree. ``factors`` (name -> the polynomial's kept factors) must multiply to it, and
     each must vanish by itself on some root: otherwise it is extraneous (see ``minimal``).
+    ``where`` (input -> intervals within its range, in its units) confines the samples to where
+    something may assemble, when that is a small part of the range (``algkin.derivation.assembles``).
     """
+    spans = {n: list((where or {}).get(n) or [span]) for n, span in inputs.items()}
     rng = np.random.default_rng(seed)
     report = Verification(0, 0.0, False)
     useful = drawn = 0
@@ -191,7 +195,7 @@ def verify_branches(system: System, indicators: Sequence[Indicator], branches: S
         # either); after those, more are drawn, and solved only where some branch is real, until
         # ``samples`` inputs have compared something (at most twice as many solved in all).
         while useful < samples and drawn < samples * MAX_DRAWS and report.samples < 2 * samples:
-            angles, drawn = _batch(plan, inputs, rng, drawn, samples - useful, 2 * samples - report.samples,
+            angles, drawn = _batch(plan, spans, rng, drawn, samples - useful, 2 * samples - report.samples,
                                    samples * MAX_DRAWS, first=not drawn)
             count = len(next(iter(angles.values()), [None]))
             if not count:
@@ -210,16 +214,34 @@ def verify_branches(system: System, indicators: Sequence[Indicator], branches: S
     return report
 
 
-def _batch(plan: _Plan, inputs: Mapping[str, tuple[float, float]], rng: np.random.Generator, drawn: int,
+def _batch(plan: _Plan, spans: Mapping[str, Sequence[tuple[float, float]]], rng: np.random.Generator, drawn: int,
            needed: int, solvable: int, most: int, first: bool) -> tuple[dict[str, Floats], int]:
     """The next inputs to solve (input -> radians) and the draws counted so far."""
     if first:
-        return {n: rng.uniform(lo, hi, needed) for n, (lo, hi) in inputs.items()}, needed
+        return {n: _uniform(rng, pieces, needed) for n, pieces in spans.items()}, needed
     pool = min(most - drawn, max(8 * needed, 64))
-    angles = {n: rng.uniform(lo, hi, pool) for n, (lo, hi) in inputs.items()}
+    angles = {n: _uniform(rng, pieces, pool) for n, pieces in spans.items()}
     chosen = np.flatnonzero(plan.any_real(plan.floats(angles)))[:min(needed, solvable)]
     used = int(chosen[-1]) + 1 if len(chosen) == min(needed, solvable) and len(chosen) else pool
     return {n: a[chosen] for n, a in angles.items()}, drawn + used
+
+
+def _uniform(rng: np.random.Generator, pieces: Sequence[tuple[float, float]], count: int) -> Floats:
+    """``count`` draws uniform on the union of the disjoint intervals ``pieces`` (one interval: numpy's own).
+
+    >>> draws = _uniform(np.random.default_rng(0), [(0.0, 1.0), (3.0, 4.0)], 1000)
+    >>> bool(np.all((draws <= 1) | (draws >= 3))), bool(200 < np.sum(draws < 2) < 800)
+    (True, True)
+    """
+    if len(pieces) == 1:
+        (lo, hi), = pieces
+        return rng.uniform(lo, hi, count)
+    widths = np.array([hi - lo for lo, hi in pieces])
+    ends = np.cumsum(widths)
+    along = rng.uniform(0.0, float(ends[-1]), count)
+    index = np.minimum(np.searchsorted(ends, along, side="right"), len(pieces) - 1)
+    starts = np.array([lo for lo, _ in pieces])
+    return starts[index] + along - (ends[index] - widths[index])
 
 
 def _check_batch(report: Verification, plan: _Plan, angles: Mapping[str, Floats], rng: np.random.Generator,

@@ -94,6 +94,13 @@ def test_a_four_bar_that_never_assembles_has_no_values():
     assert found["grashof_class"] is None and found["curve_degree"] is None
 
 
+def test_a_four_bar_that_assembles_at_one_angle_only_is_a_structure():
+    # a = 5/6, d = 22/3: |AD| >= d - a = 13/2 = l + m, equal at theta = 0 only: no motion, no curve
+    found = row(["grashof", "curve"], a="5/6", d="22/3")
+    assert found["status"] == "structure" and "assembles only at theta = 0°" in found["reason"]
+    assert found["grashof_class"] is None and found["curve_degree"] is None
+
+
 def test_a_failing_analysis_is_named_and_the_others_kept():
     scene = load_scene("slider-crank")  # no ground pivot for a rocker: no Grashof class
     found = evaluate_design(Job(scene, ("grashof", "toggles"), "B"), 3, {})

@@ -28,6 +28,7 @@ def test_the_first_axis_varies_slowest():
     ("a=1:2:0", "COUNT must be a whole number from 1"),
     ("a=1:2:2.5", "COUNT must be a whole number from 1"),
     ("a=1:2:1", "COUNT 1 needs LO = HI"),
+    ("a=1:1:3", "LO = HI is one value, not 3: give COUNT 1"),  # three identical designs
     ("a=1e200:1e201:2", "outside 1e-100 to 1e100"),
 ])
 def test_bad_grids_are_refused(spec, says):
@@ -46,6 +47,25 @@ def test_too_many_designs_are_refused_before_any_is_made():
         parse_grid([f"{n}=0:1:1000" for n in "abc"])
 
 
+def test_a_billion_values_are_counted_not_made():
+    import tracemalloc
+
+    tracemalloc.start()
+    try:
+        with pytest.raises(UsageError, match="1000000000 designs, more than 1000000"):
+            parse_grid(["a=1:2:1000000000"])
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert peak < 10**6  # bytes: not one value per design (a billion Fractions would be ~100 GB)
+
+
+def test_the_cap_is_the_product_of_the_counts():
+    assert len(grid_designs(parse_grid(["a=0:1:1000", "b=0:1:1000"]))) == 10**6  # at the cap: taken
+    with pytest.raises(UsageError, match="1001000 designs"):
+        parse_grid(["a=0:1:1000", "b=0:1:1001"])
+
+
 @given(st.integers(0, 2**32), st.integers(1, 20))
 def test_random_draws_repeat_with_the_seed_and_stay_in_range(seed, count):
     ranges = parse_ranges(["a=1/3:2", "l=-1:1"])
@@ -61,3 +81,17 @@ def test_random_draws_repeat_with_the_seed_and_stay_in_range(seed, count):
 def test_random_ranges_take_no_count():
     with pytest.raises(UsageError, match="expected NAME=LO:HI"):
         parse_ranges(["a=1:2:3"])
+
+
+def test_a_run_refused_for_its_length_made_no_design(tmp_path, monkeypatch):
+    from algkin.sweep import sweep
+    from algkin.sweep.grid import Designs
+
+    made = []
+    get = Designs.__getitem__
+    monkeypatch.setattr(Designs, "__getitem__", lambda self, k: made.append(k) or get(self, k))
+    # 10^6 designs of limits, at least 0.22 s each one at a time: 2.5 days
+    with pytest.raises(UsageError, match="give --yes"):
+        sweep("fourbar", tmp_path / "out", grid=["a=1:2:1000", "d=1:2:1000"], analyses=["limits"], executor="serial")
+    assert made == [0, 0]  # the first design's names, read by the plan; no other made
+    assert not (tmp_path / "out").exists()

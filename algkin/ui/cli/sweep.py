@@ -17,7 +17,7 @@ def add_commands(commands, command, json_option):
     sweep.add_argument("--random", type=_positive, metavar="N", help="N designs drawn in the --grid ranges")
     sweep.add_argument("--seed", type=int, default=0, help="random seed of the --random draws")
     sweep.add_argument("--analyses", default="curve", metavar="A,B,...",
-                       help="comma-separated: curve, grashof, toggles, limits, transmission")
+                       help="comma-separated: curve, grashof, toggles, limits, transmission, singular")
     sweep.add_argument("--point", help="the point whose coupler curve is found and drawn (default: the scene's last)")
     sweep.add_argument("--out", required=True, metavar="DIR", help="the sweep's directory (resumed if it holds it)")
     sweep.add_argument("--executor", default="dask", help="dask (a LocalCluster, or --scheduler) or serial")
@@ -25,11 +25,14 @@ def add_commands(commands, command, json_option):
     sweep.add_argument("--scheduler", metavar="ADDRESS", help="an existing Dask scheduler, e.g. tcp://host:8786")
     sweep.add_argument("--budget", type=float, metavar="SECONDS", help="seconds per design; past it, the design fails")
     sweep.add_argument("--chunk", type=_positive, default=8, help="designs per part file and per Dask task")
+    sweep.add_argument("--yes", action="store_true",
+                       help="start even a run projected to take longer than a day (it is refused otherwise)")
     json_option(sweep, "the counts and the dataset written")
     atlas = command(commands, "atlas", "a self-contained page browsing a sweep's coupler curves, with filters")
     atlas.add_argument("dir", metavar="DIR", help="a finished sweep's directory (algkin sweep --out DIR)")
     atlas.add_argument("--out", required=True, help="the .html page to write")
-    atlas.add_argument("--samples", type=_positive, default=181, help="inputs sampled per curve for its thumbnail")
+    atlas.add_argument("--samples", type=_positive, default=181,
+                       help="inputs sampled per curve for its thumbnail (at most 3601, every tenth of a degree)")
     json_option(atlas, "what was written")
 
 
@@ -44,7 +47,8 @@ def _cmd_sweep(args):
 
     done = sweep(args.scene, args.out, grid=args.grid, random=args.random, seed=args.seed,
                  analyses=[a for a in args.analyses.split(",")], point=args.point, executor=args.executor,
-                 workers=args.workers, scheduler=args.scheduler, budget=args.budget, chunk=args.chunk)
+                 workers=args.workers, scheduler=args.scheduler, budget=args.budget, chunk=args.chunk,
+                 yes=args.yes)
     document = done.to_json()
     if args.json:
         return json.dumps(document, indent=2) + "\n", 0

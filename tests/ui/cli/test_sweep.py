@@ -22,6 +22,8 @@ GOOD = ["sweep", "fourbar", "--grid", "a=1:2:2", "--analyses", "grashof", "--exe
     (["--point", "Z"], "--point='Z': not a point of fourbar"),
     (["--random", "5"], "--grid='a=1:2:2': expected NAME=LO:HI, e.g. a=1:2 (with --random)"),
     (["--chunk", "x"], "expected a whole number from 1"),
+    (["--grid", "a=1:2:1000000000"], "--grid='a=1:2:1000000000': 1000000000 designs, more than 1000000"),
+    (["--grid", "a=1:1:3"], "--grid='a=1:1:3': LO = HI is one value, not 3: give COUNT 1"),
 ])
 def test_bad_input_is_one_line_and_nothing_is_written(tmp_path, capsys, change, says):
     argv = GOOD + ["--out", str(tmp_path / "out")]
@@ -36,6 +38,55 @@ def test_bad_input_is_one_line_and_nothing_is_written(tmp_path, capsys, change, 
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and says in err, err
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("extra, says", [
+    (["--grid", "a=1:3:2"], "--grid='a': given twice"),
+    (["--random", "1000000000"], "--random=1000000000: expected a number of designs from 1 to 1000000"),
+])
+def test_a_name_twice_and_absurd_draws_are_refused(tmp_path, capsys, extra, says):
+    grid = "a=1:2" if "--random" in extra else "a=1:2:2"
+    argv = ["sweep", "fourbar", "--grid", grid, *extra, "--executor", "serial", "--out", str(tmp_path / "out")]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and says in err, err
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_run_longer_than_a_day_asks_for_yes(tmp_path, capsys):
+    # 10^6 designs, each at least 0.02 s to assemble and 0.2 s of limits (the table's floors, not this
+    # machine's speed), one at a time: 220000 s, 2.55 days
+    argv = ["sweep", "fourbar", "--grid", "a=1:2:1000", "--grid", "d=1:2:1000", "--analyses", "limits",
+            "--executor", "serial", "--out", str(tmp_path / "out")]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and not (tmp_path / "out").exists()
+    assert ("--grid='a=1:2:1000 d=1:2:1000': 1000000 designs would take at least 2.55 days (0.22 s each, "
+            "1 at once); give --yes to start anyway") in err
+
+
+def test_yes_starts_it(tmp_path, capsys, monkeypatch):
+    import dataclasses
+
+    from algkin.sweep import ANALYSES
+
+    # an injected cost: two designs of a day each, one at a time, are two days
+    monkeypatch.setitem(ANALYSES, "grashof", dataclasses.replace(ANALYSES["grashof"], seconds=86400.0))
+    argv = GOOD + ["--out", str(tmp_path / "out")]
+    assert main(argv) == 2
+    assert "2 designs would take at least 2 days" in capsys.readouterr().err
+    assert main(argv + ["--yes"]) == 0
+    assert capsys.readouterr().out.startswith("2 designs (2 computed now): ok 2")
+
+
+def test_the_atlas_samples_have_a_cap(tmp_path, capsys):
+    assert main(GOOD + ["--out", str(tmp_path / "out")]) == 0
+    capsys.readouterr()
+    argv = ["atlas", str(tmp_path / "out"), "--out", str(tmp_path / "atlas.html"), "--samples", "1000000000"]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--samples=1000000000: expected a number of inputs per thumbnail from 1 to 3601" in err
+    assert not (tmp_path / "atlas.html").exists()
 
 
 def test_a_directory_holding_other_files_is_refused(tmp_path, capsys):
@@ -53,6 +104,23 @@ def test_a_sweep_and_its_atlas(tmp_path, capsys):
     assert document["status"] == {"ok": 2, "does-not-assemble": 2}
     assert main(["atlas", str(tmp_path / "out"), "--out", str(tmp_path / "atlas.html")]) == 0
     assert capsys.readouterr().out == f"wrote {tmp_path / 'atlas.html'}: 2 of 4 designs drawn\n"
+
+
+def test_a_structure_among_moving_designs_has_its_own_status(tmp_path, capsys):
+    # a = 5/6 and d = 16/3, 19/3, 22/3 (coupler 3, rocker 7/2): |AD| runs from d - a to d + a, B needs
+    # 1/2 <= |AD| <= 13/2. d = 16/3: 9/2 to 37/6, the whole turn; d = 19/3: from 11/2, part of it;
+    # d = 22/3: from 13/2, reached at theta = 0 only: a structure, no curve, no thumbnail
+    argv = ["sweep", "fourbar", "--grid", "a=5/6:5/6:1", "--grid", "d=16/3:22/3:3", "--analyses", "curve",
+            "--executor", "serial", "--out", str(tmp_path / "out"), "--json"]
+    assert main(argv) == 0
+    assert json.loads(capsys.readouterr().out)["status"] == {"ok": 2, "structure": 1}
+    from algkin.sweep import read_dataset
+
+    table = read_dataset(tmp_path / "out")
+    assert table.column("status").to_pylist() == ["ok", "ok", "structure"]
+    assert table.column("curve_degree").to_pylist() == [6, 6, None]
+    assert main(["atlas", str(tmp_path / "out"), "--out", str(tmp_path / "atlas.html")]) == 0
+    assert capsys.readouterr().out.endswith(": 2 of 3 designs drawn\n")
 
 
 def test_the_atlas_of_a_directory_without_a_sweep(tmp_path, capsys):
