@@ -19,52 +19,75 @@ import json
 import sys
 
 from ...errors import AlgkinError, BudgetExceeded, SceneError, UsageError
-from ...runtime import progress
-from .commands import COMMANDS
-from .parser import build_parser, usage
-from .reports import terminal_safe
-from .signals import _Stopped, _stopping_signals, _write
+from .signals import _Stopped, _say, _stdout_closed, _stopping_signals, _write
 
 __all__ = ["main", "usage", "build_parser", "terminal_safe"]
 
 _ERROR_KINDS = ((UsageError, "usage"), (SceneError, "scene"), (BudgetExceeded, "budget"))
 
 
+def __getattr__(name):
+    # Loaded on first use: the command line's own imports come after its signal handlers (``main``).
+    if name in ("usage", "build_parser"):
+        from . import parser
+
+        return getattr(parser, name)
+    if name == "terminal_safe":
+        from .reports import terminal_safe
+
+        return terminal_safe
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
 def main(argv=None):
     """Run one command line (``argv``, by default the process's) and return its exit code.
 
-    Signal handlers are installed only while it runs, so that calling it in-process (tests)
-    leaves the caller's in place.
+    Called with a command line, as in tests, it installs its signal handlers only while it runs and
+    then puts the caller's back. Called as the program (no ``argv``), it installs them before it
+    imports anything more, and leaves the default ones after it (a signal then ends the
+    process as it would any program, without a traceback).
     """
-    argv = sys.argv[1:] if argv is None else list(argv)
-    if not argv:
-        # Bare ``algkin`` is a question ("what can it do?"), not a mistake: the help listing the
-        # commands, on stdout, exit 0 (as ``--help``); a wrong command line is still exit 2.
-        return _write(build_parser().format_help(), 0)
+    with _stopping_signals(restore=argv is not None):
+        return _main(sys.argv[1:] if argv is None else list(argv))
+
+
+def _main(argv):
     args = None  # until parsed: an error before then still says what it can
-    with _stopping_signals():
-        try:
-            args = build_parser().parse_args(argv)
-            with progress.shown(args.quiet):  # ended, and its line cleared, before anything is said
-                text, code, *files = _run(args)
-            _save(*files)
-            return _write(text, code)  # a signal while writing (to a slow reader) is caught too
-        except _Stopped as stop:
-            return _write(_failed(argv, args, "interrupted", str(stop), str(stop)), 128 + stop.signum)
-        except (SceneError, UsageError) as err:
-            return _write(_failed(argv, args, _kind(err), str(err), f"error: {err}"), 2)
-        except AlgkinError as err:
-            return _write(_failed(argv, args, _kind(err), str(err), f"failed: {err}"), 1)
+    try:
+        from .commands import COMMANDS
+        from .parser import build_parser
+        from .paths import check_paths
+
+        if not argv:
+            # Bare ``algkin`` is a question ("what can it do?"), not a mistake: the help listing the
+            # commands, on stdout, exit 0 (as ``--help``); a wrong command line is still exit 2.
+            return _write(build_parser().format_help(), 0)
+        args = build_parser().parse_args(argv)
+        if _stdout_closed():
+            return 1  # said: no work whose result could not be written
+        check_paths(args)  # before any work: every output writable, none over an input
+        from ...runtime import progress
+
+        with progress.shown(args.quiet):  # ended, and its line cleared, before anything is said
+            text, code, *files = _run(COMMANDS, args)
+        _save(*files)
+        return _write(text, code)  # a signal while writing (to a slow reader) is caught too
+    except _Stopped as stop:
+        return _write(_failed(argv, args, "interrupted", str(stop), str(stop)), 128 + stop.signum)
+    except (SceneError, UsageError) as err:
+        return _write(_failed(argv, args, _kind(err), str(err), f"error: {err}"), 2)
+    except AlgkinError as err:
+        return _write(_failed(argv, args, _kind(err), str(err), f"failed: {err}"), 1)
 
 
-def _run(args):
+def _run(commands, args):
     """The command's output and exit code, all of its work (imports, loading, compiling, the algebra,
     formatting) done within its budget: in a child process killed at the deadline, if it has one."""
     from ...runtime.budget import Budget
 
     budget = Budget(seconds=getattr(args, "max_seconds", None), terms=getattr(args, "max_terms", None))
     budget.note(f"starting {args.command}")  # until the command says more (its imports come first)
-    return budget.run(functools.partial(COMMANDS[args.command], args))
+    return budget.run(functools.partial(commands[args.command], args))
 
 
 def _save(files=()):
@@ -77,7 +100,10 @@ def _save(files=()):
 
 def _failed(argv, args, kind, message, line):
     """Say ``line`` on stderr; what stdout gets: with --json, the error as the one JSON document."""
-    print(f"algkin: {terminal_safe(line)}", file=sys.stderr)
+    from .commands import COMMANDS
+    from .reports import terminal_safe
+
+    _say(terminal_safe(line))
     if not (getattr(args, "json", False) if args is not None else "--json" in argv):
         return ""
     command = args.command if args is not None else next(iter(argv), None)

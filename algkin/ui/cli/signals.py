@@ -1,5 +1,9 @@
 """Stopping signals and stdout: one line and exit 128 + N on SIGINT, SIGTERM or SIGHUP, with every
-``finally`` run on the way out (a budget's worker is killed); a closed stdout ends quietly."""
+``finally`` run on the way out (a budget's worker is killed); a reader of stdout gone ends quietly,
+a stdout that cannot be written (closed, a full disk) is one line and exit 1.
+
+Nothing here imports more than the standard library: ``main`` sets these handlers before its
+other imports (sympy's take half a second, long enough for a Ctrl-C)."""
 
 import contextlib
 import os
@@ -19,18 +23,52 @@ _STOPS = {signal.SIGINT: "interrupted", signal.SIGTERM: "terminated (SIGTERM)", 
 _STDOUT_CLOSED = 128 + signal.SIGPIPE
 
 
+# Stdout cannot take the output (``> /dev/full``, closed): the environment failed the command, not
+# its input, so 1, as for a file that cannot be written (OutputError).
+_STDOUT_FAILED = 1
+
+
 def _write(text, code):
     """Write ``text`` to stdout and flush it now, so that a closed pipe shows here and not at
-    exit; the exit code: ``code``, or _STDOUT_CLOSED if the reader has gone."""
+    exit; the exit code: ``code``, _STDOUT_CLOSED if the reader has gone, _STDOUT_FAILED (and one
+    line on stderr) if stdout cannot be written."""
+    if _stdout_closed():
+        return _STDOUT_FAILED
     try:
         sys.stdout.write(text)
         sys.stdout.flush()
     except BrokenPipeError:
-        # The Python docs' recipe (signal module, "Note on SIGPIPE"): point stdout at devnull so
-        # that the interpreter's own flush at exit finds no broken pipe either.
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        _drop_stdout()
         return _STDOUT_CLOSED
+    except OSError as err:
+        _drop_stdout()
+        _say(f"cannot write to standard output: {err.strerror or err}")
+        return _STDOUT_FAILED
     return code
+
+
+def _drop_stdout():
+    """The Python docs' recipe (signal module, "Note on SIGPIPE"): point stdout at devnull so that
+    the interpreter's own flush at exit, of what could not be written, fails no more."""
+    with contextlib.suppress(OSError, ValueError):
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+
+
+def _stdout_closed():
+    """Whether the process has no stdout (``algkin list >&-``: Python's ``sys.stdout`` is None);
+    if so, said on stderr."""
+    if sys.stdout is not None:
+        return False
+    _say("cannot write to standard output: it is closed")
+    return True
+
+
+def _say(line):
+    """``line`` on stderr, after ``algkin: ``; nothing if stderr cannot take it (closed or full)."""
+    if sys.stderr is None:
+        return  # print(file=None) would write to stdout
+    with contextlib.suppress(OSError, ValueError):
+        print(f"algkin: {line}", file=sys.stderr, flush=True)
 
 
 class _Stopped(BaseException):
@@ -44,8 +82,10 @@ class _Stopped(BaseException):
 
 
 @contextlib.contextmanager
-def _stopping_signals():
-    """While the block runs, the stopping signals raise ``_Stopped``; then the handlers found are back."""
+def _stopping_signals(restore=True):
+    """While the block runs, the stopping signals raise ``_Stopped``; then the handlers found are back,
+    or unless ``restore``, the system's defaults: a signal while the process ends (its exit
+    handlers) ends it as any program, with no ``KeyboardInterrupt`` traceback."""
     if threading.current_thread() is not threading.main_thread():
         yield  # only the main thread may set handlers, and only it receives signals
         return
@@ -55,7 +95,7 @@ def _stopping_signals():
     finally:
         for signum, handler in found.items():
             # None: a handler not set from Python; the default is the nearest we can put back.
-            signal.signal(signum, signal.SIG_DFL if handler is None else handler)
+            signal.signal(signum, signal.SIG_DFL if handler is None or not restore else handler)
 
 
 def _stop(signum, frame):
