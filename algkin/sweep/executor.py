@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import contextlib
 import logging
+import signal
 import warnings
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
@@ -19,7 +20,7 @@ from typing import Any
 from ..errors import UsageError
 from .design import Job, evaluate_chunk
 
-__all__ = ["EXECUTORS", "run_chunks", "dask_modules"]
+__all__ = ["EXECUTORS", "run_chunks", "dask_modules", "dask_setup"]
 
 EXECUTORS = ("dask", "serial")
 CONNECT_SECONDS = 10  # how long to wait for the scheduler at --scheduler ADDRESS
@@ -57,9 +58,10 @@ def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, A
     """A Dask client on a LocalCluster of ``workers`` processes, or on the scheduler at ``scheduler``;
     everything it started closed when the block ends."""
     dask, distributed = dask_modules()
-    # Workers that may fork (a per-design budget runs in a forked child): not daemonic.
+    # Workers that may fork (a per-design budget runs in a forked child): not daemonic. Each runs
+    # this module's dask_setup as it starts.
     settings = {"distributed.worker.daemon": False, "distributed.admin.tick.limit": "1h",
-                "logging.distributed": "critical"}
+                "logging.distributed": "critical", "distributed.worker.preload": [__name__]}
     with dask.config.set(settings), _quiet_logs(), warnings.catch_warnings(), contextlib.ExitStack() as stack:
         warnings.simplefilter("ignore")  # dask's warnings are no line of ours on stderr either
         if scheduler is None:
@@ -76,6 +78,13 @@ def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, A
             except (OSError, TimeoutError, ValueError) as err:
                 raise UsageError("--scheduler", scheduler, f"cannot connect: {' '.join(str(err).split())}") from None
         yield client, distributed.as_completed
+
+
+def dask_setup(worker: Any) -> None:
+    """Run by each worker of our LocalCluster as it starts (Dask's preload): SIGINT ignored. Ctrl-C
+    reaches the whole process group; the command line stops (one line) and closes the cluster,
+    which ends its workers, each of which would otherwise print a ``KeyboardInterrupt`` traceback."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
 @contextlib.contextmanager

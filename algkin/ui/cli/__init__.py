@@ -19,7 +19,7 @@ import json
 import sys
 
 from ...errors import AlgkinError, BudgetExceeded, SceneError, UsageError
-from .signals import _Stopped, _say, _stdout_closed, _stopping_signals, _write
+from .signals import _Stopped, _say, _stopping_signals, _write
 
 __all__ = ["main", "usage", "build_parser", "terminal_safe"]
 
@@ -63,8 +63,8 @@ def _main(argv):
             # commands, on stdout, exit 0 (as ``--help``); a wrong command line is still exit 2.
             return _write(build_parser().format_help(), 0)
         args = build_parser().parse_args(argv)
-        if _stdout_closed():
-            return 1  # said: no work whose result could not be written
+        if sys.stdout is None:  # closed (``>&-``): no work whose result could not be written
+            return _write("", 0)
         check_paths(args)  # before any work: every output writable, none over an input
         from ...runtime import progress
 
@@ -73,11 +73,11 @@ def _main(argv):
         _save(*files)
         return _write(text, code)  # a signal while writing (to a slow reader) is caught too
     except _Stopped as stop:
-        return _write(_failed(argv, args, "interrupted", str(stop), str(stop)), 128 + stop.signum)
+        return _write(_failed(argv, args, "interrupted", str(stop), str(stop)), 128 + stop.signum, failed=True)
     except (SceneError, UsageError) as err:
-        return _write(_failed(argv, args, _kind(err), str(err), f"error: {err}"), 2)
+        return _write(_failed(argv, args, _kind(err), str(err), f"error: {err}"), 2, failed=True)
     except AlgkinError as err:
-        return _write(_failed(argv, args, _kind(err), str(err), f"failed: {err}"), 1)
+        return _write(_failed(argv, args, _kind(err), str(err), f"failed: {err}"), 1, failed=True)
 
 
 def _run(commands, args):

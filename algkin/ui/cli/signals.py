@@ -6,6 +6,7 @@ Nothing here imports more than the standard library: ``main`` sets these handler
 other imports (sympy's take half a second, long enough for a Ctrl-C)."""
 
 import contextlib
+import errno
 import os
 import signal
 import sys
@@ -28,20 +29,23 @@ _STDOUT_CLOSED = 128 + signal.SIGPIPE
 _STDOUT_FAILED = 1
 
 
-def _write(text, code):
+def _write(text, code, failed=False):
     """Write ``text`` to stdout and flush it now, so that a closed pipe shows here and not at
     exit; the exit code: ``code``, _STDOUT_CLOSED if the reader has gone, _STDOUT_FAILED (and one
-    line on stderr) if stdout cannot be written."""
-    if _stdout_closed():
-        return _STDOUT_FAILED
+    line on stderr) if stdout cannot be written. A command that ``failed`` has said its line and
+    keeps its code: stderr's one line is the first cause."""
     try:
+        if sys.stdout is None:
+            raise OSError(errno.EBADF, "it is closed")
         sys.stdout.write(text)
         sys.stdout.flush()
     except BrokenPipeError:
         _drop_stdout()
-        return _STDOUT_CLOSED
+        return code if failed else _STDOUT_CLOSED
     except OSError as err:
         _drop_stdout()
+        if failed:
+            return code
         _say(f"cannot write to standard output: {err.strerror or err}")
         return _STDOUT_FAILED
     return code
@@ -50,17 +54,8 @@ def _write(text, code):
 def _drop_stdout():
     """The Python docs' recipe (signal module, "Note on SIGPIPE"): point stdout at devnull so that
     the interpreter's own flush at exit, of what could not be written, fails no more."""
-    with contextlib.suppress(OSError, ValueError):
+    with contextlib.suppress(OSError, ValueError, AttributeError):  # AttributeError: no stdout at all
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-
-
-def _stdout_closed():
-    """Whether the process has no stdout (``algkin list >&-``: Python's ``sys.stdout`` is None);
-    if so, said on stderr."""
-    if sys.stdout is not None:
-        return False
-    _say("cannot write to standard output: it is closed")
-    return True
 
 
 def _say(line):

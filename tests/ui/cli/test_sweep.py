@@ -56,7 +56,8 @@ def test_a_sweep_and_its_atlas(tmp_path, capsys):
 
 
 def test_the_atlas_of_a_directory_without_a_sweep(tmp_path, capsys):
-    assert main(["atlas", str(tmp_path), "--out", str(tmp_path / "atlas.html")]) == 2
+    (tmp_path / "empty").mkdir()  # the page beside it: never inside the directory read
+    assert main(["atlas", str(tmp_path / "empty"), "--out", str(tmp_path / "atlas.html")]) == 2
     assert "holds no sweep" in capsys.readouterr().err and not (tmp_path / "atlas.html").exists()
 
 
