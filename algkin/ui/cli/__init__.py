@@ -48,7 +48,10 @@ def main(argv=None):
     process as it would any program, without a traceback).
     """
     with _stopping_signals(restore=argv is not None):
-        return _main(sys.argv[1:] if argv is None else list(argv))
+        try:
+            return _main(sys.argv[1:] if argv is None else list(argv))
+        except _Stopped as stop:  # while an error's line was said: that line is all
+            return 128 + stop.signum
 
 
 def _main(argv):
