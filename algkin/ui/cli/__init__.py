@@ -58,14 +58,17 @@ def _main(argv):
     args = None  # until parsed: an error before then still says what it can
     try:
         from .commands import COMMANDS
-        from .parser import build_parser
+        from .parser import Shown, build_parser
         from .paths import check_paths
 
         if not argv:
             # Bare ``algkin`` is a question ("what can it do?"), not a mistake: the help listing the
             # commands, on stdout, exit 0 (as ``--help``); a wrong command line is still exit 2.
             return _write(build_parser().format_help(), 0)
-        args = build_parser().parse_args(argv)
+        try:
+            args = build_parser().parse_args(argv)
+        except Shown as shown:  # --help, --version
+            return _write(shown.text, 0)
         if sys.stdout is None:  # closed (``>&-``): no work whose result could not be written
             return _write("", 0)
         check_paths(args)  # before any work: every output writable, none over an input

@@ -169,3 +169,13 @@ def test_a_bad_numba_setting_is_one_line_and_exit_2(monkeypatch):
     process = start(algkin(*ACCURACY))
     code, out, err, _ = finish(process, timeout=300)
     assert (code, out) == (2, "") and one_line(err) and err.startswith("algkin: error: NUMBA_NUM_THREADS='0'"), err
+
+
+@pytest.mark.skipif(not os.path.exists("/dev/full"), reason="needs /dev/full")
+@pytest.mark.parametrize("args", [("--help",), ("--version",), ("derive", "--help")])
+def test_help_and_version_on_a_full_stdout_are_one_line_and_exit_1(args):
+    # argparse prints them itself and ignores a failed write: exit 0, nothing said, before
+    with open("/dev/full", "w") as full:
+        process = start(algkin(*args), stdout=full)
+    code, _, err, _ = finish(process, timeout=120)
+    assert (code, err) == (1, NO_SPACE)
