@@ -1,17 +1,19 @@
 """The ``algkin`` command line (SPEC §3): readable reports, or one JSON document with --json.
 
-Exit codes: 0 done, 1 a computation failed, a check did not hold or the budget ran out,
-2 bad input, 128 + N stopped by signal N (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP), 141 stdout
-closed early. Whatever the outcome, stderr holds at most one line once the command ends, and
-with --json stdout holds one JSON document (``{"error": ...}`` when there is no result). While
-it runs, a terminal's stderr shows its progress (not with --quiet), cleared before that line
-and before anything is written to stdout.
+Exit codes: 0 done, 1 a computation failed, a check did not hold, the budget ran out or stdout
+could not be written (full, closed), 2 bad input (an output that cannot be written or is an
+input, ``paths``), 128 + N stopped by signal N (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP) at any
+moment, its imports included, 141 the reader of stdout gone. Whatever the outcome, stderr
+holds at most one line once the command ends, and with --json stdout holds one JSON document
+(``{"error": ...}`` when there is no result). While it runs, a terminal's stderr shows its
+progress (not with --quiet), cleared before that line and before anything is written to stdout.
 
 A command computes its whole output, text or JSON, inside its budget (``--max-seconds``),
 in a forked child when there is a time budget; the parent only starts it, waits, and writes.
 
 The package: ``parser`` the grammar, ``commands`` one function per command, ``reports``
-the text a person reads, ``signals`` the stopping signals and stdout; here ``main``.
+the text a person reads, ``paths`` the files read and written, ``signals`` the stopping signals
+and stdout; here ``main``.
 """
 
 import functools
@@ -57,9 +59,7 @@ def main(argv=None):
 def _main(argv):
     args = None  # until parsed: an error before then still says what it can
     try:
-        from .commands import COMMANDS
         from .parser import Shown, build_parser
-        from .paths import check_paths
 
         if not argv:
             # Bare ``algkin`` is a question ("what can it do?"), not a mistake: the help listing the
@@ -69,15 +69,7 @@ def _main(argv):
             args = build_parser().parse_args(argv)
         except Shown as shown:  # --help, --version
             return _write(shown.text, 0)
-        if sys.stdout is None:  # closed (``>&-``): no work whose result could not be written
-            return _write("", 0)
-        check_paths(args)  # before any work: every output writable, none over an input
-        from ...runtime import progress
-
-        with progress.shown(args.quiet):  # ended, and its line cleared, before anything is said
-            text, code, *files = _run(COMMANDS, args)
-        _save(*files)
-        return _write(text, code)  # a signal while writing (to a slow reader) is caught too
+        return _command(args)
     except _Stopped as stop:
         return _write(_failed(argv, args, "interrupted", str(stop), str(stop)), 128 + stop.signum, failed=True)
     except (SceneError, UsageError) as err:
@@ -86,14 +78,29 @@ def _main(argv):
         return _write(_failed(argv, args, _kind(err), str(err), f"failed: {err}"), 1, failed=True)
 
 
-def _run(commands, args):
+def _command(args):
+    """Run the parsed command: its paths checked, its work done, its files saved, its output written."""
+    from ...runtime import progress
+    from .paths import check_paths
+
+    if sys.stdout is None:  # closed (``>&-``): no work whose result could not be written
+        return _write("", 0)
+    check_paths(args)  # before any work: every output writable, none over an input
+    with progress.shown(args.quiet):  # ended, and its line cleared, before anything is said
+        text, code, *files = _run(args)
+    _save(*files)
+    return _write(text, code)  # a signal while writing (to a slow reader) is caught too
+
+
+def _run(args):
     """The command's output and exit code, all of its work (imports, loading, compiling, the algebra,
     formatting) done within its budget: in a child process killed at the deadline, if it has one."""
     from ...runtime.budget import Budget
+    from .commands import COMMANDS
 
     budget = Budget(seconds=getattr(args, "max_seconds", None), terms=getattr(args, "max_terms", None))
     budget.note(f"starting {args.command}")  # until the command says more (its imports come first)
-    return budget.run(functools.partial(commands[args.command], args))
+    return budget.run(functools.partial(COMMANDS[args.command], args))
 
 
 def _save(files=()):
