@@ -13,6 +13,7 @@ from __future__ import annotations
 import contextlib
 import logging
 import signal
+import threading
 import warnings
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
@@ -65,6 +66,7 @@ def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, A
     with dask.config.set(settings), _quiet_logs(), warnings.catch_warnings(), contextlib.ExitStack() as stack:
         warnings.simplefilter("ignore")  # dask's warnings are no line of ours on stderr either
         if scheduler is None:
+            _start_resource_tracker()
             # no dashboard, and the scheduler's HTTP server (health checks) on a free local port:
             # its default, 8787, is taken by any other cluster on the machine
             cluster = stack.enter_context(distributed.LocalCluster(
@@ -80,11 +82,31 @@ def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, A
         yield client, distributed.as_completed
 
 
+def _start_resource_tracker() -> None:
+    """Start multiprocessing's resource tracker (once a process: the workers' queues register their
+    semaphores with it) with SIGHUP ignored, as it ignores SIGINT and SIGTERM itself: a hang-up
+    that reaches the process group would kill it, and the one started in its place print a
+    ``KeyError`` traceback for each semaphore it never saw."""
+    from multiprocessing import resource_tracker
+
+    if threading.current_thread() is not threading.main_thread():
+        resource_tracker.ensure_running()
+        return
+    found = signal.signal(signal.SIGHUP, signal.SIG_IGN)  # for the few milliseconds of a fork and exec
+    try:
+        resource_tracker.ensure_running()
+    finally:
+        signal.signal(signal.SIGHUP, found)
+
+
 def dask_setup(worker: Any) -> None:
-    """Run by each worker of our LocalCluster as it starts (Dask's preload): SIGINT ignored. Ctrl-C
-    reaches the whole process group; the command line stops (one line) and closes the cluster,
-    which ends its workers, each of which would otherwise print a ``KeyboardInterrupt`` traceback."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    """Run by each worker of our LocalCluster as it starts (Dask's preload): SIGINT and SIGHUP
+    ignored. Ctrl-C and a terminal's hang-up reach the whole process group; the command line
+    stops (one line) and closes the cluster, which ends its workers (by SIGTERM), where each
+    would otherwise print a ``KeyboardInterrupt`` traceback, or die leaving its semaphores to
+    multiprocessing's resource tracker, which prints one traceback each."""
+    for signum in (signal.SIGINT, signal.SIGHUP):
+        signal.signal(signum, signal.SIG_IGN)
 
 
 @contextlib.contextmanager

@@ -102,7 +102,10 @@ def _await(condition, what):
 
 @pytest.mark.slow
 @pytest.mark.skipif(not Path("/proc").is_dir(), reason="reads the process group from /proc")
-def test_ctrl_c_to_a_sweeps_group_stops_its_dask_workers_quietly(tmp_path):
+@pytest.mark.parametrize("signum,code,said", [(signal.SIGINT, 130, "interrupted"), (signal.SIGHUP, 129, "hung up (SIGHUP)"),
+                                              (signal.SIGTERM, 143, "terminated (SIGTERM)")],
+                         ids=["SIGINT", "SIGHUP", "SIGTERM"])
+def test_a_signal_to_a_sweeps_group_stops_its_dask_workers_quietly(tmp_path, signum, code, said):
     pytest.importorskip("distributed")
     out = tmp_path / "sweep"
     # far more designs than can be done before the signal: the sweep is still running
@@ -112,9 +115,8 @@ def test_ctrl_c_to_a_sweeps_group_stops_its_dask_workers_quietly(tmp_path):
         # the manifest is written once the cluster and its workers are up (sweep's ``ready``)
         _await(lambda: (out / "manifest.json").exists() or process.poll() is not None, "no sweep started")
         assert process.poll() is None, process.communicate()
-        os.killpg(process.pid, signal.SIGINT)  # as Ctrl-C in a terminal: the whole group
-        code, _, err, _ = finish(process, timeout=WAIT)
-        assert (code, err) == (130, "algkin: interrupted\n")
+        os.killpg(process.pid, signum)  # as Ctrl-C (or a hang-up) in a terminal: the whole group
+        assert finish(process, timeout=WAIT)[::2] == (code, f"algkin: {said}\n")
         _await(lambda: not _group(process.pid), "a process of the group outlived the command")
     finally:
         kill_group(process)
