@@ -10,7 +10,7 @@ True
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import importlib
 from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
@@ -31,7 +31,6 @@ __all__ = [
 ]
 
 from .errors import AlgkinError
-from .scene import SceneBuilder, catalog_names, compile_scene, load_scene
 
 if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ loads them at run time)
     from .analyses.extremum import extremum
@@ -39,10 +38,18 @@ if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ 
     from .analyses.rates import rates
     from .analyses.singular import singular
     from .derivation.pipeline import curve, derive
+    from .scene import SceneBuilder, catalog_names, compile_scene, load_scene
     from .ui.widgets import interact
 
 
-def __getattr__(name: str) -> Callable[..., Any]:
+def __getattr__(name: str) -> Any:
+    # The scene layer imports sympy (0.4 s): not before the command line has its signal handlers.
+    if name in ("SceneBuilder", "catalog_names", "compile_scene", "load_scene"):
+        from . import scene
+
+        return getattr(scene, name)
+    if name == "scene":  # ``algkin.scene.dump_scene`` after ``import algkin``, as when it was imported here
+        return importlib.import_module(".scene", __name__)
     # The pipeline pulls in the elimination and verification layers: load on first use.
     if name in ("derive", "curve"):
         from .derivation import pipeline

@@ -110,7 +110,7 @@ class Kernel:
             return "numpy"
         if engine == "compiled" or self.loaded:
             return "compiled"
-        warm = bool(_loaded) and self.path.exists()  # numba warmed by another kernel; this one compiled before
+        warm = bool(_loaded) and _exists(self.path)  # numba warmed by another kernel; this one compiled before
         return "compiled" if samples >= (WARM_SAMPLES if warm else COLD_SAMPLES) else "numpy"
 
     def __call__(self, *inputs: np.ndarray, engine: str = "auto", threads: int | None = None) -> list[np.ndarray]:
@@ -142,19 +142,48 @@ class Kernel:
 
     def module(self) -> ModuleType:
         """The generated module, written to the cache directory once and imported (numba compiles
-        its function at the first call, or loads it from its cache beside the file)."""
+        its function at the first call, or loads it from its cache beside the file). Where the
+        cache cannot be written (a read-only home, ``$XDG_CACHE_HOME`` somewhere unwritable), it
+        is not used: the module is made in memory and compiled anew in each process."""
         if self.key not in _loaded:
-            path = self.path
-            if not path.exists():  # written once: numba's cache is keyed on the file's time stamp
-                path.parent.mkdir(parents=True, exist_ok=True)
-                write_atomic(path, self.source)
-            spec = importlib.util.spec_from_file_location(path.stem, path)
-            assert spec is not None and spec.loader is not None
-            module = importlib.util.module_from_spec(spec)
-            sys.modules[path.stem] = module  # numba's cache finds the module's globals by its name
-            spec.loader.exec_module(module)
+            _check_numba_settings()
+            try:
+                module = self._cached_module()
+            except OSError:  # OutputError too: the file could not be written
+                module = ModuleType(f"algkin_kernel_{self.key}")
+                exec(compile(module_source(self.core, cache=False), "<algkin kernel>", "exec"),  # noqa: S102
+                     module.__dict__)
             _loaded[self.key] = module
         return _loaded[self.key]
+
+    def _cached_module(self) -> ModuleType:
+        path = self.path
+        if not path.exists():  # written once: numba's cache is keyed on the file's time stamp
+            path.parent.mkdir(parents=True, exist_ok=True)
+            write_atomic(path, self.source)
+        spec = importlib.util.spec_from_file_location(path.stem, path)
+        assert spec is not None and spec.loader is not None
+        module = importlib.util.module_from_spec(spec)
+        sys.modules[path.stem] = module  # numba's cache finds the module's globals by its name
+        spec.loader.exec_module(module)
+        return module
+
+
+def _check_numba_settings() -> None:
+    """Raise ``UsageError`` for a ``NUMBA_NUM_THREADS`` that numba would refuse with a traceback as
+    it is imported (it reads the environment then)."""
+    chosen = os.environ.get("NUMBA_NUM_THREADS")
+    if chosen is not None and not (chosen.strip().isdigit() and int(chosen) > 0):
+        raise UsageError("NUMBA_NUM_THREADS", chosen, "must be a whole number of threads from 1 (numba reads it "
+                                                      "from the environment); unset it or fix it")
+
+
+def _exists(path: pathlib.Path) -> bool:
+    """Whether ``path`` exists; False where it cannot be looked up (a cache directory that cannot be read)."""
+    try:
+        return path.exists()
+    except OSError:
+        return False
 
 
 def _threads() -> int:
@@ -185,8 +214,9 @@ def prelude_source(prelude: Program) -> str:
                       f"    return ({''.join(o + ', ' for o in prelude.outputs)})"])
 
 
-def module_source(core: Program) -> str:
-    """The numba module of ``core``: ``kernel``, one loop over the samples writing every output."""
+def module_source(core: Program, cache: bool = True) -> str:
+    """The numba module of ``core``: ``kernel``, one loop over the samples writing every output
+    (numba's machine code cached beside the module's file, if ``cache``)."""
     outs = [f"out{k}" for k in range(len(core.outputs))]
     arguments = ", ".join([*(f"{n}_" for n in core.inputs), *outs])  # arrays; their elements are the names
     outputs = [core.atom(o, "python") for o in core.outputs]
@@ -199,7 +229,7 @@ def module_source(core: Program) -> str:
         "from numba import njit",
         "",
         "",
-        '@njit(cache=True, nogil=True, error_model="numpy")  # numpy rules: x / 0 is inf or nan, never raises',
+        f'@njit(cache={cache}, nogil=True, error_model="numpy")  # numpy rules: x / 0 is inf or nan, never raises',
         f"def kernel({arguments}):",
         f"    for i in range({outs[0]}.size):",
         *(f"        {name} = {value}" for name, value in each.items()),

@@ -49,12 +49,8 @@ def atomic_output(path):
     """
     target = os.path.realpath(path)
     special = os.path.exists(target) and not os.path.isfile(target)
-    folder = tempfile.gettempdir() if special else os.path.dirname(target)
-    stem = os.path.splitext(os.path.basename(target))[0]
     with _reported(path):
-        handle, temporary = tempfile.mkstemp(prefix=f".{stem}.", suffix=f".tmp{pathlib.Path(path).suffix}",
-                                             dir=folder)
-    os.close(handle)
+        temporary = _temporary(tempfile.gettempdir() if special else os.path.dirname(target), target)
     try:
         with _reported(path):
             yield pathlib.Path(temporary)
@@ -68,6 +64,18 @@ def write_atomic(path, data):
     """Write ``data`` (text as UTF-8, or bytes) to ``path`` through ``atomic_output``."""
     with atomic_output(path) as temporary:
         temporary.write_bytes(data.encode("utf-8") if isinstance(data, str) else data)
+
+
+def _temporary(folder, target):
+    """A new empty file in ``folder`` named after ``target``: its stem (cut short, so that a name
+    near the system's limit still has a temporary beside it) and its suffix."""
+    stem, suffix = os.path.splitext(os.path.basename(target))
+    handle, temporary = tempfile.mkstemp(prefix=f".{stem[:_STEM]}.", suffix=f".tmp{suffix[:_STEM]}", dir=folder)
+    os.close(handle)
+    return temporary
+
+
+_STEM = 64  # characters of the target's stem (and suffix) kept in its temporary's name
 
 
 @contextlib.contextmanager
@@ -100,27 +108,69 @@ def _deliver(temporary, target, special):
 
 
 def check_output(option, path):
-    """Raise ``UsageError`` naming ``option`` unless ``path`` can be written (a file, not a directory)."""
-    target = pathlib.Path(os.path.realpath(path))
+    """Raise ``UsageError`` naming ``option`` unless a file can be written at ``path``: a file's
+    name (not empty, not a directory's), in a directory where a file can be made now.
+
+    >>> check_output("--plot", "")
+    Traceback (most recent call last):
+    ...
+    algkin.errors.UsageError: --plot='': is empty; give a file name
+    >>> check_output("--out", "new.json/")
+    Traceback (most recent call last):
+    ...
+    algkin.errors.UsageError: --out='new.json/': names a directory (it ends with /); give a file name
+    >>> check_output("--out", "x" * 300 + ".json")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    algkin.errors.UsageError: --out='xxx...x.json': cannot be written: File name too long
+    """
+    text = str(path)
+    if not text:
+        raise UsageError(option, text, "is empty; give a file name")
+    if text.endswith(("/", os.sep)) or os.path.basename(text) in (".", ".."):
+        raise UsageError(option, text, "names a directory (it ends with /); give a file name")
+    with _refused(option, text):
+        _check_file(option, text, pathlib.Path(os.path.realpath(text)))
+
+
+def _check_file(option, text, target):
     if target.is_dir():
-        raise UsageError(option, str(path), "is a directory")
+        raise UsageError(option, text, "is a directory")
     if not target.parent.is_dir():
-        raise UsageError(option, str(path), "its directory does not exist")
+        raise UsageError(option, text, "its directory does not exist")
     if target.exists() and not target.is_file():
         return  # a device or pipe: copied into, nothing to keep
     if target.exists() and not os.access(target, os.W_OK):
-        raise UsageError(option, str(path), "is a read-only file")
+        raise UsageError(option, text, "is a read-only file")
     if not os.access(target.parent, os.W_OK | os.X_OK):
-        raise UsageError(option, str(path), "its directory is not writable")
+        raise UsageError(option, text, "its directory is not writable")
+    with _refused(option, text, f"cannot make a file in {target.parent}: "):
+        os.remove(_temporary(target.parent, target))  # what the write does first: root, a read-only mount
 
 
 def check_directory(option, path):
     """Raise ``UsageError`` unless ``path`` is, or can be made, a writable directory."""
-    target = pathlib.Path(os.path.realpath(path))
-    if target.exists() and not target.is_dir():
-        raise UsageError(option, str(path), "is not a directory")
-    existing = next(p for p in (target, *target.parents) if p.exists())
-    if not existing.is_dir():
-        raise UsageError(option, str(path), f"{existing} is not a directory")
-    if not os.access(existing, os.W_OK | os.X_OK):
-        raise UsageError(option, str(path), f"{existing} is not writable")
+    text = str(path)
+    if not text:
+        raise UsageError(option, text, "is empty; give a directory")
+    with _refused(option, text):
+        target = pathlib.Path(os.path.realpath(text))
+        if target.exists() and not target.is_dir():
+            raise UsageError(option, text, "is not a directory")
+        existing = next(p for p in (target, *target.parents) if p.exists())
+        if not existing.is_dir():
+            raise UsageError(option, text, f"{existing} is not a directory")
+        if not os.access(existing, os.W_OK | os.X_OK):
+            raise UsageError(option, text, f"{existing} is not writable")
+    with _refused(option, text, f"cannot make a directory in {existing}: "):
+        os.rmdir(tempfile.mkdtemp(prefix=".algkin.", dir=existing))  # as making it, or a part file in it
+
+
+@contextlib.contextmanager
+def _refused(option, text, why="cannot be written: "):
+    """An ``OSError`` while a path is checked (a name too long, a read-only file system) as a
+    ``UsageError``: ``why`` and the system's reason."""
+    try:
+        yield
+    except OSError as err:
+        raise UsageError(option, text, f"{why}{err.strerror or err}") from None

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import contextlib
 import logging
+import signal
+import threading
 import warnings
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
@@ -19,7 +21,7 @@ from typing import Any
 from ..errors import UsageError
 from .design import Job, evaluate_chunk
 
-__all__ = ["EXECUTORS", "run_chunks", "dask_modules"]
+__all__ = ["EXECUTORS", "run_chunks", "dask_modules", "dask_setup"]
 
 EXECUTORS = ("dask", "serial")
 CONNECT_SECONDS = 10  # how long to wait for the scheduler at --scheduler ADDRESS
@@ -57,12 +59,14 @@ def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, A
     """A Dask client on a LocalCluster of ``workers`` processes, or on the scheduler at ``scheduler``;
     everything it started closed when the block ends."""
     dask, distributed = dask_modules()
-    # Workers that may fork (a per-design budget runs in a forked child): not daemonic.
+    # Workers that may fork (a per-design budget runs in a forked child): not daemonic. Each runs
+    # this module's dask_setup as it starts.
     settings = {"distributed.worker.daemon": False, "distributed.admin.tick.limit": "1h",
-                "logging.distributed": "critical"}
+                "logging.distributed": "critical", "distributed.worker.preload": [__name__]}
     with dask.config.set(settings), _quiet_logs(), warnings.catch_warnings(), contextlib.ExitStack() as stack:
         warnings.simplefilter("ignore")  # dask's warnings are no line of ours on stderr either
         if scheduler is None:
+            _start_resource_tracker()
             # no dashboard, and the scheduler's HTTP server (health checks) on a free local port:
             # its default, 8787, is taken by any other cluster on the machine
             cluster = stack.enter_context(distributed.LocalCluster(
@@ -76,6 +80,33 @@ def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, A
             except (OSError, TimeoutError, ValueError) as err:
                 raise UsageError("--scheduler", scheduler, f"cannot connect: {' '.join(str(err).split())}") from None
         yield client, distributed.as_completed
+
+
+def _start_resource_tracker() -> None:
+    """Start multiprocessing's resource tracker (once a process: the workers' queues register their
+    semaphores with it) with SIGHUP ignored, as it ignores SIGINT and SIGTERM itself: a hang-up
+    that reaches the process group would kill it, and the one started in its place print a
+    ``KeyError`` traceback for each semaphore it never saw."""
+    from multiprocessing import resource_tracker
+
+    if threading.current_thread() is not threading.main_thread():
+        resource_tracker.ensure_running()
+        return
+    found = signal.signal(signal.SIGHUP, signal.SIG_IGN)  # for the few milliseconds of a fork and exec
+    try:
+        resource_tracker.ensure_running()
+    finally:
+        signal.signal(signal.SIGHUP, found)
+
+
+def dask_setup(worker: Any) -> None:
+    """Run by each worker of our LocalCluster as it starts (Dask's preload): SIGINT and SIGHUP
+    ignored. Ctrl-C and a terminal's hang-up reach the whole process group; the command line
+    stops (one line) and closes the cluster, which ends its workers (by SIGTERM), where each
+    would otherwise print a ``KeyboardInterrupt`` traceback, or die leaving its semaphores to
+    multiprocessing's resource tracker, which prints one traceback each."""
+    for signum in (signal.SIGINT, signal.SIGHUP):
+        signal.signal(signum, signal.SIG_IGN)
 
 
 @contextlib.contextmanager

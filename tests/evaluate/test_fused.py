@@ -1,12 +1,14 @@
 """The compiled evaluator is the stabilised numpy form, fused: same values on every accuracy case,
 NaN where a branch cannot assemble, numpy again where numba is absent or does not pay."""
 
+import os
 import sys
 
 import numpy as np
 import pytest
 
 from algkin.bench.accuracy import _cases, _Subject
+from algkin.errors import UsageError
 from algkin.branches import closed_forms
 from algkin.branches.stable import StableBranch
 from algkin.evaluate import fused
@@ -152,3 +154,37 @@ def test_a_length_input_enters_the_kernel_as_it_is():
     for want, got in zip(kernel(s, engine="numpy"), kernel(s, engine="compiled")):
         assert np.isfinite(want).all()
         np.testing.assert_array_equal(got, want)
+
+
+def _fresh_kernel(monkeypatch):
+    """A kernel that no test has loaded in this process (its module is made again)."""
+    monkeypatch.setattr(fused, "_loaded", {})
+    return Kernel(trace(lambda t: [t * 5.25 + 0.5], ["t"]), lambda t: [t * 5.25 + 0.5])
+
+
+@needs_numba
+@pytest.mark.parametrize("where", ["a-file", "/proc/algkin-cache"])
+def test_a_cache_that_cannot_be_written_is_not_used(tmp_path, monkeypatch, where):
+    # a file where the directory should be (anyone), or a directory no one makes files in (root included)
+    if where == "a-file":
+        where = tmp_path / "cache"
+        where.write_text("not a directory")
+    elif not os.path.isdir("/proc/self"):
+        pytest.skip("needs /proc")
+    monkeypatch.delenv("ALGKIN_CACHE_DIR", raising=False)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(where))
+    kernel = _fresh_kernel(monkeypatch)
+    t = np.linspace(-1, 1, 101)
+    assert kernel.engine(len(t), "auto") == "numpy" and kernel.engine(len(t), "compiled") == "compiled"
+    (got,) = kernel(t, engine="compiled")
+    np.testing.assert_array_equal(got, t * 5.25 + 0.5)
+    assert kernel.loaded and not kernel.path.exists()
+
+
+@needs_numba
+@pytest.mark.parametrize("value", ["0", "-1", "two"])
+def test_a_bad_numba_num_threads_is_a_usage_error_naming_it(monkeypatch, value):
+    monkeypatch.setenv("NUMBA_NUM_THREADS", value)
+    kernel = _fresh_kernel(monkeypatch)
+    with pytest.raises(UsageError, match=f"NUMBA_NUM_THREADS='{value}': must be a whole number"):
+        kernel(np.linspace(-1, 1, 11), engine="compiled")

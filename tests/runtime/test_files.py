@@ -94,3 +94,32 @@ def test_read_only_files_and_folders_are_refused(tmp_path):
             check_directory("--out", locked / "bench")
     finally:
         locked.chmod(0o755)
+
+
+def test_a_name_near_the_systems_limit_is_written_through_a_shorter_temporary(tmp_path):
+    target = tmp_path / ("n" * 245 + ".json")  # 250 bytes: a file name most systems allow (255)
+    check_output("--out", target)
+    write_atomic(target, "{}")
+    assert target.read_text() == "{}" and os.listdir(tmp_path) == [target.name]
+
+
+@pytest.mark.parametrize("name,why", [("", "is empty"), ("new.json/", "names a directory"),
+                                      ("n" * 300 + ".json", "File name too long")])
+def test_names_that_cannot_be_a_file_are_refused(tmp_path, monkeypatch, name, why):
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(UsageError, match=why):
+        check_output("--out", name)
+    assert os.listdir(tmp_path) == []
+
+
+def test_a_directory_name_too_long_is_refused(tmp_path):
+    with pytest.raises(UsageError, match="File name too long"):
+        check_directory("--out", tmp_path / ("n" * 300) / "bench")
+
+
+@pytest.mark.skipif(not os.path.isdir("/proc/self"), reason="/proc: a directory where no one, root included, makes a file")
+def test_a_directory_that_takes_no_file_is_refused_even_for_root():
+    with pytest.raises(UsageError, match="cannot make a file in /proc"):
+        check_output("--out", "/proc/algkin-out.json")
+    with pytest.raises(UsageError, match="cannot make a directory in /proc"):
+        check_directory("--out", "/proc/algkin-out")

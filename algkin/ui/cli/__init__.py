@@ -1,17 +1,19 @@
 """The ``algkin`` command line (SPEC §3): readable reports, or one JSON document with --json.
 
-Exit codes: 0 done, 1 a computation failed, a check did not hold or the budget ran out,
-2 bad input, 128 + N stopped by signal N (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP), 141 stdout
-closed early. Whatever the outcome, stderr holds at most one line once the command ends, and
-with --json stdout holds one JSON document (``{"error": ...}`` when there is no result). While
-it runs, a terminal's stderr shows its progress (not with --quiet), cleared before that line
-and before anything is written to stdout.
+Exit codes: 0 done, 1 a computation failed, a check did not hold, the budget ran out or stdout
+could not be written (full, closed), 2 bad input (an output that cannot be written or is an
+input, ``paths``), 128 + N stopped by signal N (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP) at any
+moment, its imports included, 141 the reader of stdout gone. Whatever the outcome, stderr
+holds at most one line once the command ends, and with --json stdout holds one JSON document
+(``{"error": ...}`` when there is no result). While it runs, a terminal's stderr shows its
+progress (not with --quiet), cleared before that line and before anything is written to stdout.
 
 A command computes its whole output, text or JSON, inside its budget (``--max-seconds``),
 in a forked child when there is a time budget; the parent only starts it, waits, and writes.
 
 The package: ``parser`` the grammar, ``commands`` one function per command, ``reports``
-the text a person reads, ``signals`` the stopping signals and stdout; here ``main``.
+the text a person reads, ``paths`` the files read and written, ``signals`` the stopping signals
+and stdout; here ``main``.
 """
 
 import functools
@@ -19,48 +21,82 @@ import json
 import sys
 
 from ...errors import AlgkinError, BudgetExceeded, SceneError, UsageError
-from ...runtime import progress
-from .commands import COMMANDS
-from .parser import build_parser, usage
-from .reports import terminal_safe
-from .signals import _Stopped, _stopping_signals, _write
+from .signals import _Stopped, _say, _stopping_signals, _write
 
 __all__ = ["main", "usage", "build_parser", "terminal_safe"]
 
 _ERROR_KINDS = ((UsageError, "usage"), (SceneError, "scene"), (BudgetExceeded, "budget"))
 
 
+def __getattr__(name):
+    # Loaded on first use: the command line's own imports come after its signal handlers (``main``).
+    if name in ("usage", "build_parser"):
+        from . import parser
+
+        return getattr(parser, name)
+    if name == "terminal_safe":
+        from .reports import terminal_safe
+
+        return terminal_safe
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
 def main(argv=None):
     """Run one command line (``argv``, by default the process's) and return its exit code.
 
-    Signal handlers are installed only while it runs, so that calling it in-process (tests)
-    leaves the caller's in place.
+    Called with a command line, as in tests, it installs its signal handlers only while it runs and
+    then puts the caller's back. Called as the program (no ``argv``), it installs them before it
+    imports anything more, and leaves the default ones after it (a signal then ends the
+    process as it would any program, without a traceback).
     """
-    argv = sys.argv[1:] if argv is None else list(argv)
-    if not argv:
-        # Bare ``algkin`` is a question ("what can it do?"), not a mistake: the help listing the
-        # commands, on stdout, exit 0 (as ``--help``); a wrong command line is still exit 2.
-        return _write(build_parser().format_help(), 0)
+    with _stopping_signals(restore=argv is not None):
+        try:
+            return _main(sys.argv[1:] if argv is None else list(argv))
+        except _Stopped as stop:  # while an error's line was said: that line is all
+            return 128 + stop.signum
+
+
+def _main(argv):
     args = None  # until parsed: an error before then still says what it can
-    with _stopping_signals():
+    try:
+        from .parser import Shown, build_parser
+
+        if not argv:
+            # Bare ``algkin`` is a question ("what can it do?"), not a mistake: the help listing the
+            # commands, on stdout, exit 0 (as ``--help``); a wrong command line is still exit 2.
+            return _write(build_parser().format_help(), 0)
         try:
             args = build_parser().parse_args(argv)
-            with progress.shown(args.quiet):  # ended, and its line cleared, before anything is said
-                text, code, *files = _run(args)
-            _save(*files)
-            return _write(text, code)  # a signal while writing (to a slow reader) is caught too
-        except _Stopped as stop:
-            return _write(_failed(argv, args, "interrupted", str(stop), str(stop)), 128 + stop.signum)
-        except (SceneError, UsageError) as err:
-            return _write(_failed(argv, args, _kind(err), str(err), f"error: {err}"), 2)
-        except AlgkinError as err:
-            return _write(_failed(argv, args, _kind(err), str(err), f"failed: {err}"), 1)
+        except Shown as shown:  # --help, --version
+            return _write(shown.text, 0)
+        return _command(args)
+    except _Stopped as stop:
+        return _write(_failed(argv, args, "interrupted", str(stop), str(stop)), 128 + stop.signum, failed=True)
+    except (SceneError, UsageError) as err:
+        return _write(_failed(argv, args, _kind(err), str(err), f"error: {err}"), 2, failed=True)
+    except AlgkinError as err:
+        return _write(_failed(argv, args, _kind(err), str(err), f"failed: {err}"), 1, failed=True)
+
+
+def _command(args):
+    """Run the parsed command: its paths checked, its work done, its files saved, its output written."""
+    from ...runtime import progress
+    from .paths import check_paths
+
+    if sys.stdout is None:  # closed (``>&-``): no work whose result could not be written
+        return _write("", 0)
+    check_paths(args)  # before any work: every output writable, none over an input
+    with progress.shown(args.quiet):  # ended, and its line cleared, before anything is said
+        text, code, *files = _run(args)
+    _save(*files)
+    return _write(text, code)  # a signal while writing (to a slow reader) is caught too
 
 
 def _run(args):
     """The command's output and exit code, all of its work (imports, loading, compiling, the algebra,
     formatting) done within its budget: in a child process killed at the deadline, if it has one."""
     from ...runtime.budget import Budget
+    from .commands import COMMANDS
 
     budget = Budget(seconds=getattr(args, "max_seconds", None), terms=getattr(args, "max_terms", None))
     budget.note(f"starting {args.command}")  # until the command says more (its imports come first)
@@ -77,7 +113,10 @@ def _save(files=()):
 
 def _failed(argv, args, kind, message, line):
     """Say ``line`` on stderr; what stdout gets: with --json, the error as the one JSON document."""
-    print(f"algkin: {terminal_safe(line)}", file=sys.stderr)
+    from .commands import COMMANDS
+    from .reports import terminal_safe
+
+    _say(terminal_safe(line))
     if not (getattr(args, "json", False) if args is not None else "--json" in argv):
         return ""
     command = args.command if args is not None else next(iter(argv), None)

@@ -38,10 +38,6 @@ def _cmd_bench(args):
         raise UsageError("--budget", args.budget, "must be a positive number of seconds")
     if args.rounds < 1:
         raise UsageError("--rounds", args.rounds, "must be at least 1")
-    if args.out:
-        from ...runtime.files import check_directory
-
-        check_directory("--out", args.out)
     report = bench(args.problems, args.methods, args.backends, args.budget, not args.no_peers, args.rounds)
     written = write(report, args.out, plot=_bench_plot()) if args.out else []
     if args.json:
@@ -127,7 +123,7 @@ def _cmd_accuracy(args):
 
     if args.samples < 10:
         raise UsageError("--samples", args.samples, "needs at least 10 samples per case")
-    out = _figure_path("--plot", args.plot) if args.plot else None
+    out = _figure_path("--plot", args.plot) if args.plot is not None else None
     result = accuracy(_scene_of(args), args.samples, args.seed, of=args.of)
     text = _render(args, result.to_json(), _report_accuracy)
     if out is None:
@@ -139,15 +135,12 @@ def _cmd_accuracy(args):
 
 
 def _figure_path(option, text):
-    import pathlib
-
-    from ...runtime.files import check_output
+    """The figure's path, of a format it can be drawn in (``paths.check_paths`` checked that it can be written)."""
     from ..plot import FORMATS
 
     out = pathlib.Path(text)
     if out.suffix.lower() not in FORMATS:
         raise UsageError(option, text, f"unknown figure format; valid: {', '.join(FORMATS)}")
-    check_output(option, text)
     return out
 
 
@@ -261,14 +254,10 @@ def _check_latex(args):
 
 
 def _full_forms_target(args):
-    """``--out``'s path, checked before the work starts; ``--latex`` and ``--json`` refused together."""
+    """``--out``'s path (``paths.check_paths`` checked it before the work); ``--latex`` and ``--json``
+    refused together."""
     _check_latex(args)
-    if args.out is None:
-        return None
-    from ...runtime.files import check_output
-
-    check_output("--out", args.out)
-    return pathlib.Path(args.out)
+    return None if args.out is None else pathlib.Path(args.out)
 
 
 def _finish(args, out, document, report, forms, code):
@@ -316,11 +305,8 @@ def _cmd_verify(args):
 
 
 def _cmd_export(args):
-    from ...runtime.files import check_output
     from ..export import export
 
-    if args.out is not None:
-        check_output("--out", args.out)
     code = export(_scene_of(args), args.outputs, args.to, args.param)
     document = {"scene": args.scene, "to": args.to, "outputs": args.outputs, "out": args.out}
     if args.out is None:

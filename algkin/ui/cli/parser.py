@@ -5,14 +5,28 @@ import sys
 
 from ...errors import UsageError
 
-__all__ = ["build_parser", "usage"]
+__all__ = ["build_parser", "usage", "Shown"]
+
+
+class Shown(Exception):  # noqa: N818 - not an error: the answer to --help or --version
+    """``--help`` or ``--version`` asked: ``text``, for the command line to write to stdout (where
+    argparse would print it and ignore a failed write: ``algkin --help > /dev/full``, exit 0)."""
+
+    def __init__(self, text):
+        super().__init__(text)
+        self.text = text
 
 
 class _Parser(argparse.ArgumentParser):
-    """argparse with a one-line error and exit code 2."""
+    """argparse with a one-line error and exit code 2; help and version raised as ``Shown``."""
 
     def error(self, message):
         raise UsageError("arguments", " ".join(sys.argv[1:]), message)
+
+    def _print_message(self, message, file=None):
+        if file is sys.stdout:  # help and version (None too: a closed stdout, said as such)
+            raise Shown(message)
+        super()._print_message(message, file)
 
 
 class _Help(argparse.ArgumentDefaultsHelpFormatter):

@@ -1,7 +1,12 @@
 """Stopping signals and stdout: one line and exit 128 + N on SIGINT, SIGTERM or SIGHUP, with every
-``finally`` run on the way out (a budget's worker is killed); a closed stdout ends quietly."""
+``finally`` run on the way out (a budget's worker is killed); a reader of stdout gone ends quietly,
+a stdout that cannot be written (closed, a full disk) is one line and exit 1.
+
+Nothing here imports more than the standard library: ``main`` sets these handlers before its
+other imports (sympy's take half a second, long enough for a Ctrl-C)."""
 
 import contextlib
+import errno
 import os
 import signal
 import sys
@@ -19,18 +24,46 @@ _STOPS = {signal.SIGINT: "interrupted", signal.SIGTERM: "terminated (SIGTERM)", 
 _STDOUT_CLOSED = 128 + signal.SIGPIPE
 
 
-def _write(text, code):
+# Stdout cannot take the output (``> /dev/full``, closed): the environment failed the command, not
+# its input, so 1, as for a file that cannot be written (OutputError).
+_STDOUT_FAILED = 1
+
+
+def _write(text, code, failed=False):
     """Write ``text`` to stdout and flush it now, so that a closed pipe shows here and not at
-    exit; the exit code: ``code``, or _STDOUT_CLOSED if the reader has gone."""
+    exit; the exit code: ``code``, _STDOUT_CLOSED if the reader has gone, _STDOUT_FAILED (and one
+    line on stderr) if stdout cannot be written. A command that ``failed`` has said its line and
+    keeps its code: stderr's one line is the first cause."""
     try:
+        if sys.stdout is None:
+            raise OSError(errno.EBADF, "it is closed")
         sys.stdout.write(text)
         sys.stdout.flush()
     except BrokenPipeError:
-        # The Python docs' recipe (signal module, "Note on SIGPIPE"): point stdout at devnull so
-        # that the interpreter's own flush at exit finds no broken pipe either.
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        return _STDOUT_CLOSED
+        _drop_stdout()
+        return code if failed else _STDOUT_CLOSED
+    except OSError as err:
+        _drop_stdout()
+        if failed:
+            return code
+        _say(f"cannot write to standard output: {err.strerror or err}")
+        return _STDOUT_FAILED
     return code
+
+
+def _drop_stdout():
+    """The Python docs' recipe (signal module, "Note on SIGPIPE"): point stdout at devnull so that
+    the interpreter's own flush at exit, of what could not be written, fails no more."""
+    with contextlib.suppress(OSError, ValueError, AttributeError):  # AttributeError: no stdout at all
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+
+
+def _say(line):
+    """``line`` on stderr, after ``algkin: ``; nothing if stderr cannot take it (closed or full)."""
+    if sys.stderr is None:
+        return  # print(file=None) would write to stdout
+    with contextlib.suppress(OSError, ValueError):
+        print(f"algkin: {line}", file=sys.stderr, flush=True)
 
 
 class _Stopped(BaseException):
@@ -44,8 +77,10 @@ class _Stopped(BaseException):
 
 
 @contextlib.contextmanager
-def _stopping_signals():
-    """While the block runs, the stopping signals raise ``_Stopped``; then the handlers found are back."""
+def _stopping_signals(restore=True):
+    """While the block runs, the stopping signals raise ``_Stopped``; then the handlers found are back,
+    or unless ``restore``, the system's defaults: a signal while the process ends (its exit
+    handlers) ends it as any program, with no ``KeyboardInterrupt`` traceback."""
     if threading.current_thread() is not threading.main_thread():
         yield  # only the main thread may set handlers, and only it receives signals
         return
@@ -55,7 +90,7 @@ def _stopping_signals():
     finally:
         for signum, handler in found.items():
             # None: a handler not set from Python; the default is the nearest we can put back.
-            signal.signal(signum, signal.SIG_DFL if handler is None else handler)
+            signal.signal(signum, signal.SIG_DFL if handler is None or not restore else handler)
 
 
 def _stop(signum, frame):

@@ -124,7 +124,8 @@ def test_a_structure_among_moving_designs_has_its_own_status(tmp_path, capsys):
 
 
 def test_the_atlas_of_a_directory_without_a_sweep(tmp_path, capsys):
-    assert main(["atlas", str(tmp_path), "--out", str(tmp_path / "atlas.html")]) == 2
+    (tmp_path / "empty").mkdir()  # the page beside it: never inside the directory read
+    assert main(["atlas", str(tmp_path / "empty"), "--out", str(tmp_path / "atlas.html")]) == 2
     assert "holds no sweep" in capsys.readouterr().err and not (tmp_path / "atlas.html").exists()
 
 
