@@ -2,7 +2,7 @@
 
 import re
 
-__all__ = ["terminal_safe"]
+__all__ = ["terminal_safe", "one_line"]
 
 # Control characters (ESC starts terminal commands) and bidirectional overrides (which
 # reorder what is shown) from a scene's names and text are shown escaped, never obeyed.
@@ -16,3 +16,13 @@ def terminal_safe(text):
     'scene \\x1b[31mred\\u202e\n'
     """
     return _UNSAFE.sub(lambda m: m.group().encode("unicode_escape").decode("ascii"), text)
+
+
+def one_line(text):
+    r"""``text`` as one terminal line: newlines and tabs escaped as well (an error message quoting a
+    scene's key or name must not start a second line that reads as algkin's own).
+
+    >>> one_line("points.B\nimport os: not a name\x1b[2J")
+    'points.B\\nimport os: not a name\\x1b[2J'
+    """
+    return terminal_safe(text).replace("\n", "\\n").replace("\t", "\\t")

@@ -114,9 +114,9 @@ def _save(files=()):
 def _failed(argv, args, kind, message, line):
     """Say ``line`` on stderr; what stdout gets: with --json, the error as the one JSON document."""
     from .commands import COMMANDS
-    from .reports import terminal_safe
+    from ...runtime.terminal import one_line
 
-    _say(terminal_safe(line))
+    _say(one_line(line))
     if not (getattr(args, "json", False) if args is not None else "--json" in argv):
         return ""
     command = args.command if args is not None else next(iter(argv), None)

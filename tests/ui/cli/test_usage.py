@@ -174,3 +174,12 @@ def test_terminal_escapes_in_a_scene_are_shown_escaped(tmp_path):
     assert result.returncode == 0, result.stderr
     assert "\x1b" not in result.stdout and "\u202e" not in result.stdout and "\x07" not in result.stdout
     assert "\\x1b[2J" in result.stdout and "\\u202e" in result.stdout
+
+
+def test_an_error_quoting_a_newline_in_a_scene_key_stays_one_line(tmp_path):
+    scene = tmp_path / "newline.toml"
+    scene.write_text('[points]\nO = { fixed = [0, 0] }\n"B\\nalgkin: done, all checks passed" = { fixed = [1, 0] }\n',
+                     encoding="utf-8")
+    result = run_cli(["show", str(scene)], tmp_path)
+    assert result.returncode == 2 and result.stdout == ""
+    assert result.stderr.count("\n") == 1 and "B\\nalgkin: done" in result.stderr
