@@ -74,7 +74,8 @@ def _latex(parser):
 
 def _budget_options(parser, terms=True):
     parser.add_argument("--max-seconds", type=_seconds,
-                        help="stop (exit 1) past this many seconds of the whole command, loading included")
+                        help="stop (exit 1) past this many seconds of the whole command, loading included "
+                             "(at most a week)")
     if terms:
         parser.add_argument("--max-terms", type=_terms,
                             help="stop (exit 1) when an eliminant passes this many terms")
