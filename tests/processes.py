@@ -106,6 +106,29 @@ def children(pid):
     return {(child, started) for child, parent, started in _processes() if parent == pid}
 
 
+def busy_children(pid, cpu, within=120):
+    """The living children of ``pid`` (as ``children``) once they have used ``cpu`` seconds of
+    processor time between them: at work, however loaded the machine. Past ``within`` seconds
+    (a hang guard), AssertionError."""
+    deadline = time.monotonic() + within
+    while True:
+        found = children(pid)
+        if found and sum(cpu_seconds(child) for child, _ in found) >= cpu:
+            return found
+        assert time.monotonic() < deadline, f"no child of {pid} at work after {within} s"
+        time.sleep(0.05)
+
+
+def cpu_seconds(pid):
+    """The processor time (user and system) the process ``pid`` has used, 0 once it has ended."""
+    try:
+        stat = (Path("/proc") / str(pid) / "stat").read_text()
+    except OSError:
+        return 0.0
+    fields = stat[stat.rindex(")") + 2:].split()  # as in _processes: fields 14 and 15, utime and stime
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
 def alive(processes, within):
     """Those of ``processes`` still alive (zombies count as dead) after waiting up to ``within`` seconds."""
     deadline = time.monotonic() + within

@@ -17,13 +17,28 @@ This module imports no algebra, so that a command's parent process stays light.
 Traceback (most recent call last):
 ...
 algkin.errors.BudgetExceeded: max_terms=3: the resultant in B_x has 4 terms, while computing
->>> Budget(seconds=0.2).run(lambda: sum(range(10)))
+
+The deadline is read on a clock, ``time.monotonic`` unless one is given; tests give one that
+moves when they say, so that nothing depends on how fast the machine is. Here one that stands
+still (the deadline never comes), then one that reads 0 when the budget starts and 10.5 ever
+after, against work that would never end:
+
+>>> Budget(seconds=10, clock=lambda: 0.0).run(lambda: sum(range(10)))
 45
->>> import time
->>> Budget(seconds=0.2).run(lambda: time.sleep(30))
+>>> import threading
+>>> readings = iter([0.0])
+>>> Budget(seconds=10, clock=lambda: next(readings, 10.5)).run(threading.Event().wait)
 Traceback (most recent call last):
 ...
-algkin.errors.BudgetExceeded: max_seconds=0.2: stopped after 0.2... s while computing
+algkin.errors.BudgetExceeded: max_seconds=10: stopped after 10.50 s while computing
+
+A time budget is at most a week (``MAX_SECONDS``): more is a slip (a unit, a zero too many),
+and the timers that keep it (a poll's timeout in milliseconds, a C int) go no further than 24 days.
+
+>>> Budget(seconds=1e10)
+Traceback (most recent call last):
+...
+algkin.errors.UsageError: max_seconds=10000000000.0: must be a positive number of seconds, at most a week (604800)
 """
 
 import ctypes
@@ -37,7 +52,9 @@ import time
 from ..errors import BudgetExceeded, ComputationError, UsageError
 from . import progress
 
-__all__ = ["Budget", "current", "bind_to_parent"]
+__all__ = ["Budget", "current", "bind_to_parent", "time_budget", "MAX_SECONDS"]
+
+MAX_SECONDS = 7 * 24 * 3600  # a week
 
 _ACTIVE = []  # the budgets whose run() is under way in this process, innermost last
 _PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
@@ -61,16 +78,17 @@ class Budget:
     """At most ``seconds`` of wall time from ``start()`` and ``terms`` terms per eliminant.
 
     Either may be None (no limit). One budget covers everything run under it: the
-    deadline is set once, by the first ``start()`` or ``run()``.
+    deadline is set once, by the first ``start()`` or ``run()``, on ``clock`` (seconds).
     """
 
-    def __init__(self, seconds=None, terms=None):
-        if seconds is not None and not seconds > 0:
-            raise UsageError("max_seconds", seconds, "a time budget must be a positive number of seconds")
+    def __init__(self, seconds=None, terms=None, *, clock=time.monotonic):
+        if seconds is not None:
+            time_budget(seconds, "max_seconds")
         if terms is not None and (int(terms) != terms or not terms > 0):
             raise UsageError("max_terms", terms, "a terms budget must be a positive integer")
         self.seconds, self.terms = seconds, terms
         self.deadline = None
+        self._clock = clock
         self.doing = "computing"
         self._report = None  # in a child process: the pipe to the parent
 
@@ -80,7 +98,7 @@ class Budget:
     def start(self):
         """Set the deadline (once) and return the budget."""
         if self.seconds is not None and self.deadline is None:
-            self.deadline = time.monotonic() + self.seconds
+            self.deadline = self._clock() + self.seconds
         return self
 
     def note(self, doing):
@@ -137,9 +155,11 @@ class Budget:
     def _wait(self, pipe, process):
         """The child's answer, taking its notes on the way, until the deadline."""
         while True:
-            left = self.deadline - time.monotonic()
-            if left <= 0 or not pipe.poll(left):
+            left = self.deadline - self._clock()
+            if left <= 0:
                 return self._overtime(pipe, process)
+            if not pipe.poll(left):
+                continue  # the clock says when the deadline has come (a poll may wake early)
             try:
                 kind, value = pipe.recv()
             except (EOFError, OSError):  # OSError: the pipe closed in the middle of a message
@@ -160,7 +180,7 @@ class Budget:
         for kind, value in _already_sent(pipe):
             if not self._noted(kind, value):
                 return self._outcome(kind, value)
-        elapsed = self.seconds - (self.deadline - time.monotonic())
+        elapsed = self.seconds - (self.deadline - self._clock())
         raise BudgetExceeded(f"max_seconds={self.seconds:g}: stopped after {elapsed:.2f} s while {self.doing}")
 
     def _noted(self, kind, value):
@@ -179,6 +199,22 @@ class Budget:
         if kind == "error":
             raise value
         return value
+
+
+def time_budget(seconds, argument):
+    """``seconds`` if it is a time budget that can be kept: a positive number, at most ``MAX_SECONDS``;
+    else UsageError naming ``argument``.
+
+    >>> time_budget(2.5, "--budget")
+    2.5
+    >>> time_budget(float("nan"), "--budget")
+    Traceback (most recent call last):
+    ...
+    algkin.errors.UsageError: --budget=nan: must be a positive number of seconds, at most a week (604800)
+    """
+    if not 0 < seconds <= MAX_SECONDS:  # nan and inf too
+        raise UsageError(argument, seconds, f"must be a positive number of seconds, at most a week ({MAX_SECONDS})")
+    return seconds
 
 
 def _already_sent(pipe):

@@ -17,6 +17,7 @@ parent, which shows it (``replay``), or drops it.
 import contextlib
 import contextvars
 import sys
+import time
 
 __all__ = ["shown", "stage", "counting", "step", "counted", "hand_over", "replay"]
 
@@ -27,14 +28,15 @@ _COUNT = "{desc}: {n_fmt}/{total_fmt} {unit} |{bar}| [{elapsed}<{remaining}]"
 
 
 @contextlib.contextmanager
-def shown(quiet=False, stream=None):
+def shown(quiet=False, stream=None, *, clock=time.monotonic):
     """Within the block, show progress on ``stream`` (stderr) if it is a terminal and not ``quiet``;
-    the line is cleared when the block ends, so that what is written next starts clean."""
+    the line is cleared when the block ends, so that what is written next starts clean. A count is
+    redrawn at most every 0.1 s of ``clock`` (seconds; tests give one that moves when they say)."""
     stream = sys.stderr if stream is None else stream
     if quiet or not stream.isatty():
         yield
         return
-    line = _Line(stream)
+    line = _Line(stream, clock)
     token = _DISPLAY.set(line.apply)
     try:
         yield
@@ -94,7 +96,7 @@ def _apply(event):
 class _Line:
     """The status line on a terminal: one tqdm bar, its text the stage, with a count while there is one."""
 
-    def __init__(self, stream):
+    def __init__(self, stream, clock):
         # here, and not at the top: only a shown line pays for the import
         from tqdm import tqdm
 
@@ -104,6 +106,9 @@ class _Line:
             monitor_interval = 0
 
         self._bar = Bar(file=stream, total=None, bar_format=_STAGE, desc="algkin", leave=False, dynamic_ncols=True)
+        # tqdm's clock (time.time) is no parameter: set after the fact, with the times read on it
+        self._bar._time = clock
+        self._bar.start_t = self._bar.last_print_t = clock()
 
     def apply(self, event):
         kind, *details = event

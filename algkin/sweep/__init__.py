@@ -30,6 +30,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..errors import UsageError
+from ..runtime.budget import time_budget
 from .analyses import ANALYSES, Analysis, analyses_named, register
 from .design import STATUSES, TIMING_PREFIX, Job, columns
 from .executor import EXECUTORS, dask_modules, run_chunks
@@ -98,8 +99,8 @@ def plan(scene: Any, grid: Iterable[str] = (), random: int | None = None, seed: 
     point = point or list(scene.points)[-1]
     if point not in scene.points:
         raise UsageError("--point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
-    if budget is not None and not 0 < budget < math.inf:
-        raise UsageError("--budget", budget, "must be a positive number of seconds")
+    if budget is not None:
+        time_budget(budget, "--budget")
     if not isinstance(chunk, int) or chunk < 1:
         raise UsageError("--chunk", chunk, "must be a whole number of designs from 1")
     toml = dump_scene(scene)

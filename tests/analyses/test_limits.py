@@ -19,8 +19,14 @@ from algkin.scene import load_scene
 
 from .test_toggles import four_bar
 
-mpmath.mp.dps = 50
 TOLERANCE = mpmath.mpf(10) ** -30
+
+
+@pytest.fixture(autouse=True)
+def fifty_digits():
+    """mpmath at 50 digits within each test here, and its precision as it was after (it is global)."""
+    with mpmath.workdps(50):
+        yield
 
 
 def exact(text):

@@ -5,14 +5,12 @@ import io
 import subprocess
 import sys
 import threading
-import time
 
 from algkin.runtime import progress
 from algkin.runtime.budget import Budget, current
 
+from ..clocks import still, ticks
 from ..processes import ENV
-
-TICK = 0.15  # seconds per step: tqdm redraws a count at most every 0.1 s
 
 
 class Terminal(io.StringIO):
@@ -24,10 +22,11 @@ class Terminal(io.StringIO):
 
 def test_a_terminal_shows_the_stage_and_the_count_then_a_cleared_line():
     terminal = Terminal()
-    with progress.shown(stream=terminal):
+    # a second passes at each reading of the line's clock: every step is drawn (at most one each 0.1 s)
+    with progress.shown(stream=terminal, clock=ticks()):
         progress.stage("compiling\nthe \x1b[31mscene")
         for _ in progress.counted(["uniform", "near-fold"], "cases"):
-            time.sleep(TICK)
+            pass
     shown = terminal.getvalue()
     assert "algkin: compiling the \\x1b[31mscene" in shown  # on one line, the escape not obeyed
     assert "2/2 cases" in shown
@@ -53,14 +52,13 @@ def test_a_forked_worker_shows_through_its_parent():
         current().note("compiling in the worker")
         Budget().note("a stage another budget notes")
         with progress.counting(3, "cases"):
-            time.sleep(TICK)
             progress.step()
         return "done"
 
     terminal, threads = Terminal(), threading.active_count()
-    with progress.shown(stream=terminal):
+    with progress.shown(stream=terminal, clock=ticks()):
         assert threading.active_count() == threads  # no tqdm monitor: a process that forks keeps to one thread
-        assert Budget(seconds=30).run(work) == "done"
+        assert Budget(seconds=30, clock=still).run(work) == "done"  # a worker, and no deadline to come
     shown = terminal.getvalue()
     assert "algkin: compiling in the worker" in shown and "algkin: a stage another budget notes" in shown
     assert "1/3 cases" in shown
@@ -69,6 +67,6 @@ def test_a_forked_worker_shows_through_its_parent():
 def test_importing_algkin_and_a_command_off_a_terminal_leave_tqdm_unloaded():
     code = ("import sys, algkin, algkin.runtime.budget; from algkin.ui.cli import main; main(['list']); "
             "print('tqdm' in sys.modules)")
-    done = subprocess.run([sys.executable, "-c", code], env=ENV, capture_output=True, text=True, timeout=60,
-                          check=False)
+    done = subprocess.run([sys.executable, "-c", code], env=ENV, capture_output=True, text=True, timeout=300,
+                          check=False)  # a hang guard
     assert done.stdout.splitlines()[-1] == "False", done.stderr

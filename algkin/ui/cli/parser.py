@@ -88,19 +88,23 @@ def _latex(parser):
 
 def _budget_options(parser, terms=True):
     parser.add_argument("--max-seconds", type=_seconds,
-                        help="stop (exit 1) past this many seconds of the whole command, loading included")
+                        help="stop (exit 1) past this many seconds of the whole command, loading included "
+                             "(at most a week)")
     if terms:
         parser.add_argument("--max-terms", type=_terms,
                             help="stop (exit 1) when an eliminant passes this many terms")
 
 
 def _seconds(text):
+    from ...runtime.budget import MAX_SECONDS  # here: the parser stays light (no multiprocessing)
+
     try:
         value = float(text)
     except ValueError:
         value = None
-    if value is None or not 0 < value < float("inf"):
-        raise argparse.ArgumentTypeError(f"expected a positive number of seconds, got {text!r}")
+    if value is None or not 0 < value <= MAX_SECONDS:  # nan and inf too
+        raise argparse.ArgumentTypeError(f"expected a positive number of seconds, at most a week ({MAX_SECONDS}), "
+                                         f"got {text!r}")
     return value
 
 
@@ -212,7 +216,7 @@ def build_parser():
     bench.add_argument("--problems", nargs="+", help="problem names (default: the whole suite)")
     bench.add_argument("--methods", nargs="+", help="elimination methods (default: all)")
     bench.add_argument("--backends", nargs="+", help="polynomial backends (default: all)")
-    bench.add_argument("--budget", type=float, default=60.0, help="seconds per row before it is stopped")
+    bench.add_argument("--budget", type=_seconds, default=60.0, help="seconds per row before it is stopped")
     bench.add_argument("--no-peers", action="store_true", help="skip Singular, PARI/GP, Macaulay2, msolve")
     bench.add_argument("--rounds", type=int, default=3,
                        help="rows under 2 s are measured this many times in turn, each keeping its best")
