@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 from ..eliminate import BACKENDS, DEFAULT_METHOD, METHODS
 from ..runtime import progress
+from ..runtime.budget import time_budget
 from . import specialise
 from .agree import PASSING, Agreement, Verdict, agreement, from_sympy, portable, rebuild
 from .measure import measure
@@ -69,6 +70,7 @@ def bench(problems=None, methods=None, backends=None, budget=60.0, peers=True, r
     ``algkin.runtime.progress.shown()``, the row being measured shows, and the count of rows measured once."""
     from .engines import PEERS
 
+    time_budget(budget, "budget")  # a row's deadline, so a week at most (past that the timer overflows)
     names = problems or problem_names()
     pairs = sorted({(m, b) for m in methods or METHODS for b in backends or BACKENDS} | {DEFAULT})
     rows = []

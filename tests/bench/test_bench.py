@@ -10,6 +10,7 @@ import pytest
 from algkin.bench import bench
 from algkin.bench.agree import Agreement
 from algkin.bench.measure import measure
+from algkin.errors import UsageError
 from algkin.ui.cli import main
 
 
@@ -106,3 +107,9 @@ def test_an_interrupted_report_leaves_the_earlier_files_and_no_temporary(two_cir
     with pytest.raises(KeyboardInterrupt):
         write(two_circles, tmp_path)
     assert (tmp_path / "bench.json").read_text() == "{}" and [p.name for p in tmp_path.iterdir()] == ["bench.json"]
+
+
+@pytest.mark.parametrize("budget", [1e30, float("inf"), float("nan"), 0])
+def test_the_api_refuses_a_budget_no_timer_can_keep(budget):
+    with pytest.raises(UsageError, match="^budget="):
+        bench(["two-circles"], budget=budget)

@@ -35,14 +35,13 @@ def test_nongrashof_is_derived_not_refused_and_real_between_its_dead_centres():
         for k in range(-180, 181, 3):
             t = mpmath.radians(k)
             assert (disc(mpmath.cos(t), mpmath.sin(t)) > 0) == (abs(k) < dead), k
-    mpmath.mp.dps = 40
-    for theta in (-120, -60, 0, 45, 131):
-        a = (2 * mpmath.cos(mpmath.radians(theta)), 2 * mpmath.sin(mpmath.radians(theta)))
-        b = circles(a, 3, (5, 0), mpmath.mpf(7) / 2, 1)
-        values = branch(document, "left")["values"]
-        assert abs(at_angle(values["B_x"], theta) - b[0]) < 1e-25
-        assert abs(at_angle(values["B_y"], theta) - b[1]) < 1e-25
-    mpmath.mp.dps = 15
+    with mpmath.workdps(40):
+        for theta in (-120, -60, 0, 45, 131):
+            a = (2 * mpmath.cos(mpmath.radians(theta)), 2 * mpmath.sin(mpmath.radians(theta)))
+            b = circles(a, 3, (5, 0), mpmath.mpf(7) / 2, 1)
+            values = branch(document, "left")["values"]
+            assert abs(at_angle(values["B_x"], theta) - b[0]) < 1e-25
+            assert abs(at_angle(values["B_y"], theta) - b[1]) < 1e-25
 
 
 def test_near_toggle_is_grashof_by_one_thousandth():

@@ -44,15 +44,14 @@ def test_configurations_by_hand(name):
     hand = CASES[name][0]
     branches = {b.label: b for b in closed_forms(compile_scene(load_scene(name), ["B", "F"]))}
     assert set(branches) == {"B:left F:left", "B:left F:right", "B:right F:left", "B:right F:right"}
-    mpmath.mp.dps = 40
-    for label, sides in (("B:left F:left", (1, 1)), ("B:left F:right", (1, -1))):
-        values = {k: str(v) for k, v in branches[label].values.items()}
-        for theta in range(0, 360, 45):
-            b, f, _ = hand(theta, *sides)
-            for point, (x, y) in (("B", b), ("F", f)):
-                assert abs(at_angle(values[f"{point}_x"], theta) - x) < 1e-30
-                assert abs(at_angle(values[f"{point}_y"], theta) - y) < 1e-30
-    mpmath.mp.dps = 15
+    with mpmath.workdps(40):
+        for label, sides in (("B:left F:left", (1, 1)), ("B:left F:right", (1, -1))):
+            values = {k: str(v) for k, v in branches[label].values.items()}
+            for theta in range(0, 360, 45):
+                b, f, _ = hand(theta, *sides)
+                for point, (x, y) in (("B", b), ("F", f)):
+                    assert abs(at_angle(values[f"{point}_x"], theta) - x) < 1e-30
+                    assert abs(at_angle(values[f"{point}_y"], theta) - y) < 1e-30
 
 
 @pytest.mark.parametrize("name", sorted(CASES))
@@ -61,13 +60,12 @@ def test_coupler_curve_degree_and_circularity(name):
     document = run_process("curve", name, "--point", "P", "--samples", "6")
     assert (document["degree"], document["circularity"]) == (degree, circularity)
     assert document["irreducible"] and document["verification"]["passed"]
-    mpmath.mp.dps = 40
-    checked = 0
-    for theta in range(5, 360, 30):
-        for side_f in (1, -1):
-            found = hand(theta, 1, side_f)
-            if found is not None:
-                assert abs(curve_at(document, found[2])) < 1e-30
-                checked += 1
-    mpmath.mp.dps = 15
+    with mpmath.workdps(40):
+        checked = 0
+        for theta in range(5, 360, 30):
+            for side_f in (1, -1):
+                found = hand(theta, 1, side_f)
+                if found is not None:
+                    assert abs(curve_at(document, found[2])) < 1e-30
+                    checked += 1
     assert checked >= 12

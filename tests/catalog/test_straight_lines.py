@@ -51,14 +51,13 @@ def test_closed_form_is_the_hand_geometry_and_the_stroke_is_straight(case):
     hand, input_name, stroke, axis, held, deviation = CASES[name]
     assert document["verification"]["passed"]
     chosen = next(b for b in document["branches"] if b["selected"])["values"]
-    mpmath.mp.dps = 40
-    worst = 0
-    for angle in stroke:
-        p = hand(angle)
-        for k, coordinate in enumerate(("P_x", "P_y")):
-            assert abs(at_angle(chosen[coordinate], angle, input_name) - p[k]) < 1e-30
-        worst = max(worst, abs(p[axis] - held))
-    mpmath.mp.dps = 15
+    with mpmath.workdps(40):
+        worst = 0
+        for angle in stroke:
+            p = hand(angle)
+            for k, coordinate in enumerate(("P_x", "P_y")):
+                assert abs(at_angle(chosen[coordinate], angle, input_name) - p[k]) < 1e-30
+            worst = max(worst, abs(p[axis] - held))
     assert worst < deviation
     # ... while the stroke itself is long: the other coordinate sweeps over more than 1.
     ends = [hand(stroke[0])[1 - axis], hand(stroke[-1])[1 - axis]]
@@ -94,7 +93,6 @@ def test_coupler_curve_is_a_tricircular_sextic_through_the_hand_points(name):
     assert (document["degree"], document["circularity"]) == (6, 3)
     assert document["verification"]["passed"]
     hand, _, stroke, *_ = CASES[name]
-    mpmath.mp.dps = 40
-    for angle in stroke:
-        assert abs(curve_at(document, hand(angle))) < 1e-30
-    mpmath.mp.dps = 15
+    with mpmath.workdps(40):
+        for angle in stroke:
+            assert abs(curve_at(document, hand(angle))) < 1e-30
