@@ -25,7 +25,7 @@ algkin.errors.SceneError: fourbar.toml: points.B: assembles only at theta = 0° 
 from __future__ import annotations
 
 import collections
-import dataclasses
+import attrs
 import math
 from collections.abc import Sequence
 from fractions import Fraction
@@ -175,7 +175,7 @@ def _culprit(branch: Branch, compiled: Compiled) -> str:
     (_, variables), = compiled.system.inputs.items()
     lo, hi = compiled.scene.inputs[next(iter(compiled.system.inputs))].span
     for point, discriminant in branch.discriminants.items():
-        alone = dataclasses.replace(branch, discriminants={point: discriminant})
+        alone = attrs.evolve(branch, discriminants={point: discriminant})
         if not any(i["status"] == "certified" for i in certify_label(alone, variables, lo, hi, _balls(compiled))):
             return point
     return next(iter(branch.discriminants))

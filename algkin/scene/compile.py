@@ -11,13 +11,12 @@ points (dyads, sliders) and the asked-for outputs become unknowns.
 AB**2 - 122500*c_theta**2 + 56000*c_theta - 122500*s_theta**2 + 280000*s_theta - 166400
 """
 
-import dataclasses
+import attrs
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass
-
 import sympy
 
 from ..errors import SceneError, UsageError
+from ..runtime.frozen import FrozenDict, frozen
 from ..system import System, symbol
 from .constructions import Builder, Construction, Indicator, Unbuildable
 from .expr import MAX_VALUE_BITS, bits_bound
@@ -33,7 +32,7 @@ __all__ = ["Compiled", "DyadSpec", "SliderSpec", "AngleOutput", "compile_scene"]
 Substitution = Mapping[sympy.Symbol, sympy.Expr]
 
 
-@dataclass(frozen=True)
+@attrs.frozen
 class AngleOutput:
     """An angle output compiled: the unknowns standing for it.
 
@@ -55,21 +54,28 @@ class AngleOutput:
         return len(self.points) == 2
 
 
-@dataclass(frozen=True)
+@attrs.frozen
 class Compiled:
-    """A scene compiled for some outputs: the system plus what branches need to know."""
+    """A scene compiled for some outputs: the system plus what branches need to know (an
+    immutable, hashable value)."""
 
     scene: Scene
     system: System
-    coordinates: dict[str, Point]  # needed point -> (x, y) in system variables
+    # needed point -> (x, y) in system variables
+    coordinates: FrozenDict[str, Point] = attrs.field(converter=frozen)
     dyads: tuple[DyadSpec, ...]  # in construction order
     indicators: tuple[Indicator, ...]  # one per dyad or slider
-    definitions: dict[str, sympy.Expr]  # output unknown -> its value in other variables (sqrt for distances)
-    outputs: dict[str, tuple[str, ...]]  # output name -> unknown names standing for it
-    parameter_values: dict[str, sympy.Expr]  # every scene parameter -> exact default
+    # output unknown -> its value in other variables (sqrt for distances)
+    definitions: FrozenDict[str, sympy.Expr] = attrs.field(converter=frozen)
+    # output name -> unknown names standing for it
+    outputs: FrozenDict[str, tuple[str, ...]] = attrs.field(converter=frozen)
+    # every scene parameter -> exact default
+    parameter_values: FrozenDict[str, sympy.Expr] = attrs.field(converter=frozen)
     symbolic: tuple[str, ...]  # parameters kept symbolic
-    implicit: tuple[ImplicitSpec, ...] = ()  # dyads and sliders, in construction order
-    angles: dict[str, AngleOutput] = dataclasses.field(default_factory=dict)  # angle output name -> its unknowns
+    # dyads and sliders, in construction order
+    implicit: tuple[ImplicitSpec, ...] = ()
+    # angle output name -> its unknowns
+    angles: FrozenDict[str, AngleOutput] = attrs.field(factory=FrozenDict, converter=frozen)
 
     @property
     def circles(self) -> Circles:
@@ -87,12 +93,12 @@ def _resolve_outputs(scene: Scene, requested: Sequence[str] | None) -> list[Outp
         else:
             output = parse_output(text, text, scene.points, scene.source, "--outputs")
             if output.kind == "dist":
-                output = dataclasses.replace(output, name=f"dist_{output.points[0]}_{output.points[1]}")
+                output = attrs.evolve(output, name=f"dist_{output.points[0]}_{output.points[1]}")
                 if output.name in scene.parameters:
                     raise UsageError("--outputs", text, f"its unknown {output.name!r} is the name of a parameter")
                 check_symbol_name(scene.source, "--outputs", output.name, generated)
             elif output.kind == "angle":
-                output = dataclasses.replace(output, name="_".join(("angle",) + output.points))
+                output = attrs.evolve(output, name="_".join(("angle",) + output.points))
         if any(o.name == output.name and (o.kind, o.points) == (output.kind, output.points) for o in outputs):
             continue  # asked for twice
         unknowns = {"dist": (output.name,), "angle": angle_unknowns(output.name, output)}.get(output.kind, ())

@@ -10,7 +10,7 @@ Traceback (most recent call last):
 algkin.errors.UsageError: --set='zz=1': not a parameter of arm-string (parameters: a, b, r, g)
 """
 
-import dataclasses
+import attrs
 from collections.abc import Iterable, Mapping
 from fractions import Fraction
 
@@ -57,7 +57,7 @@ def with_values(scene: Scene, values: Mapping[str, object] | None, params: Itera
         defaults[name] = _exact(name, value)
     from .load import as_scene
 
-    return as_scene(dataclasses.replace(scene, parameters=defaults))
+    return as_scene(attrs.evolve(scene, parameters=defaults))
 
 
 def _exact(name: str, value: object) -> sympy.Expr:

@@ -1,7 +1,7 @@
 """The .html page against hostile scene text: nothing from a scene becomes markup or script."""
 
 import copy
-import dataclasses
+import attrs
 import json
 import unicodedata
 
@@ -32,7 +32,7 @@ def benign(motion):
 def page_of(motion, name, description):
     """The page of ``motion`` with the scene's name and description replaced (closed forms reused)."""
     hostile = copy.copy(motion)
-    hostile.scene = dataclasses.replace(motion.scene, name=name, description=description)
+    hostile.scene = attrs.evolve(motion.scene, name=name, description=description)
     return page(hostile)
 
 
