@@ -37,11 +37,11 @@ approach to a dead centre), and the mechanism translated 1e7 away. A sample the 
 cannot certify (on the side of a toggle where the branch does not assemble) is left out.
 """
 
-import attrs
 import functools
 import time
 from dataclasses import dataclass
 
+import attrs
 import numpy as np
 import sympy
 

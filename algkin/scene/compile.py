@@ -11,8 +11,9 @@ points (dyads, sliders) and the asked-for outputs become unknowns.
 AB**2 - 122500*c_theta**2 + 56000*c_theta - 122500*s_theta**2 + 280000*s_theta - 166400
 """
 
-import attrs
 from collections.abc import Iterable, Mapping, Sequence
+
+import attrs
 import sympy
 
 from ..errors import SceneError, UsageError

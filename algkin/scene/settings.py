@@ -10,10 +10,10 @@ Traceback (most recent call last):
 algkin.errors.UsageError: --set='zz=1': not a parameter of arm-string (parameters: a, b, r, g)
 """
 
-import attrs
 from collections.abc import Iterable, Mapping
 from fractions import Fraction
 
+import attrs
 import sympy
 
 from ..errors import UsageError

@@ -33,10 +33,10 @@ output ``phi = "angle(X, B)"`` too, X a point at a fixed distance from B (or
 >>> check()
 """
 
-import attrs
 import math
 from fractions import Fraction
 
+import attrs
 import numpy as np
 import sympy
 from hypothesis import assume, strategies as st

@@ -1,7 +1,6 @@
 """Misuse of the Python API raises algkin's own errors, naming the argument (issue: hostile input)."""
 
 import attrs
-
 import pytest
 import sympy
 

@@ -1,7 +1,5 @@
 """A loaded scene is an immutable value: changing it raises, and later loads are untouched (issue 31)."""
 
-import pickle
-
 import attrs
 import pytest
 import sympy
@@ -39,13 +37,6 @@ def test_scenes_and_compiled_systems_are_hashable_values():
     assert hash(compiled.system) == hash(compile_scene(scene, ["B"]).system)
     with pytest.raises(TypeError):
         compiled.definitions["B_x"] = sympy.Integer(0)
-
-
-def test_a_system_pickles_without_its_flint_forms_and_converts_them_again():
-    system = compile_scene(load_scene("fourbar"), ["B"]).system
-    assert system.polynomials  # computed, and cached on the value
-    copy = pickle.loads(pickle.dumps(system))
-    assert copy == system and copy.polynomials == system.polynomials
 
 
 def test_a_frozen_mapping_keeps_order_and_hashes_as_it_compares():

@@ -1,11 +1,11 @@
 """Figures: one command each, drawn from closed forms, with the certified points on them."""
 
-import attrs
 import io
 import pathlib
 import subprocess
 import sys
 
+import attrs
 import numpy as np
 import pytest
 

@@ -1,6 +1,5 @@
 """Drawings: positions against hand geometry, trajectory on the implicit curve, modes, animations."""
 
-import attrs
 import io
 import json
 import os
@@ -9,6 +8,7 @@ import shutil
 import subprocess
 import sys
 
+import attrs
 import numpy as np
 
 import pytest

@@ -1,10 +1,10 @@
 """The .html page against hostile scene text: nothing from a scene becomes markup or script."""
 
 import copy
-import attrs
 import json
 import unicodedata
 
+import attrs
 import html5lib
 import pytest
 from hypothesis import given, settings, strategies as st
