@@ -20,7 +20,7 @@ import sympy
 from ..errors import SceneError, UsageError
 from ..system import System, symbol
 from .constructions import Builder, Construction, Indicator, Unbuildable
-from .expr import MAX_VALUE_BITS, bits_bound
+from .expr import MAX_VALUE_BITS, bits_bound, irrational
 from .implicit import DyadSpec, ImplicitSpec, SliderSpec
 from .implicit.algebra import Circles, reduce_on_circles
 from .implicit.base import Point
@@ -153,6 +153,9 @@ def _parameter_values(scene: Scene, symbolic: Sequence[str]) \
                              f"reach {bits[name]} bits (at most {MAX_VALUE_BITS})")
         defaults[name] = default.xreplace(defaults_subs(defaults, symbols))
         _check_finite(scene, f"parameters.{name}", defaults[name])
+        problem = irrational(defaults[name])  # b = "sqrt(a)", a = 2
+        if problem:
+            raise SceneError(scene.source, f"parameters.{name}", f"with the defaults above it, {problem}")
         if name not in symbolic:
             substitution[symbols[name]] = defaults[name]
     return defaults, substitution, bits
@@ -184,11 +187,13 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
                 _check_finite(scene, f"points.{name}", item)
         _check_lengths(scene, name, construction, inputs)
         _check_direction(scene, name, construction)
+        made = len(builder.equations)
         try:
             x, y = construction.build(name, coords, builder)
         except Unbuildable as err:
             raise SceneError(scene.source, f"points.{name}", str(err)) from None
         coords[name] = (sympy.expand(x), sympy.expand(y))
+        _check_rational(scene, name, [*coords[name], *builder.equations[made:]])
     lengths = {v for c in scene.points.values() for length in _lengths(c) for v in length.free_symbols}
     definitions, output_unknowns, nonnegative, angles = _output_equations(resolved, coords, builder, lengths,
                                                                           scene.source)
@@ -250,6 +255,17 @@ def _check_finite(scene: Scene, element: str, value: object) -> None:
     if value.is_number and value != 0 and not MAGNITUDES[0] <= abs(value) <= MAGNITUDES[1]:
         raise SceneError(scene.source, element, f"{sympy.Float(value, 3)} is outside the magnitudes "
                          "1e-100 to 1e100 that floating-point checks can square")
+
+
+def _check_rational(scene: Scene, name: str, expressions: Sequence[sympy.Expr]) -> None:
+    """The point's coordinates and equations are over the rationals: an irrational number such as
+    ``sqrt(2)`` in them (a fixed point's coordinate, a crank's length) is a scene error, named."""
+    for expr in expressions:
+        numbers = [p for p in sympy.expand(expr).atoms(sympy.Pow) if p.is_number and not p.is_Rational]
+        if numbers:
+            raise SceneError(scene.source, f"points.{name}", f"{numbers[0]} makes its coordinates irrational: "
+                             "the systems are over the rationals; a square root may stand in a dyad's lengths "
+                             "(squared away), not in a coordinate, a crank's length or a frame's at")
 
 
 def _check_bits(scene: Scene, name: str, construction: Construction, bits: Mapping[str, int]) -> None:

@@ -6,6 +6,7 @@ import math
 import pathlib
 
 from ...errors import UsageError
+from ...runtime.validation import real
 from .sweep import COMMANDS as SWEEP_COMMANDS
 from .reports import (_extremum_forms, _latex_lines, _render, _report_accuracy, _report_curve, _report_derive,
                       _report_extremum, _report_show, _report_singular, _report_toggles, _verification_line,
@@ -77,7 +78,7 @@ def _method(args):
 
 def _range(text):
     try:
-        lo, hi = (float(v) for v in text.split(":"))
+        lo, hi = (real(v) for v in text.split(":"))
     except ValueError:
         raise UsageError("--range", text, "expected lo:hi, e.g. 0:180") from None
     if not all(math.isfinite(v) for v in (lo, hi)):

@@ -63,3 +63,63 @@ def test_a_dimension_just_past_reach_written_huge_is_refused_as_its_round_value_
     refused(algkin("curve", "fourbar", "--point", "P", "--set", "d=10", cwd=tmp_path), "points.B", "never assemble")
     refused(algkin("curve", "fourbar", "--point", "P", "--set", f"d={huge_over_huge(10, 89)}", cwd=tmp_path),
             "points.B", "never assemble")
+
+
+@pytest.mark.parametrize("args, words", [
+    (["derive", "fourbar", "--outputs", "B", "--param", "a", "--param", "a"], ["--param='a'", "given twice"]),
+    (["derive", "fourbar", "--outputs", "B", "B"], ["--outputs='B'", "given twice"]),
+    (["show", "fourbar", "--param", "d", "--param", "d"], ["--param='d'", "given twice"]),
+    (["show", "fourbar", "--set", "a=2", "--set", "a=3"], ["--set='a=3'", "a is set twice"]),
+    (["show", "fourbar", "--set", "a=2", "--set", "a=2"], ["--set='a=2'", "a is set twice"]),
+], ids=["param", "outputs", "show-param", "set-two-values", "set-same-value"])
+def test_a_name_given_twice_is_refused(tmp_path, args, words):
+    refused(algkin(*args, cwd=tmp_path), *words)
+
+
+def test_ten_thousand_copies_of_a_param_are_refused_at_the_second(tmp_path):
+    """sympy refused the repeated generator after 37 s of work, in a traceback."""
+    done = algkin("derive", "fourbar", "--outputs", "B", *["--param", "a"] * 10_000, cwd=tmp_path)
+    assert len(refused(done, "--param='a'", "given twice")) < 100
+
+
+def test_a_value_of_100000_digits_is_refused_in_a_short_line(tmp_path):
+    line = refused(algkin("derive", "fourbar", "--outputs", "B", "--set", "a=" + "7" * 100_000, cwd=tmp_path),
+                   "--set='a=777", "(100002 characters)", "longer than 500 characters")
+    assert len(line) < 200
+
+
+@pytest.mark.parametrize("args, words", [
+    (["show", "fourbar", "--set", "a=\u0661"], ["--set=", "ASCII"]),             # Arabic-Indic one
+    (["show", "fourbar", "--set", "a=\uff12"], ["--set=", "ASCII"]),             # fullwidth two
+    (["show", "fourbar", "--set", "a=2\u00a0"], ["--set=", "ASCII"]),            # a trailing no-break space
+    (["derive", "fourbar", "--samples", "\uff14"], ["--samples", "ASCII"]),
+    (["derive", "fourbar", "--seed", "\u0661"], ["--seed", "ASCII"]),
+    (["derive", "fourbar", "--max-seconds", "\u0665"], ["--max-seconds"]),
+    (["derive", "fourbar", "--max-terms", "\u0665"], ["--max-terms"]),
+    (["extremum", "arm-string", "--of", "AB", "--range", "0:\u0661\u0668\u0660"], ["--range"]),
+    (["sweep", "fourbar", "--grid", "a=\u0661:2:3", "--out", "sweep"], ["--grid", "is not a number"]),
+    (["sweep", "fourbar", "--grid", "a=1:2:\uff13", "--out", "sweep"], ["--grid", "COUNT"]),
+    (["sweep", "fourbar", "--grid", "a=1:2\u00a0:3", "--out", "sweep"], ["--grid", "is not a number"]),
+    (["plot", "fourbar", "--out", "f.html", "--range-of", "a=0.5:\uff12"], ["--range-of"]),
+    (["plot", "fourbar", "--out", "f.png", "--input", "\uff13\uff10"], ["--input"]),
+], ids=["set-arabic-indic", "set-fullwidth", "set-no-break-space", "samples", "seed", "max-seconds", "max-terms",
+        "range", "grid-value", "grid-count", "grid-no-break-space", "range-of", "input"])
+def test_numbers_in_other_scripts_are_refused(tmp_path, args, words):
+    """Python's int(), float() and Fraction() read them; the tiny language (SPEC §2) is ASCII."""
+    refused(algkin(*args, cwd=tmp_path), *words)
+    assert os.listdir(tmp_path) == []
+
+
+def test_a_scene_expression_in_other_digits_is_refused(tmp_path):
+    text = FIVE_BAR.replace('lengths = [3, 3]', 'lengths = ["\u0663", 3]')
+    assert text != FIVE_BAR
+    (tmp_path / "five.toml").write_text(text, encoding="utf-8")
+    refused(algkin("show", "five.toml", cwd=tmp_path), "five.toml", "points.P.lengths", "ASCII")
+
+
+def test_an_irrational_value_set_is_refused_saying_what_is_allowed(tmp_path):
+    refused(algkin("derive", "fourbar", "--outputs", "B", "--set", "a=sqrt(2)", cwd=tmp_path),
+            "--set='a=sqrt(2)'", "not rational", "sqrt(9/4)")
+    done = algkin("show", "fourbar", "--set", "a=sqrt(9/4)", "--json", cwd=tmp_path)  # a rational, written with sqrt
+    assert done.returncode == 0, done.stderr
+
