@@ -222,6 +222,8 @@ def _cmd_show(args):
         "outputs": {n: list(v) for n, v in compiled.outputs.items()},
         "inputs": inputs_json(compiled.system.inputs),
         "system": compiled.system.to_json(),
+        # point -> why it never assembles: dyads on two fixed bases, decided exactly
+        "never_assembles": dict(compiled.never_assembles),
     }
     return _render(args, document, _report_show), 0
 

@@ -123,3 +123,32 @@ def test_an_irrational_value_set_is_refused_saying_what_is_allowed(tmp_path):
     done = algkin("show", "fourbar", "--set", "a=sqrt(9/4)", "--json", cwd=tmp_path)  # a rational, written with sqrt
     assert done.returncode == 0, done.stderr
 
+
+FAR = """
+[points]
+O = { fixed = [0, 0] }
+D = { fixed = [10, 0] }
+C = { dyad = ["O", "D"], lengths = [1, 1], branch = "left" }
+[outputs]
+C = "C"
+"""
+
+
+def test_show_says_a_dyad_on_fixed_bases_never_assembles(tmp_path):
+    """|OD| = 10 > 1 + 1: no configuration; ``show`` compiled it without a word."""
+    (tmp_path / "far.toml").write_text(FAR)
+    text = algkin("show", "far.toml", cwd=tmp_path)
+    assert text.returncode == 0, text.stderr
+    assert "never assembles: C: its fixed bases O and D are 10 apart" in text.stdout
+    document = json.loads(algkin("show", "far.toml", "--json", cwd=tmp_path).stdout)
+    assert list(document["never_assembles"]) == ["C"]
+    (tmp_path / "near.toml").write_text(FAR.replace("[10, 0]", "[2, 0]"))  # tangent circles: one configuration
+    assert json.loads(algkin("show", "near.toml", "--json", cwd=tmp_path).stdout)["never_assembles"] == {}
+    refused(algkin("derive", "far.toml", cwd=tmp_path), "far.toml", "points.C", "never assemble")
+
+
+def test_a_dyad_on_two_fixed_points_at_one_place_is_bad_input(tmp_path):
+    """It was exit 1, "resultant vanished"."""
+    (tmp_path / "same.toml").write_text(FAR.replace('D = { fixed = [10, 0] }', 'D = { fixed = ["0.0", "0/7"] }'))
+    for command in ("show", "derive"):
+        refused(algkin(command, "same.toml", cwd=tmp_path), "same.toml", "points.C", "bases coincide", "O and D")
