@@ -9,8 +9,8 @@ so the command line can print them as they are.
 >>> isinstance(err, ValueError) and isinstance(err, AlgkinError)
 True
 >>> import pickle
->>> str(pickle.loads(pickle.dumps(UsageError("--point", "P", "not a point"))))
-"--point='P': not a point"
+>>> str(pickle.loads(pickle.dumps(UsageError("point", "P", "not a point"))))
+"point='P': not a point"
 >>> err = pickle.loads(pickle.dumps(OutputError("/dev/full", "No space left on device")))
 >>> str(err), isinstance(err, OSError)
 ("cannot write '/dev/full': No space left on device", True)

@@ -7,7 +7,7 @@
 >>> with_values(scene, {"zz": 1})
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: --set='zz=1': not a parameter of arm-string (parameters: a, b, r, g)
+algkin.errors.UsageError: set='zz=1': not a parameter of arm-string (parameters: a, b, r, g)
 """
 
 import dataclasses
@@ -29,7 +29,7 @@ def parse_settings(texts: Iterable[str] | None) -> dict[str, str]:
     for text in texts or ():
         name, equals, value = text.partition("=")
         if not equals or not name.strip() or not value.strip():
-            raise UsageError("--set", text, "expected NAME=VALUE, e.g. --set a=3/2")
+            raise UsageError("set", text, "expected NAME=VALUE, e.g. a=3/2")
         values[name.strip()] = value.strip()
     return values
 
@@ -50,10 +50,10 @@ def with_values(scene: Scene, values: Mapping[str, object] | None, params: Itera
     defaults = dict(scene.parameters)
     for name, value in values.items():
         if name not in defaults:
-            raise UsageError("--set", f"{name}={value}", f"not a parameter of {scene.name} "
+            raise UsageError("set", f"{name}={value}", f"not a parameter of {scene.name} "
                              f"(parameters: {', '.join(defaults) or 'none'})")
         if name in (params or ()):
-            raise UsageError("--set", f"{name}={value}", f"{name} is kept symbolic by --param; give one or the other")
+            raise UsageError("set", f"{name}={value}", f"{name} is also kept symbolic; give a value or keep it symbolic, not both")
         defaults[name] = _exact(name, value)
     from .load import as_scene
 
@@ -69,4 +69,4 @@ def _exact(name: str, value: object) -> sympy.Expr:
     try:
         return parse(value)
     except ValueError as err:
-        raise UsageError("--set", f"{name}={value}", str(err)) from None
+        raise UsageError("set", f"{name}={value}", str(err)) from None
