@@ -14,6 +14,7 @@ from .closed_form import Branch
 __all__ = ["check_assembly", "GRID"]
 
 GRID = 721
+_FLOAT_BITS = 500  # a product of two rationals of more bits than this may leave a float's range (2**1024)
 
 
 def check_assembly(compiled: Compiled, branches: Sequence[Branch]) -> None:
@@ -54,6 +55,10 @@ def _check_sides(compiled: Compiled, chosen: Branch, defaults: dict[sympy.Symbol
 
 
 def _on_grid(args: list[sympy.Symbol], expression: sympy.Expr, angles: dict[sympy.Symbol, FloatArray]) -> FloatArray:
+    if any(max(r.p.bit_length(), r.q.bit_length()) > _FLOAT_BITS for r in expression.atoms(sympy.Rational)):
+        # a dimension of huge numerator and denominator (10**90 + 1)/10**89 makes factors past a
+        # float's range (1/10**357 is 0.0): expanded, each coefficient is one exact rational again
+        expression = sympy.expand(expression)
     with np.errstate(all="ignore"):  # a pole (an input where a base meets a base) or a nan is no real value
         values = sympy.lambdify(args, expression, "numpy")(*angles.values())
         return np.nan_to_num(np.broadcast_to(np.asarray(values, dtype=float), (GRID,)), nan=-np.inf)

@@ -129,17 +129,20 @@ def _arguments(outputs, params, samples, seed, budget):
 
 
 def _exact_samples(spec, count, pieces=None):
-    """Rationals spread over the input's range (or over ``pieces`` of it, in radians or lengths:
-    where something assembles): tangent half-angles for an angle (exact points on the circle),
-    lengths for a length."""
+    """``4 * count`` exact rational inputs spread over the input's range (or over ``pieces`` of it, in
+    radians or lengths: where something assembles), the same number for every input: an angle's as an
+    exact point ``(cos, sin)`` on the unit circle, a length's as ``(length,)``.
+
+    >>> from algkin.scene.model import Input
+    >>> points = _exact_samples(Input("t", 179, 181, "deg"), 2)
+    >>> len(points), all(c * c + s * s == 1 and c < 0 for c, s in points)
+    (8, True)
+    """
     pieces = pieces or [(float(spec.to_radians(spec.lo)), float(spec.to_radians(spec.hi)))]
     values = []
     for k in range(4 * count):
         value = _along(pieces, (k + 0.5) / (4 * count))
-        if not spec.is_angle:
-            values.append(Fraction(value).limit_denominator(97))
-        elif abs(math.cos(value / 2)) > 0.02:
-            values.append(Fraction(math.tan(value / 2)).limit_denominator(97))
+        values.append(_on_circle(value) if spec.is_angle else (Fraction(value).limit_denominator(97),))
     # Interleave so that the first few samples already spread over the range.
     return values[::4] + values[1::4] + values[2::4] + values[3::4]
 
@@ -152,6 +155,20 @@ def _along(pieces, share):
             return lo + left
         left -= hi - lo
     return pieces[-1][1]
+
+
+def _on_circle(angle):
+    """An exact rational point ``(cos, sin)`` on the unit circle near ``angle`` (radians), from the
+    rational half-angle tangent ``t`` (or, near a half turn where ``t`` is unbounded, its cotangent ``u``).
+
+    >>> _on_circle(0.0), _on_circle(math.pi)
+    ((Fraction(1, 1), Fraction(0, 1)), (Fraction(-1, 1), Fraction(0, 1)))
+    """
+    if abs(math.cos(angle / 2)) >= abs(math.sin(angle / 2)):
+        t = Fraction(math.tan(angle / 2)).limit_denominator(97)
+        return (1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)
+    u = Fraction(1 / math.tan(angle / 2)).limit_denominator(97)
+    return (u * u - 1) / (u * u + 1), 2 * u / (u * u + 1)
 
 
 def witnesses(compiled, branches):
@@ -176,8 +193,7 @@ def witnesses(compiled, branches):
 def _witness(compiled, branch, spread, k):
     exact = {}  # the inputs' cos and sin (or lengths) and the dimensions are rational: kept exactly too
     for name, variables in compiled.system.inputs.items():
-        t = spread[name][k]
-        exact.update(zip(variables, ((1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)) if len(variables) == 2 else (t,)))
+        exact.update(zip(variables, spread[name][k]))
     for n in compiled.system.parameters:
         default = Fraction(str(compiled.parameter_values[n]))
         exact[n] = default * (1 + Fraction(k + 1, 211)) if default else Fraction(k + 1, 211)

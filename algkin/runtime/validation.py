@@ -14,14 +14,26 @@ algkin.errors.UsageError: samples=-1: expected a whole number from 0 to 10000
 Traceback (most recent call last):
 ...
 algkin.errors.UsageError: seed=2.5: expected a whole number from 0 to 18446744073709551615
+>>> names("params", ["a", "b", "a"])
+Traceback (most recent call last):
+...
+algkin.errors.UsageError: params='a': given twice
+>>> real("1.5e3"), whole("12"), rational("3/2")
+(1500.0, 12, Fraction(3, 2))
+>>> real("\u0661")   # Python's float() reads the Arabic-Indic digit one as 1
+Traceback (most recent call last):
+...
+ValueError: not a number in ASCII: '١'
 """
 
 import numbers
 from collections.abc import Mapping
+from fractions import Fraction
 
 from ..errors import UsageError
 
-__all__ = ["names", "count", "seed", "budget", "MAX_VERIFY_SAMPLES", "MAX_ACCURACY_SAMPLES"]
+__all__ = ["names", "count", "seed", "budget", "real", "whole", "rational", "MAX_VERIFY_SAMPLES",
+           "MAX_ACCURACY_SAMPLES"]
 
 # Each verification sample is solved at 50 digits (milliseconds); each accuracy sample
 # holds a few floats per strategy and case. Past these a run takes hours or the memory.
@@ -41,9 +53,13 @@ def names(argument, value):
         items = tuple(value)
     except TypeError:
         raise UsageError(argument, value, "expected a list of names") from None
+    seen = set()
     for item in items:
         if not isinstance(item, str):
             raise UsageError(argument, value, f"expected names (strings), got {item!r}")
+        if item in seen:  # sympy refuses a generator twice, after the work before it
+            raise UsageError(argument, item, "given twice")
+        seen.add(item)
     return items
 
 
@@ -66,3 +82,27 @@ def budget(value):
     if value is not None and not isinstance(value, Budget):
         raise UsageError("budget", value, "expected an algkin.eliminate.Budget, e.g. Budget(seconds=10)")
     return value
+
+
+# Numbers in text (command-line values) are ASCII: Python's float(), int() and Fraction() also
+# read other scripts' digits ('١', '１') and strip a no-break space, the tiny language does not.
+
+def real(text):
+    """``float(text)`` of an ASCII ``text``; ValueError otherwise."""
+    return float(_ascii(text))
+
+
+def whole(text):
+    """``int(text)`` of an ASCII ``text``; ValueError otherwise."""
+    return int(_ascii(text))
+
+
+def rational(text):
+    """``Fraction(text)`` of an ASCII ``text`` (``"3/2"``, ``"0.1"`` is 1/10); ValueError otherwise."""
+    return Fraction(_ascii(text))
+
+
+def _ascii(text):
+    if not isinstance(text, str) or not text.isascii():
+        raise ValueError(f"not a number in ASCII: {text!r}")
+    return text

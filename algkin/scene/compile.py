@@ -19,8 +19,8 @@ import sympy
 
 from ..errors import SceneError, UsageError
 from ..system import System, symbol
-from .constructions import Builder, Construction, Indicator, Unbuildable
-from .expr import MAX_VALUE_BITS, bits_bound
+from .constructions import Builder, Construction, Dyad, Indicator, Unbuildable
+from .expr import MAX_VALUE_BITS, bits_bound, irrational
 from .implicit import DyadSpec, ImplicitSpec, SliderSpec
 from .implicit.algebra import Circles, reduce_on_circles
 from .implicit.base import Point
@@ -70,6 +70,8 @@ class Compiled:
     symbolic: tuple[str, ...]  # parameters kept symbolic
     implicit: tuple[ImplicitSpec, ...] = ()  # dyads and sliders, in construction order
     angles: dict[str, AngleOutput] = dataclasses.field(default_factory=dict)  # angle output name -> its unknowns
+    # dyad on two fixed bases -> why it never assembles (decided exactly; moving bases are not decided here)
+    never_assembles: dict[str, str] = dataclasses.field(default_factory=dict)
 
     @property
     def circles(self) -> Circles:
@@ -156,6 +158,9 @@ def _parameter_values(scene: Scene, symbolic: Sequence[str]) \
                              f"reach {bits[name]} bits (at most {MAX_VALUE_BITS})")
         defaults[name] = default.xreplace(defaults_subs(defaults, symbols))
         _check_finite(scene, f"parameters.{name}", defaults[name])
+        problem = irrational(defaults[name])  # b = "sqrt(a)", a = 2
+        if problem:
+            raise SceneError(scene.source, f"parameters.{name}", f"with the defaults above it, {problem}")
         if name not in symbolic:
             substitution[symbols[name]] = defaults[name]
     return defaults, substitution, bits
@@ -179,19 +184,30 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
     inputs = _used_inputs(scene, points)
     builder = Builder({n: pair for n, pair in inputs.items() if len(pair) == 2})
     coords: dict[str, Point] = {}
+    # every dimension at its default, the symbolic ones too: where the checks and samples are
+    everywhere = {symbol(n): defaults[n] for n in symbolic}
+    never: dict[str, str] = {}
     for name in points:
         _check_bits(scene, name, scene.points[name], bits)
         construction = _substituted(scene.points[name], substitution)
+        if isinstance(construction, Dyad):
+            bases = [tuple(sympy.expand(v.xreplace(everywhere)) for v in coords[b]) for b in construction.bases]
+            _check_bases(scene, name, construction, bases)
+            why = _never_meets(construction, bases, [length.xreplace(everywhere) for length in construction.lengths])
+            if why:
+                never[name] = why
         for value in vars(construction).values():
             for item in value if isinstance(value, tuple) else (value,):
                 _check_finite(scene, f"points.{name}", item)
         _check_lengths(scene, name, construction, inputs)
         _check_direction(scene, name, construction)
+        made = len(builder.equations)
         try:
             x, y = construction.build(name, coords, builder)
         except Unbuildable as err:
             raise SceneError(scene.source, f"points.{name}", str(err)) from None
         coords[name] = (sympy.expand(x), sympy.expand(y))
+        _check_rational(scene, name, [*coords[name], *builder.equations[made:]])
     lengths = {v for c in scene.points.values() for length in _lengths(c) for v in length.free_symbols}
     definitions, output_unknowns, nonnegative, angles = _output_equations(resolved, coords, builder, lengths,
                                                                           scene.source)
@@ -207,7 +223,7 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
         nonnegative=tuple(nonnegative),
     )
     return Compiled(scene, system, coords, tuple(builder.dyads.values()), tuple(builder.indicators), definitions,
-                    output_unknowns, defaults, symbolic, tuple(builder.implicit.values()), angles)
+                    output_unknowns, defaults, symbolic, tuple(builder.implicit.values()), angles, never)
 
 
 def _used_inputs(scene: Scene, points: Sequence[str]) -> dict[str, tuple[sympy.Symbol, ...]]:
@@ -253,6 +269,46 @@ def _check_finite(scene: Scene, element: str, value: object) -> None:
     if value.is_number and value != 0 and not MAGNITUDES[0] <= abs(value) <= MAGNITUDES[1]:
         raise SceneError(scene.source, element, f"{sympy.Float(value, 3)} is outside the magnitudes "
                          "1e-100 to 1e100 that floating-point checks can square")
+
+
+def _check_bases(scene: Scene, name: str, dyad: Dyad, bases: Sequence[Point]) -> None:
+    """A dyad's bases that coincide for every input (two fixed points at one place, the same
+    crank twice; ``bases``: their coordinates, every dimension at its default) make two circles
+    about one centre: no point, or a whole circle of them. Bad input, refused by name."""
+    (px, py), (qx, qy) = bases
+    if sympy.expand(px - qx) == 0 and sympy.expand(py - qy) == 0:
+        where = f" at ({px}, {py})" if px.is_number and py.is_number else ""
+        raise SceneError(scene.source, f"points.{name}", f"bases coincide: {dyad.bases[0]} and {dyad.bases[1]} are "
+                         f"one point{where} for every input (its two circles have one centre)")
+
+
+def _never_meets(dyad: Dyad, bases: Sequence[Point], lengths: Sequence[sympy.Expr]) -> str | None:
+    """Why a dyad on two fixed bases can never assemble, decided exactly; None when it can, or
+    when a base moves (that needs the motion: ``derive`` checks the branch on a grid of inputs).
+
+    Its circles meet where ``|l1 - l2| <= d <= l1 + l2`` (``d`` the bases' distance), that is
+    where ``4 l1**2 d**2 - (d**2 + l1**2 - l2**2)**2 >= 0``: squares only, rational numbers.
+    """
+    (px, py), (qx, qy) = bases
+    if not all(v.is_number for v in (px, py, qx, qy, *lengths)):
+        return None
+    d2, s1, s2 = sympy.expand((qx - px)**2 + (qy - py)**2), sympy.expand(lengths[0]**2), sympy.expand(lengths[1]**2)
+    reach = sympy.expand(4 * s1 * d2 - (d2 + s1 - s2)**2)
+    if not reach.is_Rational or reach >= 0:
+        return None
+    return (f"its fixed bases {dyad.bases[0]} and {dyad.bases[1]} are {sympy.sqrt(d2)} apart, out of the reach "
+            f"of its lengths {lengths[0]} and {lengths[1]} (from |l1 - l2| to l1 + l2)")
+
+
+def _check_rational(scene: Scene, name: str, expressions: Sequence[sympy.Expr]) -> None:
+    """The point's coordinates and equations are over the rationals: an irrational number such as
+    ``sqrt(2)`` in them (a fixed point's coordinate, a crank's length) is a scene error, named."""
+    for expr in expressions:
+        numbers = [p for p in sympy.expand(expr).atoms(sympy.Pow) if p.is_number and not p.is_Rational]
+        if numbers:
+            raise SceneError(scene.source, f"points.{name}", f"{numbers[0]} makes its coordinates irrational: "
+                             "the systems are over the rationals; a square root may stand in a dyad's lengths "
+                             "(squared away), not in a coordinate, a crank's length or a frame's at")
 
 
 def _check_bits(scene: Scene, name: str, construction: Construction, bits: Mapping[str, int]) -> None:

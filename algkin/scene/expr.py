@@ -1,7 +1,8 @@
 """The scene files' tiny expression language, parsed without eval.
 
 Numbers (integers, decimals, exponents, all read exactly), names, ``+ - * / **``,
-parentheses and ``sqrt(...)``. The result is a sympy expression built from sympy
+parentheses and ``sqrt(...)``, in ASCII: Python's ``int`` and ``Fraction`` would also read
+other scripts' digits (``'١'``, ``'１'``) and strip a no-break space, the language does not. The result is a sympy expression built from sympy
 constructors directly, so nothing in a scene file is ever executed.
 
 >>> parse("0.1 + 1/5")
@@ -14,6 +15,10 @@ constructors directly, so nothing in a scene file is ever executed.
 Traceback (most recent call last):
 ...
 ValueError: unknown function '__import__' (only sqrt)
+>>> parse("\uff11/2")
+Traceback (most recent call last):
+...
+ValueError: unexpected character '１' at 0 (numbers and names are ASCII: digits 0-9, letters A-Z a-z)
 """
 
 import re
@@ -22,7 +27,7 @@ from fractions import Fraction
 
 import sympy
 
-__all__ = ["parse", "exact_number", "bits_bound", "MAX_EXPRESSION_LENGTH", "MAX_NUMBER_BITS", "MAX_VALUE_BITS"]
+__all__ = ["parse", "exact_number", "bits_bound", "irrational", "MAX_EXPRESSION_LENGTH", "MAX_NUMBER_BITS", "MAX_VALUE_BITS"]
 
 MAX_EXPRESSION_LENGTH = 500
 MAX_DEPTH = 40
@@ -33,10 +38,10 @@ _MAX_DECIMAL_EXPONENT = 4 * MAX_NUMBER_BITS  # keeps Fraction("1e...") cheap bef
 
 Token = tuple[str, str]  # (kind: num, name or op; its text)
 
-_TOKEN = re.compile(
-    r"\s*(?:(?P<num>(?:\d[\d_]*(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)"
-    r"|(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<op>\*\*|[-+*/(),]))"
-)
+_NUMBER = r"(?:\d[\d_]*(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?"
+# ASCII: without it \d and \s match other scripts' digits and spaces (a no-break space)
+_TOKEN = re.compile(rf"\s*(?:(?P<num>{_NUMBER})|(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<op>\*\*|[-+*/(),]))", re.ASCII)
+_SPACE = " \t\n\r\f\v"  # str.strip() would also take a no-break space
 
 
 def exact_number(text: str) -> sympy.Rational:
@@ -45,6 +50,8 @@ def exact_number(text: str) -> sympy.Rational:
     >>> exact_number("2.5e-1")
     1/4
     """
+    if not str(text).isascii():  # Fraction would read other scripts' digits
+        raise ValueError(f"not a number in ASCII digits 0-9: {text!r}")
     plain = str(text).replace("_", "")
     _mantissa, _, exponent = plain.lower().partition("e")
     try:
@@ -78,6 +85,23 @@ def bits_bound(expr: sympy.Expr, bits: Mapping[str, int]) -> int:
     return sum(bits_bound(arg, bits) for arg in expr.args) + len(expr.args)
 
 
+def irrational(value: sympy.Expr) -> str | None:
+    """Why ``value``, a dimension's value, is not one (an irrational number), else None.
+
+    The systems are over the rationals: a dimension is a rational number. A square root that is
+    not rational belongs where it is squared away, a dyad's lengths (``lengths = ["sqrt(2)", 1]``).
+
+    >>> irrational(parse("sqrt(9/4)")) is None
+    True
+    >>> print(irrational(parse("1 + sqrt(2)")))
+    1 + sqrt(2) is not rational: a dimension is a rational number (3/2, 0.1, sqrt(9/4)); write an irrational length in a dyad's lengths, where it is squared
+    """
+    if not value.is_number or value.is_Rational:
+        return None
+    return (f"{value} is not rational: a dimension is a rational number (3/2, 0.1, sqrt(9/4)); "
+            "write an irrational length in a dyad's lengths, where it is squared")
+
+
 def _check_size(numerator: int, denominator: int = 1) -> None:
     if max(abs(numerator).bit_length(), abs(denominator).bit_length()) > MAX_NUMBER_BITS:
         raise ValueError(f"number too large or too precise (more than {MAX_NUMBER_BITS} bits)")
@@ -95,11 +119,13 @@ def _check_result(value: sympy.Expr) -> None:
 def _tokenize(text: str) -> list[Token]:
     tokens: list[Token] = []
     pos = 0
-    text = text.rstrip()
+    text = text.rstrip(_SPACE)
     while pos < len(text):
         match = _TOKEN.match(text, pos)
         if not match or match.end() == pos:
-            raise ValueError(f"unexpected character {text[pos:].strip()[:1]!r} at {pos}")
+            where = pos + len(text[pos:]) - len(text[pos:].lstrip(_SPACE))
+            ascii_hint = "" if text[where].isascii() else " (numbers and names are ASCII: digits 0-9, letters A-Z a-z)"
+            raise ValueError(f"unexpected character {text[where]!r} at {where}{ascii_hint}")
         kind = match.lastgroup
         assert kind is not None  # every alternative of _TOKEN is a named group
         tokens.append((kind, match.group(kind)))

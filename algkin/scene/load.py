@@ -27,7 +27,7 @@ import sympy
 
 from ..errors import SceneError, UsageError
 from .constructions import CONSTRUCTIONS, Construction, Crank, Dyad, Fixed, Frame, Slider
-from .expr import exact_number, parse
+from .expr import exact_number, irrational, parse
 from .model import Input, Output, Scene, length_range_problem, range_problem
 from .names import check_names
 
@@ -184,6 +184,9 @@ class _Loader:
                 value, ranges[name] = self.ranged(value, element)
             # A default may use the parameters above it; the name itself stays a symbol.
             defaults[name] = self.expr(value, element)
+            problem = irrational(defaults[name])  # one in the parameters above it: when they are resolved
+            if problem:
+                self.fail(element, problem)
             self.names[name] = sympy.Symbol(name, real=True)
         return defaults, ranges
 

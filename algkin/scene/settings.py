@@ -8,6 +8,14 @@
 Traceback (most recent call last):
 ...
 algkin.errors.UsageError: set='zz=1': not a parameter of arm-string (parameters: a, b, r, g)
+>>> parse_settings(["a=1", "b=2", "a=1"])
+Traceback (most recent call last):
+...
+algkin.errors.UsageError: set='a=1': a is set twice
+>>> with_values(scene, {"b": 2**2000})
+Traceback (most recent call last):
+...
+algkin.errors.UsageError: set='b=<an integer of 2001 bits>': number too large or too precise (more than 1024 bits)
 """
 
 import dataclasses
@@ -17,20 +25,26 @@ from fractions import Fraction
 import sympy
 
 from ..errors import UsageError
-from .expr import parse
+from .expr import MAX_NUMBER_BITS, irrational, parse
 from .model import Scene
 
 __all__ = ["with_values", "parse_settings"]
 
+SHOWN = 80  # characters of a value an error line repeats
+_SPACE = " \t\n\r\f\v"
+
 
 def parse_settings(texts: Iterable[str] | None) -> dict[str, str]:
-    """``{name: value text}`` from the command line's ``NAME=VALUE`` strings (the last of a name wins)."""
+    """``{name: value text}`` from the command line's ``NAME=VALUE`` strings, each name once."""
     values: dict[str, str] = {}
     for text in texts or ():
         name, equals, value = text.partition("=")
-        if not equals or not name.strip() or not value.strip():
-            raise UsageError("set", text, "expected NAME=VALUE, e.g. a=3/2")
-        values[name.strip()] = value.strip()
+        name = name.strip(_SPACE)  # ASCII spaces: a no-break space is no part of the language
+        if not equals or not name or not value.strip(_SPACE):
+            raise UsageError("set", _shown(text), "expected NAME=VALUE, e.g. a=3/2")
+        if name in values:
+            raise UsageError("set", _shown(text), f"{name} is set twice")
+        values[name] = value
     return values
 
 
@@ -38,8 +52,8 @@ def with_values(scene: Scene, values: Mapping[str, object] | None, params: Itera
     """A new ``Scene``: ``scene`` with the defaults of the parameters in ``values`` replaced, checked again.
 
     Values are exact: strings in the scene files' expression language (``"3/2"``, ``"0.1"`` is
-    1/10, ``"sqrt(2)"``), integers, fractions or sympy rationals; a float is read as the decimal
-    its shortest repr spells. A parameter that ``params`` keeps symbolic cannot also be set.
+    1/10), integers, fractions or sympy rationals (see ``_exact`` for their bounds); a float is
+    read as the decimal its shortest repr spells. A parameter that ``params`` keeps symbolic cannot also be set.
     The new scene goes through the loader again, so that a value which breaks it (a length
     that becomes negative...) fails as a scene file would.
     """
@@ -50,10 +64,10 @@ def with_values(scene: Scene, values: Mapping[str, object] | None, params: Itera
     defaults = dict(scene.parameters)
     for name, value in values.items():
         if name not in defaults:
-            raise UsageError("set", f"{name}={value}", f"not a parameter of {scene.name} "
+            raise UsageError("set", _given(name, value), f"not a parameter of {scene.name} "
                              f"(parameters: {', '.join(defaults) or 'none'})")
         if name in (params or ()):
-            raise UsageError("set", f"{name}={value}", f"{name} is also kept symbolic; give a value or keep it symbolic, not both")
+            raise UsageError("set", _given(name, value), f"{name} is also kept symbolic; give a value or keep it symbolic, not both")
         defaults[name] = _exact(name, value)
     from .load import as_scene
 
@@ -61,12 +75,45 @@ def with_values(scene: Scene, values: Mapping[str, object] | None, params: Itera
 
 
 def _exact(name: str, value: object) -> sympy.Expr:
-    """``value`` as an exact sympy number, read by the scene files' own parser (never eval)."""
-    if isinstance(value, float):
+    """``value`` as an exact sympy number, read by the scene files' own parser (never eval).
+
+    The scene is checked again as a file: a value keeps to its bounds, numerator and
+    denominator of at most ``MAX_NUMBER_BITS`` bits, and ``p/q`` of at most
+    ``MAX_EXPRESSION_LENGTH`` characters. An integer or fraction is measured before it is
+    written out (Python writes no integer of more than 4300 digits).
+    """
+    if isinstance(value, (int, Fraction, sympy.Rational)) and not isinstance(value, bool):
+        numerator, denominator = int(value.numerator), int(value.denominator)
+        if _bits(numerator, denominator) > MAX_NUMBER_BITS:
+            raise UsageError("set", _given(name, value),
+                             f"number too large or too precise (more than {MAX_NUMBER_BITS} bits)")
+        value = f"{numerator}/{denominator}"
+    elif isinstance(value, float):
         value = repr(value)
-    elif isinstance(value, (Fraction, sympy.Rational)):
-        value = f"{value.numerator}/{value.denominator}"
     try:
-        return parse(value)
+        exact = parse(value)
     except ValueError as err:
-        raise UsageError("set", f"{name}={value}", str(err)) from None
+        raise UsageError("set", _given(name, value), str(err)) from None
+    problem = irrational(exact)
+    if problem:
+        raise UsageError("set", _given(name, value), problem)
+    return exact
+
+
+def _bits(numerator: int, denominator: int) -> int:
+    return max(abs(numerator).bit_length(), denominator.bit_length())
+
+
+def _given(name: str, value: object) -> str:
+    """``NAME=VALUE`` as an error line shows it: a huge number by its size (Python writes no
+    integer of more than 4300 digits), a long text cut short."""
+    if isinstance(value, (int, Fraction, sympy.Rational)) and not isinstance(value, bool):
+        bits = _bits(int(value.numerator), int(value.denominator))
+        if bits > MAX_NUMBER_BITS:
+            return f"{name}=<{'an integer' if value.denominator == 1 else 'a fraction'} of {bits} bits>"
+    return _shown(f"{name}={value}")
+
+
+def _shown(text: str) -> str:
+    """``text`` cut to ``SHOWN`` characters for an error line (a value may be 100000 digits long)."""
+    return text if len(text) <= SHOWN else f"{text[:SHOWN - 20]}...({len(text)} characters)"

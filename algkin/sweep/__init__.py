@@ -176,9 +176,9 @@ def _check_length(planned: Plan, count: int, parallel: int) -> None:
     if seconds <= DAY:
         return
     space = planned.manifest["designs"]
-    flag, value = ("random", space["random"]["count"]) if "random" in space else \
+    argument, value = ("random", space["random"]["count"]) if "random" in space else \
         ("grid", " ".join(f"{n}={v[0]}:{v[-1]}:{len(v)}" for n, v in space["grid"].items()))
-    raise UsageError(flag, value, f"{count} designs would take at least {_duration(seconds)} "
+    raise UsageError(argument, value, f"{count} designs would take at least {_duration(seconds)} "
                                   f"({_duration(seconds * parallel / count)} each, {parallel} at once); "
                                   "confirm with yes to start anyway")
 

@@ -33,6 +33,7 @@ from typing import overload
 import numpy as np
 
 from ..errors import UsageError
+from ..runtime.validation import rational
 
 __all__ = ["parse_grid", "parse_ranges", "grid_designs", "random_designs", "Designs", "RANDOM_STEPS", "MAX_DESIGNS"]
 
@@ -45,7 +46,7 @@ MAX_DESIGNS = 10**6
 def _exact(text: str, spec: str) -> Fraction:
     """An exact rational from a decimal or a fraction (``0.1``, ``3/2``, ``-2``), never a float's binary value."""
     try:
-        value = Fraction(text.strip())
+        value = rational(text)
     except (ValueError, ZeroDivisionError):
         raise UsageError("grid", spec, f"{text.strip()!r} is not a number (e.g. 1.5 or 3/2)") from None
     if abs(value) > 10**100 or (value and abs(value) < Fraction(1, 10**100)):
@@ -103,7 +104,7 @@ def _axis(spec: str) -> tuple[str, Fraction, Fraction, int]:
     name, fields = _split(spec, 3)
     lo, hi = _bounds(spec, fields)
     count = fields[2].strip()
-    if not count.isdigit() or int(count) < 1:
+    if not (count.isascii() and count.isdigit()) or int(count) < 1:
         raise UsageError("grid", spec, f"COUNT must be a whole number from 1, got {count!r}")
     n = int(count)
     if n == 1 and lo != hi:

@@ -18,6 +18,7 @@ import sympy
 
 from ..errors import UsageError
 from ..runtime.files import atomic_output, check_output
+from ..runtime.validation import real
 from .plot import FORMATS as FIGURE_FORMATS, new_figure
 
 __all__ = ["mechanism_figure", "modes_figure", "draw_pose", "PoseArtists", "LiveFigure", "draw_curve", "animate", "parse_inputs", "parse_ranges", "plot_mechanism", "FORMATS"]
@@ -308,7 +309,7 @@ def parse_inputs(motion, texts):
         if name not in motion.inputs:
             raise UsageError("--input", text, f"expected NAME=DEGREES with NAME one of {', '.join(motion.inputs)}")
         try:
-            degrees = float(value)
+            degrees = real(value)
         except ValueError:
             degrees = float("nan")
         lo, hi = motion.inputs[name].span
@@ -330,7 +331,7 @@ def parse_ranges(texts, option="--range-of"):
     for text in texts:
         name, _, span = text.partition("=")
         try:
-            lo, hi = (float(v) for v in span.split(":"))
+            lo, hi = (real(v) for v in span.split(":"))
         except ValueError:
             lo = hi = float("nan")
         # nan fails lo < hi, so only infinities need their own check.

@@ -8,6 +8,9 @@ dimensions kept symbolic take their exact values first (python-flint substitutio
 then grouped by the monomials of all but its variable of highest degree, each group an
 ``arb_poly`` in that variable (evaluated in C). The denominator, the sum of the terms'
 absolute values, only scales the figure: it is evaluated in floats, for all roots at once.
+Both are of ``p / scale``, ``scale`` a power of two within a factor 2 of the largest coefficient: the
+figure is the same, and coefficients past a float's range (a dimension written with 90-digit
+integers, raised to the eighth power) still give finite floats.
 
 >>> import flint, numpy as np, sympy
 >>> x, y, r = sympy.symbols("x y r", real=True)
@@ -16,14 +19,16 @@ absolute values, only scales the figure: it is evaluated in floats, for all root
 ...     on, off = circle.balls({"x": flint.arb(3), "y": flint.arb(4)}), circle.balls({"x": flint.arb(3), "y": flint.arb(5)})
 >>> on.contains(0), off.contains(0)
 (True, False)
->>> circle.magnitude({"x": np.array([3.0]), "y": np.array([4.0])}).tolist()
-[50.0]
+>>> circle.scale
+16
+>>> circle.magnitude({"x": np.array([3.0]), "y": np.array([4.0])}).tolist()   # (9 + 16 + 25) / 16
+[3.125]
 """
 
 from __future__ import annotations
 
 from collections import defaultdict
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from fractions import Fraction
 from typing import TypeAlias
 
@@ -89,6 +94,8 @@ class Polynomial:
         keep = [k for k, (n, d) in enumerate(zip(variables, poly.degrees())) if d and n not in given]
         self.names = [variables[k] for k in keep]
         terms = {tuple(int(m[k]) for k in keep): c for m, c in poly.to_dict().items()}
+        self.scale = _scale(terms.values())
+        terms = {m: flint.fmpq(c) / self.scale for m, c in terms.items()}
         self.inner = max(range(len(keep)), key=lambda k: max(m[k] for m in terms)) if keep else None
         self.groups = _groups(terms, self.inner)
         self.outer = [n for k, n in enumerate(self.names) if k != self.inner]
@@ -98,7 +105,7 @@ class Polynomial:
         self.made: tuple[int | None, dict[tuple[int, ...], flint.arb_poly]] = (None, {})
 
     def balls(self, values: Mapping[str, flint.arb]) -> flint.arb:
-        """``p`` at ``values`` (name -> ball), a ball."""
+        """``p / scale`` at ``values`` (name -> ball), a ball."""
         polys = self._polys()
         if self.inner is None:
             return sum((p(0) for p in polys.values()), flint.arb(0))
@@ -125,7 +132,7 @@ class Polynomial:
         return total
 
     def magnitude(self, values: Mapping[str, NDArray[np.float64]]) -> NDArray[np.float64]:
-        """The sum of the absolute values of the terms, for float arrays ``values`` (all at once)."""
+        """The sum of the absolute values of the terms of ``p / scale``, for float arrays ``values`` (all at once)."""
         if not self.names:
             return np.full(1, self.sizes.sum())
         points = np.abs(np.stack([np.asarray(values[n], dtype=float) for n in self.names], axis=-1))
@@ -137,6 +144,17 @@ class Polynomial:
         if self.made[0] != precision:
             self.made = (precision, {m: _arb_poly(terms) for m, terms in self.groups.items()})
         return self.made[1]
+
+
+def _scale(coefficients: Iterable[flint.fmpq | flint.fmpz]) -> flint.fmpq:
+    """A power of two within a factor 2 of the largest of ``coefficients`` (1 when all are 0),
+    found from their bit lengths: their floats may overflow.
+
+    >>> _scale([flint.fmpq(3, 4), flint.fmpz(-10) ** 400]) == flint.fmpq(2) ** 1328
+    True
+    """
+    bits = [int(c.p).bit_length() - int(c.q).bit_length() for c in map(flint.fmpq, coefficients) if c]
+    return flint.fmpq(2) ** max(bits) if bits else flint.fmpq(1)
 
 
 def _groups(terms: Mapping[tuple[int, ...], flint.fmpq | flint.fmpz], inner: int | None) -> Groups:

@@ -54,3 +54,21 @@ def test_minimiser_leaving_the_range_is_said():
 def test_bad_range_is_exit_2():
     code, out, err = run("extremum", "arm-string", "--of", "AB", "--range", "9:1")
     assert code == 2 and len(err.strip().splitlines()) == 1 and out == ""
+
+
+def test_an_angles_extremes_do_not_follow_the_callers_mpmath_precision():
+    # mpmath's precision is process-wide: a caller (or an earlier test) at 50 digits once made
+    # the transmission angle's minimum of this four-bar differ in its last bits from a fresh process's.
+    import mpmath
+
+    from algkin.analyses.extremum import extremum
+    from algkin.scene import load_scene
+    from algkin.scene.settings import with_values
+
+    scene = with_values(load_scene("fourbar"), {"a": 3, "l": 3, "d": 4})
+    found = {}
+    for dps in (15, 50):
+        with mpmath.workdps(dps):
+            result = extremum(scene, "angle(A, B, D)")
+        found[dps] = [float(p.value) for p in result.critical_points]
+    assert found[15] == found[50]

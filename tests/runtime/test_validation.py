@@ -85,3 +85,32 @@ def test_symbolic_outputs_read_back_through_parse_expr():
     for text, expr in expressions:
         plain = expr.xreplace({s: sympy.Symbol(s.name) for s in expr.free_symbols})  # parse_expr's symbols
         assert sympy.simplify(sympy.parse_expr(text) - plain) == 0, text
+
+
+@pytest.mark.parametrize("argument", ["outputs", "params"])
+def test_a_name_given_twice_is_refused_before_any_work(argument):
+    """sympy refused the repeated generator only after the work before it (37 s for 10,000 copies)."""
+    names = ["B"] * 10_000 if argument == "outputs" else ["a"] * 10_000
+    with pytest.raises(UsageError, match=rf"{argument}='{names[0]}': given twice"):
+        algkin.derive("fourbar", **{argument: names}, samples=0)
+
+
+def test_a_huge_integer_set_is_refused_in_one_line_by_its_size():
+    """2**100000 has more digits than Python writes (a bare ValueError before)."""
+    with pytest.raises(UsageError, match=r"^set='a=<an integer of 100001 bits>': number too large") as caught:
+        algkin.derive("fourbar", outputs=["B"], set={"a": sympy.Integer(2) ** 100000})
+    assert len(str(caught.value)) < 200
+
+
+@pytest.mark.parametrize("value", [2**100000, sympy.Rational(1, 3**70000)], ids=["integer", "fraction"])
+def test_a_huge_value_for_an_unknown_name_is_shown_by_its_size(value):
+    with pytest.raises(UsageError, match=r"^set='zz=<an? \w+ of \d+ bits>': not a parameter"):
+        algkin.derive("fourbar", outputs=["B"], set={"zz": value}, samples=0)
+
+
+def test_a_bound_size_value_set_exactly_still_does():
+    """Within the scene language's bounds (numbers of 1024 bits, 500 characters), a value of
+    numerator and denominator of 600 bits each is still exact."""
+    big = 2**600 + 1
+    result = algkin.derive("fourbar", outputs=["B"], set={"d": sympy.Rational(4 * big + 1, big)}, samples=0)
+    assert result.compiled.parameter_values["d"] == sympy.Rational(4 * big + 1, big)

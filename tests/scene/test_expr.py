@@ -447,3 +447,21 @@ def test_huge_numbers_are_refused_before_they_are_made():
     _, peak = tracemalloc.get_traced_memory()
     tracemalloc.stop()
     assert peak < 2**20, peak  # a megabyte: what a parse takes, and no huge number
+
+
+@pytest.mark.parametrize("text", ["\u0661", "\uff11/2", "1\u00a0", "\u00a01", "2*\u0663", "1.5\u2003", "a + \uff12"])
+def test_numbers_are_ascii(text):
+    """Python's int() and Fraction() read other scripts' digits and strip a no-break space; the
+    tiny language is ASCII, so these are refused, not read as numbers."""
+    with pytest.raises(ValueError, match="ASCII"):
+        parse(text, {"a": 1})
+
+
+@pytest.mark.parametrize("text", ["\u0661.5", "1.5\u00a0", "\uff11e3"])
+def test_float_literals_are_ascii(text):
+    with pytest.raises(ValueError, match="ASCII"):
+        exact_number(text)
+
+
+def test_ascii_spaces_around_a_number_still_do():
+    assert parse(" 3/2\t ") == sympy.Rational(3, 2)

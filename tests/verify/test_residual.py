@@ -2,6 +2,7 @@
 
 import flint
 import numpy as np
+import pytest
 import sympy
 from hypothesis import given, settings, strategies as st
 
@@ -20,8 +21,9 @@ def test_balls_hold_the_exact_value(p, q, dimension):
     with flint.ctx.workprec(200):
         ball = polynomial.balls({"x": flint.arb(flint.fmpq(p.numerator, p.denominator)),
                                  "y": flint.arb(flint.fmpq(q.numerator, q.denominator))})
-        assert ball.contains(flint.arb(flint.fmpq(int(exact.p), int(exact.q))))
-        assert ball.rad() <= 1e-50 * (1 + abs(float(exact)))
+        scaled = flint.fmpq(int(exact.p), int(exact.q)) / polynomial.scale  # balls are of p / scale
+        assert ball.contains(flint.arb(scaled))
+        assert ball.rad() <= 1e-50 * (1 + abs(float(scaled)))
 
 
 def test_the_magnitude_is_the_sum_of_the_terms_absolute_values():
@@ -29,4 +31,22 @@ def test_the_magnitude_is_the_sum_of_the_terms_absolute_values():
     points = {"x": np.array([1.0, -2.0]), "y": np.array([0.5, 1.0])}
     terms = sympy.expand(CURVE.subs(a, 2)).as_ordered_terms()
     expected = [sum(abs(float(t.subs({x: p, y: q}))) for t in terms) for p, q in zip(points["x"], points["y"])]
-    assert np.allclose(polynomial.magnitude(points), expected)
+    assert np.allclose(polynomial.magnitude(points) * float(polynomial.scale), expected)
+
+
+def test_the_scale_is_a_power_of_two_within_a_factor_two_of_the_largest_coefficient():
+    polynomial = Polynomial(CURVE, ["x", "y"], {"a": 2})  # coefficients 1, 3, 3, 1, -8, 7/3, -4: the largest 8
+    assert polynomial.scale in (4, 8, 16)
+
+
+def test_coefficients_past_a_float_give_finite_residuals():
+    """The curve times 10**400 (what a dimension of 90-digit numerator and denominator makes of a
+    primitive curve): its floats overflowed; scaled, its residual |p| / sum |terms| is the curve's."""
+    big = Polynomial(sympy.Integer(10) ** 400 * CURVE, ["x", "y"], {"a": 2})
+    points = {"x": np.array([0.5]), "y": np.array([1.25])}
+    with flint.ctx.workprec(200):
+        value = big.balls({"x": flint.arb(0.5), "y": flint.arb(1.25)})
+    ratio = float(abs(value).mid()) / float(big.magnitude(points)[0])
+    at = {x: sympy.Rational(1, 2), y: sympy.Rational(5, 4), a: 2}
+    terms = sympy.expand(CURVE.subs(a, 2)).as_ordered_terms()
+    assert ratio == pytest.approx(abs(float(CURVE.subs(at))) / sum(abs(float(t.subs(at))) for t in terms), rel=1e-12)

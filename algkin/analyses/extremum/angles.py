@@ -36,7 +36,7 @@ from ...errors import ComputationError, UsageError
 from ...evaluate import NUMPY, evaluate
 from ...system import input_values, symbol
 from ...system.angles import Parametrisation
-from .critical import Problem
+from .critical import DIGITS, Problem
 
 if TYPE_CHECKING:
     from ...derivation.pipeline import Derivation
@@ -65,13 +65,15 @@ class AngleScale:
         return self.quarter_turns is None
 
     def degrees(self, value: mpmath.mpf) -> mpmath.mpf:
-        """The angle in degrees at a value of ``via`` (nan stays nan)."""
-        value = mpmath.mpf(value)
-        if value != value:
-            return value
-        if self.quarter_turns is None:
-            return mpmath.degrees(mpmath.acos(min(max(value, -1), 1)))  # rounding may step past +-1
-        return 90 * self.quarter_turns + 2 * mpmath.degrees(mpmath.atan(value))
+        """The angle in degrees at a value of ``via`` (nan stays nan), at the critical points' own
+        precision whatever the caller's (mpmath's is process-wide)."""
+        with mpmath.workdps(DIGITS):
+            value = mpmath.mpf(value)
+            if value != value:
+                return value
+            if self.quarter_turns is None:
+                return mpmath.degrees(mpmath.acos(min(max(value, -1), 1)))  # rounding may step past +-1
+            return 90 * self.quarter_turns + 2 * mpmath.degrees(mpmath.atan(value))
 
     def expr(self, value: sympy.Expr) -> sympy.Expr:
         """The angle in degrees as an expression in ``via``'s expression ``value``."""

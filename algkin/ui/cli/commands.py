@@ -6,6 +6,7 @@ import math
 import pathlib
 
 from ...errors import UsageError
+from ...runtime.validation import real
 from .sweep import COMMANDS as SWEEP_COMMANDS
 from .reports import (_extremum_forms, _latex_lines, _render, _report_accuracy, _report_curve, _report_derive,
                       _report_extremum, _report_show, _report_singular, _report_toggles, _verification_line,
@@ -71,7 +72,7 @@ def _method(args):
 
 def _range(text):
     try:
-        lo, hi = (float(v) for v in text.split(":"))
+        lo, hi = (real(v) for v in text.split(":"))
     except ValueError:
         raise UsageError("--range", text, "expected lo:hi, e.g. 0:180") from None
     if not all(math.isfinite(v) for v in (lo, hi)):
@@ -212,6 +213,8 @@ def _cmd_show(args):
         "outputs": {n: list(v) for n, v in compiled.outputs.items()},
         "inputs": inputs_json(compiled.system.inputs),
         "system": compiled.system.to_json(),
+        # point -> why it never assembles: dyads on two fixed bases, decided exactly
+        "never_assembles": dict(compiled.never_assembles),
     }
     return _render(args, document, _report_show), 0
 

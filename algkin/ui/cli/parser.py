@@ -4,6 +4,7 @@ import argparse
 import sys
 
 from ...errors import UsageError
+from ...runtime.validation import real, whole
 
 __all__ = ["build_parser", "usage", "Shown"]
 
@@ -18,7 +19,13 @@ class Shown(Exception):  # noqa: N818 - not an error: the answer to --help or --
 
 
 class _Parser(argparse.ArgumentParser):
-    """argparse with a one-line error and exit code 2; help and version raised as ``Shown``."""
+    """argparse with a one-line error and exit code 2; help and version raised as ``Shown``;
+    ``type=int`` and ``type=float`` read ASCII numbers only (Python's own also read other scripts' digits)."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.register("type", int, _whole)
+        self.register("type", float, _real)
 
     def error(self, message):
         raise UsageError("arguments", " ".join(sys.argv[1:]), message)
@@ -27,6 +34,33 @@ class _Parser(argparse.ArgumentParser):
         if file is sys.stdout:  # help and version (None too: a closed stdout, said as such)
             raise Shown(message)
         super()._print_message(message, file)
+
+
+def _whole(text):
+    try:
+        return whole(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number (ASCII digits 0-9), got {text!r}") from None
+
+
+def _real(text):
+    try:
+        return real(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number (ASCII digits 0-9), got {text!r}") from None
+
+
+class _Once(argparse.Action):
+    """Names gathered from one option, repeated (``--param a --param b``) or listed (``--outputs A B``):
+    a name given twice is refused when it is met, before any work (sympy would fail on it later)."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        given = list(getattr(namespace, self.dest, None) or []) if self.nargs is None else []
+        for value in values if isinstance(values, list) else [values]:
+            if value in given:
+                raise UsageError(option_string, value, "given twice")
+            given.append(value)
+        setattr(namespace, self.dest, given)
 
 
 class _Help(argparse.ArgumentDefaultsHelpFormatter):
@@ -48,7 +82,7 @@ def _scene(parser):
     """The scene argument, and ``--set``: every command that takes a scene takes both."""
     parser.add_argument("scene", help="catalog name (see `algkin list`) or path of a scene file (.toml)")
     parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
-                        help="an exact value for a dimension (3/2, 0.1 = 1/10, sqrt(2)); repeatable")
+                        help="an exact value for a dimension (3/2, 0.1 = 1/10, sqrt(9/4)); repeatable")
 
 
 def _quiet(parser, default=False):
@@ -67,7 +101,7 @@ def _common(parser, method=True):
         parser.add_argument("--method", default=None,
                             help="elimination method: linear (the default), resultant, groebner")
         parser.add_argument("--backend", default="flint", help="polynomial backend: flint, sympy")
-        parser.add_argument("--param", action="append", default=[], metavar="NAME",
+        parser.add_argument("--param", action=_Once, default=[], metavar="NAME",
                             help="keep this dimension symbolic (repeatable); the others take their defaults")
         parser.add_argument("--samples", type=int, default=40,
                             help="numeric samples the closed forms are checked on (0 skips the check)")
@@ -99,7 +133,7 @@ def _seconds(text):
     from ...runtime.budget import MAX_SECONDS  # here: the parser stays light (no multiprocessing)
 
     try:
-        value = float(text)
+        value = real(text)
     except ValueError:
         value = None
     if value is None or not 0 < value <= MAX_SECONDS:  # nan and inf too
@@ -109,7 +143,7 @@ def _seconds(text):
 
 
 def _terms(text):
-    if not text.strip().isdigit() or int(text) < 1:
+    if not (text.isascii() and text.strip().isdigit()) or int(text) < 1:
         raise argparse.ArgumentTypeError(f"expected a positive whole number of terms, got {text!r}")
     return int(text)
 
@@ -128,14 +162,14 @@ def build_parser():
     _json(listing, "each scene's name and description")
     show = _command(commands, "show", "the scene and the system it compiles to")
     _common(show, method=False)
-    show.add_argument("--outputs", nargs="+", metavar="OUTPUT",
+    show.add_argument("--outputs", nargs="+", action=_Once, metavar="OUTPUT",
                       help="outputs (names, points, dist(P, Q), P.x, angle(P, Q), angle(P, Q, R)); default: the scene's")
-    show.add_argument("--param", action="append", default=[], metavar="NAME",
+    show.add_argument("--param", action=_Once, default=[], metavar="NAME",
                       help="keep this dimension symbolic (repeatable)")
     _budget_options(show, terms=False)
     derive = _command(commands, "derive", "eliminants, closed-form branches, verification")
     _common(derive)
-    derive.add_argument("--outputs", nargs="+", metavar="OUTPUT",
+    derive.add_argument("--outputs", nargs="+", action=_Once, metavar="OUTPUT",
                         help="outputs (names, points, dist(P, Q), P.x, angle(P, Q), angle(P, Q, R)); default: the scene's")
     derive.add_argument("--rates", action="store_true",
                         help="also each output coordinate's velocity and acceleration per branch (derivatives "
@@ -148,13 +182,13 @@ def build_parser():
     _full_forms(curve)
     verify = _command(commands, "verify", "closed forms against independent numeric solutions")
     _common(verify)
-    verify.add_argument("--outputs", nargs="+", metavar="OUTPUT",
+    verify.add_argument("--outputs", nargs="+", action=_Once, metavar="OUTPUT",
                         help="outputs (names, points, dist(P, Q), P.x, angle(P, Q), angle(P, Q, R)); default: the scene's")
     extremum = _command(commands, "extremum", "stationary points of an output over the input")
     _scene(extremum)
     extremum.add_argument("--of", required=True, help="a scalar output: distance, coordinate or angle (in degrees)")
     extremum.add_argument("--range", metavar="LO:HI", help="lo:hi in the input's unit; default: its declared range")
-    extremum.add_argument("--param", action="append", default=[], metavar="NAME",
+    extremum.add_argument("--param", action=_Once, default=[], metavar="NAME",
                           help="keep this dimension symbolic: the minimum as a closed form in it")
     _json(extremum)
     _latex(extremum)
@@ -193,7 +227,7 @@ def build_parser():
                       help="the input angle drawn, in degrees: VALUE, or NAME=VALUE for each input")
     plot.add_argument("--branch", help="the assembly mode drawn (default: the scene's)")
     plot.add_argument("--modes", action="store_true", help="every assembly mode side by side")
-    plot.add_argument("--param", action="append",
+    plot.add_argument("--param", action=_Once,
                       help="a dimension with a slider in the .html page (default: every dimension)")
     plot.add_argument("--range-of", action="append", default=[], metavar="NAME=LO:HI",
                       help="the range of dimension NAME's slider in the .html page (repeatable), e.g. a=0.5:2")
@@ -204,11 +238,11 @@ def build_parser():
     export = _command(commands, "export", "every branch's stabilised formulas as a self-contained function "
                                           "(C, numpy, JavaScript) or its closed forms (LaTeX)")
     _scene(export)
-    export.add_argument("--outputs", nargs="+", metavar="OUTPUT",
+    export.add_argument("--outputs", nargs="+", action=_Once, metavar="OUTPUT",
                         help="outputs (names, points, dist(P, Q), P.x, angle(P, Q), angle(P, Q, R)); default: the scene's")
     export.add_argument("--to", required=True, choices=("c", "numpy", "js", "latex"), help="the language written")
     export.add_argument("--out", metavar="FILE", help="write to FILE instead of stdout")
-    export.add_argument("--param", action="append", default=[], metavar="NAME",
+    export.add_argument("--param", action=_Once, default=[], metavar="NAME",
                         help="with --to latex: keep this dimension symbolic (repeatable)")
     _json(export, "the scene, the language, and the code (or the file it was written to)")
     _budget_options(export, terms=False)

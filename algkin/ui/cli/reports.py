@@ -169,6 +169,7 @@ def _report_show(d):
              "inputs: " + ", ".join(f"{n} as ({v['cos']}, {v['sin']})" for n, v in d["inputs"].items()),
              "equations (= 0):"]
     lines += [f"  {eq}" for eq in d["system"]["equations"]]
+    lines += [f"never assembles: {point}: {why}" for point, why in d.get("never_assembles", {}).items()]
     return "\n".join(lines)
 
 

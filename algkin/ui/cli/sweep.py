@@ -37,7 +37,7 @@ def add_commands(commands, command, json_option):
 
 
 def _positive(text):
-    if not text.strip().isdigit() or int(text) < 1:
+    if not (text.isascii() and text.strip().isdigit()) or int(text) < 1:
         raise argparse.ArgumentTypeError(f"expected a whole number from 1, got {text!r}")
     return int(text)
 
