@@ -116,13 +116,17 @@ def _where(compiled: Compiled, branches: Sequence[Branch]) -> dict[str, list[tup
 
 def _real(compiled: Compiled, branches: Sequence[Branch], variables: tuple[str, ...],
           grid: np.ndarray, angle: bool) -> np.ndarray:
-    """Per branch, per input of the grid, whether every discriminant is positive in floats."""
+    """Per branch, per input of the grid, whether every discriminant is positive in floats; all True
+    (nothing narrowed, nothing refused) where a dimension's rationals leave a float's range."""
     defaults = {symbol(n): v for n, v in compiled.parameter_values.items()}
     floats = input_values(variables, np.radians(grid) if angle else grid)
     rows = []
     for branch in branches:
         program = compile_program([d.xreplace(defaults) for d in branch.discriminants.values()], list(variables), NUMPY)
-        rows.append(real_floats(program, floats, list(variables)))
+        try:
+            rows.append(real_floats(program, floats, list(variables)))
+        except OverflowError:
+            return np.ones((len(branches), len(grid)), dtype=bool)
     return np.array(rows)
 
 
