@@ -1,7 +1,9 @@
 """One exception root for algkin; each subclass also derives from the builtin that fits.
 
 Messages name the argument (or file and element) and the offending value, on one line,
-so the command line can print them as they are.
+so the command line can print them as they are. A ``UsageError`` names the Python parameter
+(``point=``); the command line prints it with the flag its user typed (``--point=``, from the
+table in ``algkin.ui.cli.flags``).
 
 >>> err = SceneError("lambda.toml", "points.B.lengths", "length must be positive, got -1")
 >>> str(err)
