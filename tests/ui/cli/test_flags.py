@@ -56,11 +56,12 @@ def _command_line_names():
     return found
 
 
-def test_the_python_api_names_the_parameter_and_the_command_line_the_flag(capsys):
+@pytest.mark.parametrize("budget", [[], ["--max-seconds", "600"]], ids=["here", "in-a-child-process"])
+def test_the_python_api_names_the_parameter_and_the_command_line_the_flag(capsys, budget):
     with pytest.raises(UsageError) as caught:
         algkin.curve("chebyshev-lambda", "Q")
     assert str(caught.value).startswith("point='Q': not a point of chebyshev-lambda")
-    assert main(["curve", "chebyshev-lambda", "--point", "Q"]) == 2
+    assert main(["curve", "chebyshev-lambda", "--point", "Q", *budget]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "--point='Q': not a point of chebyshev-lambda" in err
 
