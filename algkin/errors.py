@@ -1,7 +1,9 @@
 """One exception root for algkin; each subclass also derives from the builtin that fits.
 
 Messages name the argument (or file and element) and the offending value, on one line,
-so the command line can print them as they are.
+so the command line can print them as they are. A ``UsageError`` names the Python parameter
+(``point=``); the command line prints it with the flag its user typed (``--point=``, from the
+table in ``algkin.ui.cli.flags``).
 
 >>> err = SceneError("lambda.toml", "points.B.lengths", "length must be positive, got -1")
 >>> str(err)
@@ -9,8 +11,8 @@ so the command line can print them as they are.
 >>> isinstance(err, ValueError) and isinstance(err, AlgkinError)
 True
 >>> import pickle
->>> str(pickle.loads(pickle.dumps(UsageError("--point", "P", "not a point"))))
-"--point='P': not a point"
+>>> str(pickle.loads(pickle.dumps(UsageError("point", "P", "not a point"))))
+"point='P': not a point"
 >>> err = pickle.loads(pickle.dumps(OutputError("/dev/full", "No space left on device")))
 >>> str(err), isinstance(err, OSError)
 ("cannot write '/dev/full': No space left on device", True)

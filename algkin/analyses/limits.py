@@ -526,7 +526,7 @@ def _stroke(path: Path, first: Limit, second: Limit) -> Json:
     return {"kind": "travel", "length": travel, "exact": exact}
 
 
-def limits(scene: Scene | str, set: Mapping[str, object] | None = None) -> Limits:  # noqa: A002 - SPEC's --set
+def limits(scene: Scene | str, set: Mapping[str, object] | None = None) -> Limits:  # noqa: A002 - the public name (the command line's --set)
     """Every limit position of every dyad and slider with a fixed path, certified, and the time
     ratio of the last of them (the output) on the scene's branch."""
     scene = with_values(scene if not isinstance(scene, str) else load_scene(scene), dict(set) if set else None)

@@ -58,7 +58,7 @@ def symbolic_parameters(scene, wanted=None):
         try:
             return tuple(kept), compile_scene(scene, list(scene.points), kept)
         except UsageError as err:
-            if wanted is not None or err.argument != "--param" or err.value not in kept:
+            if wanted is not None or err.argument != "params" or err.value not in kept:
                 raise
             kept.remove(err.value)
 
@@ -99,7 +99,7 @@ class Motion:
             if branch.label == label:
                 return k
         known = ", ".join(b.label for b in self.branches)
-        raise UsageError("--branch", label, f"not a branch of {self.scene.name} (branches: {known})")
+        raise UsageError("branch", label, f"not a branch of {self.scene.name} (branches: {known})")
 
     @property
     def bars(self):
@@ -166,14 +166,14 @@ class Motion:
         inputs = dict(inputs or {})
         for name in inputs:
             if name not in self.inputs:
-                raise UsageError("--input", name, f"not an input of {self.scene.name} "
+                raise UsageError("inputs", name, f"not an input of {self.scene.name} "
                                                   f"(inputs: {', '.join(self.inputs)})")
         for name, spec in self.inputs.items():
             inputs.setdefault(name, spec.span[0])
         parameters = dict(parameters or {})
         for name in parameters:
             if name not in self.params:
-                raise UsageError("--param", name, f"not a symbolic dimension of {self.scene.name} "
+                raise UsageError("parameters", name, f"not a symbolic dimension of {self.scene.name} "
                                                   f"(symbolic: {', '.join(self.params) or 'none'})")
         return inputs, {p: parameters.get(p, self.defaults[p]) for p in self.params}
 

@@ -35,7 +35,7 @@ __all__ = ["load", "Mechanism", "Quantity"]
 
 
 def load(scene: SceneLike, params: Sequence[str] = (),
-         set: Values | None = None) -> Mechanism:  # noqa: A002 - ``set=`` is the public name (SPEC §3's --set)
+         set: Values | None = None) -> Mechanism:  # noqa: A002 - ``set=`` is the public name (the command line's --set)
     """A mechanism from a catalog name, a path or a ``Scene``; ``params`` stay symbolic, and
     ``set`` gives others exact values in place of their defaults (``set={"b": "3/2"}``)."""
     params = validation.names("params", params)
@@ -112,7 +112,7 @@ class Quantity:
     # Two spellings of the same forms: ``expr``/``relation`` in the input angle itself
     # (``cos(theta)``, as the seed documents write them, to differentiate or plot), and
     # ``expr_cs``/``relation_cs`` in the polynomial system's symbols ``c_theta, s_theta``
-    # (SPEC §2: what ``derive`` and every JSON document use, with ``c**2 + s**2 = 1`` implied).
+    # (what ``derive`` and every JSON document use, with ``c**2 + s**2 = 1`` implied: docs/scene-format.md).
 
     @property
     def expr(self):

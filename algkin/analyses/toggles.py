@@ -114,7 +114,7 @@ def single_input(compiled, what="toggles"):
     return name, Parametrisation(tuple(symbol(v) for v in variables), t)
 
 
-def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name, SPEC §3's --set
+def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name (the command line's --set)
     """Every toggle of every dyad and slider of ``scene`` over its input range, certified.
 
     With ``artefacts`` the eliminants are also derived, to report which factors of their

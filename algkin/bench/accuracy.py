@@ -324,7 +324,7 @@ def _translated(scene, offset):
     return attrs.evolve(scene, points=points)
 
 
-def accuracy(scene, samples=2000, seed=0, set=None, of=None):  # noqa: A002 - the public name, SPEC §3's --set
+def accuracy(scene, samples=2000, seed=0, set=None, of=None):  # noqa: A002 - the public name (the command line's --set)
     """Rows of speed and error per strategy and case for the output ``of`` (a point, ``dist(A, B)``,
     ``B.x`` or an output's name; default: the first dyad point, else the first output);
     ``set`` gives dimensions exact values in place of their defaults."""
@@ -334,7 +334,7 @@ def accuracy(scene, samples=2000, seed=0, set=None, of=None):  # noqa: A002 - th
     if of is None:
         of = next((n for n, p in scene.points.items() if isinstance(p, Dyad)), None) or next(iter(scene.outputs), None)
     if of is None:
-        raise UsageError("scene", scene.name, "has no dyad and no output to evaluate; name one with --of")
+        raise UsageError("scene", scene.name, "has no dyad and no output to evaluate; name one (of)")
     lengths = [n for n, i in scene.inputs.items() if not i.is_angle]
     if lengths:  # the stabilised forms and the hard cases near toggles are laid out on a turning input
         raise UsageError("scene", scene.name, f"accuracy is measured over an input angle; {lengths[0]} is a length")

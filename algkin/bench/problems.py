@@ -101,6 +101,6 @@ def problem_names():
 def build(name):
     """The ``Problem`` called ``name``; a UsageError naming the valid ones otherwise."""
     if name not in PROBLEMS:
-        raise UsageError("--problems", name, f"unknown problem; valid: {', '.join(PROBLEMS)}")
+        raise UsageError("problems", name, f"unknown problem; valid: {', '.join(PROBLEMS)}")
     description, task, run = PROBLEMS[name]
     return Problem(name, description, task(), run())

@@ -315,7 +315,7 @@ def _timed(timings: dict[str, float], stage: str) -> Iterator[None]:
 def derive(scene: SceneLike, outputs: Sequence[str] | None = None, method: str = DEFAULT_METHOD,
            backend: str = "flint", params: Sequence[str] = (), samples: int = 40, seed: int = 0,
            certify: bool = True, budget: Budget | None = None,
-           set: Values | None = None) -> Derivation:  # noqa: A002 - ``set=`` is the public name (SPEC §3's --set)
+           set: Values | None = None) -> Derivation:  # noqa: A002 - ``set=`` is the public name (the command line's --set)
     """Eliminants, closed-form branches and their verification for ``outputs`` of ``scene``.
 
     ``certify`` also certifies each branch's label per input interval (the slowest stage);
@@ -396,7 +396,7 @@ def _refuse_still(prepared, branches, point):
     places = prepared.places[point]
     if all(p is not None for p in places):
         x, y = places[next(k for k, b in enumerate(branches) if b.selected)]
-        raise UsageError("--point", point, f"is fixed at ({x}, {y}): its trajectory is a point, not a curve")
+        raise UsageError("point", point, f"is fixed at ({x}, {y}): its trajectory is a point, not a curve")
 
 
 def family_method(task, method):
@@ -431,13 +431,13 @@ def curve(scene: SceneLike, point: str, method: str = DEFAULT_METHOD, backend: s
 def _curve(scene, values, point, params, start, method, backend, samples, seed, budget):
     scene = _load(scene, values, params, budget)
     if not isinstance(point, str) or point not in scene.points:
-        raise UsageError("--point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
+        raise UsageError("point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
     budget.note(f"compiling {scene.name}")
     timings = {}
     prepared = _prepared(scene, [point], params, timings)
     compiled = prepared.compiled
     if len(compiled.system.inputs) > 1:
-        raise UsageError("--point", point, f"moves with {len(compiled.system.inputs)} inputs "
+        raise UsageError("point", point, f"moves with {len(compiled.system.inputs)} inputs "
                          f"({', '.join(compiled.system.inputs)}) in {scene.name}: its trajectory is a region, "
                          "not a curve")
     budget.note(f"finding the branches of {compiled.scene.name}")

@@ -205,12 +205,12 @@ def time_budget(seconds, argument):
     """``seconds`` if it is a time budget that can be kept: a positive number, at most ``MAX_SECONDS``;
     else UsageError naming ``argument``.
 
-    >>> time_budget(2.5, "--budget")
+    >>> time_budget(2.5, "budget")
     2.5
-    >>> time_budget(float("nan"), "--budget")
+    >>> time_budget(float("nan"), "budget")
     Traceback (most recent call last):
     ...
-    algkin.errors.UsageError: --budget=nan: must be a positive number of seconds, at most a week (604800)
+    algkin.errors.UsageError: budget=nan: must be a positive number of seconds, at most a week (604800)
     """
     if not 0 < seconds <= MAX_SECONDS:  # nan and inf too
         raise UsageError(argument, seconds, f"must be a positive number of seconds, at most a week ({MAX_SECONDS})")

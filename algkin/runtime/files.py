@@ -20,10 +20,10 @@ Traceback (most recent call last):
 ValueError: interrupted
 >>> target.read_text(), [p.name for p in folder.iterdir()]
 ('good', ['page.html'])
->>> check_output("--out", folder)
+>>> check_output("out", folder)
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: --out='...': is a directory
+algkin.errors.UsageError: out='...': is a directory
 >>> scratch.cleanup()
 """
 
@@ -111,18 +111,18 @@ def check_output(option, path):
     """Raise ``UsageError`` naming ``option`` unless a file can be written at ``path``: a file's
     name (not empty, not a directory's), in a directory where a file can be made now.
 
-    >>> check_output("--plot", "")
+    >>> check_output("plot", "")
     Traceback (most recent call last):
     ...
-    algkin.errors.UsageError: --plot='': is empty; give a file name
-    >>> check_output("--out", "new.json/")
+    algkin.errors.UsageError: plot='': is empty; give a file name
+    >>> check_output("out", "new.json/")
     Traceback (most recent call last):
     ...
-    algkin.errors.UsageError: --out='new.json/': names a directory (it ends with /); give a file name
-    >>> check_output("--out", "x" * 300 + ".json")  # doctest: +ELLIPSIS
+    algkin.errors.UsageError: out='new.json/': names a directory (it ends with /); give a file name
+    >>> check_output("out", "x" * 300 + ".json")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    algkin.errors.UsageError: --out='xxx...x.json': cannot be written: File name too long
+    algkin.errors.UsageError: out='xxx...x.json': cannot be written: File name too long
     """
     text = str(path)
     if not text:

@@ -91,31 +91,34 @@ def _resolve_outputs(scene: Scene, requested: Sequence[str] | None) -> list[Outp
     outputs: list[Output] = []
     taken: dict[str, str] = {}  # unknowns of distance and angle outputs -> the output's name
     for text in requested or list(scene.outputs):
-        if text in scene.outputs:
-            output = scene.outputs[text]
-        else:
-            output = parse_output(text, text, scene.points, scene.source, "--outputs")
-            if output.kind == "dist":
-                output = attrs.evolve(output, name=f"dist_{output.points[0]}_{output.points[1]}")
-                if output.name in scene.parameters:
-                    raise UsageError("--outputs", text, f"its unknown {output.name!r} is the name of a parameter")
-                check_symbol_name(scene.source, "--outputs", output.name, generated)
-            elif output.kind == "angle":
-                output = attrs.evolve(output, name="_".join(("angle",) + output.points))
-        if any(o.name == output.name and (o.kind, o.points) == (output.kind, output.points) for o in outputs):
-            continue  # asked for twice
-        unknowns = {"dist": (output.name,), "angle": angle_unknowns(output.name, output)}.get(output.kind, ())
         try:
-            check_output_unknowns(scene.source, "--outputs", unknowns, generated, scene.parameters, taken,
-                                  output.name)
+            output = scene.outputs[text] if text in scene.outputs else _requested_output(scene, text, generated)
+            if any(o.name == output.name and (o.kind, o.points) == (output.kind, output.points) for o in outputs):
+                continue  # asked for twice
+            unknowns = {"dist": (output.name,), "angle": angle_unknowns(output.name, output)}.get(output.kind, ())
+            check_output_unknowns(scene.source, "outputs", unknowns, generated, scene.parameters, taken, output.name)
         except SceneError as err:
-            if text in scene.outputs:
+            if text in scene.outputs:  # the scene file's own output: the file is at fault
                 raise
-            raise UsageError("--outputs", text, str(err).split(": --outputs: ", 1)[-1]) from None
+            raise UsageError("outputs", text, err.message) from None
         outputs.append(output)
     if not outputs:
-        raise SceneError(scene.source, "outputs", "the scene has no outputs; name some with --outputs")
+        raise SceneError(scene.source, "outputs", "the scene has no outputs; ask for some by name")
     return outputs
+
+
+def _requested_output(scene: Scene, text: str, generated: Mapping[str, str]) -> Output:
+    """An output the caller asked for that the scene does not declare (``dist(P, Q)``, ``P.x``,
+    ``angle(P, Q)``...), named after its points; SceneError if it cannot be one."""
+    output = parse_output(text, text, scene.points, scene.source, "outputs")
+    if output.kind == "dist":
+        output = attrs.evolve(output, name=f"dist_{output.points[0]}_{output.points[1]}")
+        if output.name in scene.parameters:
+            raise UsageError("outputs", text, f"its unknown {output.name!r} is the name of a parameter")
+        check_symbol_name(scene.source, "outputs", output.name, generated)
+    elif output.kind == "angle":
+        output = attrs.evolve(output, name="_".join(("angle",) + output.points))
+    return output
 
 
 def _needed_points(scene: Scene, outputs: Sequence[Output]) -> list[str]:
@@ -150,7 +153,7 @@ def _parameter_values(scene: Scene, symbolic: Sequence[str]) \
     for name in symbolic:
         if name not in scene.parameters:
             known = ", ".join(scene.parameters) or "none"
-            raise UsageError("--param", name, f"not a parameter of {scene.name} (parameters: {known})")
+            raise UsageError("params", name, f"not a parameter of {scene.name} (parameters: {known})")
     symbols = scene.parameter_symbols()
     defaults: dict[str, sympy.Expr] = {}
     substitution: dict[sympy.Symbol, sympy.Expr] = {}
@@ -330,7 +333,7 @@ def _check_polynomial(scene: Scene, equations: Sequence[sympy.Expr], symbolic: S
     for eq in equations:
         if not eq.is_polynomial(*eq.free_symbols):
             culprits = [p for p in symbolic if not eq.is_polynomial(symbol(p))] or [""]
-            raise UsageError("--param", culprits[0],
+            raise UsageError("params", culprits[0],
                              f"{scene.source} is not polynomial in it (keep it exact): {eq} = 0")
 
 

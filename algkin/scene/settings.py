@@ -7,15 +7,15 @@
 >>> with_values(scene, {"zz": 1})
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: --set='zz=1': not a parameter of arm-string (parameters: a, b, r, g)
+algkin.errors.UsageError: set='zz=1': not a parameter of arm-string (parameters: a, b, r, g)
 >>> parse_settings(["a=1", "b=2", "a=1"])
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: --set='a=1': a is set twice
+algkin.errors.UsageError: set='a=1': a is set twice
 >>> with_values(scene, {"b": 2**2000})
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: --set='b=<an integer of 2001 bits>': number too large or too precise (more than 1024 bits)
+algkin.errors.UsageError: set='b=<an integer of 2001 bits>': number too large or too precise (more than 1024 bits)
 """
 
 from collections.abc import Iterable, Mapping
@@ -41,9 +41,9 @@ def parse_settings(texts: Iterable[str] | None) -> dict[str, str]:
         name, equals, value = text.partition("=")
         name = name.strip(_SPACE)  # ASCII spaces: a no-break space is no part of the language
         if not equals or not name or not value.strip(_SPACE):
-            raise UsageError("--set", _shown(text), "expected NAME=VALUE, e.g. --set a=3/2")
+            raise UsageError("set", _shown(text), "expected NAME=VALUE, e.g. a=3/2")
         if name in values:
-            raise UsageError("--set", _shown(text), f"{name} is set twice")
+            raise UsageError("set", _shown(text), f"{name} is set twice")
         values[name] = value
     return values
 
@@ -64,10 +64,10 @@ def with_values(scene: Scene, values: Mapping[str, object] | None, params: Itera
     defaults = dict(scene.parameters)
     for name, value in values.items():
         if name not in defaults:
-            raise UsageError("--set", _given(name, value), f"not a parameter of {scene.name} "
+            raise UsageError("set", _given(name, value), f"not a parameter of {scene.name} "
                              f"(parameters: {', '.join(defaults) or 'none'})")
         if name in (params or ()):
-            raise UsageError("--set", _given(name, value), f"{name} is kept symbolic by --param; give one or the other")
+            raise UsageError("set", _given(name, value), f"{name} is also kept symbolic; give a value or keep it symbolic, not both")
         defaults[name] = _exact(name, value)
     from .load import as_scene
 
@@ -85,7 +85,7 @@ def _exact(name: str, value: object) -> sympy.Expr:
     if isinstance(value, (int, Fraction, sympy.Rational)) and not isinstance(value, bool):
         numerator, denominator = int(value.numerator), int(value.denominator)
         if _bits(numerator, denominator) > MAX_NUMBER_BITS:
-            raise UsageError("--set", _given(name, value),
+            raise UsageError("set", _given(name, value),
                              f"number too large or too precise (more than {MAX_NUMBER_BITS} bits)")
         value = f"{numerator}/{denominator}"
     elif isinstance(value, float):
@@ -93,10 +93,10 @@ def _exact(name: str, value: object) -> sympy.Expr:
     try:
         exact = parse(value)
     except ValueError as err:
-        raise UsageError("--set", _given(name, value), str(err)) from None
+        raise UsageError("set", _given(name, value), str(err)) from None
     problem = irrational(exact)
     if problem:
-        raise UsageError("--set", _given(name, value), problem)
+        raise UsageError("set", _given(name, value), problem)
     return exact
 
 

@@ -94,15 +94,15 @@ def plan(scene: Any, grid: Iterable[str] = (), random: int | None = None, seed: 
                             "ranges": {n: [_text(lo), _text(hi)] for n, (lo, hi) in ranges.items()}}}
     for name in designs[0]:
         if name not in scene.parameters:
-            raise UsageError("--grid", name, f"not a parameter of {scene.name} "
+            raise UsageError("grid", name, f"not a parameter of {scene.name} "
                                              f"(parameters: {', '.join(scene.parameters) or 'none'})")
     point = point or list(scene.points)[-1]
     if point not in scene.points:
-        raise UsageError("--point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
+        raise UsageError("point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
     if budget is not None:
-        time_budget(budget, "--budget")
+        time_budget(budget, "budget")
     if not isinstance(chunk, int) or chunk < 1:
-        raise UsageError("--chunk", chunk, "must be a whole number of designs from 1")
+        raise UsageError("chunk", chunk, "must be a whole number of designs from 1")
     toml = dump_scene(scene)
     # the package's version from the facade, loaded before any of its subpackages (importing it
     # here would be an import of the facade's lazy names, the layers above, for the linter)
@@ -176,11 +176,11 @@ def _check_length(planned: Plan, count: int, parallel: int) -> None:
     if seconds <= DAY:
         return
     space = planned.manifest["designs"]
-    flag, value = ("--random", space["random"]["count"]) if "random" in space else \
-        ("--grid", " ".join(f"{n}={v[0]}:{v[-1]}:{len(v)}" for n, v in space["grid"].items()))
-    raise UsageError(flag, value, f"{count} designs would take at least {_duration(seconds)} "
+    argument, value = ("random", space["random"]["count"]) if "random" in space else \
+        ("grid", " ".join(f"{n}={v[0]}:{v[-1]}:{len(v)}" for n, v in space["grid"].items()))
+    raise UsageError(argument, value, f"{count} designs would take at least {_duration(seconds)} "
                                   f"({_duration(seconds * parallel / count)} each, {parallel} at once); "
-                                  "give --yes to start anyway")
+                                  "confirm with yes to start anyway")
 
 
 def _duration(seconds: float) -> str:
@@ -193,13 +193,13 @@ def _duration(seconds: float) -> str:
 
 def _check_executor(executor: str, workers: int | None, scheduler: str | None) -> None:
     if executor not in EXECUTORS:
-        raise UsageError("--executor", executor, f"unknown; valid: {', '.join(EXECUTORS)}")
+        raise UsageError("executor", executor, f"unknown; valid: {', '.join(EXECUTORS)}")
     if workers is not None and (executor != "dask" or scheduler is not None):
-        raise UsageError("--workers", workers, "sizes the LocalCluster: goes with --executor dask, not --scheduler")
+        raise UsageError("workers", workers, "sizes the LocalCluster: only for the dask executor without a scheduler")
     if scheduler is not None and executor != "dask":
-        raise UsageError("--scheduler", scheduler, "goes with --executor dask")
+        raise UsageError("scheduler", scheduler, "is for the dask executor only")
     if workers is not None and not 1 <= workers <= 256:
-        raise UsageError("--workers", workers, "expected a number of worker processes from 1 to 256")
+        raise UsageError("workers", workers, "expected a number of worker processes from 1 to 256")
     if executor == "dask":
         dask_modules()  # missing, it is a usage error before anything is written
 

@@ -19,7 +19,7 @@ kind (``singular_count``, all real ones, is what the atlas filters on) and the p
 >>> analyses_named(["grashof", "wobble"])
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: --analyses='wobble': unknown; valid: curve, grashof, toggles, limits, transmission, singular
+algkin.errors.UsageError: analyses='wobble': unknown; valid: curve, grashof, toggles, limits, transmission, singular
 """
 
 from __future__ import annotations
@@ -201,9 +201,9 @@ def analyses_named(names: Iterable[str]) -> list[Analysis]:
     names = [n.strip() for n in names]
     for name in names:
         if name not in ANALYSES:
-            raise UsageError("--analyses", name, f"unknown; valid: {', '.join(ANALYSES)}")
+            raise UsageError("analyses", name, f"unknown; valid: {', '.join(ANALYSES)}")
         if names.count(name) > 1:
-            raise UsageError("--analyses", name, "given twice")
+            raise UsageError("analyses", name, "given twice")
     if not names:
-        raise UsageError("--analyses", "", f"name at least one of {', '.join(ANALYSES)}")
+        raise UsageError("analyses", "", f"name at least one of {', '.join(ANALYSES)}")
     return [ANALYSES[n] for n in names]

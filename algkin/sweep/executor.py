@@ -49,8 +49,8 @@ def dask_modules() -> tuple[Any, Any]:
         import dask
         import distributed
     except ImportError:
-        raise UsageError("--executor", "dask", "needs the sweep extra: pip install 'algkin[sweep]' "
-                                               "(or --executor serial)") from None
+        raise UsageError("executor", "dask", "needs the sweep extra: pip install 'algkin[sweep]' "
+                                               "(or the serial executor)") from None
     return dask, distributed
 
 
@@ -78,7 +78,7 @@ def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, A
             try:
                 client = stack.enter_context(distributed.Client(scheduler, timeout=CONNECT_SECONDS))
             except (OSError, TimeoutError, ValueError) as err:
-                raise UsageError("--scheduler", scheduler, f"cannot connect: {' '.join(str(err).split())}") from None
+                raise UsageError("scheduler", scheduler, f"cannot connect: {' '.join(str(err).split())}") from None
         yield client, distributed.as_completed
 
 

@@ -14,11 +14,11 @@ and the same on every machine.
 >>> parse_grid(["a=1:1:3"])
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: --grid='a=1:1:3': LO = HI is one value, not 3: give COUNT 1
+algkin.errors.UsageError: grid='a=1:1:3': LO = HI is one value, not 3: give COUNT 1
 >>> parse_grid(["a=2:1:3"])
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: --grid='a=2:1:3': LO must not exceed HI
+algkin.errors.UsageError: grid='a=2:1:3': LO must not exceed HI
 >>> [str(d["a"]) for d in random_designs(parse_ranges(["a=0:1"]), 3, seed=7)]
 ['...', '...', '...']
 """
@@ -48,9 +48,9 @@ def _exact(text: str, spec: str) -> Fraction:
     try:
         value = rational(text)
     except (ValueError, ZeroDivisionError):
-        raise UsageError("--grid", spec, f"{text.strip()!r} is not a number (e.g. 1.5 or 3/2)") from None
+        raise UsageError("grid", spec, f"{text.strip()!r} is not a number (e.g. 1.5 or 3/2)") from None
     if abs(value) > 10**100 or (value and abs(value) < Fraction(1, 10**100)):
-        raise UsageError("--grid", spec, f"{text.strip()} is outside 1e-100 to 1e100")
+        raise UsageError("grid", spec, f"{text.strip()} is outside 1e-100 to 1e100")
     return value
 
 
@@ -58,26 +58,26 @@ def _split(spec: str, parts: int) -> tuple[str, list[str]]:
     name, equals, rest = spec.partition("=")
     fields = rest.split(":")
     if not equals or not name.strip().isidentifier() or len(fields) != parts:
-        shape = "NAME=LO:HI:COUNT, e.g. a=1:2:5" if parts == 3 else "NAME=LO:HI, e.g. a=1:2 (with --random)"
-        raise UsageError("--grid", spec, f"expected {shape}")
+        shape = "NAME=LO:HI:COUNT, e.g. a=1:2:5" if parts == 3 else "NAME=LO:HI, e.g. a=1:2 (for random draws)"
+        raise UsageError("grid", spec, f"expected {shape}")
     return name.strip(), fields
 
 
 def _bounds(spec: str, fields: Sequence[str]) -> tuple[Fraction, Fraction]:
     lo, hi = _exact(fields[0], spec), _exact(fields[1], spec)
     if lo > hi:
-        raise UsageError("--grid", spec, "LO must not exceed HI")
+        raise UsageError("grid", spec, "LO must not exceed HI")
     return lo, hi
 
 
 def _once(specs: Iterable[str]) -> list[str]:
     specs = list(specs)
     if not specs:
-        raise UsageError("--grid", "", "give at least one NAME=LO:HI:COUNT")
+        raise UsageError("grid", "", "give at least one NAME=LO:HI:COUNT")
     names = [s.partition("=")[0].strip() for s in specs]
     for name in names:
         if names.count(name) > 1:
-            raise UsageError("--grid", name, "given twice")
+            raise UsageError("grid", name, "given twice")
     return specs
 
 
@@ -88,13 +88,13 @@ def parse_grid(specs: Iterable[str]) -> dict[str, list[Fraction]]:
     >>> parse_grid(["a=1:2:1000000000"])
     Traceback (most recent call last):
     ...
-    algkin.errors.UsageError: --grid='a=1:2:1000000000': 1000000000 designs, more than 1000000
+    algkin.errors.UsageError: grid='a=1:2:1000000000': 1000000000 designs, more than 1000000
     """
     specs = _once(specs)
     axes = [_axis(spec) for spec in specs]
     total = math.prod(n for _, _, _, n in axes)
     if total > MAX_DESIGNS:
-        raise UsageError("--grid", " ".join(specs), f"{total} designs, more than {MAX_DESIGNS}")
+        raise UsageError("grid", " ".join(specs), f"{total} designs, more than {MAX_DESIGNS}")
     return {name: [lo] if n == 1 else [lo + (hi - lo) * k / (n - 1) for k in range(n)] for name, lo, hi, n in axes}
 
 
@@ -105,12 +105,12 @@ def _axis(spec: str) -> tuple[str, Fraction, Fraction, int]:
     lo, hi = _bounds(spec, fields)
     count = fields[2].strip()
     if not (count.isascii() and count.isdigit()) or int(count) < 1:
-        raise UsageError("--grid", spec, f"COUNT must be a whole number from 1, got {count!r}")
+        raise UsageError("grid", spec, f"COUNT must be a whole number from 1, got {count!r}")
     n = int(count)
     if n == 1 and lo != hi:
-        raise UsageError("--grid", spec, "COUNT 1 needs LO = HI (one value)")
+        raise UsageError("grid", spec, "COUNT 1 needs LO = HI (one value)")
     if n > 1 and lo == hi:
-        raise UsageError("--grid", spec, f"LO = HI is one value, not {n}: give COUNT 1")
+        raise UsageError("grid", spec, f"LO = HI is one value, not {n}: give COUNT 1")
     return name, lo, hi, n
 
 
@@ -175,9 +175,9 @@ def grid_designs(axes: Mapping[str, Sequence[Fraction]]) -> Designs:
 def random_designs(ranges: Mapping[str, tuple[Fraction, Fraction]], count: int, seed: int) -> Designs:
     """``count`` designs drawn uniformly (on a lattice of RANDOM_STEPS steps) in ``ranges``, from ``seed``."""
     if not 1 <= count <= MAX_DESIGNS:
-        raise UsageError("--random", count, f"expected a number of designs from 1 to {MAX_DESIGNS}")
+        raise UsageError("random", count, f"expected a number of designs from 1 to {MAX_DESIGNS}")
     if seed < 0:
-        raise UsageError("--seed", seed, "expected a whole number from 0")
+        raise UsageError("seed", seed, "expected a whole number from 0")
     steps = np.random.Generator(np.random.PCG64(seed)).integers(0, RANDOM_STEPS, size=(count, len(ranges)),
                                                                 endpoint=True)
     bounds = list(ranges.values())

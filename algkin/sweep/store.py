@@ -46,14 +46,16 @@ def arrow_schema(columns: Mapping[str, str]) -> Any:
     return pa.schema([(name, types[kind]) for name, kind in columns.items()])
 
 
-def read_manifest(folder: str | pathlib.Path) -> dict[str, Any] | None:
+def read_manifest(folder: str | pathlib.Path, *, argument: str = "folder") -> dict[str, Any] | None:
+    """The manifest of the sweep in ``folder`` (None if it has none); one that cannot be read is a
+    usage error naming ``argument``, the caller's parameter that gave ``folder``."""
     path = pathlib.Path(folder) / MANIFEST
     if not path.is_file():
         return None
     try:
         return json.loads(path.read_text())
     except (OSError, ValueError) as err:
-        raise UsageError("--out", str(folder), f"its {MANIFEST} cannot be read: {err}") from None
+        raise UsageError(argument, str(folder), f"its {MANIFEST} cannot be read: {err}") from None
 
 
 def open_directory(folder: str | pathlib.Path, manifest: Mapping[str, Any], check_only: bool = False) -> None:
@@ -62,13 +64,13 @@ def open_directory(folder: str | pathlib.Path, manifest: Mapping[str, Any], chec
     from ..runtime.files import check_directory
 
     folder = pathlib.Path(folder)
-    check_directory("--out", str(folder))
-    found = read_manifest(folder)
+    check_directory("out", str(folder))
+    found = read_manifest(folder, argument="out")
     if found is None and folder.is_dir() and any(folder.iterdir()):
-        raise UsageError("--out", str(folder), f"is not empty and holds no sweep ({MANIFEST}); give a new directory")
+        raise UsageError("out", str(folder), f"is not empty and holds no sweep ({MANIFEST}); give a new directory")
     if found is not None and found != manifest:
         differs = sorted(k for k in set(found) | set(manifest) if found.get(k) != manifest.get(k))
-        raise UsageError("--out", str(folder), f"holds a different sweep (its {', '.join(differs)} differ); "
+        raise UsageError("out", str(folder), f"holds a different sweep (its {', '.join(differs)} differ); "
                                                "give the same arguments to resume, or a new directory")
     if check_only:
         return
@@ -114,7 +116,7 @@ def read_dataset(folder: str | pathlib.Path) -> Any:
     """The merged dataset of a finished sweep, as an Arrow table."""
     path = pathlib.Path(folder) / DATASET
     if not path.is_file():
-        raise UsageError("DIR", str(folder), f"holds no {DATASET}: not a finished sweep")
+        raise UsageError("folder", str(folder), f"holds no {DATASET}: not a finished sweep")
     return _pyarrow().parquet.read_table(path)
 
 

@@ -73,7 +73,7 @@ def function_names(scene: str, labels: Sequence[str], to: str = "c") -> list[str
     return list(identifiers([f"{scene}_{label}" for label in labels], to).values())
 
 
-def export(scene, outputs=None, to="c", params=(), set=None):  # noqa: A002 - SPEC §3's --set
+def export(scene, outputs=None, to="c", params=(), set=None):  # noqa: A002 - the public name (the command line's --set)
     """The source text of every branch of ``scene`` evaluating ``outputs`` (default: the scene's), in ``to``."""
     if to not in TARGETS:
         raise UsageError("--to", to, f"unknown target; valid: {', '.join(TARGETS)}")

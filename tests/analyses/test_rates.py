@@ -154,7 +154,7 @@ def test_quick_text_parses_back_exactly():
 def test_zero_samples_skip_the_check_and_two_inputs_are_refused():
     assert algkin.rates("chebyshev-lambda", outputs=["B"], samples=0).verification.status == "skipped"
     assert not algkin.rates("chebyshev-lambda", outputs=["B"], samples=0).verification.passed
-    with pytest.raises(UsageError, match="--rates.*five-bar.*2 \\(t1, t2\\)"):
+    with pytest.raises(UsageError, match="^scene='five-bar': rates need .*2 \\(t1, t2\\)"):
         algkin.rates("five-bar")
 
 

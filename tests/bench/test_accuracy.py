@@ -120,7 +120,7 @@ def _by(result):
     return {(r["strategy"], r["case"]): r for r in result.rows}
 
 
-# Hard cases of SPEC 5, against the certified reference (never the closed form). Bound:
+# Hard cases (near toggles, far from the origin: docs/cli/accuracy.md), against the certified reference (never the closed form). Bound:
 # err <= C kappa eps with C = 10 (a few roundings, each at most an eps of the input), or an
 # absolute bound where kappa says nothing.
 C = 10

@@ -1,4 +1,4 @@
-"""A scene compiles only what the asked-for output needs (SPEC §1: "model only what a scene needs").
+"""A scene compiles only what the asked-for output needs (what ``show`` says it compiles: docs/cli/show.md).
 
 The expected unknowns, parameters and inputs come from the construction graph, read off by
 hand: A is a crank (explicit) on O; B a dyad on A and D (four-bar) or a slider on L and A

@@ -1,4 +1,4 @@
-"""Bad scene files (SPEC §7) through the real command line: exit 2, one line, nothing run.
+"""Bad scene files (docs/scene-format.md) through the real command line: exit 2, one line, nothing run.
 
 Each file in ``bad/`` starts with ``# expect: a | b | ...``: words that the error line
 must contain (the element and what is wrong), besides the file's own name.
@@ -18,7 +18,7 @@ ROOT = Path(__file__).resolve().parents[2]
 BAD = Path(__file__).resolve().parent / "bad"
 FILES = sorted(BAD.glob("*.toml"))
 
-# One file at least for each class that SPEC §7 names.
+# One file at least for each class of bad scene: syntax, references, cycles, inputs, values...
 CLASSES = {
     "syntax_error.toml", "unknown_point.toml", "cycle.toml", "missing_input.toml",
     "negative_length.toml", "zero_length.toml", "never_assembles.toml",

@@ -1,4 +1,4 @@
-"""The scene files' tiny expression language (SPEC §2): exact, small, never executed.
+"""The scene files' tiny expression language (docs/scene-format.md): exact, small, never executed.
 
 Expected values come from Python's ``fractions.Fraction`` or from hand arithmetic,
 never from the parser itself.

@@ -38,7 +38,7 @@ def test_serial_and_two_dask_workers_give_the_same_dataset(tmp_path):
 
 def test_a_scheduler_that_is_not_there_is_a_usage_error(tmp_path, monkeypatch):
     monkeypatch.setattr("algkin.sweep.executor.CONNECT_SECONDS", 1)
-    with pytest.raises(UsageError, match="--scheduler='tcp://127.0.0.1:9': cannot connect"):
+    with pytest.raises(UsageError, match="^scheduler='tcp://127.0.0.1:9': cannot connect"):
         sweep("fourbar", tmp_path, grid=["a=1:2:2"], analyses=["grashof"], scheduler="tcp://127.0.0.1:9")
     assert not any(tmp_path.iterdir())  # nothing written
 

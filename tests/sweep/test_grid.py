@@ -91,7 +91,7 @@ def test_a_run_refused_for_its_length_made_no_design(tmp_path, monkeypatch):
     get = Designs.__getitem__
     monkeypatch.setattr(Designs, "__getitem__", lambda self, k: made.append(k) or get(self, k))
     # 10^6 designs of limits, at least 0.22 s each one at a time: 2.5 days
-    with pytest.raises(UsageError, match="give --yes"):
+    with pytest.raises(UsageError, match="confirm with yes"):
         sweep("fourbar", tmp_path / "out", grid=["a=1:2:1000", "d=1:2:1000"], analyses=["limits"], executor="serial")
     assert made == [0, 0]  # the first design's names, read by the plan; no other made
     assert not (tmp_path / "out").exists()

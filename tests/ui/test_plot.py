@@ -84,8 +84,8 @@ def measured(scene):
 
 
 def test_a_dimension_named_like_a_python_keyword_is_refused_in_one_line():
-    # plot --against sympified the name and crashed on `lambda`; SPEC §3: no name that
-    # sympy.parse_expr would misread, so the scene says so where it is loaded.
+    # plot --against sympified the name and crashed on `lambda`: a scene holds no name that
+    # sympy.parse_expr would misread (the JSON's strings read back), and says so where it is loaded.
     with pytest.raises(SceneError, match="parameters.lambda: .*Python keyword"):
         load_scene_text(ARM.replace("\nb = 80", "\nlambda = 80").replace('"-b"', '"-lambda"'), "lambda.toml")
 

@@ -64,7 +64,7 @@ def test_seed_is_deterministic():
     assert a.to_json() == b.to_json()
 
 
-# A check that compared nothing never says "passed" (SPEC §7).
+# A check that compared nothing never says "passed": with no sample it is "skipped".
 
 def test_zero_samples_is_skipped_not_passed():
     result = algkin.derive("chebyshev-lambda", outputs=["B"], samples=0, certify=False)

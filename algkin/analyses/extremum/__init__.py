@@ -92,7 +92,7 @@ def problem_for(derived, output, degrees=None):
         lo, hi = degrees if degrees is not None else compiled.scene.inputs[name].span
         return direction_problem(derived, angle, line, parameters, lo, hi, output)
     if len(unknowns) != 1:
-        raise UsageError("--of", output, "name a scalar output (a distance, a coordinate or an angle), not a point")
+        raise UsageError("output", output, "name a scalar output (a distance, a coordinate or an angle), not a point")
     chosen = next(b for b in derived.branches if b.selected)
     scale = AngleScale(angle.cos, None) if angle is not None else None
     return Problem(derived.eliminations[unknowns[0]].polynomial, chosen.values[unknowns[0]],
@@ -105,13 +105,13 @@ def _span(spec, angle_range):
     try:
         lo, hi = to_degrees(lo), to_degrees(hi)
     except (TypeError, ValueError, sympy.SympifyError):
-        raise UsageError("--range", angle_range, "expected two finite numbers (lo, hi)") from None
+        raise UsageError("angle_range", angle_range, "expected two finite numbers (lo, hi)") from None
     if not (lo.is_finite and hi.is_finite):
         problem = "must be finite"
     else:
         problem = range_problem(float(lo), float(hi)) if spec.is_angle else length_range_problem(lo, hi)
     if problem:
-        raise UsageError("--range", f"{float(lo):g}:{float(hi):g}", problem)
+        raise UsageError("angle_range", f"{float(lo):g}:{float(hi):g}", problem)
     return lo, hi
 
 

@@ -111,9 +111,9 @@ def _reference(cos_form: sympy.Expr, sin_form: sympy.Expr, line: Parametrisation
     room = {k: float(np.min(np.abs((phi[real] - (90 * k + 180) + 180) % 360 - 180))) for k in range(4)}
     best = max(room, key=lambda k: (room[k], -abs(k - 1)))  # ties: 90 deg, the upper half-plane, first
     if room[best] <= max(MARGIN_DEG, 2 * step):
-        raise UsageError("--of", output, f"the direction turns through (nearly) a full circle over "
+        raise UsageError("output", output, f"the direction turns through (nearly) a full circle over "
                          f"[{float(lo):g}, {float(hi):g}] deg, so it has no least or greatest value there; "
-                         "narrow --range")
+                         "narrow the range")
     return best
 
 

@@ -58,7 +58,7 @@ class Problem:
         """``F`` and ``dF/dtheta`` as polynomials in ``u``, ``t`` and the parameters."""
         along = self.line.derivative(self.eliminant)
         if along == 0:
-            raise UsageError("--of", str(self.u), "the output does not depend on the input")
+            raise UsageError("output", str(self.u), "the output does not depend on the input")
         return [self.numerator_in_t(e) for e in (self.eliminant, along)]
 
     def numerator_in_t(self, expr):

@@ -83,7 +83,7 @@ def rates_of(derivation: Derivation, samples: int = SAMPLES, seed: int = 0) -> R
     compiled: Any = derivation.compiled
     if len(compiled.system.inputs) != 1:  # a derivative needs one input to be taken in
         inputs = compiled.system.inputs
-        raise UsageError("--rates", compiled.scene.name, f"needs outputs moved by one input angle; they move with "
+        raise UsageError("scene", compiled.scene.name, f"rates need outputs moved by one input angle; they move with "
                          f"{len(inputs)}" + (f" ({', '.join(inputs)})" if inputs else ""))
     (name, variables), = compiled.system.inputs.items()
     unknowns = [u for names in compiled.outputs.values() for u in names]

@@ -103,7 +103,7 @@ class Singularities:
                 "complex_singular_points": self.complex, "timings": self.timings}
 
 
-def singular(scene: Any, point: str, *, set: Any = None, samples: int = 40,  # noqa: A002 - SPEC §3's --set
+def singular(scene: Any, point: str, *, set: Any = None, samples: int = 40,  # noqa: A002 - the public name (--set)
              seed: int = 0) -> Singularities:
     """The singular points of the curve ``point`` traces in ``scene`` (``algkin.curve``, its
     verification on ``samples`` inputs included), every dimension at its default or ``set``."""
@@ -144,8 +144,8 @@ def _polynomial(curve, variables):
     """``(sympy polynomial, (x name, y name))`` from what ``singular_points`` accepts."""
     if hasattr(curve, "elimination") and hasattr(curve, "variables"):  # a CurveResult
         if curve.compiled.system.parameters:
-            raise UsageError("--param", ", ".join(curve.compiled.system.parameters),
-                             "singular points need every dimension a number: set it (--set NAME=VALUE)")
+            raise UsageError("curve", ", ".join(curve.compiled.system.parameters),
+                             "these dimensions are symbolic; singular points need every dimension a number")
         return curve.elimination.polynomial, tuple(curve.variables)
     if not isinstance(curve, sympy.Expr):
         raise UsageError("curve", type(curve).__name__, "expected a sympy polynomial or what algkin.curve returns")

@@ -1,4 +1,4 @@
-"""The ``algkin`` command line (SPEC §3): readable reports, or one JSON document with --json.
+"""The ``algkin`` command line (docs/cli): readable reports, or one JSON document with --json.
 
 Exit codes: 0 done, 1 a computation failed, a check did not hold, the budget ran out or stdout
 could not be written (full, closed), 2 bad input (an output that cannot be written or is an
@@ -12,8 +12,8 @@ A command computes its whole output, text or JSON, inside its budget (``--max-se
 in a forked child when there is a time budget; the parent only starts it, waits, and writes.
 
 The package: ``parser`` the grammar, ``commands`` one function per command, ``reports``
-the text a person reads, ``paths`` the files read and written, ``signals`` the stopping signals
-and stdout; here ``main``.
+the text a person reads, ``paths`` the files read and written, ``flags`` the flag of each Python
+parameter an error names, ``signals`` the stopping signals and stdout; here ``main``.
 """
 
 import functools
@@ -21,6 +21,7 @@ import json
 import sys
 
 from ...errors import AlgkinError, BudgetExceeded, SceneError, UsageError
+from .flags import as_typed
 from .signals import _Stopped, _say, _stopping_signals, _write
 
 __all__ = ["main", "usage", "build_parser", "terminal_safe"]
@@ -73,6 +74,7 @@ def _main(argv):
     except _Stopped as stop:
         return _write(_failed(argv, args, "interrupted", str(stop), str(stop)), 128 + stop.signum, failed=True)
     except (SceneError, UsageError) as err:
+        err = as_typed(err) if isinstance(err, UsageError) else err  # the flag typed, not the Python name
         return _write(_failed(argv, args, _kind(err), str(err), f"error: {err}"), 2, failed=True)
     except AlgkinError as err:
         return _write(_failed(argv, args, _kind(err), str(err), f"failed: {err}"), 1, failed=True)

@@ -237,7 +237,10 @@ def _rates(result, document, args):
     """``derive --rates``: ``document`` with the rates' keys and timings, their LaTeX forms, the exit code."""
     from ...analyses.rates import rates_of
 
-    found = rates_of(result, args.samples, args.seed)
+    try:
+        found = rates_of(result, args.samples, args.seed)
+    except UsageError as err:  # the scene cannot have rates: asked for by --rates
+        raise UsageError("--rates", err.value, err.message) from None
     document = dict(document, **found.to_json())
     timings = dict(document["timings"], **found.timings)
     timings["total"] = timings.pop("total") + sum(found.timings.values())  # still last, and still the whole

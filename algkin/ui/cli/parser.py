@@ -79,7 +79,7 @@ def _command(commands, name, summary):
 
 
 def _scene(parser):
-    """The scene argument, and ``--set``: every command that takes a scene takes both (SPEC §3)."""
+    """The scene argument, and ``--set``: every command that takes a scene takes both."""
     parser.add_argument("scene", help="catalog name (see `algkin list`) or path of a scene file (.toml)")
     parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                         help="an exact value for a dimension (3/2, 0.1 = 1/10, sqrt(9/4)); repeatable")

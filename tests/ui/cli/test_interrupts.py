@@ -1,4 +1,4 @@
-"""Ctrl-C at any moment (SPEC §3): while Python imports algkin and sympy, or while Dask workers
+"""Ctrl-C at any moment (exit 130, docs/cli/index.md): while Python imports algkin and sympy, or while Dask workers
 compute a sweep, the command says one line, ``algkin: interrupted``, exits 130 and leaves no
 process behind.
 

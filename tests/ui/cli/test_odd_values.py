@@ -1,4 +1,4 @@
-"""Odd values through the real command (SPEC §3, §7): each is either computed or refused in one
+"""Odd values through the real command (docs/cli/index.md: exit 2, one line): each is either computed or refused in one
 line with exit 2 (bad input), never a traceback."""
 
 import json
@@ -105,7 +105,7 @@ def test_a_value_of_100000_digits_is_refused_in_a_short_line(tmp_path):
 ], ids=["set-arabic-indic", "set-fullwidth", "set-no-break-space", "samples", "seed", "max-seconds", "max-terms",
         "range", "grid-value", "grid-count", "grid-no-break-space", "range-of", "input"])
 def test_numbers_in_other_scripts_are_refused(tmp_path, args, words):
-    """Python's int(), float() and Fraction() read them; the tiny language (SPEC §2) is ASCII."""
+    """Python's int(), float() and Fraction() read them; the tiny language (docs/scene-format.md) is ASCII."""
     refused(algkin(*args, cwd=tmp_path), *words)
     assert os.listdir(tmp_path) == []
 

@@ -1,4 +1,4 @@
-"""Where a command writes (SPEC §3): an output that cannot be written, or that is one of the
+"""Where a command writes (docs/cli/index.md): an output that cannot be written, or that is one of the
 command's inputs, is refused with one line and exit 2 before any work, nothing written; a
 stdout that cannot be written is one line and exit 1, with no traceback."""
 

@@ -1,4 +1,4 @@
-"""The command line under budgets, signals and closed pipes (SPEC §7): a budget covers the
+"""The command line under budgets, signals and closed pipes (exit codes: docs/cli/index.md): a budget covers the
 whole command and stops it near its deadline whatever it is doing; a signal or an error says
 one line on stderr (and, with --json, one JSON document on stdout); no process outlives it.
 

@@ -16,11 +16,11 @@ GOOD = ["sweep", "fourbar", "--grid", "a=1:2:2", "--analyses", "grashof", "--exe
     (["--grid", "a=2:1:3"], "LO must not exceed HI"),
     (["--analyses", "grashof,wobble"], "--analyses='wobble': unknown; valid: curve, grashof, toggles, limits"),
     (["--executor", "threads"], "--executor='threads': unknown; valid: dask, serial"),
-    (["--workers", "2"], "--workers=2: sizes the LocalCluster: goes with --executor dask"),
+    (["--workers", "2"], "--workers=2: sizes the LocalCluster: only for the dask executor without a scheduler"),
     (["--workers", "0"], "expected a whole number from 1"),
     (["--budget", "-1"], "--budget=-1.0: must be a positive number of seconds"),
     (["--point", "Z"], "--point='Z': not a point of fourbar"),
-    (["--random", "5"], "--grid='a=1:2:2': expected NAME=LO:HI, e.g. a=1:2 (with --random)"),
+    (["--random", "5"], "--grid='a=1:2:2': expected NAME=LO:HI, e.g. a=1:2 (for random draws)"),
     (["--chunk", "x"], "expected a whole number from 1"),
     (["--grid", "a=1:2:1000000000"], "--grid='a=1:2:1000000000': 1000000000 designs, more than 1000000"),
     (["--grid", "a=1:1:3"], "--grid='a=1:1:3': LO = HI is one value, not 3: give COUNT 1"),
@@ -62,7 +62,7 @@ def test_a_run_longer_than_a_day_asks_for_yes(tmp_path, capsys):
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and not (tmp_path / "out").exists()
     assert ("--grid='a=1:2:1000 d=1:2:1000': 1000000 designs would take at least 2.55 days (0.22 s each, "
-            "1 at once); give --yes to start anyway") in err
+            "1 at once); confirm with yes to start anyway") in err
 
 
 def test_yes_starts_it(tmp_path, capsys, monkeypatch):

@@ -1,4 +1,4 @@
-"""The command line's contract (SPEC §3): bad arguments exit 2 with one line on stderr;
+"""The command line's contract (docs/cli/index.md): bad arguments exit 2 with one line on stderr;
 ``--json`` is one JSON document; a scene compiles only what the asked-for outputs need."""
 
 import json
@@ -46,7 +46,7 @@ BAD_USAGE = {
     "set-not-name-value": (["toggles", "chebyshev-lambda", "--set", "b"], ["--set='b'", "NAME=VALUE"]),
     "set-name-with-no-value": (["accuracy", "chebyshev-lambda", "--set", "a="], ["--set='a='"]),
     "set-and-param": (["extremum", "arm-string", "--of", "AB", "--param", "b", "--set", "b=1"],
-                      ["--set='b=1'", "--param"]),
+                      ["--set='b=1'", "b is also kept symbolic"]),
     "out-in-no-directory": (["curve", "chebyshev-lambda", "--point", "P", "--out", "no/such/dir/c.json"],
                             ["--out", "directory does not exist"]),
     "set-eval-refused": (["curve", "fourbar", "--point", "P", "--set", "a=__import__('os')"], ["--set="]),

@@ -1,0 +1,98 @@
+"""The library names a bad argument by its Python parameter; the command line by the flag typed.
+
+``algkin.ui.cli.flags.FLAGS`` maps the one to the other: every name an error below the command
+line gives, and a command can reach, must be in it, and every flag in it must be one the
+command line takes.
+"""
+
+import argparse
+import pathlib
+import re
+
+import pytest
+
+import algkin
+from algkin.errors import UsageError
+from algkin.ui.cli import build_parser, main
+from algkin.ui.cli.flags import FLAGS
+
+PACKAGE = pathlib.Path(algkin.__file__).parent
+
+# Names raised below the command line that no command can reach, each with why.
+NOT_FROM_THE_COMMAND_LINE = {
+    "analysis": "sweep.register: a Python extension point",
+    "curve": "singular_points of a sympy curve; the command line passes a scene and a point",
+    "variables": "singular_points' variables; the command line passes none",
+    "engine": "evaluate's engine; no command takes one",
+    "NUMBA_NUM_THREADS": "an environment variable, named as such",
+    "sweep": "the sweep extra missing: its name is the package's, said as such",
+}
+
+# A name given as the first argument of UsageError, or of the helpers that pass it on to one.
+_NAMED = re.compile(r'\b(?:UsageError|names|count|check_directory|check_output)\(\s*"([^"]+)"'
+                    r'|\b(?:time_budget|_lookup)\(\s*\w+,\s*"([^"]+)"|\bargument="([^"]+)"')
+
+
+def _names_raised_below_the_command_line():
+    names = {}
+    for path in sorted(PACKAGE.rglob("*.py")):
+        if path.relative_to(PACKAGE).parts[0] == "ui":
+            continue
+        code = "\n".join(line for line in path.read_text().splitlines() if not line.lstrip().startswith(">>>"))
+        for match in _NAMED.finditer(code):  # the code, not its docstrings' examples
+            name = next(group for group in match.groups() if group)
+            names.setdefault(name, str(path.relative_to(PACKAGE)))
+    return names
+
+
+def _command_line_names():
+    """Every option string and positional argument of every command."""
+    parser = build_parser()
+    commands = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    found = set()
+    for command in commands.choices.values():
+        for action in command._actions:
+            found.update(action.option_strings or [action.dest, action.metavar])
+    return found
+
+
+@pytest.mark.parametrize("budget", [[], ["--max-seconds", "600"]], ids=["here", "in-a-child-process"])
+def test_the_python_api_names_the_parameter_and_the_command_line_the_flag(capsys, budget):
+    with pytest.raises(UsageError) as caught:
+        algkin.curve("chebyshev-lambda", "Q")
+    assert str(caught.value).startswith("point='Q': not a point of chebyshev-lambda")
+    assert main(["curve", "chebyshev-lambda", "--point", "Q", *budget]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--point='Q': not a point of chebyshev-lambda" in err
+
+
+@pytest.mark.parametrize("call, argv, python, flag", [
+    (lambda: algkin.derive("arm-string", params=["zz"]), ["derive", "arm-string", "--param", "zz"],
+     "params='zz'", "--param='zz'"),
+    (lambda: algkin.derive("arm-string", outputs=["dist(A, Z)"]), ["derive", "arm-string", "--outputs", "dist(A, Z)"],
+     "outputs='dist(A, Z)'", "--outputs='dist(A, Z)'"),
+    (lambda: algkin.extremum("fourbar", "B"), ["extremum", "fourbar", "--of", "B"], "output='B'", "--of='B'"),
+    (lambda: algkin.extremum("fourbar", "dist(O, B)", (10, 5)), ["extremum", "fourbar", "--of", "dist(O, B)",
+                                                                 "--range", "10:5"], "angle_range=", "--range="),
+])
+def test_each_way_in_names_the_argument_its_own_way(capsys, call, argv, python, flag):
+    with pytest.raises(UsageError) as caught:
+        call()
+    assert str(caught.value).startswith(python)
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f"error: {flag}" in err
+
+
+def test_every_name_raised_below_the_command_line_has_its_flag():
+    raised = _names_raised_below_the_command_line()
+    assert {"point", "outputs", "params", "set", "grid", "angle_range"} <= set(raised)  # the scan finds them
+    flagged = {name: where for name, where in raised.items() if name.startswith("-")}
+    assert not flagged, f"a flag named below the command line: {flagged}"
+    missing = {name: where for name, where in raised.items()
+               if name not in FLAGS and name not in NOT_FROM_THE_COMMAND_LINE}
+    assert not missing, f"no flag in algkin.ui.cli.flags.FLAGS for {missing}"
+
+
+def test_every_flag_in_the_table_is_one_the_command_line_takes():
+    assert set(FLAGS.values()) <= _command_line_names()
