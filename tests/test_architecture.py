@@ -1,6 +1,7 @@
 """The package's shape: the layers' import contract holds, the root stays small, and every
 public name is still importable from ``algkin``."""
 
+import ast
 import pkgutil
 import subprocess
 import sys
@@ -56,3 +57,27 @@ def test_the_facade_derive_is_the_function_not_a_package():
     done = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
                           env={"PYTHONPATH": str(ROOT), "PATH": ""}, timeout=120)
     assert done.stdout.strip() == "['left', 'right'] True", done.stderr
+
+
+def _private(name):
+    return name.startswith("_") and not name.startswith("__")
+
+
+def _reach_ins(path):
+    """``from <algkin module> import _name`` and ``<name imported from algkin>._name`` in one file."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    imported, found = set(), []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom) and (node.level or (node.module or "").startswith("algkin")):
+            found += [f"{path.relative_to(ROOT)}:{node.lineno} imports {a.name}" for a in node.names if _private(a.name)]
+            imported |= {a.asname or a.name for a in node.names}
+        elif isinstance(node, ast.Import):
+            imported |= {(a.asname or a.name).split(".")[0] for a in node.names if a.name.startswith("algkin")}
+    return found + [f"{path.relative_to(ROOT)}:{node.lineno} reads {node.value.id}.{node.attr}" for node in ast.walk(tree)
+                    if isinstance(node, ast.Attribute) and _private(node.attr)
+                    and isinstance(node.value, ast.Name) and node.value.id in imported]
+
+
+def test_no_module_reaches_into_another_modules_private_names():
+    found = [r for path in sorted((ROOT / "algkin").rglob("*.py")) for r in _reach_ins(path)]
+    assert not found, found

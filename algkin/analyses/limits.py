@@ -451,7 +451,7 @@ def _point_limits(scene: Scene, point: str, lo: float, hi: float) -> PointLimits
 
 def _turns_fully(compiled: Compiled, lo: float, hi: float) -> str | None:
     """None when the input turns fully with every point the output needs assembled; else why not."""
-    from .toggles import _roots, toggle_conditions
+    from .toggles import toggle_conditions
 
     if hi - lo < 360:
         return f"the input's range [{lo:g}, {hi:g}] deg is less than a full turn"
@@ -459,7 +459,7 @@ def _turns_fully(compiled: Compiled, lo: float, hi: float) -> str | None:
     with flint.ctx.workprec(ROOT_BITS):
         for spec in compiled.implicit:
             for kind, condition in toggle_conditions(compiled, spec).items():
-                balls = _roots(condition, line)
+                balls = line.roots(condition)
                 if balls:
                     angles = ", ".join(f"{float(b.mid()):.6g}" for b in balls)
                     return f"the input does not turn fully: {spec.point} has dead centres ({kind}) at {angles} deg"

@@ -148,6 +148,11 @@ class Quantity:
         return self._problem.u
 
     @property
+    def symbolic_dimensions(self):
+        """The symbolic dimensions (sympy symbols) the closed form is in, as the system orders them."""
+        return self._problem.parameters
+
+    @property
     def derivative(self):
         """d(quantity)/d(input) in radians, from the closed form (for plots, not for extrema)."""
         return sympy.diff(self.expr, self.input)

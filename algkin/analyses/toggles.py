@@ -34,7 +34,6 @@ from ..scene.implicit import ImplicitSpec
 from ..scene.settings import with_values
 from ..system import input_values, symbol
 from ..system.angles import Parametrisation
-from ..system.convert import real_roots
 
 __all__ = ["toggles", "Toggle", "Toggles", "grashof", "single_input"]
 
@@ -131,18 +130,13 @@ def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name (t
     with flint.ctx.workprec(ROOT_BITS):
         for spec in compiled.implicit:
             for kind, condition in toggle_conditions(compiled, spec).items():
-                for ball in _roots(condition, line):
+                for ball in line.roots(condition):
                     found += [Toggle(float(ball.mid()) + turn, ball + turn, spec.point, kind, line.is_angle)
                               for turn in line.turns if lo <= float(ball.mid()) + turn <= hi]
         dropped = _artefacts(compiled, line) if artefacts else []
     found.sort(key=lambda g: g.input_deg)
     unit = "deg" if line.is_angle else "length"
     return Toggles(scene.name, name, (lo, hi), found, grashof(compiled), dropped, unit)
-
-
-def _roots(condition, line):
-    """Certified enclosures (degrees, or lengths) of the inputs where ``condition`` vanishes."""
-    return [line.shown(r) for r in real_roots(line.numerator(condition), line.t)] + line.at_infinity(condition)
 
 
 def _artefacts(compiled, line):
@@ -175,7 +169,7 @@ def _why_not_a_toggle(compiled, branches, factor, line):
                 for k, v in _defaults(compiled).items()}
     reasons = set()
     names = tuple(v.name for v in line.variables)
-    for ball in _roots(factor, line):
+    for ball in line.roots(factor):
         values = dict(defaults, **input_values(names, ball * flint.arb.pi() / 180 if line.is_angle else ball))
         reason = _separated(compiled, branches, values)
         if reason is None:

@@ -59,7 +59,7 @@ from ..scene.settings import with_values
 from ..system import symbol
 from .reference import BITS, Reference
 
-__all__ = ["accuracy", "Accuracy", "STRATEGIES", "EPS", "REFERENCE"]
+__all__ = ["accuracy", "Accuracy", "Subject", "sample_cases", "STRATEGIES", "EPS", "REFERENCE"]
 
 EPS = 2.0**-53
 REFERENCE = f"certified root of the original equations (Krawczyk in arb at {BITS} bits), labelled by side"
@@ -81,8 +81,10 @@ class Accuracy:
         return {"scene": self.scene, "point": self.point, "rows": self.rows, "reference": REFERENCE, "eps": EPS}
 
 
-class _Subject:
-    """One compiled variant of the scene: its branch, output and the strategies' evaluators."""
+class Subject:
+    """What an accuracy run measures: ``scene`` compiled for the output ``of``, the scene's branch,
+    the construction whose toggles matter (``dyad``) and each strategy's evaluator (``stable``,
+    ``reference``, ``newton``, ``solved``)."""
 
     def __init__(self, scene, of):
         self.compiled = compile_scene(scene, [of])
@@ -270,8 +272,10 @@ def _explain(raw, stabilised):
                               f"against {raw['max_rel_error']:.1e}), beyond the rounding floor")
 
 
-def _cases(subject, samples, rng):
-    """name -> sorted float64 input angles (radians)."""
+def sample_cases(subject, samples, rng):
+    """The cases an accuracy run measures ``subject`` on (see the module's text), drawn with the
+    numpy generator ``rng``: name (``uniform``, ``toggle-1e-06``..., ``near-fold``) -> sorted float64
+    input angles (radians), about ``samples`` of them per case."""
     intervals = [i for i in certify_labels(subject.compiled, [subject.branch])[0] if i["status"] == "certified"]
     if not intervals:
         raise UsageError("scene", subject.compiled.scene.name, "no input interval where the branch is certified")
@@ -339,11 +343,11 @@ def accuracy(scene, samples=2000, seed=0, set=None, of=None):  # noqa: A002 - th
     if lengths:  # the stabilised forms and the hard cases near toggles are laid out on a turning input
         raise UsageError("scene", scene.name, f"accuracy is measured over an input angle; {lengths[0]} is a length")
     rng = np.random.default_rng(seed)
-    subject = _Subject(scene, of)
+    subject = Subject(scene, of)
     rows = []
     current().note(f"measuring each strategy on {scene.name}")
-    for case, theta in progress.counted(_cases(subject, samples, rng).items(), "cases"):
+    for case, theta in progress.counted(sample_cases(subject, samples, rng).items(), "cases"):
         rows += _rows(subject, case, theta)
-    far = _Subject(_translated(scene, FAR), of)
-    rows += _rows(far, "far-1e7", _cases(far, samples, rng)["uniform"])
+    far = Subject(_translated(scene, FAR), of)
+    rows += _rows(far, "far-1e7", sample_cases(far, samples, rng)["uniform"])
     return Accuracy(scene.name, of, rows)

@@ -29,7 +29,7 @@ import sympy
 from ..evaluate.fused import Kernel
 from ..evaluate.trace import trace
 from ..scene import Compiled
-from ..scene.compile import _resolve_outputs
+from ..scene.compile import resolve_outputs
 from ..scene.implicit import StableEvaluator, reduce_on_circles
 from ..scene.implicit.base import HalfAngle
 from ..scene.implicit.floats import FloatArray
@@ -131,7 +131,7 @@ def output_forms(stable: StableBranch, requested: Sequence[str] | None = None) -
     compiled, fix = stable.compiled, stable.fix
     arguments = stable.arguments + [symbol(u) for d in stable.dyads for u in d.unknowns]
     names, parts = [], []
-    for output in _resolve_outputs(compiled.scene, requested or list(compiled.scene.outputs)):
+    for output in resolve_outputs(compiled.scene, requested or list(compiled.scene.outputs)):
         unknowns = list(compiled.outputs[output.name])
         if output.kind == "dist":  # offsets cancel symbolically before any rounding
             (px, py), (qx, qy) = (compiled.coordinates[p] for p in output.points)

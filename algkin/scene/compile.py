@@ -28,7 +28,7 @@ from .load import parse_output
 from .model import Output, Scene
 from .names import angle_unknowns, check_names, check_output_unknowns, check_symbol_name
 
-__all__ = ["Compiled", "DyadSpec", "SliderSpec", "AngleOutput", "compile_scene"]
+__all__ = ["Compiled", "DyadSpec", "SliderSpec", "AngleOutput", "compile_scene", "resolve_outputs"]
 
 Substitution = Mapping[sympy.Symbol, sympy.Expr]
 
@@ -86,7 +86,16 @@ class Compiled:
         return [(symbol(pair[0]), symbol(pair[1])) for pair in self.system.inputs.values() if len(pair) == 2]
 
 
-def _resolve_outputs(scene: Scene, requested: Sequence[str] | None) -> list[Output]:
+def resolve_outputs(scene: Scene, requested: Sequence[str] | None) -> list[Output]:
+    """The outputs named in ``requested`` (the scene's own, or ``P``, ``dist(P, Q)``, ``angle(P, Q)``
+    it does not declare), each once; all the scene's outputs when ``requested`` is empty.
+
+    UsageError names a requested output that cannot be one; SceneError a scene with none.
+
+    >>> from algkin.scene import load_scene
+    >>> [(o.name, o.kind) for o in resolve_outputs(load_scene("fourbar"), ["dist(A, B)", "B"])]
+    [('dist_A_B', 'dist'), ('B', 'point')]
+    """
     generated = check_names(scene)  # a scene built in Python has not been through the loader
     outputs: list[Output] = []
     taken: dict[str, str] = {}  # unknowns of distance and angle outputs -> the output's name
@@ -186,7 +195,7 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
     """
     symbolic = tuple(params)
     defaults, substitution, bits = _parameter_values(scene, symbolic)
-    resolved = _resolve_outputs(scene, outputs)
+    resolved = resolve_outputs(scene, outputs)
     points = _needed_points(scene, resolved)
     inputs = _used_inputs(scene, points)
     builder = Builder({n: pair for n, pair in inputs.items() if len(pair) == 2})

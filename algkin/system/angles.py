@@ -22,7 +22,7 @@ import flint
 import mpmath
 import sympy
 
-from .convert import flint_context, to_flint
+from .convert import flint_context, real_roots, to_flint
 
 __all__ = ["half_angle_numerator", "half_angle_poly", "tangent_to_degrees", "vanishes_at_half_turn", "Parametrisation"]
 
@@ -111,6 +111,18 @@ class Parametrisation:
     def at_infinity(self, expr: sympy.Expr) -> list[flint.arb]:
         """Where ``expr`` vanishes that no root in ``t`` shows: an angle's half turn."""
         return [flint.arb(180)] if self.is_angle and vanishes_at_half_turn(expr, *self.variables[:2]) else []
+
+    def roots(self, expr: sympy.Expr) -> list[flint.arb]:
+        """Certified enclosures of the inputs (as users read them) where ``expr`` vanishes, at
+        ``flint.ctx``'s working precision: the roots in ``t`` shown, then ``at_infinity``.
+
+        >>> c, s, t = sympy.symbols("c s t")
+        >>> [float(r.mid()) for r in Parametrisation((c, s), t).roots(s)]
+        [0.0, 180.0]
+        >>> [round(float(r.mid()), 12) for r in Parametrisation((t,), t).roots(t**2 - 2)]
+        [-1.414213562373, 1.414213562373]
+        """
+        return [self.shown(r) for r in real_roots(self.numerator(expr), self.t)] + self.at_infinity(expr)
 
     def exact_shown(self, t: sympy.Expr) -> sympy.Expr:
         """An exact value of ``t`` as the input users read (degrees: ``360 atan(t) / pi``)."""

@@ -52,7 +52,7 @@ def save(figure, out):
 def _sampler(quantity, expr):
     """numpy function of degrees for ``expr`` in the input, dimensions at their defaults."""
     defaults = quantity.derivation.compiled.parameter_values
-    fixed = expr.xreplace({p: sympy.Rational(str(defaults[p.name])) for p in quantity._problem.parameters})
+    fixed = expr.xreplace({p: sympy.Rational(str(defaults[p.name])) for p in quantity.symbolic_dimensions})
     return sympy.lambdify(quantity.input, fixed, "numpy")
 
 
@@ -95,9 +95,9 @@ def quantity_figure(quantity, found, derivative=False, points=721):
 def minimum_figure(quantity, found, parameter, lo, hi, checks=9, points=401):
     """The minimum of ``quantity`` against ``parameter`` in ``[lo, hi]``, region by region."""
     form = found.closed_form
-    if form is None or [p.name for p in quantity._problem.parameters] != [parameter]:
+    if form is None or [p.name for p in quantity.symbolic_dimensions] != [parameter]:
         raise UsageError("--against", parameter, "needs the quantity with exactly that dimension symbolic")
-    symbol = quantity._problem.parameters[0]
+    symbol = quantity.symbolic_dimensions[0]
     figure = new_figure()
     axes = figure.add_subplot()
     grid = np.linspace(lo, hi, points)

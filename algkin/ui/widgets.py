@@ -22,7 +22,7 @@ from typing import Any
 
 from ..analyses.motion import Motion
 from ..scene.load import SceneLike
-from .html import _slider, parameter_range
+from .html import parameter_slider
 
 __all__ = ["interact", "Explorer"]
 
@@ -40,8 +40,7 @@ class Explorer:
         start = self.motion.start()
         inputs = [dict(name=n, lo=s.span[0], hi=s.span[1], value=start[n])
                   for n, s in self.motion.inputs.items()]
-        return inputs + [_slider(p, parameter_range(self.motion, p, self.ranges), self.motion.defaults[p])
-                         for p in self.motion.params]
+        return inputs + [parameter_slider(self.motion, p, self.ranges) for p in self.motion.params]
 
     def _split(self, values):
         branch = values.pop("branch", None)

@@ -134,9 +134,9 @@ def test_the_reference_is_named_and_independent():
 def test_change_point_four_bar_where_the_branches_meet():
     # crank 1 + ground 4 = coupler 3 + rocker 2: at 180 deg |AD| = 5 = 3 + 2, both branches meet
     # in B = (4, 0) - 2 * (1, 0)... the coupler and rocker lie along the ground: B = (2, 0) +- 0.
-    from algkin.bench.accuracy import _Subject
+    from algkin.bench.accuracy import Subject
 
-    subject = _Subject(four_bar(1, 4, 3, 2), "B")
+    subject = Subject(four_bar(1, 4, 3, 2), "B")
     theta = np.array([np.pi, np.pi * (1 - 1e-12), np.pi * (1 + 1e-12)])
     truth, _ = subject.reference(theta[:1])
     assert abs(truth[0, 0] - 2) < 1e-15 and abs(truth[1, 0]) < 1e-15  # by hand: B = (2, 0)
@@ -192,11 +192,11 @@ def test_numeric_reaches_the_labelled_root_or_counts_the_sample_unsolved():
 
 
 def test_numeric_marks_a_sample_that_ends_on_the_other_branch():
-    from algkin.bench.accuracy import _Subject
+    from algkin.bench.accuracy import Subject
 
     # Continuation from -120 deg to +120 deg starts from the mirror image of the answer: Newton
     # converges there, on the other branch, and the label's check says so.
-    subject = _Subject(load_scene("fourbar-nongrashof"), "B")
+    subject = Subject(load_scene("fourbar-nongrashof"), "B")
     theta = np.radians([-120.0, 120.0])
     truth, _ = subject.reference(theta)
     estimate = subject.newton(theta)

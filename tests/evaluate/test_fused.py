@@ -7,7 +7,7 @@ import sys
 import numpy as np
 import pytest
 
-from algkin.bench.accuracy import _cases, _Subject
+from algkin.bench.accuracy import sample_cases, Subject
 from algkin.errors import UsageError
 from algkin.branches import closed_forms
 from algkin.branches.stable import StableBranch
@@ -37,8 +37,8 @@ def subject_cases(request):
     name, of = request.param
     scene = load_scene(name)
     of = of or next(iter(scene.outputs))
-    subject = _Subject(scene, of)
-    return subject, _cases(subject, 100, np.random.default_rng(3))
+    subject = Subject(scene, of)
+    return subject, sample_cases(subject, 100, np.random.default_rng(3))
 
 
 @needs_numba

@@ -9,7 +9,7 @@ import subprocess
 import numpy as np
 import pytest
 
-from algkin.bench.accuracy import _cases, _Subject
+from algkin.bench.accuracy import sample_cases, Subject
 from algkin.scene import load_scene
 from algkin.ui.export import export
 
@@ -23,9 +23,9 @@ ULPS = 8
 def lambda_p():
     """The lambda's P: angles (uniform; at and beside the closest approach of its dyad's discriminant
     factor 5 - 4c to zero, theta = 0; far turns of the crank) and the certified truth there."""
-    subject = _Subject(load_scene("chebyshev-lambda"), "P")
+    subject = Subject(load_scene("chebyshev-lambda"), "P")
     near = np.array([0.0, 1e-300, 2.0**-30, -1e-8, 1e-14, np.pi, np.pi * (1 - 1e-15), 2 * np.pi, 1e3, -12345.678])
-    theta = np.concatenate([_cases(subject, 200, np.random.default_rng(11))["uniform"], near])
+    theta = np.concatenate([sample_cases(subject, 200, np.random.default_rng(11))["uniform"], near])
     certified = subject.reference.certify(theta)
     assert certified.ok.all()
     return subject, theta, certified.points

@@ -8,8 +8,18 @@ import sympy
 import algkin
 from algkin.branches import closed_forms
 from algkin.errors import UsageError
-from algkin.derivation.pipeline import _verify, compile_and_branch
+from algkin.derivation.assembles import where_assembled
+from algkin.derivation.pipeline import check_setup, compile_and_branch
 from algkin.scene import compile_scene, load_scene, load_scene_text
+from algkin.verify import verify_branches
+
+
+def check(compiled, branches, samples, polynomials, factors=None):
+    """The pipeline's independent check of ``branches`` (seed 1): ``verify_branches`` on what
+    ``check_setup`` gives, the samples where some branch may assemble."""
+    system, indicators, forms, inputs = check_setup(compiled, branches)
+    return verify_branches(system, indicators, forms, inputs, dict(compiled.parameter_values), samples=samples,
+                           seed=1, polynomials=polynomials, factors=factors, where=where_assembled(compiled, branches))
 
 
 def lambda_setup():
@@ -19,7 +29,7 @@ def lambda_setup():
 
 def test_true_closed_forms_pass():
     compiled, branches = lambda_setup()
-    report = _verify(compiled, branches, 20, 1, {})
+    report = check(compiled, branches, 20, {})
     assert report.passed and report.compared == 40
     assert report.max_abs_error < 1e-40
 
@@ -29,7 +39,7 @@ def test_swapped_labels_fail():
     left, right = branches
     swapped = [type(left)(left.label, left.labels, right.values, left.discriminants, True),
                type(right)(right.label, right.labels, left.values, right.discriminants, False)]
-    report = _verify(compiled, swapped, 10, 1, {})
+    report = check(compiled, swapped, 10, {})
     assert not report.passed
     assert report.max_abs_error > 0.1
 
@@ -39,14 +49,14 @@ def test_slightly_wrong_closed_form_fails():
     left = branches[0]
     nudged = dict(left.values, B_x=left.values["B_x"] + sympy.Rational(1, 10**12))
     wrong = [type(left)(left.label, left.labels, nudged, left.discriminants, True), branches[1]]
-    report = _verify(compiled, wrong, 5, 1, {})
+    report = check(compiled, wrong, 5, {})
     assert not report.passed
     assert 1e-13 < report.max_abs_error < 1e-11
 
 
 def test_missing_branch_fails():
     compiled, branches = lambda_setup()
-    report = _verify(compiled, branches[:1], 5, 1, {})
+    report = check(compiled, branches[:1], 5, {})
     assert not report.passed
     assert any("no real closed-form branch" in f for f in report.failures)
 
@@ -54,7 +64,7 @@ def test_missing_branch_fails():
 def test_wrong_eliminant_fails():
     compiled, branches = lambda_setup()
     x = sympy.Symbol("B_x", real=True)
-    report = _verify(compiled, branches, 5, 1, {"B_x": x**2 - 1})
+    report = check(compiled, branches, 5, {"B_x": x**2 - 1})
     assert not report.passed
 
 
@@ -80,7 +90,7 @@ def test_negative_samples_are_bad_input():
 
 def test_nothing_to_compare_fails():
     compiled, _ = lambda_setup()
-    report = _verify(compiled, [], 3, 1, {})
+    report = check(compiled, [], 3, {})
     assert report.status == "failed" and not report.passed
     assert any("nothing to compare" in f for f in report.failures)
 
@@ -116,8 +126,8 @@ def test_wrong_sign_in_a_closed_form_is_caught():
     compiled, branches = lambda_setup()
     left = branches[0]
     flipped = dict(left.values, B_y=-left.values["B_y"])
-    report = _verify(compiled, [type(left)(left.label, left.labels, flipped, left.discriminants, True),
-                                branches[1]], 5, 1, {})
+    report = check(compiled, [type(left)(left.label, left.labels, flipped, left.discriminants, True),
+                              branches[1]], 5, {})
     assert not report.passed
 
 
@@ -138,7 +148,7 @@ def lambda_curve():
 
 def curve_check(lambda_curve, factors):
     compiled, branches, _ = lambda_curve
-    return _verify(compiled, branches, 4, 1, {"curve": sympy.Mul(*factors)}, {"curve": factors})
+    return check(compiled, branches, 4, {"curve": sympy.Mul(*factors)}, {"curve": factors})
 
 
 def test_true_curve_is_minimal(lambda_curve):
@@ -169,7 +179,7 @@ def test_squared_factor_fails(lambda_curve):
 def test_factors_must_multiply_to_the_polynomial(lambda_curve):
     compiled, branches, (true,) = lambda_curve
     x = sympy.Symbol("P_x", real=True)
-    report = _verify(compiled, branches, 4, 1, {"curve": true * (x - 100)}, {"curve": [true]})
+    report = check(compiled, branches, 4, {"curve": true * (x - 100)}, {"curve": [true]})
     assert not report.passed
     assert any("do not multiply" in f for f in report.failures)
 
@@ -179,7 +189,7 @@ def test_extraneous_factor_in_a_derived_eliminant_fails():
     derived = algkin.derive("chebyshev-lambda", ["B"], samples=0, certify=False).eliminations["B_x"]
     c = sympy.Symbol(next(iter(compiled.system.inputs.values()))[0], real=True)
     factors = derived.factors + [c - 2]  # the input's cosine is never 2
-    report = _verify(compiled, branches, 4, 1, {"B_x": sympy.Mul(*factors)}, {"B_x": factors})
+    report = check(compiled, branches, 4, {"B_x": sympy.Mul(*factors)}, {"B_x": factors})
     assert not report.passed
     assert any(f.startswith(f"factor {c - 2} of B_x vanishes on none") for f in report.failures)
 

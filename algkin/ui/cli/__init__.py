@@ -22,7 +22,7 @@ import sys
 
 from ...errors import AlgkinError, BudgetExceeded, SceneError, UsageError
 from .flags import as_typed
-from .signals import _Stopped, _say, _stopping_signals, _write
+from .signals import Stopped, say, stopping_signals, write_stdout
 
 __all__ = ["main", "usage", "build_parser", "terminal_safe"]
 
@@ -50,10 +50,10 @@ def main(argv=None):
     imports anything more, and leaves the default ones after it (a signal then ends the
     process as it would any program, without a traceback).
     """
-    with _stopping_signals(restore=argv is not None):
+    with stopping_signals(restore=argv is not None):
         try:
             return _main(sys.argv[1:] if argv is None else list(argv))
-        except _Stopped as stop:  # while an error's line was said: that line is all
+        except Stopped as stop:  # while an error's line was said: that line is all
             return 128 + stop.signum
 
 
@@ -65,19 +65,19 @@ def _main(argv):
         if not argv:
             # Bare ``algkin`` is a question ("what can it do?"), not a mistake: the help listing the
             # commands, on stdout, exit 0 (as ``--help``); a wrong command line is still exit 2.
-            return _write(build_parser().format_help(), 0)
+            return write_stdout(build_parser().format_help(), 0)
         try:
             args = build_parser().parse_args(argv)
         except Shown as shown:  # --help, --version
-            return _write(shown.text, 0)
+            return write_stdout(shown.text, 0)
         return _command(args)
-    except _Stopped as stop:
-        return _write(_failed(argv, args, "interrupted", str(stop), str(stop)), 128 + stop.signum, failed=True)
+    except Stopped as stop:
+        return write_stdout(_failed(argv, args, "interrupted", str(stop), str(stop)), 128 + stop.signum, failed=True)
     except (SceneError, UsageError) as err:
         err = as_typed(err) if isinstance(err, UsageError) else err  # the flag typed, not the Python name
-        return _write(_failed(argv, args, _kind(err), str(err), f"error: {err}"), 2, failed=True)
+        return write_stdout(_failed(argv, args, _kind(err), str(err), f"error: {err}"), 2, failed=True)
     except AlgkinError as err:
-        return _write(_failed(argv, args, _kind(err), str(err), f"failed: {err}"), 1, failed=True)
+        return write_stdout(_failed(argv, args, _kind(err), str(err), f"failed: {err}"), 1, failed=True)
 
 
 def _command(args):
@@ -86,12 +86,12 @@ def _command(args):
     from .paths import check_paths
 
     if sys.stdout is None:  # closed (``>&-``): no work whose result could not be written
-        return _write("", 0)
+        return write_stdout("", 0)
     check_paths(args)  # before any work: every output writable, none over an input
     with progress.shown(args.quiet):  # ended, and its line cleared, before anything is said
         text, code, *files = _run(args)
     _save(*files)
-    return _write(text, code)  # a signal while writing (to a slow reader) is caught too
+    return write_stdout(text, code)  # a signal while writing (to a slow reader) is caught too
 
 
 def _run(args):
@@ -118,7 +118,7 @@ def _failed(argv, args, kind, message, line):
     from .commands import COMMANDS
     from ...runtime.terminal import one_line
 
-    _say(one_line(line))
+    say(one_line(line))
     if not (getattr(args, "json", False) if args is not None else "--json" in argv):
         return ""
     command = args.command if args is not None else next(iter(argv), None)

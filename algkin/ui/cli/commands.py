@@ -8,8 +8,8 @@ import pathlib
 from ...errors import UsageError
 from ...runtime.validation import real
 from .sweep import COMMANDS as SWEEP_COMMANDS
-from .reports import (_extremum_forms, _latex_lines, _render, _report_accuracy, _report_curve, _report_derive,
-                      _report_extremum, _report_show, _report_singular, _report_toggles, _verification_line,
+from .reports import (extremum_forms, latex_lines, render, report_accuracy, report_curve, report_derive,
+                      report_extremum, report_show, report_singular, report_toggles, verification_line,
                       terminal_safe)
 
 __all__ = ["COMMANDS"]
@@ -89,8 +89,8 @@ def _cmd_extremum(args):
     angles = _range(args.range) if args.range else None
     found = extremum(_scene_of(args), args.of, angles, params=args.param)
     if args.latex:
-        return _latex_lines(_extremum_forms(found)), 0
-    return _render(args, found.to_json(), _report_extremum), 0
+        return latex_lines(extremum_forms(found)), 0
+    return render(args, found.to_json(), report_extremum), 0
 
 
 def _cmd_toggles(args):
@@ -101,7 +101,7 @@ def _cmd_toggles(args):
     document = toggles(scene).to_json()
     if document["unit"] == "deg":  # a turning input's: the output's limit positions and time ratio
         document.update(limits(scene).to_json())
-    return _render(args, document, _report_toggles), 0
+    return render(args, document, report_toggles), 0
 
 
 def _cmd_singular(args):
@@ -109,7 +109,7 @@ def _cmd_singular(args):
 
     found = singular(_scene_of(args, ()), args.point, samples=args.samples, seed=args.seed)
     document = found.to_json()
-    return _render(args, document, _report_singular), _verdict_of(document["curve_verification"])
+    return render(args, document, report_singular), _verdict_of(document["curve_verification"])
 
 
 def _verdict_of(verification):
@@ -124,7 +124,7 @@ def _cmd_accuracy(args):
         raise UsageError("--samples", args.samples, "needs at least 10 samples per case")
     out = _figure_path("--plot", args.plot) if args.plot is not None else None
     result = accuracy(_scene_of(args), args.samples, args.seed, of=args.of)
-    text = _render(args, result.to_json(), _report_accuracy)
+    text = render(args, result.to_json(), report_accuracy)
     if out is None:
         return text, 0
     from ..plot import accuracy_figure, image
@@ -153,7 +153,7 @@ def _cmd_plot(args):
         # plot's --param names the page's sliders, which start at the values set: no clash
         written = plot_mechanism(_scene_of(args, ()), args.out, args.input, args.branch, args.modes, args.param,
                                  args.range_of)
-        return _render(args, _written(args, written), lambda d: d["out"]), 0
+        return render(args, _written(args, written), lambda d: d["out"]), 0
     for option in ("input", "branch", "modes", "param", "range_of"):
         if getattr(args, option):
             value = getattr(args, option)
@@ -171,7 +171,7 @@ def _cmd_plot(args):
     found = quantity.extremum(_range(args.range) if args.range else None)
     figure = minimum_figure(quantity, found, *against) if against else \
         quantity_figure(quantity, found, derivative=args.derivative)
-    return _render(args, _written(args, save(figure, out)), lambda d: d["out"]), 0
+    return render(args, _written(args, save(figure, out)), lambda d: d["out"]), 0
 
 
 def _written(args, out):
@@ -193,7 +193,7 @@ def _cmd_list(args):
 
     scenes = [load_scene(n) for n in catalog_names()]
     document = {"scenes": [{"name": s.name, "description": s.description} for s in scenes]}
-    return _render(args, document, lambda d: "\n".join(f"{s['name']:24} {s['description']}" for s in d["scenes"])), 0
+    return render(args, document, lambda d: "\n".join(f"{s['name']:24} {s['description']}" for s in d["scenes"])), 0
 
 
 def _cmd_show(args):
@@ -216,7 +216,7 @@ def _cmd_show(args):
         # point -> why it never assembles: dyads on two fixed bases, decided exactly
         "never_assembles": dict(compiled.never_assembles),
     }
-    return _render(args, document, _report_show), 0
+    return render(args, document, report_show), 0
 
 
 def _cmd_derive(args):
@@ -230,7 +230,7 @@ def _cmd_derive(args):
     if args.rates:
         document, rate_forms, rate_code = _rates(result, document, args)
         forms, code = forms + rate_forms, max(code, rate_code)
-    return _finish(args, out, document, _report_derive, forms, code)
+    return _finish(args, out, document, report_derive, forms, code)
 
 
 def _rates(result, document, args):
@@ -267,7 +267,7 @@ def _full_forms_target(args):
 def _finish(args, out, document, report, forms, code):
     """What derive and curve return: the JSON, the LaTeX of ``forms`` or the text report, and with
     ``--out`` the whole JSON document as a file for the parent to write."""
-    text = _latex_lines(forms) if args.latex else _render(args, document, report)
+    text = latex_lines(forms) if args.latex else render(args, document, report)
     if out is None:
         return text, code
     if not args.json:
@@ -292,7 +292,7 @@ def _cmd_curve(args):
     result = curve(_scene_of(args), args.point, **_engine(args))
     # the sympy form only for LaTeX: on a family's curve it costs seconds
     forms = [(f"curve of {result.point}", result.elimination.polynomial, "= 0")] if args.latex else []
-    return _finish(args, out, result.to_json(), _report_curve, forms, _verdict(result.verification))
+    return _finish(args, out, result.to_json(), report_curve, forms, _verdict(result.verification))
 
 
 def _cmd_verify(args):
@@ -303,8 +303,8 @@ def _cmd_verify(args):
     result = derive(_scene_of(args), args.outputs, certify=False, **_engine(args))
     document = {"scene": result.compiled.scene.name, "verification": result.verification.to_json(),
                 "branches": [b.label for b in result.branches], "timings": result.timings}
-    text = _render(args, document, lambda d: f"scene {d['scene']}, branches {', '.join(d['branches'])}\n"
-                                            + _verification_line(d["verification"]))
+    text = render(args, document, lambda d: f"scene {d['scene']}, branches {', '.join(d['branches'])}\n"
+                                            + verification_line(d["verification"]))
     return text, _verdict(result.verification)
 
 
@@ -314,8 +314,8 @@ def _cmd_export(args):
     code = export(_scene_of(args), args.outputs, args.to, args.param)
     document = {"scene": args.scene, "to": args.to, "outputs": args.outputs, "out": args.out}
     if args.out is None:
-        return _render(args, dict(document, code=code), lambda d: d["code"].rstrip("\n")), 0
-    text = _render(args, document, lambda d: f"wrote {d['to']} to {d['out']}")
+        return render(args, dict(document, code=code), lambda d: d["code"].rstrip("\n")), 0
+    text = render(args, document, lambda d: f"wrote {d['to']} to {d['out']}")
     return text, 0, [(pathlib.Path(args.out), code)]
 
 

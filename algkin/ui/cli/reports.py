@@ -4,10 +4,11 @@ import json
 
 from ...runtime.terminal import terminal_safe
 
-__all__ = ["terminal_safe"]
+__all__ = ["render", "report_show", "report_derive", "report_curve", "report_singular", "report_toggles",
+           "report_extremum", "report_accuracy", "verification_line", "latex_lines", "extremum_forms", "terminal_safe"]
 
 
-def _extremum_forms(found):
+def extremum_forms(found):
     """The minimum and maximum for ``--latex``; with ``--param``, the closed form and its input."""
     import sympy
 
@@ -21,7 +22,8 @@ def _extremum_forms(found):
     return forms
 
 
-def _report_extremum(d):
+def report_extremum(d):
+    """``algkin extremum``'s text: the critical points and range ends, the minimum and maximum, the closed form."""
     dims = ", ".join(f"{n} = {v}" for n, v in d["parameters"].items())
     angle = d.get("angle")
     unit = " deg" if angle else ""
@@ -68,7 +70,8 @@ def _interval(region):
     return f"({'-oo' if lo is None else f'{lo:.12g}'}, {'oo' if hi is None else f'{hi:.12g}'})"
 
 
-def _report_toggles(d):
+def report_toggles(d):
+    """``algkin toggles``'s text: each certified toggle, the Grashof class, the dropped artefacts (and limits)."""
     lo, hi = d["range"]
     unit = " deg" if d["unit"] == "deg" else ""
     lines = [f"toggles of {d['scene']} over {d['input']} in [{lo:g}, {hi:g}]{unit}:"]
@@ -146,7 +149,8 @@ def _place(position):
     return f"at {position['along']:.15g} along ({direction})"
 
 
-def _report_accuracy(d):
+def report_accuracy(d):
+    """``algkin accuracy``'s text: one row per strategy and case (time per sample, worst error, condition)."""
     lines = [f"accuracy of {d['point']} in {d['scene']}; truth: {d['reference']}",
              f"  {'strategy':12} {'case':13} {'samples':>7} {'ns/sample':>10} {'max rel err':>11} "
              f"{'condition':>9} {'err/(k eps)':>11}"]
@@ -156,12 +160,18 @@ def _report_accuracy(d):
     return "\n".join(lines)
 
 
-def _render(args, document, report):
-    """What the command prints: ``document`` as JSON with --json, else ``report(document)``."""
+def render(args, document, report):
+    """What the command prints: ``document`` as JSON with --json, else ``report(document)``.
+
+    >>> from types import SimpleNamespace
+    >>> render(SimpleNamespace(json=False), {"out": "a.svg"}, lambda d: d["out"])
+    'a.svg\\n'
+    """
     return (json.dumps(document, indent=2) if args.json else terminal_safe(report(document))) + "\n"
 
 
-def _report_show(d):
+def report_show(d):
+    """``algkin show``'s text: the points, unknowns, parameters, inputs and equations of the scene."""
     lines = [f"scene {d['scene']}: {d['description']}",
              "points: " + ", ".join(f"{n} ({k})" for n, k in d["points"].items()),
              "unknowns: " + ", ".join(d["system"]["unknowns"]),
@@ -173,15 +183,29 @@ def _report_show(d):
     return "\n".join(lines)
 
 
-def _latex_lines(forms):
-    """Each (caption, sympy expression, relation) as a LaTeX comment and a display equation."""
+def latex_lines(forms):
+    """Each (caption, sympy expression, relation) as a LaTeX comment and a display equation.
+
+    >>> import sympy
+    >>> print(latex_lines([("the radius", sympy.sqrt(2), "")]), end="")
+    % the radius
+    \\[ \\sqrt{2} \\]
+    """
     import sympy
 
     return "".join(f"% {caption}\n\\[ {' '.join([sympy.latex(expr), relation]).strip()} \\]\n"
                    for caption, expr, relation in forms)
 
 
-def _verification_line(v):
+def verification_line(v):
+    """A verification (``Verification.to_json()``) in one line, then one line per failure.
+
+    >>> print(verification_line({"status": "skipped"}))
+    verification skipped (--samples 0)
+    >>> print(verification_line({"status": "passed", "passed": True, "compared": 40, "samples": 20,
+    ...                          "max_abs_error": 1e-15, "failures": []}))
+    verification passed: 40 branch values on 20 samples, max abs error 1.00e-15
+    """
     if v["status"] == "skipped":
         return "verification skipped (--samples 0)"
     verdict = "passed" if v["passed"] else "FAILED"
@@ -194,7 +218,8 @@ def _timings_line(t):
     return "timings: " + ", ".join(f"{k} {v * 1e3:.1f} ms" for k, v in t.items())
 
 
-def _report_derive(d):
+def report_derive(d):
+    """``algkin derive``'s text: the eliminants' figures, each branch's closed forms, the verification."""
     lines = [f"scene {d['scene']}  (method {d['method']}, backend {d['backend']})", "eliminants:"]
     for unknown, poly in d["eliminants"].items():
         figures = d["eliminant_figures"][unknown]
@@ -207,7 +232,7 @@ def _report_derive(d):
         mark = "  (scene's choice)" if branch["selected"] else ""
         lines.append(f"  [{branch['label']}]{mark} valid when {_brief(branch['valid_when'])}")
         lines += [f"      {u} = {_brief(v)}" for u, v in branch["values"].items()]
-    lines.append(_verification_line(d["verification"]))
+    lines.append(verification_line(d["verification"]))
     forms = [*d["eliminants"].values(), *(f for b in d["branches"] for f in (b["valid_when"], *b["values"].values()))]
     if "rates" in d:
         lines += _rates_lines(d)
@@ -234,7 +259,8 @@ def _rates_lines(d):
     return lines + [f"  {f}" for f in v["failures"]]
 
 
-def _report_curve(d):
+def report_curve(d):
+    """``algkin curve``'s text: the curve, its figures, the dropped factors, the verification."""
     lines = [f"curve of {d['point']} in {d['scene']}  (method {d['method']}, backend {d['backend']})",
              f"  {_brief(d['curve'])} = 0",
              f"degree {d['degree']}, circularity {d['circularity']}, "
@@ -242,11 +268,12 @@ def _report_curve(d):
              f"{d['coefficient_bits']}-bit coefficients",
              f"dropped {len(d['dropped_factors'])} extraneous factor(s):"]
     lines += [f"  {_brief(f)}" for f in d["dropped_factors"]]
-    lines += [_verification_line(d["verification"]), _timings_line(d["timings"])]
+    lines += [verification_line(d["verification"]), _timings_line(d["timings"])]
     return "\n".join(lines + _hint([d["curve"], *d["dropped_factors"]]))
 
 
-def _report_singular(d):
+def report_singular(d):
+    """``algkin singular``'s text: each real singular point, its class and exact coordinates."""
     lines = [f"singular points of the curve of {d['point']} in {d['scene']}: degree {d['degree']}, "
              f"circularity {d['circularity']}"]
     for p in d["singular_points"]:
@@ -260,7 +287,7 @@ def _report_singular(d):
         lines.append("  no real singular point")
     for c in d["complex_singular_points"]:
         lines.append(f"  and {c['count']} complex (not real) singular points of multiplicity {c['multiplicity']}")
-    lines += [_verification_line(d["curve_verification"]), _timings_line(d["timings"])]
+    lines += [verification_line(d["curve_verification"]), _timings_line(d["timings"])]
     return "\n".join(lines + _hint([p["exact"][c] for p in d["singular_points"] for c in ("x", "y")]))
 
 

@@ -12,7 +12,7 @@ import signal
 import sys
 import threading
 
-__all__ = []
+__all__ = ["stopping_signals", "Stopped", "write_stdout", "say"]
 
 
 # What a stopping signal says on stderr; the exit code is 128 + its number, as a shell's.
@@ -29,11 +29,16 @@ _STDOUT_CLOSED = 128 + signal.SIGPIPE
 _STDOUT_FAILED = 1
 
 
-def _write(text, code, failed=False):
+def write_stdout(text, code, failed=False):
     """Write ``text`` to stdout and flush it now, so that a closed pipe shows here and not at
     exit; the exit code: ``code``, _STDOUT_CLOSED if the reader has gone, _STDOUT_FAILED (and one
     line on stderr) if stdout cannot be written. A command that ``failed`` has said its line and
-    keeps its code: stderr's one line is the first cause."""
+    keeps its code: stderr's one line is the first cause.
+
+    >>> write_stdout("done\\n", 0)
+    done
+    0
+    """
     try:
         if sys.stdout is None:
             raise OSError(errno.EBADF, "it is closed")
@@ -46,7 +51,7 @@ def _write(text, code, failed=False):
         _drop_stdout()
         if failed:
             return code
-        _say(f"cannot write to standard output: {err.strerror or err}")
+        say(f"cannot write to standard output: {err.strerror or err}")
         return _STDOUT_FAILED
     return code
 
@@ -58,7 +63,7 @@ def _drop_stdout():
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
 
 
-def _say(line):
+def say(line):
     """``line`` on stderr, after ``algkin: ``; nothing if stderr cannot take it (closed or full)."""
     if sys.stderr is None:
         return  # print(file=None) would write to stdout
@@ -66,7 +71,7 @@ def _say(line):
         print(f"algkin: {line}", file=sys.stderr, flush=True)
 
 
-class _Stopped(BaseException):
+class Stopped(BaseException):
     """A stopping signal (SIGINT, SIGTERM, SIGHUP) while a command runs, raised so that every
     ``finally`` on the way out runs: a budget's child is killed and joined. Not an AlgkinError:
     like KeyboardInterrupt, no ``except Exception`` may swallow it."""
@@ -77,8 +82,8 @@ class _Stopped(BaseException):
 
 
 @contextlib.contextmanager
-def _stopping_signals(restore=True):
-    """While the block runs, the stopping signals raise ``_Stopped``; then the handlers found are back,
+def stopping_signals(restore=True):
+    """While the block runs, the stopping signals raise ``Stopped``; then the handlers found are back,
     or unless ``restore``, the system's defaults: a signal while the process ends (its exit
     handlers) ends it as any program, with no ``KeyboardInterrupt`` traceback."""
     if threading.current_thread() is not threading.main_thread():
@@ -94,7 +99,7 @@ def _stopping_signals(restore=True):
 
 
 def _stop(signum, frame):
-    """Raise the signal as ``_Stopped``, once: a second signal must not cut the clean-up short."""
+    """Raise the signal as ``Stopped``, once: a second signal must not cut the clean-up short."""
     for each in _STOPS:
         signal.signal(each, signal.SIG_IGN)
-    raise _Stopped(signum)
+    raise Stopped(signum)

@@ -35,7 +35,7 @@ from importlib import resources
 from ...runtime.files import write_atomic
 from .jscode import branch_function
 
-__all__ = ["page", "model", "slider_range", "parameter_range", "write", "fill", "script_json"]
+__all__ = ["page", "model", "slider_range", "parameter_range", "parameter_slider", "write", "fill", "script_json"]
 
 _SLOT = re.compile(r"\{\{(\w+)\}\}")
 # Inside <script>, "<" could close the element or open a comment, and U+2028/U+2029 end a
@@ -64,8 +64,16 @@ def parameter_range(motion, name, ranges=None):
     return slider_range(motion.defaults[name]) if bounds is None else tuple(float(b) for b in bounds)
 
 
-def _slider(name, bounds, value):
-    return {"name": name, "lo": bounds[0], "hi": bounds[1], "value": value}
+def parameter_slider(motion, name, ranges=None):
+    """A symbolic dimension's slider, ``{name, lo, hi, value}``: its bounds (``parameter_range``)
+    and its default.
+
+    >>> from algkin.analyses.motion import Motion
+    >>> parameter_slider(Motion("fourbar", ["a"]), "a", {"a": (1, 3)})
+    {'name': 'a', 'lo': 1.0, 'hi': 3.0, 'value': 1.0}
+    """
+    lo, hi = parameter_range(motion, name, ranges)
+    return {"name": name, "lo": lo, "hi": hi, "value": motion.defaults[name]}
 
 
 def model(motion, inputs=None, branch=None, ranges=None):
@@ -77,7 +85,7 @@ def model(motion, inputs=None, branch=None, ranges=None):
         "description": motion.scene.description,
         "inputs": [{"name": n, "lo": s.span[0], "hi": s.span[1], "value": starts[n], "angle": s.is_angle}
                    for n, s in motion.inputs.items()],
-        "params": [_slider(p, parameter_range(motion, p, ranges), motion.defaults[p]) for p in motion.params],
+        "params": [parameter_slider(motion, p, ranges) for p in motion.params],
         "branches": [{"label": b.label, "selected": b.selected, "blocks": list(b.discriminants)}
                      for b in motion.branches],
         "start": motion.branch_index(branch),

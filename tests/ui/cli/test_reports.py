@@ -10,7 +10,7 @@ import pytest
 import sympy
 
 import algkin
-from algkin.ui.cli.reports import _report_toggles
+from algkin.ui.cli.reports import report_toggles
 
 from .test_usage import ROOT, run_cli
 
@@ -45,7 +45,7 @@ def test_toggles_text_puts_each_dropped_factor_on_one_short_line():
     long_factor = " + ".join(f"{k}*c_t**{k}" for k in range(1, 80))
     document = {"scene": "s", "input": "t", "unit": "deg", "range": [0, 360], "toggles": [], "grashof": None,
                 "artefacts": [{"eliminant": "B_x", "factor": long_factor, "why": "no real root\n  (certified)"}]}
-    lines = _report_toggles(document).splitlines()
+    lines = report_toggles(document).splitlines()
     assert all(len(line) <= 250 for line in lines), lines
     assert lines[-2].startswith("dropped from disc(B_x): 1*c_t**1 + ") and "(certified)" in lines[-2]
     assert lines[-1] == "full factors: --json"
