@@ -37,11 +37,11 @@ approach to a dead centre), and the mechanism translated 1e7 away. A sample the 
 cannot certify (on the side of a toggle where the branch does not assemble) is left out.
 """
 
-import dataclasses
 import functools
 import time
 from dataclasses import dataclass
 
+import attrs
 import numpy as np
 import sympy
 
@@ -325,7 +325,7 @@ def _near_folds(subject):
 def _translated(scene, offset):
     """The scene moved by (offset, offset): every ground point shifted."""
     points = {n: (Fixed(p.x + offset, p.y + offset) if isinstance(p, Fixed) else p) for n, p in scene.points.items()}
-    return dataclasses.replace(scene, points=points)
+    return attrs.evolve(scene, points=points)
 
 
 def accuracy(scene, samples=2000, seed=0, set=None, of=None):  # noqa: A002 - the public name (the command line's --set)

@@ -13,10 +13,11 @@ c_angle/2 + s_angle*sqrt((5 - 4*c_angle)*(c_angle + 5))/(5 - 4*c_angle) + 1
 """
 
 import itertools
-from dataclasses import dataclass
 
+import attrs
 import sympy
 
+from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled
 from ..scene.implicit import reduce_on_circles
 from ..scene.implicit.algebra import Circles, tidy_ratio
@@ -25,14 +26,18 @@ from ..system import symbol
 __all__ = ["Branch", "closed_forms", "reduce_on_circles"]
 
 
-@dataclass(frozen=True)
+@attrs.frozen
 class Branch:
-    """One assembly mode: its labels, the closed form of every unknown, where it is real."""
+    """One assembly mode: its labels, the closed form of every unknown, where it is real (an
+    immutable, hashable value)."""
 
     label: str
-    labels: dict[str, str]  # dyad point -> 'left' / 'right', slider point -> 'ahead' / 'behind'
-    values: dict[str, sympy.Expr]  # unknown -> sympy expression in inputs' c_*, s_* and parameters
-    discriminants: dict[str, sympy.Expr]  # dyad or slider point -> expression that must be >= 0
+    # dyad point -> 'left' / 'right', slider point -> 'ahead' / 'behind'
+    labels: FrozenDict[str, str] = attrs.field(converter=frozen)
+    # unknown -> sympy expression in inputs' c_*, s_* and parameters
+    values: FrozenDict[str, sympy.Expr] = attrs.field(converter=frozen)
+    # dyad or slider point -> expression that must be >= 0
+    discriminants: FrozenDict[str, sympy.Expr] = attrs.field(converter=frozen)
     selected: bool  # the branch the scene file asks for
 
     @property

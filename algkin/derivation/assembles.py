@@ -24,13 +24,12 @@ algkin.errors.SceneError: fourbar.toml: points.B: assembles only at theta = 0° 
 
 from __future__ import annotations
 
-import collections
-import dataclasses
 import math
 from collections.abc import Sequence
 from fractions import Fraction
 from typing import Any
 
+import attrs
 import numpy as np
 import sympy
 
@@ -39,6 +38,7 @@ from ..branches.certify import interval_keys
 from ..errors import SceneError
 from ..evaluate import ARB, NUMPY
 from ..evaluate.program import compile_program
+from ..runtime.cache import BoundedCache
 from ..scene import Compiled
 from ..system import input_values, symbol
 from ..verify.check import real_floats
@@ -49,8 +49,8 @@ GRID = 721  # inputs of the float grid over the range, as check_assembly's
 NARROW = 1 / 4  # a branch real on less of the grid: its labels are certified, the samples drawn where it may be
 STILL = 1e-4  # undecided stretches together narrower than this part of the range, nothing certified: no motion
 KEPT = 32  # compiled scenes whose answer is kept
-_FOUND: collections.OrderedDict[tuple[int, int], tuple[Any, SceneError | None, Compiled, Any]] = \
-    collections.OrderedDict()
+# where_assembled's answers (or the scene's error) by the compiled scene, its file and its branches
+FOUND: BoundedCache[tuple[Any, SceneError | None]] = BoundedCache(KEPT)
 STRUCTURE = "a structure, not a motion"  # what a structure's error says (the sweep's status reads it)
 
 
@@ -75,18 +75,18 @@ def where_assembled(compiled: Compiled, branches: Sequence[Branch]) -> dict[str,
 
     Found once per compiled scene and branches (the pipeline asks before its witnesses, and again
     to verify)."""
-    key = (id(compiled), id(branches))
-    if key not in _FOUND:
-        try:
-            _FOUND[key] = (_where(compiled, branches), None, compiled, branches)  # the last two keep the ids
-        except SceneError as err:
-            _FOUND[key] = (None, err, compiled, branches)
-        while len(_FOUND) > KEPT:
-            _FOUND.popitem(last=False)
-    where, error, _, _ = _FOUND[key]
+    branches = tuple(branches)
+    where, error = FOUND.get((compiled, compiled.scene.source, branches), lambda: _found(compiled, branches))
     if error is not None:
         raise error
     return where
+
+
+def _found(compiled: Compiled, branches: Sequence[Branch]) -> tuple[Any, SceneError | None]:
+    try:
+        return _where(compiled, branches), None
+    except SceneError as err:
+        return None, err
 
 
 def _where(compiled: Compiled, branches: Sequence[Branch]) -> dict[str, list[tuple[float, float]]] | None:
@@ -179,7 +179,7 @@ def _culprit(branch: Branch, compiled: Compiled) -> str:
     (_, variables), = compiled.system.inputs.items()
     lo, hi = compiled.scene.inputs[next(iter(compiled.system.inputs))].span
     for point, discriminant in branch.discriminants.items():
-        alone = dataclasses.replace(branch, discriminants={point: discriminant})
+        alone = attrs.evolve(branch, discriminants={point: discriminant})
         if not any(i["status"] == "certified" for i in certify_label(alone, variables, lo, hi, _balls(compiled))):
             return point
     return next(iter(branch.discriminants))

@@ -7,16 +7,15 @@
 
 from __future__ import annotations
 
-import collections
 import contextlib
 import functools
 import math
 import time
-from collections.abc import Iterator, Sequence
-from dataclasses import dataclass
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from fractions import Fraction
 from typing import Any
 
+import attrs
 import flint
 import sympy
 
@@ -26,6 +25,8 @@ from ..eliminate import DEFAULT_METHOD, Budget, Elimination, Witness, current as
 from ..errors import UsageError
 from ..evaluate import ARB, evaluate
 from ..runtime import validation
+from ..runtime.cache import BoundedCache
+from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled, compile_scene
 from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
@@ -41,22 +42,36 @@ WITNESS_BITS = 256
 WITNESSES_PER_BRANCH = 3
 FAMILY_UNKNOWNS = 4  # eliminated unknowns up to which a family stays with the linear method
 PREPARED_SCENES = 32  # compiled scenes (with their branches) kept for the next call
-_PREPARED = collections.OrderedDict()
-_CHECKED = collections.OrderedDict()
+# What a derivation or a curve builds of a scene before eliminating, kept by the values it is
+# built from (a scene, its outputs and symbolic dimensions; a compiled scene and its branches):
+# an equal question later in the process starts at the elimination. ``clear()`` them for a cold start.
+PREPARED: BoundedCache[_Prepared] = BoundedCache(PREPARED_SCENES)
+CHECKED: BoundedCache[tuple[Any, ...]] = BoundedCache(PREPARED_SCENES)
 
 
-@dataclass
+def _branches(branches: Iterable[Branch]) -> tuple[Branch, ...]:
+    return tuple(branches)
+
+
+def _intervals(certified: Iterable[Iterable[Mapping[str, Any]] | None]) -> tuple[Any, ...]:
+    """Per branch, its certified intervals as frozen mappings (None where labels were not certified)."""
+    return tuple(None if c is None else tuple(frozen(i) for i in c) for c in certified)
+
+
+@attrs.frozen
 class Derivation:
-    """What ``derive`` found for a scene: system, eliminants, branches, verification."""
+    """What ``derive`` found for a scene: system, eliminants, branches, verification (an
+    immutable, hashable value; its timings are not part of what it equals)."""
 
     compiled: Compiled
     method: str
     backend: str
-    eliminations: dict[str, Elimination[Any]]  # unknown -> its eliminant
-    branches: list[Branch]
+    eliminations: FrozenDict[str, Elimination[Any]] = attrs.field(converter=frozen)  # unknown -> its eliminant
+    branches: tuple[Branch, ...] = attrs.field(converter=_branches)
     verification: Verification
-    timings: dict[str, float]
-    certified: list[Any] | None = None  # per branch: [{from_deg, to_deg, status}], one-input scenes
+    timings: FrozenDict[str, float] = attrs.field(converter=frozen, eq=False)
+    # per branch: ({from_deg, to_deg, status}, ...), one-input scenes
+    certified: tuple[Any, ...] = attrs.field(default=(), converter=_intervals)
 
     def to_json(self) -> dict[str, Any]:
         system = self.compiled.system
@@ -69,15 +84,17 @@ class Derivation:
             "outputs": {n: list(v) for n, v in self.compiled.outputs.items()},
             "eliminants": {u: str(e.polynomial) for u, e in self.eliminations.items()},
             "eliminant_figures": {u: _figures(e) for u, e in self.eliminations.items()},
-            "branches": [dict(b.to_json(), certified=c) for b, c in zip(self.branches, self.certified)],
+            "branches": [dict(b.to_json(), certified=None if c is None else [dict(i) for i in c])
+                         for b, c in zip(self.branches, self.certified)],
             "verification": self.verification.to_json(),
-            "timings": self.timings,
+            "timings": dict(self.timings),
         }
 
 
-@dataclass
+@attrs.frozen
 class CurveResult:
-    """The implicit curve of a point: polynomial, figures, dropped factors, verification."""
+    """The implicit curve of a point: polynomial, figures, dropped factors, verification (an
+    immutable, hashable value; its timings are not part of what it equals)."""
 
     compiled: Compiled
     point: str
@@ -87,7 +104,7 @@ class CurveResult:
     circularity: int
     irreducible: bool
     verification: Verification
-    timings: dict[str, float]
+    timings: FrozenDict[str, float] = attrs.field(converter=frozen, eq=False)
 
     def to_json(self) -> dict[str, Any]:
         return {
@@ -107,7 +124,7 @@ class CurveResult:
             "coefficient_bits": self.elimination.bits,
             "dropped_factors": [str(f) for f in self.elimination.dropped],
             "verification": self.verification.to_json(),
-            "timings": self.timings,
+            "timings": dict(self.timings),
         }
 
 
@@ -221,24 +238,24 @@ def _verify(compiled, branches, samples, seed, polynomials, factors=None):
 
 def _checked(compiled, branches):
     """What the check needs of a compiled scene, with the dimensions at their defaults (once per scene)."""
-    key = (id(compiled), id(branches))
-    if key not in _CHECKED:
-        system = compiled.system
-        defaults = {symbol(n): compiled.parameter_values[n] for n in system.parameters}
-        fixed = type(system)(system.unknowns, (), system.inputs,
-                             tuple(sympy.expand(e.xreplace(defaults)) for e in system.equations),
-                             system.nonnegative)
-        inputs = {n: (float(i.to_radians(i.lo)), float(i.to_radians(i.hi)))
-                  for n, i in compiled.scene.inputs.items() if n in system.inputs}
-        _CHECKED[key] = (
-            fixed,
-            [(i.point, i.expr.xreplace(defaults), i.positive, i.negative) for i in compiled.indicators],
-            [(b.labels, {u: v.xreplace(defaults) for u, v in b.values.items()},
-              {p: d.xreplace(defaults) for p, d in b.discriminants.items()}) for b in branches],
-            inputs, compiled, branches)  # the last two keep the ids above from being reused
-        while len(_CHECKED) > PREPARED_SCENES:
-            _CHECKED.pop(next(iter(_CHECKED)))
-    return _CHECKED[key][:4]
+    branches = tuple(branches)
+    return CHECKED.get((compiled, branches), lambda: _check_setup(compiled, branches))
+
+
+def _check_setup(compiled, branches):
+    system = compiled.system
+    defaults = {symbol(n): compiled.parameter_values[n] for n in system.parameters}
+    fixed = type(system)(system.unknowns, (), system.inputs,
+                         tuple(sympy.expand(e.xreplace(defaults)) for e in system.equations),
+                         system.nonnegative)
+    inputs = {n: (float(i.to_radians(i.lo)), float(i.to_radians(i.hi)))
+              for n, i in compiled.scene.inputs.items() if n in system.inputs}
+    return (
+        fixed,
+        tuple((i.point, i.expr.xreplace(defaults), i.positive, i.negative) for i in compiled.indicators),
+        tuple((b.labels, frozen({u: v.xreplace(defaults) for u, v in b.values.items()}),
+               frozen({p: d.xreplace(defaults) for p, d in b.discriminants.items()})) for b in branches),
+        frozen(inputs))
 
 
 def check_setup(compiled, branches):
@@ -269,25 +286,20 @@ class _Prepared:
         """``(branches, witnesses)``, found on the first call."""
         if self.built is None:
             with _timed(timings, "branches"):
-                branches = closed_forms(self.compiled)
+                branches = tuple(closed_forms(self.compiled))
                 check_assembly(self.compiled, branches)
                 where_assembled(self.compiled, branches)  # a structure refused before its witnesses
-                self.built = branches, witnesses(self.compiled, branches)
+                self.built = branches, tuple(witnesses(self.compiled, branches))
         timings.setdefault("branches", 0.0)
         return self.built
 
 
 def _prepared(scene, outputs, params, timings):
-    """The compiled scene, from the cache when the same scene was compiled before."""
-    key = (repr(scene), tuple(outputs or ()), tuple(params))
+    """The compiled scene, kept from before when the same scene was compiled for the same
+    outputs and symbolic dimensions (its file too: the errors found later name it)."""
+    key = (scene, scene.source, tuple(outputs or ()), tuple(params))
     with _timed(timings, "compile"):
-        if key in _PREPARED:
-            _PREPARED.move_to_end(key)
-        else:
-            _PREPARED[key] = _Prepared(compile_scene(scene, outputs, params))
-            while len(_PREPARED) > PREPARED_SCENES:
-                _PREPARED.popitem(last=False)
-    return _PREPARED[key]
+        return PREPARED.get(key, lambda: _Prepared(compile_scene(scene, outputs, params)))
 
 
 @contextlib.contextmanager

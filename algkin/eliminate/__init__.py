@@ -61,7 +61,7 @@ def backend_names() -> list[str]:
     return sorted(BACKENDS)
 
 
-@dataclass
+@dataclass(frozen=True, eq=False)  # hashed by identity: its polynomials live in a backend
 class Elimination(Generic[P]):
     """An eliminant: primitive, squarefree, its factors kept and dropped, and its figures.
 

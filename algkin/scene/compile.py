@@ -11,13 +11,13 @@ points (dyads, sliders) and the asked-for outputs become unknowns.
 AB**2 - 122500*c_theta**2 + 56000*c_theta - 122500*s_theta**2 + 280000*s_theta - 166400
 """
 
-import dataclasses
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass
 
+import attrs
 import sympy
 
 from ..errors import SceneError, UsageError
+from ..runtime.frozen import FrozenDict, frozen
 from ..system import System, symbol
 from .constructions import Builder, Construction, Dyad, Indicator, Unbuildable
 from .expr import MAX_VALUE_BITS, bits_bound, irrational
@@ -33,7 +33,7 @@ __all__ = ["Compiled", "DyadSpec", "SliderSpec", "AngleOutput", "compile_scene",
 Substitution = Mapping[sympy.Symbol, sympy.Expr]
 
 
-@dataclass(frozen=True)
+@attrs.frozen
 class AngleOutput:
     """An angle output compiled: the unknowns standing for it.
 
@@ -55,23 +55,30 @@ class AngleOutput:
         return len(self.points) == 2
 
 
-@dataclass(frozen=True)
+@attrs.frozen
 class Compiled:
-    """A scene compiled for some outputs: the system plus what branches need to know."""
+    """A scene compiled for some outputs: the system plus what branches need to know (an
+    immutable, hashable value)."""
 
     scene: Scene
     system: System
-    coordinates: dict[str, Point]  # needed point -> (x, y) in system variables
+    # needed point -> (x, y) in system variables
+    coordinates: FrozenDict[str, Point] = attrs.field(converter=frozen)
     dyads: tuple[DyadSpec, ...]  # in construction order
     indicators: tuple[Indicator, ...]  # one per dyad or slider
-    definitions: dict[str, sympy.Expr]  # output unknown -> its value in other variables (sqrt for distances)
-    outputs: dict[str, tuple[str, ...]]  # output name -> unknown names standing for it
-    parameter_values: dict[str, sympy.Expr]  # every scene parameter -> exact default
+    # output unknown -> its value in other variables (sqrt for distances)
+    definitions: FrozenDict[str, sympy.Expr] = attrs.field(converter=frozen)
+    # output name -> unknown names standing for it
+    outputs: FrozenDict[str, tuple[str, ...]] = attrs.field(converter=frozen)
+    # every scene parameter -> exact default
+    parameter_values: FrozenDict[str, sympy.Expr] = attrs.field(converter=frozen)
     symbolic: tuple[str, ...]  # parameters kept symbolic
-    implicit: tuple[ImplicitSpec, ...] = ()  # dyads and sliders, in construction order
-    angles: dict[str, AngleOutput] = dataclasses.field(default_factory=dict)  # angle output name -> its unknowns
+    # dyads and sliders, in construction order
+    implicit: tuple[ImplicitSpec, ...] = ()
+    # angle output name -> its unknowns
+    angles: FrozenDict[str, AngleOutput] = attrs.field(factory=FrozenDict, converter=frozen)
     # dyad on two fixed bases -> why it never assembles (decided exactly; moving bases are not decided here)
-    never_assembles: dict[str, str] = dataclasses.field(default_factory=dict)
+    never_assembles: FrozenDict[str, str] = attrs.field(factory=FrozenDict, converter=frozen)
 
     @property
     def circles(self) -> Circles:
@@ -114,12 +121,12 @@ def _requested_output(scene: Scene, text: str, generated: Mapping[str, str]) -> 
     ``angle(P, Q)``...), named after its points; SceneError if it cannot be one."""
     output = parse_output(text, text, scene.points, scene.source, "outputs")
     if output.kind == "dist":
-        output = dataclasses.replace(output, name=f"dist_{output.points[0]}_{output.points[1]}")
+        output = attrs.evolve(output, name=f"dist_{output.points[0]}_{output.points[1]}")
         if output.name in scene.parameters:
             raise UsageError("outputs", text, f"its unknown {output.name!r} is the name of a parameter")
         check_symbol_name(scene.source, "outputs", output.name, generated)
     elif output.kind == "angle":
-        output = dataclasses.replace(output, name="_".join(("angle",) + output.points))
+        output = attrs.evolve(output, name="_".join(("angle",) + output.points))
     return output
 
 

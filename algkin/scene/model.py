@@ -1,9 +1,9 @@
 """Scene data: parameters, inputs, points built by constructions, named outputs."""
 
-from dataclasses import dataclass, field
-
+import attrs
 import sympy
 
+from ..runtime.frozen import FrozenDict, frozen
 from .constructions import Construction
 
 __all__ = ["Scene", "Input", "Output", "range_problem", "length_range_problem"]
@@ -42,7 +42,7 @@ def length_range_problem(lo: sympy.Rational, hi: sympy.Rational) -> str | None:
     return None
 
 
-@dataclass(frozen=True)
+@attrs.frozen
 class Input:
     """What drives the mechanism: an angle (``lo``/``hi`` in ``unit``, 'deg' or 'rad') or, with
     ``unit`` 'length', a length (a linear actuator, a string) taking the values ``lo``..``hi``.
@@ -88,7 +88,7 @@ class Input:
         return f"{value:g}°" if self.is_angle else f"{value:g}"
 
 
-@dataclass(frozen=True)
+@attrs.frozen
 class Output:
     """A named output: ``kind`` is 'point', 'dist', 'x' or 'y' of ``points``."""
 
@@ -98,19 +98,34 @@ class Output:
     text: str
 
 
-@dataclass(frozen=True)
+@attrs.frozen
 class Scene:
-    """A declarative mechanism, as loaded from a scene file (see ``algkin.scene.load``)."""
+    """A declarative mechanism, as loaded from a scene file (see ``algkin.scene.load``).
+
+    An immutable value (its tables are ``FrozenDict``): ``attrs.evolve`` or
+    ``algkin.scene.with_values`` make changed copies, and a scene is its own cache key.
+
+    >>> from algkin.scene import load_scene
+    >>> scene = load_scene("fourbar")
+    >>> scene.parameters["a"] = 99
+    Traceback (most recent call last):
+    ...
+    TypeError: 'FrozenDict' object does not support item assignment
+    >>> hash(scene) == hash(load_scene("fourbar"))
+    True
+    """
 
     name: str
     description: str
-    parameters: dict[str, sympy.Expr]  # name -> default value (may use earlier parameters)
-    inputs: dict[str, Input]
-    points: dict[str, Construction]  # in file order
-    outputs: dict[str, Output]
-    source: str = field(default="<scene>", compare=False)
+    # name -> default value (may use earlier parameters)
+    parameters: FrozenDict[str, sympy.Expr] = attrs.field(converter=frozen)
+    inputs: FrozenDict[str, Input] = attrs.field(converter=frozen)
+    points: FrozenDict[str, Construction] = attrs.field(converter=frozen)  # in file order
+    outputs: FrozenDict[str, Output] = attrs.field(converter=frozen)
+    source: str = attrs.field(default="<scene>", eq=False)
     # name -> (lo, hi), for sliders and sweeps
-    parameter_ranges: dict[str, tuple[sympy.Rational, sympy.Rational]] = field(default_factory=dict)
+    parameter_ranges: FrozenDict[str, tuple[sympy.Rational, sympy.Rational]] = attrs.field(
+        factory=FrozenDict, converter=frozen)
 
     def parameter_symbols(self) -> dict[str, sympy.Symbol]:
         return {name: sympy.Symbol(name, real=True) for name in self.parameters}

@@ -18,10 +18,10 @@ Traceback (most recent call last):
 algkin.errors.UsageError: set='b=<an integer of 2001 bits>': number too large or too precise (more than 1024 bits)
 """
 
-import dataclasses
 from collections.abc import Iterable, Mapping
 from fractions import Fraction
 
+import attrs
 import sympy
 
 from ..errors import UsageError
@@ -71,7 +71,7 @@ def with_values(scene: Scene, values: Mapping[str, object] | None, params: Itera
         defaults[name] = _exact(name, value)
     from .load import as_scene
 
-    return as_scene(dataclasses.replace(scene, parameters=defaults))
+    return as_scene(attrs.evolve(scene, parameters=defaults))
 
 
 def _exact(name: str, value: object) -> sympy.Expr:

@@ -75,7 +75,7 @@ def _curve(design: Design) -> dict[str, Any]:
     found = _verified_curve(design)
     return {"curve_point": design.point, "curve_degree": found.degree, "curve_circularity": found.circularity,
             "curve_irreducible": bool(found.irreducible), "curve_polynomial": str(found.elimination.polynomial),
-            "curve_verification": found.verification.status}
+            "curve_verification": found.verification.status.value}
 
 
 def _grashof(design: Design) -> dict[str, Any]:

@@ -13,13 +13,15 @@
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass, field
+from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
+import attrs
 import numpy as np
 import sympy
 
 from ..errors import ComputationError
+from ..runtime.frozen import FrozenDict, frozen
 
 if TYPE_CHECKING:
     import flint
@@ -37,7 +39,7 @@ def variables_of(expr: sympy.Basic) -> list[str]:
     return sorted(str(s) for s in expr.free_symbols)
 
 
-def inputs_json(inputs: dict[str, tuple[str, ...]]) -> dict[str, dict[str, str]]:
+def inputs_json(inputs: Mapping[str, tuple[str, ...]]) -> dict[str, dict[str, str]]:
     """Each input's variables by role: ``{"cos": c, "sin": s}`` for an angle, ``{"value": t}`` for a length."""
     return {name: dict(zip(("cos", "sin") if len(v) == 2 else ("value",), v)) for name, v in inputs.items()}
 
@@ -58,23 +60,23 @@ def input_values(variables: tuple[str, ...], value: Any) -> dict[str, Any]:
     return {variables[0]: np.cos(value), variables[1]: np.sin(value)}
 
 
-@dataclass(frozen=True)
+@attrs.frozen
 class System:
     """Polynomial equations ``= 0`` with exact rational coefficients.
 
     ``unknowns`` are solved for; ``inputs`` map an input name to its variables: an angle's
     ``(cos, sin)`` pair, tied by ``cos**2 + sin**2 - 1`` among the equations, or a length's
     one variable ``(t,)``; ``parameters`` are symbolic dimensions; ``nonnegative`` lists
-    unknowns known to be >= 0 (distances).
+    unknowns known to be >= 0 (distances). An immutable, hashable value.
     """
 
     unknowns: tuple[str, ...]
     parameters: tuple[str, ...]
-    inputs: dict[str, tuple[str, ...]]
+    inputs: FrozenDict[str, tuple[str, ...]] = attrs.field(converter=frozen)
     equations: tuple[sympy.Expr, ...]
-    nonnegative: tuple[str, ...] = field(default=())
+    nonnegative: tuple[str, ...] = ()
 
-    def __post_init__(self) -> None:
+    def __attrs_post_init__(self) -> None:
         known = set(self.variables)
         for eq in self.equations:
             stray = set(variables_of(eq)) - known
@@ -105,11 +107,6 @@ class System:
 
         ring = flint_context(self.variables or ("_",))
         return tuple(to_flint(e, ring) for e in self.equations)
-
-    def __getstate__(self) -> dict[str, Any]:
-        """Pickled (out of a budget's child process) without the python-flint forms, which do
-        not pickle; they are converted again when asked for."""
-        return {k: v for k, v in self.__dict__.items() if k != "polynomials"}
 
     def to_json(self) -> dict[str, Any]:
         return {

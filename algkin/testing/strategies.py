@@ -33,10 +33,10 @@ output ``phi = "angle(X, B)"`` too, X a point at a fixed distance from B (or
 >>> check()
 """
 
-import dataclasses
 import math
 from fractions import Fraction
 
+import attrs
 import numpy as np
 import sympy
 from hypothesis import assume, strategies as st
@@ -413,7 +413,7 @@ def with_ranges(draw, scene_strategy=None):
     for name in names:
         lo, width = draw(_coordinates), draw(lengths())
         ranges[name] = (sympy.Rational(lo), sympy.Rational(lo + width))
-    return dataclasses.replace(scene, parameter_ranges=ranges)
+    return attrs.evolve(scene, parameter_ranges=ranges)
 
 
 def with_symbolic(scene_strategy=None, max_symbols=2):

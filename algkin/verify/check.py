@@ -14,11 +14,13 @@ of their label is solved again with more starts before the check says so.
 
 from __future__ import annotations
 
+import enum
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, TypeAlias
 
+import attrs
 import flint
 import numpy as np
 import sympy
@@ -27,13 +29,14 @@ from numpy.typing import NDArray
 from ..evaluate import ARB, NUMPY
 from ..evaluate.program import compile_program
 from ..runtime import progress
+from ..runtime.frozen import FrozenDict, frozen
 from ..system import System, input_values
 from .balls import BallProgram, Block, BlockCertifier, certifier_of, certify_parameters
 from .minimal import FactorCheck, structure_failures
 from .residual import ExactValue, Polynomial, PolynomialLike, polynomial_of
 from .solve import STARTS, ArrayProgram, Floats, blocks_of, solve_floats
 
-__all__ = ["Verification", "verify_branches", "WORKING_BITS", "real_floats", "decided_real"]
+__all__ = ["Verification", "Status", "verify_branches", "WORKING_BITS", "real_floats", "decided_real"]
 
 WORKING_BITS = 192
 TOLERANCE = 1e-30  # relative residual a polynomial must reach on every root (the enclosures reach ~1e-50)
@@ -50,51 +53,88 @@ Label: TypeAlias = tuple[tuple[str, str], ...]  # (point, label) pairs, sorted b
 Root: TypeAlias = list[flint.arb]  # the unknowns' enclosures, in the system's order
 
 
-@dataclass
-class Verification:
-    """What the check found: the largest error and whether every branch matched.
+class Status(str, enum.Enum):
+    """How a check ended: its JSON strings (``passed``, ``failed``, ``skipped``)."""
 
-    ``status`` is ``passed``, ``failed`` or ``skipped`` (no samples asked for); a check
+    PASSED = "passed"
+    FAILED = "failed"
+    SKIPPED = "skipped"  # no samples asked for
+
+
+@attrs.frozen
+class Verification:
+    """What the check found: the largest error and how it ended (an immutable, hashable value).
+
+    ``status`` is ``Status.PASSED``, ``FAILED`` or ``SKIPPED`` (no samples asked for); a check
     that compared nothing never passes.
 
-    >>> Verification.skipped().passed, Verification.skipped().status
+    >>> Verification.skipped().passed, Verification.skipped().status.value
     (False, 'skipped')
     """
 
     samples: int
     max_abs_error: float
-    passed: bool
+    status: Status
     compared: int = 0
     near_degenerate: int = 0
-    max_polynomial_residual: dict[str, float] = field(default_factory=dict)
-    failures: list[str] = field(default_factory=list)
+    max_polynomial_residual: FrozenDict[str, float] = attrs.field(factory=FrozenDict, converter=frozen)
+    failures: tuple[str, ...] = ()
     evaluated: int = 0  # numeric solutions the polynomials were evaluated at
-    status: str = "failed"
-    smallest_factor_residual: dict[str, list[float]] = field(default_factory=dict)  # per polynomial, per kept factor
+    # per polynomial, per kept factor
+    smallest_factor_residual: FrozenDict[str, tuple[float, ...]] = attrs.field(factory=FrozenDict,
+                                                                              converter=frozen)
     max_rel_error: float = 0.0  # the largest error over the size of its configuration: scale-free
+
+    @property
+    def passed(self) -> bool:
+        return self.status is Status.PASSED
 
     @classmethod
     def skipped(cls) -> Verification:
         """No verification was asked for (zero samples)."""
-        return cls(0, 0.0, False, status="skipped")
+        return cls(0, 0.0, Status.SKIPPED)
 
     def to_json(self) -> dict[str, Any]:
         return {
             "samples": self.samples,
-            "status": self.status,
+            "status": self.status.value,
             "max_abs_error": self.max_abs_error,
             "max_rel_error": self.max_rel_error,
             "passed": self.passed,
             "compared": self.compared,
             "evaluated": self.evaluated,
             "near_degenerate": self.near_degenerate,
-            "max_polynomial_residual": self.max_polynomial_residual,
-            "smallest_factor_residual": self.smallest_factor_residual,
-            "failures": self.failures[:10],
+            "max_polynomial_residual": dict(self.max_polynomial_residual),
+            "smallest_factor_residual": {k: list(v) for k, v in self.smallest_factor_residual.items()},
+            "failures": list(self.failures[:10]),
             "method": ("Newton multistart on the original system (floats, all samples at once), "
                        f"every root proved in arb at {WORKING_BITS} bits: two circles by the quadratic on their "
                        "radical axis, other blocks by a Krawczyk test"),
         }
+
+
+@dataclass
+class _Tally:
+    """What a check counts while it runs; ``verification()`` makes the result of it."""
+
+    samples: int = 0
+    max_abs_error: float = 0.0
+    max_rel_error: float = 0.0
+    compared: int = 0
+    near_degenerate: int = 0
+    evaluated: int = 0
+    failures: list[str] = field(default_factory=list)
+
+    def verification(self, residuals: Mapping[str, float], factors: Mapping[str, Sequence[float]]) -> Verification:
+        """The check's result, passed when nothing failed and every error is within its tolerance."""
+        passed = (not self.failures and self.max_rel_error <= MAX_ERROR
+                  and all(v <= TOLERANCE for v in residuals.values()))
+        return Verification(self.samples, self.max_abs_error, Status.PASSED if passed else Status.FAILED,
+                            compared=self.compared, near_degenerate=self.near_degenerate,
+                            max_polynomial_residual=dict(residuals), failures=tuple(self.failures),
+                            evaluated=self.evaluated,
+                            smallest_factor_residual={k: tuple(v) for k, v in factors.items()},
+                            max_rel_error=self.max_rel_error)
 
 
 class _Plan:
@@ -184,7 +224,7 @@ def verify_branches(system: System, indicators: Sequence[Indicator], branches: S
     """
     spans = {n: list((where or {}).get(n) or [span]) for n, span in inputs.items()}
     rng = np.random.default_rng(seed)
-    report = Verification(0, 0.0, False)
+    report = _Tally()
     useful = drawn = 0
     with flint.ctx.workprec(WORKING_BITS), progress.counting(samples, "samples"):
         # the plan's exact dimensions become balls at this working precision
@@ -203,15 +243,10 @@ def verify_branches(system: System, indicators: Sequence[Indicator], branches: S
             for start in range(0, count, CHUNK):  # in chunks, so that progress shows on long runs
                 useful += _check_batch(report, plan, {n: a[start:start + CHUNK] for n, a in angles.items()},
                                        rng, worst)
-    report.max_polynomial_residual = dict(worst)
     _require_comparisons(report, bool(branches), bool(plan.polynomials))
-    report.smallest_factor_residual = plan.factors.to_json()
     report.failures += plan.factors.failures(TOLERANCE, report.evaluated)
     report.failures += structure_failures(polynomials or {}, factors)
-    report.passed = (not report.failures and report.max_rel_error <= MAX_ERROR
-                     and all(v <= TOLERANCE for v in report.max_polynomial_residual.values()))
-    report.status = "passed" if report.passed else "failed"
-    return report
+    return report.verification(worst, plan.factors.to_json())
 
 
 def _batch(plan: _Plan, spans: Mapping[str, Sequence[tuple[float, float]]], rng: np.random.Generator, drawn: int,
@@ -244,7 +279,7 @@ def _uniform(rng: np.random.Generator, pieces: Sequence[tuple[float, float]], co
     return starts[index] + along - (ends[index] - widths[index])
 
 
-def _check_batch(report: Verification, plan: _Plan, angles: Mapping[str, Floats], rng: np.random.Generator,
+def _check_batch(report: _Tally, plan: _Plan, angles: Mapping[str, Floats], rng: np.random.Generator,
                  worst: dict[str, float]) -> int:
     """Solve, prove and compare every sample of the batch; how many compared something."""
     count = len(next(iter(angles.values()), [None]))
@@ -379,7 +414,7 @@ def _magnitudes(plan: _Plan, floats: Mapping[str, Floats], samples: list[_Sample
     return rows
 
 
-def _check_sample(report: Verification, plan: _Plan, sample: _Sample, magnitudes: list[dict[int, float]],
+def _check_sample(report: _Tally, plan: _Plan, sample: _Sample, magnitudes: list[dict[int, float]],
                   worst: dict[str, float]) -> None:
     """Evaluate the polynomials on the sample's roots and compare its branches."""
     report.samples += 1
@@ -410,7 +445,7 @@ def _residuals(values: Mapping[str, flint.arb], sizes: Mapping[int, float]) -> C
     return residual
 
 
-def _compare(report: Verification, plan: _Plan, sample: _Sample) -> None:
+def _compare(report: _Tally, plan: _Plan, sample: _Sample) -> None:
     by_label: dict[Label | None, list[Root]] = {}
     for labels, root in zip(sample.labels, sample.roots):
         by_label.setdefault(labels, []).append(root)
@@ -448,7 +483,7 @@ def _error(plan: _Plan, branch: _Branch, values: list[flint.arb | int], root: Ro
     return error
 
 
-def _require_comparisons(report: Verification, branches: bool, polynomials: bool) -> None:
+def _require_comparisons(report: _Tally, branches: bool, polynomials: bool) -> None:
     """A check that compared nothing fails, saying why, rather than passing vacuously."""
     if not (branches or polynomials):
         report.failures.append("nothing to compare: no branch and no polynomial was given")

@@ -1,7 +1,6 @@
 """Misuse of the Python API raises algkin's own errors, naming the argument (issue: hostile input)."""
 
-import dataclasses
-
+import attrs
 import pytest
 import sympy
 
@@ -46,14 +45,14 @@ def test_a_scene_that_is_not_a_scene():
 
 def test_hand_built_scene_with_an_unknown_point_is_a_scene_error():
     scene = load_scene("chebyshev-lambda")
-    broken = dataclasses.replace(scene, points={**scene.points, "B": Dyad(("A", "Z"), (1, 1), "left")})
+    broken = attrs.evolve(scene, points={**scene.points, "B": Dyad(("A", "Z"), (1, 1), "left")})
     with pytest.raises(SceneError, match="unknown point 'Z'"):
         algkin.derive(broken, outputs=["B"], samples=0)
 
 
 def test_hand_built_scene_with_int_parameters_works():
     scene = load_scene("fourbar")
-    changed = dataclasses.replace(scene, parameters={**scene.parameters, "a": 3})
+    changed = attrs.evolve(scene, parameters={**scene.parameters, "a": 3})
     result = algkin.derive(changed, outputs=["B"], samples=2, certify=False)
     assert result.compiled.parameter_values["a"] == 3
     assert result.verification.passed

@@ -1,11 +1,11 @@
 """Figures: one command each, drawn from closed forms, with the certified points on them."""
 
-import dataclasses
 import io
 import pathlib
 import subprocess
 import sys
 
+import attrs
 import numpy as np
 import pytest
 
@@ -92,7 +92,7 @@ def test_a_dimension_named_like_a_python_keyword_is_refused_in_one_line():
 
 def test_a_scene_name_is_shown_as_text_not_mathtext():
     name = r"arm $x_{$ \frac{1}{2}$ $"
-    quantity = load(dataclasses.replace(load_scene("arm-string"), name=name)).output("AB")
+    quantity = load(attrs.evolve(load_scene("arm-string"), name=name)).output("AB")
     for figure in (quantity_figure(quantity, quantity.extremum((0, 180))), accuracy_figure(measured(name))):
         figure.savefig(io.BytesIO(), format="png")  # mathtext would raise here
         assert figure.axes[0].get_title().endswith(name)

@@ -173,7 +173,7 @@ def test_squared_factor_fails(lambda_curve):
     report = curve_check(lambda_curve, [true, true])
     assert report.max_polynomial_residual["curve"] < 1e-40
     assert not report.passed
-    assert report.failures == [f"curve is not squarefree: ({sympy.expand(true)})**2 divides it"]
+    assert report.failures == (f"curve is not squarefree: ({sympy.expand(true)})**2 divides it",)
 
 
 def test_factors_must_multiply_to_the_polynomial(lambda_curve):

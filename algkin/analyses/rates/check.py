@@ -25,6 +25,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, TypeAlias
 
+import attrs
 import flint
 import numpy as np
 import sympy
@@ -34,7 +35,7 @@ from ...evaluate import ARB, NUMPY
 from ...evaluate.program import BallProgram, compile_program
 from ...system import System, input_values, symbol
 from ...verify.balls import certifier_of, certify_parameters
-from ...verify.check import decided_real, real_floats
+from ...verify.check import Status, decided_real, real_floats
 from ...verify.solve import STARTS, blocks_of, solve_floats
 
 __all__ = ["RatesCheck", "check_rates", "WORKING_BITS", "STEP_BITS", "MAX_REL_ERROR"]
@@ -54,9 +55,10 @@ Indicator: TypeAlias = tuple[str, sympy.Expr, str, str]
 Label: TypeAlias = tuple[tuple[str, str], ...]
 
 
-@dataclass
+@attrs.frozen
 class RatesCheck:
-    """The largest error of the rates against central differences, and whether all held.
+    """The largest error of the rates against central differences, and how the check ended
+    (an immutable, hashable value).
 
     >>> RatesCheck.skipped().to_json()["status"]
     'skipped'
@@ -67,22 +69,42 @@ class RatesCheck:
     max_rel_error: float = 0.0
     max_abs_error: float = 0.0
     near_degenerate: int = 0  # samples set aside: a label or a branch's reality undecided
-    failures: list[str] = field(default_factory=list)
-    passed: bool = False
-    status: str = "failed"
+    failures: tuple[str, ...] = ()
+    status: Status = Status.FAILED
+
+    @property
+    def passed(self) -> bool:
+        return self.status is Status.PASSED
 
     @classmethod
     def skipped(cls) -> RatesCheck:
         """No check was asked for (zero samples): not passed, not failed."""
-        return cls(status="skipped")
+        return cls(status=Status.SKIPPED)
 
     def to_json(self) -> dict[str, Any]:
-        return {"samples": self.samples, "status": self.status, "passed": self.passed, "compared": self.compared,
-                "max_rel_error": self.max_rel_error, "max_abs_error": self.max_abs_error,
-                "near_degenerate": self.near_degenerate, "failures": self.failures[:10],
+        return {"samples": self.samples, "status": self.status.value, "passed": self.passed,
+                "compared": self.compared, "max_rel_error": self.max_rel_error, "max_abs_error": self.max_abs_error,
+                "near_degenerate": self.near_degenerate, "failures": list(self.failures[:10]),
                 "method": (f"central differences with h = 2^-{STEP_BITS} of the original system's roots, found "
                            f"in floats and proved and refined in arb at {WORKING_BITS} bits; "
                            f"tolerance {MAX_REL_ERROR:g} relative")}
+
+
+@dataclass
+class _Tally:
+    """What the check counts while it runs; ``result()`` makes the ``RatesCheck`` of it."""
+
+    samples: int = 0
+    compared: int = 0
+    max_rel_error: float = 0.0
+    max_abs_error: float = 0.0
+    near_degenerate: int = 0
+    failures: list[str] = field(default_factory=list)
+
+    def result(self) -> RatesCheck:
+        passed = not self.failures and self.max_rel_error <= MAX_REL_ERROR
+        return RatesCheck(self.samples, self.compared, self.max_rel_error, self.max_abs_error,
+                          self.near_degenerate, tuple(self.failures), Status.PASSED if passed else Status.FAILED)
 
 
 def check_rates(system: System, indicators: Sequence[Indicator], branches: Sequence[RateForms],
@@ -91,7 +113,7 @@ def check_rates(system: System, indicators: Sequence[Indicator], branches: Seque
     some branch is real; ``system`` has one input and no symbolic dimension left."""
     if not samples:
         return RatesCheck.skipped()
-    report = RatesCheck()
+    report = _Tally()
     rng = np.random.default_rng(seed)
     with flint.ctx.workprec(WORKING_BITS):
         plan = _Plan(system, indicators, branches)
@@ -103,9 +125,7 @@ def check_rates(system: System, indicators: Sequence[Indicator], branches: Seque
     if not report.compared:
         report.failures.append(f"no branch rate compared on {report.samples} samples "
                                f"({report.near_degenerate} near a degenerate configuration)")
-    report.passed = not report.failures and report.max_rel_error <= MAX_REL_ERROR
-    report.status = "passed" if report.passed else "failed"
-    return report
+    return report.result()
 
 
 class _Plan:
@@ -245,7 +265,7 @@ class _Branch:
         return {u: (values[2 * k], values[2 * k + 1]) for k, u in enumerate(self.unknowns)}
 
 
-def _compare(report: RatesCheck, plan: _Plan, theta: float, roots: list[list[_Root]]) -> None:
+def _compare(report: _Tally, plan: _Plan, theta: float, roots: list[list[_Root]]) -> None:
     """Compare every branch real at all three inputs with its roots' central differences."""
     report.samples += 1
     knowns = [plan.known(theta, shift) for shift in SHIFTS]
@@ -265,7 +285,7 @@ def _compare(report: RatesCheck, plan: _Plan, theta: float, roots: list[list[_Ro
         _compare_branch(report, plan, branch, theta, [m[0] for m in matches])
 
 
-def _compare_branch(report: RatesCheck, plan: _Plan, branch: _Branch, theta: float, roots: list[_Root]) -> None:
+def _compare_branch(report: _Tally, plan: _Plan, branch: _Branch, theta: float, roots: list[_Root]) -> None:
     h = arb(2) ** -STEP_BITS
     rates = branch.values(roots[1].known)
     if not rates:

@@ -1,6 +1,5 @@
 """Drawings: positions against hand geometry, trajectory on the implicit curve, modes, animations."""
 
-import dataclasses
 import io
 import json
 import os
@@ -9,6 +8,7 @@ import shutil
 import subprocess
 import sys
 
+import attrs
 import numpy as np
 
 import pytest
@@ -237,7 +237,7 @@ def test_a_write_that_fails_is_one_line(tmp_path, suffix):
 
 def test_a_scene_name_is_shown_as_text_not_mathtext():
     name = r"cost $x_{$ \frac{1}{2}$ $"
-    motion = Motion(dataclasses.replace(load_scene("chebyshev-lambda"), name=name))
+    motion = Motion(attrs.evolve(load_scene("chebyshev-lambda"), name=name))
     for figure in (mechanism_figure(motion, {"angle": 63}, curve=False), modes_figure(motion, {"angle": 63})):
         figure.savefig(io.BytesIO(), format="png")  # mathtext would raise here
         titles = [figure.axes[0].get_title(), figure.get_suptitle()]

@@ -1,10 +1,10 @@
 """The .html page against hostile scene text: nothing from a scene becomes markup or script."""
 
 import copy
-import dataclasses
 import json
 import unicodedata
 
+import attrs
 import html5lib
 import pytest
 from hypothesis import given, settings, strategies as st
@@ -32,7 +32,7 @@ def benign(motion):
 def page_of(motion, name, description):
     """The page of ``motion`` with the scene's name and description replaced (closed forms reused)."""
     hostile = copy.copy(motion)
-    hostile.scene = dataclasses.replace(motion.scene, name=name, description=description)
+    hostile.scene = attrs.evolve(motion.scene, name=name, description=description)
     return page(hostile)
 
 

@@ -1,0 +1,46 @@
+"""A loaded scene is an immutable value: changing it raises, and later loads are untouched (issue 31)."""
+
+import attrs
+import pytest
+import sympy
+
+from algkin.runtime.frozen import FrozenDict
+from algkin.scene import compile_scene, load_scene, with_values
+
+
+def test_a_loaded_scene_cannot_be_changed_and_a_later_load_is_the_file():
+    scene = load_scene("fourbar")
+    with pytest.raises(TypeError):
+        scene.parameters["a"] = 99
+    with pytest.raises(TypeError):
+        del scene.points["B"]
+    with pytest.raises(attrs.exceptions.FrozenInstanceError):
+        scene.name = "other"  # type: ignore[misc]
+    again = load_scene("fourbar")
+    assert again.parameters["a"] == sympy.Integer(1)  # fourbar.toml: a = 1
+    assert list(again.points) == ["O", "D", "A", "B", "P"]
+
+
+def test_with_values_makes_a_new_scene_and_leaves_the_loaded_one():
+    changed = with_values(load_scene("fourbar"), {"a": 3})
+    assert changed.parameters["a"] == 3
+    assert load_scene("fourbar").parameters["a"] == 1
+
+
+def test_scenes_and_compiled_systems_are_hashable_values():
+    scene = load_scene("fourbar")
+    assert hash(scene) == hash(load_scene("fourbar"))
+    assert scene == attrs.evolve(scene, source="elsewhere.toml")  # where it came from is not what it is
+    assert scene != with_values(scene, {"a": 3})
+    compiled = compile_scene(scene, ["B"])
+    assert {compiled: 1}[compile_scene(load_scene("fourbar"), ["B"])] == 1
+    assert hash(compiled.system) == hash(compile_scene(scene, ["B"]).system)
+    with pytest.raises(TypeError):
+        compiled.definitions["B_x"] = sympy.Integer(0)
+
+
+def test_a_frozen_mapping_keeps_order_and_hashes_as_it_compares():
+    first, second = FrozenDict({"a": 1, "b": 2}), FrozenDict({"b": 2, "a": 1})
+    assert list(first) == ["a", "b"] and list(second) == ["b", "a"]
+    assert first == second and hash(first) == hash(second)
+    assert first == {"a": 1, "b": 2} and first != {"a": 1}
