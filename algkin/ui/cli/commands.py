@@ -302,7 +302,7 @@ def _cmd_verify(args):
         raise UsageError("--samples", 0, "verify needs at least one sample (derive and curve take 0 to skip it)")
     result = derive(_scene_of(args), args.outputs, certify=False, **_engine(args))
     document = {"scene": result.compiled.scene.name, "verification": result.verification.to_json(),
-                "branches": [b.label for b in result.branches], "timings": result.timings}
+                "branches": [b.label for b in result.branches], "timings": dict(result.timings)}
     text = render(args, document, lambda d: f"scene {d['scene']}, branches {', '.join(d['branches'])}\n"
                                             + verification_line(d["verification"]))
     return text, _verdict(result.verification)
