@@ -1,0 +1,81 @@
+"""`derive` and `curve` on every catalog scene give the same JSON as before the refactor of issue 31.
+
+The reference, catalog_before.json.gz, was written by this module's ``main`` at commit cd83528, before
+the pipeline was split and its caches made explicit: a refactor changes how answers are reached, never
+the answers. Timings are left out (they are the only part that differs between runs). A change meant to
+alter an answer rewrites the reference (``python -m tests.derivation.test_catalog_unchanged``) in the
+same commit, where the diff shows what changed.
+"""
+
+from __future__ import annotations
+
+import gzip
+import json
+import sys
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+import algkin
+from algkin.scene import catalog_names
+from algkin.scene.constructions import Fixed
+
+REFERENCE = Path(__file__).with_name("catalog_before.json.gz")
+
+
+def _without_timings(document: Any) -> Any:
+    if isinstance(document, dict):
+        return {key: _without_timings(value) for key, value in document.items() if key != "timings"}
+    if isinstance(document, list):
+        return [_without_timings(value) for value in document]
+    return document
+
+
+def _plain(document: Any) -> Any:
+    """As the JSON text would read it back (tuples as lists, numbers as written)."""
+    return json.loads(json.dumps(document, sort_keys=True, default=str))
+
+
+def snapshot(name: str) -> dict[str, Any]:
+    """The scene's `derive` and the `curve` of each moving point that traces one."""
+    curves = {}
+    for point, construction in algkin.load_scene(name).points.items():
+        if isinstance(construction, Fixed):
+            continue
+        try:
+            curves[point] = _without_timings(algkin.curve(name, point).to_json())
+        except algkin.AlgkinError:  # a point of two inputs (a region), or one the scene cannot trace
+            continue
+    return _plain({"derive": _without_timings(algkin.derive(name).to_json()), "curve": curves})
+
+
+@pytest.fixture(scope="module")
+def reference() -> dict[str, Any]:
+    with gzip.open(REFERENCE, "rt", encoding="utf-8") as text:
+        return json.load(text)
+
+
+def test_the_reference_covers_the_catalog(reference):
+    assert sorted(reference) == sorted(catalog_names())
+    assert sum(len(entry["curve"]) for entry in reference.values()) >= 50
+
+
+@pytest.mark.parametrize("name", catalog_names())
+def test_derive_and_curve_answer_as_before(name, reference):
+    now = snapshot(name)
+    assert now["derive"] == reference[name]["derive"]
+    assert sorted(now["curve"]) == sorted(reference[name]["curve"])
+    for point, document in now["curve"].items():
+        assert document == reference[name]["curve"][point], point
+
+
+def main() -> None:
+    documents = {name: snapshot(name) for name in catalog_names()}
+    with gzip.open(REFERENCE, "wt", encoding="utf-8") as text:
+        json.dump(documents, text, sort_keys=True, indent=0)
+    print(f"wrote {REFERENCE.name}: {len(documents)} scenes", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
