@@ -1,7 +1,7 @@
 """A group's modes at a sample: its real solutions at rational parameter values, in balls.
 
 At the sample, the eliminant is a polynomial over QQ in the group's variable: its real roots
-are isolated and certified (each ball holds exactly one root); every other unknown is its
+are isolated and certified (``algkin.system.roots``: each ball holds exactly one root); every other unknown is its
 lift there, reduced to a polynomial modulo the eliminant (the shape lemma), evaluated on the
 root's ball.
 
@@ -24,7 +24,7 @@ import flint
 import sympy
 
 from ...errors import ComputationError, UsageError
-from ...system.convert import real_roots
+from ...system.roots import real_roots
 from .algebra import univariate
 from .records import GroupSolution, Mode, Values
 
@@ -43,10 +43,9 @@ def modes(solution: GroupSolution, at: Mapping[str, int | str | flint.fmpq], *, 
     shapes = {lift.unknown: _shape(lift.numerator.to_flint().subs(point), lift.denominator.to_flint().subs(point),
                                    eliminant, solution.variable) for lift in solution.lifts}
     found = []
-    with flint.ctx.workprec(bits):
-        for index, root in enumerate(sorted(_real_roots(eliminant), key=lambda ball: float(ball.mid()))):
-            values = {solution.variable: root} | {x: flint.arb_poly(list(s.coeffs()))(root) for x, s in shapes.items()}
-            found.append(Mode(index, values))
+    for index, root in enumerate(real_roots(eliminant, bits=bits)):
+        values = {solution.variable: root.ball} | {x: root.value(shape) for x, shape in shapes.items()}
+        found.append(Mode(index, values, root))
     return tuple(found)
 
 
@@ -80,9 +79,3 @@ def _shape(numerator: flint.fmpq_mpoly, denominator: flint.fmpq_mpoly, eliminant
         raise ComputationError(f"at this sample a lift's denominator vanishes at a root in {variable}")
     return univariate(numerator, variable) * inverse % eliminant
 
-
-def _real_roots(eliminant: flint.fmpq_poly) -> list[flint.arb]:
-    """The real roots of a squarefree polynomial over QQ, isolated and certified, at the working precision."""
-    x = sympy.Symbol("x")
-    expr = sympy.Add(*(sympy.Rational(int(c.p), int(c.q)) * x**k for k, c in enumerate(eliminant.coeffs())))
-    return real_roots(expr, x)

@@ -17,6 +17,7 @@ import attrs
 import flint
 
 from ...runtime.frozen import FrozenDict, frozen
+from ...system.roots import RealRoot
 
 __all__ = ["Polynomial", "Lift", "GroupSolution", "Mode", "Values"]
 
@@ -89,7 +90,9 @@ class GroupSolution:
 @attrs.frozen
 class Mode:
     """One real solution of a group at a sample: each unknown's (and the variable's) value as a
-    ball, certified; ``index``: its place among the real roots of the eliminant, in increasing order."""
+    ball, certified; ``index``: its place among the real roots of the eliminant, in increasing
+    order; ``root``: that root exactly (its irreducible factor and rank), its ball the variable's."""
 
     index: int
     values: FrozenDict[str, flint.arb] = attrs.field(converter=frozen)
+    root: RealRoot
