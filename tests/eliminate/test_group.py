@@ -12,7 +12,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from algkin.errors import UsageError
+from algkin.errors import ComputationError, UsageError
 from algkin.eliminate.group import modes, solve_group
 from algkin.eliminate.group.algebra import univariate
 
@@ -215,6 +215,15 @@ def test_as_many_equations_as_unknowns():
     x, y = ctx.gens()
     with pytest.raises(UsageError, match=r"equations=1: a group of 2 unknowns \(x, y\) needs as many equations"):
         solve_group([x**2 + y**2 - 1], ["x", "y"])
+
+
+def test_equations_with_no_solution_are_refused():
+    ctx = flint.fmpq_mpoly_ctx.get(("x", "y", "r"), "lex")
+    x, y, r = ctx.gens()
+    with pytest.raises(ComputationError, match="the equations of x, y: .* inconsistent"):
+        solve_group([x**2 + y**2 - r, x**2 + y**2 - r - 1], ["x", "y"])  # two concentric circles
+    with pytest.raises(ComputationError, match="the equations of x, y have no solution"):
+        solve_group([x - 1, x - 2], ["x", "y"])
 
 
 def test_a_sample_on_a_toggle_or_missing_a_parameter_is_refused():

@@ -34,6 +34,7 @@ dimension) is a parameter. ``solve_group`` answers a rational univariate represe
 
 from __future__ import annotations
 
+import itertools
 import random
 from collections.abc import Sequence
 
@@ -173,7 +174,10 @@ def _shared(group: _Group, unknown: str, keep: tuple[str, ...]) -> int:
 
 def _eliminant(group: _Group, variable: str) -> flint.fmpq_mpoly:
     """The eliminant in ``variable``: the gcd of what elimination leaves, or the least of them if coprime."""
-    left = _eliminated(group, (variable,))
+    try:
+        left = _eliminated(group, (variable,))
+    except ComputationError as error:  # a resultant vanished or is a number: said of this group
+        raise ComputationError(f"the equations of {', '.join(group.unknowns)}: {error}") from None
     if not left or any(p.is_constant() for p in left):
         raise ComputationError(f"the equations of {', '.join(group.unknowns)} have no solution")
     eliminant = left[0]
@@ -190,16 +194,14 @@ def _lift(group: _Group, unknown: str, variable: str, home: flint.fmpq_mpoly_ctx
     left = _eliminated(group, (unknown, variable))
     index = list(left[0].context().names()).index(unknown) if left else 0
     holders = sorted((p for p in left if p.degrees()[index] > 0), key=lambda p: (p.degrees()[index], len(p)))
-    relation = None
     if holders and holders[0].degrees()[index] == 1:
         b, a = coefficients(holders[0], unknown)
-        relation = a, b
-    elif len(holders) >= 2:
-        relation = linear_relation(holders[0], holders[1], unknown)
-    if relation is None:
-        raise _NotSeparating(f"no relation linear in {unknown} over {variable}")
-    a, b = relation
-    return a.project_to_context(home), b.project_to_context(home)
+        return a.project_to_context(home), b.project_to_context(home)
+    for first, second in itertools.combinations(holders, 2):  # the lowest degrees first
+        relation = linear_relation(first, second, unknown)
+        if relation is not None:
+            return relation[0].project_to_context(home), relation[1].project_to_context(home)
+    raise _NotSeparating(f"no relation linear in {unknown} over {variable}")
 
 
 def _genuine(group: _Group, variable: str, factors: list[tuple[flint.fmpq_mpoly, int]],
@@ -209,7 +211,7 @@ def _genuine(group: _Group, variable: str, factors: list[tuple[flint.fmpq_mpoly,
     parameters where every factor keeps its degree; _NotSeparating if a lift is undefined on a
     factor or a genuine factor is repeated."""
     for _ in range(POINTS):
-        point: Values = {p: flint.fmpq(rng.randint(-999, 999), rng.randint(1, 97)) for p in group.parameters}
+        point: Values = {p: rng.choice((-1, 1)) * rng.randint(2, 999) for p in group.parameters}
         special = [univariate(f.subs(point), variable) for f, _ in factors]
         if all(s.degree() == f.degrees()[0] for s, (f, _) in zip(special, factors)):
             break
