@@ -2,10 +2,10 @@
 
 ``solve_group`` gives the eliminant in a separating variable with the parameters symbolic and
 every other unknown rational in it (``group.solve``); ``modes`` gives, at rational values of
-the parameters, every real solution in certified balls (``group.modes``).
+the parameters, every real solution in certified balls (``group.samples``).
 """
 
-from .modes import modes
+from .samples import modes
 from .records import GroupSolution, Lift, Mode, Polynomial
 from .solve import solve_group
 
