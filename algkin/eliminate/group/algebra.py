@@ -43,7 +43,7 @@ def from_coefficients(parts: list[flint.fmpq_mpoly], var: str) -> flint.fmpq_mpo
     return total
 
 
-def pseudo_remainder(f: flint.fmpq_mpoly, g: flint.fmpq_mpoly, var: str,
+def pseudo_remainder(f: flint.fmpq_mpoly, g: flint.fmpq_mpoly, var: str, *,
                      power: int | None = None) -> flint.fmpq_mpoly:
     """``lc(g)**power * f`` modulo ``g`` in ``var`` (``lc``: the leading coefficient in
     ``var``); ``power`` is by default the least that keeps the division exact,

@@ -41,7 +41,7 @@ def modes(solution: GroupSolution, at: Mapping[str, int | str | flint.fmpq], *, 
     eliminant = univariate(solution.eliminant.to_flint().subs(point), solution.variable)
     _check_generic(solution, eliminant)
     shapes = {lift.unknown: _shape(lift.numerator.to_flint().subs(point), lift.denominator.to_flint().subs(point),
-                                   eliminant, solution.variable) for lift in solution.lifts}
+                                   eliminant=eliminant, variable=solution.variable) for lift in solution.lifts}
     found = []
     for index, root in enumerate(real_roots(eliminant, bits=bits)):
         values = {solution.variable: root.ball} | {x: root.value(shape) for x, shape in shapes.items()}
@@ -71,7 +71,7 @@ def _check_generic(solution: GroupSolution, eliminant: flint.fmpq_poly) -> None:
                                "two modes meet")
 
 
-def _shape(numerator: flint.fmpq_mpoly, denominator: flint.fmpq_mpoly, eliminant: flint.fmpq_poly,
+def _shape(numerator: flint.fmpq_mpoly, denominator: flint.fmpq_mpoly, *, eliminant: flint.fmpq_poly,
            variable: str) -> flint.fmpq_poly:
     """``numerator / denominator`` (in ``variable`` alone) as a polynomial modulo the eliminant."""
     common, inverse, _ = univariate(denominator, variable).xgcd(eliminant)

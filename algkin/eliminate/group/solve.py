@@ -140,13 +140,13 @@ def _solve_by(group: _Group, variable: str, rng: random.Random) -> GroupSolution
     factors = [(f, m) for f, m in factored if f.degrees()[0] > 0]
     conditions = [f for f, _ in factored if f.degrees()[0] == 0]
     others = [u for u in group.unknowns if u != variable]
-    relations = {x: _lift(group, x, variable, home) for x in others}
-    genuine = _genuine(group, variable, factors, relations, rng)
+    relations = {x: _lift(group, x, variable=variable, home=home) for x in others}
+    genuine = _genuine(group, variable, factors=factors, relations=relations, rng=rng)
     kept = [f for f, _ in factors if any(f is g for g in genuine)]
     product = home.from_dict({(0,) * len(home.names()): 1})
     for factor in kept:
         product *= factor
-    lifts = tuple(_reduced(x, *relations[x], product, variable) for x in others)
+    lifts = tuple(_reduced(x, relations[x], eliminant=product, variable=variable) for x in others)
     dropped = [f for f, _ in factors if not any(f is g for g in genuine)] + conditions
     return GroupSolution(group.unknowns, group.parameters, variable, Polynomial.of(_primitive(product)), lifts,
                          dropped=tuple(Polynomial.of(_primitive(f)) for f in dropped))
@@ -188,7 +188,7 @@ def _eliminant(group: _Group, variable: str) -> flint.fmpq_mpoly:
     return eliminant
 
 
-def _lift(group: _Group, unknown: str, variable: str, home: flint.fmpq_mpoly_ctx
+def _lift(group: _Group, unknown: str, *, variable: str, home: flint.fmpq_mpoly_ctx
           ) -> tuple[flint.fmpq_mpoly, flint.fmpq_mpoly]:
     """``(a, b)`` in ``variable`` and the parameters with ``a*unknown + b`` in the ideal."""
     left = _eliminated(group, (unknown, variable))
@@ -204,7 +204,7 @@ def _lift(group: _Group, unknown: str, variable: str, home: flint.fmpq_mpoly_ctx
     raise _NotSeparating(f"no relation linear in {unknown} over {variable}")
 
 
-def _genuine(group: _Group, variable: str, factors: list[tuple[flint.fmpq_mpoly, int]],
+def _genuine(group: _Group, variable: str, *, factors: list[tuple[flint.fmpq_mpoly, int]],
              relations: dict[str, tuple[flint.fmpq_mpoly, flint.fmpq_mpoly]],
              rng: random.Random) -> list[flint.fmpq_mpoly]:
     """The factors whose roots are solutions, decided at a random rational point of the
@@ -222,7 +222,7 @@ def _genuine(group: _Group, variable: str, factors: list[tuple[flint.fmpq_mpoly,
     equations = [e.subs(point) for e in group.equations]
     genuine = []
     for (factor, multiplicity), modulus in zip(factors, special):
-        if _solves(equations, variable, lifted, modulus):
+        if _solves(equations, variable, lifted=lifted, modulus=modulus):
             if multiplicity > 1:
                 raise _NotSeparating(f"a factor of degree {modulus.degree()} of its eliminant is repeated")
             genuine.append(factor)
@@ -231,7 +231,7 @@ def _genuine(group: _Group, variable: str, factors: list[tuple[flint.fmpq_mpoly,
     return genuine
 
 
-def _solves(equations: Sequence[flint.fmpq_mpoly], variable: str,
+def _solves(equations: Sequence[flint.fmpq_mpoly], variable: str, *,
             lifted: dict[str, tuple[flint.fmpq_poly, flint.fmpq_poly]], modulus: flint.fmpq_poly) -> bool:
     """Whether the lifts satisfy every equation modulo ``modulus`` (over QQ, at the point)."""
     values = {variable: flint.fmpq_poly([0, 1]) % modulus}
@@ -256,16 +256,17 @@ def _residue(poly: flint.fmpq_mpoly, values: dict[str, flint.fmpq_poly], modulus
     return total % modulus
 
 
-def _reduced(unknown: str, a: flint.fmpq_mpoly, b: flint.fmpq_mpoly, eliminant: flint.fmpq_mpoly,
+def _reduced(unknown: str, relation: tuple[flint.fmpq_mpoly, flint.fmpq_mpoly], *, eliminant: flint.fmpq_mpoly,
              variable: str) -> Lift:
     """The lift ``-b/a`` with both reduced modulo the eliminant (pseudo-remainders under a
     common power of its leading coefficient, so the ratio holds at its roots), and cancelled."""
+    a, b = relation
     numerator, denominator = -b, a
     degree = eliminant.degrees()[0]
     if max(numerator.degrees()[0], denominator.degrees()[0]) >= degree:
         power = max(numerator.degrees()[0], denominator.degrees()[0]) - degree + 1
-        numerator = pseudo_remainder(numerator, eliminant, variable, power)
-        denominator = pseudo_remainder(denominator, eliminant, variable, power)
+        numerator = pseudo_remainder(numerator, eliminant, variable, power=power)
+        denominator = pseudo_remainder(denominator, eliminant, variable, power=power)
     common = numerator.gcd(denominator)
     if not common.is_constant():
         numerator, denominator = numerator / common, denominator / common
