@@ -13,6 +13,8 @@ the terms, turned back into python-flint when asked (``to_flint``).
 
 from __future__ import annotations
 
+import functools
+
 import attrs
 import flint
 
@@ -40,6 +42,11 @@ class Polynomial:
         return cls(tuple(str(n) for n in poly.context().names()), terms)
 
     def to_flint(self) -> flint.fmpq_mpoly:
+        """The python-flint polynomial (a new one each call: python-flint's are mutable in place)."""
+        return self._flint * 1
+
+    @functools.cached_property
+    def _flint(self) -> flint.fmpq_mpoly:
         ctx = flint.fmpq_mpoly_ctx.get(self.names, "lex")
         return ctx.from_dict({m: flint.fmpq(p, q) for m, p, q in self.terms})
 
