@@ -144,6 +144,8 @@ def test_the_3rpr_eliminant_is_a_sextic_in_x1_with_six_real_modes_at_gosselins_d
     legs = [GOSSELIN_LEGS[n] for n in ("r1", "r2", "r3")]
     _matched(found, GOSSELIN.poses(legs), UNKNOWNS)
     assert len(found) == 6
+    assert [m.root.degree for m in found] == [6] * 6  # the eliminant is irreducible at the sample
+    assert hash(gosselin) == hash(solve_group(GOSSELIN.equations(), UNKNOWNS)) and len(set(found)) == 6
 
 
 def test_the_collinear_3rpr_has_mirror_pairs_so_x1_is_rejected_and_at_most_four_real():

@@ -45,7 +45,7 @@ def modes(solution: GroupSolution, at: Mapping[str, int | str | flint.fmpq], *, 
     found = []
     for index, root in enumerate(real_roots(eliminant, bits=bits)):
         values = {solution.variable: root.ball} | {x: root.value(shape) for x, shape in shapes.items()}
-        found.append(Mode(index, values, root))
+        found.append(Mode(index, root, values))
     return tuple(found)
 
 
