@@ -196,23 +196,27 @@ def test_symbolic_leg_lengths_specialise_to_the_eliminant_computed_at_the_point(
 
 
 def test_a_stephenson_triad_driven_from_a_crank_outside_the_four_bar():
-    # Stephenson six-bar: crank O A (O at the origin, |OA| = 2, driven), coupler A B = 6, a
-    # ternary link B C D (C - B = side, D = B + (C - B)/2 + (3/4) J(C - B)), rockers F1 C = 7 and
-    # F2 D = 5 about F1 = (9, 0), F2 = (4, 7). The triad B, C, D closes only with all three: the
-    # crank's (c, s) are its parameters.
+    # Stephenson six-bar: crank O A (O at the origin, |OA| = 2, driven); coupler A B; ternary link
+    # B C D (Gosselin's platform: C - B its side, D rigid with them); rockers F1 C and F2 D about
+    # F1 = (15.91, 0), F2 = (0, 10); the lengths Gosselin's legs. The triad B, C, D closes only
+    # with all three: the crank's (c, s) are its parameters.
     names = ("x1", "y1", "x2", "y2", "c", "s")
     ctx = flint.fmpq_mpoly_ctx.get(names, "lex")
     x1, y1, x2, y2, c, s = ctx.gens()
-    a, b = flint.fmpq(1, 2), flint.fmpq(3, 4)
+    a, b = GOSSELIN.a, GOSSELIN.b
     dx, dy = x1 + a * (x2 - x1) - b * (y2 - y1), y1 + a * (y2 - y1) + b * (x2 - x1)
-    loops = [(x1 - 2 * c)**2 + (y1 - 2 * s)**2 - 36, (x2 - 9)**2 + y2**2 - 49, (x1 - x2)**2 + (y1 - y2)**2 - 16,
-             (dx - 4)**2 + (dy - 7)**2 - 25]
+    lengths = [_q(14.98), _q(15.38), 12]
+    loops = [(x1 - 2 * c)**2 + (y1 - 2 * s)**2 - lengths[0]**2, (x2 - _q(15.91))**2 + y2**2 - lengths[1]**2,
+             (x1 - x2)**2 + (y1 - y2)**2 - GOSSELIN.side**2, dx**2 + (dy - 10)**2 - lengths[2]**2]
     solution = solve_group(loops, UNKNOWNS)
     assert solution.complex_count == 6 and set(solution.parameters) == {"c", "s"}
-    for crank in [(flint.fmpq(3, 5), flint.fmpq(4, 5)), (flint.fmpq(-5, 13), flint.fmpq(12, 13)), (1, 0)]:
+    counts = []
+    for crank in [(flint.fmpq(-24, 25), flint.fmpq(-7, 25)), (flint.fmpq(24, 25), flint.fmpq(-7, 25)), (1, 0)]:
         found = modes(solution, dict(zip(("c", "s"), crank)))
-        triad = Platform([tuple(2 * flint.fmpq(v) for v in crank), (9, 0), (4, 7)], 4, a, b)
-        _matched(found, triad.poses([6, 7, 5]), UNKNOWNS)
+        triad = Platform([tuple(2 * flint.fmpq(v) for v in crank), (_q(15.91), 0), (0, 10)], GOSSELIN.side, a, b)
+        _matched(found, triad.poses(lengths), UNKNOWNS)
+        counts.append(len(found))
+    assert counts[:2] == [6, 4]
 
 
 def test_as_many_equations_as_unknowns():
