@@ -224,6 +224,10 @@ def test_as_many_equations_as_unknowns():
     x, y = ctx.gens()
     with pytest.raises(UsageError, match=r"equations=1: a group of 2 unknowns \(x, y\) needs as many equations"):
         solve_group([x**2 + y**2 - 1], ["x", "y"])
+    with pytest.raises(UsageError, match=r"prefer=\['z'\]: z: not among the unknowns \(x, y\)"):
+        solve_group([x**2 + y**2 - 1, x - y], ["x", "y"], prefer=["z"])
+    with pytest.raises(UsageError, match="an unknown is named twice"):
+        solve_group([x**2 + y**2 - 1, x - y], ["x", "x"])
 
 
 def test_equations_with_no_solution_are_refused():

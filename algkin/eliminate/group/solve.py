@@ -90,6 +90,10 @@ def solve_group(equations: Sequence[flint.fmpq_mpoly], unknowns: Sequence[str], 
     equations have no solution, or no variable tried separates their solutions.
     """
     group = _group(equations, unknowns)
+    strays = [v for v in prefer or () if v not in group.unknowns]
+    if strays:
+        raise UsageError("prefer", list(prefer or ()), f"{', '.join(strays)}: not among the unknowns "
+                         f"({', '.join(group.unknowns)})")
     rng = random.Random(seed)
     rejected: list[tuple[str, str]] = []
     for variable in prefer or group.unknowns:
@@ -112,6 +116,8 @@ def solve_group(equations: Sequence[flint.fmpq_mpoly], unknowns: Sequence[str], 
 
 def _group(equations: Sequence[flint.fmpq_mpoly], unknowns: Sequence[str]) -> _Group:
     """The equations moved to one ring: the unknowns, then the other names they hold, in order of appearance."""
+    if len(set(unknowns)) != len(unknowns):
+        raise UsageError("unknowns", list(unknowns), "an unknown is named twice")
     if len(equations) != len(unknowns):
         raise UsageError("equations", len(equations), f"a group of {len(unknowns)} unknowns "
                          f"({', '.join(unknowns)}) needs as many equations")
