@@ -1,0 +1,224 @@
+"""Every real configuration of a scene at given inputs, certified in balls (``algkin solve``).
+
+Each branch (one label per dyad or slider) is evaluated in python-flint ``arb`` balls at the
+inputs, exact rationals (degrees for an angle, the length itself for a length input): a branch
+assembles there when each of its discriminants is certified >= 0, and its points are given as
+decimal strings to ``digits`` significant digits, the working precision raised until every
+enclosure is that narrow. A branch whose discriminant the balls cannot sign (an input at a
+toggle whose cosine is irrational) is a ComputationError, never a guess.
+
+Nothing assembling at the inputs is a valid answer, not a failure: no configurations.
+
+>>> found = solve("chebyshev-lambda", at={"angle": 0}, digits=12)
+>>> [(c.mode, c.points["B"]) for c in found.configurations]
+[('left', ('1.5', '2.44948974278')), ('right', ('1.5', '-2.44948974278'))]
+>>> solve("fourbar-nongrashof", at={"theta": 150}).configurations
+()
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from decimal import Decimal, localcontext
+from fractions import Fraction
+from typing import Any
+
+import attrs
+import flint
+import sympy
+
+from ..branches import Branch, closed_forms
+from ..errors import ComputationError, UsageError
+from ..evaluate import ARB, evaluate
+from ..runtime.frozen import FrozenDict, frozen
+from ..scene import Compiled, Scene, compile_scene
+from ..scene.load import as_scene
+from ..system import input_values, symbol
+
+__all__ = ["solve", "Solution", "Configuration", "DIGITS", "MAX_DIGITS"]
+
+DIGITS = 30
+"""Significant digits of each coordinate, by default."""
+MAX_DIGITS = 1000
+"""The most digits asked for: past this the balls cost more than any reader needs."""
+RAISES = 5
+"""Doublings of the working precision tried before a branch is left undecided."""
+
+
+@attrs.frozen
+class Configuration:
+    """One configuration: its ``mode`` (the branch's label), each point's coordinates as decimal
+    strings, and ``radius``, the largest radius of their enclosures."""
+
+    mode: str
+    points: FrozenDict[str, tuple[str, str]] = attrs.field(converter=frozen)
+    radius: float
+
+    def to_json(self) -> dict[str, Any]:
+        return {"mode": self.mode, "points": {p: list(xy) for p, xy in self.points.items()}, "radius": self.radius}
+
+
+@attrs.frozen
+class Solution:
+    """Every real configuration of ``scene`` at the inputs ``at`` (exact values, in the inputs'
+    units); ``complex_count`` where a group of unknowns was solved together."""
+
+    scene: str
+    at: FrozenDict[str, Fraction] = attrs.field(converter=frozen)
+    digits: int
+    configurations: tuple[Configuration, ...]
+    complex_count: int | None = None
+
+    def to_json(self) -> dict[str, Any]:
+        document: dict[str, Any] = {"scene": self.scene, "at": {n: str(v) for n, v in self.at.items()},
+                                    "digits": self.digits,
+                                    "configurations": [c.to_json() for c in self.configurations]}
+        if self.complex_count is not None:
+            document["complex_count"] = self.complex_count
+        return document
+
+
+def solve(scene: Scene | str, at: Mapping[str, Any], *, mode: str | None = None,
+          digits: int = DIGITS) -> Solution:
+    """Every real configuration of ``scene`` (a Scene, a catalog name or a path) at the inputs
+    ``at`` (input -> an exact value: an int, a rational's string such as ``"1/3"``, a decimal),
+    on every branch or on the branch labelled ``mode``, to ``digits`` significant digits.
+
+    A UsageError names the argument: an input missing, not the scene's or out of its range,
+    ``digits`` out of [1, MAX_DIGITS], a ``mode`` that is no branch label.
+    """
+    if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= MAX_DIGITS:
+        raise UsageError("digits", digits, f"expected a whole number of digits in [1, {MAX_DIGITS}]")
+    scene = as_scene(scene)
+    compiled = compile_scene(scene, list(scene.points))
+    values = _inputs(scene, compiled, at)
+    branches = closed_forms(compiled)
+    labels = [b.label for b in branches]
+    if mode is not None and mode not in labels:
+        raise UsageError("mode", mode, f"not a mode of {scene.name} (modes: {', '.join(labels)})")
+    found = [_configuration(compiled, b, values, digits) for b in branches if mode in (None, b.label)]
+    return Solution(scene.name, values, digits, tuple(c for c in found if c is not None))
+
+
+def _inputs(scene: Scene, compiled: Compiled, at: Mapping[str, Any]) -> dict[str, Fraction]:
+    """``at`` as exact values, checked: every input the scene's points move with given, each in range."""
+    for name in at:
+        if name not in scene.inputs:
+            raise UsageError("at", name, f"not an input of {scene.name} (inputs: {', '.join(scene.inputs) or 'none'})")
+    missing = [n for n in compiled.system.inputs if n not in at]
+    if missing:
+        raise UsageError("at", ", ".join(missing), f"no value given for {', '.join(missing)} (NAME=VALUE)")
+    return {name: _value(scene, name, value) for name, value in at.items()}
+
+
+def _value(scene: Scene, name: str, value: Any) -> Fraction:
+    """An input's value, exactly, within its range (degrees for an angle)."""
+    spec = scene.inputs[name]
+    try:
+        exact = Fraction(str(value)) if str(value).isascii() and not isinstance(value, bool) else None
+    except (ValueError, ZeroDivisionError):
+        exact = None
+    lo, hi = spec.span
+    inside = exact is not None and (Fraction(str(spec.lo)) <= exact <= Fraction(str(spec.hi)) if spec.unit == "deg"
+                                    else lo <= exact <= hi)
+    if not inside:
+        what = "a number of degrees" if spec.is_angle else "a length"
+        raise UsageError("at", f"{name}={value}", f"expected {what} in [{lo:g}, {hi:g}], exact (e.g. 30, 1/3, 0.5)")
+    return exact
+
+
+def _configuration(compiled: Compiled, branch: Branch, at: Mapping[str, Fraction], digits: int
+                   ) -> Configuration | None:
+    """The configuration on ``branch`` at ``at``, or None where it does not assemble; the working
+    precision doubled until the discriminants are signed and the coordinates ``digits`` narrow."""
+    bits = int(digits * 3.33) + 32
+    for _ in range(RAISES):
+        with flint.ctx.workprec(bits):
+            values = _ball_inputs(compiled, at)
+            assembles = _assembles(branch, values)
+            if assembles is False:
+                return None
+            if assembles:
+                points = {p: tuple(evaluate(v.xreplace(_substitution(branch)), values, ARB) for v in xy)
+                          for p, xy in compiled.coordinates.items()}
+                if all(_narrow(b, digits) for xy in points.values() for b in xy):
+                    return _written(branch.label, points, digits)
+        bits *= 2
+    raise ComputationError(f"{compiled.scene.name} at {_said(at)}: the balls could not decide whether branch "
+                           f"{branch.label} assembles there at {bits // 2} bits (an input at a toggle?)")
+
+
+def _assembles(branch: Branch, values: Mapping[str, flint.arb]) -> bool | None:
+    """Whether every discriminant is >= 0, in order (past a negative one, a later one may hold its
+    square root); None when the balls cannot tell."""
+    for discriminant in branch.discriminants.values():
+        sign = _sign(evaluate(discriminant, values, ARB))
+        if sign is None:
+            return None
+        if sign < 0:
+            return False
+    return True
+
+
+def _substitution(branch: Branch) -> dict[sympy.Symbol, sympy.Expr]:
+    return {symbol(u): v for u, v in branch.values.items()}
+
+
+def _ball_inputs(compiled: Compiled, at: Mapping[str, Fraction]) -> dict[str, flint.arb]:
+    """Each input's variables as balls: an angle's cos and sin (exact at multiples of 90 degrees,
+    where a toggle's discriminant is then exactly 0), a length as itself."""
+    values: dict[str, flint.arb] = {}
+    for name, variables in compiled.system.inputs.items():
+        value = at[name]
+        if len(variables) == 1:
+            values[variables[0]] = flint.arb(flint.fmpq(value.numerator, value.denominator))
+        elif value % 90 == 0:  # degrees, whatever the unit the scene declares its range in
+            quarter = int(value // 90) % 4
+            values.update(dict(zip(variables, map(flint.arb, ((1, 0), (0, 1), (-1, 0), (0, -1))[quarter]))))
+        else:
+            radians = flint.arb.pi() * flint.fmpq(value.numerator, value.denominator) / 180
+            values.update(input_values(variables, radians))
+    return values
+
+
+def _sign(ball: flint.arb) -> int | None:
+    """-1, 0 or 1 when the ball tells, else None."""
+    if ball.is_exact() and ball == 0:
+        return 0
+    if ball > 0:
+        return 1
+    if ball < 0:
+        return -1
+    return None
+
+
+def _narrow(ball: flint.arb, digits: int) -> bool:
+    """Whether ``ball`` is finite and fixes its ``digits`` significant digits (or is below 10**-digits)."""
+    if not ball.is_finite():
+        return False
+    scale = max(abs(float(ball.mid())), 1.0)
+    return float(ball.rad()) * 10 ** (digits + 1) <= scale
+
+
+def _written(mode: str, points: Mapping[str, tuple[flint.arb, ...]], digits: int) -> Configuration:
+    radius = max((float(b.rad()) for xy in points.values() for b in xy), default=0.0)
+    shown = {p: (_decimal(x, digits), _decimal(y, digits)) for p, (x, y) in points.items()}
+    return Configuration(mode, shown, math.nextafter(radius, math.inf) if radius else 0.0)
+
+
+def _decimal(ball: flint.arb, digits: int) -> str:
+    """The ball's midpoint to ``digits`` significant digits (an exact short value as it is).
+
+    >>> _decimal(flint.arb(2).sqrt(), 5), _decimal(flint.arb(3) / 2, 30), _decimal(flint.arb(0), 30)
+    ('1.4142', '1.5', '0')
+    """
+    mantissa, exponent = ball.mid().man_exp()
+    with localcontext() as context:
+        context.prec = max(digits, abs(int(exponent)) + len(str(mantissa))) + 10
+        exact = Decimal(int(mantissa)) * Decimal(2) ** int(exponent)
+        return format(exact.normalize(), f".{digits}g")
+
+
+def _said(at: Mapping[str, Fraction]) -> str:
+    return ", ".join(f"{n} = {v}" for n, v in at.items())

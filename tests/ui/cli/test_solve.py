@@ -1,0 +1,44 @@
+"""``algkin solve``: the JSON keys SPEC section 3 lists, the text report, bad input in one line, exit 2."""
+
+import json
+
+import pytest
+
+from algkin.ui.cli import main
+
+
+def test_json_of_the_fourbar(capsys):
+    assert main(["solve", "fourbar", "--at", "theta=30", "--digits", "10", "--json"]) == 0
+    document = json.loads(capsys.readouterr().out)
+    assert document["scene"] == "fourbar" and document["at"] == {"theta": "30"}
+    assert [c["mode"] for c in document["configurations"]] == ["left", "right"]
+    assert document["configurations"][0]["points"]["B"] == ["2.368647265", "3.096560714"]
+    assert document["configurations"][0]["radius"] < 1e-10
+
+
+def test_nothing_assembles_is_said_and_exit_0(capsys):
+    assert main(["solve", "fourbar-nongrashof", "--at", "theta=150"]) == 0
+    assert "no configuration: nothing assembles there" in capsys.readouterr().out
+
+
+def test_text_report_and_one_mode(capsys):
+    assert main(["solve", "slider-crank", "--at", "theta=0", "--mode", "behind", "--digits", "8"]) == 0
+    out = capsys.readouterr().out
+    assert "slider-crank at theta = 0: 1 configuration" in out
+    assert "behind: O = (0, 0), L = (0, 0.5), A = (1, 0), B = (-1.9580399, 0.5)" in out  # 1 - sqrt(35)/2
+
+
+@pytest.mark.parametrize(("argv", "said"), [
+    (["--at", "theta=400"], "--at='theta=400': expected a number of degrees in [0, 360]"),
+    (["--at", "phi=3", "--at", "theta=3"], "--at='phi': not an input of fourbar"),
+    ([], "--at='theta': no value given for theta"),
+    (["--at", "theta=1", "--at", "theta=2"], "--at='theta=2': theta given twice"),
+    (["--at", "theta"], "--at='theta': expected INPUT=VALUE"),
+    (["--at", "theta=1", "--digits", "0"], "--digits=0: expected a whole number of digits"),
+    (["--at", "theta=1", "--mode", "up"], "--mode='up': not a mode of fourbar (modes: left, right)"),
+])
+def test_bad_input_is_one_line_exit_2(capsys, argv, said):
+    assert main(["solve", "fourbar", *argv]) == 2
+    captured = capsys.readouterr()
+    assert captured.out == ""
+    assert captured.err.count("\n") == 1 and said in captured.err
