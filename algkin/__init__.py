@@ -25,6 +25,7 @@ __all__ = [
     "extremum",
     "rates",
     "singular",
+    "solve",
     "catalog_names",
     "interact",
     "AlgkinError",
@@ -37,6 +38,7 @@ __all__ = [
     "Extremum",
     "Rates",
     "Singularities",
+    "Solution",
     "Mechanism",
     "Quantity",
 ]
@@ -48,6 +50,7 @@ if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ 
     from .analyses.quantities import Mechanism, Quantity, load_quantities
     from .analyses.rates import Rates, rates
     from .analyses.singular import Singularities, singular
+    from .analyses.solve import Solution, solve
     from .branches import Branch
     from .derivation.pipeline import CurveResult, Derivation, curve, derive
     from .scene import SceneBuilder, catalog_names, compile_scene, load_scene
@@ -67,6 +70,7 @@ _LAZY = {
     **dict.fromkeys(("extremum", "Extremum"), ".analyses.extremum"),
     **dict.fromkeys(("rates", "Rates"), ".analyses.rates"),
     **dict.fromkeys(("singular", "Singularities"), ".analyses.singular"),
+    **dict.fromkeys(("solve", "Solution"), ".analyses.solve"),
     **dict.fromkeys(("load_quantities", "Mechanism", "Quantity"), ".analyses.quantities"),
     "interact": ".ui.widgets",
 }

@@ -90,3 +90,10 @@ def test_bad_arguments_name_the_argument(at, options, argument):
     with pytest.raises(UsageError) as caught:
         solve("fourbar", at=at, **options)
     assert caught.value.argument == argument
+
+
+def test_the_facade_has_it():
+    import algkin
+
+    found = algkin.solve("fourbar", at={"theta": 0}, digits=5)
+    assert isinstance(found, algkin.Solution) and len(found.configurations) == 2
