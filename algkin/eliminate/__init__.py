@@ -161,9 +161,10 @@ def _consistent(engine: Backend[P], polys: list[P]) -> list[P]:
     return polys
 
 
-def eliminate(equations: Sequence[sympy.Expr | flint.fmpq_mpoly], eliminate: Sequence[str], keep: Sequence[str],
+def eliminate(equations: Sequence[sympy.Expr | flint.fmpq_mpoly], eliminate: Sequence[str], keep: Sequence[str], *,
               method: str = DEFAULT_METHOD, backend: str = "flint", witnesses: WitnessGroups = (),
-              parameters: Sequence[str] = (), budget: Budget | None = None) -> Elimination[Any]:
+              parameters: Sequence[str] = (), budget: Budget | None = None
+              ) -> Elimination[flint.fmpq_mpoly] | Elimination[sympy.Poly]:
     """Eliminate the variables ``eliminate`` from ``equations`` (polynomials over QQ: sympy
     expressions, or python-flint ``fmpq_mpoly`` over any names, matched by name).
 

@@ -27,14 +27,14 @@ import sympy
 from numpy.typing import NDArray
 
 from ..evaluate import ARB, NUMPY
-from ..evaluate.program import compile_program
+from ..evaluate.program import ArrayProgram, BallProgram, Floats, compile_program
 from ..runtime import progress
 from ..runtime.frozen import FrozenDict, frozen
 from ..system import System, input_values
-from .balls import BallProgram, Block, BlockCertifier, certifier_of, certify_parameters
+from .balls import Block, BlockCertifier, certifier_of, certify_parameters
 from .minimal import FactorCheck, structure_failures
 from .residual import ExactValue, Polynomial, PolynomialLike, polynomial_of
-from .solve import STARTS, ArrayProgram, Floats, blocks_of, solve_floats
+from .solve import STARTS, blocks_of, solve_floats
 
 __all__ = ["Verification", "Status", "verify_branches", "WORKING_BITS", "real_floats", "decided_real"]
 
@@ -276,7 +276,7 @@ def _uniform(rng: np.random.Generator, pieces: Sequence[tuple[float, float]], co
     along = rng.uniform(0.0, float(ends[-1]), count)
     index = np.minimum(np.searchsorted(ends, along, side="right"), len(pieces) - 1)
     starts = np.array([lo for lo, _ in pieces])
-    return starts[index] + along - (ends[index] - widths[index])
+    return np.asarray(starts[index] + along - (ends[index] - widths[index]), dtype=np.float64)
 
 
 def _check_batch(report: _Tally, plan: _Plan, angles: Mapping[str, Floats], rng: np.random.Generator,

@@ -271,4 +271,4 @@ def _distinct(points: Floats, scale: Floats) -> NDArray[np.bool_]:
     gap = np.max(np.abs(points[:, :, None, :] - points[:, None, :, :]), axis=3)
     close = (gap <= SAME_ROOT * scale[:, None, None]) & finite[:, None, :] & finite[:, :, None]
     earlier = np.tril(np.ones(points.shape[1], dtype=bool), -1)
-    return finite & ~np.any(close & earlier, axis=2)
+    return np.asarray(finite & ~np.any(close & earlier, axis=2), dtype=np.bool_)
