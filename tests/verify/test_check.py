@@ -11,15 +11,16 @@ from algkin.errors import UsageError
 from algkin.derivation.assembles import where_assembled
 from algkin.derivation.pipeline import check_setup, compile_and_branch
 from algkin.scene import compile_scene, load_scene, load_scene_text
-from algkin.verify import verify_branches
+from algkin.verify import CheckSetup, verify_branches
 
 
 def check(compiled, branches, samples, polynomials, factors=None):
     """The pipeline's independent check of ``branches`` (seed 1): ``verify_branches`` on what
     ``check_setup`` gives, the samples where some branch may assemble."""
     system, indicators, forms, inputs = check_setup(compiled, branches)
-    return verify_branches(system, indicators, forms, inputs, dict(compiled.parameter_values), samples=samples,
-                           seed=1, polynomials=polynomials, factors=factors, where=where_assembled(compiled, branches))
+    setup = CheckSetup(system=system, indicators=indicators, branches=forms, inputs=inputs,
+                       parameters=compiled.parameter_values)
+    return verify_branches(setup, samples=samples, seed=1, polynomials=polynomials, factors=factors, where=where_assembled(compiled, branches))
 
 
 def lambda_setup():
