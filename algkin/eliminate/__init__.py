@@ -202,7 +202,7 @@ def _eliminate(engine: Backend[P], method: str, run: Method, equations: Sequence
     factors, proof = factor_with(engine, eliminant, outcome.multipliers)
     # in the elimination ideal itself: no factor chosen, no equation divided, on the way
     in_ideal = member and not outcome.dropped and not any(kind in OUTSIDE_THE_IDEAL for kind, _ in outcome.log)
-    kept, lost, proof = _choose(engine, factors, proof, in_ideal, request)
+    kept, lost, proof = _choose(engine, factors, proof=proof, in_ideal=in_ideal, request=request)
     log = outcome.log + ([("proved-irreducible", proof.variable or "factored")] if proof else [])
     product = kept[0]
     for factor in kept[1:]:
@@ -224,7 +224,7 @@ def _eliminate(engine: Backend[P], method: str, run: Method, equations: Sequence
     )
 
 
-def _choose(engine: Backend[P], factors: list[P], proof: IrreducibilityProof | None, in_ideal: bool,
+def _choose(engine: Backend[P], factors: list[P], *, proof: IrreducibilityProof | None, in_ideal: bool,
             request: EliminationRequest) -> tuple[list[P], list[P], IrreducibilityProof | None]:
     """``(kept, dropped, proof)``: the factors the motion lies on, chosen at the witnesses.
 
