@@ -59,9 +59,14 @@ ARB: NumberKind[flint.arb] = NumberKind("arb", number=lambda p, q: flint.arb(fli
 MPMATH: NumberKind[mpmath.mpf] = NumberKind("mpmath", number=lambda p, q: mpmath.mpf(p) / q, sqrt=mpmath.sqrt,
                                             absolute=abs)
 FLOAT: NumberKind[float] = NumberKind("float", number=lambda p, q: p / q, sqrt=math.sqrt, absolute=abs)
+
+
+def _absolute(value: Floats | float) -> Floats | float:
+    return np.absolute(value) if isinstance(value, np.ndarray) else abs(value)
+
+
 # float64 arrays, vectorised; a rational stays a float
-NUMPY: NumberKind[Floats | float] = NumberKind("numpy", number=lambda p, q: p / q, sqrt=np.sqrt,
-                                                absolute=lambda v: np.absolute(v) if isinstance(v, np.ndarray) else abs(v))
+NUMPY: NumberKind[Floats | float] = NumberKind("numpy", number=lambda p, q: p / q, sqrt=np.sqrt, absolute=_absolute)
 
 
 def evaluate(expr: sympy.Expr, values: Mapping[str, N], kind: NumberKind[N]) -> N:

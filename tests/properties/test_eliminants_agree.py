@@ -70,8 +70,8 @@ def test_from_the_systems_flint_forms_as_sympy_from_its_equations(scene):
     groups = witnesses(compiled, closed_forms(compiled))
     for unknown, task in eliminant_tasks(compiled, groups).items():
         fast = task.run("linear", "flint")
-        slow = eliminate(task.equations, task.eliminate, task.keep, method="resultant", backend="sympy", witnesses=groups,
-                         parameters=task.parameters)
+        slow = eliminate(task.equations, task.eliminate, task.keep, method="resultant", backend="sympy",
+                         witnesses=groups, parameters=task.parameters)
         ratio = sympy.cancel(fast.polynomial / slow.polynomial)
         assert ratio.is_Rational and ratio != 0, (unknown, fast.polynomial, slow.polynomial)
         names = {name: symbol(name) for name in fast.variables}

@@ -2,6 +2,7 @@
 
 from importlib.resources import files
 
+import attrs
 import pytest
 import sympy
 
@@ -20,7 +21,8 @@ def check(compiled, branches, samples, polynomials, factors=None):
     system, indicators, forms, inputs = check_setup(compiled, branches)
     setup = CheckSetup(system=system, indicators=indicators, branches=forms, inputs=inputs,
                        parameters=compiled.parameter_values)
-    return verify_branches(setup, samples=samples, seed=1, polynomials=polynomials, factors=factors, where=where_assembled(compiled, branches))
+    return verify_branches(setup, samples=samples, seed=1, polynomials=polynomials, factors=factors,
+                           where=where_assembled(compiled, branches))
 
 
 def lambda_setup():
@@ -201,3 +203,19 @@ def test_curve_and_derive_check_their_kept_factors():
     assert [len(v) for v in curve.smallest_factor_residual.values()] == [1]
     assert set(derived.smallest_factor_residual) == {"B_x", "B_y"}
     assert curve.passed and derived.passed
+
+
+def test_the_check_setup_is_a_frozen_hashable_value_and_the_rest_is_keyword_only():
+    compiled, branches = lambda_setup()
+    system, indicators, forms, inputs = check_setup(compiled, branches)
+    setup = CheckSetup(system=system, indicators=indicators, branches=forms, inputs=inputs,
+                       parameters=compiled.parameter_values)
+    again = CheckSetup(system=system, indicators=list(indicators), branches=list(forms), inputs=dict(inputs),
+                       parameters=dict(compiled.parameter_values))
+    assert setup == again and hash(setup) == hash(again)
+    with pytest.raises(attrs.exceptions.FrozenInstanceError):
+        setup.inputs = {}
+    with pytest.raises(TypeError):
+        setup.branches[0][1]["B_x"] = 0  # its mappings are read-only too
+    with pytest.raises(TypeError):
+        verify_branches(setup, 5)  # samples by name only
