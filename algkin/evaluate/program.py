@@ -58,7 +58,8 @@ def compile_program(exprs: Iterable[sympy.Expr], names: Iterable[str], kind: Num
     Compiled once per ``(exprs, names, kind)`` and cached: a second verification of the same
     scene reuses it.
     """
-    program: _Program[N] = _cached(tuple(sympy.sympify(e) for e in exprs), tuple(names), kind)  # lru_cache's: Any
+    # lru_cache's wrapper of a generic function returns Any: the type said here
+    program: _Program[N] = _cached(tuple(sympy.sympify(e) for e in exprs), tuple(names), kind)
     return program
 
 

@@ -32,10 +32,9 @@ import re
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from typing import ClassVar, SupportsFloat, TypeAlias
 
 import numpy as np
-
-from typing import ClassVar, SupportsFloat, TypeAlias
 
 __all__ = ["trace", "Program", "Value", "LANGUAGES"]
 
@@ -156,7 +155,7 @@ class Value:
     __lt__: ClassVar[Callable[[Value, object], Value]]
     __le__: ClassVar[Callable[[Value, object], Value]]
     __eq__: ClassVar[Callable[[Value, object], Value]]  # type: ignore[assignment]  # traced, not compared
-    __ne__: ClassVar[Callable[[Value, object], Value]]  # type: ignore[assignment]
+    __ne__: ClassVar[Callable[[Value, object], Value]]  # type: ignore[assignment]  # traced, not compared
 
     def __init__(self, program: Program, name: str) -> None:
         self.program, self.name = program, name
