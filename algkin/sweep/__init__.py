@@ -73,7 +73,7 @@ class Plan:
     chunk: int
 
 
-def plan(scene: Any, grid: Iterable[str] = (), random: int | None = None, seed: int = 0,
+def plan(scene: Any, *, grid: Iterable[str] = (), random: int | None = None, seed: int = 0,
          analyses: Iterable[str] = ("curve",), point: str | None = None, budget: float | None = None,
          chunk: int = CHUNK) -> Plan:
     """The sweep's job, designs and manifest, every argument checked (UsageError, SceneError)."""
@@ -115,7 +115,7 @@ def plan(scene: Any, grid: Iterable[str] = (), random: int | None = None, seed: 
     return Plan(job, designs, manifest, columns(job, list(designs[0])), chunk)
 
 
-def sweep(scene: Any, out: str | pathlib.Path, grid: Iterable[str] = (), random: int | None = None, seed: int = 0,
+def sweep(scene: Any, out: str | pathlib.Path, *, grid: Iterable[str] = (), random: int | None = None, seed: int = 0,
           analyses: Iterable[str] = ("curve",), point: str | None = None, executor: str = "dask",
           workers: int | None = None, scheduler: str | None = None, budget: float | None = None,
           chunk: int = CHUNK, yes: bool = False) -> Sweep:
@@ -125,7 +125,8 @@ def sweep(scene: Any, out: str | pathlib.Path, grid: Iterable[str] = (), random:
     unless ``yes``."""
     from ..runtime import progress
 
-    planned = plan(scene, grid, random, seed, analyses, point, budget, chunk)
+    planned = plan(scene, grid=grid, random=random, seed=seed, analyses=analyses, point=point, budget=budget,
+                   chunk=chunk)
     _check_executor(executor, workers, scheduler)
     open_directory(out, planned.manifest, check_only=True)
     done = done_chunks(out)
