@@ -43,7 +43,7 @@ class Pose:
     blocked: tuple  # points whose discriminant is negative
 
     @property
-    def assembles(self):
+    def assembles(self) -> bool:
         return not self.blocked
 
 
@@ -66,7 +66,7 @@ def symbolic_parameters(scene, wanted=None):
 class Motion:
     """Closed forms of every point of ``scene`` on every branch, dimensions symbolic."""
 
-    def __init__(self, scene, params=None):
+    def __init__(self, scene, params=None) -> None:
         self.scene = scene if isinstance(scene, Scene) else load_scene(scene)
         self.params, self.compiled = symbolic_parameters(self.scene, params)
         self.branches = closed_forms(self.compiled)

@@ -45,7 +45,7 @@ def load(scene: SceneLike, params: Sequence[str] = (),
 class Mechanism:
     """A scene with some dimensions symbolic: the place to ask for quantities."""
 
-    def __init__(self, scene, params=()):
+    def __init__(self, scene, params=()) -> None:
         self.scene = scene
         self.params = tuple(params)
 
@@ -73,14 +73,14 @@ class Mechanism:
         """A named output of the scene file (or any output text, e.g. ``"dist(A, B)"``)."""
         return Quantity(self, name)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"Mechanism({self.scene.name!r}, params={list(self.params)})"
 
 
 class Quantity:
     """A scalar on the motion: closed form in the input angle, its relation, its extremum."""
 
-    def __init__(self, mechanism, text):
+    def __init__(self, mechanism, text) -> None:
         self.mechanism = mechanism
         self.text = text
 
@@ -128,7 +128,7 @@ class Quantity:
         return problem.closed if problem.scale is None else problem.scale.expr(problem.closed)
 
     @property
-    def degrees(self):
+    def degrees(self) -> bool:
         """Whether the quantity is an angle, its values in degrees."""
         return self._problem.scale is not None
 
@@ -215,5 +215,5 @@ class Quantity:
 
         return extremum_of(self.derivation, self.text, range, largest)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"Quantity({self.text!r} of {self.mechanism.scene.name})"

@@ -39,7 +39,7 @@ class PoseArtists:
     made once on ``axes`` and moved by ``show(pose)``: a slider or an animation frame sets
     their data instead of drawing anew."""
 
-    def __init__(self, axes, motion, color=None):
+    def __init__(self, axes, motion, color=None) -> None:
         # The scene's structure is read once: ``motion.guides`` substitutes into sympy.
         self.bar_ends, self.string_ends, self.guide_lines = motion.bars, motion.strings, motion.guides
         self.fixed = motion.ground
@@ -56,7 +56,7 @@ class PoseArtists:
         self.blocked = axes.text(0.5, 0.5, "", transform=axes.transAxes, ha="center", va="center",
                                  color="tab:red", fontsize="large", visible=False)
 
-    def show(self, pose):
+    def show(self, pose) -> None:
         """Move every artist to ``pose``; where it cannot assemble, only the red text is shown."""
         at = pose.points if pose.assembles else {}
         self.blocked.set_text(f"cannot assemble: {', '.join(pose.blocked)}")
@@ -140,7 +140,7 @@ def draw_curve(axes, result, bounds, grid=500, color="tab:green"):
     return contour
 
 
-def _finish(axes, title):
+def _finish(axes, title) -> None:
     # Fixed limits on every drawing: the box, not the data limits, keeps the scales equal.
     axes.set_aspect("equal", adjustable="box")
     axes.grid(True, linewidth=0.3)
@@ -149,7 +149,7 @@ def _finish(axes, title):
 
 def _pose_title(motion):
     """The title of a figure of one configuration: the scene, its input angles, its branch."""
-    def title(pose):
+    def title(pose) -> str:
         angles = ", ".join(f"{n} = {motion.inputs[n].shown(v)}" for n, v in pose.inputs.items())
         return f"{motion.scene.name}: {angles}, {pose.branch}"
     return title
@@ -164,7 +164,7 @@ class LiveFigure:
     ``title``: pose -> the text above the axes.
     """
 
-    def __init__(self, motion, parameters=None, branch=None, title=None):
+    def __init__(self, motion, parameters=None, branch=None, title=None) -> None:
         self.motion, self.title = motion, title or _pose_title(motion)
         self.parameters = motion.complete(None, parameters)[1]
         self.branch = motion.branches[motion.branch_index(branch)].label
@@ -181,7 +181,7 @@ class LiveFigure:
         _finish(self.axes, "")
         self._limit()
 
-    def _limit(self):
+    def _limit(self) -> None:
         self._relayout = True
         self.axes.set_xlim(self.bounds[0], self.bounds[1])
         self.axes.set_ylim(self.bounds[2], self.bounds[3])

@@ -30,7 +30,7 @@ __all__ = ["interact", "Explorer"]
 class Explorer:
     """What the sliders drive: a ``Motion`` and the picture for any slider values."""
 
-    def __init__(self, scene, params=None, ranges=None):
+    def __init__(self, scene, params=None, ranges=None) -> None:
         self.motion = scene if isinstance(scene, Motion) else Motion(scene, params)
         self.ranges = ranges  # name -> (lo, hi): overrides the scene's declared slider ranges
 
@@ -55,7 +55,7 @@ class Explorer:
         """One line: the branch, and whether it assembles at these values."""
         return self._caption(self.pose(**values))
 
-    def _caption(self, pose):
+    def _caption(self, pose) -> str:
         angles = ", ".join(f"{n} = {self.motion.inputs[n].shown(v)}" for n, v in pose.inputs.items())
         if pose.assembles:
             return f"{pose.branch}: {angles}"

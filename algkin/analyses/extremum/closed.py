@@ -251,7 +251,7 @@ def _contains(region, value):
     return (region["from"] is None or region["from"] <= value) and (region["to"] is None or value <= region["to"])
 
 
-def _interval_text(name, lo, hi):
+def _interval_text(name, lo, hi) -> str:
     if lo is None and hi is None:
         return f"every real {name}"
     if lo is None:

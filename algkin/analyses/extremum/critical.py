@@ -236,7 +236,7 @@ def _is_stationary(problem, degrees):
     return abs(slope) <= mpmath.mpf(10) ** -9 * (1 + abs(problem.value(degrees)))
 
 
-def _kind(problem, degrees):
+def _kind(problem, degrees) -> str:
     step = mpmath.mpf(10) ** -4
     here, left, right = (problem.value(degrees + d) for d in (0, -step, step))
     if left > here and right > here:

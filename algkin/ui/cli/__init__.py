@@ -105,7 +105,7 @@ def _run(args):
     return budget.run(functools.partial(COMMANDS[args.command], args))
 
 
-def _save(files=()):
+def _save(files=()) -> None:
     """Write the files a command made (path, bytes), each replacing its target only when whole."""
     from ...runtime.files import write_atomic
 

@@ -13,7 +13,7 @@ class Shown(Exception):  # noqa: N818 - not an error: the answer to --help or --
     """``--help`` or ``--version`` asked: ``text``, for the command line to write to stdout (where
     argparse would print it and ignore a failed write: ``algkin --help > /dev/full``, exit 0)."""
 
-    def __init__(self, text):
+    def __init__(self, text) -> None:
         super().__init__(text)
         self.text = text
 
@@ -22,7 +22,7 @@ class _Parser(argparse.ArgumentParser):
     """argparse with a one-line error and exit code 2; help and version raised as ``Shown``;
     ``type=int`` and ``type=float`` read ASCII numbers only (Python's own also read other scripts' digits)."""
 
-    def __init__(self, *args, **kwargs):
+    def __init__(self, *args, **kwargs) -> None:
         super().__init__(*args, **kwargs)
         self.register("type", int, _whole)
         self.register("type", float, _real)
@@ -78,23 +78,23 @@ def _command(commands, name, summary):
     return commands.add_parser(name, help=summary, description=summary, formatter_class=_Help)
 
 
-def _scene(parser):
+def _scene(parser) -> None:
     """The scene argument, and ``--set``: every command that takes a scene takes both."""
     parser.add_argument("scene", help="catalog name (see `algkin list`) or path of a scene file (.toml)")
     parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                         help="an exact value for a dimension (3/2, 0.1 = 1/10, sqrt(9/4)); repeatable")
 
 
-def _quiet(parser, default=False):
+def _quiet(parser, default=False) -> None:
     parser.add_argument("--quiet", action="store_true", default=default,
                         help="show no progress on stderr (shown only while stderr is a terminal)")
 
 
-def _json(parser, what="the whole result"):
+def _json(parser, what="the whole result") -> None:
     parser.add_argument("--json", action="store_true", help=f"one JSON document on stdout: {what}")
 
 
-def _common(parser, method=True):
+def _common(parser, method=True) -> None:
     _scene(parser)
     _json(parser)
     if method:
@@ -109,18 +109,18 @@ def _common(parser, method=True):
         _budget_options(parser)
 
 
-def _full_forms(parser):
+def _full_forms(parser) -> None:
     """``--out`` and ``--latex``: the complete results, which the text report only summarises."""
     parser.add_argument("--out", metavar="FILE", help="also write the full JSON document to FILE")
     _latex(parser)
 
 
-def _latex(parser):
+def _latex(parser) -> None:
     parser.add_argument("--latex", action="store_true",
                         help="print the results as LaTeX instead of the text report (not with --json)")
 
 
-def _budget_options(parser, terms=True):
+def _budget_options(parser, terms=True) -> None:
     parser.add_argument("--max-seconds", type=_seconds,
                         help="stop (exit 1) past this many seconds of the whole command, loading included "
                              "(at most a week)")

@@ -30,7 +30,7 @@ OUTPUTS = {
 INPUTS = ("scene", "dir")  # the attributes naming what a command reads (a catalog name is no file)
 
 
-def check_paths(args):
+def check_paths(args) -> None:
     """Raise ``UsageError`` naming the flag of the first output of ``args.command`` that cannot be
     written or that is, or is inside, one of its inputs."""
     from ...runtime.files import check_directory, check_output

@@ -65,7 +65,7 @@ def _report_closed_form(form, name, at=" deg"):
     return lines
 
 
-def _interval(region):
+def _interval(region) -> str:
     lo, hi = region["from"], region["to"]
     return f"({'-oo' if lo is None else f'{lo:.12g}'}, {'oo' if hi is None else f'{hi:.12g}'})"
 
@@ -141,7 +141,7 @@ def _report_time_ratio(ratio):
     return lines
 
 
-def _place(position):
+def _place(position) -> str:
     """A limit position in words: the rocker's angle about its pivot, or the slider's place on its line."""
     if "angle_deg" in position:
         return f"at {position['angle_deg']:.12g} deg about {position['about']}"

@@ -56,14 +56,14 @@ def write_stdout(text, code, failed=False):
     return code
 
 
-def _drop_stdout():
+def _drop_stdout() -> None:
     """The Python docs' recipe (signal module, "Note on SIGPIPE"): point stdout at devnull so that
     the interpreter's own flush at exit, of what could not be written, fails no more."""
     with contextlib.suppress(OSError, ValueError, AttributeError):  # AttributeError: no stdout at all
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
 
 
-def say(line):
+def say(line) -> None:
     """``line`` on stderr, after ``algkin: ``; nothing if stderr cannot take it (closed or full)."""
     if sys.stderr is None:
         return  # print(file=None) would write to stdout
@@ -76,7 +76,7 @@ class Stopped(BaseException):
     ``finally`` on the way out runs: a budget's child is killed and joined. Not an AlgkinError:
     like KeyboardInterrupt, no ``except Exception`` may swallow it."""
 
-    def __init__(self, signum):
+    def __init__(self, signum) -> None:
         super().__init__(_STOPS[signum])
         self.signum = signum
 

@@ -6,7 +6,7 @@ import json
 __all__ = ["add_commands", "COMMANDS"]
 
 
-def add_commands(commands, command, json_option):
+def add_commands(commands, command, json_option) -> None:
     """Add ``sweep`` and ``atlas`` to the subcommands (``command``: how a subcommand is made)."""
     sweep = command(commands, "sweep", "named analyses over a grid (or random draws) of a scene's dimensions, "
                                        "one Parquet row per design; resumable, on Dask or in this process")
