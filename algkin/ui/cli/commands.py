@@ -6,6 +6,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import pathlib
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any, Union
@@ -191,7 +192,7 @@ def _cmd_plot(args: argparse.Namespace) -> Outcome:
     return render(args, _written(args, save(figure, out)), lambda d: d["out"]), 0
 
 
-def _written(args: argparse.Namespace, out: str | pathlib.Path) -> dict[str, object]:
+def _written(args: argparse.Namespace, out: str | os.PathLike[str]) -> dict[str, object]:
     """``plot``'s JSON document: the file written and what it shows."""
     return {"scene": args.scene, "out": str(out), "format": pathlib.Path(str(out)).suffix.lower().lstrip("."),
             "of": args.of}
