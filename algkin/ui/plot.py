@@ -14,7 +14,7 @@ from __future__ import annotations
 import io
 import os
 import pathlib
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, TypeVar, Union
 
 import numpy as np
@@ -28,6 +28,7 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
     from ..analyses.extremum import Extremum
+    from ..analyses.extremum.closed import Region
     from ..analyses.quantities import Quantity
     from ..bench.accuracy import Accuracy
     from ..bench.row import BenchRow
@@ -84,7 +85,7 @@ def quantity_figure(quantity: Quantity, found: Extremum, derivative: bool = Fals
     if derivative or quantity.degrees:
         values = np.broadcast_to(_sampler(quantity, expr)(np.radians(degrees)), degrees.shape)
     else:  # the stabilised form (numba's loop where installed and it pays): no cancellation in the curve
-        values = quantity.at(**{quantity.input.name: degrees})
+        values = np.asarray(quantity.at(**{quantity.input.name: degrees}))
     best = found.minimum
     figure = new_figure()
     axes = figure.add_subplot()
@@ -139,7 +140,7 @@ def minimum_figure(quantity: Quantity, found: Extremum, parameter: str, lo: floa
     return figure
 
 
-def _within(region: Mapping[str, float | None], x: float) -> bool:
+def _within(region: Region, x: float) -> bool:
     return (region["from"] is None or region["from"] <= x) and (region["to"] is None or x <= region["to"])
 
 
@@ -147,6 +148,7 @@ def _certified_minimum(found: Extremum, quantity: Quantity, symbol: sympy.Symbol
     """The minimum at one dimension, by the fixed-dimension certified path (independent of the regions)."""
     from ..analyses.extremum import extreme_at
 
+    assert found.problem is not None and found.stationary is not None, "a closed form's extremum keeps its problem"
     values = {symbol: sympy.Rational(str(x))}
     return float(extreme_at(found.problem, found.stationary, values, *found.range).value)
 

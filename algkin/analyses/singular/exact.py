@@ -26,7 +26,7 @@ import sympy
 
 from ...errors import ComputationError
 from ...system.convert import fmpq_to_rational, to_sympy
-from .numberfield import START_BITS, MAX_BITS, Element, NumberField, RealRoot
+from .numberfield import START_BITS, MAX_BITS, Element, NumberField, RealRoot, real_balls
 
 __all__ = ["Coordinate", "coordinates", "minimal_polynomial", "polynomial_text", "ENCLOSURE_BITS"]
 
@@ -72,7 +72,7 @@ def minimal_polynomial(field: NumberField, element: Element) -> flint.fmpz_poly:
     return minimal if minimal.coeffs()[-1] > 0 else -minimal
 
 
-def _exact(minimal, text, element, root):
+def _exact(minimal: flint.fmpz_poly, text: sympy.Expr, element: Element, root: RealRoot) -> sympy.Expr:
     """The sympy value: the rational itself, or ``CRootOf(minimal, index)`` at the root the ball meets."""
     if minimal.degree() == 1:
         a, b = minimal.coeffs()
@@ -81,7 +81,7 @@ def _exact(minimal, text, element, root):
     while bits <= MAX_BITS:
         ball = root.value(element, bits)
         with flint.ctx.workprec(bits):
-            reals = sorted((r.real for r, _ in minimal.complex_roots() if r.imag.is_zero()), key=lambda r: r.mid())
+            reals = sorted(real_balls(minimal), key=lambda r: r.mid())
         meeting = [k for k, r in enumerate(reals) if r.overlaps(ball)]
         if len(meeting) == 1:
             return sympy.CRootOf(text, meeting[0], radicals=minimal.degree() == 2)
@@ -92,4 +92,4 @@ def _exact(minimal, text, element, root):
 def polynomial_text(poly: flint.fmpz_poly | flint.fmpq_poly, name: str) -> sympy.Expr:
     """A univariate python-flint polynomial as a sympy expression in ``name``."""
     ctx = flint.fmpq_mpoly_ctx.get((name,), "lex")
-    return to_sympy(ctx.from_dict({(k,): flint.fmpq(c) for k, c in enumerate(poly.coeffs()) if c != 0}), ctx)
+    return to_sympy(ctx.from_dict({(k,): c for k, c in enumerate(flint.fmpq_poly(poly).coeffs()) if c != 0}), ctx)

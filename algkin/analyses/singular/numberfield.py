@@ -19,17 +19,25 @@ element has a sign at a real root that ball arithmetic decides by refining the r
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import cast
 
 import flint
 
 from ...errors import ComputationError
 
 __all__ = ["NumberField", "RealRoot", "Element", "poly_gcd", "poly_rem", "poly_derivative", "real_root_count",
-           "trim"]
+           "trim", "real_balls"]
 
 Element = flint.fmpq_poly  # an element of the field: a polynomial in t of degree < deg p
 START_BITS = 64
 MAX_BITS = 1 << 16  # past this the sign of a nonzero element would be astronomically small
+
+
+def real_balls(poly: flint.fmpz_poly) -> list[flint.arb]:
+    """The real roots of ``poly`` as balls (at the working precision), in no particular order."""
+    # python-flint's stubs say complex_roots gives acb balls; it gives (ball, multiplicity) pairs
+    pairs = cast("list[tuple[flint.acb, int]]", poly.complex_roots())
+    return [r.real for r, _ in pairs if r.imag.is_zero()]
 
 
 class NumberField:
@@ -76,8 +84,7 @@ class NumberField:
 
     def real_roots(self) -> list[RealRoot]:
         """The real roots of ``p``, ascending, each a ``RealRoot``."""
-        count = sum(1 for r, _ in self.minimal.complex_roots() if r.imag.is_zero())
-        return [RealRoot(self, k) for k in range(count)]
+        return [RealRoot(self, k) for k in range(len(real_balls(self.minimal)))]
 
 
 class RealRoot:
@@ -92,7 +99,7 @@ class RealRoot:
         """An isolating enclosure of the root, computed at ``bits`` of working precision."""
         if bits not in self._balls:
             with flint.ctx.workprec(bits):
-                reals = [r.real for r, _ in self.field.minimal.complex_roots() if r.imag.is_zero()]
+                reals = real_balls(self.field.minimal)
             reals.sort(key=lambda r: r.mid())  # disjoint balls: their exact midpoints order them
             self._balls[bits] = reals[self.index]
         return self._balls[bits]
