@@ -30,7 +30,7 @@ from ..errors import UsageError
 from ..evaluate import NUMPY, evaluate
 from ..scene import Scene, compile_scene, load_scene
 from ..scene.compile import Compiled
-from ..scene.implicit.floats import FloatArray
+from ..scene.implicit.base import FloatArray
 from ..scene.load import SceneLike
 from ..scene.constructions import Crank, Dyad, Fixed, Frame, Slider
 from ..system import input_values, symbol

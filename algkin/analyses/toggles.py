@@ -1,6 +1,6 @@
 """Toggles (dead centres): where an implicit point's two assembly modes meet, certified.
 
-Each implicit point's spec gives its conditions (``algkin.scene.implicit``). A dyad on
+Each implicit point's branch algebra gives its conditions (``algkin.branches.constructions``). A dyad on
 bases P, Q with lengths l1, l2 toggles where ``|PQ| = l1 + l2`` (*extended*:
 both bars in line, pointing apart) or ``|PQ| = |l1 - l2|`` (*folded*: in line, one over the
 other). A slider (on the line through P with direction d, at distance l from Q) toggles
@@ -27,12 +27,13 @@ import flint
 import sympy
 
 from ..branches import Branch, closed_forms
+from ..branches.constructions import algebra_of
 from ..eliminate import eliminate
 from ..errors import UsageError
 from ..evaluate import ARB, evaluate
 from ..scene import Compiled, compile_scene
 from ..scene.constructions import Crank, Dyad, Fixed
-from ..scene.implicit import ImplicitSpec
+from ..scene.implicit import DyadSpec, ImplicitSpec
 from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
 from ..system import input_values, symbol
@@ -94,7 +95,7 @@ def toggle_conditions(compiled: Compiled, spec: ImplicitSpec) -> dict[str, sympy
     """{kind: poly} in the input's c, s (earlier points eliminated), for a dyad or a slider."""
     defaults = _defaults(compiled)
     return {kind: _eliminate_earlier(compiled, sympy.expand(e.xreplace(defaults)), spec)
-            for kind, e in spec.toggle_conditions().items()}
+            for kind, e in algebra_of(spec).toggle_conditions().items()}
 
 
 def _eliminate_earlier(compiled: Compiled, condition: sympy.Expr, spec: ImplicitSpec) -> sympy.Expr:
@@ -224,7 +225,7 @@ def _square(ball: flint.arb) -> flint.arb:
 def grashof(compiled: Compiled) -> Grashof | None:
     """The Grashof class of a four-bar (crank about a ground pivot, dyad on crank tip and ground)."""
     scene = compiled.scene
-    for dyad in compiled.dyads:
+    for dyad in (spec for spec in compiled.implicit if isinstance(spec, DyadSpec)):
         construction = scene.points[dyad.point]
         assert isinstance(construction, Dyad), "a dyad spec's point is a dyad"
         first, second = (scene.points[p] for p in construction.bases)

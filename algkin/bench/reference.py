@@ -45,7 +45,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..branches.closed_form import Branch
 from ..scene.compile import Compiled
-from ..scene.implicit.base import Fix, ImplicitSpec
+from ..branches.constructions.base import Fix
+from ..scene.implicit.base import ImplicitSpec
 from ..system import symbol
 
 __all__ = ["Reference", "Certified", "BITS", "NotCertified"]

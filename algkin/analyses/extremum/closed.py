@@ -30,7 +30,8 @@ import sympy
 
 from ...eliminate import eliminate
 from ...errors import ComputationError
-from ...system.convert import real_roots
+from ...system.convert import univariate
+from ...system.roots import real_roots
 from .critical import DIGITS, ROOT_BITS, CriticalPoint, Number, Problem, extreme, meeting_factors, points_at
 
 __all__ = ["ClosedForm", "closed_form", "value_factors", "Region"]
@@ -297,7 +298,7 @@ def _regions(problem: Problem, events: Sequence[sympy.Expr], extremum_at: Callab
     and each region's value as a sympy expression."""
     (name,) = problem.parameters
     with flint.ctx.workprec(ROOT_BITS):
-        cuts = sorted({float(r.mid()) for e in events for r in real_roots(e, name)})
+        cuts = sorted({float(r.ball.mid()) for e in events for r in real_roots(univariate(e, name))})
     bounds: list[float | None] = [None, *cuts, None]
     regions: list[Region] = []
     values: list[sympy.Expr | None] = []

@@ -31,7 +31,8 @@ from collections.abc import Sequence
 from math import comb
 from typing import TypedDict
 
-from .numberfield import Element, NumberField, RealRoot, poly_derivative, poly_gcd, real_root_count, trim
+from ...system.roots import RealRoot
+from .numberfield import Element, NumberField, poly_derivative, poly_gcd, real_root_count, trim
 
 __all__ = ["shift", "multiplicity", "describe", "Local"]
 
