@@ -13,7 +13,7 @@ import time
 from collections.abc import Sequence
 from pathlib import Path
 
-from .peers import (BUDGET, MIN_REPEATS, MIN_SECONDS, Peer, PeerFailure, PeerProblem, PeerResult, _Encoded, decode,
+from .peers import (BUDGET, MIN_REPEATS, MIN_SECONDS, Encoded, Peer, PeerFailure, PeerProblem, PeerResult, decode,
                     eliminant, encode, execute, failure, peer, polynomial_ring)
 
 __all__ = ["PEERS", "run_peers", "find_msolve", "found_peers"]
@@ -82,7 +82,7 @@ quit;
 """
 
 
-def _singular_script(encoded: _Encoded, compute: str, cap: float, procs: str = "") -> str:
+def _singular_script(encoded: Encoded, compute: str, cap: float, procs: str = "") -> str:
     # rtimer counts wall time since Singular started, here in microseconds
     head = (f'system("--ticks-per-sec", 1000000);\nshort = 0;\n'
             f'ring r = 0, ({",".join(encoded.names)}), dp;\n{procs}\n'
@@ -91,12 +91,12 @@ def _singular_script(encoded: _Encoded, compute: str, cap: float, procs: str = "
                                           minimum=int(MIN_SECONDS * 1e6), cap=int(cap * 1e6))
 
 
-def _singular_eliminate_script(encoded: _Encoded, cap: float) -> str:
+def _singular_eliminate_script(encoded: Encoded, cap: float) -> str:
     product = "*".join(encoded.names[:encoded.k])
     return _singular_script(encoded, f"J = eliminate(I, {product});", cap)
 
 
-def _singular_resultant_script(encoded: _Encoded, cap: float) -> str:
+def _singular_resultant_script(encoded: Encoded, cap: float) -> str:
     return _singular_script(encoded, f"J = chain(I, {encoded.k});", cap, _SINGULAR_CHAIN)
 
 
@@ -141,7 +141,7 @@ quit;
 """
 
 
-def _pari_script(encoded: _Encoded, cap: float) -> str:
+def _pari_script(encoded: Encoded, cap: float) -> str:
     # Listing the variables first gives them priorities in that order, eliminated ones
     # highest: each polresultant is then taken in its arguments' main variable, and
     # content() divides out the factors free of the next variable to eliminate.
@@ -172,7 +172,7 @@ exit 0;
 """
 
 
-def _m2_script(encoded: _Encoded, cap: float) -> str:
+def _m2_script(encoded: Encoded, cap: float) -> str:
     # a fresh ideal each run: Macaulay2 caches a Groebner basis on the ideal's matrix
     return _M2_SCRIPT.format(names=",".join(encoded.names),
                              eliminated=",".join(encoded.names[:encoded.k]),

@@ -29,7 +29,7 @@ from sympy.polys.groebnertools import groebner
 from sympy.polys.orderings import grevlex
 from sympy.polys.rings import PolyElement, PolyRing, ring as sparse_ring
 
-__all__ = ["PeerProblem", "PeerResult", "PeerFailure", "BUDGET", "MIN_SECONDS", "MIN_REPEATS",
+__all__ = ["PeerProblem", "PeerResult", "PeerFailure", "Encoded", "Peer", "BUDGET", "MIN_SECONDS", "MIN_REPEATS",
            "encode", "decode", "execute", "failure", "parse", "polynomial_ring", "eliminant", "side_relations", "peer"]
 
 MIN_SECONDS = 0.2
@@ -67,7 +67,7 @@ class PeerFailure(Exception):
 # -- the problem as the engines see it ------------------------------------------------------
 
 @dataclass(frozen=True)
-class _Encoded:
+class Encoded:
     """The problem with variables renamed v1, v2, ... (eliminated first, in order) and
     integer coefficients: every engine accepts these names and none of them has a meaning
     of its own there (``I``, ``E``, ``pi``; ``_`` is an operator in Macaulay2)."""
@@ -78,7 +78,7 @@ class _Encoded:
     k: int  # how many variables to eliminate
 
 
-def encode(problem: PeerProblem) -> _Encoded:
+def encode(problem: PeerProblem) -> Encoded:
     originals = tuple(problem.eliminate) + tuple(problem.keep)
     names = tuple(f"v{i + 1}" for i in range(len(originals)))
     symbols = [sympy.Symbol(n) for n in originals]
@@ -87,7 +87,7 @@ def encode(problem: PeerProblem) -> _Encoded:
         expr = sympy.sympify(text, locals={n: s for n, s in zip(originals, symbols)})
         _, poly = sympy.Poly(expr, *symbols, domain="QQ").clear_denoms(convert=True)
         polys.append(_engine_syntax(poly.primitive()[1], names))
-    return _Encoded(names, originals, tuple(polys), len(problem.eliminate))
+    return Encoded(names, originals, tuple(polys), len(problem.eliminate))
 
 
 def _engine_syntax(poly: sympy.Poly, names: Sequence[str]) -> str:
@@ -177,7 +177,7 @@ def parse(text: str, ring: PolyRing) -> PolyElement:
     return value
 
 
-def decode(text: str, encoded: _Encoded, ring: PolyRing) -> PolyElement:
+def decode(text: str, encoded: Encoded, ring: PolyRing) -> PolyElement:
     """An engine's polynomial (in v1, v2, ...) as an element of ``ring`` (the kept names)."""
     table = dict(zip(encoded.names, encoded.originals))
     return parse(re.sub(r"\bv\d+\b", lambda m: table[m.group(0)], text), ring)
@@ -291,7 +291,7 @@ def _read_output(out: str, ticks_per_second: float) -> tuple[float, list[str]]:
 Peer = Callable[[PeerProblem, float], PeerResult]
 
 
-def peer(engine: str, executable: str, make_script: Callable[[_Encoded, float], str], suffix: str,
+def peer(engine: str, executable: str, make_script: Callable[[Encoded, float], str], suffix: str,
          ticks_per_second: float, command: list[str]) -> Peer:
     """A peer function from an engine's script maker and how to run it."""
     def peer(problem: PeerProblem, budget: float = BUDGET) -> PeerResult:
