@@ -198,7 +198,7 @@ def _written(args: argparse.Namespace, out: str | os.PathLike[str]) -> dict[str,
             "of": args.of}
 
 
-def _against(text: str) -> tuple[str, Any, Any]:
+def _against(text: str) -> tuple[str, float, float]:
     """``--against p=lo:hi``: the dimension and its span."""
     from ..draw import parse_ranges
 
