@@ -108,7 +108,7 @@ class _Line:
         # here, and not at the top: only a shown line pays for the import
         from tqdm import tqdm
 
-        class Bar(tqdm):  # type: ignore[type-arg]  # generic in its stubs only: not subscriptable at run time
+        class Bar(tqdm):  # type: ignore[type-arg, unused-ignore]  # generic in its stubs only (--strict asks for its argument): not subscriptable at run time
             # No monitor thread: it only tunes how often a fast loop redraws, and a process that
             # forks workers (budgets) had better have no other thread, which could hold a lock.
             monitor_interval = 0
