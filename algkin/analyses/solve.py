@@ -32,7 +32,7 @@ from ..branches import Branch, closed_forms
 from ..errors import ComputationError, UsageError
 from ..evaluate import ARB, evaluate
 from ..runtime.frozen import FrozenDict, frozen
-from ..scene import Compiled, Scene, compile_scene
+from ..scene import Compiled, Input, Scene, compile_scene
 from ..scene.load import as_scene
 from ..system import input_values, symbol
 
@@ -120,12 +120,18 @@ def _value(scene: Scene, name: str, value: Any) -> Fraction:
     except (ValueError, ZeroDivisionError):
         exact = None
     lo, hi = spec.span
-    inside = exact is not None and (Fraction(str(spec.lo)) <= exact <= Fraction(str(spec.hi)) if spec.unit == "deg"
-                                    else lo <= exact <= hi)
-    if not inside:
+    if exact is None or not _within(exact, spec):
         what = "a number of degrees" if spec.is_angle else "a length"
         raise UsageError("at", f"{name}={value}", f"expected {what} in [{lo:g}, {hi:g}], exact (e.g. 30, 1/3, 0.5)")
     return exact
+
+
+def _within(value: Fraction, spec: Input) -> bool:
+    """Whether ``value`` (degrees for an angle) lies in the input's range: exactly, unless the range is in radians."""
+    if spec.unit == "deg" or not spec.is_angle:
+        return Fraction(str(spec.lo)) <= value <= Fraction(str(spec.hi))
+    lo, hi = spec.span
+    return lo <= value <= hi
 
 
 def _configuration(compiled: Compiled, branch: Branch, at: Mapping[str, Fraction], digits: int
@@ -212,12 +218,16 @@ def _decimal(ball: flint.arb, digits: int) -> str:
 
     >>> _decimal(flint.arb(2).sqrt(), 5), _decimal(flint.arb(3) / 2, 30), _decimal(flint.arb(0), 30)
     ('1.4142', '1.5', '0')
+    >>> _decimal(flint.arb(-400), 8), _decimal(flint.arb(10) ** 9, 3), _decimal(flint.arb(1) / 2**70, 3)
+    ('-400', '1e+9', '8.47e-22')
     """
     mantissa, exponent = ball.mid().man_exp()
     with localcontext() as context:
         context.prec = max(digits, abs(int(exponent)) + len(str(mantissa))) + 10
-        exact = Decimal(int(mantissa)) * Decimal(2) ** int(exponent)
-        return format(exact.normalize(), f".{digits}g")
+        exact = (Decimal(int(mantissa)) * Decimal(2) ** int(exponent)).normalize()
+        if exact == exact.to_integral_value() and abs(exact) < 10 ** digits:  # 400, not 4e+2
+            return str(int(exact))
+        return format(exact, f".{digits}g")
 
 
 def _said(at: Mapping[str, Fraction]) -> str:

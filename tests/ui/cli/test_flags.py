@@ -26,11 +26,11 @@ NOT_FROM_THE_COMMAND_LINE = {
     "engine": "evaluate's engine; no command takes one",
     "NUMBA_NUM_THREADS": "an environment variable, named as such",
     "sweep": "the sweep extra missing: its name is the package's, said as such",
-    "prefer": "solve_group's preferred variables; no command passes any",
-    "unknowns": "solve_group's unknowns: a scene's groups are checked (SceneError) before they are solved",
-    "equations": "solve_group's equations: as many as the unknowns, checked on the scene first",
-    "poly": "real_roots' polynomial: an eliminant, never typed",
-    "within": "real_roots' interval; no command passes one",
+    "poly": "system.roots of a zero polynomial; every command passes a nonzero one",
+    "within": "system.roots' interval turned round; every command passes an ordered one",
+    "equations": "eliminate.group's solve_group, from Python only: no command solves a group",
+    "unknowns": "eliminate.group's solve_group, from Python only",
+    "prefer": "eliminate.group's solve_group, from Python only",
 }
 
 # A name given as the first argument of UsageError, or of the helpers that pass it on to one.
