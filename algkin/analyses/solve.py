@@ -18,8 +18,9 @@ Nothing assembling at the inputs is a valid answer, not a failure: no configurat
 
 from __future__ import annotations
 
+import itertools
 import math
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from decimal import Decimal, localcontext
 from fractions import Fraction
 from typing import Any
@@ -29,11 +30,14 @@ import flint
 import sympy
 
 from ..branches import Branch, closed_forms
-from ..errors import ComputationError, UsageError
+from ..errors import ComputationError, SceneError, UsageError
 from ..evaluate import ARB, evaluate
 from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled, Input, Scene, compile_scene
+from ..scene.groups import Groups, compile_groups
 from ..scene.load import as_scene
+from ..eliminate.group import GroupSolution, Mode, modes, solve_group
+from ..system.convert import flint_context, to_flint
 from ..system import input_values, symbol
 
 __all__ = ["solve", "Solution", "Configuration", "DIGITS", "MAX_DIGITS"]
@@ -91,8 +95,10 @@ def solve(scene: Scene | str, at: Mapping[str, Any], *, mode: str | None = None,
     if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= MAX_DIGITS:
         raise UsageError("digits", digits, f"expected a whole number of digits in [1, {MAX_DIGITS}]")
     scene = as_scene(scene)
+    if scene.unknown_points:
+        return _solved_together(scene, at, mode=mode, digits=digits)
     compiled = compile_scene(scene, list(scene.points))
-    values = _inputs(scene, compiled, at)
+    values = _inputs(scene, compiled.system.inputs, at)
     branches = closed_forms(compiled)
     labels = [b.label for b in branches]
     if mode is not None and mode not in labels:
@@ -101,12 +107,12 @@ def solve(scene: Scene | str, at: Mapping[str, Any], *, mode: str | None = None,
     return Solution(scene.name, values, digits, tuple(c for c in found if c is not None))
 
 
-def _inputs(scene: Scene, compiled: Compiled, at: Mapping[str, Any]) -> dict[str, Fraction]:
-    """``at`` as exact values, checked: every input the scene's points move with given, each in range."""
+def _inputs(scene: Scene, used: Iterable[str], at: Mapping[str, Any]) -> dict[str, Fraction]:
+    """``at`` as exact values, checked: every input the scene's points move with (``used``) given, each in range."""
     for name in at:
         if name not in scene.inputs:
             raise UsageError("at", name, f"not an input of {scene.name} (inputs: {', '.join(scene.inputs) or 'none'})")
-    missing = [n for n in compiled.system.inputs if n not in at]
+    missing = [n for n in used if n not in at]
     if missing:
         raise UsageError("at", ", ".join(missing), f"no value given for {', '.join(missing)} (NAME=VALUE)")
     return {name: _value(scene, name, value) for name, value in at.items()}
@@ -171,21 +177,28 @@ def _substitution(branch: Branch) -> dict[sympy.Symbol, sympy.Expr]:
     return {symbol(u): v for u, v in branch.values.items()}
 
 
-def _ball_inputs(compiled: Compiled, at: Mapping[str, Fraction]) -> dict[str, flint.arb]:
+def _ball_inputs(compiled: Compiled | Groups, at: Mapping[str, Fraction]) -> dict[str, flint.arb]:
     """Each input's variables as balls: an angle's cos and sin (exact at multiples of 90 degrees,
     where a toggle's discriminant is then exactly 0), a length as itself."""
     values: dict[str, flint.arb] = {}
-    for name, variables in compiled.system.inputs.items():
+    inputs = compiled.inputs if isinstance(compiled, Groups) else compiled.system.inputs
+    for name, variables in inputs.items():
+        if name not in at:
+            continue
         value = at[name]
         if len(variables) == 1:
             values[variables[0]] = flint.arb(flint.fmpq(value.numerator, value.denominator))
         elif value % 90 == 0:  # degrees, whatever the unit the scene declares its range in
-            quarter = int(value // 90) % 4
-            values.update(dict(zip(variables, map(flint.arb, ((1, 0), (0, 1), (-1, 0), (0, -1))[quarter]))))
+            values.update(dict(zip(variables, map(flint.arb, _quarter(value)))))
         else:
             radians = flint.arb.pi() * flint.fmpq(value.numerator, value.denominator) / 180
             values.update(input_values(variables, radians))
     return values
+
+
+def _quarter(degrees: Fraction) -> tuple[int, int]:
+    """cos and sin of a multiple of 90 degrees."""
+    return ((1, 0), (0, 1), (-1, 0), (0, -1))[int(degrees // 90) % 4]
 
 
 def _sign(ball: flint.arb) -> int | None:
@@ -232,3 +245,109 @@ def _decimal(ball: flint.arb, digits: int) -> str:
 
 def _said(at: Mapping[str, Fraction]) -> str:
     return ", ".join(f"{n} = {v}" for n, v in at.items())
+
+
+def _solved_together(scene: Scene, at: Mapping[str, Any], *, mode: str | None, digits: int) -> Solution:
+    """``solve`` on a scene with points solved together: each group's eliminant and lifts
+    (``solve_group``), its real modes at the inputs certified (``modes``), every point in balls."""
+    compiled = compile_groups(scene)
+    variables = {str(v) for xy in compiled.coordinates.values() for c in xy for v in sympy.sympify(c).free_symbols}
+    used = [n for n, names in compiled.inputs.items() if set(names) & variables]
+    values = _inputs(scene, used, at)
+    exact = _exact_inputs(compiled, values)
+    solutions = [_group_solution(compiled, k) for k in range(len(compiled.groups))]
+    labelled = _configurations(compiled, solutions, exact, values, digits)
+    labels = [label for label, _ in labelled]
+    if mode is not None and mode not in labels:
+        raise UsageError("mode", mode, f"not a mode of {scene.name} at {_said(values)} (modes: {', '.join(labels) or 'none'})")
+    count = math.prod(s.complex_count for s in solutions)
+    return Solution(scene.name, values, digits, tuple(c for label, c in labelled if mode in (None, label)), count)
+
+
+def _exact_inputs(compiled: Groups, at: Mapping[str, Fraction]) -> dict[str, flint.fmpq]:
+    """Each used input's variables exactly: a length as it is, an angle's cos and sin where they
+    are rational (multiples of 90 degrees); the eliminant's real roots are isolated over QQ."""
+    exact: dict[str, flint.fmpq] = {}
+    for name, value in at.items():
+        variables = compiled.inputs[name]
+        if len(variables) == 1:
+            exact[variables[0]] = flint.fmpq(value.numerator, value.denominator)
+        elif value % 90 == 0:
+            exact.update(zip(variables, map(flint.fmpq, _quarter(value))))
+        else:
+            raise UsageError("at", f"{name}={value}", "with points solved together an angle needs rational cos and "
+                             "sin, for now: a multiple of 90 degrees")
+    return exact
+
+
+def _group_solution(compiled: Groups, index: int) -> GroupSolution:
+    """The group's rational univariate representation; its equations may hold inputs, not an earlier group's points."""
+    group = compiled.groups[index]
+    names = sorted({str(v) for e in group.equations for v in e.free_symbols} - set(group.unknowns))
+    earlier = [u for g in compiled.groups[:index] for u in g.unknowns if u in names]
+    if earlier:
+        raise SceneError(compiled.scene.source, "constraints", f"the group of {', '.join(group.points)} is held by "
+                         f"points of an earlier group ({', '.join(earlier)}): groups solved in sequence are not "
+                         "supported yet")
+    ctx = flint_context(group.unknowns + tuple(names))
+    return solve_group([to_flint(e, ctx) for e in group.equations], group.unknowns)
+
+
+def _configurations(compiled: Groups, solutions: Sequence[GroupSolution], exact: Mapping[str, flint.fmpq],
+                    at: Mapping[str, Fraction], digits: int) -> list[tuple[str, Configuration]]:
+    """Every combination of the groups' modes, labelled, its points ``digits`` narrow."""
+    bits = int(digits * 3.33) + 64
+    for _ in range(RAISES):
+        with flint.ctx.workprec(bits):
+            found = [modes(s, {p: exact[p] for p in s.parameters}, bits=bits) for s in solutions]
+            inputs = _ball_inputs(compiled, at)
+            labelled = []
+            for combination in itertools.product(*found):
+                values = dict(inputs)
+                for group_mode in combination:
+                    values.update({u: v for u, v in group_mode.values.items()})
+                points = {p: tuple(evaluate(v, values, ARB) for v in xy) for p, xy in compiled.coordinates.items()}
+                labelled.append((combination, points))
+            if all(_narrow(b, digits) for _, points in labelled for xy in points.values() for b in xy):
+                names = [_mode_labels(compiled, k, [m[k] for m, _ in labelled], [p for _, p in labelled])
+                         for k in range(len(solutions))]
+                return [(" ".join(n[i] for n in names), _written(" ".join(n[i] for n in names), points, digits))
+                        for i, (_, points) in enumerate(labelled)]
+        bits *= 2
+    raise ComputationError(f"{compiled.scene.name} at {_said(at)}: the coordinates did not narrow to {digits} "
+                           f"digits at {bits // 2} bits")
+
+
+def _mode_labels(compiled: Groups, index: int, group_modes: Sequence[Mode],
+                 configurations: Sequence[Mapping[str, tuple[flint.arb, ...]]]) -> list[str]:
+    """Each mode's label: a sign per leg (a distance from a point outside the group to one on it,
+    ``+`` when the group's centroid lies left of the leg), certified; with the mode's index
+    (``/k``, its rank among the real roots) where signs are undecided or do not tell it apart."""
+    group = compiled.groups[index]
+    body = _body(compiled, index)
+    legs = [c.points for name in group.constraints for c in [compiled.scene.constraints[name]]
+            if c.kind in ("dist", "dist2") and len({p in body for p in c.points}) == 2]
+    signs = []
+    for points in configurations:
+        centre = [sum((points[p][k] for p in body), flint.arb(0)) / len(body) for k in (0, 1)]
+        row = ""
+        for first, second in legs:
+            (outside, inside) = (first, second) if second in body else (second, first)
+            (ax, ay), (px, py) = points[outside], points[inside]
+            sign = _sign((px - ax) * (centre[1] - py) - (py - ay) * (centre[0] - px))
+            row += {1: "+", -1: "-"}.get(sign or 0, "?")
+        signs.append(row)
+    told = [row and "?" not in row and signs.count(row) == 1 for row in signs]
+    return [row if ok else f"{row}/{m.index + 1}".lstrip("/") for row, ok, m in zip(signs, told, group_modes)]
+
+
+def _body(compiled: Groups, index: int) -> list[str]:
+    """The points that move with the group alone: its own and those built on them only."""
+    own = set(compiled.groups[index].unknowns)
+    others = {u for g in compiled.groups for u in g.unknowns} - own
+    body = []
+    for name, xy in compiled.coordinates.items():
+        held = {str(v) for c in xy for v in sympy.sympify(c).free_symbols}
+        if held & own and not held & others:
+            body.append(name)
+    return body

@@ -32,6 +32,7 @@ from ..eliminate import eliminate
 from ..errors import UsageError
 from ..evaluate import ARB, evaluate
 from ..scene import Compiled, compile_scene
+from ..scene.compile import refuse_solved_together
 from ..scene.constructions import Crank, Dyad, Fixed
 from ..scene.implicit import DyadSpec, ImplicitSpec
 from ..scene.load import SceneLike, Values, as_scene
@@ -138,6 +139,7 @@ def toggles(scene: SceneLike, artefacts: bool = True,
     discriminants are not toggles. ``set`` gives dimensions exact values in place of their defaults.
     """
     scene = with_values(as_scene(scene), set)  # a name, a path (str or pathlib) or a Scene
+    refuse_solved_together(scene)
     implicit = [n for n, p in scene.points.items() if p.labels]  # the points with assembly modes
     if not implicit:
         raise UsageError("scene", scene.name, "has no dyad or slider, so no assembly modes to meet")

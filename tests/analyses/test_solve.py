@@ -2,6 +2,7 @@
 
 from fractions import Fraction
 
+import flint
 import mpmath
 import pytest
 
@@ -97,3 +98,94 @@ def test_the_facade_has_it():
 
     found = algkin.solve("fourbar", at={"theta": 0}, digits=5)
     assert isinstance(found, algkin.Solution) and len(found.configurations) == 2
+
+
+# Points solved together: the SPEC's 3-RPR, and Gosselin's design with six real assembly modes,
+# checked against the loop equations solved independently (the platform's pose (x, y, theta):
+# mpmath's Newton method at 50 digits from many starts, deduplicated; tests/eliminate/test_group.py).
+from tests.eliminate.test_group import GOSSELIN, GOSSELIN_LEGS, Platform  # noqa: E402
+from tests.scene.test_groups import SPEC_3RPR  # noqa: E402
+
+from algkin.scene import load_scene_text  # noqa: E402
+
+
+def _fmpq(value):
+    exact = Fraction(value)
+    return flint.fmpq(exact.numerator, exact.denominator)
+
+
+def _matches(found, poses):
+    """Each numeric pose matched to one configuration within 1e-30, none missing, none extra."""
+    assert len(found.configurations) == len(poses)
+    left = list(poses)
+    with mpmath.workdps(50):
+        for configuration in found.configurations:
+            mine = [mpmath.mpf(v) for p in ("P1", "P2") for v in configuration.points[p]]
+            errors = [max(abs(a - b) for a, b in zip(mine, pose)) for pose in left]
+            best = min(range(len(left)), key=errors.__getitem__)
+            assert errors[best] < 1e-30
+            left.pop(best)
+            assert configuration.radius < 1e-30
+
+
+@pytest.mark.parametrize("r1", [6, 12, "37/4"])
+def test_the_spec_3rpr_configurations_are_the_loop_equations_real_solutions(r1):
+    found = solve(load_scene_text(SPEC_3RPR, "3rpr.toml"), at={"r1": r1}, digits=40)
+    assert found.complex_count == 6
+    poses = Platform([(0, 0), (10, 0), (3, 8)], 5, flint.fmpq(1, 2), flint.fmpq(3, 4)).poses([_fmpq(r1), 9, 8])
+    _matches(found, poses)
+    labels = [c.mode for c in found.configurations]
+    assert len(set(labels)) == len(labels)
+
+
+def _gosselin_scene():
+    (a2x, _), side, a, b = GOSSELIN.bases[1], GOSSELIN.side, GOSSELIN.a, GOSSELIN.b
+    return load_scene_text(f'''
+[inputs]
+r1 = {{ range = [10, 20], unit = "length" }}
+[parameters]
+r2 = "{GOSSELIN_LEGS['r2']}"
+r3 = "{GOSSELIN_LEGS['r3']}"
+[points]
+A1 = {{ fixed = [0, 0] }}
+A2 = {{ fixed = ["{a2x}", 0] }}
+A3 = {{ fixed = [0, 10] }}
+P1 = {{ unknown = true }}
+P2 = {{ unknown = true }}
+P3 = {{ frame = ["P1", "P2"], at = ["{a}", "{b}"] }}
+[constraints]
+leg1 = "dist(A1, P1) = r1"
+leg2 = "dist(A2, P2) = r2"
+leg3 = "dist(A3, P3) = r3"
+side = "dist(P1, P2) = {side}"
+''', "gosselin.toml")
+
+
+def test_gosselins_3rpr_has_six_real_modes_each_labelled_and_one_asked_by_its_label():
+    r1 = GOSSELIN_LEGS["r1"]
+    found = solve(_gosselin_scene(), at={"r1": f"{r1.p}/{r1.q}"}, digits=40)
+    assert found.complex_count == 6
+    _matches(found, GOSSELIN.poses([GOSSELIN_LEGS[n] for n in ("r1", "r2", "r3")]))
+    labels = [c.mode for c in found.configurations]
+    assert len(set(labels)) == 6
+    assert all(set(label) <= set("+-") and len(label) == 3 for label in labels)  # a sign per leg told them apart
+    (one,) = solve(_gosselin_scene(), at={"r1": f"{r1.p}/{r1.q}"}, mode=labels[2], digits=40).configurations
+    assert one == found.configurations[2]
+
+
+def test_an_angle_with_irrational_cos_is_refused_beside_points_solved_together():
+    scene = load_scene_text('''
+[inputs]
+t = { range = [0, 360] }
+[points]
+O = { fixed = [0, 0] }
+A = { crank = "O", length = 1, input = "t" }
+D = { fixed = [3, 0] }
+P = { unknown = true }
+[constraints]
+a = "dist(A, P) = 2"
+b = "dist(D, P) = 2"
+''', "crank.toml")
+    assert len(solve(scene, at={"t": 90}).configurations) == 2
+    with pytest.raises(UsageError, match="multiple of 90 degrees"):
+        solve(scene, at={"t": 30})
