@@ -42,3 +42,35 @@ def test_bad_input_is_one_line_exit_2(capsys, argv, said):
     captured = capsys.readouterr()
     assert captured.out == ""
     assert captured.err.count("\n") == 1 and said in captured.err
+
+
+@pytest.fixture
+def platform(tmp_path):
+    from tests.scene.test_groups import SPEC_3RPR
+
+    path = tmp_path / "3rpr.toml"
+    path.write_text(SPEC_3RPR)
+    return str(path)
+
+
+def test_solve_on_points_solved_together_gives_the_complex_count(capsys, platform):
+    assert main(["solve", platform, "--at", "r1=6", "--json"]) == 0
+    document = json.loads(capsys.readouterr().out)
+    assert document["complex_count"] == 6 and len(document["configurations"]) == 2
+    assert set(document["configurations"][0]["points"]) == {"A1", "A2", "A3", "P1", "P2", "P3"}
+    assert main(["solve", platform, "--at", "r1=6"]) == 0
+    assert "complex solutions of the group's eliminant: 6" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("command", [
+    ["show"], ["derive"], ["curve", "--point", "P3"], ["verify"], ["toggles"], ["extremum", "--of", "P1.x"],
+    ["singular", "--point", "P3"], ["accuracy"], ["export", "--to", "c"], ["plot", "--out", "{tmp}/x.png"],
+    ["sweep", "--grid", "r2=8:9:2", "--out", "{tmp}/sweep"],
+], ids=lambda c: c[0])
+def test_every_other_command_refuses_them_saying_which_command_works(capsys, platform, tmp_path, command):
+    argv = [command[0], platform, *(a.format(tmp=tmp_path) for a in command[1:])]
+    assert main(argv) == 2
+    captured = capsys.readouterr()
+    assert captured.out == "" and captured.err.count("\n") == 1
+    assert "has points solved together (P1, P2): `algkin solve` works on it" in captured.err
+    assert not (tmp_path / "x.png").exists() and not (tmp_path / "sweep").exists()
