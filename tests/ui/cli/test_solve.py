@@ -74,3 +74,11 @@ def test_every_other_command_refuses_them_saying_which_command_works(capsys, pla
     assert captured.out == "" and captured.err.count("\n") == 1
     assert "has points solved together (P1, P2): `algkin solve` works on it" in captured.err
     assert not (tmp_path / "x.png").exists() and not (tmp_path / "sweep").exists()
+
+
+def test_the_catalogs_six_mode_3rpr(capsys):
+    """Gosselin's design (tests/analyses/test_solve.py checks it against the loop equations)."""
+    assert main(["solve", "3rpr-six-modes", "--at", "r1=14.98", "--json", "--digits", "8"]) == 0
+    document = json.loads(capsys.readouterr().out)
+    assert document["at"] == {"r1": "749/50"} and document["complex_count"] == 6
+    assert len({c["mode"] for c in document["configurations"]}) == 6
