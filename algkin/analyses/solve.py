@@ -7,7 +7,13 @@ decimal strings to ``digits`` significant digits, the working precision raised u
 enclosure is that narrow. A branch whose discriminant the balls cannot sign (an input at a
 toggle whose cosine is irrational) is a ComputationError, never a guess.
 
-Nothing assembling at the inputs is a valid answer, not a failure: no configurations.
+Points solved together (``unknown = true``, ``algkin.scene.groups``): each group's equations
+are solved by ``solve_group`` (an eliminant in one unknown, the others rational in its root) with
+the inputs as parameters, and its real modes at the inputs' exact values isolated and certified
+(``modes``); a configuration is one mode of each group, labelled by a sign per leg (see
+``_mode_labels``), and ``complex_count`` counts the complex solutions.
+
+Nothing assembling at the inputs is a valid answer, not a failure: no configurations (exit 0).
 
 >>> found = solve("chebyshev-lambda", at={"angle": 0}, digits=12)
 >>> [(c.mode, c.points["B"]) for c in found.configurations]
@@ -30,13 +36,13 @@ import flint
 import sympy
 
 from ..branches import Branch, closed_forms
+from ..eliminate.group import GroupSolution, Mode, modes, solve_group
 from ..errors import ComputationError, SceneError, UsageError
 from ..evaluate import ARB, evaluate
 from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled, Input, Scene, compile_scene
 from ..scene.groups import Groups, compile_groups
 from ..scene.load import as_scene
-from ..eliminate.group import GroupSolution, Mode, modes, solve_group
 from ..system.convert import flint_context, to_flint
 from ..system import input_values, symbol
 
