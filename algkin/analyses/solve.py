@@ -219,17 +219,23 @@ def _sign(ball: flint.arb) -> int | None:
 
 
 def _narrow(ball: flint.arb, digits: int) -> bool:
-    """Whether ``ball`` is finite and fixes its ``digits`` significant digits (or is below 10**-digits)."""
+    """Whether ``ball`` is finite and fixes its ``digits`` significant digits (or is below 10**-digits),
+    decided in balls (a float would overflow or underflow at a thousand digits)."""
     if not ball.is_finite():
         return False
-    scale = max(abs(float(ball.mid())), 1.0)
-    return float(ball.rad()) * 10 ** (digits + 1) <= scale
+    scale = abs(ball.mid())
+    if scale < 1:
+        scale = flint.arb(1)
+    return bool(ball.rad() * flint.arb(10) ** (digits + 1) <= scale)
 
 
 def _written(mode: str, points: Mapping[str, tuple[flint.arb, ...]], digits: int) -> Configuration:
-    radius = max((float(b.rad()) for xy in points.values() for b in xy), default=0.0)
+    radii = [b.rad() for xy in points.values() for b in xy]
+    largest = max((float(r) for r in radii), default=0.0)
+    # rounded up: an upper bound even where the float underflows to 0
+    radius = 0.0 if all(r == 0 for r in radii) else math.nextafter(largest, math.inf)
     shown = {p: (_decimal(x, digits), _decimal(y, digits)) for p, (x, y) in points.items()}
-    return Configuration(mode, shown, math.nextafter(radius, math.inf) if radius else 0.0)
+    return Configuration(mode, shown, radius)
 
 
 def _decimal(ball: flint.arb, digits: int) -> str:

@@ -189,3 +189,14 @@ b = "dist(D, P) = 2"
     assert len(solve(scene, at={"t": 90}).configurations) == 2
     with pytest.raises(UsageError, match="multiple of 90 degrees"):
         solve(scene, at={"t": 30})
+
+
+def test_a_thousand_digits_are_certified_too():
+    """MAX_DIGITS: the enclosures compared in balls (as floats, 10**1001 overflowed)."""
+    with mpmath.workdps(1020):
+        a = (mpmath.cos(mpmath.pi / 6), mpmath.sin(mpmath.pi / 6))
+        left, _ = _circles(a, 3, (4, 0), mpmath.mpf(7) / 2)
+        found = solve("fourbar", at={"theta": 30}, digits=MAX_DIGITS, mode="left")
+        (configuration,) = found.configurations
+        assert _close(configuration.points["B"], left, mpmath.mpf(10) ** -998)
+        assert 0 < configuration.radius  # an upper bound, the smallest float where the radius underflows
