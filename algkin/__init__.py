@@ -28,6 +28,7 @@ __all__ = [
     "interact",
     "AlgkinError",
     "SceneBuilder",
+    "Budget",
 ]
 
 from .errors import AlgkinError
@@ -38,6 +39,7 @@ if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ 
     from .analyses.rates import rates
     from .analyses.singular import singular
     from .derivation.pipeline import curve, derive
+    from .runtime.budget import Budget
     from .scene import SceneBuilder, catalog_names, compile_scene, load_scene
     from .ui.widgets import interact
 
@@ -75,4 +77,8 @@ def __getattr__(name: str) -> Any:
         from .analyses.quantities import load
 
         return load
+    if name == "Budget":  # multiprocessing only when a budget is made
+        from .runtime.budget import Budget
+
+        return Budget
     raise AttributeError(f"module 'algkin' has no attribute {name!r}")

@@ -53,6 +53,7 @@ import sympy
 from ..branches import Branch, closed_forms
 from ..eliminate import eliminate
 from ..errors import UsageError
+from ..runtime.budget import Budget, Deadline, started
 from ..evaluate import ARB, evaluate
 from ..scene import Compiled, compile_scene, load_scene
 from ..scene.constructions import Crank, Fixed
@@ -210,11 +211,13 @@ def stationary_condition(compiled: Compiled, point: str) -> Stationary | str:
     return Stationary(point, (x, y), path, coupling, condition, tuple(earlier), tuple(unknowns))
 
 
-def _eliminant(stationary: Stationary, c: sympy.Symbol, s: sympy.Symbol) -> tuple[sympy.Expr, list[sympy.Expr]]:
-    """The condition with every unknown eliminated, and the factors the elimination dropped (in ``c, s``)."""
+def _eliminant(stationary: Stationary, c: sympy.Symbol, s: sympy.Symbol, deadline: Deadline
+               ) -> tuple[sympy.Expr, list[sympy.Expr]]:
+    """The condition with every unknown eliminated (keeping to ``deadline``), and the factors the
+    elimination dropped (in ``c, s``)."""
     equations = [stationary.condition, stationary.coupling, stationary.path.equation, *stationary.earlier]
     names = [str(u) for u in (*stationary.unknowns, *stationary.earlier_unknowns)]
-    result = eliminate(equations, names, [str(c), str(s)])
+    result = eliminate(equations, names, [str(c), str(s)], budget=deadline)
     dropped = [f for f in result.dropped if f.free_symbols <= {c, s} and f.free_symbols]
     return result.polynomial, dropped
 
@@ -397,7 +400,7 @@ class PointLimits:
     skipped: str | None  # why the point has no limit positions to look for
 
 
-def _point_limits(scene: Scene, point: str, lo: float, hi: float) -> PointLimits:
+def _point_limits(scene: Scene, point: str, lo: float, hi: float, deadline: Deadline) -> PointLimits:
     """The limits of one point (every branch), the roots dropped, or why the point has none."""
     compiled = compile_scene(scene, [point])
     _, line = single_input(compiled, "limit positions")
@@ -405,7 +408,7 @@ def _point_limits(scene: Scene, point: str, lo: float, hi: float) -> PointLimits
     stationary = stationary_condition(compiled, point)
     if isinstance(stationary, str):
         return PointLimits(point, compiled, None, [], [], [], stationary)
-    eliminant, dropped_factors = _eliminant(stationary, c, s)
+    eliminant, dropped_factors = _eliminant(stationary, c, s, deadline)
     t = sympy.Symbol("t")
     with flint.ctx.workprec(ROOT_BITS):
         roots = _roots([eliminant], c, s, t)
@@ -449,7 +452,7 @@ def _point_limits(scene: Scene, point: str, lo: float, hi: float) -> PointLimits
     return PointLimits(point, compiled, stationary, branches, found, dropped, None)
 
 
-def _turns_fully(compiled: Compiled, lo: float, hi: float) -> str | None:
+def _turns_fully(compiled: Compiled, lo: float, hi: float, deadline: Deadline) -> str | None:
     """None when the input turns fully with every point the output needs assembled; else why not."""
     from .toggles import toggle_conditions
 
@@ -458,7 +461,7 @@ def _turns_fully(compiled: Compiled, lo: float, hi: float) -> str | None:
     _, line = single_input(compiled, "limit positions")
     with flint.ctx.workprec(ROOT_BITS):
         for spec in compiled.implicit:
-            for kind, condition in toggle_conditions(compiled, spec).items():
+            for kind, condition in toggle_conditions(compiled, spec, deadline=deadline).items():
                 balls = line.roots(condition)
                 if balls:
                     angles = ", ".join(f"{float(b.mid()):.6g}" for b in balls)
@@ -466,10 +469,10 @@ def _turns_fully(compiled: Compiled, lo: float, hi: float) -> str | None:
     return None
 
 
-def _time_ratio(found: PointLimits, lo: float, hi: float) -> tuple[TimeRatio | None, str | None]:
+def _time_ratio(found: PointLimits, lo: float, hi: float, deadline: Deadline) -> tuple[TimeRatio | None, str | None]:
     point, compiled, stationary = found.point, found.compiled, found.stationary
     assert stationary is not None
-    why = _turns_fully(compiled, lo, hi)
+    why = _turns_fully(compiled, lo, hi, deadline)
     if why is not None:
         return None, why
     branch = next(b for b in found.branches if b.selected)
@@ -526,9 +529,12 @@ def _stroke(path: Path, first: Limit, second: Limit) -> Json:
     return {"kind": "travel", "length": travel, "exact": exact}
 
 
-def limits(scene: Scene | str, set: Mapping[str, object] | None = None) -> Limits:  # noqa: A002 - the public name (the command line's --set)
+def limits(scene: Scene | str, set: Mapping[str, object] | None = None, *,  # noqa: A002 - the public name (the command line's --set)
+           budget: Budget | Deadline | None = None) -> Limits:
     """Every limit position of every dyad and slider with a fixed path, certified, and the time
-    ratio of the last of them (the output) on the scene's branch."""
+    ratio of the last of them (the output) on the scene's branch. A ``Budget`` (or the
+    ``Deadline`` of one running) bounds the time and the eliminants' terms."""
+    deadline = started(budget)
     scene = with_values(scene if not isinstance(scene, str) else load_scene(scene), dict(set) if set else None)
     implicit = [n for n, p in scene.points.items() if p.labels]
     if not implicit:
@@ -540,7 +546,7 @@ def limits(scene: Scene | str, set: Mapping[str, object] | None = None) -> Limit
         raise UsageError("scene", scene.name, f"limit positions and the time ratio are for a turning input; "
                                               f"{name} is a length (its toggles end the strokes)")
     lo, hi = scene.inputs[name].span
-    points = [_point_limits(scene, point, lo, hi) for point in implicit]
+    points = [_point_limits(scene, point, lo, hi, deadline) for point in implicit]
     found = sorted((g for p in points for g in p.limits), key=lambda g: (g.input_deg, g.point, g.branch))
     dropped = [d for p in points for d in p.dropped]
     skipped = [{"point": p.point, "why": p.skipped} for p in points if p.skipped]
@@ -548,5 +554,5 @@ def limits(scene: Scene | str, set: Mapping[str, object] | None = None) -> Limit
     if not moving:
         return Limits(scene.name, name, (lo, hi), found, None, "no dyad or slider moves on a fixed path", dropped,
                       skipped)
-    ratio, reason = _time_ratio(moving[-1], lo, hi)
+    ratio, reason = _time_ratio(moving[-1], lo, hi, deadline)
     return Limits(scene.name, name, (lo, hi), found, ratio, reason, dropped, skipped)

@@ -27,6 +27,7 @@ import sympy
 from ..branches import closed_forms
 from ..eliminate import eliminate
 from ..errors import UsageError
+from ..runtime.budget import Budget, Deadline, started
 from ..evaluate import ARB, evaluate
 from ..scene import Compiled, compile_scene, load_scene
 from ..scene.constructions import Crank, Fixed
@@ -74,14 +75,16 @@ def _defaults(compiled):
     return {symbol(n): compiled.parameter_values[n] for n in compiled.system.parameters}
 
 
-def toggle_conditions(compiled: Compiled, spec: ImplicitSpec) -> dict[str, sympy.Expr]:
-    """{kind: poly} in the input's c, s (earlier points eliminated), for a dyad or a slider."""
+def toggle_conditions(compiled: Compiled, spec: ImplicitSpec, *, deadline: Deadline | None = None
+                      ) -> dict[str, sympy.Expr]:
+    """{kind: poly} in the input's c, s (earlier points eliminated, keeping to ``deadline`` if any),
+    for a dyad or a slider."""
     defaults = _defaults(compiled)
-    return {kind: _eliminate_earlier(compiled, sympy.expand(e.xreplace(defaults)), spec)
+    return {kind: _eliminate_earlier(compiled, sympy.expand(e.xreplace(defaults)), spec, deadline)
             for kind, e in spec.toggle_conditions().items()}
 
 
-def _eliminate_earlier(compiled, condition, spec):
+def _eliminate_earlier(compiled, condition, spec, deadline):
     """The condition with earlier points' unknowns eliminated (a polynomial in c, s): those it
     names, and every unknown their equations bring in (a slider on a horizontal guide names
     only its rod end's y, whose equations hold its x too)."""
@@ -100,7 +103,8 @@ def _eliminate_earlier(compiled, condition, spec):
         earlier = grown
     (variables,) = compiled.system.inputs.values()
     equations = [sympy.expand(e.xreplace(defaults)) for e in equations]
-    return eliminate([condition] + equations, sorted(earlier), list(variables), method="resultant").polynomial
+    return eliminate([condition] + equations, sorted(earlier), list(variables), method="resultant",
+                     budget=deadline).polynomial
 
 
 def single_input(compiled, what="toggles"):
@@ -113,12 +117,14 @@ def single_input(compiled, what="toggles"):
     return name, Parametrisation(tuple(symbol(v) for v in variables), t)
 
 
-def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name (the command line's --set)
+def toggles(scene, artefacts=True, set=None, *, budget: Budget | Deadline | None = None):  # noqa: A002 - the public name (the command line's --set)
     """Every toggle of every dyad and slider of ``scene`` over its input range, certified.
 
     With ``artefacts`` the eliminants are also derived, to report which factors of their
     discriminants are not toggles. ``set`` gives dimensions exact values in place of their defaults.
+    A ``Budget`` (or the ``Deadline`` of one running) bounds the time and the eliminants' terms.
     """
+    deadline = started(budget)
     scene = with_values(scene if not isinstance(scene, str) else load_scene(scene), set)
     implicit = [n for n, p in scene.points.items() if p.labels]  # the points with assembly modes
     if not implicit:
@@ -129,23 +135,23 @@ def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name (t
     found = []
     with flint.ctx.workprec(ROOT_BITS):
         for spec in compiled.implicit:
-            for kind, condition in toggle_conditions(compiled, spec).items():
+            for kind, condition in toggle_conditions(compiled, spec, deadline=deadline).items():
                 for ball in line.roots(condition):
                     found += [Toggle(float(ball.mid()) + turn, ball + turn, spec.point, kind, line.is_angle)
                               for turn in line.turns if lo <= float(ball.mid()) + turn <= hi]
-        dropped = _artefacts(compiled, line) if artefacts else []
+        dropped = _artefacts(compiled, line, deadline) if artefacts else []
     found.sort(key=lambda g: g.input_deg)
     unit = "deg" if line.is_angle else "length"
     return Toggles(scene.name, name, (lo, hi), found, grashof(compiled), dropped, unit)
 
 
-def _artefacts(compiled, line):
+def _artefacts(compiled, line, deadline):
     """Factors of the eliminants' discriminants that are not toggles, with the certificate."""
     from ..derivation.pipeline import derive
 
-    derived = derive(compiled.scene, [d.point for d in compiled.implicit], samples=0)
+    derived = derive(compiled.scene, [d.point for d in compiled.implicit], samples=0, budget=deadline)
     geometric = [line.numerator(cond) for d in compiled.implicit
-                 for cond in toggle_conditions(compiled, d).values()]
+                 for cond in toggle_conditions(compiled, d, deadline=deadline).values()]
     t = line.t
     branches = closed_forms(compiled)
     dropped = []

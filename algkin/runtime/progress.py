@@ -18,6 +18,8 @@ import contextlib
 import contextvars
 import sys
 import time
+from collections.abc import Callable
+from typing import Any
 
 __all__ = ["shown", "stage", "counting", "step", "counted", "hand_over", "replay"]
 
@@ -46,7 +48,7 @@ def shown(quiet=False, stream=None, *, clock=time.monotonic):
             line.close()
 
 
-def stage(text):
+def stage(text: str) -> None:
     """Say the stage the work is at (shown in place of the one before)."""
     _apply(("stage", text))
 
@@ -75,13 +77,13 @@ def counted(iterable, unit="steps"):
             step()
 
 
-def hand_over(send):
+def hand_over(send: Callable[[tuple[Any, ...]], None] | None) -> None:
     """In a worker just forked: the terminal is its parent's. What it would show goes to
     ``send(event)``, for the parent to ``replay``, or with ``send=None`` nowhere."""
     _DISPLAY.set(send if _DISPLAY.get() is not None else None)
 
 
-def replay(event):
+def replay(event: tuple[Any, ...]) -> None:
     """Show an event a worker handed over."""
     _apply(event)
 

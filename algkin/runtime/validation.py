@@ -76,11 +76,11 @@ def seed(value):
 
 
 def budget(value):
-    """None or a ``Budget``."""
-    from .budget import Budget
+    """None, a ``Budget`` or the ``Deadline`` of one started."""
+    from .budget import Budget, Deadline
 
-    if value is not None and not isinstance(value, Budget):
-        raise UsageError("budget", value, "expected an algkin.eliminate.Budget, e.g. Budget(seconds=10)")
+    if value is not None and not isinstance(value, (Budget, Deadline)):
+        raise UsageError("budget", value, "expected an algkin.Budget, e.g. Budget(seconds=10)")
     return value
 
 

@@ -86,7 +86,7 @@ def evaluate_design(job: Job, design: int, values: Mapping[str, Fraction]) -> di
         from ..runtime.budget import Budget
 
         try:
-            found = Budget(seconds=job.budget).run(lambda: _analyse(job, values))
+            found = Budget(seconds=job.budget).start().run(lambda: _analyse(job, values))
         except BudgetExceeded as err:
             found = {"status": "failed", "reason": _one_line(f"budget: {err}")}
     row.update(found)

@@ -59,11 +59,12 @@ def _text(expr):
     return None if expr is None else str(expr)
 
 
-def value_factors(problem, backend="flint"):
-    """Factors, in ``u`` and the parameters, of the resultant in ``t`` of ``F`` and ``dF/dtheta``."""
+def value_factors(problem, backend="flint", *, deadline=None):
+    """Factors, in ``u`` and the parameters, of the resultant in ``t`` of ``F`` and ``dF/dtheta``
+    (the elimination keeping to ``deadline``, if any)."""
     names = [p.name for p in problem.parameters]
     factors = eliminate(problem.half_angle(), [problem.t.name], [problem.u.name] + names,
-                        method="resultant", backend=backend).factors
+                        method="resultant", backend=backend, budget=deadline).factors
     return [f for f in factors if f.has(problem.u)]
 
 
@@ -206,10 +207,11 @@ def _sign_definite(poly, parameters):
     return all(all(e % 2 == 0 for e in monomial) and sign * c > 0 for monomial, c in terms)
 
 
-def closed_form(problem, stationary, defaults, lo, hi, largest=False):
-    """The extremum of ``problem`` (parameters symbolic) over ``[lo, hi]`` degrees as a closed form."""
-    values_factors = value_factors(problem)
-    meeting = meeting_factors(problem)
+def closed_form(problem, stationary, defaults, lo, hi, largest=False, *, deadline=None):
+    """The extremum of ``problem`` (parameters symbolic) over ``[lo, hi]`` degrees as a closed form
+    (its eliminations keeping to ``deadline``, if any)."""
+    values_factors = value_factors(problem, deadline=deadline)
+    meeting = meeting_factors(problem, deadline=deadline)
 
     def extremum_at(values):
         """The certified extremum at ``values`` and its description; ``None`` where the output

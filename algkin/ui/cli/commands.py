@@ -1,5 +1,6 @@
 """One function per command: its whole output (text or JSON) and exit code, and the files it
-makes, computed inside the command's budget (``algkin.ui.cli.main`` runs it and writes)."""
+makes, computed inside the command's budget (``algkin.ui.cli.main`` runs it and writes): the
+command passes its deadline, ``args.deadline``, to the work that keeps to it."""
 
 import json
 import math
@@ -87,7 +88,7 @@ def _cmd_extremum(args):
 
     _check_latex(args)
     angles = _range(args.range) if args.range else None
-    found = extremum(_scene_of(args), args.of, angles, params=args.param)
+    found = extremum(_scene_of(args), args.of, angles, params=args.param, budget=args.deadline)
     if args.latex:
         return latex_lines(extremum_forms(found)), 0
     return render(args, found.to_json(), report_extremum), 0
@@ -98,16 +99,16 @@ def _cmd_toggles(args):
     from ...analyses.toggles import toggles
 
     scene = _scene_of(args)
-    document = toggles(scene).to_json()
+    document = toggles(scene, budget=args.deadline).to_json()
     if document["unit"] == "deg":  # a turning input's: the output's limit positions and time ratio
-        document.update(limits(scene).to_json())
+        document.update(limits(scene, budget=args.deadline).to_json())
     return render(args, document, report_toggles), 0
 
 
 def _cmd_singular(args):
     from ...analyses.singular import singular
 
-    found = singular(_scene_of(args, ()), args.point, samples=args.samples, seed=args.seed)
+    found = singular(_scene_of(args, ()), args.point, samples=args.samples, seed=args.seed, budget=args.deadline)
     document = found.to_json()
     return render(args, document, report_singular), _verdict_of(document["curve_verification"])
 
@@ -123,7 +124,7 @@ def _cmd_accuracy(args):
     if args.samples < 10:
         raise UsageError("--samples", args.samples, "needs at least 10 samples per case")
     out = _figure_path("--plot", args.plot) if args.plot is not None else None
-    result = accuracy(_scene_of(args), args.samples, args.seed, of=args.of)
+    result = accuracy(_scene_of(args), args.samples, args.seed, of=args.of, budget=args.deadline)
     text = render(args, result.to_json(), report_accuracy)
     if out is None:
         return text, 0
@@ -197,14 +198,13 @@ def _cmd_list(args):
 
 
 def _cmd_show(args):
-    from ...runtime.budget import current
     from ...scene import compile_scene
     from ...scene.load import as_scene
     from ...system import inputs_json
 
-    current().note(f"loading {args.scene}")
+    args.deadline.note(f"loading {args.scene}")
     scene = as_scene(_scene_of(args))
-    current().note(f"compiling {scene.name}")
+    args.deadline.note(f"compiling {scene.name}")
     compiled = compile_scene(scene, args.outputs, args.param)
     document = {
         "scene": scene.name,
@@ -276,8 +276,10 @@ def _finish(args, out, document, report, forms, code):
 
 
 def _engine(args):
-    """The options derive, curve and verify share, by name: method, backend, symbolic dimensions, sampling."""
-    return dict(method=_method(args), backend=args.backend, params=args.param, samples=args.samples, seed=args.seed)
+    """The options derive, curve and verify share, by name: method, backend, symbolic dimensions, sampling,
+    and the command's deadline."""
+    return dict(method=_method(args), backend=args.backend, params=args.param, samples=args.samples, seed=args.seed,
+                budget=args.deadline)
 
 
 def _verdict(verification):
