@@ -15,7 +15,7 @@ ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / ".importlinter"
 
 PUBLIC = ["load", "load_scene", "compile_scene", "derive", "curve", "extremum", "rates", "singular", "catalog_names",
-          "interact", "AlgkinError", "SceneBuilder"]
+          "interact", "AlgkinError", "SceneBuilder", "Budget"]
 
 
 def test_the_import_contract_is_kept():

@@ -1,7 +1,7 @@
 """One computation timed in a forked child process, within a time budget.
 
 sympy and python-flint cannot be interrupted from inside a call, so each measurement runs
-in a child that is killed at the budget. The first run is a warm-up and is not counted
+in a child (``algkin.runtime.child``) that is killed at the budget; its error is the row's note. The first run is a warm-up and is not counted
 (caches, imports); then runs repeat until they add up to ``MIN_SECONDS`` over at least
 ``MIN_REPEATS`` runs, stopping when one more would pass half the budget. The median is
 reported, with the child's peak resident memory (``getrusage``: it counts what the child

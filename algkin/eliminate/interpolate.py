@@ -64,8 +64,8 @@ from .linear import linear_elimination
 from .methods import prepare
 from .modular import PRIMES, ModularBackend, Shape, shape
 from .protocol import Backend, P
-from .reconstruct import RETRIES, Image, NotPolynomial, Residues, Unlucky, crt, line_degree, newton, rational
-from .reconstruct import MAX_DEGREE  # noqa: F401 - public here too, as before the algebra had a module of its own
+from .reconstruct import (MAX_DEGREE, RETRIES, Image, NotPolynomial, Residues, Unlucky, crt, line_degree, newton,
+                          rational)
 from .recording import Recording
 from .request import EliminationRequest, LogEntry, MethodOutcome
 from .select import select_factors

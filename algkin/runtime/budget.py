@@ -112,21 +112,26 @@ class Budget:
 
 @attrs.define(eq=False)
 class Deadline:
-    """A budget started at the reading ``started`` of its clock, and what its work is doing now.
+    """A budget started when its clock read ``begun``, and what its work is doing now.
 
     The work's notes (``note``) say what it is doing, for the message if the time runs out and
     as progress. Compared by identity: two deadlines of one budget are two runs of it.
+
+    >>> readings = iter([100.0, 104.0])
+    >>> deadline = Budget(seconds=10, clock=lambda: next(readings)).start()
+    >>> deadline.begun, deadline.left()
+    (100.0, 6.0)
     """
 
     budget: Budget = attrs.field(on_setattr=attrs.setters.frozen)
-    started: float = attrs.field(on_setattr=attrs.setters.frozen)
+    begun: float = attrs.field(on_setattr=attrs.setters.frozen)
     doing: str = "computing"
     _tell: Tell | None = attrs.field(default=None, init=False)  # in its child process: to the parent
 
     def left(self) -> float | None:
         """The seconds left before the deadline (None: no time budget); zero or less once it has passed."""
         seconds = self.budget.seconds
-        return None if seconds is None else self.started + seconds - self.budget.clock()
+        return None if seconds is None else self.begun + seconds - self.budget.clock()
 
     def note(self, doing: str) -> None:
         """Say what is being computed now, for the message if the time runs out, and as progress."""
@@ -150,9 +155,9 @@ class Deadline:
             return function()
         with forked(lambda tell: self._within(function, tell), shows_progress=True) as child:
             try:
-                return child.answer(left=lambda: self.started + seconds - clock(), heard=self._heard)
+                return child.answer(left=lambda: self.begun + seconds - clock(), heard=self._heard)
             except TimeUp:
-                elapsed = clock() - self.started
+                elapsed = clock() - self.begun
                 raise BudgetExceeded(f"max_seconds={seconds:g}: stopped after {elapsed:.2f} s "
                                      f"while {self.doing}") from None
 
