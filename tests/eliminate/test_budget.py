@@ -249,3 +249,28 @@ def test_a_budget_where_none_is_expected_is_refused_by_name():
         pipeline.derive("chebyshev-lambda", ["B"], samples=0, budget=10)
     with pytest.raises(UsageError, match=r"^budget='soon': expected an algkin\.Budget"):
         eliminate(CIRCLES, ["x"], ["y", "c", "s"], budget="soon")
+
+
+@pytest.mark.parametrize("analysis", ["toggles", "limits", "extremum", "singular"])
+def test_every_eliminating_analysis_keeps_to_a_budget_from_python(analysis):
+    # once found through a global stack, only under the command line's run(); now passed on
+    from algkin import extremum, singular
+    from algkin.analyses.limits import limits
+    from algkin.analyses.toggles import toggles
+
+    calls = {"toggles": lambda b: toggles("chebyshev-lambda", budget=b),
+             "limits": lambda b: limits("fourbar", budget=b),
+             "extremum": lambda b: extremum("arm-string", "AB", params=["b"], budget=b),
+             "singular": lambda b: singular("fourbar", "P", samples=0, budget=b)}
+    with pytest.raises(BudgetExceeded, match=r"^max_terms=3: .* has \d+ terms, while eliminating "):
+        calls[analysis](Budget(terms=3))
+
+
+def test_an_extremums_own_eliminations_keep_to_its_budget():
+    # the derivation of AB (b symbolic) keeps to 10 terms a step; the stationary condition does not
+    budget = Budget(terms=10)
+    pipeline.derive("arm-string", ["AB"], params=["b"], samples=0, budget=budget)
+    from algkin import extremum
+
+    with pytest.raises(BudgetExceeded, match=r"^max_terms=10: the resultant in \w+ has \d+ terms"):
+        extremum("arm-string", "AB", params=["b"], budget=budget)
