@@ -77,7 +77,7 @@ def __getattr__(name: str) -> Any:
         from .analyses.quantities import load
 
         return load
-    if name == "Budget":  # multiprocessing only when a budget is made
+    if name == "Budget":  # its module loads multiprocessing: only when asked for
         from .runtime.budget import Budget
 
         return Budget

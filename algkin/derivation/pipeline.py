@@ -421,7 +421,8 @@ def curve(scene: SceneLike, point: str, method: str = DEFAULT_METHOD, backend: s
     """The implicit curve ``F(point_x, point_y) = 0`` traced by ``point`` (a one-input motion).
 
     A ``Budget`` bounds the time of the whole computation, loading and compiling the scene
-    included, and the size of its eliminants (or the ``Deadline`` of one running, as in ``derive``). ``set`` gives dimensions exact values.
+    included, and the size of its eliminants (or the ``Deadline`` of one running, as in
+    ``derive``). ``set`` gives dimensions exact values.
     """
     _, params, budget = _arguments(None, params, samples, seed, budget)
     values = set

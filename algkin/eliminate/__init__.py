@@ -171,13 +171,14 @@ def eliminate(equations: Sequence[sympy.Expr | flint.fmpq_mpoly], eliminate: Seq
     (groups of configurations, name -> arb) do not satisfy dropped and reported.
     ``parameters`` (a subset of ``keep``: dimensions, and a derivation's inputs) may appear
     in the multipliers of the ``linear`` method. A ``Budget`` bounds the time and the terms of every intermediate
-    eliminant, or the ``Deadline`` of one already running, which the elimination counts against (by default, none).
+    eliminant; or the ``Deadline`` of one already running, which the elimination then counts against (by
+    default, no bound).
     """
     run = _lookup(METHODS, "method", method)
     engine = _lookup(BACKENDS, "backend", backend)(tuple(eliminate) + tuple(keep))
     deadline = started(budget)
     deadline.note(f"eliminating {', '.join(map(str, eliminate)) or 'nothing'} "
-                f"(keeping {', '.join(map(str, keep))}) by {method} on {backend}")
+                  f"(keeping {', '.join(map(str, keep))}) by {method} on {backend}")
     request = EliminationRequest(tuple(eliminate), witnesses, tuple(parameters), deadline)
     return deadline.run(functools.partial(_eliminate, engine, method, run, equations, tuple(keep), request))
 
