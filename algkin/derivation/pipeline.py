@@ -32,7 +32,7 @@ from ..scene import Compiled, compile_scene
 from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
 from ..system import inputs_json, symbol
-from ..verify import Verification, verify_branches
+from ..verify import CheckSetup, Verification, verify_branches
 from .assembles import certify_labels, where_assembled
 from .tasks import curve_task, eliminant_tasks
 
@@ -232,8 +232,9 @@ def _verify(compiled, branches, samples, seed, polynomials, factors=None):
     if not samples:
         return Verification.skipped()
     fixed, indicators, fixed_branches, inputs = _checked(compiled, branches)
-    return verify_branches(fixed, indicators, fixed_branches, inputs, dict(compiled.parameter_values),
-                           samples=samples, seed=seed, polynomials=polynomials, factors=factors,
+    setup = CheckSetup(system=fixed, indicators=indicators, branches=fixed_branches, inputs=inputs,
+                       parameters=compiled.parameter_values)
+    return verify_branches(setup, samples=samples, seed=seed, polynomials=polynomials, factors=factors,
                            where=where_assembled(compiled, branches))
 
 

@@ -2,6 +2,7 @@
 
 import math
 from fractions import Fraction
+from importlib.resources import files
 
 import pytest
 from hypothesis import assume, example, given, settings, strategies as st
@@ -159,3 +160,11 @@ def test_random_slider_cranks_match_the_arcsine(crank, rod, offset):
         return
     found = toggles(slider_crank(crank, rod, offset)).toggles
     assert [t.input_deg for t in found] == pytest.approx(expected, abs=1e-9)
+
+
+def test_a_scene_file_given_as_a_path_object(tmp_path):
+    # as the other analyses take it: a catalog name, a path (text or pathlib.Path) or a Scene
+    path = tmp_path / "lambda.toml"
+    path.write_text(files("algkin.catalog").joinpath("chebyshev-lambda.toml").read_text(encoding="utf-8"))
+    found = toggles(path, artefacts=False)
+    assert (found.toggles, found.grashof["class"]) == ([], "crank-rocker")  # as the module's example says

@@ -22,11 +22,12 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, Any
 
 import flint
 import mpmath
 import numpy as np
+from numpy.typing import NDArray
 import sympy
 
 from ...derivation.pipeline import witnesses
@@ -41,7 +42,7 @@ from .critical import DIGITS, Problem
 
 if TYPE_CHECKING:
     from ...derivation.pipeline import Derivation
-    from ...scene.compile import AngleOutput, Compiled
+    from ...scene.compile import AngleOutput
 
 __all__ = ["AngleScale", "direction_problem", "SAMPLES", "MARGIN_DEG"]
 
@@ -98,7 +99,7 @@ def _reference(cos_form: sympy.Expr, sin_form: sympy.Expr, line: Parametrisation
                defaults: Mapping[str, sympy.Expr], lo: float, hi: float, output: str) -> int:
     """The quarter-turn reference k whose opposite direction the sampled motion stays farthest from."""
     angles = np.linspace(float(lo), float(hi), SAMPLES)
-    values = {n: float(sympy.Rational(str(v))) for n, v in defaults.items()}
+    values: dict[str, float | NDArray[np.float64]] = {n: float(sympy.Rational(str(v))) for n, v in defaults.items()}
     names = tuple(v.name for v in line.variables)
     values.update(input_values(names, np.radians(angles) if line.is_angle else angles))
     with np.errstate(invalid="ignore", divide="ignore"):
@@ -130,9 +131,10 @@ def direction_problem(derived: Derivation, angle: AngleOutput, line: Parametrisa
     """The ``Problem`` of a direction output: ``w = tan((phi - k*90)/2)`` on the chosen branch,
     and its eliminant in ``w``, the input's variables and the symbolic dimensions (the
     elimination keeping to ``deadline``, if any)."""
-    compiled = cast("Compiled", derived.compiled)
+    compiled = derived.compiled
     system = compiled.system
     chosen = next(b for b in derived.branches if b.selected)
+    assert angle.sin is not None, "a direction has a sine"
     cos_form, sin_form = chosen.values[angle.cos], chosen.values[angle.sin]
     k = _reference(cos_form, sin_form, line, compiled.parameter_values, lo, hi, output)
     taken = set(system.variables) | set(compiled.parameter_values)
@@ -149,7 +151,7 @@ def _eliminant(derived: Derivation, angle: AngleOutput, k: int, w: sympy.Symbol,
     """``w``'s polynomial: the equations the direction's cosine and sine need, with those two
     written in ``w`` (times ``1 + w**2``), every other unknown eliminated; the factors the
     branches' witnesses vanish on kept."""
-    system = cast("Compiled", derived.compiled).system
+    system = derived.compiled.system
     assert angle.sin is not None, "a direction has a sine"
     cos, sin = symbol(angle.cos), symbol(angle.sin)
     in_w = _rotated((1 - w**2) / (1 + w**2), 2 * w / (1 + w**2), k)
