@@ -39,6 +39,8 @@ __all__ = [
     "Singularities",
     "Mechanism",
     "Quantity",
+    # what bounds them
+    "Budget",
 ]
 
 from .errors import AlgkinError
@@ -50,6 +52,7 @@ if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ 
     from .analyses.singular import Singularities, singular
     from .branches import Branch
     from .derivation.pipeline import CurveResult, Derivation, curve, derive
+    from .runtime.budget import Budget
     from .scene import SceneBuilder, catalog_names, compile_scene, load_scene
     from .ui.widgets import interact
     from .verify import Verification
@@ -69,6 +72,7 @@ _LAZY = {
     **dict.fromkeys(("singular", "Singularities"), ".analyses.singular"),
     **dict.fromkeys(("load_quantities", "Mechanism", "Quantity"), ".analyses.quantities"),
     "interact": ".ui.widgets",
+    "Budget": ".runtime.budget",  # its module loads multiprocessing: only when asked for
 }
 
 
