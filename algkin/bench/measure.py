@@ -12,19 +12,27 @@ shares with the parent it was forked from, so it bounds the run's own peak from 
 (499500, True, True)
 """
 
+from __future__ import annotations
+
 import resource
 import statistics
 import time
+from collections.abc import Callable
+from typing import TypeVar
 
 from ..runtime.child import TimeUp, forked
 
 __all__ = ["measure", "MIN_SECONDS", "MIN_REPEATS"]
 
+R = TypeVar("R")  # what a run returns
+S = TypeVar("S")  # what the row keeps of it
+
 MIN_SECONDS = 0.2
 MIN_REPEATS = 5
 
 
-def measure(run, summarize, budget):
+def measure(run: Callable[[], R], summarize: Callable[[R], S],
+            budget: float) -> tuple[float | None, S | None, str]:
     """``(median seconds or None, summarize(result), note)`` of ``run()`` within ``budget`` seconds."""
     end = time.monotonic() + budget
     with forked(lambda tell: _repeated(run, summarize, budget)) as child:  # its progress shown nowhere
@@ -36,18 +44,18 @@ def measure(run, summarize, budget):
             return None, None, f"failed: {type(error).__name__}: {str(error)[:120]}"
 
 
-def _peak():
+def _peak() -> str:
     """The process's peak resident memory so far, as a note (Linux reports kilobytes)."""
     return f"peak RSS {resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024:.0f} MB"
 
 
-def _repeated(run, summarize, budget):
+def _repeated(run: Callable[[], R], summarize: Callable[[R], S], budget: float) -> tuple[float, S, str]:
     """In the child: a warm-up, then runs repeated while they fit in half the ``budget``."""
     start = time.perf_counter()
     result = run()
     warm_up = time.perf_counter() - start
     deadline = start + budget / 2
-    times = []
+    times: list[float] = []
     while len(times) < MIN_REPEATS or sum(times) < MIN_SECONDS:
         if time.perf_counter() + (times[-1] if times else warm_up) > deadline:
             break
