@@ -41,6 +41,8 @@ __all__ = [
     "Solution",
     "Mechanism",
     "Quantity",
+    # what bounds them
+    "Budget",
 ]
 
 from .errors import AlgkinError
@@ -53,6 +55,7 @@ if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ 
     from .analyses.solve import Solution, solve
     from .branches import Branch
     from .derivation.pipeline import CurveResult, Derivation, curve, derive
+    from .runtime.budget import Budget
     from .scene import SceneBuilder, catalog_names, compile_scene, load_scene
     from .ui.widgets import interact
     from .verify import Verification
@@ -73,6 +76,7 @@ _LAZY = {
     **dict.fromkeys(("solve", "Solution"), ".analyses.solve"),
     **dict.fromkeys(("load_quantities", "Mechanism", "Quantity"), ".analyses.quantities"),
     "interact": ".ui.widgets",
+    "Budget": ".runtime.budget",  # its module loads multiprocessing: only when asked for
 }
 
 

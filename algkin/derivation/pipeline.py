@@ -21,10 +21,11 @@ import sympy
 
 from ..branches import check_assembly, closed_forms
 from ..branches import Branch
-from ..eliminate import DEFAULT_METHOD, Budget, Elimination, Witness, current as current_budget
+from ..eliminate import DEFAULT_METHOD, Elimination, Witness
 from ..errors import UsageError
 from ..evaluate import ARB, evaluate
 from ..runtime import validation
+from ..runtime.budget import Budget, Deadline, started
 from ..runtime.cache import BoundedCache
 from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled, compile_scene
@@ -138,11 +139,11 @@ def _figures(elimination):
 
 
 def _arguments(outputs, params, samples, seed, budget):
-    """The public arguments checked, with the budget to run under."""
+    """The public arguments checked, with the deadline to run under (``budget`` started, if not already)."""
     validation.count("samples", samples, validation.MAX_VERIFY_SAMPLES)
     validation.seed(seed)
     return (validation.names("outputs", outputs), validation.names("params", params) or (),
-            (validation.budget(budget) or current_budget()).start())
+            started(validation.budget(budget)))
 
 
 def _exact_samples(spec, count, pieces=None):
@@ -315,13 +316,14 @@ def _timed(timings: dict[str, float], stage: str) -> Iterator[None]:
 
 def derive(scene: SceneLike, outputs: Sequence[str] | None = None, method: str = DEFAULT_METHOD,
            backend: str = "flint", params: Sequence[str] = (), samples: int = 40, seed: int = 0,
-           certify: bool = True, budget: Budget | None = None,
+           certify: bool = True, budget: Budget | Deadline | None = None,
            set: Values | None = None) -> Derivation:  # noqa: A002 - ``set=`` is the public name (the command line's --set)
     """Eliminants, closed-form branches and their verification for ``outputs`` of ``scene``.
 
     ``certify`` also certifies each branch's label per input interval (the slowest stage);
     a ``Budget`` bounds the time of the whole derivation, loading and compiling the scene
-    included, and the size of its eliminants. ``set`` gives dimensions exact values
+    included, and the size of its eliminants (the ``Deadline`` of one already running: the
+    derivation counts against it). ``set`` gives dimensions exact values
     (``{"a": "3/2"}``) in place of their defaults.
     """
     outputs, params, budget = _arguments(outputs, params, samples, seed, budget)
@@ -415,12 +417,13 @@ def family_method(task, method):
 
 
 def curve(scene: SceneLike, point: str, method: str = DEFAULT_METHOD, backend: str = "flint",
-          params: Sequence[str] = (), samples: int = 40, seed: int = 0, budget: Budget | None = None,
+          params: Sequence[str] = (), samples: int = 40, seed: int = 0, budget: Budget | Deadline | None = None,
           set: Values | None = None) -> CurveResult:  # noqa: A002 - as in derive
     """The implicit curve ``F(point_x, point_y) = 0`` traced by ``point`` (a one-input motion).
 
     A ``Budget`` bounds the time of the whole computation, loading and compiling the scene
-    included, and the size of its eliminants. ``set`` gives dimensions exact values.
+    included, and the size of its eliminants (or the ``Deadline`` of one running, as in
+    ``derive``). ``set`` gives dimensions exact values.
     """
     _, params, budget = _arguments(None, params, samples, seed, budget)
     values = set

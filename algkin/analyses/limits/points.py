@@ -10,6 +10,7 @@ import sympy
 
 from ...branches import Branch, closed_forms
 from ...evaluate import ARB, evaluate
+from ...runtime.budget import Deadline
 from ...scene import Compiled, compile_scene
 from ...scene.model import Scene
 from ..toggles import single_input
@@ -36,15 +37,16 @@ class PointLimits:
     skipped: str | None  # why the point has no limit positions to look for
 
 
-def point_limits(scene: Scene, point: str, lo: float, hi: float) -> PointLimits:
-    """The limits of one point (every branch), the roots dropped, or why the point has none."""
+def point_limits(scene: Scene, point: str, lo: float, hi: float, deadline: Deadline | None = None) -> PointLimits:
+    """The limits of one point (every branch), the roots dropped, or why the point has none (its
+    elimination keeping to ``deadline``, if any)."""
     compiled = compile_scene(scene, [point])
     _, line = single_input(compiled, "limit positions")
     c, s = line.variables
     stationary = stationary_condition(compiled, point)
     if isinstance(stationary, str):
         return PointLimits(point, compiled, None, [], [], [], stationary)
-    condition, dropped_factors = eliminant(stationary, c, s)
+    condition, dropped_factors = eliminant(stationary, c, s, deadline)
     t = sympy.Symbol("t")
     with flint.ctx.workprec(ROOT_BITS):
         roots = angle_roots([condition], c, s, t)
