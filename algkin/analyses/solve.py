@@ -239,7 +239,8 @@ def _written(mode: str, points: Mapping[str, tuple[flint.arb, ...]], digits: int
 
 
 def _decimal(ball: flint.arb, digits: int) -> str:
-    """The ball's midpoint to ``digits`` significant digits (an exact short value as it is).
+    """The ball's midpoint rounded to ``digits`` significant digits, trailing zeros left out
+    (sin 30 degrees, 1/2 in a ball, is ``0.5``), in plain notation unless very large or small.
 
     >>> _decimal(flint.arb(2).sqrt(), 5), _decimal(flint.arb(3) / 2, 30), _decimal(flint.arb(0), 30)
     ('1.4142', '1.5', '0')
@@ -249,10 +250,11 @@ def _decimal(ball: flint.arb, digits: int) -> str:
     mantissa, exponent = ball.mid().man_exp()
     with localcontext() as context:
         context.prec = max(digits, abs(int(exponent)) + len(str(mantissa))) + 10
-        exact = (Decimal(int(mantissa)) * Decimal(2) ** int(exponent)).normalize()
-        if exact == exact.to_integral_value() and abs(exact) < 10 ** digits:  # 400, not 4e+2
-            return str(int(exact))
-        return format(exact, f".{digits}g")
+        exact = Decimal(int(mantissa)) * Decimal(2) ** int(exponent)
+        rounded = Decimal(format(exact, f".{digits}g")).normalize()
+    if rounded == 0:
+        return "0"
+    return format(rounded, "f" if -7 <= rounded.adjusted() < digits else "e")
 
 
 def _said(at: Mapping[str, Fraction]) -> str:
