@@ -10,7 +10,7 @@ parameters, or a length input.
 Constraint(kind='dist', points=('A1', 'P1'), value=r1)
 >>> x, y = sympy.symbols("x y")
 >>> leg.equation({"A1": (0, 0), "P1": (x, y)})
-x**2 + y**2 - r1**2
+-r1**2 + x**2 + y**2
 >>> parse_constraint("on(P, line(A, B))", names={}, points="PAB").equation({"P": (x, y), "A": (0, 0), "B": (1, 1)})
 -x + y
 >>> parse_constraint("dist(P, Q) = ", names={}, points="PQ")
@@ -33,7 +33,7 @@ from .implicit.base import Point
 __all__ = ["Constraint", "parse_constraint", "FORMS"]
 
 FORMS = "dist(P, Q) = L, dist(P, Q)**2 = L2 or on(P, line(A, B))"
-_DIST = re.compile(r"^\s*dist\s*\(\s*(\w+)\s*,\s*(\w+)\s*\)\s*(\*\*\s*2)?\s*=(.+)$", re.DOTALL)
+_DIST = re.compile(r"^\s*dist\s*\(\s*(\w+)\s*,\s*(\w+)\s*\)\s*(\*\*\s*2)?\s*=\s*(\S.*)$", re.DOTALL)
 _ON = re.compile(r"^\s*on\s*\(\s*(\w+)\s*,\s*line\s*\(\s*(\w+)\s*,\s*(\w+)\s*\)\s*\)\s*$")
 
 
