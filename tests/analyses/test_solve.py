@@ -7,7 +7,7 @@ import mpmath
 import pytest
 
 from algkin.analyses.solve import MAX_DIGITS, solve
-from algkin.errors import UsageError
+from algkin.errors import SceneError, UsageError
 
 
 def _circles(centre1, r1, centre2, r2):
@@ -203,3 +203,21 @@ def test_a_thousand_digits_are_certified_too():
         (configuration,) = found.configurations
         assert _close(configuration.points["B"], left, mpmath.mpf(10) ** -998)
         assert 0 < configuration.radius  # an upper bound, the smallest float where the radius underflows
+
+
+def test_groups_solved_in_sequence_are_refused_for_now():
+    """Q hangs on P: its group's equations hold P's coordinates, irrational balls, not exact values."""
+    scene = load_scene_text('''
+[points]
+A = { fixed = [0, 0] }
+B = { fixed = [4, 0] }
+P = { unknown = true }
+Q = { unknown = true }
+[constraints]
+a = "dist(A, P) = 3"
+b = "dist(B, P) = 3"
+c = "dist(P, Q) = 1"
+d = "on(Q, line(A, B))"
+''', "two.toml")
+    with pytest.raises(SceneError, match="the group of Q is held by points of an earlier group \\(P_x"):
+        solve(scene, at={})

@@ -82,3 +82,11 @@ def test_the_catalogs_six_mode_3rpr(capsys):
     document = json.loads(capsys.readouterr().out)
     assert document["at"] == {"r1": "749/50"} and document["complex_count"] == 6
     assert len({c["mode"] for c in document["configurations"]}) == 6
+
+
+def test_a_mode_by_its_label_and_an_unknown_label(capsys):
+    assert main(["solve", "3rpr", "--at", "r1=6", "--mode", "+++", "--json"]) == 0
+    (configuration,) = json.loads(capsys.readouterr().out)["configurations"]
+    assert configuration["mode"] == "+++"
+    assert main(["solve", "3rpr", "--at", "r1=6", "--mode", "+-+"]) == 2
+    assert "--mode='+-+': not a mode of 3rpr at r1 = 6 (modes: ---, +++)" in capsys.readouterr().err
