@@ -6,6 +6,12 @@
 ['left', 'right']
 >>> result.verification.passed
 True
+
+A scene asked several questions is prepared once (compiled, its branches and witnesses found):
+
+>>> prepared = algkin.prepare("chebyshev-lambda", outputs=["P"])
+>>> algkin.curve(prepared, "P", samples=0).degree, algkin.derive(prepared, samples=0).branches == prepared.branches
+(6, True)
 """
 
 from __future__ import annotations
@@ -19,6 +25,8 @@ __all__ = [
     "load",
     "load_scene",
     "compile_scene",
+    "prepare",
+    "Prepared",
     "derive",
     "curve",
     "extremum",
@@ -38,6 +46,7 @@ if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ 
     from .analyses.rates import rates
     from .analyses.singular import singular
     from .derivation.pipeline import curve, derive
+    from .derivation.prepared import Prepared, prepare
     from .scene import SceneBuilder, catalog_names, compile_scene, load_scene
     from .ui.widgets import interact
 
@@ -55,6 +64,10 @@ def __getattr__(name: str) -> Any:
         from .derivation import pipeline
 
         return getattr(pipeline, name)
+    if name in ("prepare", "Prepared"):  # what derive, curve and the analyses share of a scene
+        from .derivation import prepared
+
+        return getattr(prepared, name)
     if name == "extremum":
         from .analyses.extremum import extremum
 

@@ -50,11 +50,12 @@ from typing import Any
 import flint
 import sympy
 
-from ..branches import Branch, closed_forms
+from ..branches import Branch
+from ..derivation.prepared import prepare
 from ..eliminate import eliminate
 from ..errors import UsageError
 from ..evaluate import ARB, evaluate
-from ..scene import Compiled, compile_scene, load_scene
+from ..scene import Compiled, load_scene
 from ..scene.constructions import Crank, Fixed
 from ..scene.model import Scene
 from ..scene.settings import with_values
@@ -399,7 +400,8 @@ class PointLimits:
 
 def _point_limits(scene: Scene, point: str, lo: float, hi: float) -> PointLimits:
     """The limits of one point (every branch), the roots dropped, or why the point has none."""
-    compiled = compile_scene(scene, [point])
+    prepared = prepare(scene, outputs=[point])
+    compiled = prepared.compiled
     _, line = single_input(compiled, "limit positions")
     c, s = line.variables
     stationary = stationary_condition(compiled, point)
@@ -410,7 +412,7 @@ def _point_limits(scene: Scene, point: str, lo: float, hi: float) -> PointLimits
     with flint.ctx.workprec(ROOT_BITS):
         roots = _roots([eliminant], c, s, t)
         others = [r.degrees for r in roots] + [r.degrees for r in _roots(dropped_factors, c, s, t)]
-    branches = closed_forms(compiled)
+    branches = list(prepared.branches)
     centre = _centre_name(scene, compiled, stationary.path)
     found: list[Limit] = []
     dropped: list[Json] = []

@@ -191,7 +191,7 @@ class Quantity:
         if key not in kernels:
             from ..branches import closed_forms
             from ..branches.stable import StableBranch, output_forms
-            from ..derivation.pipeline import certify_labels
+            from ..derivation.assembles import certify_labels
             from ..scene import compile_scene
 
             compiled = compile_scene(with_values(self.mechanism.scene, settings or None), [self.text])

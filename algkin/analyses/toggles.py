@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 import flint
 import sympy
 
-from ..branches import closed_forms
+from ..derivation.prepared import given, prepared_from
 from ..eliminate import eliminate
 from ..errors import UsageError
 from ..evaluate import ARB, evaluate
@@ -118,12 +118,17 @@ def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name (t
 
     With ``artefacts`` the eliminants are also derived, to report which factors of their
     discriminants are not toggles. ``set`` gives dimensions exact values in place of their defaults.
+    ``scene`` may be a ``Prepared`` one (``prepare``) with every dyad and slider among its outputs.
     """
-    scene = with_values(scene if not isinstance(scene, str) else load_scene(scene), set)
+    prepared = given(scene, set=set)
+    scene = prepared.scene if prepared else with_values(scene if not isinstance(scene, str) else load_scene(scene), set)
     implicit = [n for n, p in scene.points.items() if p.labels]  # the points with assembly modes
     if not implicit:
         raise UsageError("scene", scene.name, "has no dyad or slider, so no assembly modes to meet")
-    compiled = compile_scene(scene, implicit)
+    if prepared and {d.point for d in prepared.compiled.implicit} != frozenset(implicit):
+        raise UsageError("scene", scene.name, f"prepared for {', '.join(prepared.compiled.outputs)}: toggles need "
+                         f"every dyad and slider (prepare it with outputs={implicit})")
+    compiled = prepared.compiled if prepared else compile_scene(scene, implicit)
     name, line = single_input(compiled)
     lo, hi = scene.inputs[name].span
     found = []
@@ -133,21 +138,22 @@ def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name (t
                 for ball in line.roots(condition):
                     found += [Toggle(float(ball.mid()) + turn, ball + turn, spec.point, kind, line.is_angle)
                               for turn in line.turns if lo <= float(ball.mid()) + turn <= hi]
-        dropped = _artefacts(compiled, line) if artefacts else []
+        # the eliminants' branches and witnesses: the scene's own, prepared once
+        dropped = _artefacts(prepared or prepared_from(compiled), line) if artefacts else []
     found.sort(key=lambda g: g.input_deg)
     unit = "deg" if line.is_angle else "length"
     return Toggles(scene.name, name, (lo, hi), found, grashof(compiled), dropped, unit)
 
 
-def _artefacts(compiled, line):
+def _artefacts(prepared, line):
     """Factors of the eliminants' discriminants that are not toggles, with the certificate."""
     from ..derivation.pipeline import derive
 
-    derived = derive(compiled.scene, [d.point for d in compiled.implicit], samples=0)
+    compiled, branches = prepared.compiled, list(prepared.branches)
+    derived = derive(prepared, samples=0, certify=False)  # its eliminants alone
     geometric = [line.numerator(cond) for d in compiled.implicit
                  for cond in toggle_conditions(compiled, d).values()]
     t = line.t
-    branches = closed_forms(compiled)
     dropped = []
     for unknown, elimination in derived.eliminations.items():
         u = symbol(unknown)

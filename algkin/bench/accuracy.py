@@ -47,7 +47,8 @@ import sympy
 
 from ..branches import closed_forms
 from ..branches.stable import StableBranch, output_forms
-from ..derivation.pipeline import certify_labels, derive
+from ..derivation.assembles import certify_labels
+from ..derivation.pipeline import derive
 from ..errors import UsageError
 from ..evaluate.fused import numba_available
 from ..runtime import progress, validation

@@ -9,7 +9,7 @@ import algkin
 from algkin.branches import closed_forms
 from algkin.errors import UsageError
 from algkin.derivation.assembles import where_assembled
-from algkin.derivation.pipeline import check_setup, compile_and_branch
+from algkin.derivation.prepared import check_setup, prepare
 from algkin.scene import compile_scene, load_scene, load_scene_text
 from algkin.verify import verify_branches
 
@@ -142,8 +142,8 @@ LAMBDA_TEXT = (files("algkin.catalog") / "chebyshev-lambda.toml").read_text(enco
 def lambda_curve():
     """The coupler curve of P with its kept factors, and the branches it is checked against."""
     result = algkin.curve("chebyshev-lambda", "P", samples=0)
-    compiled, branches, _, _ = compile_and_branch(load_scene("chebyshev-lambda"), ["P"], ())
-    return compiled, branches, result.elimination.factors
+    prepared = prepare("chebyshev-lambda", outputs=["P"])
+    return prepared.compiled, prepared.branches, result.elimination.factors
 
 
 def curve_check(lambda_curve, factors):

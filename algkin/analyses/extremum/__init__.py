@@ -19,6 +19,8 @@ import mpmath
 import sympy
 
 from ...derivation.pipeline import derive
+from ...derivation.prepared import Prepared, given, prepare
+from ...derivation.witnesses import Groups
 from ...errors import UsageError
 from ...scene.load import SceneLike, Values
 from ...scene.model import length_range_problem, range_problem
@@ -77,10 +79,10 @@ def _text(expr):
     return None if expr is None else str(expr)
 
 
-def problem_for(derived, output, degrees=None):
+def problem_for(derived, output, degrees=None, *, witnesses: Groups | None = None):
     """The extremum problem of ``output`` (a scalar or an angle) in a derivation of it; a
     direction's reference is chosen for its motion over ``degrees`` (lo, hi), by default the
-    input's range."""
+    input's range. ``witnesses``: the derivation's (its ``Prepared``'s), drawn again if not given."""
     compiled = derived.compiled
     if len(compiled.system.inputs) != 1:
         raise UsageError("scene", compiled.scene.name, "an extremum needs exactly one input")
@@ -90,7 +92,7 @@ def problem_for(derived, output, degrees=None):
     angle = compiled.angles.get(output_name)
     if angle is not None and angle.direction:
         lo, hi = degrees if degrees is not None else compiled.scene.inputs[name].span
-        return direction_problem(derived, angle, line, parameters, lo, hi, output)
+        return direction_problem(derived, angle, line, parameters, lo, hi, output, witnesses=witnesses)
     if len(unknowns) != 1:
         raise UsageError("output", output, "name a scalar output (a distance, a coordinate or an angle), not a point")
     chosen = next(b for b in derived.branches if b.selected)
@@ -115,7 +117,7 @@ def _span(spec, angle_range):
     return lo, hi
 
 
-def extremum(scene: SceneLike, output: str, angle_range: tuple[float | str, float | str] | None = None,
+def extremum(scene: SceneLike | Prepared, output: str, angle_range: tuple[float | str, float | str] | None = None,
              params: Sequence[str] = (), largest: bool = False, method: str = "resultant", backend: str = "flint",
              set: Values | None = None) -> Extremum:  # noqa: A002 - the public API's name, as in derive
     """Critical points, minimum and maximum of ``output`` over the scene's one input.
@@ -123,12 +125,17 @@ def extremum(scene: SceneLike, output: str, angle_range: tuple[float | str, floa
     ``angle_range`` is in the input's unit (default: its declared range). With ``params``
     symbolic, ``closed_form`` gives the minimum (the maximum with ``largest``) and its
     input in those parameters, with where that holds. ``set`` gives dimensions exact values.
+    ``scene`` may be a ``Prepared`` one (``prepare``) for ``output`` alone.
     """
-    derived = derive(scene, [output], method, backend, params=params, samples=0, set=set)
-    return extremum_of(derived, output, angle_range, largest, backend)
+    prepared = given(scene, params=params, set=set) or prepare(scene, outputs=[output], params=params, set=set)
+    if tuple(prepared.compiled.outputs) != (output,):
+        raise UsageError("output", output, f"not the output {prepared.scene.name} was prepared for "
+                         f"(outputs: {', '.join(prepared.compiled.outputs)}): prepare it with outputs=[{output!r}]")
+    derived = derive(prepared, method=method, backend=backend, samples=0)
+    return extremum_of(derived, output, angle_range, largest, backend, witnesses=prepared.witnesses)
 
 
-def extremum_of(derived, output, angle_range=None, largest=False, backend="flint"):
+def extremum_of(derived, output, angle_range=None, largest=False, backend="flint", *, witnesses=None):
     """``extremum`` of an output of an existing derivation (with that output alone).
 
     An angle output's values are in degrees (see ``angles``): its extrema are the via's,
@@ -139,7 +146,7 @@ def extremum_of(derived, output, angle_range=None, largest=False, backend="flint
         raise UsageError("scene", derived.compiled.scene.name, "an extremum needs exactly one input")
     (name,) = inputs
     lo, hi = _span(derived.compiled.scene.inputs[name], angle_range)
-    problem = problem_for(derived, output, (lo, hi))
+    problem = problem_for(derived, output, (lo, hi), witnesses=witnesses)
     scale = problem.scale
     flip = scale is not None and scale.decreasing
     defaults = {p: sympy.Rational(str(derived.compiled.parameter_values[p.name])) for p in problem.parameters}

@@ -22,7 +22,9 @@ from typing import Any
 
 import sympy
 
-from ...derivation.pipeline import Derivation, check_setup, derive
+from ...derivation.pipeline import derive
+from ...derivation.prepared import Prepared, check_setup
+from ...derivation.results import Derivation
 from ...eliminate import DEFAULT_METHOD
 from ...errors import UsageError
 from ...runtime import validation
@@ -68,14 +70,16 @@ class Rates:
                 "rates_verification": self.verification.to_json()}
 
 
-def rates(scene: SceneLike, outputs: list[str] | None = None, params: tuple[str, ...] | list[str] = (),
+def rates(scene: SceneLike | Prepared, outputs: list[str] | None = None, params: tuple[str, ...] | list[str] = (),
           samples: int = SAMPLES, seed: int = 0, method: str = DEFAULT_METHOD, backend: str = "flint",
           set: dict[str, Any] | None = None) -> Rates:  # noqa: A002 - ``set=`` as in derive
     """Velocity and acceleration of every coordinate of ``outputs`` of a one-input ``scene``, per
     branch, checked on ``samples`` inputs (0 skips the check); the positions' derivation and its
-    own verification are in ``.derivation``."""
+    own verification are in ``.derivation``. ``scene`` may be a ``Prepared`` one (``prepare``)."""
     validation.count("samples", samples, validation.MAX_VERIFY_SAMPLES)
-    return rates_of(derive(scene, outputs, method, backend, params, samples, seed, set=set), samples, seed)
+    derivation = derive(scene, outputs, method=method, backend=backend, params=params, samples=samples, seed=seed,
+                        set=set)
+    return rates_of(derivation, samples, seed)
 
 
 def rates_of(derivation: Derivation, samples: int = SAMPLES, seed: int = 0) -> Rates:

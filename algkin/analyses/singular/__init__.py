@@ -106,7 +106,8 @@ class Singularities:
 def singular(scene: Any, point: str, *, set: Any = None, samples: int = 40,  # noqa: A002 - the public name (--set)
              seed: int = 0) -> Singularities:
     """The singular points of the curve ``point`` traces in ``scene`` (``algkin.curve``, its
-    verification on ``samples`` inputs included), every dimension at its default or ``set``."""
+    verification on ``samples`` inputs included), every dimension at its default or ``set``;
+    ``scene`` may be a ``Prepared`` one (``prepare``) with ``point`` among its outputs."""
     from ...derivation.pipeline import curve
 
     traced = curve(scene, point, samples=samples, seed=seed, set=set)
