@@ -14,7 +14,7 @@ import algkin
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / ".importlinter"
 
-PUBLIC = ["load", "load_scene", "compile_scene", "derive", "curve", "extremum", "rates", "singular", "catalog_names",
+PUBLIC = ["load", "load_scene", "compile_scene", "prepare", "Prepared", "derive", "curve", "extremum", "rates", "singular", "catalog_names",
           "interact", "AlgkinError", "SceneBuilder"]
 
 

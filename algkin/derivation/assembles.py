@@ -131,7 +131,7 @@ def _refuse_structure(compiled: Compiled, branch: Branch, intervals: list[Interv
     start, end = interval_keys("from_deg" in intervals[0])
     if any(i["status"] == "certified" for i in intervals):
         return
-    undecided = [(i[start], i[end]) for i in intervals if i["status"] == "undecided"]
+    undecided = [(i[start], i[end]) for i in intervals if i["status"] == "undecided"]  # type: ignore[literal-required]
     if not undecided or sum(b - a for a, b in undecided) >= STILL * (span[1] - span[0]):
         return
     (name, _), = compiled.system.inputs.items()

@@ -21,7 +21,7 @@ from ..eliminate import DEFAULT_METHOD, Budget, Elimination, current as current_
 from ..eliminate.protocol import Ring
 from ..errors import UsageError
 from ..runtime import validation
-from ..scene import compile_scene
+from ..scene import Compiled, Scene, compile_scene
 from ..scene.load import SceneLike, Values
 from ..verify import Verification, verify_branches
 from .assembles import certify_labels
@@ -90,7 +90,9 @@ def derive(scene: SceneLike | Prepared, outputs: Sequence[str] | None = None, *,
 
 def _derive(source: _Source, engine: Engine, *, outputs: Sequence[str] | None, certify: bool, budget: Budget,
             start: float) -> Derivation:
-    prepared = given(source.scene) or prepare(source.scene, outputs=outputs, params=source.params, set=source.values)
+    scene = source.scene
+    prepared = scene if isinstance(scene, Prepared) else prepare(scene, outputs=outputs, params=source.params,
+                                                                 set=source.values)
     compiled, branches = prepared.compiled, prepared.branches
     timings = dict(prepared.timings)
     with timed(timings, "eliminate"):
@@ -155,27 +157,32 @@ def _curve(source: _Source, engine: Engine, *, point: str, budget: Budget, start
 def _prepared_for_curve(source: _Source, point: str, budget: Budget) -> Prepared:
     """The scene prepared for ``point``, refused before its branches are sought when ``point`` is
     not a point of it or moves with more than one input."""
-    prepared = given(source.scene)
-    scene = prepared.scene if prepared else load(source.scene, values=source.values, params=source.params)
-    if not isinstance(point, str) or point not in scene.points:
-        raise UsageError("point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
-    if prepared and point not in prepared.compiled.outputs:
-        raise UsageError("point", point, f"not an output {scene.name} was prepared for "
-                         f"(outputs: {', '.join(prepared.compiled.outputs)})")
-    timings: dict[str, float] = {}
-    if prepared is None:
-        budget.note(f"compiling {scene.name}")
-        with timed(timings, "compile"):
-            compiled = compile_scene(scene, [point], source.params)
-    else:
-        compiled = prepared.compiled
-    if len(compiled.system.inputs) > 1:
-        raise UsageError("point", point, f"moves with {len(compiled.system.inputs)} inputs "
-                         f"({', '.join(compiled.system.inputs)}) in {scene.name}: its trajectory is a region, "
-                         "not a curve")
-    if prepared is not None:
+    if isinstance(source.scene, Prepared):
+        prepared = source.scene
+        _check_point(prepared.scene, point)
+        if point not in prepared.compiled.outputs:
+            raise UsageError("point", point, f"not an output {prepared.scene.name} was prepared for "
+                             f"(outputs: {', '.join(prepared.compiled.outputs)})")
+        _check_one_input(prepared.compiled, point)
         return prepared
-    budget.note(f"finding the branches of {compiled.scene.name}")
+    scene = load(source.scene, values=source.values, params=source.params)
+    _check_point(scene, point)
+    budget.note(f"compiling {scene.name}")
+    timings: dict[str, float] = {}
+    with timed(timings, "compile"):
+        compiled = compile_scene(scene, [point], source.params)
+    _check_one_input(compiled, point)
+    budget.note(f"finding the branches of {scene.name}")
     return prepared_from(compiled, timings)
 
 
+def _check_point(scene: Scene, point: str) -> None:
+    if not isinstance(point, str) or point not in scene.points:
+        raise UsageError("point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
+
+
+def _check_one_input(compiled: Compiled, point: str) -> None:
+    if len(compiled.system.inputs) > 1:
+        raise UsageError("point", point, f"moves with {len(compiled.system.inputs)} inputs "
+                         f"({', '.join(compiled.system.inputs)}) in {compiled.scene.name}: its trajectory is a "
+                         "region, not a curve")

@@ -37,6 +37,7 @@ from ..runtime import validation
 from ..runtime.budget import current
 from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled, Scene, compile_scene
+from ..scene.compile import resolve_outputs
 from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
 from ..system import System, symbol
@@ -44,7 +45,12 @@ from ..verify.check import BranchForms, Indicator
 from .assembles import Pieces, where_assembled
 from .witnesses import Groups, sampled_witnesses
 
-__all__ = ["Prepared", "prepare", "prepared_from", "load", "given", "CheckSetup", "check_setup", "timed"]
+__all__ = ["Prepared", "prepare", "prepared_from", "load", "given", "require_outputs", "CheckSetup", "check_setup",
+           "timed"]
+
+
+def _branches(branches: Iterable[Branch]) -> tuple[Branch, ...]:
+    return tuple(branches)
 
 
 def _pieces(where: Mapping[str, Pieces] | None) -> FrozenDict[str, tuple[tuple[float, float], ...]] | None:
@@ -60,7 +66,7 @@ class Prepared:
     """
 
     compiled: Compiled
-    branches: tuple[Branch, ...] = attrs.field(converter=tuple)
+    branches: tuple[Branch, ...] = attrs.field(converter=_branches)
     # {input: ((lo, hi), ...)} outside which no branch assembles, None for the whole range (where_assembled)
     where: FrozenDict[str, tuple[tuple[float, float], ...]] | None = attrs.field(converter=_pieces, eq=False)
     witnesses: Groups = attrs.field(eq=False, repr=False)  # per branch (python-flint balls: not hashable)
@@ -118,6 +124,15 @@ def given(scene: SceneLike | Prepared, **arguments: object) -> Prepared | None:
         if value is not None and value != () and value != []:
             raise UsageError(name, value, "given with a Prepared scene: pass it to prepare() instead")
     return scene
+
+
+def require_outputs(prepared: Prepared, argument: str, outputs: Sequence[str]) -> None:
+    """UsageError naming ``argument`` unless ``prepared`` was prepared for ``outputs`` exactly
+    (an analysis of an output reads the one output of its compiled scene)."""
+    if [o.name for o in resolve_outputs(prepared.scene, outputs)] != list(prepared.compiled.outputs):
+        value = outputs[0] if len(outputs) == 1 else list(outputs)
+        raise UsageError(argument, value, f"not what {prepared.scene.name} was prepared for (outputs: "
+                         f"{', '.join(prepared.compiled.outputs)}): prepare it with outputs={list(outputs)}")
 
 
 @contextlib.contextmanager

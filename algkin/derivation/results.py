@@ -29,7 +29,7 @@ def _branches(branches: Iterable[Branch]) -> tuple[Branch, ...]:
     return tuple(branches)
 
 
-def _intervals(certified: Iterable[Iterable[Mapping[str, float | str]] | None]) -> tuple[Certified, ...]:
+def _intervals(certified: Iterable[Iterable[Mapping[str, object]] | None]) -> tuple[Certified, ...]:
     """Per branch, its certified intervals as frozen mappings (None where labels were not certified)."""
     return tuple(None if c is None else tuple(frozen(i) for i in c) for c in certified)
 

@@ -19,7 +19,7 @@ import mpmath
 import sympy
 
 from ...derivation.pipeline import derive
-from ...derivation.prepared import Prepared, given, prepare
+from ...derivation.prepared import Prepared, given, prepare, require_outputs
 from ...derivation.witnesses import Groups
 from ...errors import UsageError
 from ...scene.load import SceneLike, Values
@@ -128,9 +128,7 @@ def extremum(scene: SceneLike | Prepared, output: str, angle_range: tuple[float 
     ``scene`` may be a ``Prepared`` one (``prepare``) for ``output`` alone.
     """
     prepared = given(scene, params=params, set=set) or prepare(scene, outputs=[output], params=params, set=set)
-    if tuple(prepared.compiled.outputs) != (output,):
-        raise UsageError("output", output, f"not the output {prepared.scene.name} was prepared for "
-                         f"(outputs: {', '.join(prepared.compiled.outputs)}): prepare it with outputs=[{output!r}]")
+    require_outputs(prepared, "output", [output])
     derived = derive(prepared, method=method, backend=backend, samples=0)
     return extremum_of(derived, output, angle_range, largest, backend, witnesses=prepared.witnesses)
 
