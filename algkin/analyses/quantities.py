@@ -85,16 +85,23 @@ class Quantity:
         self.text = text
 
     @cached_property
+    def prepared(self):
+        """The mechanism's scene prepared for this quantity (``algkin.prepare``): its derivation's and extremum's."""
+        from ..derivation.prepared import prepare
+
+        return prepare(self.mechanism.scene, outputs=[self.text], params=self.mechanism.params)
+
+    @cached_property
     def derivation(self):
         from ..derivation.pipeline import derive
 
-        return derive(self.mechanism.scene, [self.text], params=self.mechanism.params, samples=0)
+        return derive(self.prepared, samples=0)
 
     @cached_property
     def _problem(self):
         from .extremum import problem_for
 
-        return problem_for(self.derivation, self.text)
+        return problem_for(self.derivation, self.text, witnesses=self.prepared.witnesses)
 
     @property
     def input(self):
@@ -213,7 +220,7 @@ class Quantity:
         """Critical points, minimum and maximum; closed forms in the symbolic dimensions."""
         from .extremum import extremum_of
 
-        return extremum_of(self.derivation, self.text, range, largest)
+        return extremum_of(self.derivation, self.text, range, largest, witnesses=self.prepared.witnesses)
 
     def __repr__(self):
         return f"Quantity({self.text!r} of {self.mechanism.scene.name})"
