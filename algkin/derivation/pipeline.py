@@ -46,19 +46,29 @@ class Engine:
 
 @attrs.frozen(kw_only=True)
 class _Source:
-    """What a computation starts from: a scene and what to prepare it with, or a ``Prepared`` one."""
+    """What a computation starts from: a scene and what to prepare it with (outputs, symbolic
+    dimensions, values), or a ``Prepared`` one."""
 
     scene: SceneLike | Prepared
-    params: tuple[str, ...]
-    values: Values | None = attrs.field(eq=False)
+    outputs: tuple[str, ...] | None = None
+    params: tuple[str, ...] = ()
+    values: Values | None = attrs.field(default=None, eq=False)
+
+    def prepared(self) -> Prepared:
+        """The scene prepared (itself, if it is already)."""
+        if isinstance(self.scene, Prepared):
+            return self.scene
+        return prepare(self.scene, outputs=self.outputs, params=self.params, set=self.values)
 
 
-def _source(scene: SceneLike | Prepared, engine: Engine, *, params: Sequence[str], values: Values | None) -> _Source:
+def _source(scene: SceneLike | Prepared, engine: Engine, *, outputs: Sequence[str] | None = None,
+            params: Sequence[str], values: Values | None) -> _Source:
     """What to start from, the arguments checked (a ``Prepared`` scene's own are not given again)."""
-    given(scene, params=params, set=values)
+    given(scene, outputs=outputs, params=params, set=values)
     validation.count("samples", engine.samples, validation.MAX_VERIFY_SAMPLES)
     validation.seed(engine.seed)
-    return _Source(scene=scene, params=validation.names("params", params) or (), values=values)
+    return _Source(scene=scene, outputs=validation.names("outputs", outputs),
+                   params=validation.names("params", params) or (), values=values)
 
 
 def _started(budget: Budget | None) -> Budget:
@@ -79,20 +89,15 @@ def derive(scene: SceneLike | Prepared, outputs: Sequence[str] | None = None, *,
     and compiling the scene included, and the size of its eliminants. ``set`` gives dimensions
     exact values (``{"a": "3/2"}``) in place of their defaults.
     """
-    given(scene, outputs=outputs)
     engine = Engine(method=method, backend=backend, samples=samples, seed=seed)
-    outputs = validation.names("outputs", outputs)
-    source = _source(scene, engine, params=params, values=set)
+    source = _source(scene, engine, outputs=outputs, params=params, values=set)
     started = _started(budget)
-    return started.run(functools.partial(_derive, source, engine, outputs=outputs, certify=certify, budget=started,
+    return started.run(functools.partial(_derive, source, engine, certify=certify, budget=started,
                                          start=time.perf_counter()))
 
 
-def _derive(source: _Source, engine: Engine, *, outputs: Sequence[str] | None, certify: bool, budget: Budget,
-            start: float) -> Derivation:
-    scene = source.scene
-    prepared = scene if isinstance(scene, Prepared) else prepare(scene, outputs=outputs, params=source.params,
-                                                                 set=source.values)
+def _derive(source: _Source, engine: Engine, *, certify: bool, budget: Budget, start: float) -> Derivation:
+    prepared = source.prepared()
     compiled, branches = prepared.compiled, prepared.branches
     timings = dict(prepared.timings)
     with timed(timings, "eliminate"):

@@ -115,13 +115,21 @@ def prepared_from(compiled: Compiled, timings: Mapping[str, float] = FrozenDict(
     return Prepared(compiled, branches, where, groups, timings)
 
 
-def given(scene: SceneLike | Prepared, **arguments: object) -> Prepared | None:
+def given(scene: SceneLike | Prepared, **arguments: Sequence[str] | Values | None) -> Prepared | None:
     """``scene`` if it is a ``Prepared``, with none of ``arguments`` (what it was prepared with:
-    outputs, params, set) given again; None for a scene still to prepare."""
+    outputs, params, set) given again (empty is not given); None for a scene still to prepare.
+
+    >>> given("fourbar", params=["a"]) is None
+    True
+    >>> given(prepare("fourbar", outputs=["B"]), set={"a": 2})
+    Traceback (most recent call last):
+    ...
+    algkin.errors.UsageError: set={'a': 2}: given with a Prepared scene: pass it to prepare() instead
+    """
     if not isinstance(scene, Prepared):
         return None
     for name, value in arguments.items():
-        if value is not None and value != () and value != []:
+        if value:
             raise UsageError(name, value, "given with a Prepared scene: pass it to prepare() instead")
     return scene
 
