@@ -23,10 +23,11 @@ from ..errors import UsageError
 from ..runtime import validation
 from ..scene import Compiled, Scene, compile_scene
 from ..scene.load import SceneLike, Values
-from ..verify import Verification, verify_branches
+from ..verify import Verification
 from .assembles import certify_labels
 from .curves import curve_figures, family_method, refuse_still
-from .prepared import Prepared, check_setup, given, load, prepare, prepared_from, timed
+from .checking import verify_prepared
+from .prepared import Prepared, given, load, prepare, prepared_from, timed
 from .results import CurveResult, Derivation
 from .tasks import curve_task, eliminant_tasks
 
@@ -114,15 +115,10 @@ def _derive(source: _Source, engine: Engine, *, certify: bool, budget: Budget, s
 
 
 def _verify(prepared: Prepared, engine: Engine, eliminations: Mapping[str, Elimination[Ring]]) -> Verification:
-    """Independent check, with symbolic parameters at their defaults; each eliminant's kept
-    factors let it catch a leftover extraneous factor."""
-    if not engine.samples:
-        return Verification.skipped()
-    fixed, indicators, fixed_branches, inputs = check_setup(prepared.compiled, prepared.branches)
-    return verify_branches(fixed, indicators, fixed_branches, inputs, dict(prepared.compiled.parameter_values),
-                           samples=engine.samples, seed=engine.seed,
+    """The independent check, each eliminant's kept factors with it."""
+    return verify_prepared(prepared, samples=engine.samples, seed=engine.seed,
                            polynomials={u: e.exact[0] for u, e in eliminations.items()},
-                           factors={u: e.exact[1] for u, e in eliminations.items()}, where=prepared.where)
+                           factors={u: e.exact[1] for u, e in eliminations.items()})
 
 
 def curve(scene: SceneLike | Prepared, point: str, *, method: str = DEFAULT_METHOD, backend: str = "flint",

@@ -26,10 +26,8 @@ from __future__ import annotations
 import contextlib
 import time
 from collections.abc import Iterable, Iterator, Mapping, Sequence
-from typing import NamedTuple
 
 import attrs
-import sympy
 
 from ..branches import Branch, check_assembly, closed_forms
 from ..errors import UsageError
@@ -40,13 +38,10 @@ from ..scene import Compiled, Scene, compile_scene
 from ..scene.compile import resolve_outputs
 from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
-from ..system import System, symbol
-from ..verify.check import BranchForms, Indicator
 from .assembles import Pieces, where_assembled
 from .witnesses import Groups, sampled_witnesses
 
-__all__ = ["Prepared", "prepare", "prepared_from", "load", "given", "require_outputs", "CheckSetup", "check_setup",
-           "timed"]
+__all__ = ["Prepared", "prepare", "prepared_from", "load", "given", "require_outputs", "timed"]
 
 
 def _branches(branches: Iterable[Branch]) -> tuple[Branch, ...]:
@@ -151,30 +146,3 @@ def timed(timings: dict[str, float], stage: str) -> Iterator[None]:
         yield
     finally:
         timings[stage] = time.perf_counter() - mark
-
-
-class CheckSetup(NamedTuple):
-    """What an independent check of branches starts from, the dimensions at their defaults."""
-
-    system: System
-    indicators: tuple[Indicator, ...]
-    branches: tuple[BranchForms, ...]  # per branch: (labels, values, discriminants)
-    inputs: FrozenDict[str, tuple[float, float]]  # input -> (lo, hi), radians or lengths
-
-
-def check_setup(compiled: Compiled, branches: Iterable[Branch]) -> CheckSetup:
-    """What an independent check of ``branches`` starts from, the dimensions at their defaults:
-    ``(system, indicators, [(labels, values, discriminants)], {input: (lo, hi) radians})``."""
-    system = compiled.system
-    defaults = {symbol(n): compiled.parameter_values[n] for n in system.parameters}
-    fixed = type(system)(system.unknowns, (), system.inputs,
-                         tuple(sympy.expand(e.xreplace(defaults)) for e in system.equations),
-                         system.nonnegative)
-    inputs = {n: (float(i.to_radians(i.lo)), float(i.to_radians(i.hi)))
-              for n, i in compiled.scene.inputs.items() if n in system.inputs}
-    return CheckSetup(
-        fixed,
-        tuple((i.point, i.expr.xreplace(defaults), i.positive, i.negative) for i in compiled.indicators),
-        tuple((b.labels, frozen({u: v.xreplace(defaults) for u, v in b.values.items()}),
-               frozen({p: d.xreplace(defaults) for p, d in b.discriminants.items()})) for b in branches),
-        frozen(inputs))

@@ -16,7 +16,7 @@ from algkin.analyses.rates.check import check_rates
 from algkin.analyses.rates.forms import Derivative
 from algkin.analyses.rates.text import quick
 from algkin.derivation.pipeline import derive
-from algkin.derivation.prepared import check_setup
+from algkin.derivation.checking import check_setup
 from algkin.errors import UsageError
 from algkin.evaluate import MPMATH, evaluate
 from algkin.scene import load_scene_text

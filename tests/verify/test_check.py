@@ -9,7 +9,8 @@ import algkin
 from algkin.branches import closed_forms
 from algkin.errors import UsageError
 from algkin.derivation.assembles import where_assembled
-from algkin.derivation.prepared import check_setup, prepare
+from algkin.derivation.checking import check_setup
+from algkin.derivation.prepared import prepare
 from algkin.scene import compile_scene, load_scene, load_scene_text
 from algkin.verify import verify_branches
 

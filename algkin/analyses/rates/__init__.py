@@ -23,7 +23,8 @@ from typing import Any
 import sympy
 
 from ...derivation.pipeline import derive
-from ...derivation.prepared import Prepared, check_setup
+from ...derivation.checking import check_setup
+from ...derivation.prepared import Prepared
 from ...derivation.results import Derivation
 from ...eliminate import DEFAULT_METHOD
 from ...errors import UsageError
