@@ -23,11 +23,10 @@ value, and would be kept for "containing" zero.
 
 import math
 from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
-from typing import cast
-
 import flint
 
 from ..errors import ComputationError
+from ..system.roots import real_roots
 from .protocol import Backend, P, Term
 
 __all__ = ["Witness", "Point", "WitnessGroups", "Evaluator", "select_factors", "unreal_factors", "unreal"]
@@ -166,10 +165,7 @@ def unreal(terms: Sequence[Term]) -> bool:
     coefficients: list[flint.fmpq] = [flint.fmpq(0)] * (max(e[used[0]] for e, _, _ in terms) + 1)
     for exponents, p, q in terms:
         coefficients[exponents[used[0]]] = flint.fmpq(p, q)
-    # (root, multiplicity) pairs, real roots with an imaginary part of exactly zero: python-flint
-    # 0.9's stub says bare roots
-    pairs = cast("list[tuple[flint.acb, int]]", flint.fmpq_poly(coefficients).complex_roots())
-    return not any(root.imag.is_zero() for root, _ in pairs)
+    return not real_roots(flint.fmpq_poly(coefficients))
 
 
 def select_factors(backend: Backend[P], factors: Sequence[P], witness_groups: WitnessGroups, check: bool = True

@@ -22,7 +22,8 @@ import flint
 import mpmath
 import sympy
 
-from .convert import flint_context, real_roots, to_flint
+from .convert import flint_context, to_flint, univariate
+from .roots import real_roots
 
 __all__ = ["half_angle_numerator", "half_angle_poly", "tangent_to_degrees", "vanishes_at_half_turn", "Parametrisation"]
 
@@ -122,7 +123,8 @@ class Parametrisation:
         >>> [round(float(r.mid()), 12) for r in Parametrisation((t,), t).roots(t**2 - 2)]
         [-1.414213562373, 1.414213562373]
         """
-        return [self.shown(r) for r in real_roots(self.numerator(expr), self.t)] + self.at_infinity(expr)
+        found = real_roots(univariate(self.numerator(expr), self.t))
+        return [self.shown(r.ball) for r in found] + self.at_infinity(expr)
 
     def exact_shown(self, t: sympy.Expr) -> sympy.Expr:
         """An exact value of ``t`` as the input users read (degrees: ``360 atan(t) / pi``)."""

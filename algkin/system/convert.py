@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
-from typing import NoReturn, cast
+from typing import NoReturn
 
 import flint
 import sympy
@@ -22,7 +22,7 @@ import sympy
 from ..evaluate import NumberKind, evaluate
 from .core import symbol
 
-__all__ = ["flint_context", "to_flint", "to_sympy", "to_flint_integer", "fmpq_to_rational", "real_roots"]
+__all__ = ["flint_context", "to_flint", "to_sympy", "to_flint_integer", "fmpq_to_rational", "univariate"]
 
 
 def flint_context(names: Iterable[str], ordering: str = "lex") -> flint.fmpq_mpoly_ctx:
@@ -72,17 +72,16 @@ def to_sympy(poly: flint.fmpq_mpoly | flint.fmpz_mpoly,
     return sympy.Poly.from_dict(terms, *gens, domain=sympy.QQ).as_expr()
 
 
-def real_roots(poly: sympy.Expr, var: sympy.Symbol) -> list[flint.arb]:
-    """Certified real roots of a univariate rational polynomial in ``var``, as arb balls.
+def univariate(expr: sympy.Expr, var: sympy.Symbol) -> flint.fmpq_poly:
+    """A sympy polynomial in ``var`` alone, with rational coefficients, as an ``fmpq_poly``.
 
-    python-flint factors it over the integers and isolates the roots of each factor
-    (``complex_roots``), at the working precision of ``flint.ctx``.
+    >>> t = sympy.Symbol("t")
+    >>> univariate(t**2 / 2 - 3, t)
+    1/2*x^2 + (-3)
     """
-    _, coeffs = sympy.Poly(poly, var).clear_denoms()
-    integer = flint.fmpz_poly([int(a) for a in reversed(coeffs.all_coeffs())])
-    roots = []
-    for factor, _ in integer.factor()[1]:
-        # (root, multiplicity) pairs: python-flint 0.9's stub says bare roots
-        pairs = cast("list[tuple[flint.acb, int]]", factor.complex_roots())
-        roots += [r.real for r, _ in pairs if r.imag.is_zero()]
-    return roots
+    coefficients = sympy.Poly(expr, var).all_coeffs()
+    return flint.fmpq_poly([_fmpq(sympy.Rational(a)) for a in reversed(coefficients)])
+
+
+def _fmpq(value: sympy.Rational) -> flint.fmpq:
+    return flint.fmpq(int(value.p), int(value.q))

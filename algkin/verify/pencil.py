@@ -29,6 +29,7 @@ from numpy.typing import NDArray
 
 from ..evaluate import ARB, NUMPY
 from ..evaluate.program import ArrayProgram, BallProgram, Floats, columns, compile_program
+from ..system.roots import quadratic_roots
 
 __all__ = ["Pencil"]
 
@@ -128,13 +129,11 @@ class Pencil:
         quad = uu * p * p + uv * p + vv
         lin = 2 * uu * p * r + uv * r + u * p + v
         const = uu * r * r + u * r + one
-        disc = lin * lin - 4 * quad * const
-        if not (disc > 0 and (quad > 0 or quad < 0)):
+        both = quadratic_roots(quad, lin, const)
+        if both is None:
             return None
-        root = disc.sqrt()
-        q = -(lin + root) / 2 if float(lin.mid()) >= 0 else -(lin - root) / 2  # no cancellation
         roots = []
-        for t in (q / quad, const / q):
+        for t in both:
             dependent = p * t + r
             pair = [t, dependent] if swap else [dependent, t]
             if not all(x.is_finite() for x in pair):

@@ -25,7 +25,8 @@ import mpmath
 import sympy
 
 from ...eliminate import eliminate
-from ...system.convert import real_roots
+from ...system.convert import univariate
+from ...system.roots import real_roots
 from .critical import DIGITS, ROOT_BITS, extreme, meeting_factors, points_at
 
 __all__ = ["ClosedForm", "closed_form", "value_factors"]
@@ -266,7 +267,7 @@ def _regions(problem, events, extremum_at, defaults):
     and each region's value as a sympy expression."""
     (name,) = problem.parameters
     with flint.ctx.workprec(ROOT_BITS):
-        cuts = sorted({float(r.mid()) for e in events for r in real_roots(e, name)})
+        cuts = sorted({float(r.ball.mid()) for e in events for r in real_roots(univariate(e, name))})
     bounds = [None] + cuts + [None]
     regions, values = [], []
     for lo, hi in zip(bounds, bounds[1:]):

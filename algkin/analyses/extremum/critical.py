@@ -20,7 +20,8 @@ from ...eliminate import eliminate
 from ...errors import ComputationError, UsageError
 from ...evaluate import MPMATH, evaluate
 from ...system.angles import Parametrisation
-from ...system.convert import real_roots
+from ...system.convert import univariate
+from ...system.roots import real_roots
 
 if TYPE_CHECKING:
     from .angles import AngleScale
@@ -149,8 +150,8 @@ def critical_points(problem, factors, lo, hi, meeting=None):
     found = []
     with flint.ctx.workprec(ROOT_BITS), mpmath.workdps(DIGITS):
         lo, hi = _mp(lo), _mp(hi)
-        balls = [problem.line.shown(r) for p in polys if p.has(problem.t)
-                 for r in real_roots(p, problem.t)]
+        balls = [problem.line.shown(r.ball) for p in polys if p.has(problem.t)
+                 for r in real_roots(univariate(p, problem.t))]
         if problem.line.is_angle:
             balls.append(flint.arb(180))  # t = infinity
         for ball in balls:
@@ -182,8 +183,8 @@ def _dead_centres(problem, meeting, lo, hi, found):
     where the branch is real on one side only; at the others two branches merely share a value.
     """
     points = []
-    for ball in (problem.line.shown(r) for f in meeting if f.has(problem.t)
-                 for r in real_roots(f, problem.t)):
+    for ball in (problem.line.shown(r.ball) for f in meeting if f.has(problem.t)
+                 for r in real_roots(univariate(f, problem.t))):
         middle = mpmath.mpf(ball.mid().str(DIGITS, radius=False))
         for degrees in (middle + turn for turn in problem.line.turns):
             value = _value_at_meeting(problem, degrees)

@@ -26,7 +26,8 @@ import sympy
 
 from ...errors import ComputationError
 from ...system.convert import fmpq_to_rational, to_sympy
-from .numberfield import START_BITS, MAX_BITS, Element, NumberField, RealRoot
+from ...system.roots import MAX_BITS, RealRoot, real_roots
+from .numberfield import START_BITS, Element, NumberField
 
 __all__ = ["Coordinate", "coordinates", "minimal_polynomial", "polynomial_text", "ENCLOSURE_BITS"]
 
@@ -50,7 +51,7 @@ def coordinates(field: NumberField, element: Element, roots: list[RealRoot], nam
         return []
     minimal = minimal_polynomial(field, element)
     text = polynomial_text(minimal, name)
-    balls = [root.value(element, ENCLOSURE_BITS) for root in roots]
+    balls = [root.value(element, bits=ENCLOSURE_BITS) for root in roots]
     return [Coordinate(float(ball.mid()), ball, _exact(minimal, text, element, root), text)
             for ball, root in zip(balls, roots)]
 
@@ -79,10 +80,8 @@ def _exact(minimal, text, element, root):
         return fmpq_to_rational(flint.fmpq(-a, b))
     bits = START_BITS
     while bits <= MAX_BITS:
-        ball = root.value(element, bits)
-        with flint.ctx.workprec(bits):
-            reals = sorted((r.real for r, _ in minimal.complex_roots() if r.imag.is_zero()), key=lambda r: r.mid())
-        meeting = [k for k, r in enumerate(reals) if r.overlaps(ball)]
+        ball = root.value(element, bits=bits)
+        meeting = [r.index for r in real_roots(minimal, bits=bits) if r.ball.overlaps(ball)]
         if len(meeting) == 1:
             return sympy.CRootOf(text, meeting[0], radicals=minimal.degree() == 2)
         bits *= 2

@@ -29,7 +29,8 @@ from __future__ import annotations
 
 from math import comb
 
-from .numberfield import Element, NumberField, RealRoot, poly_derivative, poly_gcd, real_root_count, trim
+from ...system.roots import RealRoot
+from .numberfield import Element, NumberField, poly_derivative, poly_gcd, real_root_count, trim
 
 __all__ = ["shift", "multiplicity", "describe", "Local"]
 

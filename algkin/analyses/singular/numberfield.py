@@ -1,5 +1,5 @@
 """Exact arithmetic in a number field ``Q(alpha) = Q[t]/(p)``, polynomials over it, and signs at
-one real root of ``p``.
+one real root of ``p`` (a ``system.roots.RealRoot``).
 
 A singular point of a curve with rational coefficients has algebraic coordinates; all its
 conjugates share one irreducible polynomial ``p``. Computing in ``Q[t]/(p)`` treats them at
@@ -22,14 +22,13 @@ from collections.abc import Sequence
 
 import flint
 
-from ...errors import ComputationError
+from ...system.roots import RealRoot, real_roots
 
-__all__ = ["NumberField", "RealRoot", "Element", "poly_gcd", "poly_rem", "poly_derivative", "real_root_count",
+__all__ = ["NumberField", "Element", "poly_gcd", "poly_rem", "poly_derivative", "real_root_count",
            "trim"]
 
 Element = flint.fmpq_poly  # an element of the field: a polynomial in t of degree < deg p
-START_BITS = 64
-MAX_BITS = 1 << 16  # past this the sign of a nonzero element would be astronomically small
+START_BITS = 64  # the roots' first balls; signs refine them as far as they need
 
 
 class NumberField:
@@ -75,45 +74,8 @@ class NumberField:
         return self.mul(a, self.inverse(b))
 
     def real_roots(self) -> list[RealRoot]:
-        """The real roots of ``p``, ascending, each a ``RealRoot``."""
-        count = sum(1 for r, _ in self.minimal.complex_roots() if r.imag.is_zero())
-        return [RealRoot(self, k) for k in range(count)]
-
-
-class RealRoot:
-    """The ``index``-th real root (ascending) of a field's ``p``: signs of field elements there."""
-
-    def __init__(self, field: NumberField, index: int) -> None:
-        self.field = field
-        self.index = index
-        self._balls: dict[int, flint.arb] = {}
-
-    def ball(self, bits: int = START_BITS) -> flint.arb:
-        """An isolating enclosure of the root, computed at ``bits`` of working precision."""
-        if bits not in self._balls:
-            with flint.ctx.workprec(bits):
-                reals = [r.real for r, _ in self.field.minimal.complex_roots() if r.imag.is_zero()]
-            reals.sort(key=lambda r: r.mid())  # disjoint balls: their exact midpoints order them
-            self._balls[bits] = reals[self.index]
-        return self._balls[bits]
-
-    def value(self, element: Element, bits: int = START_BITS) -> flint.arb:
-        """``element`` at the root, in ball arithmetic at ``bits``."""
-        with flint.ctx.workprec(bits):
-            return flint.arb_poly(element.coeffs())(self.ball(bits))
-
-    def sign(self, element: Element) -> int:
-        """-1, 0 or 1: exact for 0 (the zero element), decided by refining the root otherwise."""
-        if element.is_zero():
-            return 0
-        bits = START_BITS
-        while bits <= MAX_BITS:
-            ball = self.value(element, bits)
-            if ball > 0 or ball < 0:
-                return 1 if ball > 0 else -1
-            bits *= 2
-        raise ComputationError(f"the sign of {element} at a root of {self.field.minimal} stayed undecided "
-                               f"at {MAX_BITS} bits")
+        """The real roots of ``p``, ascending, each a ``RealRoot`` (balls at ``START_BITS``)."""
+        return list(real_roots(self.minimal, bits=START_BITS))
 
 
 def trim(field: NumberField, poly: Sequence[Element]) -> list[Element]:
