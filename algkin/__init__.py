@@ -17,12 +17,13 @@ A scene asked several questions is prepared once (compiled, its branches and wit
 from __future__ import annotations
 
 import importlib
+import warnings
 from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
 
 __all__ = [
-    "load",
+    "load_quantities",
     "load_scene",
     "compile_scene",
     "prepare",
@@ -36,56 +37,60 @@ __all__ = [
     "interact",
     "AlgkinError",
     "SceneBuilder",
+    # what the functions above return
+    "Derivation",
+    "CurveResult",
+    "Verification",
+    "Branch",
+    "Extremum",
+    "Rates",
+    "Singularities",
+    "Mechanism",
+    "Quantity",
 ]
 
 from .errors import AlgkinError
 
 if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ loads them at run time)
-    from .analyses.extremum import extremum
-    from .analyses.quantities import load
-    from .analyses.rates import rates
-    from .analyses.singular import singular
+    from .analyses.extremum import Extremum, extremum
+    from .analyses.quantities import Mechanism, Quantity, load_quantities
+    from .analyses.rates import Rates, rates
+    from .analyses.singular import Singularities, singular
+    from .branches import Branch
     from .derivation.pipeline import curve, derive
     from .derivation.prepared import Prepared, prepare
+    from .derivation.results import CurveResult, Derivation
     from .scene import SceneBuilder, catalog_names, compile_scene, load_scene
     from .ui.widgets import interact
+    from .verify import Verification
+
+    load = load_quantities  # deprecated: see __getattr__
+
+# Each lazy name -> the module defining it, imported on first use: the scene layer imports sympy
+# (0.4 s), not before the command line has its signal handlers; the pipeline pulls in the
+# elimination and verification layers; interact needs ipywidgets only when called.
+_LAZY = {
+    **dict.fromkeys(("SceneBuilder", "catalog_names", "compile_scene", "load_scene"), ".scene"),
+    **dict.fromkeys(("derive", "curve"), ".derivation.pipeline"),
+    **dict.fromkeys(("prepare", "Prepared"), ".derivation.prepared"),  # what derive, curve and the analyses share
+    **dict.fromkeys(("Derivation", "CurveResult"), ".derivation.results"),
+    "Verification": ".verify",
+    "Branch": ".branches",
+    **dict.fromkeys(("extremum", "Extremum"), ".analyses.extremum"),
+    **dict.fromkeys(("rates", "Rates"), ".analyses.rates"),
+    **dict.fromkeys(("singular", "Singularities"), ".analyses.singular"),
+    **dict.fromkeys(("load_quantities", "Mechanism", "Quantity"), ".analyses.quantities"),
+    "interact": ".ui.widgets",
+}
 
 
 def __getattr__(name: str) -> Any:
-    # The scene layer imports sympy (0.4 s): not before the command line has its signal handlers.
-    if name in ("SceneBuilder", "catalog_names", "compile_scene", "load_scene"):
-        from . import scene
-
-        return getattr(scene, name)
+    if name in _LAZY:
+        return getattr(importlib.import_module(_LAZY[name], __name__), name)
     if name == "scene":  # ``algkin.scene.dump_scene`` after ``import algkin``, as when it was imported here
         return importlib.import_module(".scene", __name__)
-    # The pipeline pulls in the elimination and verification layers: load on first use.
-    if name in ("derive", "curve"):
-        from .derivation import pipeline
-
-        return getattr(pipeline, name)
-    if name in ("prepare", "Prepared"):  # what derive, curve and the analyses share of a scene
-        from .derivation import prepared
-
-        return getattr(prepared, name)
-    if name == "extremum":
-        from .analyses.extremum import extremum
-
-        return extremum
-    if name == "rates":
-        from .analyses.rates import rates
-
-        return rates
-    if name == "singular":
-        from .analyses.singular import singular
-
-        return singular
-    if name == "interact":  # ipywidgets only when called
-        from .ui.widgets import interact
-
-        return interact
-    if name == "load":
-        from .analyses.quantities import load
-
-        return load
+    if name == "load":  # its old name, beside load_scene it read as the wrong one
+        warnings.warn("algkin.load is deprecated and goes in the next release: call algkin.load_quantities",
+                      DeprecationWarning, stacklevel=2)
+        return __getattr__("load_quantities")
     raise AttributeError(f"module 'algkin' has no attribute {name!r}")

@@ -64,7 +64,7 @@ def bench(name, samples, repeats):
     point = next(n for n, p in scene.points.items() if type(p).__name__ == "Dyad")
     compiled = compile_scene(scene, [point])
     branch = next(b for b in closed_forms(compiled) if b.selected)
-    unknowns = next(d for d in compiled.dyads if d.point == point).unknowns
+    unknowns = next(d for d in compiled.implicit if d.point == point).unknowns
     c, s = next(iter(compiled.system.inputs.values()))
     theta = np.sort(np.random.default_rng(0).uniform(0, 2 * np.pi, samples))
     check = theta[:: max(1, samples // 2000)]

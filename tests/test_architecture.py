@@ -14,8 +14,10 @@ import algkin
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / ".importlinter"
 
-PUBLIC = ["load", "load_scene", "compile_scene", "prepare", "Prepared", "derive", "curve", "extremum", "rates", "singular", "catalog_names",
-          "interact", "AlgkinError", "SceneBuilder"]
+PUBLIC = ["load_quantities", "load_scene", "compile_scene", "derive", "curve", "extremum", "rates", "singular",
+          "catalog_names", "interact", "AlgkinError", "SceneBuilder", "prepare", "Prepared",
+          "Derivation", "CurveResult", "Verification", "Branch", "Extremum", "Rates", "Singularities", "Mechanism",
+          "Quantity"]
 
 
 def test_the_import_contract_is_kept():

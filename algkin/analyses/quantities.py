@@ -1,6 +1,6 @@
 """The seed documents' way of working, done by elimination: load, ask for a quantity, get sympy.
 
->>> arm = load("arm-string", params=["b"])
+>>> arm = load_quantities("arm-string", params=["b"])
 >>> AB = arm.dist("A", "B")
 >>> AB.expr
 sqrt(b**2 - 700*b*cos(theta) - 280000*sin(theta) + 282500)
@@ -31,11 +31,11 @@ from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
 from ..system import symbol
 
-__all__ = ["load", "Mechanism", "Quantity"]
+__all__ = ["load_quantities", "Mechanism", "Quantity"]
 
 
-def load(scene: SceneLike, params: Sequence[str] = (),
-         set: Values | None = None) -> Mechanism:  # noqa: A002 - ``set=`` is the public name (the command line's --set)
+def load_quantities(scene: SceneLike, params: Sequence[str] = (),
+                    set: Values | None = None) -> Mechanism:  # noqa: A002 - ``set=`` is the public name (the command line's --set)
     """A mechanism from a catalog name, a path or a ``Scene``; ``params`` stay symbolic, and
     ``set`` gives others exact values in place of their defaults (``set={"b": "3/2"}``)."""
     params = validation.names("params", params)
@@ -172,7 +172,7 @@ class Quantity:
         loop where it is installed and pays (``algkin.evaluate.fused``), numpy's otherwise; nan
         where the branch's label is not certified (by a toggle: ``undecided``) or it does not assemble.
 
-        >>> AB = load("arm-string", params=["b"]).dist("A", "B")
+        >>> AB = load_quantities("arm-string", params=["b"]).dist("A", "B")
         >>> [round(float(v), 9) for v in AB.at(theta=np.array([90.0, 0.0]), b=80)]   # at 0: sqrt(232900)
         [94.339811321, 482.597140481]
         """

@@ -1,6 +1,6 @@
 """Toggles (dead centres): where an implicit point's two assembly modes meet, certified.
 
-Each implicit point's spec gives its conditions (``algkin.scene.implicit``). A dyad on
+Each implicit point's branch algebra gives its conditions (``algkin.branches.constructions``). A dyad on
 bases P, Q with lengths l1, l2 toggles where ``|PQ| = l1 + l2`` (*extended*:
 both bars in line, pointing apart) or ``|PQ| = |l1 - l2|`` (*folded*: in line, one over the
 other). A slider (on the line through P with direction d, at distance l from Q) toggles
@@ -25,12 +25,13 @@ import flint
 import sympy
 
 from ..derivation.prepared import given, prepared_from
+from ..branches.constructions import algebra_of
 from ..eliminate import eliminate
 from ..errors import UsageError
 from ..evaluate import ARB, evaluate
 from ..scene import Compiled, compile_scene, load_scene
 from ..scene.constructions import Crank, Fixed
-from ..scene.implicit import ImplicitSpec
+from ..scene.implicit import DyadSpec, ImplicitSpec
 from ..scene.settings import with_values
 from ..system import input_values, symbol
 from ..system.angles import Parametrisation
@@ -78,7 +79,7 @@ def toggle_conditions(compiled: Compiled, spec: ImplicitSpec) -> dict[str, sympy
     """{kind: poly} in the input's c, s (earlier points eliminated), for a dyad or a slider."""
     defaults = _defaults(compiled)
     return {kind: _eliminate_earlier(compiled, sympy.expand(e.xreplace(defaults)), spec)
-            for kind, e in spec.toggle_conditions().items()}
+            for kind, e in algebra_of(spec).toggle_conditions().items()}
 
 
 def _eliminate_earlier(compiled, condition, spec):
@@ -213,7 +214,7 @@ def _square(ball):
 def grashof(compiled):
     """The Grashof class of a four-bar (crank about a ground pivot, dyad on crank tip and ground)."""
     scene = compiled.scene
-    for dyad in compiled.dyads:
+    for dyad in (spec for spec in compiled.implicit if isinstance(spec, DyadSpec)):
         construction = scene.points[dyad.point]
         first, second = (scene.points[p] for p in construction.bases)
         lengths = construction.lengths

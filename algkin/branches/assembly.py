@@ -7,7 +7,7 @@ import sympy
 
 from ..errors import SceneError
 from ..scene import Compiled
-from ..scene.implicit.floats import FloatArray
+from ..scene.implicit.base import FloatArray
 from ..system import input_values, symbol
 from .closed_form import Branch
 
@@ -61,4 +61,4 @@ def _on_grid(args: list[sympy.Symbol], expression: sympy.Expr, angles: dict[symp
         expression = sympy.expand(expression)
     with np.errstate(all="ignore"):  # a pole (an input where a base meets a base) or a nan is no real value
         values = sympy.lambdify(args, expression, "numpy")(*angles.values())
-        return np.nan_to_num(np.broadcast_to(np.asarray(values, dtype=float), (GRID,)), nan=-np.inf)
+        return np.nan_to_num(np.broadcast_to(np.asarray(values, dtype=np.float64), (GRID,)), nan=-np.inf)

@@ -116,15 +116,16 @@ def uncertified(intervals: Sequence[Interval], shown: NDArray[np.float64], turni
     [False, True, False, False]
     """
     start, end = interval_keys(turning)
-    lows = np.array([i[start] for i in intervals])  # type: ignore[literal-required]
-    highs = np.array([i[end] for i in intervals])  # type: ignore[literal-required]
-    values = np.asarray(shown, dtype=float)
+    lows = np.array([i[start] for i in intervals], dtype=np.float64)  # type: ignore[literal-required]
+    highs = np.array([i[end] for i in intervals], dtype=np.float64)  # type: ignore[literal-required]
+    values = np.asarray(shown, dtype=np.float64)
     if turning and highs[-1] - lows[0] >= 360:
         values = lows[0] + np.mod(values - lows[0], 360.0)
     index = np.clip(np.searchsorted(highs, values, side="left"), 0, len(intervals) - 1)
     inside = (values >= lows[0]) & (values <= highs[-1])
-    bad = np.array([i["status"] != "certified" for i in intervals])
-    return inside & bad[index]
+    bad = np.array([i["status"] != "certified" for i in intervals], dtype=np.bool_)
+    unproved: NDArray[np.bool_] = inside & bad[index]  # numpy types an array's comparison with its item as Any
+    return unproved
 
 
 def _merged(pieces: Sequence[tuple[float, float, str]], variables: Sequence[str]) -> list[Interval]:

@@ -1,7 +1,7 @@
 """Closed-form branches of a compiled scene, labelled geometrically, paired by construction.
 
-Each implicit point's spec gives its own closed form on each of its two labels (see
-``algkin.scene.implicit``: a dyad's ``left``/``right``, a slider's ``ahead``/``behind``),
+Each implicit point's branch algebra gives its own closed form on each of its two labels (see
+``algkin.branches.constructions``: a dyad's ``left``/``right``, a slider's ``ahead``/``behind``),
 in the closed forms of the points it is built on; a branch is one label per point.
 
 >>> from algkin.scene import load_scene, compile_scene
@@ -19,11 +19,12 @@ import sympy
 
 from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled
-from ..scene.implicit import reduce_on_circles
-from ..scene.implicit.algebra import Circles, tidy_ratio
+from ..scene.implicit.algebra import Circles, reduce_on_circles
 from ..system import symbol
+from .algebra import tidy_ratio
+from .constructions import algebra_of
 
-__all__ = ["Branch", "closed_forms", "reduce_on_circles"]
+__all__ = ["Branch", "closed_forms"]
 
 
 @attrs.frozen
@@ -77,7 +78,7 @@ def _branch(compiled: Compiled, chosen: dict[str, str]) -> Branch:
     discriminants: dict[str, sympy.Expr] = {}
     for spec in specs:
         sigma = spec.sign(chosen[spec.point]) if spec.labels else 1
-        (x, y), discriminants[spec.point] = spec.closed_form(substitution, sigma, inputs)
+        (x, y), discriminants[spec.point] = algebra_of(spec).closed_form(substitution, sigma=sigma, inputs=inputs)
         substitution.update({symbol(spec.unknowns[0]): x, symbol(spec.unknowns[1]): y})
     values = {u: substitution[symbol(u)] for spec in specs for u in spec.unknowns}
     for unknown, definition in compiled.definitions.items():

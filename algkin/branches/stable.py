@@ -1,6 +1,6 @@
 """A branch evaluated fast and without cancellation, from the input angles.
 
-Each implicit point is evaluated by its spec's own stable evaluator (``algkin.scene.implicit``:
+Each implicit point is evaluated by its own stable evaluator (``algkin.branches.constructions``:
 a dyad's midpoint form with its span factored through its toggles, a slider's root that
 cannot cancel), from exact expressions with the dimensions at their defaults.
 
@@ -30,11 +30,11 @@ from ..evaluate.fused import Kernel
 from ..evaluate.trace import trace
 from ..scene import Compiled
 from ..scene.compile import resolve_outputs
-from ..scene.implicit import StableEvaluator, reduce_on_circles
-from ..scene.implicit.base import HalfAngle
-from ..scene.implicit.floats import FloatArray
+from ..scene.implicit.algebra import reduce_on_circles
+from ..scene.implicit.base import FloatArray
 from ..system import symbol
 from .closed_form import Branch
+from .constructions import HalfAngle, StableEvaluator, algebra_of
 
 __all__ = ["StableBranch", "chunked", "output_forms", "Outputs"]
 
@@ -46,23 +46,27 @@ class StableBranch:
     """Vectorised float64 evaluation of every dyad and slider point of ``branch`` (dimensions at defaults)."""
 
     def __init__(self, compiled: Compiled, branch: Branch) -> None:
-        defaults = {symbol(n): sympy.Rational(str(v)) for n, v in compiled.parameter_values.items()}
+        self.defaults = {symbol(n): sympy.Rational(str(v)) for n, v in compiled.parameter_values.items()}
         self.compiled, self.branch = compiled, branch
         self.half_angles = compiled.circles
-        fix = lambda e: reduce_on_circles(sympy.sympify(e).xreplace(defaults), self.half_angles)  # noqa: E731
-        self.fix = fix
         self.inputs = [tuple(variables) for variables in compiled.system.inputs.values()]  # (c, s), or a length's
         self.arguments = [symbol(v) for variables in self.inputs for v in variables]
         arguments = list(self.arguments)
-        self.dyads: list[StableEvaluator] = []  # every implicit point's, in construction order
+        self.evaluators: list[StableEvaluator] = []  # every implicit point's, in construction order
         for spec in compiled.implicit:
             sigma = float(spec.sign(branch.labels[spec.point])) if spec.labels else 1.0
-            self.dyads.append(spec.stable_evaluator(fix, list(arguments), self.half_angles, sigma))
+            self.evaluators.append(algebra_of(spec).stable_evaluator(
+                fix=self.fix, arguments=list(arguments), half_angles=self.half_angles, sigma=sigma))
             arguments += [symbol(u) for u in spec.unknowns]
 
+    def fix(self, expr: sympy.Expr) -> sympy.Expr:
+        """``expr`` with every dimension at its default, reduced on the inputs' circles."""
+        return reduce_on_circles(sympy.sympify(expr).xreplace(self.defaults), self.half_angles)
+
     def __call__(self, *angles: npt.ArrayLike) -> dict[str, FloatArray]:
-        """Dyad coordinates (unknown -> array) from each input's angles in radians (a length as it is)."""
-        unknowns = [u for d in self.dyads for u in d.unknowns]
+        """Each implicit point's coordinates (unknown -> array) from each input's angles in radians
+        (a length as it is)."""
+        unknowns = [u for e in self.evaluators for u in e.unknowns]
         values = chunked(lambda *part: self._unknowns(part, unknowns), angles)
         return dict(zip(unknowns, values))
 
@@ -87,10 +91,10 @@ class StableBranch:
             values += [(1 - t) * (1 + t) * w, 2 * t * w]
             result.update(zip(variables, values[-2:]))
             half.append((t, w))
-        for dyad in self.dyads:
-            x, y = dyad(values, half)
+        for evaluator in self.evaluators:
+            x, y = evaluator(values, half)
             values += [x, y]
-            result.update(zip(dyad.unknowns, (x, y)))
+            result.update(zip(evaluator.unknowns, (x, y)))
         return result
 
     def kernel(self, outputs: Outputs | None = None, tangents: bool = False) -> Kernel:
@@ -107,7 +111,7 @@ class StableBranch:
         [1.5, 2.449489742783]
         """
         if outputs is None:
-            unknowns = [u for d in self.dyads for u in d.unknowns]
+            unknowns = [u for e in self.evaluators for u in e.unknowns]
             outputs = lambda variables: [variables[u] for u in unknowns]  # noqa: E731
         step = lambda *angles: list(outputs(self.variables(angles, tangents)))  # noqa: E731
         names = [f"{'t' if tangents else 'theta'}{k}" for k in range(len(self.inputs))]
@@ -129,14 +133,14 @@ def output_forms(stable: StableBranch, requested: Sequence[str] | None = None) -
     (['P_x', 'P_y', 'dist_O_P'], [2.0, 4.898979485566, 5.291502622129])
     """
     compiled, fix = stable.compiled, stable.fix
-    arguments = stable.arguments + [symbol(u) for d in stable.dyads for u in d.unknowns]
-    names, parts = [], []
+    arguments = stable.arguments + [symbol(u) for e in stable.evaluators for u in e.unknowns]
+    names: list[str] = []
+    parts: list[Callable[..., Sequence[FloatArray]]] = []
     for output in resolve_outputs(compiled.scene, requested or list(compiled.scene.outputs)):
         unknowns = list(compiled.outputs[output.name])
         if output.kind == "dist":  # offsets cancel symbolically before any rounding
             (px, py), (qx, qy) = (compiled.coordinates[p] for p in output.points)
-            span = sympy.lambdify(arguments, [fix(px - qx), fix(py - qy)], "numpy")
-            parts.append(lambda *values, span=span: [np.hypot(*span(*values))])
+            parts.append(_distance(sympy.lambdify(arguments, [fix(px - qx), fix(py - qy)], "numpy")))
         else:
             formulas = [fix(compiled.definitions.get(u, symbol(u))) for u in unknowns]
             parts.append(sympy.lambdify(arguments, formulas, "numpy"))
@@ -146,6 +150,13 @@ def output_forms(stable: StableBranch, requested: Sequence[str] | None = None) -
         values = [variables[str(a)] for a in arguments]
         return [v for part in parts for v in part(*values)]
     return names, forms
+
+
+def _distance(span: Callable[..., Sequence[FloatArray]]) -> Callable[..., list[FloatArray]]:
+    """``values -> [hypot(dx, dy)]`` from the exact differences ``(dx, dy)`` that ``span`` computes."""
+    def distance(*values: FloatArray) -> list[FloatArray]:
+        return [np.hypot(*span(*values))]
+    return distance
 
 
 def chunked(step: Callable[..., Sequence[FloatArray]], angles: Sequence[npt.ArrayLike]) -> list[FloatArray]:

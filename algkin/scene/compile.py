@@ -64,7 +64,8 @@ class Compiled:
     system: System
     # needed point -> (x, y) in system variables
     coordinates: FrozenDict[str, Point] = attrs.field(converter=frozen)
-    dyads: tuple[DyadSpec, ...]  # in construction order
+    # every implicit point's spec (dyads, sliders, second intersections), in construction order
+    implicit: tuple[ImplicitSpec, ...]
     indicators: tuple[Indicator, ...]  # one per dyad or slider
     # output unknown -> its value in other variables (sqrt for distances)
     definitions: FrozenDict[str, sympy.Expr] = attrs.field(converter=frozen)
@@ -73,8 +74,6 @@ class Compiled:
     # every scene parameter -> exact default
     parameter_values: FrozenDict[str, sympy.Expr] = attrs.field(converter=frozen)
     symbolic: tuple[str, ...]  # parameters kept symbolic
-    # dyads and sliders, in construction order
-    implicit: tuple[ImplicitSpec, ...] = ()
     # angle output name -> its unknowns
     angles: FrozenDict[str, AngleOutput] = attrs.field(factory=FrozenDict, converter=frozen)
     # dyad on two fixed bases -> why it never assembles (decided exactly; moving bases are not decided here)
@@ -238,8 +237,8 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
         equations=tuple(equations),
         nonnegative=tuple(nonnegative),
     )
-    return Compiled(scene, system, coords, tuple(builder.dyads.values()), tuple(builder.indicators), definitions,
-                    output_unknowns, defaults, symbolic, tuple(builder.implicit.values()), angles, never)
+    return Compiled(scene, system, coords, tuple(builder.implicit.values()), tuple(builder.indicators), definitions,
+                    output_unknowns, defaults, symbolic, angles, never)
 
 
 def _used_inputs(scene: Scene, points: Sequence[str]) -> dict[str, tuple[sympy.Symbol, ...]]:

@@ -3,7 +3,8 @@
 Each construction knows the points it refers to and how it turns into polynomial
 terms: an *explicit* point is a polynomial in earlier coordinates; an *implicit* point
 (dyad, slider) brings two unknowns, two equations, a branch indicator whose sign is
-the geometric label, and its compiled spec (``implicit``: closed form, stable floats, toggles).
+the geometric label, and its compiled spec (``implicit``: its geometry; its branch algebra
+is in ``algkin.branches.constructions``).
 """
 
 from collections.abc import Mapping
@@ -42,8 +43,7 @@ class Builder:
         self.unknowns: list[sympy.Symbol] = []
         self.equations: list[sympy.Expr] = []
         self.indicators: list[Indicator] = []
-        self.dyads: dict[str, DyadSpec] = {}
-        self.implicit: dict[str, ImplicitSpec] = {}  # every implicit point (dyads and sliders), in construction order
+        self.implicit: dict[str, ImplicitSpec] = {}  # every implicit point's spec, in construction order
         self.distances: list[tuple[frozenset[str], sympy.Expr]] = []  # |PQ| = l, as the constructions impose it
 
     def unknown(self, name: str) -> sympy.Symbol:
@@ -150,7 +150,7 @@ class Dyad:
         builder.indicators.append(Indicator(name, cross, "left", "right", self.branch))
         spec = DyadSpec(point=name, unknowns=(x.name, y.name), branch=self.branch, base_p=(px, py),
                         base_q=(qx, qy), lengths=self.lengths)
-        builder.dyads[name] = builder.implicit[name] = spec
+        builder.implicit[name] = spec
         return (x, y)
 
     def _mirror(self, name: str, met: list[str], coords: Mapping[str, Point], builder: Builder) -> Point:

@@ -18,7 +18,7 @@ theta, b = sympy.Symbol("theta", real=True), sympy.Symbol("b", real=True)
 
 @pytest.fixture(scope="module")
 def ab():
-    return algkin.load("arm-string", params=["b"]).dist("A", "B")
+    return algkin.load_quantities("arm-string", params=["b"]).dist("A", "B")
 
 
 def test_expression_is_the_seeds_norm(ab):
@@ -40,14 +40,14 @@ def test_extremum_reads_like_the_seed(ab):
 
 
 def test_fixed_dimensions_have_no_closed_form_in_them():
-    found = algkin.load("arm-string").output("AB").extremum()
+    found = algkin.load_quantities("arm-string").output("AB").extremum()
     assert found.closed_form is None
     assert float(found.minimum.input_deg) == pytest.approx(math.degrees(math.atan2(400, 80)), abs=1e-9)
 
 
 def test_points_are_not_scalars():
     with pytest.raises(algkin.AlgkinError, match="scalar"):
-        algkin.load("chebyshev-lambda").output("B").extremum()
+        algkin.load_quantities("chebyshev-lambda").output("B").extremum()
 
 
 def test_quantity_gives_both_spellings_of_the_input():
@@ -55,7 +55,7 @@ def test_quantity_gives_both_spellings_of_the_input():
     import algkin
     from algkin.system import symbol
 
-    AB = algkin.load("arm-string", params=["b"]).dist("A", "B")
+    AB = algkin.load_quantities("arm-string", params=["b"]).dist("A", "B")
     c, s, theta = symbol("c_theta"), symbol("s_theta"), AB.input
     assert AB.expr_cs.xreplace({c: sympy.cos(theta), s: sympy.sin(theta)}) == AB.expr
     assert AB.relation_cs.xreplace({c: sympy.cos(theta), s: sympy.sin(theta)}) == AB.relation
@@ -69,7 +69,7 @@ def test_an_array_of_inputs_is_nan_where_the_label_is_not_certified_never_a_bran
     """The triple rocker's dead centre by the law of cosines, |AD| = l + m: cos(theta) = -13.25/20.
     There, and past it where B cannot assemble, floats say nothing; inside, they are B by hand."""
     toggle = math.degrees(math.acos(-13.25 / 20))
-    bx = algkin.load("fourbar-nongrashof").x("B")
+    bx = algkin.load_quantities("fourbar-nongrashof").x("B")
     inside = [0.0, 90.0, toggle - 1e-3, -toggle + 1e-3]
     found = bx.at(theta=np.array([toggle, -toggle, toggle + 1e-9, 170.0, *inside]))
     assert np.all(np.isnan(found[:4]))

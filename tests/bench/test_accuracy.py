@@ -9,7 +9,7 @@ from hypothesis import assume, given, settings, strategies as st
 
 from algkin.bench.accuracy import REFERENCE, accuracy
 from algkin.scene.settings import with_values
-from algkin.scene.implicit.floats import heron_area
+from algkin.branches.constructions.floats import heron_area
 
 from algkin.scene import load_scene
 

@@ -10,7 +10,7 @@ from hypothesis import given, settings, strategies as st
 
 from algkin.branches import closed_forms
 from algkin.branches.stable import StableBranch
-from algkin.scene.implicit.floats import stable_quadratic
+from algkin.branches.constructions.floats import stable_quadratic
 from algkin.scene.load import catalog_names
 from algkin.evaluate import MPMATH, evaluate
 from algkin.scene import compile_scene, load_scene

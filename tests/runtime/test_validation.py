@@ -61,12 +61,12 @@ def test_hand_built_scene_with_int_parameters_works():
 def test_load_with_a_mapping_of_params_is_refused():
     # {"a": 1.5} silently made a symbolic and ignored 1.5.
     with pytest.raises(UsageError, match="params="):
-        algkin.load("fourbar", params={"a": 1.5})
+        algkin.load_quantities("fourbar", params={"a": 1.5})
 
 
 def test_every_error_is_an_algkin_error():
     for call in (lambda: algkin.derive("chebyshev-lambda", outputs="B"),
-                 lambda: algkin.load(None),
+                 lambda: algkin.load_quantities(None),
                  lambda: algkin.extremum("arm-string", "AB", ("a", "b"))):
         with pytest.raises(AlgkinError):
             call()

@@ -344,8 +344,8 @@ def test_derive_on_a_built_scene_is_derive_on_the_catalog_scene():
 def test_curve_and_load_take_a_built_scene():
     assert (algkin.curve(chebyshev_lambda(), "P").to_json()["curve"]
             == algkin.curve("chebyshev-lambda", "P").to_json()["curve"])
-    built = algkin.load(arm_string(), params=["b"]).dist("A", "B")
-    assert built.relation == algkin.load("arm-string", params=["b"]).dist("A", "B").relation
+    built = algkin.load_quantities(arm_string(), params=["b"]).dist("A", "B")
+    assert built.relation == algkin.load_quantities("arm-string", params=["b"]).dist("A", "B").relation
 
 
 # -- (4) the docs' example runs ---------------------------------------------------------------------

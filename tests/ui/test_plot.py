@@ -15,7 +15,7 @@ import matplotlib  # noqa: E402
 
 from algkin.bench.accuracy import Accuracy  # noqa: E402
 from algkin.errors import SceneError  # noqa: E402
-from algkin.analyses.quantities import load  # noqa: E402
+from algkin.analyses.quantities import load_quantities  # noqa: E402
 from algkin.ui.plot import accuracy_figure, minimum_figure, quantity_figure, save  # noqa: E402
 from algkin.scene import load_scene, load_scene_text  # noqa: E402
 
@@ -43,7 +43,7 @@ def test_bad_figure_requests_write_nothing(tmp_path):
 
 
 def test_minimum_is_marked_where_geometry_puts_it():
-    quantity = load("arm-string").output("AB")
+    quantity = load_quantities("arm-string").output("AB")
     backend = matplotlib.get_backend()
     figure = quantity_figure(quantity, quantity.extremum((0, 180)))
     curve, marker = figure.axes[0].lines
@@ -54,7 +54,7 @@ def test_minimum_is_marked_where_geometry_puts_it():
 
 
 def test_derivative_crosses_zero_at_the_minimiser():
-    quantity = load("arm-string").output("AB")
+    quantity = load_quantities("arm-string").output("AB")
     figure = quantity_figure(quantity, quantity.extremum((0, 180)), derivative=True)
     curve = figure.axes[0].lines[0]
     xs, ys = curve.get_xdata(), curve.get_ydata()
@@ -63,7 +63,7 @@ def test_derivative_crosses_zero_at_the_minimiser():
 
 
 def test_minimum_against_b_follows_brute_force():
-    quantity = load("arm-string", ["b"]).output("AB")
+    quantity = load_quantities("arm-string", ["b"]).output("AB")
     figure = minimum_figure(quantity, quantity.extremum((0, 90)), "b", -400, 400)
     curves = [line for line in figure.axes[0].lines if len(line.get_xdata()) > 2]
     assert len(curves) == 3  # the end-point region, the stationary region, the certified dots
@@ -92,7 +92,7 @@ def test_a_dimension_named_like_a_python_keyword_is_refused_in_one_line():
 
 def test_a_scene_name_is_shown_as_text_not_mathtext():
     name = r"arm $x_{$ \frac{1}{2}$ $"
-    quantity = load(attrs.evolve(load_scene("arm-string"), name=name)).output("AB")
+    quantity = load_quantities(attrs.evolve(load_scene("arm-string"), name=name)).output("AB")
     for figure in (quantity_figure(quantity, quantity.extremum((0, 180))), accuracy_figure(measured(name))):
         figure.savefig(io.BytesIO(), format="png")  # mathtext would raise here
         assert figure.axes[0].get_title().endswith(name)
@@ -166,7 +166,7 @@ def test_a_scene_without_an_input_is_refused_in_one_line_and_writes_nothing(tmp_
 
 
 def test_the_quantity_curve_is_the_closed_form_at_each_plotted_angle():
-    quantity = load("fourbar").dist("O", "P")  # a distance of a coupler point: the stabilised form drawn
+    quantity = load_quantities("fourbar").dist("O", "P")  # a distance of a coupler point: the stabilised form drawn
     found = quantity.extremum()
     x, y = quantity_figure(quantity, found, points=37).axes[0].lines[0].get_data()
     expected = [quantity.at(theta=float(a)) for a in x]  # the closed form in mpmath at 30 digits, one by one

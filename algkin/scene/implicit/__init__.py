@@ -1,9 +1,8 @@
-"""Implicit points compiled into specs that supply their own closed form, stable floats and toggles."""
+"""Implicit points compiled into specs that describe their geometry (their branch algebra: ``algkin.branches.constructions``)."""
 
-from .algebra import reduce_on_circles
-from .base import ImplicitSpec, StableEvaluator
+from .base import ImplicitSpec
 from .dyad import DyadSpec
 from .mirror import MirrorSpec
 from .slider import SliderSpec
 
-__all__ = ["ImplicitSpec", "StableEvaluator", "DyadSpec", "MirrorSpec", "SliderSpec", "reduce_on_circles"]
+__all__ = ["ImplicitSpec", "DyadSpec", "MirrorSpec", "SliderSpec"]

@@ -1,38 +1,27 @@
-"""What every implicit point's compiled spec supplies, so that nothing above dispatches on its kind.
+"""What every implicit point's compiled spec describes: its geometry, never its branch algebra.
 
 A construction that brings two unknowns (a dyad, a slider) compiles into a spec: its
-point's coordinates in system variables, and the behaviour branches and analyses ask of
-it (its closed form per label, a stable float evaluator, its toggle conditions, and for the
-certified reference its equations as written and a textbook float start). A new
-construction is one more subclass of ``ImplicitSpec``.
+point's coordinates in system variables, its assembly modes' labels, and for the certified
+reference its equations as written and a textbook float start. Its closed form per label,
+its toggle conditions and its stable float evaluator are branch algebra: they live in
+``algkin.branches.constructions``, dispatched on the spec's type. A new construction is one
+more subclass of ``ImplicitSpec`` here and one more module there.
 """
 
 from abc import ABC, abstractmethod
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import ClassVar, Protocol
+from typing import ClassVar
 
+import numpy as np
 import sympy
+from numpy.typing import NDArray
 
-from .algebra import Circles
-from .floats import FloatArray
-
-__all__ = ["ImplicitSpec", "StableEvaluator", "Point", "Fix", "HalfAngle", "FloatPoint"]
+__all__ = ["ImplicitSpec", "Point", "FloatArray", "FloatPoint"]
 
 Point = tuple[sympy.Expr, sympy.Expr]
-Fix = Callable[[sympy.Expr], sympy.Expr]  # dimensions at their defaults, reduced on the circles
-HalfAngle = tuple[FloatArray, FloatArray]  # an input's t = tan(theta/2) and w = 1/(1 + t**2)
+FloatArray = NDArray[np.float64]
 FloatPoint = tuple[FloatArray, FloatArray]
-
-
-class StableEvaluator(Protocol):
-    """One implicit point in float64, vectorised, without cancellation."""
-
-    unknowns: tuple[str, str]
-
-    def __call__(self, values: Sequence[FloatArray], half: Sequence[HalfAngle]) -> tuple[FloatArray, FloatArray]:
-        """``(x, y)`` from ``values`` (each input's c, s, then earlier points' x, y) and each input's ``half``."""
-        ...
 
 
 @dataclass(frozen=True)
@@ -54,29 +43,10 @@ class ImplicitSpec(ABC):
         x, y = (sympy.Symbol(u, real=True) for u in self.unknowns)
         return x, y
 
-    @abstractmethod
-    def closed_form(self, substitution: Mapping[sympy.Symbol, sympy.Expr], sigma: int,
-                    inputs: Circles) -> tuple[Point, sympy.Expr]:
-        """``((x, y), discriminant)`` on the mode ``sigma``, real where the discriminant is >= 0.
-
-        Earlier points' unknowns are replaced by ``substitution`` (their closed forms), and
-        polynomials are reduced on the ``inputs``' circles.
-        """
-
     def side(self) -> tuple[sympy.Expr, str] | None:
         """For a point without modes of its own: an expression in system variables that is > 0
         where it lies as its scene says, and what is wrong where it does not; else ``None``."""
         return None
-
-    @abstractmethod
-    def toggle_conditions(self) -> dict[str, sympy.Expr]:
-        """``{kind: expression}`` in system variables, each zero where the two modes meet."""
-
-    @abstractmethod
-    def stable_evaluator(self, fix: Fix, arguments: list[sympy.Symbol], half_angles: Circles,
-                         sigma: float) -> StableEvaluator:
-        """The float evaluator of the mode ``sigma``, its expressions taken through ``fix`` and
-        compiled in ``arguments`` (each input's c, s, then earlier points' unknowns)."""
 
     @abstractmethod
     def written(self) -> list[sympy.Expr]:

@@ -1,41 +1,19 @@
 """A dyad: the point at distance l1 from P and l2 from Q, left or right of P -> Q.
 
-Closed form. ``X = P + a*d + sigma*h*rot90(d)`` with ``d = Q - P``,
-``a = (l1**2 - l2**2 + |d|**2) / (2|d|**2)`` and ``h = sqrt(disc) / (2|d|**2)``, where
-``disc = ((l1+l2)**2 - |d|**2) * (|d|**2 - (l1-l2)**2)``. Since
-``cross(d, X - P) = sigma*h*|d|**2``, ``sigma = +1`` is the point left of P -> Q: the
-label is the geometry, not the sign in a quadratic formula. Both coordinates come from
-the one expression, so they are paired by construction.
-
-Toggles: *extended* where ``|PQ| = l1 + l2`` (both bars in line, pointing apart),
-*folded* where ``|PQ| = |l1 - l2|`` (in line, one over the other).
-
-Stable floats. ``X = M + a*d + sigma*h*rot90(d)`` with the midpoint ``M = (P + Q)/2`` and
-``d = Q - P`` taken *exactly, symbolically* (a mechanism far from the origin loses
-nothing: the offset cancels before any rounding), ``a = (l1**2 - l2**2) / (2|d|**2)`` and
-``h = sqrt(F+ * F-) / (2|d|**2)`` with ``F+ = (l1 + l2)**2 - |d|**2`` (zero when the dyad
-is extended) and ``F- = |d|**2 - (l1 - l2)**2`` (zero when folded). Where the triangle
-cannot close the result is nan. When ``|d|**2 = K + beta*c + gamma*s`` (a dyad on a crank
-and a ground pivot) each factor is ``q(t) * w`` with ``q`` a quadratic in the half-angle
-``t`` whose coefficients are exact rationals (``stable_quadratic``): near a dead centre of a
-near-change-point four-bar, ``(l1 + l2)**2 - |d|**2`` is then a sum of positive terms
-instead of the difference of two large ones. Other dyads use Kahan's sorted-Heron area,
-accurate to a few ulps even for needle triangles.
+``left`` is the point with ``cross(Q - P, X - P) > 0``: the label is the geometry, not the
+sign in a quadratic formula. Its closed form, toggles and stable floats:
+``algkin.branches.constructions.dyad``.
 """
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
 import sympy
 
-from .algebra import Circles, reducer, tidy_product, tidy_ratio
-from .base import Fix, FloatPoint, HalfAngle, ImplicitSpec, Point, StableEvaluator
-from .floats import FloatArray, heron_area, stable_quadratic
+from .base import FloatArray, FloatPoint, ImplicitSpec, Point
 
 __all__ = ["DyadSpec"]
-
-Factored = tuple[int, list[Callable[[FloatArray], FloatArray]]]  # an input, quadratics in its t
 
 
 @dataclass(frozen=True)
@@ -47,29 +25,6 @@ class DyadSpec(ImplicitSpec):
     lengths: tuple[sympy.Expr, sympy.Expr]
     labels = ("left", "right")
     never_meets = "the two circles never meet"
-
-    def closed_form(self, substitution: Mapping[sympy.Symbol, sympy.Expr], sigma: int,
-                    inputs: Circles) -> tuple[Point, sympy.Expr]:
-        reduce = reducer(substitution, inputs)
-        px, py = (reduce(v) for v in self.base_p)
-        qx, qy = (reduce(v) for v in self.base_q)
-        dx, dy = reduce(qx - px), reduce(qy - py)
-        dist2 = reduce(dx**2 + dy**2)
-        l1, l2 = self.lengths
-        along = tidy_ratio((l1**2 - l2**2 + dist2) / (2 * dist2))
-        disc = tidy_product(reduce((l1 + l2) ** 2 - dist2), reduce(dist2 - (l1 - l2) ** 2))
-        across = sigma * (sympy.sqrt(disc) / 2) / tidy_product(dist2)
-        return (px + along * dx - across * dy, py + along * dy + across * dx), disc
-
-    def toggle_conditions(self) -> dict[str, sympy.Expr]:
-        (px, py), (qx, qy) = self.base_p, self.base_q
-        span = (qx - px) ** 2 + (qy - py) ** 2
-        l1, l2 = self.lengths
-        return {"extended": (l1 + l2) ** 2 - span, "folded": span - (l1 - l2) ** 2}
-
-    def stable_evaluator(self, fix: Fix, arguments: list[sympy.Symbol], half_angles: Circles,
-                         sigma: float) -> StableEvaluator:
-        return _Stable(self, fix, arguments, half_angles, sigma)
 
     def written(self) -> list[sympy.Expr]:
         (px, py), (qx, qy), (l1, l2) = self.base_p, self.base_q, self.lengths
@@ -91,60 +46,3 @@ class DyadSpec(ImplicitSpec):
         across = sigma * np.sqrt(np.abs(l1 * l1 / d2 - along * along))
         return px + along * dx - across * dy, py + along * dy + across * dx
 
-
-class _Stable:
-    """One dyad's evaluator: its compiled base, its lengths, and the factored span if it has one."""
-
-    def __init__(self, dyad: DyadSpec, fix: Fix, arguments: list[sympy.Symbol], half_angles: Circles,
-                 sigma: float) -> None:
-        (px, py), (qx, qy) = dyad.base_p, dyad.base_q
-        base = [fix(e) for e in ((px + qx) / 2, (py + qy) / 2, qx - px, qy - py)]  # midpoint, exactly
-        self.unknowns = dyad.unknowns
-        self.base = sympy.lambdify(arguments, base, "numpy", cse=True)
-        l1, l2 = (fix(v) for v in dyad.lengths)
-        self.sigma = sigma
-        # a length input (an actuator, a string) moves a length: evaluated per sample then
-        self.moving = None if l1.is_number and l2.is_number else \
-            sympy.lambdify(arguments, [l1, l2, l1**2 - l2**2], "numpy")
-        self.l1, self.l2, self.lengths_term = (float(v) if v.is_number else 0.0 for v in (l1, l2, l1**2 - l2**2))
-        self.factored = _factored_span(fix(base[2] ** 2 + base[3] ** 2), l1, l2, half_angles) \
-            if self.moving is None else None
-
-    def __call__(self, values: Sequence[FloatArray], half: Sequence[HalfAngle]) -> tuple[FloatArray, FloatArray]:
-        mx, my, dx, dy = self.base(*values)
-        l1, l2, lengths_term = (self.l1, self.l2, self.lengths_term) if self.moving is None \
-            else self.moving(*values)
-        if self.factored is None:
-            span = np.hypot(dx, dy)
-            span2 = span * span
-            height = 2 * heron_area(l1, l2, span) / span2
-        else:
-            index, factors = self.factored
-            t, w = half[index]
-            extended, folded, span2 = (q(t) for q in factors)
-            with np.errstate(invalid="ignore"):  # w cancels from the height: two roundings fewer
-                height = np.sqrt(extended * folded) / (2 * span2)
-            span2 = span2 * w
-        # both scaled by 1/|d|: no square root of |d|**2 is taken and undone
-        across = self.sigma * height
-        if self.moving is None and not lengths_term:  # equal lengths: straight across from the midpoint
-            return mx - across * dy, my + across * dx
-        along = lengths_term / (2 * span2)
-        return mx + (along * dx - across * dy), my + (along * dy + across * dx)
-
-
-def _factored_span(span2: sympy.Expr, l1: sympy.Expr, l2: sympy.Expr,
-                   half_angles: Circles) -> Factored | None:
-    """``(input index, [F+, F-, |d|**2] as quadratics in t)`` if ``|d|**2 = K + beta c + gamma s``."""
-    for index, (c, s) in enumerate(half_angles):
-        if not span2.free_symbols <= {c, s}:
-            continue
-        poly = sympy.Poly(span2, c, s)
-        if poly.total_degree() > 1:
-            return None
-        k, beta, gamma = (poly.coeff_monomial(m) for m in (1, c, s))
-        # k + beta c + gamma s, times 1 + t**2:  (k - beta) t**2 + 2 gamma t + (k + beta)
-        quadratic = lambda k, beta, gamma: stable_quadratic(k - beta, 2 * gamma, k + beta)  # noqa: E731
-        return index, [quadratic((l1 + l2) ** 2 - k, -beta, -gamma),
-                       quadratic(k - (l1 - l2) ** 2, beta, gamma), quadratic(k, beta, gamma)]
-    return None

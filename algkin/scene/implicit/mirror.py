@@ -17,23 +17,17 @@ touch, where the two are one). ``X`` has no assembly mode of its own: its side o
 ``U -> V`` is the one ``Y`` is not on, and the scene's ``branch`` for it must say so
 (``side``, checked where the mechanism assembles).
 
->>> from sympy import Integer, sqrt
->>> spec = MirrorSpec("P", ("P_x", "P_y"), "right", base_p=(Integer(0), Integer(0)), base_q=(Integer(2), Integer(0)),
-...                   lengths=(sqrt(2), sqrt(2)), other="A", other_at=(Integer(1), Integer(1)))
->>> spec.closed_form({}, 1, [])[0]  # the circles of radius sqrt(2) about (0, 0) and (2, 0) meet at (1, 1)
-(1, -1)
+Its closed form and stable floats: ``algkin.branches.constructions.mirror``.
 """
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import sympy
 
-from .algebra import Circles, reducer, tidy_ratio
-from .base import Fix, FloatPoint, HalfAngle, ImplicitSpec, Point, StableEvaluator
-from .floats import FloatArray
+from .base import FloatArray, FloatPoint, ImplicitSpec, Point
 
-__all__ = ["MirrorSpec", "mirror_equations"]
+__all__ = ["MirrorSpec", "mirror_equations", "mirror_parts"]
 
 
 def mirror_equations(x: Point, y: Point, u: Point, v: Point,
@@ -59,20 +53,6 @@ class MirrorSpec(ImplicitSpec):
     labels = ()  # no mode of its own: it is the intersection ``other`` is not
     never_meets = "its two centres coincide"
 
-    def closed_form(self, substitution: Mapping[sympy.Symbol, sympy.Expr], sigma: int,
-                    inputs: Circles) -> tuple[Point, sympy.Expr]:
-        reduce = reducer(substitution, inputs)
-        (px, py), (qx, qy) = [[reduce(v) for v in point] for point in (self.base_p, self.base_q)]
-        ox, oy = (reduce(v) for v in self.other_at)
-        dx, dy = reduce(qx - px), reduce(qy - py)
-        span = reduce(dx**2 + dy**2)
-        l1, l2 = self.lengths
-        along = tidy_ratio((l1**2 - l2**2 + span) / span)  # twice the foot's fraction along d
-        return (px + along * dx - ox + px, py + along * dy - oy + py), span
-
-    def toggle_conditions(self) -> dict[str, sympy.Expr]:
-        return {}  # it meets ``other`` only where their circles touch: a toggle of the points they are built on
-
     def side(self) -> tuple[sympy.Expr, str]:
         """``(expression, message)``: the expression is > 0 where the point is on its scene's side of ``U -> V``."""
         (px, py), (qx, qy) = self.base_p, self.base_q
@@ -83,15 +63,11 @@ class MirrorSpec(ImplicitSpec):
                 f"the {self.branch} intersection of its circles is {self.other} itself; the other one is on the "
                 f"{other}: branch = \"{other}\"")
 
-    def stable_evaluator(self, fix: Fix, arguments: list[sympy.Symbol], half_angles: Circles,
-                         sigma: float) -> StableEvaluator:
-        return _Stable(self, fix, arguments)
-
     def written(self) -> list[sympy.Expr]:
         return mirror_equations(self.unknown_symbols(), self.other_at, self.base_p, self.base_q, self.lengths)
 
     def start_parts(self) -> tuple[sympy.Expr, ...]:
-        return _mirror_parts(self)
+        return mirror_parts(self)
 
     @staticmethod
     def start(parts: Sequence[FloatArray], sigma: float) -> FloatPoint:
@@ -100,7 +76,7 @@ class MirrorSpec(ImplicitSpec):
         return bx + along * dx, by + along * dy
 
 
-def _mirror_parts(mirror: MirrorSpec) -> tuple[sympy.Expr, ...]:
+def mirror_parts(mirror: MirrorSpec) -> tuple[sympy.Expr, ...]:
     """``(2 U - Y, d, a)``: ``X = 2 U - Y + a d`` with ``a = (l1**2 - l2**2) / |d|**2 + 1``."""
     (px, py), (qx, qy) = mirror.base_p, mirror.base_q
     ox, oy = mirror.other_at
@@ -108,15 +84,3 @@ def _mirror_parts(mirror: MirrorSpec) -> tuple[sympy.Expr, ...]:
     l1, l2 = mirror.lengths
     return 2 * px - ox, 2 * py - oy, dx, dy, (l1**2 - l2**2) / (dx**2 + dy**2) + 1
 
-
-class _Stable:
-    """The mirror image in floats: ``2 U + a d - Y`` with ``a`` from the lengths (no cancellation to fear
-    beyond the foot's, which the dyads it is built on already carry)."""
-
-    def __init__(self, mirror: MirrorSpec, fix: Fix, arguments: list[sympy.Symbol]) -> None:
-        self.unknowns = mirror.unknowns
-        self.formula = sympy.lambdify(arguments, [fix(e) for e in _mirror_parts(mirror)], "numpy", cse=True)
-
-    def __call__(self, values: Sequence[FloatArray], half: Sequence[HalfAngle]) -> tuple[FloatArray, FloatArray]:
-        bx, by, dx, dy, along = self.formula(*values)
-        return bx + along * dx, by + along * dy

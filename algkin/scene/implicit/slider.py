@@ -1,35 +1,18 @@
 """A slider: the point on the line through P with direction d at distance l from Q, ahead or behind.
 
 The direction is fixed (``direction = [dx, dy]``) or moves (``toward = R``: ``d = R - P``, in
-system variables when P or R moves); every formula below holds for either.
-
-Closed form. ``X = P + (dot(d, w) + sigma*sqrt(disc)) / |d|**2 * d`` with ``w = Q - P`` and
-``disc = l**2*|d|**2 - cross(d, w)**2``. Since ``dot(d, X - Q) = sigma*sqrt(disc)``,
-``sigma = +1`` is the point ahead of the foot of the perpendicular from Q, along d.
-
-Toggles: *tangent* where the circle about Q touches the line, ``cross(d, w)**2 = l**2 |d|**2``.
-
-Stable floats: the root of the quadratic that cannot cancel, the other from their product,
-``(|w|**2 - l**2) / |d|**2``. A fixed direction enters as float constants, a moving one
-(``d = R - P`` taken exactly, symbolically, before any rounding) is compiled with P and Q.
-
->>> from sympy import Integer, symbols
->>> c, s = symbols("c s", real=True)
->>> O = (Integer(0), Integer(0))
->>> spec = SliderSpec("B", ("B_x", "B_y"), "ahead", through=O, direction=(2*c, 2*s), center=O, length=Integer(3))
->>> spec.closed_form({}, 1, [(c, s)])[0]  # on the line through O toward the crank tip (2c, 2s), 3 from O
-(3*c, 3*s)
+system variables when P or R moves). ``ahead`` is the point with ``dot(d, X - Q) > 0``: ahead
+of the foot of the perpendicular from Q, along d. Its closed form, toggles and stable floats:
+``algkin.branches.constructions.slider``.
 """
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
 import sympy
 
-from .algebra import Circles, reducer, tidy_product, tidy_sqrt
-from .base import Fix, FloatPoint, HalfAngle, ImplicitSpec, Point, StableEvaluator
-from .floats import FloatArray
+from .base import FloatArray, FloatPoint, ImplicitSpec, Point
 
 __all__ = ["SliderSpec"]
 
@@ -45,32 +28,6 @@ class SliderSpec(ImplicitSpec):
     length: sympy.Expr
     labels = ("ahead", "behind")
     never_meets = "the circle never meets the slider's line"
-
-    def closed_form(self, substitution: Mapping[sympy.Symbol, sympy.Expr], sigma: int,
-                    inputs: Circles) -> tuple[Point, sympy.Expr]:
-        reduce = reducer(substitution, inputs)
-        px, py = (reduce(v) for v in self.through)
-        qx, qy = (reduce(v) for v in self.center)
-        dx, dy = (reduce(v) for v in self.direction)  # a moving direction in earlier points' closed forms
-        wx, wy = reduce(qx - px), reduce(qy - py)
-        norm2 = reduce(dx**2 + dy**2)
-        dot, cross = reduce(dx * wx + dy * wy), reduce(dx * wy - dy * wx)
-        norm = sympy.sqrt(norm2)
-        if norm.is_rational:  # a fixed direction, or one toward a crank tip from its centre: |d| = r  # a difference of squares: (l|d| - cross)(l|d| + cross)
-            disc = tidy_product(reduce(self.length * norm - cross), reduce(self.length * norm + cross))
-        else:
-            disc = tidy_product(reduce(self.length**2 * norm2 - cross**2))
-        along = (dot + sigma * tidy_sqrt(disc)) / norm2
-        return (px + along * dx, py + along * dy), disc
-
-    def toggle_conditions(self) -> dict[str, sympy.Expr]:
-        (px, py), (qx, qy), (dx, dy) = self.through, self.center, self.direction
-        cross = dx * (qy - py) - dy * (qx - px)
-        return {"tangent": cross**2 - self.length**2 * (dx**2 + dy**2)}
-
-    def stable_evaluator(self, fix: Fix, arguments: list[sympy.Symbol], half_angles: Circles,
-                         sigma: float) -> StableEvaluator:
-        return _Stable(self, fix, arguments, sigma)
 
     def written(self) -> list[sympy.Expr]:
         (px, py), (dx, dy), (qx, qy) = self.through, self.direction, self.center
@@ -92,43 +49,3 @@ class SliderSpec(ImplicitSpec):
         along = foot + sigma * half
         return px + along * dx, py + along * dy
 
-
-class _Stable:
-    """One slider's evaluator: the root of its quadratic that cannot cancel, the other from their product.
-
-    On the line ``X = P + a d`` at distance l from Q (``w = Q - P``):
-    ``a |d|**2 = dot(d, w) + sigma sqrt(disc)``, ``disc = l**2 |d|**2 - cross(d, w)**2``;
-    the two roots multiply to ``(|w|**2 - l**2) / |d|**2``.
-    ``|d|`` (``reach = l |d|``) is exact when ``|d|**2`` is a constant, even for a moving
-    direction (toward a crank tip from its centre); otherwise it is taken from the floats.
-    """
-
-    def __init__(self, slider: SliderSpec, fix: Fix, arguments: list[sympy.Symbol], sigma: float) -> None:
-        (px, py), (qx, qy) = slider.through, slider.center
-        dx, dy = (fix(v) for v in slider.direction)
-        self.fixed = dx.is_number and dy.is_number
-        base = [fix(e) for e in (px, py, qx - px, qy - py)] + ([] if self.fixed else [dx, dy])
-        self.unknowns = slider.unknowns
-        self.base = sympy.lambdify(arguments, base, "numpy", cse=True)
-        length, norm2 = fix(slider.length), fix(dx**2 + dy**2)
-        self.sigma, self.length, self.length2 = sigma, float(length), float(length**2)
-        self.dx, self.dy = (float(dx), float(dy)) if self.fixed else (0.0, 0.0)
-        self.norm2 = float(norm2) if norm2.is_number else None
-        self.reach = float(length * sympy.sqrt(norm2)) if norm2.is_number else None
-
-    def __call__(self, values: Sequence[FloatArray], half: Sequence[HalfAngle]) -> tuple[FloatArray, FloatArray]:
-        if self.fixed:
-            px, py, wx, wy = self.base(*values)
-            dx, dy = self.dx, self.dy
-        else:
-            px, py, wx, wy, dx, dy = self.base(*values)
-        norm2 = dx * dx + dy * dy if self.norm2 is None else self.norm2
-        reach = self.length * np.sqrt(norm2) if self.reach is None else self.reach
-        dot, cross = dx * wx + dy * wy, dx * wy - dy * wx
-        with np.errstate(invalid="ignore"):
-            root = np.sqrt((reach - cross) * (reach + cross))
-        larger = dot + np.copysign(root, dot)  # no cancellation: both terms of one sign
-        with np.errstate(divide="ignore", invalid="ignore"):
-            along = np.where(np.copysign(1.0, dot) == self.sigma, larger / norm2,
-                             (wx * wx + wy * wy - self.length2) / larger)
-        return px + along * dx, py + along * dy

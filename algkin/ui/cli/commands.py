@@ -163,11 +163,11 @@ def _cmd_plot(args):
     if args.against and args.derivative:
         raise UsageError("--against", args.against, "draws the minimum; leave out --derivative")
     against = _against(args.against) if args.against else None
-    from ...analyses.quantities import load
+    from ...analyses.quantities import load_quantities
     from ..plot import minimum_figure, quantity_figure, save
 
     params = [against[0]] if against else []
-    quantity = load(_scene_of(args, params), params).output(args.of)
+    quantity = load_quantities(_scene_of(args, params), params).output(args.of)
     found = quantity.extremum(_range(args.range) if args.range else None)
     figure = minimum_figure(quantity, found, *against) if against else \
         quantity_figure(quantity, found, derivative=args.derivative)

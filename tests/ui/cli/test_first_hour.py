@@ -62,7 +62,7 @@ def test_set_on_the_command_line_is_exact(tmp_path):
 
 
 def test_set_in_the_python_api():
-    arm = algkin.load("arm-string", params=["b"], set={"r": "1/2"})
+    arm = algkin.load_quantities("arm-string", params=["b"], set={"r": "1/2"})
     assert arm.scene.parameters["r"] == sympy.Rational(1, 2)
     b, theta = sympy.symbols("b theta", real=True)
     # |AB| with A = (1/2)(sin, -cos), B = (400, -b), by hand
@@ -83,7 +83,7 @@ def test_set_in_the_python_api():
 ])
 def test_set_refuses_bad_values_in_one_line(values, message):
     with pytest.raises(UsageError) as err:
-        algkin.load("arm-string", set=values)
+        algkin.load_quantities("arm-string", set=values)
     assert message in str(err.value) and "\n" not in str(err.value)
     assert str(err.value).startswith("set=")  # the Python argument, not the command line's --set
 

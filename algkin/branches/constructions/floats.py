@@ -4,11 +4,10 @@ from collections.abc import Callable
 
 import numpy as np
 import sympy
-from numpy.typing import NDArray
 
-__all__ = ["FloatArray", "heron_area", "stable_quadratic"]
+from ...scene.implicit.base import FloatArray
 
-FloatArray = NDArray[np.float64]
+__all__ = ["heron_area", "stable_quadratic"]
 
 
 def heron_area(a: FloatArray | float, b: FloatArray | float, c: FloatArray | float) -> FloatArray:
@@ -16,7 +15,7 @@ def heron_area(a: FloatArray | float, b: FloatArray | float, c: FloatArray | flo
     low, high = np.minimum(a, b), np.maximum(a, b)
     big, small = np.maximum(high, c), np.minimum(low, c)
     middle = np.maximum(low, np.minimum(high, c))  # the median, exactly (no arithmetic)
-    product = (big + (middle + small)) * (small - (big - middle)) * (small + (big - middle)) \
+    product: FloatArray = (big + (middle + small)) * (small - (big - middle)) * (small + (big - middle)) \
         * (big + (middle - small))
     with np.errstate(invalid="ignore"):
         return 0.25 * np.sqrt(product)
