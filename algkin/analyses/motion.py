@@ -17,38 +17,49 @@ nan in a sweep) and ``blocked`` names the points that fail.
 [('O', 'A'), ('A', 'B'), ('D', 'B'), ('A', 'P'), ('B', 'P')]
 """
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from typing import TypeVar
 
 import numpy as np
 import sympy
+from numpy.typing import ArrayLike, NDArray
 
 from ..branches import closed_forms
 from ..errors import UsageError
 from ..evaluate import NUMPY, evaluate
-from ..derivation.prepared import given
+from ..derivation.prepared import Prepared, given
 from ..scene import Scene, compile_scene, load_scene
+from ..scene.compile import Compiled
+from ..scene.implicit.base import FloatArray
+from ..scene.load import SceneLike
 from ..scene.constructions import Crank, Dyad, Fixed, Frame, Slider
 from ..system import input_values, symbol
 
-__all__ = ["Motion", "Pose", "symbolic_parameters"]
+__all__ = ["Motion", "Pose", "symbolic_parameters", "Trajectories"]
+
+_V = TypeVar("_V")
+XY = tuple[FloatArray, FloatArray]
+Trajectories = dict[str, XY]  # point -> its x and y over the samples (nan where it cannot assemble)
+Blocked = dict[str, NDArray[np.bool_]]  # point -> where its discriminant is negative
 
 
 @dataclass(frozen=True)
 class Pose:
     """One configuration: point -> (x, y) floats, or ``None`` everywhere if it cannot assemble."""
 
-    inputs: dict  # input name -> degrees
-    parameters: dict  # symbolic dimension -> value
+    inputs: dict[str, float]  # input name -> degrees (a length input: its length)
+    parameters: dict[str, float]  # symbolic dimension -> value
     branch: str
-    points: dict  # point -> (x, y) or None
-    blocked: tuple  # points whose discriminant is negative
+    points: dict[str, tuple[float, float] | None]
+    blocked: tuple[str, ...]  # points whose discriminant is negative
 
     @property
-    def assembles(self):
+    def assembles(self) -> bool:
         return not self.blocked
 
 
-def symbolic_parameters(scene, wanted=None):
+def symbolic_parameters(scene: Scene, wanted: Sequence[str] | None = None) -> tuple[tuple[str, ...], Compiled]:
     """The dimensions that can stay symbolic while the scene compiles to polynomials.
 
     By default every dimension is tried, and one under a division (the arm's ``g/r``) takes
@@ -64,7 +75,7 @@ def symbolic_parameters(scene, wanted=None):
             kept.remove(err.value)
 
 
-def _every_point(prepared):
+def _every_point(prepared: Prepared) -> Compiled:
     """The prepared scene's compiled system, which must hold every point's coordinates."""
     missing = [p for p in prepared.scene.points if p not in prepared.compiled.coordinates]
     if missing:
@@ -80,10 +91,10 @@ class Motion:
     its branches are taken as they are. Given a scene, the motion compiles it itself, with no
     check that it assembles (a drawing shows where it does not)."""
 
-    def __init__(self, scene, params=None):
-        prepared = given(scene, params=params)
-        if prepared is not None:
-            self.scene, self.compiled, self.branches = prepared.scene, _every_point(prepared), list(prepared.branches)
+    def __init__(self, scene: SceneLike | Prepared, params: Sequence[str] | None = None) -> None:
+        if isinstance(scene, Prepared):
+            given(scene, params=params)
+            self.scene, self.compiled, self.branches = scene.scene, _every_point(scene), list(scene.branches)
             self.params = self.compiled.system.parameters
         else:
             self.scene = scene if isinstance(scene, Scene) else load_scene(scene)
@@ -96,7 +107,7 @@ class Motion:
         self.defaults = {n: float(v) for n, v in self.compiled.parameter_values.items()}
         self.points = self._point_forms()
 
-    def _point_forms(self):
+    def _point_forms(self) -> list[dict[str, tuple[sympy.Expr, sympy.Expr]]]:
         """Per branch: point -> (x, y) sympy expressions in c_*, s_* and the symbolic dimensions."""
         forms = []
         for branch in self.branches:
@@ -106,11 +117,11 @@ class Motion:
         return forms
 
     @property
-    def selected(self):
+    def selected(self) -> int:
         """Index of the branch the scene file asks for."""
         return next(k for k, b in enumerate(self.branches) if b.selected)
 
-    def branch_index(self, label=None):
+    def branch_index(self, label: str | None = None) -> int:
         """Index of the branch called ``label`` (the scene's own when ``None``)."""
         if label is None:
             return self.selected
@@ -121,9 +132,9 @@ class Motion:
         raise UsageError("branch", label, f"not a branch of {self.scene.name} (branches: {known})")
 
     @property
-    def bars(self):
+    def bars(self) -> list[tuple[str, str]]:
         """Pairs of points joined by a rigid link, in construction order."""
-        bars = []
+        bars: list[tuple[str, str]] = []
         for name, c in self.scene.points.items():
             if isinstance(c, Crank):
                 bars.append((c.center, name))
@@ -136,28 +147,29 @@ class Motion:
         return bars
 
     @property
-    def ground(self):
+    def ground(self) -> list[str]:
         """Fixed points: pivots, guides and anchors (the arm's B)."""
         return [n for n, c in self.scene.points.items() if isinstance(c, Fixed)]
 
     @property
-    def guides(self):
+    def guides(self) -> list[tuple[str, str, tuple[float, float]]]:
         """The fixed line of each slider point: (slider point, a point on the line, direction); a line
         through two points is drawn as their bar (``bars``)."""
-        return [(n, c.through, tuple(float(d.xreplace(self._default_subs)) for d in c.direction))
+        at = self._default_subs
+        return [(n, c.through, (float(c.direction[0].xreplace(at)), float(c.direction[1].xreplace(at))))
                 for n, c in self.scene.points.items() if isinstance(c, Slider) and c.direction is not None]
 
     @property
-    def _default_subs(self):
+    def _default_subs(self) -> dict[sympy.Symbol, sympy.Expr]:
         return {symbol(n): v for n, v in self.compiled.parameter_values.items()}
 
     @property
-    def strings(self):
+    def strings(self) -> list[tuple[str, ...]]:
         """Distances the scene outputs (the arm's string AB): drawn as thin lines."""
         return [o.points for o in self.scene.outputs.values() if o.kind == "dist"]
 
     @property
-    def traced(self):
+    def traced(self) -> list[str]:
         """Moving points named by the scene's outputs: the ones whose trajectory is drawn.
 
         A point moves when its closed form involves an input on some branch: a frame point on
@@ -169,45 +181,48 @@ class Motion:
         named = [p for o in self.scene.outputs.values() for p in o.points]
         return [p for p in moving if p in named] or moving[-1:]
 
-    def values(self, inputs=None, parameters=None):
+    def values(self, inputs: Mapping[str, ArrayLike] | None = None,
+               parameters: Mapping[str, float] | None = None) -> dict[str, FloatArray]:
         """Variable name -> value for ``evaluate``: c_*, s_* of inputs in degrees (a length input
         as it is), dimensions."""
         inputs, parameters = self.complete(inputs, parameters)
-        values = {}
+        values: dict[str, FloatArray] = {}
         for name, variables in self.compiled.system.inputs.items():
             given = np.asarray(inputs[name], dtype=float)
             values.update(input_values(variables, np.radians(given) if self.inputs[name].is_angle else given))
         values.update({p: np.asarray(v, dtype=float) for p, v in parameters.items()})
         return values
 
-    def complete(self, inputs=None, parameters=None):
+    def complete(self, inputs: Mapping[str, _V] | None = None, parameters: Mapping[str, float] | None = None
+                 ) -> tuple[dict[str, _V | float], dict[str, float]]:
         """Inputs (degrees) and symbolic dimensions, missing ones at the range start / defaults."""
-        inputs = dict(inputs or {})
-        for name in inputs:
+        given: dict[str, _V | float] = dict(inputs or {})
+        for name in given:
             if name not in self.inputs:
                 raise UsageError("inputs", name, f"not an input of {self.scene.name} "
                                                   f"(inputs: {', '.join(self.inputs)})")
         for name, spec in self.inputs.items():
-            inputs.setdefault(name, spec.span[0])
+            given.setdefault(name, spec.span[0])
         parameters = dict(parameters or {})
         for name in parameters:
             if name not in self.params:
                 raise UsageError("parameters", name, f"not a symbolic dimension of {self.scene.name} "
                                                   f"(symbolic: {', '.join(self.params) or 'none'})")
-        return inputs, {p: parameters.get(p, self.defaults[p]) for p in self.params}
+        return given, {p: parameters.get(p, self.defaults[p]) for p in self.params}
 
-    def evaluate(self, branch, values):
+    def evaluate(self, branch: int, values: Mapping[str, FloatArray]) -> tuple[Trajectories, Blocked]:
         """Point -> (x, y) arrays, nan where the branch cannot assemble; and the blocked mask per point."""
         form = self.branches[branch]
         # beyond where the branch assembles a later discriminant holds an earlier one's sqrt (nan),
         # a mirror point the span of its coincident bases (a pole): neither is worth a warning
         with np.errstate(all="ignore"):
             blocked = {p: ~(np.asarray(evaluate(d, values, NUMPY)) >= 0) for p, d in form.discriminants.items()}
-            points = {p: tuple(np.asarray(evaluate(v, values, NUMPY), dtype=float) for v in xy)
-                      for p, xy in self.points[branch].items()}
+            floats = lambda v: np.asarray(evaluate(v, values, NUMPY), dtype=float)  # noqa: E731
+            points = {p: (floats(x), floats(y)) for p, (x, y) in self.points[branch].items()}
         return points, blocked
 
-    def at(self, inputs=None, parameters=None, branch=None):
+    def at(self, inputs: Mapping[str, float] | None = None, parameters: Mapping[str, float] | None = None,
+           branch: str | None = None) -> Pose:
         """The configuration at ``inputs`` (degrees) and ``parameters`` on branch ``branch``."""
         inputs, parameters = self.complete(inputs, parameters)
         k = self.branch_index(branch)
@@ -216,22 +231,26 @@ class Motion:
         shown = {p: None if failing else (float(x), float(y)) for p, (x, y) in points.items()}
         return Pose(inputs, parameters, self.branches[k].label, shown, failing)
 
-    def sweep(self, parameters=None, branch=None, samples=721, inputs=None):
+    def sweep(self, parameters: Mapping[str, float] | None = None, branch: str | None = None, samples: int = 721,
+              inputs: Mapping[str, float] | None = None) -> tuple[FloatArray, Trajectories]:
         """Angles swept over the first input's range (others fixed) and every point's arrays
         (nan where the branch cannot assemble)."""
-        return self._sweep(parameters, branch, samples, inputs)[:2]
+        angles, points, _, _, _ = self._sweep(parameters, branch, samples, inputs)
+        return angles, points
 
-    def _sweep(self, parameters, branch, samples, inputs, endpoint=True):
+    def _sweep(self, parameters: Mapping[str, float] | None, branch: str | None, samples: int,
+               inputs: Mapping[str, float] | None, endpoint: bool = True
+               ) -> tuple[FloatArray, Trajectories, Blocked, dict[str, float], dict[str, float]]:
         inputs, parameters = self.complete(inputs, parameters)
         name, spec = next(iter(self.inputs.items()))
         angles = np.linspace(*spec.span, samples, endpoint=endpoint)
         points, blocked = self.evaluate(self.branch_index(branch), self.values({**inputs, name: angles}, parameters))
         blocked = {p: np.broadcast_to(m, angles.shape) for p, m in blocked.items()}
         mask = np.any(list(blocked.values()), axis=0) if blocked else np.zeros(angles.shape, bool)
-        return angles, {p: tuple(np.where(mask, np.nan, np.broadcast_to(v, mask.shape)) for v in xy)
-                        for p, xy in points.items()}, blocked, inputs, parameters
+        cut = lambda v: np.where(mask, np.nan, np.broadcast_to(v, mask.shape))  # noqa: E731
+        return angles, {p: (cut(x), cut(y)) for p, (x, y) in points.items()}, blocked, inputs, parameters
 
-    def start(self, parameters=None, branch=None):
+    def start(self, parameters: Mapping[str, float] | None = None, branch: str | None = None) -> dict[str, float]:
         """Input angles a picture starts from: the first input near 7/20 of its range (the
         seed's 63 deg of a turn), moved to the nearest angle where the branch assembles."""
         name, spec = next(iter(self.inputs.items()))
@@ -242,7 +261,8 @@ class Motion:
         chosen = next((angles[k] for k in order if alive[k]), lo + 0.175 * (hi - lo))
         return {name: float(chosen), **{n: s.span[0] for n, s in list(self.inputs.items())[1:]}}
 
-    def poses(self, parameters=None, branch=None, samples=72, inputs=None):
+    def poses(self, parameters: Mapping[str, float] | None = None, branch: str | None = None, samples: int = 72,
+              inputs: Mapping[str, float] | None = None) -> list[Pose]:
         """``samples`` configurations turning the first input through its range, evaluated at once.
 
         A full turn leaves out its last angle (the first one again), so an animation loops.

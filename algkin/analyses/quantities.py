@@ -17,8 +17,9 @@ sqrt(b**2 + 160000) - 350
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from functools import cached_property
+from typing import TYPE_CHECKING, Any
 
 import mpmath
 import numpy as np
@@ -27,9 +28,18 @@ import sympy
 from ..errors import UsageError
 from ..evaluate import MPMATH, evaluate
 from ..runtime import validation
+from ..scene import Scene
+from ..scene.implicit.base import FloatArray
 from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
 from ..system import symbol
+
+if TYPE_CHECKING:
+    from ..branches.certify import Interval
+    from ..derivation.pipeline import Derivation
+    from ..derivation.prepared import Prepared
+    from .extremum import Extremum
+    from .extremum.critical import Problem
 
 __all__ = ["load_quantities", "Mechanism", "Quantity"]
 
@@ -38,78 +48,78 @@ def load_quantities(scene: SceneLike, params: Sequence[str] = (),
                     set: Values | None = None) -> Mechanism:  # noqa: A002 - ``set=`` is the public name (the command line's --set)
     """A mechanism from a catalog name, a path or a ``Scene``; ``params`` stay symbolic, and
     ``set`` gives others exact values in place of their defaults (``set={"b": "3/2"}``)."""
-    params = validation.names("params", params)
-    return Mechanism(with_values(as_scene(scene), set, params), params)
+    names = validation.names("params", params) or ()
+    return Mechanism(with_values(as_scene(scene), set, names), names)
 
 
 class Mechanism:
     """A scene with some dimensions symbolic: the place to ask for quantities."""
 
-    def __init__(self, scene, params=()):
+    def __init__(self, scene: Scene, params: Sequence[str] = ()) -> None:
         self.scene = scene
         self.params = tuple(params)
 
     @property
-    def parameters(self):
+    def parameters(self) -> dict[str, sympy.Expr]:
         """Every dimension with its default (symbolic ones too)."""
         return dict(self.scene.parameters)
 
-    def dist(self, p, q):
+    def dist(self, p: str, q: str) -> Quantity:
         """The distance from ``p`` to ``q`` as a ``Quantity``."""
         return Quantity(self, f"dist({p}, {q})")
 
-    def x(self, point):
+    def x(self, point: str) -> Quantity:
         return Quantity(self, f"{point}.x")
 
-    def y(self, point):
+    def y(self, point: str) -> Quantity:
         return Quantity(self, f"{point}.y")
 
-    def angle(self, p, q, r=None):
+    def angle(self, p: str, q: str, r: str | None = None) -> Quantity:
         """The direction of ``p`` -> ``q``, or with ``r`` the angle at ``q`` between ``qp`` and ``qr``
         (in [0, 180]), as a ``Quantity`` in degrees."""
         return Quantity(self, f"angle({p}, {q})" if r is None else f"angle({p}, {q}, {r})")
 
-    def output(self, name):
+    def output(self, name: str) -> Quantity:
         """A named output of the scene file (or any output text, e.g. ``"dist(A, B)"``)."""
         return Quantity(self, name)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"Mechanism({self.scene.name!r}, params={list(self.params)})"
 
 
 class Quantity:
     """A scalar on the motion: closed form in the input angle, its relation, its extremum."""
 
-    def __init__(self, mechanism, text):
+    def __init__(self, mechanism: Mechanism, text: str) -> None:
         self.mechanism = mechanism
         self.text = text
 
     @cached_property
-    def prepared(self):
+    def prepared(self) -> Prepared:
         """The mechanism's scene prepared for this quantity (``algkin.prepare``): its derivation's and extremum's."""
         from ..derivation.prepared import prepare
 
         return prepare(self.mechanism.scene, outputs=[self.text], params=self.mechanism.params)
 
     @cached_property
-    def derivation(self):
+    def derivation(self) -> Derivation:
         from ..derivation.pipeline import derive
 
         return derive(self.prepared, samples=0)
 
     @cached_property
-    def _problem(self):
+    def _problem(self) -> Problem:
         from .extremum import problem_for
 
         return problem_for(self.derivation, self.text, witnesses=self.prepared.witnesses)
 
     @property
-    def input(self):
+    def input(self) -> sympy.Symbol:
         """The input angle as a sympy symbol (radians, as in the seed)."""
         (name,) = self.derivation.compiled.system.inputs
         return symbol(name)
 
-    def _in_angle(self, expr):
+    def _in_angle(self, expr: sympy.Expr) -> sympy.Expr:
         line = self._problem.line
         if not line.is_angle:  # a length input is its own variable already
             return expr
@@ -122,49 +132,49 @@ class Quantity:
     # (what ``derive`` and every JSON document use, with ``c**2 + s**2 = 1`` implied: docs/scene-format.md).
 
     @property
-    def expr(self):
+    def expr(self) -> sympy.Expr:
         """The closed form on the scene's chosen branch, in the input angle (``cos(theta)``,
         ``sin(theta)``) and symbolic dimensions; an angle in degrees (``acos``/``atan`` of the
         closed form of the scalar standing for it, see ``algkin.analyses.extremum.angles``)."""
         return self._in_angle(self.expr_cs)
 
     @property
-    def expr_cs(self):
+    def expr_cs(self) -> sympy.Expr:
         """``expr`` in the system's symbols ``c_theta``, ``s_theta`` (as in ``derive``'s results)."""
         problem = self._problem
         return problem.closed if problem.scale is None else problem.scale.expr(problem.closed)
 
     @property
-    def degrees(self):
+    def degrees(self) -> bool:
         """Whether the quantity is an angle, its values in degrees."""
         return self._problem.scale is not None
 
     @property
-    def relation(self):
+    def relation(self) -> sympy.Expr:
         """The polynomial the quantity satisfies (= 0), in ``cos`` and ``sin`` of the input angle
         (an angle's: the polynomial of the scalar standing for it, ``symbol``)."""
         return self._in_angle(self._problem.eliminant)
 
     @property
-    def relation_cs(self):
+    def relation_cs(self) -> sympy.Expr:
         """``relation`` in the system's symbols ``c_theta``, ``s_theta`` (as in ``derive``'s eliminants)."""
         return self._problem.eliminant
 
     @property
-    def symbol(self):
+    def symbol(self) -> sympy.Symbol:
         return self._problem.u
 
     @property
-    def symbolic_dimensions(self):
+    def symbolic_dimensions(self) -> tuple[sympy.Symbol, ...]:
         """The symbolic dimensions (sympy symbols) the closed form is in, as the system orders them."""
         return self._problem.parameters
 
     @property
-    def derivative(self):
+    def derivative(self) -> sympy.Expr:
         """d(quantity)/d(input) in radians, from the closed form (for plots, not for extrema)."""
         return sympy.diff(self.expr, self.input)
 
-    def at(self, **values):
+    def at(self, **values: Any) -> float | FloatArray:
         """The quantity at an input in degrees (and dimensions), e.g. ``at(theta=90, b=80)``.
 
         One input: the closed form in mpmath at 30 digits. An array of inputs (not of an angle
@@ -190,11 +200,12 @@ class Quantity:
             value = evaluate(problem.closed, numbers, MPMATH)
             return float(value if problem.scale is None else problem.scale.degrees(value))
 
-    def _sweep(self, name, values):
+    def _sweep(self, name: str, values: dict[str, Any]) -> FloatArray:
         """``at`` over an array of inputs: the stabilised kernel at these dimensions (made once per set)."""
         settings = {p.name: str(values[p.name]) for p in self._problem.parameters if p.name in values}
         key = tuple(sorted(settings.items()))
-        kernels = self.__dict__.setdefault("_kernels", {})
+        kernels: dict[tuple[tuple[str, str], ...], tuple[Callable[..., Sequence[FloatArray]], list[Interval] | None]] = \
+            self.__dict__.setdefault("_kernels", {})
         if key not in kernels:
             from ..branches import closed_forms
             from ..branches.stable import StableBranch, output_forms
@@ -216,11 +227,12 @@ class Quantity:
             found = np.where(uncertified(intervals, given, turning), np.nan, found)
         return found
 
-    def extremum(self, range=None, largest=False):  # noqa: A002 (the seed's word)
+    def extremum(self, range: tuple[float | str, float | str] | None = None,  # noqa: A002 (the seed's word)
+                 largest: bool = False) -> Extremum:
         """Critical points, minimum and maximum; closed forms in the symbolic dimensions."""
         from .extremum import extremum_of
 
         return extremum_of(self.derivation, self.text, range, largest, witnesses=self.prepared.witnesses)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"Quantity({self.text!r} of {self.mechanism.scene.name})"

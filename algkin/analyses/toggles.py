@@ -19,19 +19,23 @@ points apart at every real root), and reported as dropped.
 ([], 'crank-rocker')
 """
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from typing import Any, TypedDict
 
 import flint
 import sympy
 
-from ..derivation.prepared import given, prepared_from
+from ..branches import Branch
+from ..derivation.prepared import Prepared, given, prepared_from
 from ..branches.constructions import algebra_of
 from ..eliminate import eliminate
 from ..errors import UsageError
 from ..evaluate import ARB, evaluate
-from ..scene import Compiled, compile_scene, load_scene
-from ..scene.constructions import Crank, Fixed
+from ..scene import Compiled, compile_scene
+from ..scene.constructions import Crank, Dyad, Fixed
 from ..scene.implicit import DyadSpec, ImplicitSpec
+from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
 from ..system import input_values, symbol
 from ..system.angles import Parametrisation
@@ -41,15 +45,28 @@ __all__ = ["toggles", "Toggle", "Toggles", "grashof", "single_input"]
 ROOT_BITS = 128
 
 
+# A four-bar's Grashof class, its bars' lengths and the margin that decides it (as text);
+# "class" is a keyword: the functional form
+Grashof = TypedDict("Grashof", {"class": str, "bars": dict[str, str], "margin": str, "rule": str})
+
+
+class Artefact(TypedDict):
+    """A factor of an eliminant's discriminant that is no toggle, and why (certified)."""
+
+    eliminant: str
+    factor: str
+    why: str
+
+
 @dataclass
 class Toggle:
     input_deg: float  # a length input's value, for a length
-    enclosure: object  # arb ball, degrees (or the length)
+    enclosure: flint.arb  # degrees (or the length)
     point: str  # the dyad or slider
     kind: str  # extended / folded (dyad), tangent (slider)
     angle: bool = True  # False: the input is a length, its keys have no _deg
 
-    def to_json(self):
+    def to_json(self) -> dict[str, object]:
         suffix = "_deg" if self.angle else "_length"
         return {f"input{suffix}": self.input_deg, f"enclosure{suffix}": self.enclosure.str(20), "point": self.point,
                 "kind": self.kind, "certified": True}
@@ -59,19 +76,19 @@ class Toggle:
 class Toggles:
     scene: str
     input: str
-    range: tuple
-    toggles: list
-    grashof: dict = None
-    artefacts: list = field(default_factory=list)  # dropped discriminant factors, with why
+    range: tuple[float, float]
+    toggles: list[Toggle]
+    grashof: Grashof | None = None
+    artefacts: list[Artefact] = field(default_factory=list)  # dropped discriminant factors, with why
     unit: str = "deg"  # the range's and the toggles' unit: "deg", or "length" for a length input
 
-    def to_json(self):
+    def to_json(self) -> dict[str, object]:
         return {"scene": self.scene, "input": self.input, "unit": self.unit, "range": list(self.range),
                 "toggles": [t.to_json() for t in self.toggles], "grashof": self.grashof,
                 "artefacts": self.artefacts}
 
 
-def _defaults(compiled):
+def _defaults(compiled: Compiled) -> dict[sympy.Symbol, sympy.Expr]:
     return {symbol(n): compiled.parameter_values[n] for n in compiled.system.parameters}
 
 
@@ -82,7 +99,7 @@ def toggle_conditions(compiled: Compiled, spec: ImplicitSpec) -> dict[str, sympy
             for kind, e in algebra_of(spec).toggle_conditions().items()}
 
 
-def _eliminate_earlier(compiled, condition, spec):
+def _eliminate_earlier(compiled: Compiled, condition: sympy.Expr, spec: ImplicitSpec) -> sympy.Expr:
     """The condition with earlier points' unknowns eliminated (a polynomial in c, s): those it
     names, and every unknown their equations bring in (a slider on a horizontal guide names
     only its rod end's y, whose equations hold its x too)."""
@@ -104,7 +121,7 @@ def _eliminate_earlier(compiled, condition, spec):
     return eliminate([condition] + equations, sorted(earlier), list(variables), method="resultant").polynomial
 
 
-def single_input(compiled, what="toggles"):
+def single_input(compiled: Compiled, what: str = "toggles") -> tuple[str, Parametrisation]:
     """``(name, parametrisation)`` of the scene's one input (``system.angles.Parametrisation``,
     in ``t_<name>`` for an angle); a usage error naming ``what`` if it has more."""
     if len(compiled.system.inputs) != 1:
@@ -114,7 +131,8 @@ def single_input(compiled, what="toggles"):
     return name, Parametrisation(tuple(symbol(v) for v in variables), t)
 
 
-def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name (the command line's --set)
+def toggles(scene: SceneLike, artefacts: bool = True,
+            set: Values | None = None) -> Toggles:  # noqa: A002 - the public name (the command line's --set)
     """Every toggle of every dyad and slider of ``scene`` over its input range, certified.
 
     With ``artefacts`` the eliminants are also derived, to report which factors of their
@@ -122,7 +140,7 @@ def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name (t
     ``scene`` may be a ``Prepared`` one (``prepare``) with every dyad and slider among its outputs.
     """
     prepared = given(scene, set=set)
-    scene = prepared.scene if prepared else with_values(scene if not isinstance(scene, str) else load_scene(scene), set)
+    scene = prepared.scene if prepared else with_values(as_scene(scene), set)  # a name, a path (str or pathlib) or a Scene
     implicit = [n for n, p in scene.points.items() if p.labels]  # the points with assembly modes
     if not implicit:
         raise UsageError("scene", scene.name, "has no dyad or slider, so no assembly modes to meet")
@@ -132,7 +150,7 @@ def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name (t
     compiled = prepared.compiled if prepared else compile_scene(scene, implicit)
     name, line = single_input(compiled)
     lo, hi = scene.inputs[name].span
-    found = []
+    found: list[Toggle] = []
     with flint.ctx.workprec(ROOT_BITS):
         for spec in compiled.implicit:
             for kind, condition in toggle_conditions(compiled, spec).items():
@@ -146,7 +164,7 @@ def toggles(scene, artefacts=True, set=None):  # noqa: A002 - the public name (t
     return Toggles(scene.name, name, (lo, hi), found, grashof(compiled), dropped, unit)
 
 
-def _artefacts(prepared, line):
+def _artefacts(prepared: Prepared, line: Parametrisation) -> list[Artefact]:
     """Factors of the eliminants' discriminants that are not toggles, with the certificate."""
     from ..derivation.pipeline import derive
 
@@ -155,7 +173,7 @@ def _artefacts(prepared, line):
     geometric = [line.numerator(cond) for d in compiled.implicit
                  for cond in toggle_conditions(compiled, d).values()]
     t = line.t
-    dropped = []
+    dropped: list[Artefact] = []
     for unknown, elimination in derived.eliminations.items():
         u = symbol(unknown)
         if sympy.degree(elimination.polynomial, u) < 2:
@@ -170,11 +188,11 @@ def _artefacts(prepared, line):
     return dropped
 
 
-def _why_not_a_toggle(compiled, branches, factor, line):
+def _why_not_a_toggle(compiled: Compiled, branches: Sequence[Branch], factor: sympy.Expr, line: Parametrisation) -> str:
     """At every real root of ``factor``, ball arithmetic shows the modes apart or not assembled."""
     defaults = {k.name: ARB.number(int(sympy.Rational(v).p), int(sympy.Rational(v).q))
                 for k, v in _defaults(compiled).items()}
-    reasons = set()
+    reasons: set[str] = set()
     names = tuple(v.name for v in line.variables)
     for ball in line.roots(factor):
         values = dict(defaults, **input_values(names, ball * flint.arb.pi() / 180 if line.is_angle else ball))
@@ -185,7 +203,7 @@ def _why_not_a_toggle(compiled, branches, factor, line):
     return " / ".join(sorted(reasons)) + " (certified)" if reasons else "no real root (certified)"
 
 
-def _separated(compiled, branches, values):
+def _separated(compiled: Compiled, branches: Sequence[Branch], values: Mapping[str, Any]) -> str | None:
     signs = [[evaluate(d, values, ARB) for d in b.discriminants.values()] for b in branches]
     if any(not (all(d > 0 for d in ds) or any(d < 0 for d in ds)) for ds in signs):
         return None  # a branch at its own dead centre, or undecided
@@ -207,15 +225,16 @@ def _separated(compiled, branches, values):
     return "the modes share this coordinate but are apart"
 
 
-def _square(ball):
+def _square(ball: flint.arb) -> flint.arb:
     return ball * ball
 
 
-def grashof(compiled):
+def grashof(compiled: Compiled) -> Grashof | None:
     """The Grashof class of a four-bar (crank about a ground pivot, dyad on crank tip and ground)."""
     scene = compiled.scene
     for dyad in (spec for spec in compiled.implicit if isinstance(spec, DyadSpec)):
         construction = scene.points[dyad.point]
+        assert isinstance(construction, Dyad), "a dyad spec's point is a dyad"
         first, second = (scene.points[p] for p in construction.bases)
         lengths = construction.lengths
         if isinstance(first, Fixed) and isinstance(second, Crank):
@@ -225,9 +244,10 @@ def grashof(compiled):
     return None
 
 
-def _classify(compiled, lengths, crank, ground_pivot):
+def _classify(compiled: Compiled, lengths: Sequence[sympy.Expr], crank: Crank, ground_pivot: Fixed) -> Grashof:
     values = {symbol(n): v for n, v in compiled.parameter_values.items()}
     pivot = compiled.scene.points[crank.center]
+    assert isinstance(pivot, Fixed), "grashof checked the crank's centre is fixed"
     # Defaults are exact already; nsimplify would trade a large rational for a "simpler" radical.
     exact = lambda e: sympy.sympify(e).xreplace(values)  # noqa: E731
     ground = sympy.sqrt((exact(ground_pivot.x) - exact(pivot.x)) ** 2 + (exact(ground_pivot.y) - exact(pivot.y)) ** 2)

@@ -14,16 +14,26 @@ method over ``flint``) on the same problem: above 1, algkin is faster.
 
 import os
 import platform
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
-from ..eliminate import BACKENDS, DEFAULT_METHOD, METHODS
+import flint
+import sympy
+
+from ..derivation.tasks import EliminationTask
+from ..eliminate import BACKENDS, DEFAULT_METHOD, METHODS, Elimination
 from ..runtime import progress
 from ..runtime.budget import time_budget
 from . import specialise
 from .agree import PASSING, Agreement, Verdict, agreement, from_sympy, portable, rebuild
 from .measure import measure
-from .problems import PROBLEMS, build, problem_names
+from .problems import PROBLEMS, Problem, build, problem_names
 from .row import BenchRow
+from .specialise import Specialisation
+
+if TYPE_CHECKING:
+    from .peers import PeerProblem
 
 __all__ = ["bench", "BenchReport", "BenchRow", "PROBLEMS", "problem_names", "machine"]
 
@@ -44,11 +54,8 @@ class BenchReport:
         return {"rows": [row.to_json() for row in self.rows], "machine": self.machine}
 
 
-def machine():
+def machine() -> dict[str, object]:
     """What the run was measured on."""
-    import flint
-    import sympy
-
     from .engines import found_peers
 
     model = next((line.split(":", 1)[1].strip() for line in _cpuinfo() if line.startswith("model name")), None)
@@ -57,7 +64,7 @@ def machine():
             "python-flint": flint.__version__, "sympy": sympy.__version__, "peers": found_peers()}
 
 
-def _cpuinfo():
+def _cpuinfo() -> list[str]:
     try:
         with open("/proc/cpuinfo") as f:
             return f.read().splitlines()
@@ -65,7 +72,9 @@ def _cpuinfo():
         return []
 
 
-def bench(problems=None, methods=None, backends=None, budget=60.0, peers=True, rounds=ROUNDS):
+def bench(problems: Sequence[str] | None = None, methods: Sequence[str] | None = None,
+          backends: Sequence[str] | None = None, budget: float = 60.0, peers: bool = True,
+          rounds: int = ROUNDS) -> BenchReport:
     """Time every method x backend (and peers) on every problem; a ``BenchReport``. Within
     ``algkin.runtime.progress.shown()``, the row being measured shows, and the count of rows measured once."""
     from .engines import PEERS
@@ -73,17 +82,18 @@ def bench(problems=None, methods=None, backends=None, budget=60.0, peers=True, r
     time_budget(budget, "budget")  # a row's deadline, so a week at most (past that the timer overflows)
     names = problems or problem_names()
     pairs = sorted({(m, b) for m in methods or METHODS for b in backends or BACKENDS} | {DEFAULT})
-    rows = []
+    rows: list[BenchRow] = []
     with progress.counting(len(names) * (len(pairs) + 1 + (len(PEERS) if peers else 0)), "rows"):
         for name in names:
             rows += _problem_rows(build(name), pairs, budget, peers, rounds)
     return BenchReport(rows, machine())
 
 
-def _problem_rows(problem, pairs, budget, peers, rounds):
+def _problem_rows(problem: Problem, pairs: Sequence[tuple[str, str]], budget: float, peers: bool,
+                  rounds: int) -> list[BenchRow]:
     task = problem.task
     side = [e for e in task.equations if not ({str(v) for v in e.free_symbols} & set(task.eliminate))]
-    results = {}
+    results: dict[tuple[str, str], BenchRow] = {}
     for method, backend in pairs:
         progress.stage(f"{problem.name}: {method} / {backend}")
         seconds, summary, note = measure(lambda m=method, b=backend: task.run(m, b), _summary, budget)
@@ -104,15 +114,15 @@ def _problem_rows(problem, pairs, budget, peers, rounds):
     return rows
 
 
-def _verdicts(task, rows, side, budget):
+def _verdicts(task: EliminationTask, rows: list[BenchRow], side: Sequence[sympy.Expr], budget: float) -> None:
     """Set each row's ``agrees`` (its verdict's kind) and add what it was checked against
     to its note: the reference row, then, unless that is the Gröbner basis over flint, the
     fresh eliminations at random rational specialisations, which every row must also pass."""
     keep = list(task.keep)
     reference, name = _reference(rows)
-    target = None if reference is None else rebuild(reference.form, keep)
+    target = None if reference is None or reference.form is None else rebuild(reference.form, keep)
     flint_side = [from_sympy(e, keep) for e in side]
-    found = []
+    found: list[Specialisation] = []
     if name != "Gröbner basis over flint":
         progress.stage(f"{rows[0].problem}: fresh eliminations at random rational specialisations")
         found = [specialise.fresh(task, values, budget)
@@ -132,7 +142,7 @@ def _verdicts(task, rows, side, budget):
         row.note = "; ".join(filter(None, [row.note, f"vs {name}" if name else None, *said]))
 
 
-def _reference(rows):
+def _reference(rows: Sequence[BenchRow]) -> tuple[BenchRow, str] | tuple[None, None]:
     """``(row, what it is)``: the Gröbner basis over flint if it finished, else the first
     peer elimination ideal that did, else ``(None, None)``: never algkin's default."""
     finished = {(r.method, r.backend): r for r in rows if r.form is not None}
@@ -142,32 +152,34 @@ def _reference(rows):
     return (finished[peer, "peer"], peer) if peer else (None, None)
 
 
-def _summary(elimination):
+def _summary(elimination: Elimination[Any]) -> dict[str, Any]:
+    # measured in the child, where the elimination still holds its backend's polynomials
+    assert elimination.engine is not None and elimination.raw is not None
     return {"degree": elimination.degree, "terms": elimination.terms, "bits": elimination.bits,
             "form": portable(elimination.engine, elimination.raw)}
 
 
-def _end_summary(result, unknown):
+def _end_summary(result: object, unknown: str) -> dict[str, Any]:
     """The figures of the command's eliminant for ``unknown`` (a curve's, or a derivation's)."""
     elimination = getattr(result, "elimination", None) or getattr(result, "eliminations", {}).get(unknown)
     return _summary(elimination) if elimination is not None else {}
 
 
-def _peer_problem(problem):
+def _peer_problem(problem: Problem) -> "PeerProblem":
     from .peers import PeerProblem
 
     task = problem.task
     return PeerProblem(problem.name, tuple(str(e) for e in task.equations), task.eliminate, task.keep)
 
 
-def _rounds(problem, rows, budget, rounds):
+def _rounds(problem: Problem, rows: list[BenchRow], budget: float, rounds: int) -> None:
     """Measure every row that finished within ``ROUND_CAP`` again, in turn, ``rounds`` times
     in all; each keeps its least time. The machine's speed drifts over seconds (a shared
     virtual machine: up to 2x), and a ratio of two rows is only fair when each had its
     chance at the same speed."""
     from .engines import PEERS
 
-    def again(row):
+    def again(row: BenchRow) -> float | None:
         if row.backend == "peer":
             return PEERS[row.method](_peer_problem(problem), budget).seconds_per_run
         run = problem.end_to_end if row.method == "default path, end to end" else \
@@ -183,13 +195,13 @@ def _rounds(problem, rows, budget, rounds):
         row.note = "; ".join(filter(None, [row.note, f"best of {rounds} rounds"]))
 
 
-def _peer_rows(problem, budget):
+def _peer_rows(problem: Problem, budget: float) -> list[BenchRow]:
     from .engines import PEERS
     from .peers import parse, polynomial_ring
 
     task = problem.task
     peer_problem = _peer_problem(problem)
-    rows = []
+    rows: list[BenchRow] = []
     for engine, run in PEERS.items():
         progress.stage(f"{problem.name}: {engine}")
         result = run(peer_problem, budget)

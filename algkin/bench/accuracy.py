@@ -39,13 +39,16 @@ cannot certify (on the side of a toggle where the branch does not assemble) is l
 
 import functools
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any, TypedDict, TypeVar
 
 import attrs
 import numpy as np
 import sympy
+from numpy.typing import NDArray
 
-from ..branches import closed_forms
+from ..branches import Branch, closed_forms
 from ..branches.stable import StableBranch, output_forms
 from ..derivation.assembles import certify_labels
 from ..derivation.pipeline import derive
@@ -53,12 +56,16 @@ from ..errors import UsageError
 from ..evaluate.fused import numba_available
 from ..runtime import progress, validation
 from ..runtime.budget import current
-from ..scene import compile_scene
+from ..scene import Scene, compile_scene
+from ..scene.compile import Compiled
 from ..scene.constructions import Dyad, Fixed
-from ..scene.load import as_scene
+from ..scene.implicit.base import ImplicitSpec
+from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
 from ..system import symbol
-from .reference import BITS, Reference
+from .reference import BITS, Floats, Reference
+
+_T = TypeVar("_T")
 
 __all__ = ["accuracy", "Accuracy", "Subject", "sample_cases", "STRATEGIES", "EPS", "REFERENCE"]
 
@@ -72,13 +79,32 @@ NEWTON_STEPS = 40  # the numeric strategy's most steps: continuation starts are 
 SOLVED = 2.0**-26  # its last step, relative to the root's size, when it counts as converged
 
 
+class _Figures(TypedDict):
+    strategy: str
+    case: str
+    samples: int
+    ns_per_sample: float
+    max_abs_error: float
+    max_rel_error: float
+    condition: float
+    error_over_kappa_eps: float
+
+
+class AccuracyRow(_Figures, total=False):
+    """One strategy on one case: its speed and errors; why, where it needs saying; the
+    numeric strategy's samples it did not solve."""
+
+    note: str
+    unsolved: int
+
+
 @dataclass
 class Accuracy:
     scene: str
     point: str  # the output measured
-    rows: list
+    rows: list[AccuracyRow]
 
-    def to_json(self):
+    def to_json(self) -> dict[str, object]:
         return {"scene": self.scene, "point": self.point, "rows": self.rows, "reference": REFERENCE, "eps": EPS}
 
 
@@ -87,7 +113,7 @@ class Subject:
     the construction whose toggles matter (``dyad``) and each strategy's evaluator (``stable``,
     ``reference``, ``newton``, ``solved``)."""
 
-    def __init__(self, scene, of):
+    def __init__(self, scene: Scene, of: str) -> None:
         self.compiled = compile_scene(scene, [of])
         self.branch = next(b for b in closed_forms(self.compiled) if b.selected)
         (self.c, self.s), = self.compiled.system.inputs.values()
@@ -108,12 +134,12 @@ class Subject:
 class _StableOutput:
     """The stabilised form of the output: StableBranch's implicit points, explicit ones on top."""
 
-    def __init__(self, compiled, branch, of):
+    def __init__(self, compiled: Compiled, branch: Branch, of: str) -> None:
         self.branch = StableBranch(compiled, branch)
         self.unknowns, forms = output_forms(self.branch, [of])
         self.kernel = self.branch.kernel(forms)
 
-    def __call__(self, theta, engine="numpy"):
+    def __call__(self, theta: Floats, engine: str = "numpy") -> Floats:
         """The output's coordinates (rows) per sample: numpy's form, or with ``engine="compiled"``
         the same operations fused by numba (numpy's again where numba is not installed)."""
         return np.array(self.kernel(theta, engine=engine))
@@ -128,7 +154,7 @@ class _Newton:
     the label's sign (in float) there; otherwise it is NaN: unconverged or on the other branch.
     """
 
-    def __init__(self, reference):
+    def __init__(self, reference: Reference) -> None:
         arguments = reference.unknowns + list(reference.cs)
         self.f = sympy.lambdify(arguments, reference.equations, "numpy")
         self.j = sympy.lambdify(arguments, sympy.Matrix(reference.equations).jacobian(reference.unknowns).tolist(),
@@ -137,7 +163,7 @@ class _Newton:
         self.expected = reference.expected[:, None]
         self.start, self.outputs = reference.start, reference.outputs
 
-    def __call__(self, theta):
+    def __call__(self, theta: Floats) -> Floats:
         """The outputs (rows) per sample (columns); NaN where the sample is not solved."""
         x = self.start(np.roll(theta, 1))
         c, s = np.cos(theta), np.sin(theta)
@@ -161,7 +187,7 @@ class _Newton:
         return x[self.outputs]
 
 
-def _matrix(values, count):
+def _matrix(values: list[Any], count: int) -> Floats:
     """lambdify's nested lists (a constant entry is a number) as floats, the ``count`` samples last."""
     if not values:  # no indicator: nothing to check
         return np.zeros((0, count))
@@ -169,7 +195,7 @@ def _matrix(values, count):
                     dtype=float)
 
 
-def _solve(j, f):
+def _solve(j: Floats, f: Floats) -> Floats:
     """``j^-1 f`` per sample (``j``: n x n x samples); a singular sample (a start on a toggle) gives nan."""
     stacked = j.transpose(2, 0, 1)
     try:
@@ -179,7 +205,7 @@ def _solve(j, f):
         return (np.linalg.pinv(stacked) @ f.T[:, :, None])[:, :, 0].T * np.where(singular, np.nan, 1.0)
 
 
-def _closed_form(subject, theta, truth):
+def _closed_form(subject: Subject, theta: Floats, truth: Floats) -> Floats:
     c, s = np.cos(theta), np.sin(theta)
     out = []
     for k, unknown in enumerate(subject.unknowns):
@@ -190,62 +216,68 @@ def _closed_form(subject, theta, truth):
     return np.array(out)
 
 
-def _timed(run, repeats=3):
-    best = None
+def _timed(run: Callable[[], _T], repeats: int = 3) -> tuple[_T, float]:
+    best = float("inf")
     for _ in range(repeats):
         start = time.perf_counter()
         result = run()
         elapsed = time.perf_counter() - start
-        best = elapsed if best is None else min(best, elapsed)
+        best = min(best, elapsed)
     return result, best
 
 
-def _row(strategy, case, theta, estimate, seconds, truth, kappa, note="", solved=None):
+def _row(strategy: str, case: str, theta: Floats, estimate: Floats, seconds: float, truth: Floats, kappa: Floats,
+         note: str = "", solved: NDArray[np.bool_] | None = None) -> AccuracyRow:
     """One strategy's row; its errors over the ``solved`` samples (default: all)."""
     solved = np.ones(theta.size, dtype=bool) if solved is None else solved
     error = np.sqrt(((estimate - truth)[:, solved] ** 2).sum(axis=0))
     relative = error / np.sqrt((truth[:, solved] ** 2).sum(axis=0))
-    row = {"strategy": strategy, "case": case, "samples": int(theta.size),
+    row: AccuracyRow = {"strategy": strategy, "case": case, "samples": int(theta.size),
            "ns_per_sample": seconds / theta.size * 1e9,
            "max_abs_error": _worst(error), "max_rel_error": _worst(relative),
            "condition": float(np.max(kappa)),
            "error_over_kappa_eps": _worst(relative / (kappa[solved] * EPS))}
-    return dict(row, note=note) if note else row
+    if note:
+        row["note"] = note
+    return row
 
 
-def _worst(errors):
+def _worst(errors: Floats) -> float:
     """The largest error; infinite if one is not finite, or if nothing was compared."""
     return float(np.max(errors)) if errors.size and np.isfinite(errors).all() else float("inf")
 
 
-def _numeric_row(case, theta, estimate, seconds, truth, kappa):
+def _numeric_row(case: str, theta: Floats, estimate: Floats, seconds: float, truth: Floats,
+                 kappa: Floats) -> AccuracyRow:
     """The numeric strategy's row: errors over the samples it solved, the others counted as
     ``unsolved`` (an unconverged or wrong-branch answer compared would flatter the others)."""
-    solved = np.isfinite(estimate).all(axis=0)
+    solved = np.all(np.isfinite(estimate), axis=0)
     unsolved = int(theta.size - solved.sum())
     note = (f"{unsolved} of {theta.size} samples unsolved (not converged, or on the other branch); "
             "the errors are over the others") if unsolved else ""
-    return dict(_row("numeric", case, theta, estimate, seconds, truth, kappa, note, solved), unsolved=unsolved)
+    row = _row("numeric", case, theta, estimate, seconds, truth, kappa, note, solved)
+    row["unsolved"] = unsolved
+    return row
 
 
 STRATEGIES = ("closed-form", "stabilised", "compiled", "numeric")
 
 
-def _certified(subject, theta):
+def _certified(subject: Subject, theta: Floats) -> tuple[Floats, Floats, Floats]:
     """``(theta, truth, kappa)`` on the samples the reference certifies (the others do not assemble)."""
     certified = subject.reference.certify(theta)
     return theta[certified.ok], certified.points[:, certified.ok], certified.kappas[certified.ok]
 
 
-def _rows(subject, case, theta):
+def _rows(subject: Subject, case: str, theta: Floats) -> list[AccuracyRow]:
     (theta, truth, kappa), reference_seconds = _timed(lambda: _certified(subject, theta), 1)
     if not theta.size:
         return []
-    runs = {"closed-form": lambda: _closed_form(subject, theta, truth),
+    runs: dict[str, Callable[[], Floats]] = {"closed-form": lambda: _closed_form(subject, theta, truth),
             "stabilised": lambda: subject.stable(theta),
             "compiled": lambda: subject.stable(theta, engine="compiled"),
             "numeric": lambda: subject.newton(theta)}
-    rows = []
+    rows: list[AccuracyRow] = []
     for name in STRATEGIES:
         estimate, seconds = _timed(runs[name])
         row = _numeric_row if name == "numeric" else functools.partial(_row, name)
@@ -257,7 +289,7 @@ def _rows(subject, case, theta):
     return rows
 
 
-def _explain(raw, stabilised):
+def _explain(raw: AccuracyRow, stabilised: AccuracyRow) -> None:
     """The stabilised row says why, where it is less accurate than the raw closed form."""
     if stabilised["max_rel_error"] <= raw["max_rel_error"]:
         return
@@ -273,11 +305,11 @@ def _explain(raw, stabilised):
                               f"against {raw['max_rel_error']:.1e}), beyond the rounding floor")
 
 
-def sample_cases(subject, samples, rng):
+def sample_cases(subject: Subject, samples: int, rng: np.random.Generator) -> dict[str, Floats]:
     """The cases an accuracy run measures ``subject`` on (see the module's text), drawn with the
     numpy generator ``rng``: name (``uniform``, ``toggle-1e-06``..., ``near-fold``) -> sorted float64
     input angles (radians), about ``samples`` of them per case."""
-    intervals = [i for i in certify_labels(subject.compiled, [subject.branch])[0] if i["status"] == "certified"]
+    intervals = [i for i in certify_labels(subject.compiled, [subject.branch])[0] or [] if i["status"] == "certified"]
     if not intervals:
         raise UsageError("scene", subject.compiled.scene.name, "no input interval where the branch is certified")
     widths = np.array([i["to_deg"] - i["from_deg"] for i in intervals])
@@ -296,20 +328,20 @@ def sample_cases(subject, samples, rng):
                 for edge in edges for side in (-1, 1)]
         if near:
             cases[f"toggle-{offset:.0e}"] = np.sort(np.concatenate(near))
-    folds = _near_folds(subject)
+    folds = _near_folds(subject, subject.dyad)
     if folds:
         spread = 1e-6 * (2 * rng.random((len(folds), samples // len(folds) + 1)) - 1)
         cases["near-fold"] = np.sort((np.array(folds)[:, None] * (1 + spread)).ravel())
     return cases
 
 
-def _near_folds(subject):
+def _near_folds(subject: Subject, dyad: ImplicitSpec) -> list[float]:
     """Inputs (radians) where a factor ``k + beta c + gamma s`` of the discriminant, never zero,
     comes closest to zero: ``k - R`` or ``k + R`` with ``R = hypot(beta, gamma)``, at the angle
     of ``-(beta, gamma)`` or ``(beta, gamma)``."""
     defaults = {symbol(n): sympy.Rational(str(v)) for n, v in subject.compiled.parameter_values.items()}
     c, s = symbol(subject.c), symbol(subject.s)
-    discriminant = subject.branch.discriminants.get(subject.dyad.point)
+    discriminant = subject.branch.discriminants.get(dyad.point)
     folds = []
     for factor, _ in sympy.factor_list(discriminant.xreplace(defaults))[1] if discriminant is not None else ():
         if not factor.free_symbols <= {c, s} or sympy.Poly(factor, c, s).total_degree() != 1:
@@ -323,13 +355,14 @@ def _near_folds(subject):
     return folds
 
 
-def _translated(scene, offset):
+def _translated(scene: Scene, offset: int) -> Scene:
     """The scene moved by (offset, offset): every ground point shifted."""
     points = {n: (Fixed(p.x + offset, p.y + offset) if isinstance(p, Fixed) else p) for n, p in scene.points.items()}
     return attrs.evolve(scene, points=points)
 
 
-def accuracy(scene, samples=2000, seed=0, set=None, of=None):  # noqa: A002 - the public name (the command line's --set)
+def accuracy(scene: SceneLike, samples: int = 2000, seed: int = 0, set: Values | None = None,  # noqa: A002 - the public name (--set)
+             of: str | None = None) -> Accuracy:
     """Rows of speed and error per strategy and case for the output ``of`` (a point, ``dist(A, B)``,
     ``B.x`` or an output's name; default: the first dyad point, else the first output);
     ``set`` gives dimensions exact values in place of their defaults."""
@@ -345,7 +378,7 @@ def accuracy(scene, samples=2000, seed=0, set=None, of=None):  # noqa: A002 - th
         raise UsageError("scene", scene.name, f"accuracy is measured over an input angle; {lengths[0]} is a length")
     rng = np.random.default_rng(seed)
     subject = Subject(scene, of)
-    rows = []
+    rows: list[AccuracyRow] = []
     current().note(f"measuring each strategy on {scene.name}")
     for case, theta in progress.counted(sample_cases(subject, samples, rng).items(), "cases"):
         rows += _rows(subject, case, theta)

@@ -26,16 +26,21 @@ False
 """
 
 import enum
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 import flint
 import sympy
 
+from ..eliminate.protocol import Backend, P, Term
 from ..eliminate.select import unreal
 from ..system import symbol
 from ..system.convert import flint_context, to_flint, to_sympy
 
 __all__ = ["Agreement", "AGREEING", "PASSING", "Verdict", "agreement", "rebuild", "portable", "from_sympy", "describe"]
+
+# A peer's or a backend's eliminant, portable: (variable names, [(exponents, numerator, denominator)])
+PortableForm = tuple[tuple[str, ...], list[Term]]
 
 SHOWN = 80  # characters of a factor written out in a verdict's detail
 
@@ -50,7 +55,7 @@ class Agreement(enum.Enum):
     REFERENCE = "reference"
     NOT_COMPARED = "not compared"
 
-    def __str__(self):
+    def __str__(self) -> str:
         return self.value
 
 
@@ -66,35 +71,36 @@ class Verdict:
     detail: str = ""
 
     @property
-    def agrees(self):
+    def agrees(self) -> bool:
         return self.kind in AGREEING
 
-    def __str__(self):
+    def __str__(self) -> str:
         return str(self.kind)
 
 
-def portable(engine, poly):
+def portable(engine: Backend[P], poly: P) -> PortableForm:
     """A picklable form of a backend polynomial."""
     return engine.names, engine.terms(poly)
 
 
-def rebuild(form, keep):
+def rebuild(form: PortableForm, keep: Sequence[str]) -> flint.fmpq_mpoly:
     """The polynomial of ``portable`` over the variables ``keep``."""
     names, terms = form
     ctx = flint_context(keep)
     where = [names.index(n) if n in names else None for n in keep]
-    dictionary = {}
+    dictionary: dict[tuple[int, ...], flint.fmpq] = {}
     for exponents, numerator, denominator in terms:
         key = tuple(exponents[i] if i is not None else 0 for i in where)
         dictionary[key] = dictionary.get(key, 0) + flint.fmpq(numerator, denominator)
     return ctx.from_dict(dictionary)
 
 
-def from_sympy(expr, keep):
+def from_sympy(expr: sympy.Expr, keep: Sequence[str]) -> flint.fmpq_mpoly:
     return to_flint(expr, flint_context(keep))
 
 
-def agreement(poly, reference, side=(), parameters=()):
+def agreement(poly: flint.fmpq_mpoly, reference: flint.fmpq_mpoly, side: Sequence[flint.fmpq_mpoly] = (),
+              parameters: Iterable[str] = ()) -> Verdict:
     """The ``Verdict`` of ``poly`` against ``reference`` (flint polynomials in one context);
     ``side``: the side relations; ``parameters``: names of the dimensions, for content."""
     if _proportional(poly, reference):
@@ -116,21 +122,21 @@ def agreement(poly, reference, side=(), parameters=()):
     return Verdict(Agreement.DIFFERENT, f"{describe(extra)} in the row against {describe(missing)} in the reference")
 
 
-def describe(poly):
+def describe(poly: flint.fmpq_mpoly) -> str:
     """A factor as a reader checks it: written out when short, with its degree and terms."""
     text, figures = _text(poly), f"degree {poly.total_degree()}, {len(poly)} terms"
     return f"{text} ({figures})" if len(text) <= SHOWN else f"of {figures}"
 
 
-def _text(poly):
+def _text(poly: flint.fmpq_mpoly) -> str:
     return str(to_sympy(poly, poly.context()).factor())
 
 
-def _constant(poly):
+def _constant(poly: flint.fmpq_mpoly) -> bool:
     return not any(poly.degrees())
 
 
-def _content(poly, parameters):
+def _content(poly: flint.fmpq_mpoly, parameters: Iterable[str]) -> bool:
     """Whether ``poly`` is a constant or a product of factors in the ``parameters`` alone
     with no real zero (a nonzero constant at every real choice of them)."""
     if _constant(poly):
@@ -144,13 +150,13 @@ def _content(poly, parameters):
     return all(unreal(terms(f)) for f, _ in factors)
 
 
-def _proportional(p, q):
+def _proportional(p: flint.fmpq_mpoly, q: flint.fmpq_mpoly) -> bool:
     if p.is_zero() or q.is_zero():
         return p.is_zero() and q.is_zero()
     return p * q.leading_coefficient() == q * p.leading_coefficient()
 
 
-def _reduced(poly, side):
+def _reduced(poly: flint.fmpq_mpoly, side: Sequence[flint.fmpq_mpoly]) -> flint.fmpq_mpoly:
     """``poly`` reduced modulo the side relations (a Gröbner basis of them, in sympy)."""
     ctx = poly.context()
     gens = [symbol(str(n)) for n in ctx.names()]

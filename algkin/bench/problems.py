@@ -9,8 +9,8 @@ methods are timed on what a user's command runs, plus that command itself, end t
 ['arm-extremum', 'fourbar-symbolic', 'lambda-coupler']
 """
 
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Callable
 
 from ..derivation.tasks import EliminationTask, curve_task, eliminant_tasks
 from ..errors import UsageError
@@ -26,36 +26,36 @@ class Problem:
     name: str
     description: str
     task: EliminationTask
-    end_to_end: Callable  # algkin's default path for the problem, with its own figures
+    end_to_end: Callable[[], object]  # algkin's default path for the problem, with its own figures
 
 
-def _curve(scene, point, params=()):
+def _curve(scene: str, point: str, params: Sequence[str] = ()) -> EliminationTask:
     from ..derivation.prepared import prepare
 
     prepared = prepare(scene, outputs=[point], params=params)
     return curve_task(prepared.compiled, prepared.witnesses, point)
 
 
-def _curve_run(scene, point, params=()):
+def _curve_run(scene: str, point: str, params: Sequence[str] = ()) -> Callable[[], object]:
     from ..derivation.pipeline import curve
 
     return lambda: curve(scene, point, params=params)
 
 
-def _two_circles():
+def _two_circles() -> EliminationTask:
     from ..derivation.prepared import prepare
 
     prepared = prepare("chebyshev-lambda", outputs=["B"])
     return eliminant_tasks(prepared.compiled, prepared.witnesses)["B_y"]
 
 
-def _two_circles_run():
+def _two_circles_run() -> Callable[[], object]:
     from ..derivation.pipeline import derive
 
     return lambda: derive("chebyshev-lambda", ["B"])
 
 
-def _arm():
+def _arm() -> EliminationTask:
     from ..analyses.extremum import problem_for
     from ..derivation.pipeline import derive
 
@@ -64,13 +64,14 @@ def _arm():
     return EliminationTask(tuple(problem.half_angle()), (problem.t.name,), (problem.u.name,) + names, names, ())
 
 
-def _arm_run():
+def _arm_run() -> Callable[[], object]:
     from ..analyses.extremum import extremum
 
     return lambda: extremum("arm-string", "AB", params=["b"])
 
 
-PROBLEMS = {
+# name -> (what it is, its task's maker, its end-to-end run's maker)
+PROBLEMS: dict[str, tuple[str, Callable[[], EliminationTask], Callable[[], Callable[[], object]]]] = {
     "two-circles": ("the seed connector: B_y of the Chebyshev lambda, B_x eliminated from two circles",
                     _two_circles, _two_circles_run),
     "lambda-coupler": ("the lambda's coupler curve of P (the seed notebook's extension)",
@@ -92,11 +93,11 @@ PROBLEMS = {
 }
 
 
-def problem_names():
+def problem_names() -> list[str]:
     return list(PROBLEMS)
 
 
-def build(name):
+def build(name: str) -> Problem:
     """The ``Problem`` called ``name``; a UsageError naming the valid ones otherwise."""
     if name not in PROBLEMS:
         raise UsageError("problems", name, f"unknown problem; valid: {', '.join(PROBLEMS)}")

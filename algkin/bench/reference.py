@@ -34,12 +34,19 @@ implicit function theorem, construction by construction:
 ``dX/dtheta = -J_X^-1 (dF/dtheta + dF/dE dE/dtheta)`` with ``E`` the earlier points.
 """
 
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import sympy
 from flint import arb, ctx
+from numpy.typing import ArrayLike, NDArray
 
+from ..branches.closed_form import Branch
+from ..scene.compile import Compiled
+from ..branches.constructions.base import Fix
+from ..scene.implicit.base import ImplicitSpec
 from ..system import symbol
 
 __all__ = ["Reference", "Certified", "BITS", "NotCertified"]
@@ -50,6 +57,11 @@ MARGIN = 2.0**20  # the box's half-width over the step's square: Newton's next e
 BOX = 2.0**-140  # the box's least half-width (relative), well above the rounding at BITS
 NEWTON_STEPS = 80  # at most: 1 or 2 away from toggles, ~60 onto a change point's near-double root
 STALL = 5  # steps without a new smallest one: not converging (past a toggle, no real root)
+
+Balls = NDArray[np.object_]  # of flint.arb, None where nothing is known
+Mask = NDArray[np.bool_]
+Indices = NDArray[np.intp]
+Floats = NDArray[np.float64]
 
 _balls = np.frompyfunc(arb, 1, 1)  # float -> exact ball, per element
 _box = np.frompyfunc(lambda radius: arb(0, radius), 1, 1)
@@ -65,10 +77,10 @@ class NotCertified(ArithmeticError):
 class Certified:
     """Per sample: whether it is certified, and where it is, its enclosure, outputs and condition."""
 
-    ok: np.ndarray  # bool
-    roots: np.ndarray  # samples x unknowns, arb (Krawczyk's enclosures, explicit ones by formula; None if not ok)
-    points: np.ndarray  # outputs x samples, float (nan where not ok)
-    kappas: np.ndarray  # float (nan where not ok)
+    ok: Mask
+    roots: Balls  # samples x unknowns (Krawczyk's enclosures, explicit ones by formula; None if not ok)
+    points: Floats  # outputs x samples (nan where not ok)
+    kappas: Floats  # nan where not ok
 
 
 class _Balls:
@@ -78,7 +90,7 @@ class _Balls:
     argument holding its ``arb`` quotient, made at call time (so at the caller's precision).
     """
 
-    def __init__(self, exprs, arguments):
+    def __init__(self, exprs: Sequence[sympy.Expr], arguments: Sequence[sympy.Symbol]) -> None:
         exprs = [sympy.sympify(e) for e in exprs]
         self.rationals = sorted({r for e in exprs for r in e.atoms(sympy.Rational) if not r.is_Integer}, key=str)
         swap = dict(zip(self.rationals, (sympy.Dummy() for _ in self.rationals)))
@@ -86,7 +98,7 @@ class _Balls:
                                    "numpy", cse=True)
         self.count = len(exprs)
 
-    def __call__(self, *values):
+    def __call__(self, *values: Balls) -> Balls:
         out = np.empty((len(values[0]), self.count), dtype=object)
         # a constant entry comes back as a number: a ball, so no int / int division follows
         for k, value in enumerate(self.body(*values, *(arb(int(r.p)) / int(r.q) for r in self.rationals))):
@@ -101,7 +113,7 @@ class Reference:
     a solver that takes it at once (accuracy's ``numeric`` strategy).
     """
 
-    def __init__(self, compiled, branch, outputs):
+    def __init__(self, compiled: Compiled, branch: Branch, outputs: Sequence[str]) -> None:
         defaults = {symbol(n): sympy.Rational(str(v)) for n, v in compiled.parameter_values.items()}
         fix = lambda e: sympy.sympify(e).xreplace(defaults)  # noqa: E731
         system = compiled.system
@@ -114,7 +126,8 @@ class Reference:
         self.indicators = [fix(i.expr) for i in labels]
         self.expected = np.array([i.chosen == i.positive for i in labels], dtype=bool)  # positive?
         self.start = _Start(compiled, fix, self.cs)
-        self.stages, earlier = [], []
+        self.stages: list[_Stage] = []
+        earlier: list[sympy.Symbol] = []
         for spec in compiled.implicit:
             mine = [symbol(u) for u in spec.unknowns]
             equations = _written(spec, fix)
@@ -129,10 +142,10 @@ class Reference:
         self.explicit = _Explicit([fix(compiled.definitions[str(u)]) for u in explicit], earlier, self.cs,
                                   self._at(explicit), self._at(earlier))
 
-    def _at(self, unknowns):
+    def _at(self, unknowns: Sequence[sympy.Symbol]) -> Indices:
         return np.array([self.unknowns.index(u) for u in unknowns], dtype=int)
 
-    def __call__(self, theta):
+    def __call__(self, theta: ArrayLike) -> tuple[Floats, Floats]:
         """``(points, kappas)``: the outputs (rows) per sample (columns) and each condition number."""
         certified = self.certify(theta)
         if not certified.ok.all():
@@ -140,7 +153,7 @@ class Reference:
             raise NotCertified(f"at {angle!r} rad no root on the label's side was certified")
         return certified.points, certified.kappas
 
-    def certify(self, theta):
+    def certify(self, theta: ArrayLike) -> Certified:
         """Every sample's certified labelled root (see the module), or ``ok`` false."""
         theta = np.asarray(theta, dtype=float)
         ok = np.ones(theta.size, dtype=bool)
@@ -159,7 +172,7 @@ class Reference:
             kappas[ok] = _kappas(theta[ok], points[:, ok], slopes[ok][:, self.outputs].astype(float).T)
         return Certified(ok, roots, points, kappas)
 
-    def _construct(self, start, cs, ok, roots, slopes):
+    def _construct(self, start: Floats, cs: tuple[Balls, Balls], ok: Mask, roots: Balls, slopes: Balls) -> None:
         """Certifies each construction in turn on the samples ``ok`` so far (see the module),
         filling in ``roots`` and ``slopes``; a sample that fails one is ``ok`` no more."""
         for stage in self.stages:
@@ -173,13 +186,13 @@ class Reference:
                 enclosures, tuple(v[done] for v in given), inverses, slopes[live[done]][:, stage.earlier])
 
 
-def _written(spec, fix):
+def _written(spec: ImplicitSpec, fix: Fix) -> list[sympy.Expr]:
     """A construction's two equations as it writes them (unexpanded: the circles about P and Q,
     or the slider's line and circle), which take fewer operations in balls than expanded."""
     return [fix(e) for e in spec.written()]
 
 
-def _kappas(theta, points, slopes):
+def _kappas(theta: Floats, points: Floats, slopes: Floats) -> Floats:
     """``|dX/dtheta| |theta| / |X|`` (outputs x samples), plus one for the rounding of the result."""
     return np.abs(theta) * np.sqrt((slopes**2).sum(axis=0)) / np.sqrt((points**2).sum(axis=0)) + 1
 
@@ -187,7 +200,8 @@ def _kappas(theta, points, slopes):
 class _Explicit:
     """Explicit unknowns: their formulas in the constructed points, evaluated on the enclosures."""
 
-    def __init__(self, definitions, earlier, cs, at, given_at):
+    def __init__(self, definitions: list[sympy.Expr], earlier: list[sympy.Symbol], cs: tuple[sympy.Symbol, sympy.Symbol],
+                 at: Indices, given_at: Indices) -> None:
         arguments = earlier + list(cs)
         c, s = cs
         self.at, self.given_at = at, given_at
@@ -196,9 +210,9 @@ class _Explicit:
         self.moved = _Balls(matrix.jacobian(cs) * sympy.Matrix([-s, c]), arguments) if definitions else None
         self.pushed = _Balls(matrix.jacobian(earlier), arguments) if definitions and earlier else None
 
-    def __call__(self, roots, slopes, live, cs):
+    def __call__(self, roots: Balls, slopes: Balls, live: Indices, cs: tuple[Balls, ...]) -> None:
         """Fills ``roots`` and ``slopes`` of the samples ``live`` (rows) at the explicit unknowns."""
-        if not (self.at.size and live.size):
+        if self.moved is None or not live.size:  # no explicit unknown, or no sample
             return
         given = (*roots[live][:, self.given_at].T, *cs)
         roots[np.ix_(live, self.at)] = self.values(*given)
@@ -212,7 +226,9 @@ class _Explicit:
 class _Stage:
     """One dyad or slider's unknowns, certified with the earlier points' enclosures (see the module)."""
 
-    def __init__(self, equations, mine, earlier, cs, signs, at, earlier_at):
+    def __init__(self, equations: list[sympy.Expr], mine: list[sympy.Symbol], earlier: list[sympy.Symbol],
+                 cs: tuple[sympy.Symbol, sympy.Symbol], signs: list[tuple[sympy.Expr, bool]], at: Indices,
+                 earlier_at: Indices) -> None:
         arguments = mine + earlier + list(cs)
         c, s = cs
         self.n, self.at, self.earlier = len(mine), at, earlier_at  # positions in the system's unknowns
@@ -224,7 +240,7 @@ class _Stage:
         self.signs = _Balls([e for e, _ in signs], arguments)
         self.expected = np.array([x for _, x in signs], dtype=bool)
 
-    def certify(self, start, given):
+    def certify(self, start: Floats, given: tuple[Balls, ...]) -> tuple[Indices, Balls, Balls]:
         """The positions (in ``start``: samples x my unknowns) certified on the label's side,
         their enclosures and the inverse Jacobians (points) their proofs used."""
         found, enclosures, inverses = self._roots(start, given)
@@ -238,9 +254,9 @@ class _Stage:
             again, enclosures, inverses = self._roots(mirror, tuple(v[wrong] for v in given))
             labelled = self._labelled(enclosures, given, wrong[again])
             done.append((wrong[again[labelled]], enclosures[labelled], inverses[labelled]))
-        return tuple(np.concatenate(part) for part in zip(*done))
+        return _joined(done)
 
-    def slopes(self, roots, given, inverses, earlier):
+    def slopes(self, roots: Balls, given: tuple[Balls, ...], inverses: Balls, earlier: Balls) -> Balls:
         """``dX/dtheta`` at the enclosures ``roots``, given the earlier points' slopes ``earlier``
         (``inverses``, of ``J`` at the last Newton iterate, are within ``C |step|`` of the
         root's: ample for a float condition number)."""
@@ -250,7 +266,7 @@ class _Stage:
             moved = moved + (pushed @ earlier[:, :, None])[:, :, 0]
         return -(inverses @ moved[:, :, None])[:, :, 0]
 
-    def _roots(self, start, given):
+    def _roots(self, start: Floats, given: tuple[Balls, ...]) -> tuple[Indices, Balls, Balls]:
         """Newton then Krawczyk from ``start`` (samples x unknowns): the positions certified, their
         enclosures and the inverse Jacobians (points) their proofs used."""
         size = np.abs(start).max(axis=1)
@@ -287,25 +303,36 @@ class _Stage:
             stalled[active] = np.where(step[active] < least[active], 0, stalled[active] + 1)
             least[active] = np.fmin(least[active], step[active])
             active = active[stalled[active] < STALL]
-        return tuple(np.concatenate(part) for part in zip(*done))
+        return _joined(done)
 
-    def _krawczyk(self, x, fx, y, radius, given):
+    def _krawczyk(self, x: Balls, fx: Balls, y: Balls, radius: Floats, given: tuple[Balls, ...]) -> tuple[Balls, Mask]:
         """``(K, inside)``: the Krawczyk image of the box ``x +- radius`` and whether it lies inside."""
         box = x + _box(radius)[:, None]
         over = self.j(*box.T, *given).reshape(-1, self.n, self.n)
         contract = np.eye(self.n, dtype=int) - y @ over
         k = x - (y @ fx[:, :, None])[:, :, 0] + (contract @ (box - x)[:, :, None])[:, :, 0]
         # |K - x| < radius (decided) puts K inside the open box, whose ball X holds at least that
-        return k, np.asarray(np.abs(k - x) < radius[:, None], dtype=bool).all(axis=1)
+        return k, _every(np.abs(k - x) < radius[:, None])
 
-    def _labelled(self, roots, given, where):
+    def _labelled(self, roots: Balls, given: tuple[Balls, ...], where: Indices) -> Mask:
         """Per enclosure (``roots``, of the samples ``where``): every indicator's sign decided, and the label's."""
         if not where.size:
             return np.zeros(0, dtype=bool)
         values = self.signs(*roots.T, *(v[where] for v in given))
         positive, negative = np.asarray(values > 0, dtype=bool), np.asarray(values < 0, dtype=bool)
-        return np.where(self.expected, positive, negative).all(axis=1)
-def _inverse(matrix):
+        return _every(np.where(self.expected, positive, negative))
+def _joined(parts: Sequence[tuple[Indices, Balls, Balls]]) -> tuple[Indices, Balls, Balls]:
+    """Certified positions, enclosures and inverses found in parts, each joined in order."""
+    found, enclosures, inverses = zip(*parts)
+    return np.concatenate(found), np.concatenate(enclosures), np.concatenate(inverses)
+
+
+def _every(decided: NDArray[np.bool_]) -> Mask:
+    """Per row (sample), whether all of it holds: a ball comparison reads True only where decided."""
+    return np.all(np.asarray(decided, dtype=bool), axis=1)
+
+
+def _inverse(matrix: Balls) -> Balls:
     """Per sample (``matrix``: samples x 2 x 2 of balls), the inverse by its adjugate: every
     construction has two unknowns. A determinant ball holding 0 gives NaN, which certifies nothing."""
     (a, b), (c, d) = matrix[:, 0].T, matrix[:, 1].T
@@ -313,15 +340,15 @@ def _inverse(matrix):
     return np.stack([np.stack([d, -b], axis=1), np.stack([-c, a], axis=1)], axis=1) / det[:, None, None]
 
 
-def _float_function(exprs, arguments):
+def _float_function(exprs: Sequence[sympy.Expr], arguments: Sequence[sympy.Symbol]) -> Callable[..., Any]:
     return sympy.lambdify(list(arguments), list(exprs), "numpy")
 
 
 class _Start:
     """Float starting points from the construction itself (textbook formulas, no elimination)."""
 
-    def __init__(self, compiled, fix, cs):
-        self.steps = []
+    def __init__(self, compiled: Compiled, fix: Fix, cs: tuple[sympy.Symbol, sympy.Symbol]) -> None:
+        self.steps: list[tuple[tuple[str, str], Callable[..., Any], float, Callable[..., Any]]] = []
         known = list(cs)
         for spec in compiled.implicit:
             sigma = float(spec.sign(spec.branch)) if spec.labels else 1.0
@@ -333,7 +360,7 @@ class _Start:
         self.rest = rest, _float_function([fix(compiled.definitions[u]) for u in rest], known)
         self.order = compiled.system.unknowns
 
-    def __call__(self, theta):
+    def __call__(self, theta: Floats) -> Floats:
         values = {str(v): a for v, a in zip(self.known[:2], (np.cos(theta), np.sin(theta)))}
         for unknowns, parts, sigma, start in self.steps:
             point = start(np.broadcast_arrays(*parts(*values.values()), theta)[:-1], sigma)

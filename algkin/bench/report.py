@@ -9,20 +9,27 @@ problem  method  backend  time     vs default  deg  terms  bits  agrees  note
 p        linear  flint    2.50 ms  1.00x       6    29     12    equal   median of 5 runs
 """
 
+from __future__ import annotations
+
 import csv
 import io
 import json
+from collections.abc import Callable, Iterable, Sequence
+from typing import TYPE_CHECKING
 
 from ..errors import OutputError
 from ..runtime.files import write_atomic
-from .row import COLUMNS
+from .row import COLUMNS, BenchRow
+
+if TYPE_CHECKING:
+    from . import BenchReport
 
 __all__ = ["table", "to_csv", "write", "seconds_text", "COLUMNS"]
 
 HEADERS = ("problem", "method", "backend", "time", "vs default", "deg", "terms", "bits", "agrees", "note")
 
 
-def seconds_text(value):
+def seconds_text(value: float | None) -> str:
     if value is None:
         return "-"
     for unit, scale in (("s", 1.0), ("ms", 1e-3), ("us", 1e-6)):
@@ -31,13 +38,13 @@ def seconds_text(value):
     return f"{value / 1e-9:.0f} ns"
 
 
-def _cells(row):
+def _cells(row: BenchRow) -> list[str]:
     values = row.to_json()
     text = {"seconds": seconds_text(row.seconds), "ratio": "-" if row.ratio is None else f"{row.ratio:.2f}x"}
     return [text.get(k, "-" if values[k] is None else str(values[k])) for k in COLUMNS]
 
 
-def table(rows):
+def table(rows: Iterable[BenchRow]) -> str:
     """Aligned columns, one line per row."""
     cells = [list(HEADERS)] + [_cells(r) for r in rows]
     widths = [max(len(line[i]) for line in cells) for i in range(len(HEADERS) - 1)]
@@ -45,7 +52,7 @@ def table(rows):
                      for line in cells)
 
 
-def to_csv(rows):
+def to_csv(rows: Iterable[BenchRow]) -> str:
     out = io.StringIO()
     writer = csv.DictWriter(out, fieldnames=COLUMNS, lineterminator="\n")
     writer.writeheader()
@@ -53,7 +60,8 @@ def to_csv(rows):
     return out.getvalue()
 
 
-def write(report, directory, plot=None):
+def write(report: BenchReport, directory: str,
+          plot: Callable[[Sequence[BenchRow], str], str] | None = None) -> list[str]:
     """bench.json, bench.csv and, given ``plot``, bench.png in ``directory``; the paths written.
 
     ``plot(rows, path)`` draws the rows' figure to ``path`` and returns the path: presentation

@@ -14,14 +14,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from .agree import PASSING, Agreement
+from .agree import PASSING, Agreement, PortableForm
 
 __all__ = ["BenchRow", "COLUMNS"]
 
 COLUMNS = ("problem", "method", "backend", "seconds", "ratio", "degree", "terms", "bits", "agrees", "note")
-
-# A peer's or a backend's eliminant, portable: (variable names, [(exponents, numerator, denominator)])
-PortableForm = tuple[tuple[str, ...], list[tuple[tuple[int, ...], int, int]]]
 
 
 @dataclass

@@ -14,11 +14,14 @@ the resultant chains it checks.
 """
 
 import random
+from collections.abc import Sequence
 from fractions import Fraction
 
+import flint
 import sympy
 
 from ..errors import AlgkinError
+from ..derivation.tasks import EliminationTask
 from ..runtime.budget import Budget
 from ..system import symbol
 from .agree import Agreement, Verdict, agreement, from_sympy
@@ -29,14 +32,15 @@ HEIGHT = 10**4  # numerators and denominators of the random values, at most
 METHOD = ("groebner", "flint")
 
 
-class Specialisation(dict):
+class Specialisation(dict[str, Fraction]):
     """name -> Fraction, and the univariate eliminant of the system there (or why none)."""
 
-    eliminant = None
-    failure = None
+    eliminant: flint.fmpq_mpoly | None = None
+    failure: str | None = None
 
 
-def specialisations(task, side, count, seed):
+def specialisations(task: EliminationTask, side: Sequence[sympy.Expr], count: int,
+                    seed: int) -> list[Specialisation]:
     """``count`` random assignments of the parameters and the kept variables but the first."""
     rng = random.Random(seed)
     names = [n for n in task.keep[1:]]
@@ -53,21 +57,21 @@ def specialisations(task, side, count, seed):
     return found
 
 
-def _rational(rng):
+def _rational(rng: random.Random) -> Fraction:
     return Fraction(rng.randint(-HEIGHT, HEIGHT) or 1, rng.randint(1, HEIGHT))
 
 
-def _circles(side):
+def _circles(side: Sequence[sympy.Expr]) -> list[tuple[str, str]]:
     """Pairs ``(c, s)`` of the side relations that read ``c**2 + s**2 - 1``."""
     pairs = []
     for relation in side:
         names = sorted(relation.free_symbols, key=str)
         if len(names) == 2 and sympy.expand(relation - (names[0]**2 + names[1]**2 - 1)) == 0:
-            pairs.append(tuple(str(n) for n in names))
+            pairs.append((str(names[0]), str(names[1])))
     return pairs
 
 
-def fresh(task, values, budget):
+def fresh(task: EliminationTask, values: Specialisation, budget: float) -> Specialisation:
     """Fill ``values.eliminant`` (flint, over ``task.keep[:1]``) by the Gröbner elimination of
     the specialised system, or ``values.failure`` when it fails or runs past ``budget`` s."""
     from ..eliminate import eliminate
@@ -86,29 +90,26 @@ def fresh(task, values, budget):
     return values
 
 
-def check(poly, found):
+def check(poly: flint.fmpq_mpoly, found: Sequence[Specialisation]) -> Verdict:
     """The ``Verdict`` of the flint polynomial ``poly`` (over the task's kept variables) at
     each specialisation in ``found``: the first that disagrees, else equal; ``not compared``
     when no fresh elimination finished."""
-    done = [values for values in found if values.eliminant is not None]
+    done = [(values, values.eliminant) for values in found if values.eliminant is not None]
     if not done:
-        return Verdict(Agreement.NOT_COMPARED, "; ".join(v.failure for v in found))
-    for values in done:
-        target = values.eliminant.context()
+        return Verdict(Agreement.NOT_COMPARED, "; ".join(v.failure or "" for v in found))
+    for values, eliminant in done:
         at = poly.subs({n: _fmpq(v) for n, v in values.items()})
-        verdict = agreement(_onto(at, target), values.eliminant)
+        verdict = agreement(_onto(at, eliminant.context()), eliminant)
         if not verdict.agrees:
             return verdict
     return Verdict(Agreement.EQUAL, f"at {len(done)} random rational specialisations, "
                                     f"against {METHOD[0]} / {METHOD[1]}")
 
 
-def _fmpq(value):
-    import flint
-
+def _fmpq(value: Fraction) -> flint.fmpq:
     return flint.fmpq(value.numerator, value.denominator)
 
 
-def _onto(poly, target):
+def _onto(poly: flint.fmpq_mpoly, target: flint.fmpq_mpoly_ctx) -> flint.fmpq_mpoly:
     """``poly`` (every variable but the first fixed) as a polynomial of ``target``'s one variable."""
     return target.from_dict({(m[0],): c for m, c in zip(poly.monoms(), poly.coeffs())})

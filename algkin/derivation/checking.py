@@ -16,33 +16,24 @@ default.
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
-from typing import NamedTuple
 
 import sympy
 
 from ..branches import Branch
-from ..runtime.frozen import FrozenDict, frozen
+from ..runtime.frozen import frozen
 from ..scene import Compiled
-from ..system import System, symbol
-from ..verify import Verification, verify_branches
-from ..verify.check import BranchForms, Indicator, PolynomialLike
+from ..system import symbol
+from ..verify import CheckSetup, Verification, verify_branches
+from ..verify.check import Indicator, PolynomialLike
 from .prepared import Prepared
 
-__all__ = ["CheckSetup", "check_setup", "verify_prepared"]
-
-
-class CheckSetup(NamedTuple):
-    """What an independent check of branches starts from, the dimensions at their defaults."""
-
-    system: System
-    indicators: tuple[Indicator, ...]
-    branches: tuple[BranchForms, ...]  # per branch: (labels, values, discriminants)
-    inputs: FrozenDict[str, tuple[float, float]]  # input -> (lo, hi), radians or lengths
+__all__ = ["check_setup", "verify_prepared"]
 
 
 def check_setup(compiled: Compiled, branches: Iterable[Branch]) -> CheckSetup:
-    """What an independent check of ``branches`` starts from, the dimensions at their defaults:
-    ``(system, indicators, [(labels, values, discriminants)], {input: (lo, hi) radians})``."""
+    """What an independent check of ``branches`` starts from, the dimensions at their defaults
+    (the system, its indicators, per branch ``(labels, values, discriminants)``, each input's
+    range in radians or its units, and the dimensions' values)."""
     system = compiled.system
     defaults = {symbol(n): compiled.parameter_values[n] for n in system.parameters}
     fixed = type(system)(system.unknowns, (), system.inputs,
@@ -50,12 +41,14 @@ def check_setup(compiled: Compiled, branches: Iterable[Branch]) -> CheckSetup:
                          system.nonnegative)
     inputs = {n: (float(i.to_radians(i.lo)), float(i.to_radians(i.hi)))
               for n, i in compiled.scene.inputs.items() if n in system.inputs}
+    indicators: list[Indicator] = [(i.point, i.expr.xreplace(defaults), i.positive, i.negative)
+                                   for i in compiled.indicators]
     return CheckSetup(
-        fixed,
-        tuple((i.point, i.expr.xreplace(defaults), i.positive, i.negative) for i in compiled.indicators),
-        tuple((b.labels, frozen({u: v.xreplace(defaults) for u, v in b.values.items()}),
-               frozen({p: d.xreplace(defaults) for p, d in b.discriminants.items()})) for b in branches),
-        frozen(inputs))
+        system=fixed,
+        indicators=indicators,
+        branches=tuple((b.labels, frozen({u: v.xreplace(defaults) for u, v in b.values.items()}),
+                        frozen({p: d.xreplace(defaults) for p, d in b.discriminants.items()})) for b in branches),
+        inputs=frozen(inputs), parameters=compiled.parameter_values)
 
 
 def verify_prepared(prepared: Prepared, *, samples: int, seed: int, polynomials: Mapping[str, PolynomialLike],
@@ -65,6 +58,5 @@ def verify_prepared(prepared: Prepared, *, samples: int, seed: int, polynomials:
     (name -> its kept factors) lets the check catch a leftover extraneous factor."""
     if not samples:
         return Verification.skipped()
-    fixed, indicators, branches, inputs = check_setup(prepared.compiled, prepared.branches)
-    return verify_branches(fixed, indicators, branches, inputs, dict(prepared.compiled.parameter_values),
-                           samples=samples, seed=seed, polynomials=polynomials, factors=factors, where=prepared.where)
+    return verify_branches(check_setup(prepared.compiled, prepared.branches), samples=samples, seed=seed,
+                           polynomials=polynomials, factors=factors, where=prepared.where)

@@ -17,8 +17,7 @@ from collections.abc import Mapping, Sequence
 
 import attrs
 
-from ..eliminate import DEFAULT_METHOD, Budget, Elimination, current as current_budget
-from ..eliminate.protocol import Ring
+from ..eliminate import DEFAULT_METHOD, Budget, current as current_budget
 from ..errors import UsageError
 from ..runtime import validation
 from ..scene import Compiled, Scene, compile_scene
@@ -29,7 +28,7 @@ from .curves import curve_figures, family_method, refuse_still
 from .checking import verify_prepared
 from .prepared import Prepared, given, load, prepare, prepared_from, timed
 from .results import CurveResult, Derivation
-from .tasks import curve_task, eliminant_tasks
+from .tasks import Eliminant, curve_task, eliminant_tasks
 
 __all__ = ["derive", "curve", "Engine"]
 
@@ -114,7 +113,7 @@ def _derive(source: _Source, engine: Engine, *, certify: bool, budget: Budget, s
     return Derivation(compiled, engine.method, engine.backend, eliminations, branches, verification, timings, certified)
 
 
-def _verify(prepared: Prepared, engine: Engine, eliminations: Mapping[str, Elimination[Ring]]) -> Verification:
+def _verify(prepared: Prepared, engine: Engine, eliminations: Mapping[str, Eliminant]) -> Verification:
     """The independent check, each eliminant's kept factors with it."""
     return verify_prepared(prepared, samples=engine.samples, seed=engine.seed,
                            polynomials={u: e.exact[0] for u, e in eliminations.items()},

@@ -11,14 +11,13 @@ from typing import Any, Union
 import attrs
 
 from ..branches import Branch
-from ..eliminate import Elimination
-from ..eliminate.protocol import Ring
 from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled
 from ..system import inputs_json
 from ..verify import Verification
+from .tasks import Eliminant
 
-__all__ = ["Derivation", "CurveResult", "Certified", "Json"]
+__all__ = ["Derivation", "CurveResult", "Certified", "Eliminant", "Json"]
 
 Json = dict[str, Any]  # a JSON document: its values are whatever JSON holds
 Certified = Union[tuple[FrozenDict[str, Union[float, str]], ...], None]
@@ -42,7 +41,7 @@ class Derivation:
     compiled: Compiled
     method: str
     backend: str
-    eliminations: FrozenDict[str, Elimination[Ring]] = attrs.field(converter=frozen)  # unknown -> its eliminant
+    eliminations: FrozenDict[str, Eliminant] = attrs.field(converter=frozen)  # unknown -> its eliminant
     branches: tuple[Branch, ...] = attrs.field(converter=_branches)
     verification: Verification
     timings: FrozenDict[str, float] = attrs.field(converter=frozen, eq=False)
@@ -75,7 +74,7 @@ class CurveResult:
     compiled: Compiled
     point: str
     variables: tuple[str, ...]
-    elimination: Elimination[Ring]
+    elimination: Eliminant
     degree: int
     circularity: int
     irreducible: bool
@@ -104,7 +103,7 @@ class CurveResult:
         }
 
 
-def _figures(elimination: Elimination[Ring]) -> Json:
+def _figures(elimination: Eliminant) -> Json:
     return {
         "degree": elimination.degree,
         "terms": elimination.terms,

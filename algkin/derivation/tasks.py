@@ -10,17 +10,19 @@ polynomials (``System.polynomials``), which it eliminates from: no sympy on the 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Union
 
 import flint
 import sympy
 
 from ..eliminate import Budget, Elimination, eliminate
-from ..eliminate.protocol import Ring
 from ..eliminate.select import WitnessGroups
 from ..scene import Compiled
 from ..system import System
 
-__all__ = ["EliminationTask", "curve_task", "eliminant_tasks", "equations_for"]
+__all__ = ["EliminationTask", "Eliminant", "curve_task", "eliminant_tasks", "equations_for"]
+
+Eliminant = Union[Elimination[flint.fmpq_mpoly], Elimination[sympy.Poly]]  # what ``eliminate`` gives (flint's, sympy's)
 
 
 @dataclass(frozen=True)
@@ -32,7 +34,7 @@ class EliminationTask:
     witnesses: WitnessGroups
     polynomials: tuple[flint.fmpq_mpoly, ...] = ()  # the equations in python-flint, when the task has them
 
-    def run(self, method: str, backend: str, budget: Budget | None = None) -> Elimination[Ring]:
+    def run(self, method: str, backend: str, budget: Budget | None = None) -> Eliminant:
         return eliminate(self.polynomials or self.equations, self.eliminate, self.keep, method=method,
                          backend=backend, witnesses=self.witnesses, parameters=self.parameters, budget=budget)
 

@@ -161,9 +161,10 @@ def _consistent(engine: Backend[P], polys: list[P]) -> list[P]:
     return polys
 
 
-def eliminate(equations: Sequence[sympy.Expr | flint.fmpq_mpoly], eliminate: Sequence[str], keep: Sequence[str],
+def eliminate(equations: Sequence[sympy.Expr | flint.fmpq_mpoly], eliminate: Sequence[str], keep: Sequence[str], *,
               method: str = DEFAULT_METHOD, backend: str = "flint", witnesses: WitnessGroups = (),
-              parameters: Sequence[str] = (), budget: Budget | None = None) -> Elimination[Any]:
+              parameters: Sequence[str] = (), budget: Budget | None = None
+              ) -> Elimination[flint.fmpq_mpoly] | Elimination[sympy.Poly]:
     """Eliminate the variables ``eliminate`` from ``equations`` (polynomials over QQ: sympy
     expressions, or python-flint ``fmpq_mpoly`` over any names, matched by name).
 
@@ -201,7 +202,7 @@ def _eliminate(engine: Backend[P], method: str, run: Method, equations: Sequence
     factors, proof = factor_with(engine, eliminant, outcome.multipliers)
     # in the elimination ideal itself: no factor chosen, no equation divided, on the way
     in_ideal = member and not outcome.dropped and not any(kind in OUTSIDE_THE_IDEAL for kind, _ in outcome.log)
-    kept, lost, proof = _choose(engine, factors, proof, in_ideal, request)
+    kept, lost, proof = _choose(engine, factors, proof=proof, in_ideal=in_ideal, request=request)
     log = outcome.log + ([("proved-irreducible", proof.variable or "factored")] if proof else [])
     product = kept[0]
     for factor in kept[1:]:
@@ -223,7 +224,7 @@ def _eliminate(engine: Backend[P], method: str, run: Method, equations: Sequence
     )
 
 
-def _choose(engine: Backend[P], factors: list[P], proof: IrreducibilityProof | None, in_ideal: bool,
+def _choose(engine: Backend[P], factors: list[P], *, proof: IrreducibilityProof | None, in_ideal: bool,
             request: EliminationRequest) -> tuple[list[P], list[P], IrreducibilityProof | None]:
     """``(kept, dropped, proof)``: the factors the motion lies on, chosen at the witnesses.
 

@@ -8,7 +8,7 @@ expressions, and leave as sympy expressions, through ``algkin.system.convert``.
 
 import math
 from collections.abc import Mapping, Sequence
-from typing import Any, cast
+from typing import Generic, Protocol, TypeVar, cast
 
 import flint
 import sympy
@@ -21,91 +21,104 @@ from ..system.convert import flint_context, to_flint, to_flint_integer, to_sympy
 
 __all__ = ["FlintBackend", "FlintMpolys", "SympyBackend", "BACKENDS"]
 
+M = TypeVar("M", flint.fmpq_mpoly, flint.nmod_mpoly)  # the polynomials of a python-flint backend
+_M_co = TypeVar("_M_co", covariant=True)
 
-class FlintMpolys:
+
+class _Context(Protocol[_M_co]):
+    """What the shared operations ask of a python-flint polynomial context."""
+
+    def gens(self) -> tuple[_M_co, ...]: ...
+    def from_dict(self, d: Mapping[tuple[int, ...], int], /) -> _M_co: ...
+
+
+class FlintMpolys(Generic[M]):
     """What python-flint's multivariate polynomials answer alike over the rationals
     (``fmpq_mpoly``) and modulo a prime (``nmod_mpoly``): the two backends share these, each
     adding what its coefficients decide (conversion, factoring, scaling, normalisation).
     ``self.ctx`` is the subclass's polynomial context over ``names``."""
 
-    ctx: Any
+    ctx: _Context[M]
 
     def __init__(self, names: Sequence[str]) -> None:
         self.names = tuple(names)
         self.index = {n: i for i, n in enumerate(self.names)}
         self.rational = flint_context(self.names)  # where ``from_flint`` projects to
 
-    def variables(self, poly: Any) -> set[str]:
+    def variables(self, poly: M) -> set[str]:
         return {n for n, d in zip(self.names, poly.degrees()) if d > 0}
 
-    def from_flint(self, poly: flint.fmpq_mpoly) -> Any:
+    def from_flint(self, poly: flint.fmpq_mpoly) -> M:
         """``poly`` (over any names) in this backend's ring, its variables matched by name."""
         if poly.context() is not self.rational:
             _refuse_strays(self.names, poly)
             poly = poly.project_to_context(self.rational)
         return self.from_rational(poly)
 
-    def from_rational(self, poly: flint.fmpq_mpoly) -> Any:
+    def from_rational(self, poly: flint.fmpq_mpoly) -> M:
         """An ``fmpq_mpoly`` over ``names`` as this backend's polynomial."""
         raise NotImplementedError
 
-    def irreducibility(self, poly: Any) -> IrreducibilityProof | None:
+    def irreducibility(self, poly: M) -> IrreducibilityProof | None:
         """A proof that ``poly`` is irreducible, found more cheaply than factoring; None if not found."""
         return None
 
-    def degree(self, poly: Any, var: str) -> int:
+    def degree(self, poly: M, var: str) -> int:
         return int(poly.degrees()[self.index[var]])
 
-    def is_constant(self, poly: Any) -> bool:
+    def is_constant(self, poly: M) -> bool:
         # flint's is_constant scans every term for the total degree; a constant has one term
         return len(poly) <= 1 and not any(poly.degrees())
 
-    def total_degree(self, poly: Any) -> int:
+    def total_degree(self, poly: M) -> int:
         return int(poly.total_degree())
 
-    def nterms(self, poly: Any) -> int:
+    def nterms(self, poly: M) -> int:
         return len(poly)
 
-    def is_zero(self, poly: Any) -> bool:
+    def is_zero(self, poly: M) -> bool:
         return bool(poly.is_zero())
 
-    def resultant(self, f: Any, g: Any, var: str) -> Any:
-        return f.resultant(g, var)
+    def resultant(self, f: M, g: M, var: str) -> M:
+        # nmod_mpoly's stub takes Self from typing, which is Any on Python 3.10: the type said here
+        resultant: M = f.resultant(g, var)
+        return resultant
 
-    def gcd(self, f: Any, g: Any) -> Any:
+    def gcd(self, f: M, g: M) -> M:
         return f.gcd(g)
 
-    def derivative(self, poly: Any, var: str) -> Any:
+    def derivative(self, poly: M, var: str) -> M:
         return poly.derivative(var)
 
-    def scale(self, poly: Any, numerator: int, denominator: int) -> Any:
+    def scale(self, poly: M, numerator: int, denominator: int) -> M:
         """``poly * numerator / denominator``: what the coefficients' ring says (each backend's own)."""
         raise NotImplementedError
 
-    def substitute(self, poly: Any, var: str, value: Any) -> Any:
+    def substitute(self, poly: M, var: str, value: M) -> M:
         """``poly`` with ``var`` replaced by the polynomial ``value``: one composition in C."""
         gens = list(self.ctx.gens())
         gens[self.index[var]] = value
         return poly.compose(*gens)
 
-    def zero(self) -> Any:
+    def zero(self) -> M:
         return self.ctx.from_dict({})
 
-    def one(self) -> Any:
+    def one(self) -> M:
         return self.ctx.from_dict({(0,) * len(self.names): 1})
 
-    def quotient(self, f: Any, g: Any) -> Any | None:
+    def quotient(self, f: M, g: M) -> M | None:
         """``f / g`` if ``g`` divides ``f``, else None."""
         quotient, remainder = divmod(f, g)
         return quotient if remainder.is_zero() else None
 
-    def split(self, poly: Any, variables: Sequence[str]) -> dict[tuple[int, ...], Any]:
+    def split(self, poly: M, variables: Sequence[str]) -> dict[tuple[int, ...], M]:
         """``{exponents in variables: coefficient free of them}``, in C: the coefficient of
         ``x**k`` is the ``k``-th derivative at ``x = 0`` over ``k!`` (a Python loop over
         the terms is ten times slower; modulo a prime above every degree ``k!`` is invertible)."""
         if not variables:
             return {(): poly}
-        name, parts, factorial, top = variables[0], {}, 1, self.degree(poly, variables[0])
+        name, factorial, top = variables[0], 1, self.degree(poly, variables[0])
+        parts: dict[tuple[int, ...], M] = {}
         for degree in range(top + 1):
             part = poly.subs({name: 0}) if degree < top else poly
             if not part.is_zero():
@@ -116,7 +129,7 @@ class FlintMpolys:
                 poly, factorial = poly.derivative(name), factorial * (degree + 1)
         return parts
 
-    def join(self, parts: Mapping[tuple[int, ...], Any], variables: Sequence[str]) -> Any:
+    def join(self, parts: Mapping[tuple[int, ...], M], variables: Sequence[str]) -> M:
         """The inverse of ``split``."""
         gens = self.ctx.gens()
         where = [gens[self.index[v]] for v in variables]
@@ -136,10 +149,11 @@ def _refuse_strays(names: Sequence[str], poly: flint.fmpq_mpoly) -> None:
         raise ComputationError(f"an equation holds {', '.join(stray)}, neither eliminated nor kept")
 
 
-class FlintBackend(FlintMpolys):
+class FlintBackend(FlintMpolys[flint.fmpq_mpoly]):
     """python-flint ``fmpq_mpoly``: resultants, factoring and Buchberger in C."""
 
     name = "flint"
+    ctx: flint.fmpq_mpoly_ctx
 
     def __init__(self, names: Sequence[str]) -> None:
         super().__init__(names)
@@ -228,13 +242,13 @@ class SympyBackend:
         return {n for n, d in zip(self.names, poly.degree_list()) if d > 0}
 
     def degree(self, poly: sympy.Poly, var: str) -> int:
-        return poly.degree(self.gens[self.index[var]])
+        return int(poly.degree(self.gens[self.index[var]]))
 
     def is_constant(self, poly: sympy.Poly) -> bool:
-        return poly.is_ground
+        return bool(poly.is_ground)
 
     def total_degree(self, poly: sympy.Poly) -> int:
-        return poly.total_degree()
+        return int(poly.total_degree())
 
     def nterms(self, poly: sympy.Poly) -> int:
         return len(poly.terms())
@@ -243,7 +257,7 @@ class SympyBackend:
         return max((int(c.p).bit_length() + int(c.q).bit_length() for c in poly.coeffs()), default=0)
 
     def is_zero(self, poly: sympy.Poly) -> bool:
-        return poly.is_zero
+        return bool(poly.is_zero)
 
     def resultant(self, f: sympy.Poly, g: sympy.Poly, var: str) -> sympy.Poly:
         gen = self.gens[self.names.index(var)]

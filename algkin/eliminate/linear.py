@@ -21,6 +21,9 @@ py*(px**2 - 2*px + py**2)*(px**4 - 4*px**3 + 2*px**2*py**2 + 5*px**2 - 4*px*py**
 """
 
 from collections.abc import Sequence
+from typing import Generic
+
+import attrs
 
 from .methods import cheapest, resultant_chain, resultant_step
 from .protocol import Backend, P
@@ -59,10 +62,10 @@ def linear_elimination(backend: Backend[P], polys: list[P], request: Elimination
         polys = [p for p in outcome.left if not backend.is_zero(p)]
         found = _linear_unknown(backend, polys, remaining, allowed)
         if found is not None:
-            closing = closing or not backend.variables(found[2]) <= set(request.parameters)
+            closing = closing or not backend.variables(found.coefficient) <= set(request.parameters)
             # after the last unknown, the multiplier's factors are left for factoring to divide out
-            outcome = outcome.then(_substitution(backend, polys, found, len(remaining) > 1, request))
-            remaining.remove(found[1])
+            outcome = outcome.then(_substitution(backend, polys, found, strip=len(remaining) > 1, request=request))
+            remaining.remove(found.var)
             continue
         # after a multiplier held a kept variable, the axis' closing Cramer step brings in only
         # its factors, which trial division removes, where a resultant brings mismatched roots
@@ -89,13 +92,23 @@ def _by_resultants(backend: Backend[P], polys: list[P], remaining: Sequence[str]
     apply again (on the six-bars, the closing Cramer step, which brings in no mismatched
     roots the way a second resultant does). The step, and the unknowns it eliminated."""
     var = cheapest(backend, polys, remaining)
-    return resultant_step(backend, polys, var, request, last=len(remaining) == 1), [var]
+    return resultant_step(backend, polys, var, request=request, last=len(remaining) == 1), [var]
+
+
+@attrs.frozen
+class _Linear(Generic[P]):
+    """An equation ``pivot = coefficient * var + rest`` linear in the unknown ``var``."""
+
+    pivot: P
+    var: str
+    coefficient: P
+    rest: P
 
 
 def _linear_unknown(backend: Backend[P], polys: Sequence[P], remaining: Sequence[str], allowed: set[str]
-                    ) -> tuple[P, str, P, P] | None:
-    """``(poly, var, coefficient, rest)`` for the simplest equation linear in an unknown whose
-    coefficient holds only ``allowed`` variables, or None."""
+                    ) -> _Linear[P] | None:
+    """The simplest equation linear in an unknown whose coefficient holds only ``allowed``
+    variables, or None."""
     best: tuple[tuple[bool, int, int], P, str, P] | None = None
     for var in remaining:
         for poly in polys:
@@ -112,15 +125,15 @@ def _linear_unknown(backend: Backend[P], polys: Sequence[P], remaining: Sequence
     if best is None:
         return None
     _, poly, var, coefficient = best
-    return poly, var, coefficient, backend.split(poly, [var]).get((0,), backend.zero())
+    return _Linear(poly, var, coefficient, backend.split(poly, [var]).get((0,), backend.zero()))
 
 
-def _substitution(backend: Backend[P], polys: list[P], found: tuple[P, str, P, P], strip: bool,
+def _substitution(backend: Backend[P], polys: list[P], found: _Linear[P], *, strip: bool,
                   request: EliminationRequest) -> MethodOutcome[P]:
     """The step substituting the unknown of ``found`` (``_linear_unknown``) out of ``polys``;
     its coefficient is a multiplier if it holds a variable."""
-    pivot, var, coefficient, rest = found
-    polys, stripped = _substitute(backend, polys, pivot, var, coefficient, rest, strip)
+    var, coefficient = found.var, found.coefficient
+    polys, stripped = _substitute(backend, polys, found, strip=strip)
     request.budget.check_terms(max(map(backend.nterms, polys), default=0), f"an equation after substituting {var}")
     multipliers = [] if backend.is_constant(coefficient) else [coefficient]
     # a stripped equation is no longer in the ideal (only in its saturation by the multiplier)
@@ -130,10 +143,11 @@ def _substitution(backend: Backend[P], polys: list[P], found: tuple[P, str, P, P
     return MethodOutcome(polys, log=log, multipliers=multipliers)
 
 
-def _substitute(backend: Backend[P], polys: Sequence[P], pivot: P, var: str, coefficient: P, rest: P,
-                strip: bool) -> tuple[list[P], bool]:
-    """``a**k f(-rest/a)`` for every other equation ``f`` of degree ``k`` in ``var``, with the
-    factors it shares with ``a`` stripped (if ``strip``); and whether any was."""
+def _substitute(backend: Backend[P], polys: Sequence[P], found: _Linear[P], *, strip: bool) -> tuple[list[P], bool]:
+    """``a**k f(-rest/a)`` for every other equation ``f`` of degree ``k`` in ``var`` (``found``'s
+    unknown, ``a`` its coefficient), with the factors it shares with ``a`` stripped (if ``strip``);
+    and whether any was."""
+    pivot, var, coefficient, rest = found.pivot, found.var, found.coefficient, found.rest
     minus_rest, scales = [backend.one()], [backend.one()]  # powers of -rest and of a, as needed
     pieces = backend.factors(coefficient) if strip and not backend.is_constant(coefficient) else []
     out: list[P] = []

@@ -76,7 +76,7 @@ def cheapest(backend: Backend[P], polys: Sequence[P], remaining: Sequence[str]) 
     return min(remaining, key=cost)
 
 
-def resultant_step(backend: Backend[P], polys: list[P], var: str, request: EliminationRequest,
+def resultant_step(backend: Backend[P], polys: list[P], var: str, *, request: EliminationRequest,
                    last: bool = False) -> MethodOutcome[P]:
     """``polys`` with ``var`` eliminated: resultants of its holders against the one of least
     degree in it, each factored and cut to the factors the witnesses satisfy, unless it is the
@@ -112,7 +112,7 @@ def resultant_chain(backend: Backend[P], polys: list[P], request: EliminationReq
     while remaining:
         var = cheapest(backend, outcome.left, remaining)
         remaining.remove(var)
-        outcome = outcome.then(resultant_step(backend, outcome.left, var, request, last=not remaining))
+        outcome = outcome.then(resultant_step(backend, outcome.left, var, request=request, last=not remaining))
     return outcome
 
 

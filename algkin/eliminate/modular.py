@@ -56,7 +56,7 @@ PRIMES = _primes_below(2**31, 64)
 """Primes below 2**31, largest first: one modular image each."""
 
 
-class ModularBackend(FlintMpolys):
+class ModularBackend(FlintMpolys[flint.nmod_mpoly]):
     """python-flint ``nmod_mpoly`` over ``names``, modulo the prime ``modulus``; ``drop``: the
     shapes of factors ``factors`` leaves out (learned where witnesses chose)."""
 

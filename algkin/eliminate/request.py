@@ -6,9 +6,8 @@ the method found, so nothing is passed in to be filled. The steps inside a metho
 outcomes too, chained with ``MethodOutcome.then``.
 """
 
-from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any, Generic
+from typing import Generic, Protocol
 
 from ..runtime.budget import Budget, current
 from .protocol import Backend, P
@@ -48,5 +47,7 @@ class MethodOutcome(Generic[P]):
                              self.multipliers + step.multipliers)
 
 
-Method = Callable[[Backend[Any], list[Any], EliminationRequest], MethodOutcome[Any]]
-"""An elimination method: ``METHODS`` maps names to these."""
+class Method(Protocol):
+    """An elimination method, on any backend: ``METHODS`` maps names to these."""
+
+    def __call__(self, backend: Backend[P], polys: list[P], request: EliminationRequest, /) -> MethodOutcome[P]: ...

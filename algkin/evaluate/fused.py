@@ -41,12 +41,13 @@ import sys
 from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from types import ModuleType
+from typing import Any
 
 import numpy as np
 
 from ..errors import UsageError
 from ..runtime.files import write_atomic
-from .trace import Program
+from .trace import Operand, Program
 
 __all__ = ["Kernel", "ENGINES", "WARM_SAMPLES", "COLD_SAMPLES", "BLOCK", "numba_available", "cache_directory", "split"]
 
@@ -88,7 +89,7 @@ class Kernel:
         self.prelude, self.core = split(program)
         self.source = module_source(self.core)
         self.key = hashlib.sha256(self.source.encode()).hexdigest()[:20]
-        scope: dict = {"np": np}
+        scope: dict[str, Any] = {"np": np}
         exec(compile(prelude_source(self.prelude), "<algkin prelude>", "exec"), scope)  # noqa: S102 - our own code
         self.vectorised = scope["prelude"]
 
@@ -127,7 +128,7 @@ class Kernel:
         def block(start: int) -> None:
             part = slice(start, start + BLOCK)
             named = dict(zip(self.program.inputs, (a[part] for a in flat)))
-            named.update(zip(self.prelude.outputs, self.vectorised(*(a[part] for a in flat))))
+            named.update(zip(self.prelude.output_names(), self.vectorised(*(a[part] for a in flat))))
             kernel(*(named[n] for n in self.core.inputs), *(o[part] for o in out))
 
         starts = range(0, flat[0].size, BLOCK)
@@ -198,7 +199,7 @@ def split(program: Program) -> tuple[Program, Program]:
     """``(prelude, core)``: the half-angle tangents and what they are taken of (numpy's vectorised
     ``tan``, some ten times the speed of a scalar libm call, and the very values the numpy form
     uses), then every other line, reading the prelude's outputs and the inputs."""
-    tangents = [name for name, op, _ in program.lines if op == "tan"]
+    tangents: list[Operand] = [name for name, op, _ in program.lines if op == "tan"]
     prelude = Program(list(program.inputs), program.lines, tangents).select(range(len(tangents)))
     done = {name for name, _, _ in prelude.lines}
     core = Program([], [line for line in program.lines if line[0] not in done], list(program.outputs))
@@ -211,7 +212,7 @@ def split(program: Program) -> tuple[Program, Program]:
 def prelude_source(prelude: Program) -> str:
     """The prelude as a numpy function of the inputs' arrays."""
     return "\n".join([f"def prelude({', '.join(prelude.inputs)}):", prelude.body("numpy", indent="    "),
-                      f"    return ({''.join(o + ', ' for o in prelude.outputs)})"])
+                      f"    return ({''.join(o + ', ' for o in prelude.output_names())})"])
 
 
 def module_source(core: Program, cache: bool = True) -> str:

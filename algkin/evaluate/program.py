@@ -22,47 +22,51 @@ subexpressions computed once (``sympy.cse``), for one ``NumberKind``:
 True
 """
 
+from __future__ import annotations
+
 import functools
-from collections.abc import Callable, Sequence
-from typing import TypeAlias
+from collections.abc import Callable, Iterable, Sequence
+from typing import Any, Generic, TypeAlias
 
 import flint
 import numpy as np
 import sympy
-from numpy.typing import NDArray
 
 from .tree import ARB, FLOAT, MPMATH, NUMPY  # noqa: F401 - the kinds a program is compiled for
-from .tree import integer_power
+from .tree import Floats, N, NumberKind, integer_power
 
-__all__ = ["compile_program", "columns", "Floats", "ArrayProgram", "BallProgram"]
+__all__ = ["compile_program", "columns", "Floats", "CompiledProgram", "ArrayProgram", "BallProgram"]
 
-Floats: TypeAlias = NDArray[np.float64]
+# A compiled program: the values of its names in, one value out per expression (an integer
+# where the expression is one)
+CompiledProgram: TypeAlias = Callable[..., list[N | int]]
 # ``compile_program(..., NUMPY)``: arrays in, one value out per expression (a number where the
 # expression is constant)
-ArrayProgram: TypeAlias = Callable[..., list[Floats | float]]
-# ``compile_program(..., ARB)``: balls in, one value out per expression (an integer where the
-# expression is one)
-BallProgram: TypeAlias = Callable[..., list[flint.arb | int]]
+ArrayProgram: TypeAlias = CompiledProgram[Floats | float]
+# ``compile_program(..., ARB)``: balls in
+BallProgram: TypeAlias = CompiledProgram[flint.arb]
 
 
 @functools.lru_cache(maxsize=512)
-def _cached(exprs, names, kind):
+def _cached(exprs: tuple[sympy.Expr, ...], names: tuple[str, ...], kind: NumberKind[N]) -> _Program[N]:
     return _Program(exprs, names, kind)
 
 
-def compile_program(exprs, names, kind):
+def compile_program(exprs: Iterable[sympy.Expr], names: Iterable[str], kind: NumberKind[N]) -> CompiledProgram[N]:
     """A function of the values of ``names`` (in order) returning ``exprs``' values, as a list.
 
     Compiled once per ``(exprs, names, kind)`` and cached: a second verification of the same
     scene reuses it.
     """
-    return _cached(tuple(sympy.sympify(e) for e in exprs), tuple(names), kind)
+    # lru_cache's wrapper of a generic function returns Any: the type said here
+    program: _Program[N] = _cached(tuple(sympy.sympify(e) for e in exprs), tuple(names), kind)
+    return program
 
 
-class _Program:
-    def __init__(self, exprs, names, kind):
+class _Program(Generic[N]):
+    def __init__(self, exprs: tuple[sympy.Expr, ...], names: tuple[str, ...], kind: NumberKind[N]) -> None:
         self.kind = kind
-        self.rationals = []
+        self.rationals: list[tuple[int, int]] = []
         arguments = {sympy.Symbol(n, real=True): f"a{k}" for k, n in enumerate(names)}
         arguments.update({sympy.Symbol(n): f"a{k}" for k, n in enumerate(names)})
         self.arguments = arguments
@@ -75,15 +79,15 @@ class _Program:
         # the rationals, made in the kind at call time, only where there are any
         lines[:0] = [f"def program({', '.join(f'a{k}' for k in range(len(names)))}):"] + \
             (["    q = constants()"] if self.rationals else [])
-        scope = {"constants": self._constants, "power": integer_power, "sqrt": kind.sqrt}
+        scope: dict[str, Any] = {"constants": self._constants, "power": integer_power, "sqrt": kind.sqrt}
         exec(compile("\n".join(lines), "<algkin program>", "exec"), scope)  # noqa: S102 - our own code, from a sympy tree
-        self.program = scope["program"]
-        self._made = (None, None)
+        self.program: CompiledProgram[N] = scope["program"]  # exec's namespace holds what the code defined
+        self._made: tuple[int | None, list[N]] = (None, [])
 
-    def __call__(self, *values):
+    def __call__(self, *values: N) -> list[N | int]:
         return self.program(*values)
 
-    def _constants(self):
+    def _constants(self) -> list[N]:
         """The rationals in the kind, remade when the working precision changed (balls' precision;
         floats and arrays ignore it)."""
         precision = flint.ctx.prec
@@ -91,7 +95,7 @@ class _Program:
             self._made = (precision, [self.kind.number(p, q) for p, q in self.rationals])
         return self._made[1]
 
-    def _code(self, node):
+    def _code(self, node: sympy.Expr) -> str:
         if node in self.arguments:
             return self.arguments[node]
         if node.is_Integer:
@@ -108,12 +112,12 @@ class _Program:
             return f"abs({self._code(node.args[0])})"
         raise TypeError(f"cannot compile {type(node).__name__} in {node}")
 
-    def _constant(self, node):
+    def _constant(self, node: sympy.Rational) -> str:
         """A rational made by the kind at call time (an integer too, where a root is taken of it)."""
         self.rationals.append((int(node.p), int(node.q)))
         return f"q[{len(self.rationals) - 1}]"
 
-    def _power(self, node):
+    def _power(self, node: sympy.Pow) -> str:
         exponent = node.exp
         base = self._constant(node.base) if node.base.is_Rational else self._code(node.base)
         if exponent.is_Rational and exponent.q == 2:

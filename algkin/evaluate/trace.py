@@ -32,6 +32,7 @@ import re
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from typing import ClassVar, SupportsFloat, TypeAlias
 
 import numpy as np
 
@@ -44,6 +45,9 @@ _UFUNCS = {np.add: "add", np.subtract: "sub", np.multiply: "mul", np.true_divide
            np.negative: "neg", np.sqrt: "sqrt", np.tan: "tan", np.cos: "cos", np.sin: "sin", np.hypot: "hypot",
            np.copysign: "copysign", np.maximum: "maximum", np.minimum: "minimum", np.absolute: "abs",
            np.square: "square"}
+
+Operand: TypeAlias = "str | float"  # a traced value's name, or a constant
+Line: TypeAlias = "tuple[str, str, tuple[Operand, ...]]"  # (name, op, operands)
 
 # Each language's spelling of the operations a program holds; {0}, {1}, {2} are operands.
 LANGUAGES = {
@@ -70,8 +74,8 @@ class Program:
     """Straight-line code: ``lines`` of ``(name, op, operands)``, operands names or floats."""
 
     inputs: list[str]
-    lines: list[tuple[str, str, tuple]] = field(default_factory=list)
-    outputs: list = field(default_factory=list)  # names, or floats where an output is constant
+    lines: list[Line] = field(default_factory=list)
+    outputs: list[Operand] = field(default_factory=list)  # names, or floats where an output is constant
     prefix: str = "v"  # of the temporaries' names: v0, v1, ... (v_0, ... if an input is called v0)
 
     def __post_init__(self) -> None:
@@ -83,7 +87,7 @@ class Program:
         self.lines.append((name, op, tuple(_operand(a) for a in operands)))
         return Value(self, name)
 
-    def expression(self, op: str, operands: Sequence, language: str) -> str:
+    def expression(self, op: str, operands: Sequence[Operand], language: str) -> str:
         """One operation in ``language``."""
         code = [self.atom(a, language) for a in operands]
         if op in _BINARY:
@@ -92,10 +96,10 @@ class Program:
             return f"{code[0]} * {code[0]}"
         return LANGUAGES[language][op].format(*code)
 
-    def atom(self, operand: object, language: str) -> str:
+    def atom(self, operand: Operand, language: str) -> str:
         if isinstance(operand, str):
             return operand
-        value = float(operand)  # type: ignore[arg-type]
+        value = float(operand)
         if np.isnan(value):
             return LANGUAGES[language]["nan"]
         if np.isinf(value):
@@ -109,6 +113,13 @@ class Program:
         return "\n".join(f"{indent}{declare}{name} = {self.expression(op, operands, language)}{end}"
                          for name, op, operands in self.lines)
 
+    def output_names(self) -> list[str]:
+        """The outputs, each a line's name (a program none of whose outputs is constant, as a prelude)."""
+        names = [o for o in self.outputs if isinstance(o, str)]
+        if len(names) < len(self.outputs):
+            raise TypeError("a constant output has no name")
+        return names
+
     def reads(self) -> set[str]:
         """The names some line or output reads."""
         names = {a for _, _, operands in self.lines for a in operands if isinstance(a, str)}
@@ -118,7 +129,7 @@ class Program:
         """The program of the outputs at positions ``outputs`` only, the lines none of them needs dropped."""
         kept = [self.outputs[k] for k in outputs]
         needed = {o for o in kept if isinstance(o, str)}
-        lines = []
+        lines: list[Line] = []
         for name, op, operands in reversed(self.lines):
             if name in needed:
                 lines.append((name, op, operands))
@@ -130,6 +141,21 @@ class Value:
     """A traced float: arithmetic on it and numpy ufuncs of it append lines to its program."""
 
     __array_priority__ = 1000  # numpy defers to our operators, never makes an object array
+    # the arithmetic and comparisons, each appending its line (set below the class, by _binary)
+    __add__: ClassVar[Callable[[Value, object], Value]]
+    __radd__: ClassVar[Callable[[Value, object], Value]]
+    __sub__: ClassVar[Callable[[Value, object], Value]]
+    __rsub__: ClassVar[Callable[[Value, object], Value]]
+    __mul__: ClassVar[Callable[[Value, object], Value]]
+    __rmul__: ClassVar[Callable[[Value, object], Value]]
+    __truediv__: ClassVar[Callable[[Value, object], Value]]
+    __rtruediv__: ClassVar[Callable[[Value, object], Value]]
+    __gt__: ClassVar[Callable[[Value, object], Value]]
+    __ge__: ClassVar[Callable[[Value, object], Value]]
+    __lt__: ClassVar[Callable[[Value, object], Value]]
+    __le__: ClassVar[Callable[[Value, object], Value]]
+    __eq__: ClassVar[Callable[[Value, object], Value]]  # type: ignore[assignment]  # traced, not compared
+    __ne__: ClassVar[Callable[[Value, object], Value]]  # type: ignore[assignment]  # traced, not compared
 
     def __init__(self, program: Program, name: str) -> None:
         self.program, self.name = program, name
@@ -139,11 +165,12 @@ class Value:
             raise TypeError(f"cannot trace numpy's {ufunc.__name__}.{method}")
         return self.program.emit(_UFUNCS[ufunc], *inputs)
 
-    def __array_function__(self, func: Callable, types: object, args: tuple, kwargs: dict) -> object:
+    def __array_function__(self, func: Callable[..., object], types: object, args: tuple[object, ...],
+                           kwargs: dict[str, object]) -> object:
         if func is np.where and not kwargs:
             return self.program.emit("where", *args)
         if func is np.full_like:  # a constant the shape of the samples: in a scalar loop, the constant
-            return float(args[1] if len(args) > 1 else kwargs["fill_value"])
+            return _constant(args[1] if len(args) > 1 else kwargs["fill_value"])
         raise TypeError(f"cannot trace numpy's {func.__name__}")
 
     def __bool__(self) -> bool:
@@ -183,13 +210,19 @@ for _op in ("gt", "ge", "lt", "le", "eq", "ne"):
     setattr(Value, f"__{_op}__", _binary(_op))
 
 
-def _operand(value: object) -> object:
+def _operand(value: object) -> Operand:
     """A traced value's name, or a constant as a float (numpy scalars, ints and bools alike)."""
     if isinstance(value, Value):
         return value.name
+    return _constant(value)
+
+
+def _constant(value: object) -> float:
     if isinstance(value, (bool, np.bool_)):
         return float(bool(value))
-    return float(value)  # type: ignore[arg-type]
+    if isinstance(value, SupportsFloat):
+        return float(value)
+    raise TypeError(f"cannot trace the constant {value!r}")
 
 
 def trace(function: Callable[..., Sequence[object]], inputs: Sequence[str]) -> Program:

@@ -33,14 +33,18 @@ import pathlib
 import shutil
 import stat
 import tempfile
+from collections.abc import Iterator
+from typing import TypeAlias
 
 from ..errors import OutputError, UsageError
 
 __all__ = ["atomic_output", "write_atomic", "check_output", "check_directory"]
 
+_Path: TypeAlias = "str | os.PathLike[str]"  # a path as a caller gives it
+
 
 @contextlib.contextmanager
-def atomic_output(path):
+def atomic_output(path: _Path) -> Iterator[pathlib.Path]:
     """Yield a temporary path with ``path``'s suffix; when the block ends normally it replaces ``path``.
 
     A device or pipe (``/dev/stdout``, ``/dev/full``) cannot be renamed over and holds
@@ -60,13 +64,13 @@ def atomic_output(path):
             os.remove(temporary)
 
 
-def write_atomic(path, data):
+def write_atomic(path: _Path, data: str | bytes) -> None:
     """Write ``data`` (text as UTF-8, or bytes) to ``path`` through ``atomic_output``."""
     with atomic_output(path) as temporary:
         temporary.write_bytes(data.encode("utf-8") if isinstance(data, str) else data)
 
 
-def _temporary(folder, target):
+def _temporary(folder: _Path, target: _Path) -> str:
     """A new empty file in ``folder`` named after ``target``: its stem (cut short, so that a name
     near the system's limit still has a temporary beside it) and its suffix."""
     stem, suffix = os.path.splitext(os.path.basename(target))
@@ -79,7 +83,7 @@ _STEM = 64  # characters of the target's stem (and suffix) kept in its temporary
 
 
 @contextlib.contextmanager
-def _reported(path):
+def _reported(path: _Path) -> Iterator[None]:
     try:
         yield
     except OutputError:
@@ -88,7 +92,7 @@ def _reported(path):
         raise OutputError(path, err.strerror or str(err)) from err
 
 
-def _deliver(temporary, target, special):
+def _deliver(temporary: str, target: str, special: bool) -> None:
     """Copy into a device or pipe; otherwise flush, give the target's permissions (a new
     file: the umask's) and rename over it."""
     if special:
@@ -107,7 +111,7 @@ def _deliver(temporary, target, special):
     os.replace(temporary, target)
 
 
-def check_output(option, path):
+def check_output(option: str, path: _Path) -> None:
     """Raise ``UsageError`` naming ``option`` unless a file can be written at ``path``: a file's
     name (not empty, not a directory's), in a directory where a file can be made now.
 
@@ -133,7 +137,7 @@ def check_output(option, path):
         _check_file(option, text, pathlib.Path(os.path.realpath(text)))
 
 
-def _check_file(option, text, target):
+def _check_file(option: str, text: str, target: pathlib.Path) -> None:
     if target.is_dir():
         raise UsageError(option, text, "is a directory")
     if not target.parent.is_dir():
@@ -148,7 +152,7 @@ def _check_file(option, text, target):
         os.remove(_temporary(target.parent, target))  # what the write does first: root, a read-only mount
 
 
-def check_directory(option, path):
+def check_directory(option: str, path: _Path) -> None:
     """Raise ``UsageError`` unless ``path`` is, or can be made, a writable directory."""
     text = str(path)
     if not text:
@@ -167,7 +171,7 @@ def check_directory(option, path):
 
 
 @contextlib.contextmanager
-def _refused(option, text, why="cannot be written: "):
+def _refused(option: str, text: str, why: str = "cannot be written: ") -> Iterator[None]:
     """An ``OSError`` while a path is checked (a name too long, a read-only file system) as a
     ``UsageError``: ``why`` and the system's reason."""
     try:

@@ -64,6 +64,8 @@ class FrozenDict(Mapping[K, V]):
         self._items, self._hash = items, None
 
 
+# not generic: attrs' mypy plugin cannot solve a converter's type variables, and this is the value
+# classes' converter
 def frozen(items: Union[Mapping[Any, Any], Iterable[tuple[Any, Any]]] = ()) -> FrozenDict[Any, Any]:
     """``items`` as a ``FrozenDict`` (itself when it is one already): the converter of value classes' mappings.
 

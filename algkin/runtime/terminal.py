@@ -9,7 +9,7 @@ __all__ = ["terminal_safe", "one_line"]
 _UNSAFE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u061c\u200e\u200f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
 
 
-def terminal_safe(text):
+def terminal_safe(text: str) -> str:
     r"""``text`` with control and bidi characters escaped; newlines and tabs kept.
 
     >>> terminal_safe("scene \x1b[31mred\u202e\n")
@@ -18,7 +18,7 @@ def terminal_safe(text):
     return _UNSAFE.sub(lambda m: m.group().encode("unicode_escape").decode("ascii"), text)
 
 
-def one_line(text):
+def one_line(text: str) -> str:
     r"""``text`` as one terminal line: newlines and tabs escaped as well (an error message quoting a
     scene's key or name must not start a second line that reads as algkin's own).
 

@@ -26,11 +26,17 @@ Traceback (most recent call last):
 ValueError: not a number in ASCII: '١'
 """
 
+from __future__ import annotations
+
 import numbers
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from fractions import Fraction
+from typing import TYPE_CHECKING
 
 from ..errors import UsageError
+
+if TYPE_CHECKING:
+    from .budget import Budget
 
 __all__ = ["names", "count", "seed", "budget", "real", "whole", "rational", "MAX_VERIFY_SAMPLES",
            "MAX_ACCURACY_SAMPLES"]
@@ -41,7 +47,7 @@ MAX_VERIFY_SAMPLES = 10_000
 MAX_ACCURACY_SAMPLES = 1_000_000
 
 
-def names(argument, value):
+def names(argument: str, value: Iterable[str] | None) -> tuple[str, ...] | None:
     """A tuple of names from a list (a lone string is a mistake: it would split into letters)."""
     if value is None:
         return None
@@ -53,7 +59,7 @@ def names(argument, value):
         items = tuple(value)
     except TypeError:
         raise UsageError(argument, value, "expected a list of names") from None
-    seen = set()
+    seen: set[str] = set()
     for item in items:
         if not isinstance(item, str):
             raise UsageError(argument, value, f"expected names (strings), got {item!r}")
@@ -63,19 +69,19 @@ def names(argument, value):
     return items
 
 
-def count(argument, value, limit, minimum=0):
+def count(argument: str, value: object, limit: int, *, minimum: int = 0) -> int:
     """A whole number from ``minimum`` to ``limit``."""
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or not minimum <= value <= limit:
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or not minimum <= int(value) <= limit:
         raise UsageError(argument, value, f"expected a whole number from {minimum} to {limit}")
     return int(value)
 
 
-def seed(value):
+def seed(value: object) -> int:
     """A random seed numpy accepts: a whole number from 0 to 2**64 - 1."""
     return count("seed", value, 2**64 - 1)
 
 
-def budget(value):
+def budget(value: object) -> Budget | None:
     """None or a ``Budget``."""
     from .budget import Budget
 
@@ -87,22 +93,22 @@ def budget(value):
 # Numbers in text (command-line values) are ASCII: Python's float(), int() and Fraction() also
 # read other scripts' digits ('١', '１') and strip a no-break space, the tiny language does not.
 
-def real(text):
+def real(text: str) -> float:
     """``float(text)`` of an ASCII ``text``; ValueError otherwise."""
     return float(_ascii(text))
 
 
-def whole(text):
+def whole(text: str) -> int:
     """``int(text)`` of an ASCII ``text``; ValueError otherwise."""
     return int(_ascii(text))
 
 
-def rational(text):
+def rational(text: str) -> Fraction:
     """``Fraction(text)`` of an ASCII ``text`` (``"3/2"``, ``"0.1"`` is 1/10); ValueError otherwise."""
     return Fraction(_ascii(text))
 
 
-def _ascii(text):
+def _ascii(text: object) -> str:
     if not isinstance(text, str) or not text.isascii():
         raise ValueError(f"not a number in ASCII: {text!r}")
     return text

@@ -104,7 +104,8 @@ def resolve_outputs(scene: Scene, requested: Sequence[str] | None) -> list[Outpu
             if any(o.name == output.name and (o.kind, o.points) == (output.kind, output.points) for o in outputs):
                 continue  # asked for twice
             unknowns = {"dist": (output.name,), "angle": angle_unknowns(output.name, output)}.get(output.kind, ())
-            check_output_unknowns(scene.source, "outputs", unknowns, generated, scene.parameters, taken, output.name)
+            check_output_unknowns(scene.source, "outputs", unknowns, generated=generated, parameters=scene.parameters,
+                                  taken=taken, owner=output.name)
         except SceneError as err:
             if text in scene.outputs:  # the scene file's own output: the file is at fault
                 raise
@@ -118,7 +119,7 @@ def resolve_outputs(scene: Scene, requested: Sequence[str] | None) -> list[Outpu
 def _requested_output(scene: Scene, text: str, generated: Mapping[str, str]) -> Output:
     """An output the caller asked for that the scene does not declare (``dist(P, Q)``, ``P.x``,
     ``angle(P, Q)``...), named after its points; SceneError if it cannot be one."""
-    output = parse_output(text, text, scene.points, scene.source, "outputs")
+    output = parse_output(text, text, scene.points, source=scene.source, element="outputs")
     if output.kind == "dist":
         output = attrs.evolve(output, name=f"dist_{output.points[0]}_{output.points[1]}")
         if output.name in scene.parameters:
@@ -224,8 +225,8 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
         coords[name] = (sympy.expand(x), sympy.expand(y))
         _check_rational(scene, name, [*coords[name], *builder.equations[made:]])
     lengths = {v for c in scene.points.values() for length in _lengths(c) for v in length.free_symbols}
-    definitions, output_unknowns, nonnegative, angles = _output_equations(resolved, coords, builder, lengths,
-                                                                          scene.source)
+    definitions, output_unknowns, nonnegative, angles = _output_equations(resolved, coords, builder, lengths=lengths,
+                                                                          source=scene.source)
     equations = [sympy.expand(eq) for eq in builder.equations]
     equations += [pair[0]**2 + pair[1]**2 - 1 for pair in inputs.values() if len(pair) == 2]
     _check_polynomial(scene, equations, symbolic)
@@ -372,7 +373,7 @@ def _check_direction(scene: Scene, name: str, construction: Construction) -> Non
                          "direction must not be zero, got [0, 0] with the parameters' default values")
 
 
-def _output_equations(outputs: Sequence[Output], coords: Mapping[str, Point], builder: Builder,
+def _output_equations(outputs: Sequence[Output], coords: Mapping[str, Point], builder: Builder, *,
                       lengths: set[sympy.Symbol], source: str = "<scene>") \
         -> tuple[dict[str, sympy.Expr], dict[str, tuple[str, ...]], list[str], dict[str, AngleOutput]]:
     definitions: dict[str, sympy.Expr] = {}
@@ -391,8 +392,8 @@ def _output_equations(outputs: Sequence[Output], coords: Mapping[str, Point], bu
             output_unknowns[output.name] = (output.name,)
             continue
         if output.kind == "angle":
-            angles[output.name] = _angle_equations(output, coords, builder, lengths, definitions, nonnegative,
-                                                   source)
+            angles[output.name] = _angle_equations(output, coords, builder, lengths=lengths, definitions=definitions,
+                                                   nonnegative=nonnegative, source=source)
             output_unknowns[output.name] = tuple(u for u in (angles[output.name].cos, angles[output.name].sin) if u)
             continue
         axes = {"point": "xy", "x": "x", "y": "y"}[output.kind]
@@ -410,7 +411,7 @@ def _output_equations(outputs: Sequence[Output], coords: Mapping[str, Point], bu
     return definitions, output_unknowns, nonnegative, angles
 
 
-def _angle_equations(output: Output, coords: Mapping[str, Point], builder: Builder, lengths: set[sympy.Symbol],
+def _angle_equations(output: Output, coords: Mapping[str, Point], builder: Builder, *, lengths: set[sympy.Symbol],
                      definitions: dict[str, sympy.Expr], nonnegative: list[str], source: str) -> AngleOutput:
     """The unknowns and equations of an angle output (see ``AngleOutput``).
 

@@ -76,7 +76,7 @@ def bits_bound(expr: sympy.Expr, bits: Mapping[str, int]) -> int:
     4163
     """
     if expr.is_Rational:
-        return max(abs(expr.p).bit_length(), abs(expr.q).bit_length())
+        return max(int(expr.p).bit_length(), int(expr.q).bit_length())
     if expr.is_Symbol:
         return bits.get(expr.name, 1)
     if expr.is_Pow and expr.exp.is_Integer:

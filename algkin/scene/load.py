@@ -318,7 +318,7 @@ class _Loader:
             self.fail(f"{element}.branch", f"branch must be 'left' or 'right', got {branch!r}")
         return Dyad(bases, lengths, branch)
 
-    def subtable(self, spec: Table, key: str, element: str, keys: tuple[str, ...], example: str) -> Table:
+    def subtable(self, spec: Table, key: str, element: str, *, keys: tuple[str, ...], example: str) -> Table:
         value = spec.get(key)
         if not isinstance(value, dict):
             self.fail(f"{element}.{key}", f"expected a table like {example}, got {value!r}")
@@ -342,7 +342,7 @@ class _Loader:
             self.fail(where, what)
         keys = ("through", given[0]) if given else ("through", "direction")
         example = '{ through = "O", toward = "A" }' if given == ["toward"] else '{ through = "O", direction = [1, 0] }'
-        line = self.subtable(spec, "slider", element, keys, example)
+        line = self.subtable(spec, "slider", element, keys=keys, example=example)
         through = self.point_ref(line["through"], f"{element}.slider.through", names)
         direction: tuple[sympy.Expr, sympy.Expr] | None = None
         toward: str | None = None
@@ -356,7 +356,7 @@ class _Loader:
             direction = (x, y)
             if all(d.is_number and d == 0 for d in direction):
                 self.fail(f"{element}.slider.direction", "direction must not be zero, got [0, 0]")
-        distance = self.subtable(spec, "distance", element, ("to", "length"), '{ to = "A", length = 3 }')
+        distance = self.subtable(spec, "distance", element, keys=("to", "length"), example='{ to = "A", length = 3 }')
         to = self.point_ref(distance["to"], f"{element}.distance.to", names)
         length = self.positive(distance["length"], f"{element}.distance.length")
         branch = spec.get("branch", "ahead")
@@ -396,7 +396,7 @@ class _Loader:
             self.identifier(name, element)
             if not isinstance(text, str):
                 self.fail(element, "expected a string such as \"P\", \"dist(A, B)\", \"P.x\" or \"angle(A, B)\"")
-            outputs[name] = parse_output(name, text, points, self.source, element)
+            outputs[name] = parse_output(name, text, points, source=self.source, element=element)
             if outputs[name].kind == "dist" and name in taken:
                 self.fail(element, f"a distance output needs a name of its own, {name!r} is taken")
         return outputs
@@ -408,14 +408,14 @@ _ANGLE = re.compile(r"^\s*angle\s*\((.*)\)\s*$", re.DOTALL)
 _ANGLE_FORMS = "angle(P, Q) (the direction of PQ) or angle(P, Q, R) (the angle at Q between QP and QR)"
 
 
-def parse_output(name: str, text: str, points: Container[str], source: str = "<scene>",
+def parse_output(name: str, text: str, points: Container[str], *, source: str = "<scene>",
                  element: str | None = None) -> Output:
     """Read an output string: a point name, ``dist(P, Q)``, ``P.x``, ``P.y``, ``angle(P, Q)``
     (the direction of PQ) or ``angle(P, Q, R)`` (the angle at Q between QP and QR, in [0, 180] deg).
 
     >>> parse_output("mu", "angle(A, B, D)", "ABD")
     Output(name='mu', kind='angle', points=('A', 'B', 'D'), text='angle(A, B, D)')
-    >>> parse_output("phi", "angle(D, D)", "D", "s.toml")
+    >>> parse_output("phi", "angle(D, D)", "D", source="s.toml")
     Traceback (most recent call last):
     ...
     algkin.errors.SceneError: s.toml: outputs.phi: angle(D, D) has no direction: its two points are the same point

@@ -80,7 +80,7 @@ def angle_unknowns(name: str, output: Output) -> tuple[str, ...]:
     return (f"cos_{name}",) + ((f"sin_{name}",) if direction else ()) + (f"len_{name}",)
 
 
-def check_output_unknowns(source: str, element: str, unknowns: tuple[str, ...], generated: Mapping[str, str],
+def check_output_unknowns(source: str, element: str, unknowns: tuple[str, ...], *, generated: Mapping[str, str],
                           parameters: Mapping[str, object], taken: dict[str, str], owner: str) -> None:
     """Refuse unknowns (of the output ``owner``) that would merge with a generated variable, a
     parameter or another output's unknown (``taken``: unknown -> its output, updated here)."""
@@ -104,10 +104,11 @@ def check_names(scene: Scene) -> dict[str, str]:
         element = f"outputs.{name}"
         if output.kind == "dist":
             check_symbol_name(scene.source, element, name, generated)
-            check_output_unknowns(scene.source, element, (name,), generated, scene.parameters, taken, name)
+            check_output_unknowns(scene.source, element, (name,), generated=generated, parameters=scene.parameters,
+                                  taken=taken, owner=name)
         elif output.kind == "angle":
-            check_output_unknowns(scene.source, element, angle_unknowns(name, output), generated,
-                                  scene.parameters, taken, name)
+            check_output_unknowns(scene.source, element, angle_unknowns(name, output), generated=generated,
+                                  parameters=scene.parameters, taken=taken, owner=name)
         elif name in generated and name != _coordinate_name(output):
             raise SceneError(scene.source, element, f"the name {name!r} is taken by {generated[name]}")
     return generated

@@ -27,7 +27,7 @@ import sys
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..errors import UsageError
 from ..runtime.budget import time_budget
@@ -37,6 +37,9 @@ from .executor import EXECUTORS, dask_modules, run_chunks
 from .grid import Designs, grid_designs, parse_grid, parse_ranges, random_designs
 from .store import DATASET, MANIFEST, done_chunks, merge, open_directory, read_dataset, read_manifest, \
     without_timings, write_part
+
+if TYPE_CHECKING:  # the scene layer loads when a sweep is planned
+    from ..scene.load import SceneLike
 
 __all__ = ["sweep", "Sweep", "plan", "ANALYSES", "Analysis", "register", "read_dataset", "read_manifest",
            "without_timings", "TIMING_PREFIX", "DATASET", "MANIFEST", "EXECUTORS", "CHUNK", "DAY",
@@ -73,14 +76,14 @@ class Plan:
     chunk: int
 
 
-def plan(scene: Any, grid: Iterable[str] = (), random: int | None = None, seed: int = 0,
+def plan(scene: SceneLike, *, grid: Iterable[str] = (), random: int | None = None, seed: int = 0,
          analyses: Iterable[str] = ("curve",), point: str | None = None, budget: float | None = None,
          chunk: int = CHUNK) -> Plan:
     """The sweep's job, designs and manifest, every argument checked (UsageError, SceneError)."""
-    from ..scene import load_scene
     from ..scene.dump import dump_scene
+    from ..scene.load import as_scene
 
-    scene = load_scene(scene) if isinstance(scene, (str, pathlib.Path)) else scene
+    scene = as_scene(scene)
     chosen = tuple(a.name for a in analyses_named(analyses))
     grid = list(grid)
     space: dict[str, Any]
@@ -115,7 +118,7 @@ def plan(scene: Any, grid: Iterable[str] = (), random: int | None = None, seed: 
     return Plan(job, designs, manifest, columns(job, list(designs[0])), chunk)
 
 
-def sweep(scene: Any, out: str | pathlib.Path, grid: Iterable[str] = (), random: int | None = None, seed: int = 0,
+def sweep(scene: SceneLike, out: str | pathlib.Path, *, grid: Iterable[str] = (), random: int | None = None, seed: int = 0,
           analyses: Iterable[str] = ("curve",), point: str | None = None, executor: str = "dask",
           workers: int | None = None, scheduler: str | None = None, budget: float | None = None,
           chunk: int = CHUNK, yes: bool = False) -> Sweep:
@@ -125,7 +128,8 @@ def sweep(scene: Any, out: str | pathlib.Path, grid: Iterable[str] = (), random:
     unless ``yes``."""
     from ..runtime import progress
 
-    planned = plan(scene, grid, random, seed, analyses, point, budget, chunk)
+    planned = plan(scene, grid=grid, random=random, seed=seed, analyses=analyses, point=point, budget=budget,
+                   chunk=chunk)
     _check_executor(executor, workers, scheduler)
     open_directory(out, planned.manifest, check_only=True)
     done = done_chunks(out)

@@ -27,9 +27,14 @@ from __future__ import annotations
 import json
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..errors import ComputationError, UsageError
+
+if TYPE_CHECKING:
+    from ..derivation.pipeline import CurveResult
+    from ..scene import Scene
+    from ..scene.compile import Compiled
 
 __all__ = ["Analysis", "Design", "ANALYSES", "register", "analyses_named", "GRASHOF_CLASSES"]
 
@@ -43,13 +48,13 @@ GRASHOF_CLASSES = {"crank-rocker": "crank-rocker", "double crank": "double-crank
 class Design:
     """One design: its scene (exact dimensions), compiled with its implicit points, and the traced point."""
 
-    scene: Any
-    compiled: Any
+    scene: Scene
+    compiled: Compiled
     point: str
     found: dict[str, Any] = field(default_factory=dict)  # what one analysis computed that another reuses
 
 
-def _verified_curve(design: Design) -> Any:
+def _verified_curve(design: Design) -> CurveResult:
     """The design's coupler curve, verified, computed once for every analysis that needs it."""
     from ..derivation.pipeline import curve
 

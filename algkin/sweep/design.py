@@ -29,7 +29,7 @@ from typing import Any
 
 from ..errors import BudgetExceeded, SceneError
 from ..runtime import progress
-from ..scene import load_scene
+from ..scene import Scene, load_scene
 from .analyses import ANALYSES, Design
 
 __all__ = ["Job", "evaluate_design", "evaluate_chunk", "columns", "TIMING_PREFIX", "REASON_CHARS", "STATUSES"]
@@ -43,7 +43,7 @@ REASON_CHARS = 400  # a failure's reason is one line, at most this long
 class Job:
     """What every design of a sweep shares: the scene, the analyses by name, the traced point, the budget."""
 
-    scene: Any
+    scene: Scene
     analyses: tuple[str, ...]
     point: str
     budget: float | None = None  # seconds per design

@@ -62,7 +62,7 @@ def half_angle_poly(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol) -> flint
 
 def vanishes_at_half_turn(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol) -> bool:
     """Whether the condition holds at ``theta = 180 deg`` (``t`` at infinity)."""
-    return sympy.expand(expr.xreplace({c: -1, s: 0})) == 0
+    return bool(sympy.expand(expr.xreplace({c: -1, s: 0})) == 0)
 
 
 def tangent_to_degrees(t: flint.arb) -> flint.arb:

@@ -38,13 +38,14 @@ def to_flint(expr: sympy.Expr | sympy.Poly, ctx: flint.fmpq_mpoly_ctx) -> flint.
     eliminations.
     """
     zero = ctx.from_dict({})
-    kind = NumberKind("flint polynomial", lambda p, q: zero + flint.fmpq(p, q), _not_polynomial)
+    kind = NumberKind("flint polynomial", number=lambda p, q: zero + flint.fmpq(p, q),
+                      sqrt=lambda v: _not_polynomial(f"sqrt({v})"), absolute=lambda v: _not_polynomial(f"Abs({v})"))
     expr = expr.as_expr() if isinstance(expr, sympy.Poly) else expr
     return evaluate(expr, dict(zip((str(n) for n in ctx.names()), ctx.gens())), kind)
 
 
-def _not_polynomial(value: object) -> NoReturn:
-    raise TypeError(f"a square root is not a polynomial: sqrt({value})")
+def _not_polynomial(value: str) -> NoReturn:
+    raise TypeError(f"not a polynomial: {value}")
 
 
 def to_flint_integer(poly: flint.fmpq_mpoly, ctx: flint.fmpz_mpoly_ctx) -> flint.fmpz_mpoly:

@@ -14,17 +14,16 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Mapping
-from typing import TYPE_CHECKING, Any
+from typing import Any, overload
 
 import attrs
+import flint
 import numpy as np
 import sympy
+from numpy.typing import NDArray
 
 from ..errors import ComputationError
 from ..runtime.frozen import FrozenDict, frozen
-
-if TYPE_CHECKING:
-    import flint
 
 __all__ = ["System", "symbol", "variables_of", "inputs_json", "input_values"]
 
@@ -44,7 +43,16 @@ def inputs_json(inputs: Mapping[str, tuple[str, ...]]) -> dict[str, dict[str, st
     return {name: dict(zip(("cos", "sin") if len(v) == 2 else ("value",), v)) for name, v in inputs.items()}
 
 
-def input_values(variables: tuple[str, ...], value: Any) -> dict[str, Any]:
+@overload
+def input_values(variables: tuple[str, ...], value: flint.arb) -> dict[str, flint.arb]: ...
+@overload
+def input_values(variables: tuple[str, ...], value: NDArray[np.float64]) -> dict[str, NDArray[np.float64]]: ...
+@overload
+def input_values(variables: tuple[str, ...], value: float) -> dict[str, float]: ...
+
+
+def input_values(variables: tuple[str, ...], value: flint.arb | NDArray[np.float64] | float
+                 ) -> Mapping[str, flint.arb | NDArray[np.float64] | float]:
     """An input's variables at ``value`` (radians for an angle's pair, the length itself):
     floats, numpy arrays or python-flint balls (which know their own ``cos`` and ``sin``).
 
@@ -55,7 +63,7 @@ def input_values(variables: tuple[str, ...], value: Any) -> dict[str, Any]:
     """
     if len(variables) == 1:
         return {variables[0]: value}
-    if hasattr(value, "cos"):
+    if isinstance(value, flint.arb):
         return {variables[0]: value.cos(), variables[1]: value.sin()}
     return {variables[0]: np.cos(value), variables[1]: np.sin(value)}
 

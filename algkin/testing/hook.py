@@ -12,10 +12,19 @@ hypothesis runs ``setup`` when it is imported; the strategies module loads only 
 ...     assert isinstance(scene, Scene) and scene.inputs
 >>> check()"""
 
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:  # hypothesis and the scene load when a Scene is first drawn, not with the hook
+    from hypothesis import strategies as st
+
+    from ..scene import Scene
+
 __all__ = ["setup"]
 
 
-def setup():
+def setup() -> None:
     """Register ``algkin.testing.strategies.scenes()`` for algkin's ``Scene`` type."""
     from hypothesis import strategies as st
 
@@ -24,7 +33,7 @@ def setup():
     st.register_type_strategy(Scene, st.deferred(_scenes))
 
 
-def _scenes():
+def _scenes() -> st.SearchStrategy[Scene]:
     from .strategies import scenes
 
     return scenes()

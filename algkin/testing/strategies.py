@@ -59,17 +59,18 @@ MIN_ASSEMBLED_DEGREES = 5
 _GRID = 720
 
 
-def lengths(min_value=Fraction(1, 2), max_value=Fraction(8), max_denominator=12):
+def lengths(min_value: Fraction = Fraction(1, 2), max_value: Fraction = Fraction(8),
+            max_denominator: int = 12) -> st.SearchStrategy[Fraction]:
     """Positive exact lengths (``fractions.Fraction``) with small denominators."""
     return st.fractions(min_value=min_value, max_value=max_value, max_denominator=max_denominator)
 
 
-def _fraction_in(lo, hi, steps=16):
+def _fraction_in(lo: Fraction, hi: Fraction, steps: int = 16) -> st.SearchStrategy[Fraction]:
     """A fraction strictly inside (lo, hi), on a grid of ``steps`` parts."""
     return st.integers(1, steps - 1).map(lambda k: lo + (hi - lo) * Fraction(k, steps))
 
 
-def four_bar_lengths(kind=None):
+def four_bar_lengths(kind: str | None = None) -> st.SearchStrategy[dict[str, Fraction]]:
     """``{crank, ground, coupler, rocker}`` (fractions) of a four-bar of Grashof class ``kind``.
 
     ``kind`` is one of ``GRASHOF_KINDS`` (any when None).
@@ -80,7 +81,7 @@ def four_bar_lengths(kind=None):
 
 
 @st.composite
-def _four_bar_lengths(draw, kind):
+def _four_bar_lengths(draw: st.DrawFn, kind: str | None) -> dict[str, Fraction]:
     kind = draw(st.sampled_from(GRASHOF_KINDS)) if kind is None else kind
     s, u, v = sorted(draw(st.lists(lengths(), min_size=3, max_size=3, unique=True)))
     if kind == "change-point":
@@ -103,11 +104,12 @@ _coordinates = st.fractions(min_value=-5, max_value=5, max_denominator=4)
 _frame = st.fractions(min_value=-1, max_value=1, max_denominator=8)
 
 
-def _q(value):
+def _q(value: Fraction | int) -> str:
     return f'"{Fraction(value)}"'
 
 
-def _assembled_degrees(center, crank, phase, pivot, span_lo, span_hi):
+def _assembled_degrees(center: Point, crank: Fraction, phase: int, pivot: tuple[Fraction, ...], span_lo: Fraction,
+                       span_hi: Fraction) -> float:
     """Degrees of the input turn where |A pivot| lies strictly inside (span_lo, span_hi)."""
     angles = np.radians(np.arange(_GRID) * 360 / _GRID + phase)
     ax, ay = float(center[0]) + float(crank) * np.cos(angles), float(center[1]) + float(crank) * np.sin(angles)
@@ -153,7 +155,7 @@ P = "P"
 {_angle_line(angle)}"""
 
 
-def _assembles(bars, origin, direction, phase):
+def _assembles(bars: dict[str, Fraction], origin: Point, direction: Point, phase: int) -> bool:
     pivot = tuple(o + bars["ground"] * d for o, d in zip(origin, direction))
     span = (abs(bars["coupler"] - bars["rocker"]), bars["coupler"] + bars["rocker"])
     return _assembled_degrees(origin, bars["crank"], phase, pivot, *span) >= MIN_ASSEMBLED_DEGREES
@@ -170,19 +172,19 @@ def _placed(draw: st.DrawFn, bars: dict[str, Fraction]) -> tuple[Point, Point, i
 
 
 @st.composite
-def _four_bar(draw, bars, name):
+def _four_bar(draw: st.DrawFn, bars: dict[str, Fraction], name: str) -> Scene:
     origin, direction, phase, at, branch = _placed(draw, bars)
     angle = draw(_angle_output([("A", "B"), ("D", "B"), ("O", "A")]))
     return load_scene_text(_four_bar_text(bars, origin, direction, phase, at, branch, name, angle), f"{name}.toml")
 
 
-def four_bars(kind=None):
+def four_bars(kind: str | None = None) -> st.SearchStrategy[Scene]:
     """Four-bar scenes of Grashof class ``kind`` (one of ``GRASHOF_KINDS``; any when None)."""
     return four_bar_lengths(kind).flatmap(lambda bars: _four_bar(bars, f"four-bar-{kind or 'any'}"))
 
 
 @st.composite
-def _near_toggle_lengths(draw, digits):
+def _near_toggle_lengths(draw: st.DrawFn, digits: tuple[int, int]) -> dict[str, Fraction]:
     # A crank-rocker 10**-k short of the change point (s + w = u + v - 10**-k, the crank the
     # shortest s): at some crank angle the coupler and rocker come within about 10**-k of
     # folding into a line, a toggle the crank passes by without reaching.
@@ -191,7 +193,7 @@ def _near_toggle_lengths(draw, digits):
     return dict(zip(("ground", "coupler", "rocker"), draw(st.permutations([u, v, w]))), crank=s)
 
 
-def near_toggle_four_bars(digits=(3, 8)):
+def near_toggle_four_bars(digits: tuple[int, int] = (3, 8)) -> st.SearchStrategy[Scene]:
     """Grashof four-bars ``10**-k`` (k in ``digits``) away from the change point."""
     return _near_toggle_lengths(digits).flatmap(lambda bars: _four_bar(bars, "near-toggle"))
 
@@ -229,7 +231,7 @@ P = "P"
 
 
 @st.composite
-def slider_cranks(draw):
+def slider_cranks(draw: st.DrawFn) -> Scene:
     """Slider-cranks: crank ``r`` about ``O``, rod ``l`` to a slider on a line through ``L``.
 
     The line has a small integer direction; the rod is longer than the crank tip's largest
@@ -405,7 +407,7 @@ def scenes() -> st.SearchStrategy[Scene]:
 
 
 @st.composite
-def with_ranges(draw, scene_strategy=None):
+def with_ranges(draw: st.DrawFn, scene_strategy: st.SearchStrategy[Scene] | None = None) -> Scene:
     """A scene with declared slider ranges ``lo < hi`` (exact) on some of its parameters."""
     scene = draw(scene_strategy or scenes())
     names = draw(st.lists(st.sampled_from(sorted(scene.parameters)), unique=True)) if scene.parameters else []
@@ -416,7 +418,8 @@ def with_ranges(draw, scene_strategy=None):
     return attrs.evolve(scene, parameter_ranges=ranges)
 
 
-def with_symbolic(scene_strategy=None, max_symbols=2):
+def with_symbolic(scene_strategy: st.SearchStrategy[Scene] | None = None,
+                  max_symbols: int = 2) -> st.SearchStrategy[tuple[Scene, tuple[str, ...]]]:
     """``(scene, params)``: a scene and 1..``max_symbols`` of its parameters to keep symbolic."""
     scene_strategy = scenes() if scene_strategy is None else scene_strategy
     return scene_strategy.flatmap(lambda scene: st.tuples(st.just(scene), st.lists(

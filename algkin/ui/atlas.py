@@ -21,13 +21,16 @@ import math
 import pathlib
 from fractions import Fraction
 from importlib import resources
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..errors import UsageError
 from ..runtime.files import check_output, write_atomic
 from .html import fill, script_json
+
+if TYPE_CHECKING:
+    from ..scene import Scene
 
 __all__ = ["write_atlas", "atlas_data", "atlas_page", "BOX", "FILTERS", "MAX_SAMPLES"]
 
@@ -41,7 +44,8 @@ def _paths(points: list[tuple[float, float]], frame: tuple[float, float, float])
     """SVG path data of a sampled path (nan where it cannot assemble: a gap), in the frame (x0, y0, size)."""
     x0, y0, size = frame
     scale = (BOX - 2 * MARGIN) / size if size > 0 else 0.0
-    runs, run = [], []
+    runs: list[str] = []
+    run: list[str] = []
     for x, y in points + [(math.nan, math.nan)]:
         if math.isfinite(x) and math.isfinite(y):
             run.append(f"{_short(MARGIN + (x - x0) * scale)},{_short(BOX - MARGIN - (y - y0) * scale)}")
@@ -70,13 +74,12 @@ class _Tracer:
     """The traced point's path per assembly mode for any design: one Motion with the swept dimensions
     symbolic, or (when one of them cannot stay symbolic) a Motion per design."""
 
-    def __init__(self, scene: Any, point: str, swept: list[str], samples: int) -> None:
+    def __init__(self, scene: Scene, point: str, swept: list[str], samples: int) -> None:
         from ..analyses.motion import Motion
 
         self.scene, self.point, self.samples = scene, point, samples
-        self.shared = Motion(scene)
-        if not set(swept) <= set(self.shared.params):
-            self.shared = None
+        shared = Motion(scene)
+        self.shared = shared if set(swept) <= set(shared.params) else None
 
     def tracks(self, values: dict[str, str]) -> list[tuple[bool, list[tuple[float, float]]]]:
         from ..analyses.motion import Motion
@@ -84,7 +87,7 @@ class _Tracer:
 
         motion = self.shared or Motion(with_values(self.scene, values))
         numbers = {n: float(Fraction(v)) for n, v in values.items() if n in motion.params}
-        found = []
+        found: list[tuple[bool, list[tuple[float, float]]]] = []
         for branch in motion.branches:
             _, points = motion.sweep(numbers, branch=branch.label, samples=self.samples)
             xs, ys = points[self.point]

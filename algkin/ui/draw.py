@@ -11,7 +11,12 @@ the zero contour of ``F(x, y)``: it must pass through the closed-form trajectory
 ['trajectory of P (left)', 'implicit curve of P (every assembly mode)']
 """
 
+from __future__ import annotations
+
 import io
+import os
+from collections.abc import Callable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any, TypeVar, Union
 
 import numpy as np
 import sympy
@@ -21,14 +26,28 @@ from ..runtime.files import atomic_output, check_output
 from ..runtime.validation import real
 from .plot import FORMATS as FIGURE_FORMATS, new_figure
 
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.contour import QuadContourSet
+    from matplotlib.figure import Figure
+    from matplotlib.lines import Line2D
+
+    from ..analyses.motion import Motion, Pose, Trajectories
+    from ..derivation.pipeline import CurveResult
+    from ..scene import Scene
+
+Bounds = tuple[float, float, float, float]  # xmin, xmax, ymin, ymax
+PathT = TypeVar("PathT", bound=Union[str, "os.PathLike[str]"])  # a path given back as it came
+
 __all__ = ["mechanism_figure", "modes_figure", "draw_pose", "PoseArtists", "LiveFigure", "draw_curve", "animate", "parse_inputs", "parse_ranges", "plot_mechanism", "FORMATS"]
 
 FORMATS = FIGURE_FORMATS + (".gif", ".mp4", ".html")  # a still figure, or the motion animated
-_BAR = dict(color="tab:blue", linewidth=2.5, solid_capstyle="round", zorder=2)
-_JOINT = dict(marker="o", markersize=6, color="black", markerfacecolor="white", zorder=4)
+# matplotlib's keyword arguments, of many types
+_BAR: dict[str, Any] = dict(color="tab:blue", linewidth=2.5, solid_capstyle="round", zorder=2)
+_JOINT: dict[str, Any] = dict(marker="o", markersize=6, color="black", markerfacecolor="white", zorder=4)
 
 
-def _xy(at, names):
+def _xy(at: Mapping[str, tuple[float, float]], names: Sequence[str]) -> tuple[list[float], list[float]]:
     """The x and y lists of the points ``names`` in ``at`` (empty when nothing is drawn)."""
     pairs = [at[n] for n in names if n in at]
     return [x for x, _ in pairs], [y for _, y in pairs]
@@ -39,7 +58,7 @@ class PoseArtists:
     made once on ``axes`` and moved by ``show(pose)``: a slider or an animation frame sets
     their data instead of drawing anew."""
 
-    def __init__(self, axes, motion, color=None):
+    def __init__(self, axes: Axes, motion: Motion, color: str | None = None) -> None:
         # The scene's structure is read once: ``motion.guides`` substitutes into sympy.
         self.bar_ends, self.string_ends, self.guide_lines = motion.bars, motion.strings, motion.guides
         self.fixed = motion.ground
@@ -56,9 +75,9 @@ class PoseArtists:
         self.blocked = axes.text(0.5, 0.5, "", transform=axes.transAxes, ha="center", va="center",
                                  color="tab:red", fontsize="large", visible=False)
 
-    def show(self, pose):
+    def show(self, pose: Pose) -> None:
         """Move every artist to ``pose``; where it cannot assemble, only the red text is shown."""
-        at = pose.points if pose.assembles else {}
+        at = {p: xy for p, xy in pose.points.items() if xy is not None}  # none where it cannot assemble
         self.blocked.set_text(f"cannot assemble: {', '.join(pose.blocked)}")
         self.blocked.set_visible(not pose.assembles)
         for line, ends in zip(self.bars + self.strings, self.bar_ends + self.string_ends):
@@ -76,7 +95,7 @@ class PoseArtists:
             label.xy = at.get(name, (0, 0))
 
 
-def draw_pose(axes, motion, pose, color=None):
+def draw_pose(axes: Axes, motion: Motion, pose: Pose, color: str | None = None) -> PoseArtists:
     """Bars, joints, ground pivots, slider guides and strings of ``pose`` on ``axes``."""
     artists = PoseArtists(axes, motion, color)
     artists.show(pose)
@@ -87,12 +106,12 @@ def draw_pose(axes, motion, pose, color=None):
 _TRACES = ("tab:orange", "tab:purple", "tab:red", "tab:green", "tab:brown", "tab:pink", "tab:olive", "tab:cyan")
 
 
-def trace_color(motion, name):
+def trace_color(motion: Motion, name: str) -> str:
     """The colour of traced point ``name``: its trajectory and its implicit curve share it."""
     return _TRACES[motion.traced.index(name) % len(_TRACES)]
 
 
-def _trajectories(axes, motion, points, label=None):
+def _trajectories(axes: Axes, motion: Motion, points: Trajectories, label: str | None = None) -> dict[str, Line2D]:
     """Each traced point's path from ``points`` (a sweep), labelled with the branch if given:
     point -> its line."""
     return {name: axes.plot(*points[name], color=trace_color(motion, name), linewidth=1.5, zorder=1,
@@ -100,16 +119,17 @@ def _trajectories(axes, motion, points, label=None):
             for name in motion.traced}
 
 
-def _trajectory_label(name, branch=None):
+def _trajectory_label(name: str, branch: str | None = None) -> str:
     return f"trajectory of {name}" + (f" ({branch})" if branch else "")
 
 
-def _sweeps(motion, parameters):
+def _sweeps(motion: Motion, parameters: Mapping[str, float] | None) -> dict[str, Trajectories]:
     """Every branch's sweep at ``parameters``: branch label -> point -> (x, y) arrays."""
     return {b.label: motion.sweep(parameters, b.label)[1] for b in motion.branches}
 
 
-def _bounds(motion, parameters, sweeps=None):
+def _bounds(motion: Motion, parameters: Mapping[str, float] | None,
+            sweeps: Mapping[str, Trajectories] | None = None) -> Bounds:
     """Box around every point on every branch over the whole sweep (nan-free); ``sweeps``:
     those of ``_sweeps(motion, parameters)`` when already made."""
     xs, ys = [], []
@@ -122,7 +142,8 @@ def _bounds(motion, parameters, sweeps=None):
     return x.min() - pad, x.max() + pad, y.min() - pad, y.max() + pad
 
 
-def draw_curve(axes, result, bounds, grid=500, color="tab:green"):
+def draw_curve(axes: Axes, result: CurveResult, bounds: Bounds, grid: int = 500,
+               color: str = "tab:green") -> QuadContourSet:
     """The zero set of ``result.elimination.polynomial`` (a ``CurveResult``) over ``bounds``, dashed."""
     poly = result.elimination.polynomial
     # A slider's curve may lack one coordinate (B_y = e is a line): a stand-in symbol keeps
@@ -140,16 +161,16 @@ def draw_curve(axes, result, bounds, grid=500, color="tab:green"):
     return contour
 
 
-def _finish(axes, title):
+def _finish(axes: Axes, title: str) -> None:
     # Fixed limits on every drawing: the box, not the data limits, keeps the scales equal.
     axes.set_aspect("equal", adjustable="box")
     axes.grid(True, linewidth=0.3)
     axes.set_title(title, fontsize="medium", parse_math=False)  # a scene's name is text, never mathtext
 
 
-def _pose_title(motion):
+def _pose_title(motion: Motion) -> Callable[[Pose], str]:
     """The title of a figure of one configuration: the scene, its input angles, its branch."""
-    def title(pose):
+    def title(pose: Pose) -> str:
         angles = ", ".join(f"{n} = {motion.inputs[n].shown(v)}" for n, v in pose.inputs.items())
         return f"{motion.scene.name}: {angles}, {pose.branch}"
     return title
@@ -164,7 +185,8 @@ class LiveFigure:
     ``title``: pose -> the text above the axes.
     """
 
-    def __init__(self, motion, parameters=None, branch=None, title=None):
+    def __init__(self, motion: Motion, parameters: Mapping[str, float] | None = None, branch: str | None = None,
+                 title: Callable[[Pose], str] | None = None) -> None:
         self.motion, self.title = motion, title or _pose_title(motion)
         self.parameters = motion.complete(None, parameters)[1]
         self.branch = motion.branches[motion.branch_index(branch)].label
@@ -181,16 +203,17 @@ class LiveFigure:
         _finish(self.axes, "")
         self._limit()
 
-    def _limit(self):
+    def _limit(self) -> None:
         self._relayout = True
         self.axes.set_xlim(self.bounds[0], self.bounds[1])
         self.axes.set_ylim(self.bounds[2], self.bounds[3])
 
-    def update(self, inputs=None, parameters=None, branch=None):
+    def update(self, inputs: Mapping[str, float] | None = None, parameters: Mapping[str, float] | None = None,
+               branch: str | None = None) -> Pose:
         """Move the figure to ``inputs`` (degrees), ``parameters`` and ``branch``; returns the pose."""
         return self.show(self.motion.at(inputs, parameters, branch))
 
-    def show(self, pose):
+    def show(self, pose: Pose) -> Pose:
         """Move the figure to ``pose`` (a ``Motion.at`` or ``Motion.poses`` configuration)."""
         if pose.parameters != self.parameters:
             self.sweeps = _sweeps(self.motion, pose.parameters)
@@ -205,7 +228,7 @@ class LiveFigure:
         self.axes.title.set_text(self.title(pose))
         return pose
 
-    def png(self, dpi=90):
+    def png(self, dpi: float = 90) -> bytes:
         """The figure as it stands, as PNG bytes at ``dpi``.
 
         The constrained layout costs a third of a render: it is computed on the first render
@@ -214,14 +237,20 @@ class LiveFigure:
         if self.figure.dpi != dpi:
             self.figure.set_dpi(dpi)
         self.figure.set_layout_engine(self._layout if self._relayout else "none")
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+        canvas = self.figure.canvas
+        assert isinstance(canvas, FigureCanvasAgg)  # new_figure's
         buffer = io.BytesIO()
         # Fast compression: the bytes go to the notebook next door, not to a file kept.
-        self.figure.canvas.print_png(buffer, pil_kwargs={"compress_level": 1})
+        canvas.print_png(buffer, pil_kwargs={"compress_level": 1})
         self._relayout = False
         return buffer.getvalue()
 
 
-def mechanism_figure(motion, inputs=None, parameters=None, branch=None, curve=True):
+def mechanism_figure(motion: Motion, inputs: Mapping[str, float] | None = None,
+                     parameters: Mapping[str, float] | None = None, branch: str | None = None,
+                     curve: bool = True) -> Figure:
     """The configuration at ``inputs`` with each traced point's trajectory and implicit curve.
 
     The implicit curves are derived at the dimensions' defaults, so they are drawn only there.
@@ -242,14 +271,15 @@ def mechanism_figure(motion, inputs=None, parameters=None, branch=None, curve=Tr
     return live.figure
 
 
-def modes_figure(motion, inputs=None, parameters=None):
+def modes_figure(motion: Motion, inputs: Mapping[str, float] | None = None,
+                 parameters: Mapping[str, float] | None = None) -> Figure:
     """Every assembly mode at the same inputs, side by side, each with its trajectory."""
     inputs = inputs if inputs is not None else motion.start(parameters)
     sweeps = _sweeps(motion, parameters)
     bounds = _bounds(motion, parameters, sweeps)
     figure = new_figure()
     figure.set_size_inches(*_panels_size(bounds, len(motion.branches)))
-    shared = None
+    shared: Axes | None = None
     for k, branch in enumerate(motion.branches):
         axes = figure.add_subplot(1, len(motion.branches), k + 1, sharex=shared, sharey=shared)
         shared = shared or axes
@@ -264,7 +294,7 @@ def modes_figure(motion, inputs=None, parameters=None):
     return figure
 
 
-def _panels_size(bounds, count, width=3.6, tallest=6.4):
+def _panels_size(bounds: Bounds, count: int, width: float = 3.6, tallest: float = 6.4) -> tuple[float, float]:
     """Inches for ``count`` equal-aspect panels of ``bounds`` side by side: each panel is
     shaped like the mechanism's reach, so the boxes fill the figure with no gap between."""
     ratio = (bounds[3] - bounds[2]) / (bounds[1] - bounds[0])
@@ -272,7 +302,8 @@ def _panels_size(bounds, count, width=3.6, tallest=6.4):
     return width * count + 0.6, width * ratio + 0.9  # room for tick labels and titles
 
 
-def animate(motion, out, parameters=None, branch=None, frames=72, fps=24):
+def animate(motion: Motion, out: PathT, parameters: Mapping[str, float] | None = None, branch: str | None = None,
+            frames: int = 72, fps: int = 24) -> PathT:
     """Turn the first input through its range and write ``out`` (.gif with pillow, .mp4 with ffmpeg)."""
     import pathlib
 
@@ -286,7 +317,10 @@ def animate(motion, out, parameters=None, branch=None, frames=72, fps=24):
     shown = motion.inputs[name].shown
     live = LiveFigure(motion, parameters, branch, title=lambda pose: f"{motion.scene.name}: {name} = {shown(pose.inputs[name])}")
 
-    movie = animation.FuncAnimation(live.figure, live.show, frames=motion.poses(parameters, branch, frames),
+    def frame(pose: Pose) -> None:  # no artists returned: no blitting, the whole frame is drawn
+        live.show(pose)
+
+    movie = animation.FuncAnimation(live.figure, frame, frames=motion.poses(parameters, branch, frames),
                                     cache_frame_data=False)
     writer = animation.PillowWriter(fps=fps) if suffix == ".gif" else animation.FFMpegWriter(fps=fps)
     with atomic_output(out) as temporary:  # the writers infer the format from the kept suffix
@@ -294,7 +328,7 @@ def animate(motion, out, parameters=None, branch=None, frames=72, fps=24):
     return out
 
 
-def parse_inputs(motion, texts):
+def parse_inputs(motion: Motion, texts: Sequence[str]) -> dict[str, float]:
     """``--input`` values: ``VALUE`` (a one-input scene) or ``NAME=VALUE``, degrees (a length input's
     length) within range.
 
@@ -302,7 +336,7 @@ def parse_inputs(motion, texts):
     >>> parse_inputs(Motion("chebyshev-lambda"), ["angle=30"])
     {'angle': 30.0}
     """
-    inputs = {}
+    inputs: dict[str, float] = {}
     for text in texts:
         name, _, value = text.rpartition("=")
         name = name or (next(iter(motion.inputs)) if len(motion.inputs) == 1 else "")
@@ -320,14 +354,14 @@ def parse_inputs(motion, texts):
     return inputs
 
 
-def parse_ranges(texts, option="--range-of"):
+def parse_ranges(texts: Sequence[str], option: str = "--range-of") -> dict[str, tuple[float, float]]:
     """``NAME=LO:HI`` values (``--range-of``, ``--against``) -> {name: (lo, hi)}, finite numbers
     with lo below hi.
 
     >>> parse_ranges(["a=0.5:2", "l=1:3"])
     {'a': (0.5, 2.0), 'l': (1.0, 3.0)}
     """
-    ranges = {}
+    ranges: dict[str, tuple[float, float]] = {}
     for text in texts:
         name, _, span = text.partition("=")
         try:
@@ -341,7 +375,8 @@ def parse_ranges(texts, option="--range-of"):
     return ranges
 
 
-def plot_mechanism(scene, out, inputs=(), branch=None, modes=False, params=None, ranges=()):
+def plot_mechanism(scene: str | Scene, out: PathT, inputs: Sequence[str] = (), branch: str | None = None,
+                   modes: bool = False, params: Sequence[str] | None = None, ranges: Sequence[str] = ()) -> PathT:
     """``algkin plot SCENE --out F``: the format follows the suffix of ``out``; returns ``out``.
 
     ``ranges``: ``--range-of`` texts (``NAME=LO:HI``), the sliders' ranges of the .html page.

@@ -35,12 +35,13 @@ from collections.abc import Sequence
 
 import sympy
 
-from ..branches import closed_forms
+from ..branches import Branch, closed_forms
 from ..branches.stable import StableBranch, output_forms
 from ..errors import UsageError
 from ..evaluate.trace import Program, trace
 from ..scene import compile_scene
-from ..scene.load import as_scene
+from ..scene.compile import Compiled
+from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
 from .identifiers import comment, docstring_text, identifiers, latex_text
 
@@ -73,7 +74,8 @@ def function_names(scene: str, labels: Sequence[str], to: str = "c") -> list[str
     return list(identifiers([f"{scene}_{label}" for label in labels], to).values())
 
 
-def export(scene, outputs=None, to="c", params=(), set=None):  # noqa: A002 - the public name (the command line's --set)
+def export(scene: SceneLike, outputs: Sequence[str] | None = None, to: str = "c", params: Sequence[str] = (),
+           set: Values | None = None) -> str:  # noqa: A002 - the public name (the command line's --set)
     """The source text of every branch of ``scene`` evaluating ``outputs`` (default: the scene's), in ``to``."""
     if to not in TARGETS:
         raise UsageError("--to", to, f"unknown target; valid: {', '.join(TARGETS)}")
@@ -88,7 +90,7 @@ def export(scene, outputs=None, to="c", params=(), set=None):  # noqa: A002 - th
     inputs = compiled.system.inputs
     functions = function_names(scene.name, [branch.label for branch in branches], to)
     arguments = identifiers(list(inputs), to, taken=functions)
-    programs = []
+    programs: list[Program] = []
     for branch in branches:
         stable = StableBranch(compiled, branch)
         names, forms = output_forms(stable, outputs)
@@ -107,7 +109,11 @@ def export(scene, outputs=None, to="c", params=(), set=None):  # noqa: A002 - th
     return {"c": _c, "numpy": _numpy, "js": _js}[to](header, notes, list(zip(functions, branches, programs)), names)
 
 
-def _c(header, notes, functions, names):
+# (the function's name, its branch, its traced program)
+Functions = Sequence[tuple[str, Branch, Program]]
+
+
+def _c(header: str, notes: Sequence[str], functions: Functions, names: Sequence[str]) -> str:
     lines = [comment(line, "c") for line in (header, *notes)] + [_C_HELPERS]
     for name, branch, program in functions:
         arguments = ", ".join(f"double {n}" for n in program.inputs)
@@ -118,7 +124,7 @@ def _c(header, notes, functions, names):
     return "\n".join(lines)
 
 
-def _js(header, notes, functions, names):
+def _js(header: str, notes: Sequence[str], functions: Functions, names: Sequence[str]) -> str:
     lines = [comment(line, "js") for line in (header, *notes)] + [_JS_HELPERS]
     for name, branch, program in functions:
         lines += [comment(f"branch {branch.label}: returns [{', '.join(names)}]", "js"),
@@ -128,7 +134,7 @@ def _js(header, notes, functions, names):
     return "\n".join(lines)
 
 
-def _numpy(header, notes, functions, names):
+def _numpy(header: str, notes: Sequence[str], functions: Functions, names: Sequence[str]) -> str:
     lines = [f'"""{docstring_text(header)}', "", *map(docstring_text, notes), '"""', "", "import numpy as np", ""]
     for name, branch, program in functions:
         summary = docstring_text(f"Branch {branch.label}: ({', '.join(names)}), arrays shaped as the inputs.")
@@ -140,14 +146,14 @@ def _numpy(header, notes, functions, names):
     return "\n".join(lines)
 
 
-def _numpy_output(program: Program, output) -> str:
+def _numpy_output(program: Program, output: str | float) -> str:
     """An output as an array the inputs' shape (a constant one spread over them)."""
     if isinstance(output, str):
         return output
     return f"np.full(np.shape({program.inputs[0]}), {program.atom(output, 'numpy')})"
 
 
-def _latex(compiled, branches):
+def _latex(compiled: Compiled, branches: Sequence[Branch]) -> str:
     """Per branch, each output coordinate's exact closed form and where it is real."""
     wanted = [u for name in compiled.outputs for u in compiled.outputs[name]]
     lines = [comment(f"{compiled.scene.name}: closed forms per assembly mode (c, s: cos and sin of the input). "

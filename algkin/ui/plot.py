@@ -9,21 +9,38 @@ Figures are built on ``matplotlib.figure.Figure`` with the Agg canvas, never thr
   with certified minima at sample dimensions drawn on top (they must lie on the line).
 """
 
+from __future__ import annotations
+
 import io
+import os
 import pathlib
+from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING, TypeVar, Union
 
 import numpy as np
 import sympy
+from numpy.typing import ArrayLike, NDArray
 
 from ..errors import AlgkinError, UsageError
 from ..runtime.files import write_atomic
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+    from ..analyses.extremum import Extremum
+    from ..analyses.extremum.closed import Region
+    from ..analyses.quantities import Quantity
+    from ..bench.accuracy import Accuracy
+    from ..bench.row import BenchRow
+
+_PathT = TypeVar("_PathT", bound=Union[str, "os.PathLike[str]"])  # a path given back as it came
 
 __all__ = ["quantity_figure", "minimum_figure", "accuracy_figure", "bench_figure", "new_figure", "save", "image", "FORMATS"]
 
 FORMATS = (".png", ".svg", ".pdf")
 
 
-def new_figure():
+def new_figure() -> Figure:
     """An empty figure on the Agg canvas (no pyplot state); AlgkinError without matplotlib."""
     try:
         from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -35,7 +52,7 @@ def new_figure():
     return figure
 
 
-def image(figure, suffix):
+def image(figure: Figure, suffix: str) -> bytes:
     """The bytes of ``figure`` in the format of ``suffix`` (.png, .svg or .pdf), drawn before any
     file is opened: a figure that fails to draw leaves nothing behind."""
     buffer = io.BytesIO()
@@ -43,20 +60,20 @@ def image(figure, suffix):
     return buffer.getvalue()
 
 
-def save(figure, out):
+def save(figure: Figure, out: _PathT) -> _PathT:
     """Write ``figure`` to ``out`` (.png, .svg or .pdf), replacing any earlier file only once complete."""
     write_atomic(out, image(figure, pathlib.Path(out).suffix))
     return out
 
 
-def _sampler(quantity, expr):
+def _sampler(quantity: Quantity, expr: sympy.Expr) -> Callable[[ArrayLike], NDArray[np.float64]]:
     """numpy function of degrees for ``expr`` in the input, dimensions at their defaults."""
     defaults = quantity.derivation.compiled.parameter_values
     fixed = expr.xreplace({p: sympy.Rational(str(defaults[p.name])) for p in quantity.symbolic_dimensions})
     return sympy.lambdify(quantity.input, fixed, "numpy")
 
 
-def quantity_figure(quantity, found, derivative=False, points=721):
+def quantity_figure(quantity: Quantity, found: Extremum, derivative: bool = False, points: int = 721) -> Figure:
     """``quantity`` over the range of ``found`` (an ``Extremum``) with its minimum marked.
 
     With ``derivative`` the slope d/d(input) (per radian, as the seed computes it) is drawn
@@ -68,7 +85,7 @@ def quantity_figure(quantity, found, derivative=False, points=721):
     if derivative or quantity.degrees:
         values = np.broadcast_to(_sampler(quantity, expr)(np.radians(degrees)), degrees.shape)
     else:  # the stabilised form (numba's loop where installed and it pays): no cancellation in the curve
-        values = quantity.at(**{quantity.input.name: degrees})
+        values = np.asarray(quantity.at(**{quantity.input.name: degrees}))
     best = found.minimum
     figure = new_figure()
     axes = figure.add_subplot()
@@ -92,7 +109,8 @@ def quantity_figure(quantity, found, derivative=False, points=721):
     return figure
 
 
-def minimum_figure(quantity, found, parameter, lo, hi, checks=9, points=401):
+def minimum_figure(quantity: Quantity, found: Extremum, parameter: str, lo: float, hi: float, checks: int = 9,
+                   points: int = 401) -> Figure:
     """The minimum of ``quantity`` against ``parameter`` in ``[lo, hi]``, region by region."""
     form = found.closed_form
     if form is None or [p.name for p in quantity.symbolic_dimensions] != [parameter]:
@@ -122,19 +140,20 @@ def minimum_figure(quantity, found, parameter, lo, hi, checks=9, points=401):
     return figure
 
 
-def _within(region, x):
+def _within(region: Region, x: float) -> bool:
     return (region["from"] is None or region["from"] <= x) and (region["to"] is None or x <= region["to"])
 
 
-def _certified_minimum(found, quantity, symbol, x):
+def _certified_minimum(found: Extremum, quantity: Quantity, symbol: sympy.Symbol, x: float) -> float:
     """The minimum at one dimension, by the fixed-dimension certified path (independent of the regions)."""
     from ..analyses.extremum import extreme_at
 
+    assert found.problem is not None and found.stationary is not None, "a closed form's extremum keeps its problem"
     values = {symbol: sympy.Rational(str(x))}
     return float(extreme_at(found.problem, found.stationary, values, *found.range).value)
 
 
-def accuracy_figure(result):
+def accuracy_figure(result: Accuracy) -> Figure:
     """Time per sample against max relative error, log-log: marker per strategy, colour per case.
 
     Two legends name them instead of text beside each point (labels would pile up where
@@ -177,13 +196,13 @@ def accuracy_figure(result):
     return figure
 
 
-def _zero_floor(errors):
+def _zero_floor(errors: Sequence[float]) -> float:
     """A y below every non-zero error, a decade under the smallest, where zero errors are drawn."""
     positive = [e for e in errors if e > 0]
     return 10.0 ** (np.floor(np.log10(min(positive))) - 1) if positive else 1e-17
 
 
-def bench_figure(rows):
+def bench_figure(rows: Sequence[BenchRow]) -> Figure:
     """Seconds per problem (log scale), one bar per method/backend or peer; over budget not drawn."""
     from matplotlib import colormaps
 
@@ -194,7 +213,8 @@ def bench_figure(rows):
     series = list(dict.fromkeys((r.method, r.backend) for r in rows))
     width, colors = 0.8 / len(series), colormaps["tab20"]
     for k, (method, backend) in enumerate(series):
-        xs, ys = [], []
+        xs: list[float] = []
+        ys: list[float] = []
         for i, problem in enumerate(problems):
             found = [r.seconds for r in rows if (r.problem, r.method, r.backend) == (problem, method, backend)]
             if found and found[0]:

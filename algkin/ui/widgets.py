@@ -16,13 +16,23 @@ hide the function ``algkin.interact``); the logic lives in ``Explorer`` and need
 'left: cannot assemble at theta = 180° (B: the two circles never meet)'
 """
 
+from __future__ import annotations
+
 import functools
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from ..analyses.motion import Motion
+from ..analyses.motion import Motion, Pose
 from ..scene.load import SceneLike
-from .html import parameter_slider
+from .html import Slider, parameter_slider
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+    from .draw import LiveFigure
+
+# What the sliders give: input names (degrees) and dimension names to numbers, ``branch`` to a label
+SliderValues = dict[str, Any]
 
 __all__ = ["interact", "Explorer"]
 
@@ -30,32 +40,33 @@ __all__ = ["interact", "Explorer"]
 class Explorer:
     """What the sliders drive: a ``Motion`` and the picture for any slider values."""
 
-    def __init__(self, scene, params=None, ranges=None):
+    def __init__(self, scene: SceneLike | Motion, params: Sequence[str] | None = None,
+                 ranges: Mapping[str, tuple[float, float]] | None = None) -> None:
         self.motion = scene if isinstance(scene, Motion) else Motion(scene, params)
         self.ranges = ranges  # name -> (lo, hi): overrides the scene's declared slider ranges
 
     @property
-    def sliders(self):
+    def sliders(self) -> list[Slider]:
         """[{name, lo, hi, value}]: inputs in degrees (starting where the scene assembles), then dimensions."""
         start = self.motion.start()
-        inputs = [dict(name=n, lo=s.span[0], hi=s.span[1], value=start[n])
+        inputs = [Slider(name=n, lo=s.span[0], hi=s.span[1], value=start[n])
                   for n, s in self.motion.inputs.items()]
         return inputs + [parameter_slider(self.motion, p, self.ranges) for p in self.motion.params]
 
-    def _split(self, values):
+    def _split(self, values: SliderValues) -> tuple[dict[str, float], dict[str, float], str | None]:
         branch = values.pop("branch", None)
         inputs = {n: values.pop(n) for n in list(values) if n in self.motion.inputs}
         return inputs, values, branch
 
-    def pose(self, **values):
+    def pose(self, **values: Any) -> Pose:
         """The configuration at slider values (input names in degrees, dimension names, ``branch``)."""
         return self.motion.at(*self._split(dict(values)))
 
-    def caption(self, **values):
+    def caption(self, **values: Any) -> str:
         """One line: the branch, and whether it assembles at these values."""
         return self._caption(self.pose(**values))
 
-    def _caption(self, pose):
+    def _caption(self, pose: Pose) -> str:
         angles = ", ".join(f"{n} = {self.motion.inputs[n].shown(v)}" for n, v in pose.inputs.items())
         if pose.assembles:
             return f"{pose.branch}: {angles}"
@@ -63,7 +74,7 @@ class Explorer:
         why = "; ".join(f"{p}: {reasons[p]}" for p in pose.blocked)
         return f"{pose.branch}: cannot assemble at {angles} ({why})"
 
-    def figure(self, **values):
+    def figure(self, **values: Any) -> Figure:
         """The mechanism at these values with its trajectories (no re-derivation): a new figure."""
         from .draw import mechanism_figure
 
@@ -73,13 +84,13 @@ class Explorer:
         return figure
 
     @functools.cached_property
-    def live(self):
+    def live(self) -> LiveFigure:
         """The one figure the sliders move (``algkin.ui.draw.LiveFigure``), captioned like ``figure``."""
         from .draw import LiveFigure
 
         return LiveFigure(self.motion, title=self._caption)
 
-    def png(self, **values):
+    def png(self, **values: Any) -> bytes:
         """The picture at these values as PNG bytes (what the notebook shows): the live figure
         moved there and rendered, no new figure.
 
@@ -115,7 +126,7 @@ def interact(scene: SceneLike | Motion, params: Sequence[str] | None = None,
                                                  value=branches[explorer.motion.selected].label,
                                                  description="mode")
 
-    def picture():
+    def picture() -> bytes:
         return explorer.png(**{name: control.value for name, control in controls.items()})
 
     # One Image widget whose bytes are replaced on a move: the figure behind it is never rebuilt.

@@ -15,7 +15,7 @@ of their label is solved again with more starts before the check says so.
 from __future__ import annotations
 
 import enum
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, TypeAlias
@@ -27,16 +27,16 @@ import sympy
 from numpy.typing import NDArray
 
 from ..evaluate import ARB, NUMPY
-from ..evaluate.program import compile_program
+from ..evaluate.program import ArrayProgram, BallProgram, Floats, compile_program
 from ..runtime import progress
 from ..runtime.frozen import FrozenDict, frozen
 from ..system import System, input_values
-from .balls import BallProgram, Block, BlockCertifier, certifier_of, certify_parameters
+from .balls import Block, BlockCertifier, certifier_of, certify_parameters
 from .minimal import FactorCheck, structure_failures
 from .residual import ExactValue, Polynomial, PolynomialLike, polynomial_of
-from .solve import STARTS, ArrayProgram, Floats, blocks_of, solve_floats
+from .solve import STARTS, blocks_of, solve_floats
 
-__all__ = ["Verification", "Status", "verify_branches", "WORKING_BITS", "real_floats", "decided_real"]
+__all__ = ["Verification", "Status", "CheckSetup", "verify_branches", "WORKING_BITS", "real_floats", "decided_real"]
 
 WORKING_BITS = 192
 TOLERANCE = 1e-30  # relative residual a polynomial must reach on every root (the enclosures reach ~1e-50)
@@ -51,6 +51,28 @@ Indicator: TypeAlias = tuple[str, sympy.Expr, str, str]
 BranchForms: TypeAlias = tuple[Mapping[str, str], Mapping[str, sympy.Expr], Mapping[str, sympy.Expr]]
 Label: TypeAlias = tuple[tuple[str, str], ...]  # (point, label) pairs, sorted by point
 Root: TypeAlias = list[flint.arb]  # the unknowns' enclosures, in the system's order
+
+
+def _indicators(indicators: Iterable[Indicator]) -> tuple[Indicator, ...]:
+    return tuple(indicators)
+
+
+def _frozen_forms(branches: Iterable[BranchForms]) -> tuple[BranchForms, ...]:
+    return tuple((frozen(labels), frozen(values), frozen(discriminants)) for labels, values, discriminants in branches)
+
+
+@attrs.frozen(kw_only=True)
+class CheckSetup:
+    """What a check is of: the system with its dimensions fixed (``system``), the branch
+    ``indicators`` (``(point, expression, positive label, negative label)``), the closed-form
+    ``branches`` (``(labels, values, discriminants)``), each input's range in radians or its
+    units (``inputs``) and a value for each symbolic parameter (``parameters``)."""
+
+    system: System
+    indicators: tuple[Indicator, ...] = attrs.field(converter=_indicators)  # typed: ``tuple`` reads as Iterable[_T_co]
+    branches: tuple[BranchForms, ...] = attrs.field(converter=_frozen_forms)
+    inputs: FrozenDict[str, tuple[float, float]] = attrs.field(converter=frozen)
+    parameters: FrozenDict[str, ExactValue] = attrs.field(converter=frozen)
 
 
 class Status(str, enum.Enum):
@@ -140,9 +162,9 @@ class _Tally:
 class _Plan:
     """Everything compiled once per check: solver, certifier, indicators, branches, polynomials."""
 
-    def __init__(self, system: System, indicators: Sequence[Indicator], branches: Sequence[BranchForms],
-                 parameters: Mapping[str, ExactValue], polynomials: Mapping[str, PolynomialLike] | None,
+    def __init__(self, setup: CheckSetup, *, polynomials: Mapping[str, PolynomialLike] | None,
                  factors: Mapping[str, Sequence[PolynomialLike]] | None) -> None:
+        system, indicators, branches, parameters = setup.system, setup.indicators, setup.branches, setup.parameters
         self.system = system
         self.blocks = blocks_of(system)
         self.certifiers: list[tuple[Block, BlockCertifier, list[str]]] = [
@@ -206,51 +228,47 @@ def real_floats(discriminants: ArrayProgram, floats: Mapping[str, Floats], known
     return np.all([np.broadcast_to(v, (count,)) > 0 for v in values], axis=0) if values else np.ones(count, bool)
 
 
-def verify_branches(system: System, indicators: Sequence[Indicator], branches: Sequence[BranchForms],
-                    inputs: Mapping[str, tuple[float, float]], parameters: Mapping[str, ExactValue],
-                    samples: int = 50, seed: int = 0, polynomials: Mapping[str, PolynomialLike] | None = None,
+def verify_branches(setup: CheckSetup, *, samples: int = 50, seed: int = 0,
+                    polynomials: Mapping[str, PolynomialLike] | None = None,
                     factors: Mapping[str, Sequence[PolynomialLike]] | None = None,
                     where: Mapping[str, Sequence[tuple[float, float]]] | None = None) -> Verification:
-    """Check ``branches`` (list of ``(labels, values, discriminants)``) on ``samples`` inputs
-    where something could be compared.
+    """Check ``setup``'s branches on ``samples`` inputs where something could be compared.
 
-    ``indicators`` lists ``(point, expression, positive label, negative label)``; ``inputs``
-    maps an input name to its range in radians; ``parameters`` gives a value to each symbolic
-    parameter; ``polynomials`` (name -> expression) must vanish on every root and be
+    ``polynomials`` (name -> expression) must vanish on every root and be
     squarefree. ``factors`` (name -> the polynomial's kept factors) must multiply to it, and
     each must vanish by itself on some root: otherwise it is extraneous (see ``minimal``).
     ``where`` (input -> intervals within its range, in its units) confines the samples to where
     something may assemble, when that is a small part of the range (``algkin.derivation.assembles``).
     """
-    spans = {n: list((where or {}).get(n) or [span]) for n, span in inputs.items()}
+    spans = {n: list((where or {}).get(n) or [span]) for n, span in setup.inputs.items()}
     rng = np.random.default_rng(seed)
     report = _Tally()
     useful = drawn = 0
     with flint.ctx.workprec(WORKING_BITS), progress.counting(samples, "samples"):
         # the plan's exact dimensions become balls at this working precision
-        plan = _Plan(system, indicators, branches, parameters, polynomials, factors)
+        plan = _Plan(setup, polynomials=polynomials, factors=factors)
         worst = {n: 0.0 for n in plan.polynomials}
         # An input where the mechanism does not assemble compares nothing. The first ``samples``
         # inputs are solved wherever they fall (the numeric solution must then find nothing
         # either); after those, more are drawn, and solved only where some branch is real, until
         # ``samples`` inputs have compared something (at most twice as many solved in all).
         while useful < samples and drawn < samples * MAX_DRAWS and report.samples < 2 * samples:
-            angles, drawn = _batch(plan, spans, rng, drawn, samples - useful, 2 * samples - report.samples,
-                                   samples * MAX_DRAWS, first=not drawn)
+            angles, drawn = _batch(plan, spans, rng, drawn=drawn, needed=samples - useful,
+                                   solvable=2 * samples - report.samples, most=samples * MAX_DRAWS, first=not drawn)
             count = len(next(iter(angles.values()), [None]))
             if not count:
                 break
             for start in range(0, count, CHUNK):  # in chunks, so that progress shows on long runs
                 useful += _check_batch(report, plan, {n: a[start:start + CHUNK] for n, a in angles.items()},
-                                       rng, worst)
-    _require_comparisons(report, bool(branches), bool(plan.polynomials))
+                                       rng=rng, worst=worst)
+    _require_comparisons(report, branches=bool(setup.branches), polynomials=bool(plan.polynomials))
     report.failures += plan.factors.failures(TOLERANCE, report.evaluated)
     report.failures += structure_failures(polynomials or {}, factors)
     return report.verification(worst, plan.factors.to_json())
 
 
-def _batch(plan: _Plan, spans: Mapping[str, Sequence[tuple[float, float]]], rng: np.random.Generator, drawn: int,
-           needed: int, solvable: int, most: int, first: bool) -> tuple[dict[str, Floats], int]:
+def _batch(plan: _Plan, spans: Mapping[str, Sequence[tuple[float, float]]], rng: np.random.Generator, *,
+           drawn: int, needed: int, solvable: int, most: int, first: bool) -> tuple[dict[str, Floats], int]:
     """The next inputs to solve (input -> radians) and the draws counted so far."""
     if first:
         return {n: _uniform(rng, pieces, needed) for n, pieces in spans.items()}, needed
@@ -276,25 +294,25 @@ def _uniform(rng: np.random.Generator, pieces: Sequence[tuple[float, float]], co
     along = rng.uniform(0.0, float(ends[-1]), count)
     index = np.minimum(np.searchsorted(ends, along, side="right"), len(pieces) - 1)
     starts = np.array([lo for lo, _ in pieces])
-    return starts[index] + along - (ends[index] - widths[index])
+    return np.asarray(starts[index] + along - (ends[index] - widths[index]), dtype=np.float64)
 
 
-def _check_batch(report: _Tally, plan: _Plan, angles: Mapping[str, Floats], rng: np.random.Generator,
+def _check_batch(report: _Tally, plan: _Plan, angles: Mapping[str, Floats], *, rng: np.random.Generator,
                  worst: dict[str, float]) -> int:
     """Solve, prove and compare every sample of the batch; how many compared something."""
     count = len(next(iter(angles.values()), [None]))
     samples = [_Sample(plan.balls(angles, k)) for k in range(count)]
     floats = plan.floats(angles)
-    _certified(plan, floats, samples, rng, STARTS)
+    _certified(plan, floats, samples, rng=rng, starts=STARTS)
     missing = [k for k, sample in enumerate(samples) if sample.lacks_a_root(plan)]
     if missing:  # Newton's random starts may miss a root: those samples again, with more starts
-        _certified(plan, {n: v[missing] for n, v in floats.items()}, [samples[k] for k in missing], rng,
-                   RETRY_STARTS)
+        _certified(plan, {n: v[missing] for n, v in floats.items()}, [samples[k] for k in missing], rng=rng,
+                   starts=RETRY_STARTS)
     magnitudes = _magnitudes(plan, floats, samples)
     useful = 0
     for sample, sizes in zip(samples, magnitudes):
         before = (report.compared, report.evaluated)
-        _check_sample(report, plan, sample, sizes, worst)
+        _check_sample(report, plan, sample, magnitudes=sizes, worst=worst)
         if (report.compared, report.evaluated) != before:
             useful += 1
             progress.step()
@@ -328,7 +346,7 @@ class _Sample:
         return any(real and branch.key not in self.labels for branch, real in zip(plan.branches, self.real))
 
 
-def _certified(plan: _Plan, floats: Mapping[str, Floats], samples: list[_Sample], rng: np.random.Generator,
+def _certified(plan: _Plan, floats: Mapping[str, Floats], samples: list[_Sample], *, rng: np.random.Generator,
                starts: int) -> None:
     """Set each sample's proved roots (and whether some candidate could not be proved); ``floats``
     holds the known variables' float arrays over the samples."""
@@ -414,7 +432,7 @@ def _magnitudes(plan: _Plan, floats: Mapping[str, Floats], samples: list[_Sample
     return rows
 
 
-def _check_sample(report: _Tally, plan: _Plan, sample: _Sample, magnitudes: list[dict[int, float]],
+def _check_sample(report: _Tally, plan: _Plan, sample: _Sample, *, magnitudes: list[dict[int, float]],
                   worst: dict[str, float]) -> None:
     """Evaluate the polynomials on the sample's roots and compare its branches."""
     report.samples += 1
@@ -483,7 +501,7 @@ def _error(plan: _Plan, branch: _Branch, values: list[flint.arb | int], root: Ro
     return error
 
 
-def _require_comparisons(report: _Tally, branches: bool, polynomials: bool) -> None:
+def _require_comparisons(report: _Tally, *, branches: bool, polynomials: bool) -> None:
     """A check that compared nothing fails, saying why, rather than passing vacuously."""
     if not (branches or polynomials):
         report.failures.append("nothing to compare: no branch and no polynomial was given")

@@ -136,7 +136,7 @@ class Polynomial:
         if not self.names:
             return np.full(1, self.sizes.sum())
         points = np.abs(np.stack([np.asarray(values[n], dtype=float) for n in self.names], axis=-1))
-        return np.prod(points[:, None, :] ** self.exponents[None], axis=-1) @ self.sizes
+        return np.asarray(np.prod(points[:, None, :] ** self.exponents[None], axis=-1) @ self.sizes, dtype=np.float64)
 
     def _polys(self) -> dict[tuple[int, ...], flint.arb_poly]:
         """The groups as ``arb_poly``, remade when the working precision changed."""

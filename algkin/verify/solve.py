@@ -101,16 +101,10 @@ class _Block:
 
 
 @functools.lru_cache(maxsize=64)
-def _cached_blocks(unknowns: tuple[str, ...], parameters: tuple[str, ...],
-                   inputs: tuple[tuple[str, tuple[str, str]], ...], equations: tuple[sympy.Expr, ...],
-                   nonnegative: tuple[str, ...]) -> Blocks:
-    return Blocks(System(unknowns, parameters, dict(inputs), equations, nonnegative))
-
-
 def blocks_of(system: System) -> Blocks:
-    """The system's ``Blocks``, compiled once per system and reused by later calls."""
-    return _cached_blocks(system.unknowns, system.parameters, tuple(system.inputs.items()), system.equations,
-                          system.nonnegative)
+    """The system's ``Blocks``, compiled once per system (a hashable value: its own key) and
+    reused by later calls."""
+    return Blocks(system)
 
 
 @dataclass
@@ -146,7 +140,7 @@ def solve_floats(blocks: Blocks, known: Mapping[str, Floats], rng: np.random.Gen
             parent, first, second = block.pencil.solve(values, len(owner))
             found = dict(zip(block.names, (first, second)))
         else:
-            parent, found = _newton(block, values, scale, rng, starts)
+            parent, found = _newton(block, values, scale=scale, rng=rng, starts=starts)
         parents.append(parent)
         owner = owner[parent]
         values = {n: v[parent] for n, v in values.items()}
@@ -209,7 +203,7 @@ def _univariate(block: _Block, values: Mapping[str, Floats]) -> tuple[Rows, dict
     return parent, {block.names[0]: np.concatenate(roots) if roots else np.zeros(0)}
 
 
-def _newton(block: _Block, values: Mapping[str, Floats], scale: Floats, rng: np.random.Generator,
+def _newton(block: _Block, values: Mapping[str, Floats], *, scale: Floats, rng: np.random.Generator,
             starts: int) -> tuple[Rows, dict[str, Floats]]:
     """Newton from ``starts`` random points per row, all rows at once; distinct end points per row."""
     rows, size = len(scale), len(block.names)
@@ -271,4 +265,4 @@ def _distinct(points: Floats, scale: Floats) -> NDArray[np.bool_]:
     gap = np.max(np.abs(points[:, :, None, :] - points[:, None, :, :]), axis=3)
     close = (gap <= SAME_ROOT * scale[:, None, None]) & finite[:, None, :] & finite[:, :, None]
     earlier = np.tril(np.ones(points.shape[1], dtype=bool), -1)
-    return finite & ~np.any(close & earlier, axis=2)
+    return np.asarray(finite & ~np.any(close & earlier, axis=2), dtype=np.bool_)

@@ -2,6 +2,7 @@
 
 import math
 from fractions import Fraction
+from importlib.resources import files
 
 import pytest
 from hypothesis import assume, example, given, settings, strategies as st
@@ -174,3 +175,11 @@ def test_toggles_compile_and_branch_the_scene_once_with_its_artefacts(monkeypatc
     found, done = work(lambda: toggles(prepared))
     assert done == {"compile_scene": 0, "closed_forms": 0, "eliminate": 2}
     assert found.to_json() == toggles("fourbar").to_json()
+
+
+def test_a_scene_file_given_as_a_path_object(tmp_path):
+    # as the other analyses take it: a catalog name, a path (text or pathlib.Path) or a Scene
+    path = tmp_path / "lambda.toml"
+    path.write_text(files("algkin.catalog").joinpath("chebyshev-lambda.toml").read_text(encoding="utf-8"))
+    found = toggles(path, artefacts=False)
+    assert (found.toggles, found.grashof["class"]) == ([], "crank-rocker")  # as the module's example says

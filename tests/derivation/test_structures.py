@@ -42,9 +42,9 @@ def test_a_short_stretch_of_motion_is_sampled_where_it_assembles(monkeypatch):
     drawn = []
     solve = check._check_batch
 
-    def spy(report, plan, angles, rng, worst):
+    def spy(report, plan, angles, *, rng, worst):
         drawn.extend(angles["theta"].tolist())
-        return solve(report, plan, angles, rng, worst)
+        return solve(report, plan, angles, rng=rng, worst=worst)
 
     monkeypatch.setattr(check, "_check_batch", spy)
     found = curve("fourbar", "P", set={"d": "7499/1000"})

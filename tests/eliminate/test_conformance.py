@@ -21,17 +21,17 @@ def proportional(a, b):
 def test_radical_axis_of_two_circles(method, backend):
     # Circles about (0,0) radius 3 and (4,0) radius 2 meet where x = (9 - 4 + 16)/8 = 21/8.
     eqs = [x**2 + y**2 - 9, (x - 4) ** 2 + y**2 - 4]
-    result = eliminate(eqs, ["y"], ["x"], method, backend)
+    result = eliminate(eqs, ["y"], ["x"], method=method, backend=backend)
     assert proportional(result.polynomial, 8 * x - 21)
     # and then y**2 = 9 - (21/8)**2 = 135/64.
-    result = eliminate(eqs, ["x"], ["y"], method, backend)
+    result = eliminate(eqs, ["x"], ["y"], method=method, backend=backend)
     assert proportional(result.polynomial, 64 * y**2 - 135)
 
 
 @ALL
 def test_symbolic_radius(method, backend):
     # x**2 + y**2 = r**2 and y = x: x**2 = r**2 / 2, by hand.
-    result = eliminate([x**2 + y**2 - r**2, y - x], ["y"], ["x", "r"], method, backend)
+    result = eliminate([x**2 + y**2 - r**2, y - x], ["y"], ["x", "r"], method=method, backend=backend)
     assert proportional(result.polynomial, 2 * x**2 - r**2)
     assert result.degree == 2 and result.terms == 2
 
@@ -42,7 +42,7 @@ def test_witnesses_drop_the_factor_the_motion_misses(method, backend):
     eqs = [(x - t) * (x + t - 10), t - 1]
     with flint.ctx.workprec(128):
         witness = {"x": flint.arb(1), "t": flint.arb(1)}
-    result = eliminate(eqs, ["t"], ["x"], method, backend, witnesses=[[witness]])
+    result = eliminate(eqs, ["t"], ["x"], method=method, backend=backend, witnesses=[[witness]])
     assert proportional(result.polynomial, x - 1)
     assert [sympy.expand(f) for f in result.dropped] == [x - 9]
 
@@ -53,7 +53,7 @@ def test_witnesses_keep_both_branches(method, backend):
     with flint.ctx.workprec(128):
         plus = {"x": flint.arb(2).sqrt(), "t": flint.arb(2)}
         minus = {"x": -flint.arb(2).sqrt(), "t": flint.arb(2)}
-    result = eliminate([x**2 - t, t - 2], ["t"], ["x"], method, backend, witnesses=[[plus], [minus]])
+    result = eliminate([x**2 - t, t - 2], ["t"], ["x"], method=method, backend=backend, witnesses=[[plus], [minus]])
     assert proportional(result.polynomial, x**2 - 2)
     assert result.dropped == []
 
@@ -62,7 +62,7 @@ def test_witnesses_keep_both_branches(method, backend):
 def test_parametrised_circle_gives_the_unit_circle(method, backend):
     # c = (1 - t**2)/(1 + t**2), s = 2t/(1 + t**2) traces c**2 + s**2 = 1.
     eqs = [c * (1 + t**2) - (1 - t**2), s * (1 + t**2) - 2 * t]
-    result = eliminate(eqs, ["t"], ["c", "s"], method, backend)
+    result = eliminate(eqs, ["t"], ["c", "s"], method=method, backend=backend)
     factors = [f for f, _ in sympy.factor_list(result.polynomial)[1]]
     assert any(proportional(f, c**2 + s**2 - 1) for f in factors)
 
@@ -70,7 +70,7 @@ def test_parametrised_circle_gives_the_unit_circle(method, backend):
 @ALL
 def test_inconsistent_system_fails_loudly(method, backend):
     with pytest.raises(ComputationError):
-        eliminate([x - 1, x - 2, y - x], ["x"], ["y"], method, backend)
+        eliminate([x - 1, x - 2, y - x], ["x"], ["y"], method=method, backend=backend)
 
 
 def test_unknown_names_list_the_valid_ones():

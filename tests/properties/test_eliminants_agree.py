@@ -28,7 +28,7 @@ def eliminants(scene, params, method, backend):
     system = compiled.system
     keep = list(system.input_variables) + list(system.parameters)
     equations = [e for e in system.equations if {"B_x", "B_y"} & {str(v) for v in e.free_symbols}]
-    return {u: eliminate(equations, [o], [u] + keep, method, backend, witnesses=groups).polynomial
+    return {u: eliminate(equations, [o], [u] + keep, method=method, backend=backend, witnesses=groups).polynomial
             for u, o in (("B_x", "B_y"), ("B_y", "B_x"))}
 
 
@@ -70,8 +70,8 @@ def test_from_the_systems_flint_forms_as_sympy_from_its_equations(scene):
     groups = witnesses(compiled, closed_forms(compiled))
     for unknown, task in eliminant_tasks(compiled, groups).items():
         fast = task.run("linear", "flint")
-        slow = eliminate(task.equations, task.eliminate, task.keep, "resultant", "sympy", witnesses=groups,
-                         parameters=task.parameters)
+        slow = eliminate(task.equations, task.eliminate, task.keep, method="resultant", backend="sympy",
+                         witnesses=groups, parameters=task.parameters)
         ratio = sympy.cancel(fast.polynomial / slow.polynomial)
         assert ratio.is_Rational and ratio != 0, (unknown, fast.polynomial, slow.polynomial)
         names = {name: symbol(name) for name in fast.variables}

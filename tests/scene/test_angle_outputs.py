@@ -56,7 +56,7 @@ def test_angle_forms_parse(text, points):
 ])
 def test_bad_angle_forms_are_one_line_scene_errors(text, words):
     with pytest.raises(SceneError) as caught:
-        parse_output("phi", text, POINTS, "s.toml")
+        parse_output("phi", text, POINTS, source="s.toml")
     message = str(caught.value)
     assert "\n" not in message and message.startswith("s.toml: outputs.phi: ")
     for word in words:

@@ -95,3 +95,14 @@ def test_a_run_refused_for_its_length_made_no_design(tmp_path, monkeypatch):
         sweep("fourbar", tmp_path / "out", grid=["a=1:2:1000", "d=1:2:1000"], analyses=["limits"], executor="serial")
     assert made == [0, 0]  # the first design's names, read by the plan; no other made
     assert not (tmp_path / "out").exists()
+
+
+def test_the_sweep_takes_its_options_by_name(tmp_path):
+    from algkin.sweep import plan, sweep
+
+    # a grid passed where the designs' random count was meant is a TypeError, not a silent mix-up
+    with pytest.raises(TypeError):
+        sweep("fourbar", tmp_path / "out", ["a=1:2:2"])
+    with pytest.raises(TypeError):
+        plan("fourbar", ["a=1:2:2"])
+    assert not (tmp_path / "out").exists()

@@ -1,5 +1,8 @@
 """sympy <-> flint conversion round-trips exactly."""
 
+import re
+
+import pytest
 from hypothesis import given, strategies as st
 import sympy
 
@@ -31,3 +34,11 @@ def test_product_matches_sympy(a, b):
     ctx = flint_context(NAMES)
     fa, fb = build(a), build(b)
     assert sympy.expand(to_sympy(to_flint(fa, ctx) * to_flint(fb, ctx), ctx) - fa * fb) == 0
+
+
+def test_a_root_or_an_absolute_value_is_no_polynomial():
+    ctx = flint_context(NAMES)
+    x = GENS[0]
+    for expr, shown in ((sympy.sqrt(x), "sqrt("), (sympy.Abs(x - 1), "Abs(")):
+        with pytest.raises(TypeError, match=rf"not a polynomial: {re.escape(shown)}"):
+            to_flint(expr, ctx)

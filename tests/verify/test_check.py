@@ -2,6 +2,7 @@
 
 from importlib.resources import files
 
+import attrs
 import pytest
 import sympy
 
@@ -12,15 +13,14 @@ from algkin.derivation.assembles import where_assembled
 from algkin.derivation.checking import check_setup
 from algkin.derivation.prepared import prepare
 from algkin.scene import compile_scene, load_scene, load_scene_text
-from algkin.verify import verify_branches
+from algkin.verify import CheckSetup, verify_branches
 
 
 def check(compiled, branches, samples, polynomials, factors=None):
     """The pipeline's independent check of ``branches`` (seed 1): ``verify_branches`` on what
     ``check_setup`` gives, the samples where some branch may assemble."""
-    system, indicators, forms, inputs = check_setup(compiled, branches)
-    return verify_branches(system, indicators, forms, inputs, dict(compiled.parameter_values), samples=samples,
-                           seed=1, polynomials=polynomials, factors=factors, where=where_assembled(compiled, branches))
+    return verify_branches(check_setup(compiled, branches), samples=samples, seed=1, polynomials=polynomials, factors=factors,
+                           where=where_assembled(compiled, branches))
 
 
 def lambda_setup():
@@ -201,3 +201,17 @@ def test_curve_and_derive_check_their_kept_factors():
     assert [len(v) for v in curve.smallest_factor_residual.values()] == [1]
     assert set(derived.smallest_factor_residual) == {"B_x", "B_y"}
     assert curve.passed and derived.passed
+
+
+def test_the_check_setup_is_a_frozen_hashable_value_and_the_rest_is_keyword_only():
+    compiled, branches = lambda_setup()
+    setup = check_setup(compiled, branches)
+    again = CheckSetup(system=setup.system, indicators=list(setup.indicators), branches=list(setup.branches),
+                       inputs=dict(setup.inputs), parameters=dict(compiled.parameter_values))
+    assert setup == again and hash(setup) == hash(again)
+    with pytest.raises(attrs.exceptions.FrozenInstanceError):
+        setup.inputs = {}
+    with pytest.raises(TypeError):
+        setup.branches[0][1]["B_x"] = 0  # its mappings are read-only too
+    with pytest.raises(TypeError):
+        verify_branches(setup, 5)  # samples by name only

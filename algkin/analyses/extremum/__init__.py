@@ -12,8 +12,9 @@ sqrt(b**2 + 160000) - 350
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING, Any, Union
 
 import mpmath
 import sympy
@@ -23,13 +24,18 @@ from ...derivation.prepared import Prepared, given, prepare, require_outputs
 from ...derivation.witnesses import Groups
 from ...errors import UsageError
 from ...scene.load import SceneLike, Values
-from ...scene.model import length_range_problem, range_problem
+from ...scene.model import Input, length_range_problem, range_problem
 from ...system import symbol
 from ..toggles import single_input
 from .angles import AngleScale, direction_problem
-from .closed import ClosedForm, closed_form, describe, value_factors
-from .critical import (DIGITS, CriticalPoint, Problem, critical_points, extreme, meeting_factors, points_at,
-                       stationary_factors)
+from .closed import ClosedForm, Region, closed_form, describe, value_factors
+from .critical import (DIGITS, CriticalPoint, Number, Problem, critical_points, extreme, meeting_factors,
+                       points_at, stationary_factors)
+
+if TYPE_CHECKING:
+    from ...derivation.pipeline import Derivation
+
+Exact = tuple[Union[sympy.Expr, None], Union[sympy.Expr, None]]  # an angle's extreme in degrees, its via's value
 
 __all__ = ["extremum", "extremum_of", "problem_for", "Extremum", "ClosedForm", "CriticalPoint",
            "critical_points", "points_at", "extreme", "extreme_at", "AngleScale"]
@@ -42,20 +48,20 @@ class Extremum:
     scene: str
     output: str
     input: str
-    range: tuple
-    parameters: dict  # the dimensions the numbers are for (symbolic ones at their defaults)
-    critical_points: list  # CriticalPoint, stationary ones then the two range ends
+    range: tuple[float, float]
+    parameters: dict[str, sympy.Expr]  # the dimensions the numbers are for (symbolic ones at their defaults)
+    critical_points: list[CriticalPoint]  # stationary ones then the two range ends
     minimum: CriticalPoint
     maximum: CriticalPoint
-    closed_form: ClosedForm = None
-    problem: Problem = None
-    stationary: list = None  # stationary factors in t and the symbolic dimensions
-    exact: dict = None  # an angle output: 'minimum'/'maximum' -> (degrees, via) exact expressions or None
+    closed_form: ClosedForm | None = None
+    problem: Problem | None = None
+    stationary: list[sympy.Expr] | None = None  # stationary factors in t and the symbolic dimensions
+    exact: dict[str, Exact] | None = None  # an angle output: 'minimum'/'maximum' -> (degrees, via), or Nones
 
-    def to_json(self):
+    def to_json(self) -> dict[str, object]:
         angle = self.problem is None or self.problem.line.is_angle
         point = lambda p: p.to_json() if angle else _in_lengths(p.to_json())  # noqa: E731
-        document = {"scene": self.scene, "of": self.output, "input": self.input, "unit": "deg" if angle else "length",
+        document: dict[str, Any] = {"scene": self.scene, "of": self.output, "input": self.input, "unit": "deg" if angle else "length",
                     "range": list(self.range), "parameters": {n: str(v) for n, v in self.parameters.items()},
                     "critical_points": [point(p) for p in self.critical_points if p.kind != "endpoint"],
                     "endpoints": [point(p) for p in self.critical_points if p.kind == "endpoint"],
@@ -70,16 +76,17 @@ class Extremum:
         return document
 
 
-def _in_lengths(point):
+def _in_lengths(point: Mapping[str, object]) -> dict[str, object]:
     """A critical point's JSON for a length input: ``input_length``, ``enclosure_length``."""
     return {key.replace("_deg", "_length"): value for key, value in point.items()}
 
 
-def _text(expr):
+def _text(expr: sympy.Expr | None) -> str | None:
     return None if expr is None else str(expr)
 
 
-def problem_for(derived, output, degrees=None, *, witnesses: Groups | None = None):
+def problem_for(derived: Derivation, output: str, degrees: tuple[sympy.Expr, sympy.Expr] | None = None, *,
+                witnesses: Groups | None = None) -> Problem:
     """The extremum problem of ``output`` (a scalar or an angle) in a derivation of it; a
     direction's reference is chosen for its motion over ``degrees`` (lo, hi), by default the
     input's range. ``witnesses``: the derivation's (its ``Prepared``'s), drawn again if not given."""
@@ -101,13 +108,14 @@ def problem_for(derived, output, degrees=None, *, witnesses: Groups | None = Non
                    symbol(unknowns[0]), line, parameters, scale, tuple(chosen.discriminants.values()))
 
 
-def _span(spec, angle_range):
+def _span(spec: Input, angle_range: tuple[float | str, float | str] | None) -> tuple[sympy.Expr, sympy.Expr]:
     lo, hi = angle_range if angle_range is not None else (spec.lo, spec.hi)
     to_degrees = lambda v: sympy.Rational(str(v)) * (1 if spec.unit != "rad" else 180 / sympy.pi)  # noqa: E731
     try:
         lo, hi = to_degrees(lo), to_degrees(hi)
     except (TypeError, ValueError, sympy.SympifyError):
         raise UsageError("angle_range", angle_range, "expected two finite numbers (lo, hi)") from None
+    problem: str | None = None
     if not (lo.is_finite and hi.is_finite):
         problem = "must be finite"
     else:
@@ -127,13 +135,15 @@ def extremum(scene: SceneLike | Prepared, output: str, angle_range: tuple[float 
     input in those parameters, with where that holds. ``set`` gives dimensions exact values.
     ``scene`` may be a ``Prepared`` one (``prepare``) for ``output`` alone.
     """
-    prepared = given(scene, params=params, set=set) or prepare(scene, outputs=[output], params=params, set=set)
+    given(scene, params=params, set=set)
+    prepared = scene if isinstance(scene, Prepared) else prepare(scene, outputs=[output], params=params, set=set)
     require_outputs(prepared, "output", [output])
     derived = derive(prepared, method=method, backend=backend, samples=0)
     return extremum_of(derived, output, angle_range, largest, backend, witnesses=prepared.witnesses)
 
 
-def extremum_of(derived, output, angle_range=None, largest=False, backend="flint", *, witnesses=None):
+def extremum_of(derived: Derivation, output: str, angle_range: tuple[float | str, float | str] | None = None,
+                largest: bool = False, backend: str = "flint", *, witnesses: Groups | None = None) -> Extremum:
     """``extremum`` of an output of an existing derivation (with that output alone).
 
     An angle output's values are in degrees (see ``angles``): its extrema are the via's,
@@ -162,9 +172,11 @@ def extremum_of(derived, output, angle_range=None, largest=False, backend="flint
                     closed, problem, stationary, exact)
 
 
-def _exact(problem, stationary, defaults, best):
+def _exact(problem: Problem, stationary: Sequence[sympy.Expr], defaults: Mapping[sympy.Symbol, sympy.Expr],
+           best: CriticalPoint) -> Exact:
     """``(degrees, via)`` of an angle's extremum ``best`` at the dimensions ``defaults``, as exact
     expressions (radicals); ``(None, None)`` where the via's root has none of degree <= 4."""
+    assert problem.scale is not None, "an angle output's"
     fixed = problem.at(defaults)
     factors = [sympy.expand(f.xreplace(defaults)) for f in stationary]
     with mpmath.workdps(DIGITS):
@@ -174,12 +186,12 @@ def _exact(problem, stationary, defaults, best):
         return problem.scale.expr(found.value), found.value
 
 
-def _equal(expr, value):
+def _equal(expr: sympy.Expr, value: mpmath.mpf) -> bool:
     number = complex(sympy.N(expr, DIGITS))
     return abs(number.imag) < 1e-20 and abs(number.real - float(value)) <= 1e-12 * (1 + abs(float(value)))
 
 
-def in_degrees(point, scale):
+def in_degrees(point: CriticalPoint, scale: AngleScale) -> CriticalPoint:
     """A critical point of an angle's via as one of the angle: its value in degrees, and its
     kind turned round where the angle falls as the via grows."""
     kind = {"minimum": "maximum", "maximum": "minimum"}.get(point.kind, point.kind) if scale.decreasing \
@@ -187,12 +199,13 @@ def in_degrees(point, scale):
     return CriticalPoint(point.input_deg, scale.degrees(point.value), kind, point.enclosure, point.value)
 
 
-def closed_in_degrees(form, scale):
+def closed_in_degrees(form: ClosedForm, scale: AngleScale) -> ClosedForm:
     """The closed form of an angle's via's extremum as the angle's, in degrees."""
     values = [None if v is None else scale.expr(v) for v in form.region_values]
-    regions, k = [], 0
-    for region in form.regions:
-        region = dict(region)
+    regions: list[Region] = []
+    k = 0
+    for original in form.regions:
+        region = original.copy()
         if region["at"] != "nowhere":
             region["value"] = _text(values[k])
             if "sample_value" in region:
@@ -202,7 +215,8 @@ def closed_in_degrees(form, scale):
     return replace(form, value=scale.expr(form.value), regions=regions, region_values=values, via_value=form.value)
 
 
-def extreme_at(problem, stationary, values, lo, hi, largest=False):
+def extreme_at(problem: Problem, stationary: Sequence[sympy.Expr], values: Mapping[sympy.Symbol, sympy.Expr],
+               lo: Number, hi: Number, largest: bool = False) -> CriticalPoint:
     """The certified minimum (maximum with ``largest``) of ``problem``'s output at the dimensions
     ``values``, over ``[lo, hi]`` degrees: an angle's in degrees."""
     scale = problem.scale

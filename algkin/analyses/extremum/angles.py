@@ -22,11 +22,12 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, Any
 
 import flint
 import mpmath
 import numpy as np
+from numpy.typing import NDArray
 import sympy
 
 from ...derivation.witnesses import Groups, witnesses as drawn
@@ -40,7 +41,7 @@ from .critical import DIGITS, Problem
 
 if TYPE_CHECKING:
     from ...derivation.results import Derivation
-    from ...scene.compile import AngleOutput, Compiled
+    from ...scene.compile import AngleOutput
 
 __all__ = ["AngleScale", "direction_problem", "SAMPLES", "MARGIN_DEG"]
 
@@ -97,7 +98,7 @@ def _reference(cos_form: sympy.Expr, sin_form: sympy.Expr, line: Parametrisation
                defaults: Mapping[str, sympy.Expr], lo: float, hi: float, output: str) -> int:
     """The quarter-turn reference k whose opposite direction the sampled motion stays farthest from."""
     angles = np.linspace(float(lo), float(hi), SAMPLES)
-    values = {n: float(sympy.Rational(str(v))) for n, v in defaults.items()}
+    values: dict[str, float | NDArray[np.float64]] = {n: float(sympy.Rational(str(v))) for n, v in defaults.items()}
     names = tuple(v.name for v in line.variables)
     values.update(input_values(names, np.radians(angles) if line.is_angle else angles))
     with np.errstate(invalid="ignore", divide="ignore"):
@@ -129,9 +130,10 @@ def direction_problem(derived: Derivation, angle: AngleOutput, line: Parametrisa
     """The ``Problem`` of a direction output: ``w = tan((phi - k*90)/2)`` on the chosen branch,
     and its eliminant in ``w``, the input's variables and the symbolic dimensions (the factors
     kept by the derivation's ``witnesses``, drawn again if not given)."""
-    compiled = cast("Compiled", derived.compiled)
+    compiled = derived.compiled
     system = compiled.system
     chosen = next(b for b in derived.branches if b.selected)
+    assert angle.sin is not None, "a direction has a sine"
     cos_form, sin_form = chosen.values[angle.cos], chosen.values[angle.sin]
     k = _reference(cos_form, sin_form, line, compiled.parameter_values, lo, hi, output)
     taken = set(system.variables) | set(compiled.parameter_values)
@@ -148,7 +150,7 @@ def _eliminant(derived: Derivation, angle: AngleOutput, k: int, w: sympy.Symbol,
     """``w``'s polynomial: the equations the direction's cosine and sine need, with those two
     written in ``w`` (times ``1 + w**2``), every other unknown eliminated; the factors the
     branches' witnesses vanish on kept."""
-    system = cast("Compiled", derived.compiled).system
+    system = derived.compiled.system
     assert angle.sin is not None, "a direction has a sine"
     cos, sin = symbol(angle.cos), symbol(angle.sin)
     in_w = _rotated((1 - w**2) / (1 + w**2), 2 * w / (1 + w**2), k)
@@ -172,6 +174,7 @@ def _eliminant(derived: Derivation, angle: AngleOutput, k: int, w: sympy.Symbol,
 
 def _witnesses(groups: Groups, angle: AngleOutput, k: int, w: sympy.Symbol) -> list[list[Witness]]:
     """The derivation's witness configurations with ``w`` added, where it is finite."""
+    assert angle.sin is not None, "a direction has a sine"
     extended_groups: list[list[Witness]] = []
     with flint.ctx.workprec(256):
         for group in groups:

@@ -16,20 +16,42 @@ With more parameters the answer holds where every event polynomial keeps its sig
 the defaults (in the cell of the defaults).
 """
 
+from __future__ import annotations
+
+import itertools
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-import itertools
+from typing import Optional, TypedDict
 
 import flint
 import mpmath
 import sympy
 
 from ...eliminate import eliminate
+from ...errors import ComputationError
 from ...system.convert import univariate
 from ...system.roots import real_roots
-from .critical import DIGITS, ROOT_BITS, extreme, meeting_factors, points_at
+from .critical import DIGITS, ROOT_BITS, CriticalPoint, Number, Problem, extreme, meeting_factors, points_at
 
-__all__ = ["ClosedForm", "closed_form", "value_factors"]
+__all__ = ["ClosedForm", "closed_form", "value_factors", "Region"]
+
+Values = Mapping[sympy.Symbol, sympy.Expr]  # the dimensions at a point: symbol -> rational
+Found = tuple[CriticalPoint, "Description"]  # the certified extremum at a point, and its closed form
+
+
+# ``from`` is a keyword: the functional form
+_Interval = TypedDict("_Interval", {"from": Optional[float], "to": Optional[float], "sample": float, "at": str,
+                                    "input": Optional[str], "value": Optional[str]})
+
+
+class Region(_Interval, total=False):
+    """An interval of the one symbolic dimension (None: unbounded) and what the extremum is
+    there, described at ``sample``: its ``at``, its input and value as text (None where it does
+    not assemble), and where it assembles the extremum at the sample."""
+
+    sample_input_deg: float
+    sample_value: float
 
 MATCH = mpmath.mpf(10) ** -20
 
@@ -39,16 +61,16 @@ class ClosedForm:
     """The extremum in the parameters: value and input (degrees), and where that holds."""
 
     value: sympy.Expr
-    input: sympy.Expr  # degrees; None when the root has no expression in radicals
+    input: sympy.Expr | None  # degrees; None when the root has no expression in radicals
     at: str  # 'stationary', 'dead centre' or 'endpoint'
-    input_polynomial: sympy.Expr  # in t = tan(input/2); None at an endpoint
-    valid_when: list  # strings in sympy syntax
-    regions: list  # one parameter: [{from, to, at, input, value}], else []
-    region_values: list  # each region's value as sympy: drawn without parsing the text back
-    via_value: sympy.Expr = None  # an angle output: the value of the scalar standing for it
+    input_polynomial: sympy.Expr | None  # in t = tan(input/2); None at an endpoint
+    valid_when: list[str]  # in sympy syntax
+    regions: list[Region]  # one parameter: [{from, to, at, input, value, ...}], else []
+    region_values: list[sympy.Expr | None]  # each region's value as sympy: drawn without parsing the text back
+    via_value: sympy.Expr | None = None  # an angle output: the value of the scalar standing for it
 
-    def to_json(self):
-        document = {"value": _text(self.value), "input": _text(self.input), "at": self.at,
+    def to_json(self) -> dict[str, object]:
+        document: dict[str, object] = {"value": _text(self.value), "input": _text(self.input), "at": self.at,
                     "input_polynomial": _text(self.input_polynomial), "valid_when": self.valid_when,
                     "regions": self.regions}
         if self.via_value is not None:
@@ -56,11 +78,11 @@ class ClosedForm:
         return document
 
 
-def _text(expr):
+def _text(expr: sympy.Expr | None) -> str | None:
     return None if expr is None else str(expr)
 
 
-def value_factors(problem, backend="flint"):
+def value_factors(problem: Problem, backend: str = "flint") -> list[sympy.Expr]:
     """Factors, in ``u`` and the parameters, of the resultant in ``t`` of ``F`` and ``dF/dtheta``."""
     names = [p.name for p in problem.parameters]
     factors = eliminate(problem.half_angle(), [problem.t.name], [problem.u.name] + names,
@@ -68,7 +90,7 @@ def value_factors(problem, backend="flint"):
     return [f for f in factors if f.has(problem.u)]
 
 
-def _numeric(expr, values):
+def _numeric(expr: sympy.Expr, values: Values) -> mpmath.mpc:
     """``expr`` at rational parameter ``values``, as an mpmath complex (40 digits)."""
     number = sympy.N(expr.xreplace(values), DIGITS)
     if not number.is_finite:
@@ -77,7 +99,8 @@ def _numeric(expr, values):
     return mpmath.mpc(mpmath.mpf(str(real)), mpmath.mpf(str(imag)))
 
 
-def _matching_factor(factors, variable, target, values):
+def _matching_factor(factors: Iterable[sympy.Expr], variable: sympy.Symbol, target: mpmath.mpf,
+                     values: Values) -> sympy.Expr | None:
     """The factor (in ``variable``) that vanishes at the number ``target`` for ``values``."""
     best = None
     for factor in factors:
@@ -92,7 +115,8 @@ def _matching_factor(factors, variable, target, values):
     return None if best is None else best[1]
 
 
-def _root_matching(factor, variable, target, values):
+def _root_matching(factor: sympy.Expr | None, variable: sympy.Symbol, target: mpmath.mpf,
+                   values: Values) -> sympy.Expr | None:
     """The root of ``factor`` in radicals equal to ``target`` at ``values``, denested."""
     if factor is None or sympy.degree(factor, variable) > 4:
         return None
@@ -104,11 +128,11 @@ def _root_matching(factor, variable, target, values):
     return min(candidates, key=sympy.count_ops, default=None)
 
 
-def _exact_degrees(value):
+def _exact_degrees(value: mpmath.mpf) -> sympy.Rational:
     return sympy.Rational(mpmath.nstr(value, 15))
 
 
-def _at_angle(problem, degrees, values):
+def _at_angle(problem: Problem, degrees: sympy.Rational, values: Values) -> sympy.Expr:
     """The closed form at an exact angle, tidied (denested when that is shorter and equal)."""
     raw = problem.closed.xreplace(problem.line.exact_at(degrees))
     target = _numeric(raw, values)
@@ -122,13 +146,14 @@ class Description:
     """What the extremum is at one parameter point, and the polynomials that pin it down."""
 
     at: str  # 'stationary', 'dead centre' or 'endpoint'
-    input: sympy.Expr  # degrees, None without radicals
-    value: sympy.Expr
-    input_factor: sympy.Expr  # the stationary factor in t it is a root of; None at an end
-    value_factor: sympy.Expr  # the polynomial in u its value is a root of
+    input: sympy.Expr | None  # degrees, None without radicals
+    value: sympy.Expr | None
+    input_factor: sympy.Expr | None  # the stationary factor in t it is a root of; None at an end
+    value_factor: sympy.Expr | None  # the polynomial in u its value is a root of
 
 
-def describe(problem, stationary, values_factors, values, best, meeting=()):
+def describe(problem: Problem, stationary: Sequence[sympy.Expr], values_factors: Sequence[sympy.Expr], values: Values,
+             best: CriticalPoint, meeting: Sequence[sympy.Expr] = ()) -> Description:
     """The closed form, in the parameters, of the certified extremum ``best`` at ``values``;
     at a dead centre its input is a root of one of the ``meeting`` factors, not a stationary one."""
     line = problem.line
@@ -152,7 +177,7 @@ def describe(problem, stationary, values_factors, values, best, meeting=()):
     return Description(at, degrees, value, factor, u_factor)
 
 
-def _double_root(problem, root):
+def _double_root(problem: Problem, root: sympy.Expr) -> sympy.Expr | None:
     """Where the two values of a quadratic eliminant meet (a dead centre at ``t = root``):
     ``-b / 2a``, far shorter than the closed form's square root of zero; None otherwise."""
     eliminant = sympy.Poly(problem.numerator_in_t(problem.eliminant), problem.u)
@@ -162,7 +187,8 @@ def _double_root(problem, root):
     return sympy.cancel(sympy.radsimp(sympy.cancel(-b / (2 * a))))
 
 
-def event_polynomials(problem, stationary, values_factors, ends, own=None):
+def event_polynomials(problem: Problem, stationary: Sequence[sympy.Expr], values_factors: Sequence[sympy.Expr],
+                      ends: Sequence[Number], own: Description | None = None) -> list[sympy.Expr]:
     """Polynomials in the parameters whose zeros are the only places the extremum can change.
 
     With ``own`` (a ``Description``), only the events of that extremum: its critical point
@@ -176,7 +202,7 @@ def event_polynomials(problem, stationary, values_factors, ends, own=None):
     for factor in moving:
         if sympy.degree(factor, t) >= 1:
             events += [sympy.discriminant(factor, t), sympy.Poly(factor, t).LC()]
-    candidates = [v for v in values_factors + end_values if v.has(u)]
+    candidates = [v for v in [*values_factors, *end_values] if v.has(u)]
     valued = candidates if own is None else [f for f in (own.value_factor,) if f is not None]
     for factor in valued:
         events += [sympy.discriminant(factor, u), sympy.Poly(factor, u).LC()]
@@ -185,9 +211,9 @@ def event_polynomials(problem, stationary, values_factors, ends, own=None):
     return _event_factors(events, problem.parameters)
 
 
-def _event_factors(events, parameters):
+def _event_factors(events: Iterable[sympy.Expr], parameters: Sequence[sympy.Symbol]) -> list[sympy.Expr]:
     """Distinct irreducible factors, in the parameters, of the events, minus the sign-definite ones."""
-    found = []
+    found: list[sympy.Expr] = []
     for event in events:
         event = sympy.expand(event)
         if event == 0 or not event.free_symbols & set(parameters):
@@ -200,19 +226,20 @@ def _event_factors(events, parameters):
     return found
 
 
-def _sign_definite(poly, parameters):
+def _sign_definite(poly: sympy.Expr, parameters: Sequence[sympy.Symbol]) -> bool:
     """Even powers only, coefficients of one sign: it cannot change sign (zero on a set of no extent)."""
     terms = sympy.Poly(poly, *parameters).terms()
     sign = 1 if terms[0][1] > 0 else -1
     return all(all(e % 2 == 0 for e in monomial) and sign * c > 0 for monomial, c in terms)
 
 
-def closed_form(problem, stationary, defaults, lo, hi, largest=False):
+def closed_form(problem: Problem, stationary: list[sympy.Expr], defaults: Values, lo: Number, hi: Number,
+                largest: bool = False) -> ClosedForm:
     """The extremum of ``problem`` (parameters symbolic) over ``[lo, hi]`` degrees as a closed form."""
     values_factors = value_factors(problem)
     meeting = meeting_factors(problem)
 
-    def extremum_at(values):
+    def extremum_at(values: Values) -> Found | None:
         """The certified extremum at ``values`` and its description; ``None`` where the output
         is real nowhere on the range (the mechanism does not assemble at those dimensions)."""
         points = points_at(problem, stationary, values, lo, hi, meeting)
@@ -222,19 +249,22 @@ def closed_form(problem, stationary, defaults, lo, hi, largest=False):
         return best, describe(problem, stationary, values_factors, values, best, meeting)
 
     with mpmath.workdps(DIGITS):
-        _, here = extremum_at(defaults) or (None, extreme([]))  # real nowhere at the defaults: refused
+        found = extremum_at(defaults)
+        if found is None:  # real nowhere at the defaults: refused, as ``extreme`` refuses
+            raise ComputationError("the output is not real anywhere on the range")
+        _, here = found
         if len(problem.parameters) == 1:
             events = event_polynomials(problem, stationary + meeting, values_factors, (lo, hi))
             regions, values = _regions(problem, events, extremum_at, defaults)
             conditions = _interval_conditions(problem.parameters[0], regions, defaults)
         else:
-            regions, values = [], []
+            regions, values = [], []  # no regions in more than one dimension
             own = event_polynomials(problem, stationary + meeting, values_factors, (lo, hi), here)
             conditions = _sign_conditions(own, defaults)
     return ClosedForm(here.value, here.input, here.at, here.input_factor, conditions, regions, values)
 
 
-def _sign_conditions(events, defaults):
+def _sign_conditions(events: Iterable[sympy.Expr], defaults: Values) -> list[str]:
     conditions = []
     for event in events:
         sign = mpmath.sign(_numeric(event, defaults).real)
@@ -242,17 +272,17 @@ def _sign_conditions(events, defaults):
     return conditions
 
 
-def _interval_conditions(name, regions, defaults):
+def _interval_conditions(name: sympy.Symbol, regions: Sequence[Region], defaults: Values) -> list[str]:
     home = next(r for r in regions if _contains(r, defaults[name]))
     return [_interval_text(name, r["from"], r["to"]) for r in regions
             if (r["at"], r["input"], r["value"]) == (home["at"], home["input"], home["value"])]
 
 
-def _contains(region, value):
+def _contains(region: Region, value: float) -> bool:
     return (region["from"] is None or region["from"] <= value) and (region["to"] is None or value <= region["to"])
 
 
-def _interval_text(name, lo, hi):
+def _interval_text(name: sympy.Symbol, lo: float | None, hi: float | None) -> str:
     if lo is None and hi is None:
         return f"every real {name}"
     if lo is None:
@@ -262,14 +292,16 @@ def _interval_text(name, lo, hi):
     return f"{lo:.15g} < {name} < {hi:.15g}"
 
 
-def _regions(problem, events, extremum_at, defaults):
+def _regions(problem: Problem, events: Sequence[sympy.Expr], extremum_at: Callable[[Values], Found | None],
+             defaults: Values) -> tuple[list[Region], list[sympy.Expr | None]]:
     """Per interval between the events' real roots: where the extremum is and its closed form;
     and each region's value as a sympy expression."""
     (name,) = problem.parameters
     with flint.ctx.workprec(ROOT_BITS):
         cuts = sorted({float(r.ball.mid()) for e in events for r in real_roots(univariate(e, name))})
-    bounds = [None] + cuts + [None]
-    regions, values = [], []
+    bounds: list[float | None] = [None, *cuts, None]
+    regions: list[Region] = []
+    values: list[sympy.Expr | None] = []
     for lo, hi in zip(bounds, bounds[1:]):
         sample = defaults[name] if len(bounds) == 2 else _inside(lo, hi)
         region, value = _region(lo, hi, sample, extremum_at({name: sample}))
@@ -281,27 +313,32 @@ def _regions(problem, events, extremum_at, defaults):
     return regions, values
 
 
-def _same(one, other):
-    return all(one[k] == other[k] for k in ("at", "input", "value"))
+def _same(one: Region, other: Region) -> bool:
+    return (one["at"], one["input"], one["value"]) == (other["at"], other["input"], other["value"])
 
 
-def _region(lo, hi, sample, found):
+def _region(lo: float | None, hi: float | None, sample: sympy.Rational, found: Found | None
+            ) -> tuple[Region, sympy.Expr | None]:
     """One interval of the parameter, described at ``sample`` by ``found`` (``extremum_at``):
     where the mechanism does not assemble on the range, ``at`` is 'nowhere' and there is no value."""
-    region = {"from": lo, "to": hi, "sample": float(sample)}
     if found is None:
-        return dict(region, at="nowhere", input=None, value=None), None
+        return Region({"from": lo, "to": hi, "sample": float(sample), "at": "nowhere", "input": None,
+                       "value": None}), None
     best, described = found
-    return dict(region, at=described.at, input=_text(described.input), value=_text(described.value),
-                sample_input_deg=float(best.input_deg), sample_value=float(best.value)), described.value
+    region = Region({"from": lo, "to": hi, "sample": float(sample), "at": described.at,
+                     "input": _text(described.input), "value": _text(described.value)})
+    # where it assembles, the extremum at the sample too (a figure draws it)
+    region["sample_input_deg"], region["sample_value"] = float(best.input_deg), float(best.value)
+    return region, described.value
 
 
-def _inside(lo, hi):
+def _inside(lo: float | None, hi: float | None) -> sympy.Rational:
     """A simple rational strictly between two cuts (either may be None for infinity); not 0,
     where a dimension degenerates (a crank of length 0 moves nothing), when the interval has more."""
-    if lo is None:
+    if lo is None and hi is not None:
         return sympy.Rational(Fraction(hi - max(1.0, abs(hi))).limit_denominator(1000))
-    if hi is None:
+    if hi is None and lo is not None:
         return sympy.Rational(Fraction(lo + max(1.0, abs(lo))).limit_denominator(1000))
+    assert lo is not None and hi is not None  # no cut at all: the defaults are the sample
     middle = sympy.Rational(Fraction((lo + hi) / 2).limit_denominator(10**6))
     return middle or sympy.Rational(Fraction((lo + 3 * hi) / 4).limit_denominator(10**6))

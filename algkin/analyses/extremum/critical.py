@@ -9,8 +9,11 @@ square roots, no numeric minimiser. A length input is ``t`` itself (``F_t = 0``)
 values shown as lengths where an angle's are in degrees (``input_deg`` holds either).
 """
 
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Union
 
 import flint
 import mpmath
@@ -32,6 +35,8 @@ __all__ = ["Problem", "CriticalPoint", "critical_points", "points_at", "extreme"
 ROOT_BITS = 128
 DIGITS = 40
 
+Number = Union[int, float, sympy.Rational, mpmath.mpf]  # a range end: exact, or an mpf
+
 
 @dataclass(frozen=True)
 class Problem:
@@ -41,31 +46,31 @@ class Problem:
     closed: sympy.Expr  # u(c, s; parameters) on the selected branch
     u: sympy.Symbol
     line: Parametrisation  # the input's variables in t = tan(theta / 2), or the length t
-    parameters: tuple  # symbols left symbolic
-    scale: "AngleScale | None" = None  # an angle output: how its degrees follow from u (``angles``)
-    valid: tuple = ()  # the chosen branch's discriminants: it assembles where all are >= 0
+    parameters: tuple[sympy.Symbol, ...]  # symbols left symbolic
+    scale: AngleScale | None = None  # an angle output: how its degrees follow from u (``angles``)
+    valid: tuple[sympy.Expr, ...] = ()  # the chosen branch's discriminants: it assembles where all are >= 0
 
-    def at(self, values):
+    def at(self, values: Mapping[sympy.Symbol, sympy.Expr]) -> Problem:
         """The problem with parameters fixed (``values``: symbol -> rational)."""
         return replace(self, eliminant=sympy.expand(self.eliminant.xreplace(values)),
                        closed=self.closed.xreplace(values), parameters=(),
                        valid=tuple(d.xreplace(values) for d in self.valid))
 
     @property
-    def t(self):
+    def t(self) -> sympy.Symbol:
         return self.line.t
 
-    def half_angle(self):
+    def half_angle(self) -> list[sympy.Expr]:
         """``F`` and ``dF/dtheta`` as polynomials in ``u``, ``t`` and the parameters."""
         along = self.line.derivative(self.eliminant)
         if along == 0:
             raise UsageError("output", str(self.u), "the output does not depend on the input")
         return [self.numerator_in_t(e) for e in (self.eliminant, along)]
 
-    def numerator_in_t(self, expr):
+    def numerator_in_t(self, expr: sympy.Expr) -> sympy.Expr:
         return self.line.numerator(expr)
 
-    def value(self, degrees):
+    def value(self, degrees: mpmath.mpf) -> mpmath.mpf:
         """The closed form at ``degrees`` (a length input's value; mpmath), nan where it is not
         real or the branch does not assemble (a closed form may be real past that: a
         transmission angle's cosine)."""
@@ -76,7 +81,7 @@ class Problem:
         return result
 
 
-def _evaluated(expr, values):
+def _evaluated(expr: sympy.Expr, values: Mapping[str, object]) -> mpmath.mpf | mpmath.mpc:
     """``expr`` in mpmath, nan where it divides by zero (a direction's via at its cut)."""
     try:
         return evaluate(expr, values, MPMATH)
@@ -91,11 +96,11 @@ class CriticalPoint:
     input_deg: mpmath.mpf
     value: mpmath.mpf
     kind: str  # minimum, maximum, inflection, dead centre, endpoint
-    enclosure: object = None  # arb ball of the input in degrees; None at a range end
-    via: mpmath.mpf = None  # an angle output: the value of the scalar standing for it (``angles``)
+    enclosure: flint.arb | None = None  # the input in degrees; None at a range end
+    via: mpmath.mpf | None = None  # an angle output: the value of the scalar standing for it (``angles``)
 
-    def to_json(self):
-        point = {"input_deg": float(self.input_deg), "value": float(self.value), "kind": self.kind}
+    def to_json(self) -> dict[str, object]:
+        point: dict[str, object] = {"input_deg": float(self.input_deg), "value": float(self.value), "kind": self.kind}
         if self.enclosure is not None:
             point["enclosure_deg"] = self.enclosure.str(20)
         if self.via is not None:
@@ -103,7 +108,7 @@ class CriticalPoint:
         return point
 
 
-def stationary_factors(problem, backend="flint"):
+def stationary_factors(problem: Problem, backend: str = "flint") -> list[sympy.Expr]:
     """Factors, in ``t`` and the parameters, of the resultant in ``u`` of ``F`` and ``dF/dtheta``."""
     names = [p.name for p in problem.parameters]
     try:
@@ -113,14 +118,14 @@ def stationary_factors(problem, backend="flint"):
         raise ComputationError(f"no stationary condition for {problem.u}: {err}") from None
 
 
-def meeting_factors(problem):
+def meeting_factors(problem: Problem) -> list[sympy.Expr]:
     """Factors, in ``t`` and the parameters, of ``F``'s discriminant in ``u``: where two values
     of the output meet (dead centres among them); none where ``u`` is polynomial in the input.
     With them, the factors of the branch's own discriminants (``Problem.valid``): where it
     stops assembling even though the output's values do not meet (both modes give a
     transmission angle the same cosine)."""
     eliminant = problem.numerator_in_t(problem.eliminant)
-    found = []
+    found: list[sympy.Expr] = []
     if sympy.degree(eliminant, problem.u) >= 2:
         names = [p.name for p in problem.parameters]
         try:
@@ -137,7 +142,8 @@ def meeting_factors(problem):
     return found
 
 
-def critical_points(problem, factors, lo, hi, meeting=None):
+def critical_points(problem: Problem, factors: Sequence[sympy.Expr] | None, lo: Number, hi: Number,
+                    meeting: Sequence[sympy.Expr] | None = None) -> list[CriticalPoint]:
     """Stationary points of ``problem`` (fixed dimensions) in ``[lo, hi]`` degrees, its dead
     centres, then the two ends.
 
@@ -147,7 +153,7 @@ def critical_points(problem, factors, lo, hi, meeting=None):
     """
     polys = _fixed_or_anew(factors, stationary_factors, problem)
     meeting = _fixed_or_anew(meeting, meeting_factors, problem)
-    found = []
+    found: list[CriticalPoint] = []
     with flint.ctx.workprec(ROOT_BITS), mpmath.workdps(DIGITS):
         lo, hi = _mp(lo), _mp(hi)
         balls = [problem.line.shown(r.ball) for p in polys if p.has(problem.t)
@@ -166,7 +172,8 @@ def critical_points(problem, factors, lo, hi, meeting=None):
     return sorted(found, key=lambda p: p.input_deg) + ends
 
 
-def _fixed_or_anew(factors, compute, problem):
+def _fixed_or_anew(factors: Sequence[sympy.Expr] | None, compute: Callable[[Problem], list[sympy.Expr]],
+                   problem: Problem) -> list[sympy.Expr]:
     """``factors`` with the parameters fixed, or ``compute(problem)`` where fixing them made
     one vanish identically (or none were given)."""
     if factors is None or any(f == 0 for f in factors):
@@ -174,7 +181,8 @@ def _fixed_or_anew(factors, compute, problem):
     return list(factors)
 
 
-def _dead_centres(problem, meeting, lo, hi, found):
+def _dead_centres(problem: Problem, meeting: Sequence[sympy.Expr], lo: mpmath.mpf, hi: mpmath.mpf,
+                  found: list[CriticalPoint]) -> list[CriticalPoint]:
     """Where the branch stops being real, inside the range: the ends of its real intervals.
 
     There ``du/dtheta`` is infinite, not zero, so no stationary condition holds, yet the
@@ -182,7 +190,7 @@ def _dead_centres(problem, meeting, lo, hi, found):
     real roots in ``t`` of ``F``'s discriminant in ``u`` (two values of ``u`` meet), those
     where the branch is real on one side only; at the others two branches merely share a value.
     """
-    points = []
+    points: list[CriticalPoint] = []
     for ball in (problem.line.shown(r.ball) for f in meeting if f.has(problem.t)
                  for r in real_roots(univariate(f, problem.t))):
         middle = mpmath.mpf(ball.mid().str(DIGITS, radius=False))
@@ -194,14 +202,14 @@ def _dead_centres(problem, meeting, lo, hi, found):
     return points
 
 
-def _ends_here(problem, degrees):
+def _ends_here(problem: Problem, degrees: mpmath.mpf) -> bool:
     """Whether the branch is real just on one side of ``degrees``."""
     step = mpmath.mpf(10) ** -12
     left, right = (problem.value(degrees + d) for d in (-step, step))
     return (left == left) != (right == right)
 
 
-def _value_at_meeting(problem, degrees):
+def _value_at_meeting(problem: Problem, degrees: mpmath.mpf) -> mpmath.mpf:
     """The branch's value where its square root's argument is zero up to rounding (the
     imaginary part then tiny), nan where the branch is not real."""
     result = _evaluated(problem.closed, problem.line.numbers_at(degrees))
@@ -211,7 +219,8 @@ def _value_at_meeting(problem, degrees):
     return result
 
 
-def points_at(problem, stationary, values, lo, hi, meeting=None):
+def points_at(problem: Problem, stationary: Sequence[sympy.Expr], values: Mapping[sympy.Symbol, sympy.Expr],
+              lo: Number, hi: Number, meeting: Sequence[sympy.Expr] | None = None) -> list[CriticalPoint]:
     """``critical_points`` with the dimensions fixed at ``values`` (symbol -> rational); the
     ``stationary`` and ``meeting`` factors, found once with the dimensions symbolic, are
     specialised rather than eliminated again."""
@@ -221,23 +230,23 @@ def points_at(problem, stationary, values, lo, hi, meeting=None):
         return critical_points(problem.at(values), factors, lo, hi, fixed_meeting)
 
 
-def _mp(number):
+def _mp(number: Number) -> mpmath.mpf:
     """A rational (sympy, int) or mpf as an mpf at the working precision."""
     number = sympy.Rational(number) if not isinstance(number, mpmath.mpf) else number
     return number if isinstance(number, mpmath.mpf) else mpmath.mpf(int(number.p)) / int(number.q)
 
 
-def _seen(found, degrees):
+def _seen(found: Sequence[CriticalPoint], degrees: mpmath.mpf) -> bool:
     return any(abs(p.input_deg - degrees) < mpmath.mpf(10) ** (-DIGITS // 2) for p in found)
 
 
-def _is_stationary(problem, degrees):
+def _is_stationary(problem: Problem, degrees: mpmath.mpf) -> bool:
     step = mpmath.mpf(10) ** -12
     slope = (problem.value(degrees + step) - problem.value(degrees - step)) / (2 * step)
     return abs(slope) <= mpmath.mpf(10) ** -9 * (1 + abs(problem.value(degrees)))
 
 
-def _kind(problem, degrees):
+def _kind(problem: Problem, degrees: mpmath.mpf) -> str:
     step = mpmath.mpf(10) ** -4
     here, left, right = (problem.value(degrees + d) for d in (0, -step, step))
     if left > here and right > here:
@@ -247,7 +256,7 @@ def _kind(problem, degrees):
     return "inflection"
 
 
-def extreme(points, largest=False):
+def extreme(points: Sequence[CriticalPoint], largest: bool = False) -> CriticalPoint:
     """The lowest (or highest) real-valued point of ``points``."""
     real = [p for p in points if p.value == p.value]
     if not real:

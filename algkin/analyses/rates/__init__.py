@@ -108,7 +108,8 @@ def check_forms(derivation: Derivation, forms: list[dict[str, Rate]], samples: i
     """``forms`` (per branch of ``derivation``, unknown -> ``Rate``) against central differences,
     symbolic dimensions at their defaults; a test hands it wrong forms to see them caught."""
     compiled: Any = derivation.compiled
-    system, indicators, branches, spans = check_setup(compiled, derivation.branches)
+    setup = check_setup(compiled, derivation.branches)
+    system, indicators, branches, spans = setup.system, setup.indicators, setup.branches, setup.inputs
     defaults = {symbol(n): compiled.parameter_values[n] for n in compiled.system.parameters}
     checked = [(labels, {u: (r.velocity.xreplace(defaults), r.acceleration.xreplace(defaults)) for u, r in f.items()},
                 discriminants) for (labels, _, discriminants), f in zip(branches, forms)]

@@ -30,7 +30,7 @@ from __future__ import annotations
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any, TypedDict, Union
 
 import flint
 import sympy
@@ -40,11 +40,27 @@ from ...runtime.budget import current
 from ...system.convert import flint_context, to_flint, to_flint_integer
 from .exact import ENCLOSURE_BITS, Coordinate, coordinates, polynomial_text
 from .local import Local, describe, multiplicity, shift
+from .numberfield import RealRoot
 from .locate import ExactPoint, locate, top_form
+
+if TYPE_CHECKING:
+    from ...derivation.pipeline import CurveResult
+    from ...scene.load import SceneLike, Values
 
 __all__ = ["singular", "singular_points", "SingularPoint", "Singularities", "degree_and_circularity"]
 
 _INTEGER = flint.fmpz_mpoly_ctx.get(("x", "y"), "lex")
+
+Terms = dict[tuple[int, int], int]  # the curve's: (x power, y power) -> integer coefficient
+Representation = dict[str, Union[str, int]]  # t = x + shear*y: {t, shear, polynomial p(t), x(t), y(t)}
+
+
+class ComplexPoints(TypedDict):
+    """A conjugate class of singular points none of which is real."""
+
+    count: int
+    multiplicity: int
+    representation: Representation
 
 
 @dataclass
@@ -54,7 +70,7 @@ class SingularPoint:
     x: Coordinate
     y: Coordinate
     local: Local
-    representation: dict[str, Any]  # t = x + shear*y: {shear, polynomial p(t), x(t), y(t)}
+    representation: Representation
 
     @property
     def kind(self) -> str:
@@ -83,9 +99,9 @@ class Singularities:
     degree: int
     circularity: int
     points: list[SingularPoint]
-    complex: list[dict[str, Any]]  # per conjugate class: {count, multiplicity, polynomial}
+    complex: list[ComplexPoints]
     timings: dict[str, float] = field(default_factory=dict)
-    source: dict[str, Any] = field(default_factory=dict)  # scene, point, verification: when from a scene
+    source: dict[str, object] = field(default_factory=dict)  # scene, point, verification: when from a scene
 
     @property
     def counts(self) -> dict[str, int]:
@@ -103,7 +119,8 @@ class Singularities:
                 "complex_singular_points": self.complex, "timings": self.timings}
 
 
-def singular(scene: Any, point: str, *, set: Any = None, samples: int = 40,  # noqa: A002 - the public name (--set)
+def singular(scene: SceneLike, point: str, *, set: Values | None = None,  # noqa: A002 - the public name (--set)
+             samples: int = 40,
              seed: int = 0) -> Singularities:
     """The singular points of the curve ``point`` traces in ``scene`` (``algkin.curve``, its
     verification on ``samples`` inputs included), every dimension at its default or ``set``;
@@ -119,7 +136,7 @@ def singular(scene: Any, point: str, *, set: Any = None, samples: int = 40,  # n
     return found
 
 
-def singular_points(curve: Any, variables: Sequence[str] | None = None) -> Singularities:
+def singular_points(curve: sympy.Expr | CurveResult, variables: Sequence[str] | None = None) -> Singularities:
     """The singular points of ``curve = 0``: a sympy polynomial with rational coefficients in two
     ``variables`` (default: its two free symbols, sorted), or a ``CurveResult``."""
     start = time.perf_counter()
@@ -129,7 +146,8 @@ def singular_points(curve: Any, variables: Sequence[str] | None = None) -> Singu
     _check_squarefree(integer, expr)
     degree, circularity = degree_and_circularity(integer)
     terms = {(int(i), int(j)): int(c) for (i, j), c in integer.to_dict().items()}
-    real, complex_ = [], []
+    real: list[SingularPoint] = []
+    complex_: list[ComplexPoints] = []
     for exact in locate(integer):
         roots = exact.field.real_roots()
         representation = _representation(exact)
@@ -141,13 +159,14 @@ def singular_points(curve: Any, variables: Sequence[str] | None = None) -> Singu
                          {"singular": time.perf_counter() - start})
 
 
-def _polynomial(curve, variables):
+def _polynomial(curve: sympy.Expr | CurveResult, variables: Sequence[str] | None) -> tuple[sympy.Expr, tuple[str, str]]:
     """``(sympy polynomial, (x name, y name))`` from what ``singular_points`` accepts."""
     if hasattr(curve, "elimination") and hasattr(curve, "variables"):  # a CurveResult
         if curve.compiled.system.parameters:
             raise UsageError("curve", ", ".join(curve.compiled.system.parameters),
                              "these dimensions are symbolic; singular points need every dimension a number")
-        return curve.elimination.polynomial, tuple(curve.variables)
+        x, y = curve.variables
+        return curve.elimination.polynomial, (x, y)
     if not isinstance(curve, sympy.Expr):
         raise UsageError("curve", type(curve).__name__, "expected a sympy polynomial or what algkin.curve returns")
     expr = curve
@@ -167,10 +186,10 @@ def _polynomial(curve, variables):
         raise UsageError("curve", str(expr), f"needs rational coefficients, has {poly.domain}")
     if poly.total_degree() < 1:
         raise UsageError("curve", str(expr), "is a constant, not a curve")
-    return poly.as_expr(), names
+    return poly.as_expr(), (names[0], names[1])
 
 
-def _check_squarefree(integer, expr):
+def _check_squarefree(integer: flint.fmpz_mpoly, expr: sympy.Expr) -> None:
     """A repeated factor is singular all along: no finite set of points to report."""
     _, factors = integer.factor_squarefree()
     repeated = [str(f) for f, e in factors if e > 1]
@@ -185,7 +204,8 @@ def degree_and_circularity(curve: flint.fmpz_mpoly) -> tuple[int, int]:
     >>> degree_and_circularity((x**2 + y**2 - 2*x)**2 - 4*(x**2 + y**2))    # a cardioid
     (4, 2)
     """
-    top = _INTEGER.from_dict(top_form(curve))
+    terms: dict[tuple[int, ...], int] = {m: c for m, c in top_form(curve).items()}
+    top = _INTEGER.from_dict(terms)
     x, y = _INTEGER.gens()
     circle, count = x * x + y * y, 0
     while not top.is_constant():
@@ -196,19 +216,21 @@ def degree_and_circularity(curve: flint.fmpz_mpoly) -> tuple[int, int]:
     return int(curve.total_degree()), count
 
 
-def _real_point(exact: ExactPoint, terms, degree, root, x, y, representation):
+def _real_point(exact: ExactPoint, terms: Terms, degree: int, root: RealRoot, x: Coordinate, y: Coordinate,
+                representation: Representation) -> SingularPoint:
     _check_enclosure(terms, x.ball, y.ball)
     local = describe(exact.field, shift(exact.field, terms, exact.x, exact.y), degree, root)
     return SingularPoint(x, y, local, representation)
 
 
-def _representation(exact):
+def _representation(exact: ExactPoint) -> Representation:
     return {"t": f"x + {exact.shear}*y" if exact.shear else "x", "shear": exact.shear,
             "polynomial": str(polynomial_text(exact.field.minimal, "t")),
             "x": str(polynomial_text(exact.x, "t")), "y": str(polynomial_text(exact.y, "t"))}
 
 
-def _complex_points(exact, terms, real, representation):
+def _complex_points(exact: ExactPoint, terms: Terms, real: int, representation: Representation
+                    ) -> list[ComplexPoints]:
     count = exact.field.degree - real
     if not count:
         return []
@@ -216,7 +238,7 @@ def _complex_points(exact, terms, real, representation):
     return [{"count": count, "multiplicity": m, "representation": representation}]
 
 
-def _check_enclosure(terms, x, y):
+def _check_enclosure(terms: Terms, x: flint.arb, y: flint.arb) -> None:
     """The exact algebra's point must make ``F, F_x, F_y`` contain zero in balls (a guard on the
     whole chain: ball, field element, shear)."""
     with flint.ctx.workprec(ENCLOSURE_BITS + 64):

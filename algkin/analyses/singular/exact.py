@@ -73,7 +73,7 @@ def minimal_polynomial(field: NumberField, element: Element) -> flint.fmpz_poly:
     return minimal if minimal.coeffs()[-1] > 0 else -minimal
 
 
-def _exact(minimal, text, element, root):
+def _exact(minimal: flint.fmpz_poly, text: sympy.Expr, element: Element, root: RealRoot) -> sympy.Expr:
     """The sympy value: the rational itself, or ``CRootOf(minimal, index)`` at the root the ball meets."""
     if minimal.degree() == 1:
         a, b = minimal.coeffs()
@@ -91,4 +91,4 @@ def _exact(minimal, text, element, root):
 def polynomial_text(poly: flint.fmpz_poly | flint.fmpq_poly, name: str) -> sympy.Expr:
     """A univariate python-flint polynomial as a sympy expression in ``name``."""
     ctx = flint.fmpq_mpoly_ctx.get((name,), "lex")
-    return to_sympy(ctx.from_dict({(k,): flint.fmpq(c) for k, c in enumerate(poly.coeffs()) if c != 0}), ctx)
+    return to_sympy(ctx.from_dict({(k,): c for k, c in enumerate(flint.fmpq_poly(poly).coeffs()) if c != 0}), ctx)

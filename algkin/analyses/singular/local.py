@@ -27,14 +27,33 @@ Milnor number at most ``(n - 1)**2``, which bounds the series' length.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from math import comb
+from typing import TypedDict
 
 from ...system.roots import RealRoot
 from .numberfield import Element, NumberField, poly_derivative, poly_gcd, real_root_count, trim
 
 __all__ = ["shift", "multiplicity", "describe", "Local"]
 
-Local = dict  # {kind, multiplicity, a_k, hessian_sign, real_branches, tangents: {distinct, real}}
+
+
+class Tangents(TypedDict):
+    distinct: int
+    real: int
+
+
+class Local(TypedDict, total=False):
+    """A singular point's local type (a double point's type as found: some keys only)."""
+
+    kind: str
+    multiplicity: int
+    a_k: int | None
+    hessian_sign: int | None
+    real_branches: int | None
+    tangents: Tangents
+
+
 Expansion = dict[tuple[int, int], Element]
 _NAMES = {2: "cusp", 3: "tacnode", 4: "ramphoid cusp", 5: "oscnode"}
 _MULTIPLE = {3: "triple point", 4: "quadruple point"}
@@ -53,7 +72,7 @@ def shift(field: NumberField, curve: dict[tuple[int, int], int], x0: Element, y0
     return {key: value for key, value in ((key, field.reduce(v)) for key, v in out.items()) if not value.is_zero()}
 
 
-def _powers(field, value, count):
+def _powers(field: NumberField, value: Element, count: int) -> list[Element]:
     powers = [field.one()]
     for _ in range(count):
         powers.append(field.mul(powers[-1], value))
@@ -69,16 +88,15 @@ def describe(field: NumberField, expansion: Expansion, degree: int, root: RealRo
     """The point's local type (``root``: the real root of the field's polynomial it sits at)."""
     m = multiplicity(expansion)
     form = {i: c for (i, j), c in expansion.items() if i + j == m}  # X**i Y**(m - i)
-    local: Local = {"multiplicity": m, "tangents": _tangents(field, form, m, root), "kind": _MULTIPLE.get(m),
+    local: Local = {"multiplicity": m, "tangents": _tangents(field, form, m, root),
+                    "kind": _MULTIPLE.get(m, f"point of multiplicity {m}"),
                     "a_k": None, "hessian_sign": None, "real_branches": None}
-    if m == 2:
+    if m == 2:  # its kind told apart
         local.update(_double(field, expansion, form, degree, root))
-    elif local["kind"] is None:
-        local["kind"] = f"point of multiplicity {m}"
     return local
 
 
-def _tangents(field, form, m, root):
+def _tangents(field: NumberField, form: dict[int, Element], m: int, root: RealRoot) -> Tangents:
     """Distinct and real tangent lines: roots of ``F_m(s, 1)``, and the line ``Y = 0`` where
     ``F_m(1, 0) = 0`` (the form's degree in ``s`` drops)."""
     f = trim(field, [form.get(i, field.zero()) for i in range(m + 1)])
@@ -87,7 +105,8 @@ def _tangents(field, form, m, root):
     return {"distinct": distinct, "real": real_root_count(field, f, root) + horizontal}
 
 
-def _double(field, expansion, form, degree, root):
+def _double(field: NumberField, expansion: Expansion, form: dict[int, Element], degree: int,
+            root: RealRoot) -> Local:
     """Node (crunode, acnode) by the Hessian's sign; else the ``A_k`` and its real branches."""
     zero = field.zero()
     a, b, c = form.get(2, zero), form.get(1, zero), form.get(0, zero)
@@ -107,7 +126,8 @@ def _double(field, expansion, form, degree, root):
     return {"kind": kind, "a_k": k, "hessian_sign": 0, "real_branches": 2 if real else 0}
 
 
-def _splitting(field, expansion, a, b, c, degree):
+def _splitting(field: NumberField, expansion: Expansion, a: Element, b: Element, c: Element,
+               degree: int) -> tuple[int, Element, Element] | None:
     """``(k, a, c)`` of ``F ~ c*V**2 + a*W**(k+1)``, or None past the Milnor bound."""
     h = _tangent_frame(field, expansion, a, b, c)
     square = h.get((0, 2), field.zero())
@@ -130,7 +150,7 @@ def _splitting(field, expansion, a, b, c, degree):
         correct += 1
 
 
-def _tangent_frame(field, expansion, a, b, c):
+def _tangent_frame(field: NumberField, expansion: Expansion, a: Element, b: Element, c: Element) -> Expansion:
     """The expansion in ``(W, V)`` with the doubled tangent ``V = 0``: ``{(W power, V power): coefficient}``."""
     if c.is_zero():  # F_2 = a X**2: the tangent is X = 0
         return {(j, i): v for (i, j), v in expansion.items()}
@@ -144,14 +164,15 @@ def _tangent_frame(field, expansion, a, b, c):
     return out
 
 
-def _power(field, value, n):
+def _power(field: NumberField, value: Element, n: int) -> Element:
     result = field.one()
     for _ in range(n):
         result = field.mul(result, value)
     return result
 
 
-def _horner(field, rows, phi, bound):
+def _horner(field: NumberField, rows: Sequence[Sequence[Element]], phi: Sequence[Element],
+            bound: int) -> list[Element]:
     """``sum_j rows[j](W) * phi(W)**j`` to ``O(W**bound)``."""
     total = [field.zero()] * bound
     for row in reversed(rows):
@@ -160,7 +181,7 @@ def _horner(field, rows, phi, bound):
     return [field.reduce(t) for t in total]
 
 
-def _series_mul(field, a, b, bound):
+def _series_mul(field: NumberField, a: Sequence[Element], b: Sequence[Element], bound: int) -> list[Element]:
     out = [field.zero()] * bound
     for i, ai in enumerate(a[:bound]):
         if ai.is_zero():

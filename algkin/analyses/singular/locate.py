@@ -21,6 +21,7 @@ through a vanishing leading coefficient.
 
 from __future__ import annotations
 
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 
 import flint
@@ -64,21 +65,21 @@ def locate(curve: flint.fmpz_mpoly) -> list[ExactPoint]:
     raise ComputationError(f"no shear among the first {MAX_SHEARS} separates the singular points of {curve}")
 
 
-def _shears():
+def _shears() -> Iterator[int]:
     yield 0
     for k in range(1, MAX_SHEARS // 2 + 1):
         yield k
         yield -k
 
 
-def _with_shear(curve, shear):
+def _with_shear(curve: flint.fmpz_mpoly, shear: int) -> list[ExactPoint] | None:
     """The points, or None when two singular points share ``t`` under this shear."""
     ctx = curve.context()
     t, y = ctx.gens()
     g = curve.compose(t - shear * y, y) if shear else curve
     gt, gy = g.derivative(0), g.derivative(1)
     candidates = g.resultant(gy, 1).gcd(gt.resultant(gy, 1)).gcd(g.resultant(gt, 1))
-    points = []
+    points: list[ExactPoint] = []
     for factor, _ in _univariate(candidates).factor()[1]:
         if factor.degree() < 1:
             continue
@@ -94,7 +95,7 @@ def _with_shear(curve, shear):
     return points
 
 
-def _single_root(field, monic):
+def _single_root(field: NumberField, monic: Sequence[Element]) -> Element | None:
     """``r`` if the monic ``monic`` is ``(y - r)**k`` (a point of multiplicity ``k + 1`` makes the
     gcd a power), else None: two singular points share ``t``."""
     k = len(monic) - 1
@@ -105,13 +106,13 @@ def _single_root(field, monic):
     return root if all(field.reduce(a - b).is_zero() for a, b in zip(power, monic)) else None
 
 
-def _univariate(poly):
+def _univariate(poly: flint.fmpz_mpoly) -> flint.fmpz_poly:
     """A polynomial of the context's first generator alone, as an ``fmpz_poly``."""
     terms = {int(i): int(c) for (i, _), c in poly.to_dict().items()}
     return flint.fmpz_poly([terms.get(k, 0) for k in range(max(terms, default=0) + 1)])
 
 
-def _specialised(field, poly):
+def _specialised(field: NumberField, poly: flint.fmpz_mpoly) -> list[Element]:
     """``poly(t, y)`` at ``t`` the field's generator: a polynomial in ``y`` over the field."""
     by_power: dict[int, dict[int, int]] = {}
     for (i, j), c in poly.to_dict().items():

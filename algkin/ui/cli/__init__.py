@@ -16,20 +16,28 @@ the text a person reads, ``paths`` the files read and written, ``flags`` the fla
 parameter an error names, ``signals`` the stopping signals and stdout; here ``main``.
 """
 
+from __future__ import annotations
+
+import argparse
 import functools
 import json
 import sys
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 from ...errors import AlgkinError, BudgetExceeded, SceneError, UsageError
 from .flags import as_typed
 from .signals import Stopped, say, stopping_signals, write_stdout
+
+if TYPE_CHECKING:  # loaded when a command runs, after the signal handlers
+    from .commands import File, Outcome
 
 __all__ = ["main", "usage", "build_parser", "terminal_safe"]
 
 _ERROR_KINDS = ((UsageError, "usage"), (SceneError, "scene"), (BudgetExceeded, "budget"))
 
 
-def __getattr__(name):
+def __getattr__(name: str) -> object:
     # Loaded on first use: the command line's own imports come after its signal handlers (``main``).
     if name in ("usage", "build_parser"):
         from . import parser
@@ -42,7 +50,7 @@ def __getattr__(name):
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-def main(argv=None):
+def main(argv: Sequence[str] | None = None) -> int:
     """Run one command line (``argv``, by default the process's) and return its exit code.
 
     Called with a command line, as in tests, it installs its signal handlers only while it runs and
@@ -57,8 +65,8 @@ def main(argv=None):
             return 128 + stop.signum
 
 
-def _main(argv):
-    args = None  # until parsed: an error before then still says what it can
+def _main(argv: list[str]) -> int:
+    args: argparse.Namespace | None = None  # until parsed: an error before then still says what it can
     try:
         from .parser import Shown, build_parser
 
@@ -80,7 +88,7 @@ def _main(argv):
         return write_stdout(_failed(argv, args, _kind(err), str(err), f"failed: {err}"), 1, failed=True)
 
 
-def _command(args):
+def _command(args: argparse.Namespace) -> int:
     """Run the parsed command: its paths checked, its work done, its files saved, its output written."""
     from ...runtime import progress
     from .paths import check_paths
@@ -94,7 +102,7 @@ def _command(args):
     return write_stdout(text, code)  # a signal while writing (to a slow reader) is caught too
 
 
-def _run(args):
+def _run(args: argparse.Namespace) -> Outcome:
     """The command's output and exit code, all of its work (imports, loading, compiling, the algebra,
     formatting) done within its budget: in a child process killed at the deadline, if it has one."""
     from ...runtime.budget import Budget
@@ -105,7 +113,7 @@ def _run(args):
     return budget.run(functools.partial(COMMANDS[args.command], args))
 
 
-def _save(files=()):
+def _save(files: Sequence[File] = ()) -> None:
     """Write the files a command made (path, bytes), each replacing its target only when whole."""
     from ...runtime.files import write_atomic
 
@@ -113,7 +121,7 @@ def _save(files=()):
         write_atomic(path, data)
 
 
-def _failed(argv, args, kind, message, line):
+def _failed(argv: list[str], args: argparse.Namespace | None, kind: str, message: str, line: str) -> str:
     """Say ``line`` on stderr; what stdout gets: with --json, the error as the one JSON document."""
     from .commands import COMMANDS
     from ...runtime.terminal import one_line
@@ -127,6 +135,6 @@ def _failed(argv, args, kind, message, line):
     return json.dumps(document, indent=2) + "\n"
 
 
-def _kind(err):
+def _kind(err: AlgkinError) -> str:
     """The error's kind in a JSON error document: usage, scene, budget or computation."""
     return next((kind for cls, kind in _ERROR_KINDS if isinstance(err, cls)), "computation")

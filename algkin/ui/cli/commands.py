@@ -1,21 +1,39 @@
 """One function per command: its whole output (text or JSON) and exit code, and the files it
 makes, computed inside the command's budget (``algkin.ui.cli.main`` runs it and writes)."""
 
+from __future__ import annotations
+
+import argparse
 import json
 import math
+import os
 import pathlib
+from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING, Any, Union
 
 from ...errors import UsageError
 from ...runtime.validation import real
 from .sweep import COMMANDS as SWEEP_COMMANDS
-from .reports import (extremum_forms, latex_lines, render, report_accuracy, report_curve, report_derive,
-                      report_extremum, report_show, report_singular, report_toggles, verification_line,
+from .reports import (Document, Form, extremum_forms, latex_lines, render, report_accuracy, report_curve,
+                      report_derive, report_extremum, report_show, report_singular, report_toggles, verification_line,
                       terminal_safe)
 
-__all__ = ["COMMANDS"]
+if TYPE_CHECKING:
+    from ...bench.row import BenchRow
+    from ...derivation.pipeline import Derivation
+    from ...scene import Scene
+    from ...analyses.rates.check import RatesCheck
+    from ...verify import Verification
+
+__all__ = ["COMMANDS", "Command", "Outcome", "File"]
+
+File = tuple[pathlib.Path, Union[str, bytes]]  # a file a command made, for the parent to write
+# What a command returns: its output (text or JSON) and exit code, and the files it made
+Outcome = Union[tuple[str, int], tuple[str, int, list[File]]]
+Command = Callable[[argparse.Namespace], Outcome]
 
 
-def _bench_plot():
+def _bench_plot() -> Callable[[Sequence[BenchRow], str], str] | None:
     """What draws bench.png (``bench.report.write``), or None when the plotting module cannot load."""
     try:
         from ..plot import bench_figure, save
@@ -24,7 +42,7 @@ def _bench_plot():
     return lambda rows, path: save(bench_figure(rows), path)
 
 
-def _cmd_bench(args):
+def _cmd_bench(args: argparse.Namespace) -> Outcome:
     from ...bench import bench, problem_names
     from ...bench.report import table, write
     from ...eliminate import backend_names, method_names
@@ -50,7 +68,7 @@ def _cmd_bench(args):
     return text, 0 if agree else 1
 
 
-def _scene_of(args, params=None):
+def _scene_of(args: argparse.Namespace, params: Sequence[str] | None = None) -> str | Scene:
     """The command's scene: the name or path given (loaded by the command, as from Python), or with
     ``--set``, the scene loaded with those dimensions set (``params``, by default ``--param``, are
     kept symbolic and cannot be set)."""
@@ -63,14 +81,14 @@ def _scene_of(args, params=None):
     return with_values(load_scene(args.scene), parse_settings(args.set), symbolic)
 
 
-def _method(args):
+def _method(args: argparse.Namespace) -> str:
     """The method asked for, else the default (imported here: ``algkin list`` loads no algebra)."""
     from ...eliminate import DEFAULT_METHOD
 
     return args.method or DEFAULT_METHOD
 
 
-def _range(text):
+def _range(text: str) -> tuple[float, float]:
     try:
         lo, hi = (real(v) for v in text.split(":"))
     except ValueError:
@@ -82,7 +100,7 @@ def _range(text):
     return lo, hi
 
 
-def _cmd_extremum(args):
+def _cmd_extremum(args: argparse.Namespace) -> Outcome:
     from ...analyses.extremum import extremum
 
     _check_latex(args)
@@ -93,7 +111,7 @@ def _cmd_extremum(args):
     return render(args, found.to_json(), report_extremum), 0
 
 
-def _cmd_toggles(args):
+def _cmd_toggles(args: argparse.Namespace) -> Outcome:
     from ...analyses.limits import limits
     from ...analyses.toggles import toggles
 
@@ -104,7 +122,7 @@ def _cmd_toggles(args):
     return render(args, document, report_toggles), 0
 
 
-def _cmd_singular(args):
+def _cmd_singular(args: argparse.Namespace) -> Outcome:
     from ...analyses.singular import singular
 
     found = singular(_scene_of(args, ()), args.point, samples=args.samples, seed=args.seed)
@@ -112,12 +130,12 @@ def _cmd_singular(args):
     return render(args, document, report_singular), _verdict_of(document["curve_verification"])
 
 
-def _verdict_of(verification):
+def _verdict_of(verification: Document) -> int:
     """``_verdict`` of a verification's JSON document."""
     return 0 if verification["status"] in ("passed", "skipped") else 1
 
 
-def _cmd_accuracy(args):
+def _cmd_accuracy(args: argparse.Namespace) -> Outcome:
     from ...bench.accuracy import accuracy
 
     if args.samples < 10:
@@ -133,7 +151,7 @@ def _cmd_accuracy(args):
     return text, 0, [(out, image(accuracy_figure(result), out.suffix))]
 
 
-def _figure_path(option, text):
+def _figure_path(option: str, text: str) -> pathlib.Path:
     """The figure's path, of a format it can be drawn in (``paths.check_paths`` checked that it can be written)."""
     from ..plot import FORMATS
 
@@ -143,7 +161,7 @@ def _figure_path(option, text):
     return out
 
 
-def _cmd_plot(args):
+def _cmd_plot(args: argparse.Namespace) -> Outcome:
     if args.of is None:
         from ..draw import plot_mechanism
 
@@ -174,13 +192,13 @@ def _cmd_plot(args):
     return render(args, _written(args, save(figure, out)), lambda d: d["out"]), 0
 
 
-def _written(args, out):
+def _written(args: argparse.Namespace, out: str | os.PathLike[str]) -> dict[str, object]:
     """``plot``'s JSON document: the file written and what it shows."""
     return {"scene": args.scene, "out": str(out), "format": pathlib.Path(str(out)).suffix.lower().lstrip("."),
             "of": args.of}
 
 
-def _against(text):
+def _against(text: str) -> tuple[str, float, float]:
     """``--against p=lo:hi``: the dimension and its span."""
     from ..draw import parse_ranges
 
@@ -188,7 +206,7 @@ def _against(text):
     return name, lo, hi
 
 
-def _cmd_list(args):
+def _cmd_list(args: argparse.Namespace) -> Outcome:
     from ...scene import catalog_names, load_scene
 
     scenes = [load_scene(n) for n in catalog_names()]
@@ -196,7 +214,7 @@ def _cmd_list(args):
     return render(args, document, lambda d: "\n".join(f"{s['name']:24} {s['description']}" for s in d["scenes"])), 0
 
 
-def _cmd_show(args):
+def _cmd_show(args: argparse.Namespace) -> Outcome:
     from ...runtime.budget import current
     from ...scene import compile_scene
     from ...scene.load import as_scene
@@ -219,21 +237,22 @@ def _cmd_show(args):
     return render(args, document, report_show), 0
 
 
-def _cmd_derive(args):
+def _cmd_derive(args: argparse.Namespace) -> Outcome:
     from ...derivation.pipeline import derive
 
     out = _full_forms_target(args)
     result = derive(_scene_of(args), args.outputs, **_engine(args))
     forms = [(f"eliminant of {u}", e.polynomial, "= 0") for u, e in result.eliminations.items()]
     forms += [(f"{u}, branch {b.label}", v, "") for b in result.branches for u, v in b.values.items()]
-    document, code = result.to_json(), _verdict(result.verification)
+    document: Document = result.to_json()
+    code = _verdict(result.verification)
     if args.rates:
         document, rate_forms, rate_code = _rates(result, document, args)
         forms, code = forms + rate_forms, max(code, rate_code)
     return _finish(args, out, document, report_derive, forms, code)
 
 
-def _rates(result, document, args):
+def _rates(result: Derivation, document: Document, args: argparse.Namespace) -> tuple[Document, list[Form], int]:
     """``derive --rates``: ``document`` with the rates' keys and timings, their LaTeX forms, the exit code."""
     from ...analyses.rates import rates_of
 
@@ -251,20 +270,21 @@ def _rates(result, document, args):
     return document, forms, _verdict(found.verification)
 
 
-def _check_latex(args):
+def _check_latex(args: argparse.Namespace) -> None:
     """--latex replaces the text report; --json has the strings (in sympy syntax): one or the other."""
     if args.latex and args.json:
         raise UsageError("--latex", True, "prints LaTeX instead of the text report; leave out --json or --latex")
 
 
-def _full_forms_target(args):
+def _full_forms_target(args: argparse.Namespace) -> pathlib.Path | None:
     """``--out``'s path (``paths.check_paths`` checked it before the work); ``--latex`` and ``--json``
     refused together."""
     _check_latex(args)
     return None if args.out is None else pathlib.Path(args.out)
 
 
-def _finish(args, out, document, report, forms, code):
+def _finish(args: argparse.Namespace, out: pathlib.Path | None, document: Document,
+            report: Callable[[Document], str], forms: Sequence[Form], code: int) -> Outcome:
     """What derive and curve return: the JSON, the LaTeX of ``forms`` or the text report, and with
     ``--out`` the whole JSON document as a file for the parent to write."""
     text = latex_lines(forms) if args.latex else render(args, document, report)
@@ -275,17 +295,17 @@ def _finish(args, out, document, report, forms, code):
     return text, code, [(out, json.dumps(document, indent=2) + "\n")]
 
 
-def _engine(args):
+def _engine(args: argparse.Namespace) -> dict[str, Any]:
     """The options derive, curve and verify share, by name: method, backend, symbolic dimensions, sampling."""
     return dict(method=_method(args), backend=args.backend, params=args.param, samples=args.samples, seed=args.seed)
 
 
-def _verdict(verification):
+def _verdict(verification: Verification | RatesCheck) -> int:
     """Exit code: 0 when the check passed or was skipped on request, 1 when it failed."""
     return 0 if verification.status in ("passed", "skipped") else 1
 
 
-def _cmd_curve(args):
+def _cmd_curve(args: argparse.Namespace) -> Outcome:
     from ...derivation.pipeline import curve
 
     out = _full_forms_target(args)
@@ -295,7 +315,7 @@ def _cmd_curve(args):
     return _finish(args, out, result.to_json(), report_curve, forms, _verdict(result.verification))
 
 
-def _cmd_verify(args):
+def _cmd_verify(args: argparse.Namespace) -> Outcome:
     from ...derivation.pipeline import derive
 
     if args.samples == 0:
@@ -308,7 +328,7 @@ def _cmd_verify(args):
     return text, _verdict(result.verification)
 
 
-def _cmd_export(args):
+def _cmd_export(args: argparse.Namespace) -> Outcome:
     from ..export import export
 
     code = export(_scene_of(args), args.outputs, args.to, args.param)
@@ -319,7 +339,7 @@ def _cmd_export(args):
     return text, 0, [(pathlib.Path(args.out), code)]
 
 
-COMMANDS = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
+COMMANDS: dict[str, Command] = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
             "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot,
             "toggles": _cmd_toggles, "singular": _cmd_singular, "accuracy": _cmd_accuracy, "bench": _cmd_bench,
             "export": _cmd_export, **SWEEP_COMMANDS}

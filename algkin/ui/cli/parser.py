@@ -1,10 +1,19 @@
 """The command line's grammar: every command, option and help text (``algkin --help``)."""
 
+from __future__ import annotations
+
 import argparse
 import sys
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any, NoReturn
 
 from ...errors import UsageError
 from ...runtime.validation import real, whole
+
+if TYPE_CHECKING:
+    from _typeshed import SupportsWrite
+
+    Subcommands = argparse._SubParsersAction["_Parser"]  # generic in typeshed only
 
 __all__ = ["build_parser", "usage", "Shown"]
 
@@ -13,7 +22,7 @@ class Shown(Exception):  # noqa: N818 - not an error: the answer to --help or --
     """``--help`` or ``--version`` asked: ``text``, for the command line to write to stdout (where
     argparse would print it and ignore a failed write: ``algkin --help > /dev/full``, exit 0)."""
 
-    def __init__(self, text):
+    def __init__(self, text: str) -> None:
         super().__init__(text)
         self.text = text
 
@@ -22,28 +31,28 @@ class _Parser(argparse.ArgumentParser):
     """argparse with a one-line error and exit code 2; help and version raised as ``Shown``;
     ``type=int`` and ``type=float`` read ASCII numbers only (Python's own also read other scripts' digits)."""
 
-    def __init__(self, *args, **kwargs):
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
         self.register("type", int, _whole)
         self.register("type", float, _real)
 
-    def error(self, message):
+    def error(self, message: str) -> NoReturn:
         raise UsageError("arguments", " ".join(sys.argv[1:]), message)
 
-    def _print_message(self, message, file=None):
+    def _print_message(self, message: str, file: SupportsWrite[str] | None = None) -> None:
         if file is sys.stdout:  # help and version (None too: a closed stdout, said as such)
             raise Shown(message)
         super()._print_message(message, file)
 
 
-def _whole(text):
+def _whole(text: str) -> int:
     try:
         return whole(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected a whole number (ASCII digits 0-9), got {text!r}") from None
 
 
-def _real(text):
+def _real(text: str) -> float:
     try:
         return real(text)
     except ValueError:
@@ -54,11 +63,12 @@ class _Once(argparse.Action):
     """Names gathered from one option, repeated (``--param a --param b``) or listed (``--outputs A B``):
     a name given twice is refused when it is met, before any work (sympy would fail on it later)."""
 
-    def __call__(self, parser, namespace, values, option_string=None):
+    def __call__(self, parser: argparse.ArgumentParser, namespace: argparse.Namespace,
+                 values: str | Sequence[Any] | None, option_string: str | None = None) -> None:
         given = list(getattr(namespace, self.dest, None) or []) if self.nargs is None else []
         for value in values if isinstance(values, list) else [values]:
             if value in given:
-                raise UsageError(option_string, value, "given twice")
+                raise UsageError(option_string or self.dest, value, "given twice")
             given.append(value)
         setattr(namespace, self.dest, given)
 
@@ -66,35 +76,35 @@ class _Once(argparse.Action):
 class _Help(argparse.ArgumentDefaultsHelpFormatter):
     """``--help`` with each option's default, where it has one worth saying (not None, False or [])."""
 
-    def _get_help_string(self, action):
+    def _get_help_string(self, action: argparse.Action) -> str | None:
         if action.default is None or action.default is False or action.default == [] \
                 or action.default is argparse.SUPPRESS:
             return action.help
         return super()._get_help_string(action)
 
 
-def _command(commands, name, summary):
+def _command(commands: Subcommands, name: str, summary: str) -> argparse.ArgumentParser:
     """A subcommand whose ``--help`` starts with its one-line summary and shows the defaults."""
     return commands.add_parser(name, help=summary, description=summary, formatter_class=_Help)
 
 
-def _scene(parser):
+def _scene(parser: argparse.ArgumentParser) -> None:
     """The scene argument, and ``--set``: every command that takes a scene takes both."""
     parser.add_argument("scene", help="catalog name (see `algkin list`) or path of a scene file (.toml)")
     parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                         help="an exact value for a dimension (3/2, 0.1 = 1/10, sqrt(9/4)); repeatable")
 
 
-def _quiet(parser, default=False):
+def _quiet(parser: argparse.ArgumentParser, default: object = False) -> None:
     parser.add_argument("--quiet", action="store_true", default=default,
                         help="show no progress on stderr (shown only while stderr is a terminal)")
 
 
-def _json(parser, what="the whole result"):
+def _json(parser: argparse.ArgumentParser, what: str = "the whole result") -> None:
     parser.add_argument("--json", action="store_true", help=f"one JSON document on stdout: {what}")
 
 
-def _common(parser, method=True):
+def _common(parser: argparse.ArgumentParser, method: bool = True) -> None:
     _scene(parser)
     _json(parser)
     if method:
@@ -109,18 +119,18 @@ def _common(parser, method=True):
         _budget_options(parser)
 
 
-def _full_forms(parser):
+def _full_forms(parser: argparse.ArgumentParser) -> None:
     """``--out`` and ``--latex``: the complete results, which the text report only summarises."""
     parser.add_argument("--out", metavar="FILE", help="also write the full JSON document to FILE")
     _latex(parser)
 
 
-def _latex(parser):
+def _latex(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--latex", action="store_true",
                         help="print the results as LaTeX instead of the text report (not with --json)")
 
 
-def _budget_options(parser, terms=True):
+def _budget_options(parser: argparse.ArgumentParser, terms: bool = True) -> None:
     parser.add_argument("--max-seconds", type=_seconds,
                         help="stop (exit 1) past this many seconds of the whole command, loading included "
                              "(at most a week)")
@@ -129,7 +139,7 @@ def _budget_options(parser, terms=True):
                             help="stop (exit 1) when an eliminant passes this many terms")
 
 
-def _seconds(text):
+def _seconds(text: str) -> float:
     from ...runtime.budget import MAX_SECONDS  # here: the parser stays light (no multiprocessing)
 
     try:
@@ -142,13 +152,13 @@ def _seconds(text):
     return value
 
 
-def _terms(text):
+def _terms(text: str) -> int:
     if not (text.isascii() and text.strip().isdigit()) or int(text) < 1:
         raise argparse.ArgumentTypeError(f"expected a positive whole number of terms, got {text!r}")
     return int(text)
 
 
-def build_parser():
+def build_parser() -> argparse.ArgumentParser:
     from ... import __version__
 
     parser = _Parser(prog="algkin", description="Closed forms of planar mechanisms by elimination.",
@@ -265,7 +275,7 @@ def build_parser():
     return parser
 
 
-def usage(command):
+def usage(command: str) -> str:
     """The ``--help`` text of one command (the docs print it)."""
     commands = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
     return commands.choices[command].format_help()

@@ -10,6 +10,7 @@ algkin.errors.UsageError: --out='...designs.parquet': is inside the input direct
 >>> os.rmdir(sweep)
 """
 
+import argparse
 import os
 
 from ...errors import UsageError
@@ -30,7 +31,7 @@ OUTPUTS = {
 INPUTS = ("scene", "dir")  # the attributes naming what a command reads (a catalog name is no file)
 
 
-def check_paths(args):
+def check_paths(args: argparse.Namespace) -> None:
     """Raise ``UsageError`` naming the flag of the first output of ``args.command`` that cannot be
     written or that is, or is inside, one of its inputs."""
     from ...runtime.files import check_directory, check_output
@@ -45,7 +46,7 @@ def check_paths(args):
         (check_output if kind == "file" else check_directory)(flag, path)
 
 
-def _not_over(flag, path, given):
+def _not_over(flag: str, path: str, given: str) -> None:
     """Refuse ``path`` if it is the input ``given`` (the same file, through any link) or inside it."""
     target, source = os.path.realpath(path), os.path.realpath(given)
     if target == source or _same_file(target, source):
@@ -54,7 +55,7 @@ def _not_over(flag, path, given):
         raise UsageError(flag, path, f"is inside the input directory {given}; write it elsewhere")
 
 
-def _same_file(one, other):
+def _same_file(one: str, other: str) -> bool:
     """Whether two existing paths are one file (a hard link too)."""
     try:
         return os.path.samefile(one, other)

@@ -1,14 +1,30 @@
 """The text reports a person reads: long forms summarised, scene text escaped, LaTeX lines."""
 
+from __future__ import annotations
+
+import argparse
 import json
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any
 
 from ...runtime.terminal import terminal_safe
 
+if TYPE_CHECKING:
+    import sympy
+
+    from ...analyses.extremum import Extremum
+
 __all__ = ["render", "report_show", "report_derive", "report_curve", "report_singular", "report_toggles",
-           "report_extremum", "report_accuracy", "verification_line", "latex_lines", "extremum_forms", "terminal_safe"]
+           "report_extremum", "report_accuracy", "verification_line", "latex_lines", "extremum_forms", "terminal_safe",
+           "Document", "Form"]
+
+# A command's JSON document (``to_json()``): JSON values of many shapes, read here by key.
+Document = Mapping[str, Any]
+# A form for --latex: (caption, the sympy expression, the relation after it, e.g. "= 0")
+Form = tuple[str, "sympy.Expr", str]
 
 
-def extremum_forms(found):
+def extremum_forms(found: Extremum) -> list[Form]:
     """The minimum and maximum for ``--latex``; with ``--param``, the closed form and its input."""
     import sympy
 
@@ -22,7 +38,7 @@ def extremum_forms(found):
     return forms
 
 
-def report_extremum(d):
+def report_extremum(d: Document) -> str:
     """``algkin extremum``'s text: the critical points and range ends, the minimum and maximum, the closed form."""
     dims = ", ".join(f"{n} = {v}" for n, v in d["parameters"].items())
     angle = d.get("angle")
@@ -39,13 +55,13 @@ def report_extremum(d):
         p = d[key]
         lines.append(f"{key}: {p['value']:.12g}{unit} at {p['input' + suffix]:.12g}{at} ({p['kind']})")
         if p.get("exact"):
-            lines.append(f"  exactly {p['exact']} deg, where {angle['via']} = {p['exact_via']}")
+            lines.append(f"  exactly {p['exact']} deg, where {d['angle']['via']} = {p['exact_via']}")
     if "closed_form" in d:
         lines += _report_closed_form(d["closed_form"], d["input"], at)
     return "\n".join(lines)
 
 
-def _report_closed_form(form, name, at=" deg"):
+def _report_closed_form(form: Document, name: str, at: str = " deg") -> list[str]:
     lines = ["minimum as a closed form:",
              f"  value = {form['value']}",
              f"  {name} = {form['input']}{at}" + ("  (a range end)" if form["at"] == "endpoint" else ""),
@@ -65,12 +81,12 @@ def _report_closed_form(form, name, at=" deg"):
     return lines
 
 
-def _interval(region):
+def _interval(region: Document) -> str:
     lo, hi = region["from"], region["to"]
     return f"({'-oo' if lo is None else f'{lo:.12g}'}, {'oo' if hi is None else f'{hi:.12g}'})"
 
 
-def report_toggles(d):
+def report_toggles(d: Document) -> str:
     """``algkin toggles``'s text: each certified toggle, the Grashof class, the dropped artefacts (and limits)."""
     lo, hi = d["range"]
     unit = " deg" if d["unit"] == "deg" else ""
@@ -92,7 +108,7 @@ def report_toggles(d):
     return "\n".join(lines)
 
 
-def _report_limits(d):
+def _report_limits(d: Document) -> list[str]:
     """The limit positions (where the output stops and turns back) and the time ratio, after the toggles."""
     lines = ["limit positions (the output stops and turns back), certified:"]
     for g in d["limits"]:
@@ -122,7 +138,7 @@ def _report_limits(d):
     return lines + _hint(forms, "full exact forms: --json")
 
 
-def _report_time_ratio(ratio):
+def _report_time_ratio(ratio: Document) -> list[str]:
     working, quick = ratio["strokes"]
     lines = [f"time ratio of {ratio['point']} [{ratio['branch']}]: {ratio['ratio']:.15g} "
              f"= (180 + alpha)/(180 - alpha), alpha = {ratio['alpha_deg']:.12g} deg"]
@@ -141,7 +157,7 @@ def _report_time_ratio(ratio):
     return lines
 
 
-def _place(position):
+def _place(position: Document) -> str:
     """A limit position in words: the rocker's angle about its pivot, or the slider's place on its line."""
     if "angle_deg" in position:
         return f"at {position['angle_deg']:.12g} deg about {position['about']}"
@@ -149,7 +165,7 @@ def _place(position):
     return f"at {position['along']:.15g} along ({direction})"
 
 
-def report_accuracy(d):
+def report_accuracy(d: Document) -> str:
     """``algkin accuracy``'s text: one row per strategy and case (time per sample, worst error, condition)."""
     lines = [f"accuracy of {d['point']} in {d['scene']}; truth: {d['reference']}",
              f"  {'strategy':12} {'case':13} {'samples':>7} {'ns/sample':>10} {'max rel err':>11} "
@@ -160,7 +176,7 @@ def report_accuracy(d):
     return "\n".join(lines)
 
 
-def render(args, document, report):
+def render(args: argparse.Namespace, document: Document, report: Callable[[Document], str]) -> str:
     """What the command prints: ``document`` as JSON with --json, else ``report(document)``.
 
     >>> from types import SimpleNamespace
@@ -170,7 +186,7 @@ def render(args, document, report):
     return (json.dumps(document, indent=2) if args.json else terminal_safe(report(document))) + "\n"
 
 
-def report_show(d):
+def report_show(d: Document) -> str:
     """``algkin show``'s text: the points, unknowns, parameters, inputs and equations of the scene."""
     lines = [f"scene {d['scene']}: {d['description']}",
              "points: " + ", ".join(f"{n} ({k})" for n, k in d["points"].items()),
@@ -183,7 +199,7 @@ def report_show(d):
     return "\n".join(lines)
 
 
-def latex_lines(forms):
+def latex_lines(forms: Iterable[Form]) -> str:
     """Each (caption, sympy expression, relation) as a LaTeX comment and a display equation.
 
     >>> import sympy
@@ -197,7 +213,7 @@ def latex_lines(forms):
                    for caption, expr, relation in forms)
 
 
-def verification_line(v):
+def verification_line(v: Document) -> str:
     """A verification (``Verification.to_json()``) in one line, then one line per failure.
 
     >>> print(verification_line({"status": "skipped"}))
@@ -214,11 +230,11 @@ def verification_line(v):
     return "\n".join([line] + [f"  {f}" for f in v["failures"]])
 
 
-def _timings_line(t):
+def _timings_line(t: Mapping[str, float]) -> str:
     return "timings: " + ", ".join(f"{k} {v * 1e3:.1f} ms" for k, v in t.items())
 
 
-def report_derive(d):
+def report_derive(d: Document) -> str:
     """``algkin derive``'s text: the eliminants' figures, each branch's closed forms, the verification."""
     lines = [f"scene {d['scene']}  (method {d['method']}, backend {d['backend']})", "eliminants:"]
     for unknown, poly in d["eliminants"].items():
@@ -240,7 +256,7 @@ def report_derive(d):
     return "\n".join(lines + [_timings_line(d["timings"])] + _hint(forms))
 
 
-def _rates_lines(d):
+def _rates_lines(d: Document) -> list[str]:
     """``derive --rates``: per branch, each coordinate's velocity (') and acceleration ('') in the input."""
     name = d["rates_input"]["name"]
     per = "per radian" if d["rates_input"]["per"] == "radian" else "per unit of the length"
@@ -259,7 +275,7 @@ def _rates_lines(d):
     return lines + [f"  {f}" for f in v["failures"]]
 
 
-def report_curve(d):
+def report_curve(d: Document) -> str:
     """``algkin curve``'s text: the curve, its figures, the dropped factors, the verification."""
     lines = [f"curve of {d['point']} in {d['scene']}  (method {d['method']}, backend {d['backend']})",
              f"  {_brief(d['curve'])} = 0",
@@ -272,7 +288,7 @@ def report_curve(d):
     return "\n".join(lines + _hint([d["curve"], *d["dropped_factors"]]))
 
 
-def report_singular(d):
+def report_singular(d: Document) -> str:
     """``algkin singular``'s text: each real singular point, its class and exact coordinates."""
     lines = [f"singular points of the curve of {d['point']} in {d['scene']}: degree {d['degree']}, "
              f"circularity {d['circularity']}"]
@@ -296,7 +312,7 @@ def report_singular(d):
 _WHOLE = 230
 
 
-def _brief(form):
+def _brief(form: str) -> str:
     """``form`` whole when short, else its leading terms, ``...`` and its length in characters."""
     if len(form) <= _WHOLE:
         return form
@@ -305,6 +321,6 @@ def _brief(form):
     return f"{head[:cut] if cut > 0 else head} ... ({len(form)} characters)"
 
 
-def _hint(forms, where="full forms: --json or --out FILE"):
+def _hint(forms: Sequence[str], where: str = "full forms: --json or --out FILE") -> list[str]:
     """The line that says where the whole forms are, when ``_brief`` shortened any of ``forms``."""
     return [where] if any(len(f) > _WHOLE for f in forms) else []

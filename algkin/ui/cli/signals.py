@@ -11,6 +11,8 @@ import os
 import signal
 import sys
 import threading
+from collections.abc import Iterator
+from types import FrameType
 
 __all__ = ["stopping_signals", "Stopped", "write_stdout", "say"]
 
@@ -29,7 +31,7 @@ _STDOUT_CLOSED = 128 + signal.SIGPIPE
 _STDOUT_FAILED = 1
 
 
-def write_stdout(text, code, failed=False):
+def write_stdout(text: str, code: int, failed: bool = False) -> int:
     """Write ``text`` to stdout and flush it now, so that a closed pipe shows here and not at
     exit; the exit code: ``code``, _STDOUT_CLOSED if the reader has gone, _STDOUT_FAILED (and one
     line on stderr) if stdout cannot be written. A command that ``failed`` has said its line and
@@ -56,14 +58,14 @@ def write_stdout(text, code, failed=False):
     return code
 
 
-def _drop_stdout():
+def _drop_stdout() -> None:
     """The Python docs' recipe (signal module, "Note on SIGPIPE"): point stdout at devnull so that
     the interpreter's own flush at exit, of what could not be written, fails no more."""
     with contextlib.suppress(OSError, ValueError, AttributeError):  # AttributeError: no stdout at all
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
 
 
-def say(line):
+def say(line: str) -> None:
     """``line`` on stderr, after ``algkin: ``; nothing if stderr cannot take it (closed or full)."""
     if sys.stderr is None:
         return  # print(file=None) would write to stdout
@@ -76,13 +78,13 @@ class Stopped(BaseException):
     ``finally`` on the way out runs: a budget's child is killed and joined. Not an AlgkinError:
     like KeyboardInterrupt, no ``except Exception`` may swallow it."""
 
-    def __init__(self, signum):
-        super().__init__(_STOPS[signum])
+    def __init__(self, signum: int) -> None:
+        super().__init__(_STOPS[signal.Signals(signum)])
         self.signum = signum
 
 
 @contextlib.contextmanager
-def stopping_signals(restore=True):
+def stopping_signals(restore: bool = True) -> Iterator[None]:
     """While the block runs, the stopping signals raise ``Stopped``; then the handlers found are back,
     or unless ``restore``, the system's defaults: a signal while the process ends (its exit
     handlers) ends it as any program, with no ``KeyboardInterrupt`` traceback."""
@@ -98,7 +100,7 @@ def stopping_signals(restore=True):
             signal.signal(signum, signal.SIG_DFL if handler is None or not restore else handler)
 
 
-def _stop(signum, frame):
+def _stop(signum: int, frame: FrameType | None) -> None:
     """Raise the signal as ``Stopped``, once: a second signal must not cut the clean-up short."""
     for each in _STOPS:
         signal.signal(each, signal.SIG_IGN)

@@ -1,12 +1,21 @@
 """The ``sweep`` and ``atlas`` commands: their grammar and what they run (``algkin.sweep``, ``algkin.ui.atlas``)."""
 
+from __future__ import annotations
+
 import argparse
 import json
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from .commands import Command, Outcome
+    from .parser import Subcommands
 
 __all__ = ["add_commands", "COMMANDS"]
 
 
-def add_commands(commands, command, json_option):
+def add_commands(commands: Subcommands, command: Callable[[Subcommands, str, str], argparse.ArgumentParser],
+                 json_option: Callable[[argparse.ArgumentParser, str], None]) -> None:
     """Add ``sweep`` and ``atlas`` to the subcommands (``command``: how a subcommand is made)."""
     sweep = command(commands, "sweep", "named analyses over a grid (or random draws) of a scene's dimensions, "
                                        "one Parquet row per design; resumable, on Dask or in this process")
@@ -36,13 +45,13 @@ def add_commands(commands, command, json_option):
     json_option(atlas, "what was written")
 
 
-def _positive(text):
+def _positive(text: str) -> int:
     if not (text.isascii() and text.strip().isdigit()) or int(text) < 1:
         raise argparse.ArgumentTypeError(f"expected a whole number from 1, got {text!r}")
     return int(text)
 
 
-def _cmd_sweep(args):
+def _cmd_sweep(args: argparse.Namespace) -> Outcome:
     from ...sweep import sweep
 
     done = sweep(args.scene, args.out, grid=args.grid, random=args.random, seed=args.seed,
@@ -57,7 +66,7 @@ def _cmd_sweep(args):
             f"wrote {document['dataset']}\n"), 0
 
 
-def _cmd_atlas(args):
+def _cmd_atlas(args: argparse.Namespace) -> Outcome:
     from ..atlas import write_atlas
 
     written = write_atlas(args.dir, args.out, samples=args.samples)
@@ -67,4 +76,4 @@ def _cmd_atlas(args):
     return f"wrote {args.out}: {document['drawn']} of {document['designs']} designs drawn\n", 0
 
 
-COMMANDS = {"sweep": _cmd_sweep, "atlas": _cmd_atlas}
+COMMANDS: dict[str, Command] = {"sweep": _cmd_sweep, "atlas": _cmd_atlas}

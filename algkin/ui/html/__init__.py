@@ -27,15 +27,27 @@ The template is filled in one pass, so a slot's text is never read as another sl
 '{"name": "\\u003c/script\\u003e\\u003c!--"}'
 """
 
+from __future__ import annotations
+
 import html
 import json
+import os
 import re
+from collections.abc import Mapping
 from importlib import resources
+from typing import TYPE_CHECKING, TypedDict, TypeVar, Union
 
 from ...runtime.files import write_atomic
 from .jscode import branch_function
 
-__all__ = ["page", "model", "slider_range", "parameter_range", "parameter_slider", "write", "fill", "script_json"]
+if TYPE_CHECKING:
+    from ...analyses.motion import Motion
+
+_PathT = TypeVar("_PathT", bound=Union[str, "os.PathLike[str]"])  # a path given back as it came
+Ranges = Mapping[str, tuple[float, float]]  # a dimension's slider bounds, by name
+
+__all__ = ["page", "model", "slider_range", "parameter_range", "parameter_slider", "write", "fill", "script_json",
+           "Slider"]
 
 _SLOT = re.compile(r"\{\{(\w+)\}\}")
 # Inside <script>, "<" could close the element or open a comment, and U+2028/U+2029 end a
@@ -43,7 +55,16 @@ _SLOT = re.compile(r"\{\{(\w+)\}\}")
 _SCRIPT_UNSAFE = {"<": "\\u003c", ">": "\\u003e", "&": "\\u0026", "\u2028": "\\u2028", "\u2029": "\\u2029"}
 
 
-def slider_range(default):
+class Slider(TypedDict):
+    """A slider: what it moves, its bounds and where it starts."""
+
+    name: str
+    lo: float
+    hi: float
+    value: float
+
+
+def slider_range(default: float) -> tuple[float, float]:
     """Slider bounds around a dimension's default: a quarter to twice it (either sign)."""
     if default == 0:
         return -1.0, 1.0
@@ -51,7 +72,7 @@ def slider_range(default):
     return lo, hi
 
 
-def parameter_range(motion, name, ranges=None):
+def parameter_range(motion: Motion, name: str, ranges: Ranges | None = None) -> tuple[float, float]:
     """A dimension's slider bounds: given in ``ranges`` (name -> (lo, hi)), else declared in the
     scene, else around its default."""
     from ...errors import UsageError
@@ -61,10 +82,10 @@ def parameter_range(motion, name, ranges=None):
             raise UsageError("--range-of", given, f"not a symbolic dimension of {motion.scene.name} "
                                                   f"(symbolic: {', '.join(motion.params) or 'none'})")
     bounds = (ranges or {}).get(name, motion.scene.parameter_ranges.get(name))
-    return slider_range(motion.defaults[name]) if bounds is None else tuple(float(b) for b in bounds)
+    return slider_range(motion.defaults[name]) if bounds is None else (float(bounds[0]), float(bounds[1]))
 
 
-def parameter_slider(motion, name, ranges=None):
+def parameter_slider(motion: Motion, name: str, ranges: Ranges | None = None) -> Slider:
     """A symbolic dimension's slider, ``{name, lo, hi, value}``: its bounds (``parameter_range``)
     and its default.
 
@@ -76,7 +97,8 @@ def parameter_slider(motion, name, ranges=None):
     return {"name": name, "lo": lo, "hi": hi, "value": motion.defaults[name]}
 
 
-def model(motion, inputs=None, branch=None, ranges=None):
+def model(motion: Motion, inputs: Mapping[str, float] | None = None, branch: str | None = None,
+          ranges: Ranges | None = None) -> dict[str, object]:
     """The page's data: sliders, points, bars, branches (everything but the closed forms)."""
     names = list(motion.points[0])
     starts, _ = motion.complete(inputs or motion.start(branch=branch))
@@ -98,13 +120,14 @@ def model(motion, inputs=None, branch=None, ranges=None):
     }
 
 
-def _functions(motion):
+def _functions(motion: Motion) -> list[str]:
     variables = [name for pair in motion.compiled.system.inputs.values() for name in pair] + list(motion.params)
     return [branch_function(list(b.discriminants.values()), list(forms.values()), variables)
             for b, forms in zip(motion.branches, motion.points)]
 
 
-def page(motion, inputs=None, branch=None, ranges=None):
+def page(motion: Motion, inputs: Mapping[str, float] | None = None, branch: str | None = None,
+         ranges: Ranges | None = None) -> str:
     """The HTML text of the interactive page for ``motion`` (a ``Motion``)."""
     folder = resources.files(__name__)
     data = script_json(model(motion, inputs, branch, ranges))
@@ -118,18 +141,19 @@ def page(motion, inputs=None, branch=None, ranges=None):
     })
 
 
-def fill(template, slots):
+def fill(template: str, slots: Mapping[str, str]) -> str:
     """``template`` with each ``{{key}}`` replaced by ``slots[key]``, in a single pass."""
     return _SLOT.sub(lambda match: slots[match.group(1)], template)
 
 
-def script_json(value):
+def script_json(value: object) -> str:
     """``value`` as JSON that can sit inside ``<script>``: nothing in it ends the element."""
     text = json.dumps(value, ensure_ascii=False)
     return re.sub("[<>&\u2028\u2029]", lambda match: _SCRIPT_UNSAFE[match.group()], text)
 
 
-def write(motion, out, inputs=None, branch=None, ranges=None):
+def write(motion: Motion, out: _PathT, inputs: Mapping[str, float] | None = None, branch: str | None = None,
+          ranges: Ranges | None = None) -> _PathT:
     """Write the page to ``out``, replacing any earlier file only once complete; returns ``out``."""
     write_atomic(out, page(motion, inputs, branch, ranges))
     return out

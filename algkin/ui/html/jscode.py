@@ -15,12 +15,15 @@ function (v) {
 }
 """
 
+from collections.abc import Sequence
+
 import sympy
 
 __all__ = ["branch_function"]
 
 
-def branch_function(discriminants, points, variables):
+def branch_function(discriminants: Sequence[sympy.Expr], points: Sequence[tuple[sympy.Expr, sympy.Expr]],
+                    variables: Sequence[str]) -> str:
     """JavaScript source of ``function (v) {...}`` returning ``{disc: [...], points: [[x, y], ...]}``.
 
     ``v`` maps each name in ``variables`` to a number; ``points`` is a list of (x, y)

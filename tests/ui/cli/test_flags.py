@@ -26,6 +26,12 @@ NOT_FROM_THE_COMMAND_LINE = {
     "engine": "evaluate's engine; no command takes one",
     "NUMBA_NUM_THREADS": "an environment variable, named as such",
     "sweep": "the sweep extra missing: its name is the package's, said as such",
+    "poly": "system.roots of a zero polynomial; every command passes a nonzero one",
+    "within": "system.roots' interval turned round; every command passes an ordered one",
+    "equations": "eliminate.group's solve_group, from Python only: no command solves a group",
+    "unknowns": "eliminate.group's solve_group, from Python only",
+    "prefer": "eliminate.group's solve_group, from Python only",
+    "at": "eliminate.group's sample point, from Python only",
 }
 
 # A name given as the first argument of UsageError, or of the helpers that pass it on to one.
