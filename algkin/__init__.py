@@ -47,6 +47,8 @@ __all__ = [
     "Singularities",
     "Mechanism",
     "Quantity",
+    # what bounds them
+    "Budget",
 ]
 
 from .errors import AlgkinError
@@ -60,6 +62,7 @@ if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ 
     from .derivation.pipeline import curve, derive
     from .derivation.prepared import Prepared, prepare
     from .derivation.results import CurveResult, Derivation
+    from .runtime.budget import Budget
     from .scene import SceneBuilder, catalog_names, compile_scene, load_scene
     from .ui.widgets import interact
     from .verify import Verification
@@ -81,6 +84,7 @@ _LAZY = {
     **dict.fromkeys(("singular", "Singularities"), ".analyses.singular"),
     **dict.fromkeys(("load_quantities", "Mechanism", "Quantity"), ".analyses.quantities"),
     "interact": ".ui.widgets",
+    "Budget": ".runtime.budget",  # its module loads multiprocessing: only when asked for
 }
 
 

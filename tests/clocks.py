@@ -11,6 +11,8 @@ and progress lines (``progress.shown(clock=)``), so that no test depends on how 
 
 import itertools
 
+import attrs
+
 from algkin.runtime import budget as budget_module
 
 LATE = 3600.0  # what a passed clock reads: an hour, past any budget a test gives
@@ -43,12 +45,14 @@ class Clock:
 
 
 def late_budgets(monkeypatch, doing=""):
-    """Every budget the command line makes from now on (in this process) reads a ``Clock`` that
-    passes its deadline once the work has said it is doing something that starts with ``doing``
-    (at once, by default): the message then says ``stopped after 3600.00 s``."""
+    """Every budget started from now on (in this process: the command line's) reads a ``Clock``
+    that passes its deadline once the work has said it is doing something that starts with
+    ``doing`` (at once, by default): the message then says ``stopped after 3600.00 s``."""
+    start = budget_module.Budget.start
 
-    class Late(budget_module.Budget):
-        def __init__(self, *args, **options):
-            super().__init__(*args, clock=Clock(passed=lambda: self.doing.startswith(doing)), **options)
+    def late(budget):
+        deadline = None  # the clock asks the deadline it is read for what its work is doing
+        deadline = start(attrs.evolve(budget, clock=Clock(passed=lambda: deadline.doing.startswith(doing))))
+        return deadline
 
-    monkeypatch.setattr(budget_module, "Budget", Late)
+    monkeypatch.setattr(budget_module.Budget, "start", late)

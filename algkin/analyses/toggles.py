@@ -31,6 +31,7 @@ from ..derivation.prepared import Prepared, given, prepared_from
 from ..branches.constructions import algebra_of
 from ..eliminate import eliminate
 from ..errors import UsageError
+from ..runtime.budget import Budget, Deadline, started
 from ..evaluate import ARB, evaluate
 from ..scene import Compiled, compile_scene
 from ..scene.constructions import Crank, Dyad, Fixed
@@ -92,14 +93,17 @@ def _defaults(compiled: Compiled) -> dict[sympy.Symbol, sympy.Expr]:
     return {symbol(n): compiled.parameter_values[n] for n in compiled.system.parameters}
 
 
-def toggle_conditions(compiled: Compiled, spec: ImplicitSpec) -> dict[str, sympy.Expr]:
-    """{kind: poly} in the input's c, s (earlier points eliminated), for a dyad or a slider."""
+def toggle_conditions(compiled: Compiled, spec: ImplicitSpec, *, deadline: Deadline | None = None
+                      ) -> dict[str, sympy.Expr]:
+    """{kind: poly} in the input's c, s (earlier points eliminated, keeping to ``deadline`` if any),
+    for a dyad or a slider."""
     defaults = _defaults(compiled)
-    return {kind: _eliminate_earlier(compiled, sympy.expand(e.xreplace(defaults)), spec)
+    return {kind: _eliminate_earlier(compiled, sympy.expand(e.xreplace(defaults)), spec, deadline)
             for kind, e in algebra_of(spec).toggle_conditions().items()}
 
 
-def _eliminate_earlier(compiled: Compiled, condition: sympy.Expr, spec: ImplicitSpec) -> sympy.Expr:
+def _eliminate_earlier(compiled: Compiled, condition: sympy.Expr, spec: ImplicitSpec, deadline: Deadline | None
+                       ) -> sympy.Expr:
     """The condition with earlier points' unknowns eliminated (a polynomial in c, s): those it
     names, and every unknown their equations bring in (a slider on a horizontal guide names
     only its rod end's y, whose equations hold its x too)."""
@@ -118,7 +122,8 @@ def _eliminate_earlier(compiled: Compiled, condition: sympy.Expr, spec: Implicit
         earlier = grown
     (variables,) = compiled.system.inputs.values()
     equations = [sympy.expand(e.xreplace(defaults)) for e in equations]
-    return eliminate([condition] + equations, sorted(earlier), list(variables), method="resultant").polynomial
+    return eliminate([condition] + equations, sorted(earlier), list(variables), method="resultant",
+                     budget=deadline).polynomial
 
 
 def single_input(compiled: Compiled, what: str = "toggles") -> tuple[str, Parametrisation]:
@@ -132,13 +137,16 @@ def single_input(compiled: Compiled, what: str = "toggles") -> tuple[str, Parame
 
 
 def toggles(scene: SceneLike, artefacts: bool = True,
-            set: Values | None = None) -> Toggles:  # noqa: A002 - the public name (the command line's --set)
+            set: Values | None = None, *,  # noqa: A002 - the public name (the command line's --set)
+            budget: Budget | Deadline | None = None) -> Toggles:
     """Every toggle of every dyad and slider of ``scene`` over its input range, certified.
 
     With ``artefacts`` the eliminants are also derived, to report which factors of their
     discriminants are not toggles. ``set`` gives dimensions exact values in place of their defaults.
     ``scene`` may be a ``Prepared`` one (``prepare``) with every dyad and slider among its outputs.
+    A ``Budget`` (or the ``Deadline`` of one running) bounds the time and the eliminants' terms.
     """
+    deadline = started(budget)
     prepared = given(scene, set=set)
     scene = prepared.scene if prepared else with_values(as_scene(scene), set)  # a name, a path (str or pathlib) or a Scene
     implicit = [n for n, p in scene.points.items() if p.labels]  # the points with assembly modes
@@ -153,25 +161,25 @@ def toggles(scene: SceneLike, artefacts: bool = True,
     found: list[Toggle] = []
     with flint.ctx.workprec(ROOT_BITS):
         for spec in compiled.implicit:
-            for kind, condition in toggle_conditions(compiled, spec).items():
+            for kind, condition in toggle_conditions(compiled, spec, deadline=deadline).items():
                 for ball in line.roots(condition):
                     found += [Toggle(float(ball.mid()) + turn, ball + turn, spec.point, kind, line.is_angle)
                               for turn in line.turns if lo <= float(ball.mid()) + turn <= hi]
         # the eliminants' branches and witnesses: the scene's own, prepared once
-        dropped = _artefacts(prepared or prepared_from(compiled), line) if artefacts else []
+        dropped = _artefacts(prepared or prepared_from(compiled), line, deadline) if artefacts else []
     found.sort(key=lambda g: g.input_deg)
     unit = "deg" if line.is_angle else "length"
     return Toggles(scene.name, name, (lo, hi), found, grashof(compiled), dropped, unit)
 
 
-def _artefacts(prepared: Prepared, line: Parametrisation) -> list[Artefact]:
+def _artefacts(prepared: Prepared, line: Parametrisation, deadline: Deadline) -> list[Artefact]:
     """Factors of the eliminants' discriminants that are not toggles, with the certificate."""
     from ..derivation.pipeline import derive
 
     compiled, branches = prepared.compiled, list(prepared.branches)
-    derived = derive(prepared, samples=0, certify=False)  # its eliminants alone
+    derived = derive(prepared, samples=0, certify=False, budget=deadline)  # its eliminants alone
     geometric = [line.numerator(cond) for d in compiled.implicit
-                 for cond in toggle_conditions(compiled, d).values()]
+                 for cond in toggle_conditions(compiled, d, deadline=deadline).values()]
     t = line.t
     dropped: list[Artefact] = []
     for unknown, elimination in derived.eliminations.items():

@@ -12,6 +12,7 @@ says what it was checked against. ``ratio`` is each row's time over algkin's def
 method over ``flint``) on the same problem: above 1, algkin is faster.
 """
 
+import functools
 import os
 import platform
 from collections.abc import Sequence
@@ -96,7 +97,7 @@ def _problem_rows(problem: Problem, pairs: Sequence[tuple[str, str]], budget: fl
     results: dict[tuple[str, str], BenchRow] = {}
     for method, backend in pairs:
         progress.stage(f"{problem.name}: {method} / {backend}")
-        seconds, summary, note = measure(lambda m=method, b=backend: task.run(m, b), _summary, budget)
+        seconds, summary, note = measure(functools.partial(task.run, method, backend), _summary, budget)
         results[(method, backend)] = BenchRow(problem.name, method, backend, seconds, note=note, **(summary or {}))
         progress.step()
     progress.stage(f"{problem.name}: algkin default path, end to end")

@@ -55,7 +55,7 @@ from ..derivation.pipeline import derive
 from ..errors import UsageError
 from ..evaluate.fused import numba_available
 from ..runtime import progress, validation
-from ..runtime.budget import current
+from ..runtime.budget import Budget, Deadline, started
 from ..scene import Scene, compile_scene
 from ..scene.compile import Compiled
 from ..scene.constructions import Dyad, Fixed
@@ -111,9 +111,9 @@ class Accuracy:
 class Subject:
     """What an accuracy run measures: ``scene`` compiled for the output ``of``, the scene's branch,
     the construction whose toggles matter (``dyad``) and each strategy's evaluator (``stable``,
-    ``reference``, ``newton``, ``solved``)."""
+    ``reference``, ``newton``, ``solved``); its derivation keeps to ``deadline``, if any."""
 
-    def __init__(self, scene: Scene, of: str) -> None:
+    def __init__(self, scene: Scene, of: str, *, deadline: Deadline | None = None) -> None:
         self.compiled = compile_scene(scene, [of])
         self.branch = next(b for b in closed_forms(self.compiled) if b.selected)
         (self.c, self.s), = self.compiled.system.inputs.values()
@@ -124,7 +124,7 @@ class Subject:
         self.stable = _StableOutput(self.compiled, self.branch, of)
         self.reference = Reference(self.compiled, self.branch, self.unknowns)
         self.newton = _Newton(self.reference)
-        derived = derive(scene, [of], samples=0)
+        derived = derive(scene, [of], samples=0, budget=deadline)
         cs = (symbol(self.c), symbol(self.s))
         self.solved = {u: [sympy.lambdify(cs, r, "numpy")
                            for r in sympy.solve(derived.eliminations[u].polynomial, symbol(u))]
@@ -362,10 +362,12 @@ def _translated(scene: Scene, offset: int) -> Scene:
 
 
 def accuracy(scene: SceneLike, samples: int = 2000, seed: int = 0, set: Values | None = None,  # noqa: A002 - the public name (--set)
-             of: str | None = None) -> Accuracy:
+             of: str | None = None, *, budget: Budget | Deadline | None = None) -> Accuracy:
     """Rows of speed and error per strategy and case for the output ``of`` (a point, ``dist(A, B)``,
     ``B.x`` or an output's name; default: the first dyad point, else the first output);
-    ``set`` gives dimensions exact values in place of their defaults."""
+    ``set`` gives dimensions exact values in place of their defaults. A ``Budget`` (or the
+    ``Deadline`` of one running) bounds the derivation's eliminants and says what is measured."""
+    deadline = started(budget)
     validation.count("samples", samples, validation.MAX_ACCURACY_SAMPLES, minimum=10)
     validation.seed(seed)
     scene = with_values(as_scene(scene), set)
@@ -377,11 +379,11 @@ def accuracy(scene: SceneLike, samples: int = 2000, seed: int = 0, set: Values |
     if lengths:  # the stabilised forms and the hard cases near toggles are laid out on a turning input
         raise UsageError("scene", scene.name, f"accuracy is measured over an input angle; {lengths[0]} is a length")
     rng = np.random.default_rng(seed)
-    subject = Subject(scene, of)
+    subject = Subject(scene, of, deadline=deadline)
     rows: list[AccuracyRow] = []
-    current().note(f"measuring each strategy on {scene.name}")
+    deadline.note(f"measuring each strategy on {scene.name}")
     for case, theta in progress.counted(sample_cases(subject, samples, rng).items(), "cases"):
         rows += _rows(subject, case, theta)
-    far = Subject(_translated(scene, FAR), of)
+    far = Subject(_translated(scene, FAR), of, deadline=deadline)
     rows += _rows(far, "far-1e7", sample_cases(far, samples, rng)["uniform"])
     return Accuracy(scene.name, of, rows)

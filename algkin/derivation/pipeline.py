@@ -17,9 +17,10 @@ from collections.abc import Mapping, Sequence
 
 import attrs
 
-from ..eliminate import DEFAULT_METHOD, Budget, current as current_budget
+from ..eliminate import DEFAULT_METHOD
 from ..errors import UsageError
 from ..runtime import validation
+from ..runtime.budget import Budget, Deadline, started
 from ..scene import Compiled, Scene, compile_scene
 from ..scene.load import SceneLike, Values
 from ..verify import Verification
@@ -54,11 +55,11 @@ class _Source:
     params: tuple[str, ...] = ()
     values: Values | None = attrs.field(default=None, eq=False)
 
-    def prepared(self) -> Prepared:
-        """The scene prepared (itself, if it is already)."""
+    def prepared(self, deadline: Deadline) -> Prepared:
+        """The scene prepared (itself, if it is already), telling ``deadline`` what it does."""
         if isinstance(self.scene, Prepared):
             return self.scene
-        return prepare(self.scene, outputs=self.outputs, params=self.params, set=self.values)
+        return prepare(self.scene, outputs=self.outputs, params=self.params, set=self.values, deadline=deadline)
 
 
 def _source(scene: SceneLike | Prepared, engine: Engine, *, outputs: Sequence[str] | None = None,
@@ -71,42 +72,37 @@ def _source(scene: SceneLike | Prepared, engine: Engine, *, outputs: Sequence[st
                    params=validation.names("params", params) or (), values=values)
 
 
-def _started(budget: Budget | None) -> Budget:
-    """The budget to run under (the one under way if none is given), started."""
-    started: Budget = (validation.budget(budget) or current_budget()).start()
-    return started
-
-
 def derive(scene: SceneLike | Prepared, outputs: Sequence[str] | None = None, *, method: str = DEFAULT_METHOD,
            backend: str = "flint", params: Sequence[str] = (), samples: int = 40, seed: int = 0,
-           certify: bool = True, budget: Budget | None = None,
+           certify: bool = True, budget: Budget | Deadline | None = None,
            set: Values | None = None) -> Derivation:  # noqa: A002 - ``set=`` is the public name (the command line's --set)
     """Eliminants, closed-form branches and their verification for ``outputs`` of ``scene``.
 
     ``scene`` may be a ``Prepared`` one (``prepare``), which says its outputs, symbolic
     dimensions and values itself. ``certify`` also certifies each branch's label per input
     interval (the slowest stage); a ``Budget`` bounds the time of the whole derivation, loading
-    and compiling the scene included, and the size of its eliminants. ``set`` gives dimensions
-    exact values (``{"a": "3/2"}``) in place of their defaults.
+    and compiling the scene included, and the size of its eliminants (the ``Deadline`` of one
+    already running: the derivation counts against it). ``set`` gives dimensions exact values
+    (``{"a": "3/2"}``) in place of their defaults.
     """
     engine = Engine(method=method, backend=backend, samples=samples, seed=seed)
     source = _source(scene, engine, outputs=outputs, params=params, values=set)
-    started = _started(budget)
-    return started.run(functools.partial(_derive, source, engine, certify=certify, budget=started,
-                                         start=time.perf_counter()))
+    deadline = started(validation.budget(budget))
+    return deadline.run(functools.partial(_derive, source, engine, certify=certify, deadline=deadline,
+                                          start=time.perf_counter()))
 
 
-def _derive(source: _Source, engine: Engine, *, certify: bool, budget: Budget, start: float) -> Derivation:
-    prepared = source.prepared()
+def _derive(source: _Source, engine: Engine, *, certify: bool, deadline: Deadline, start: float) -> Derivation:
+    prepared = source.prepared(deadline)
     compiled, branches = prepared.compiled, prepared.branches
     timings = dict(prepared.timings)
     with timed(timings, "eliminate"):
-        eliminations = {u: task.run(engine.method, engine.backend, budget)
+        eliminations = {u: task.run(engine.method, engine.backend, deadline)
                         for u, task in eliminant_tasks(compiled, prepared.witnesses).items()}
-    budget.note(f"verifying the branches of {compiled.scene.name}")
+    deadline.note(f"verifying the branches of {compiled.scene.name}")
     with timed(timings, "verify"):
         verification = _verify(prepared, engine, eliminations)
-    budget.note(f"certifying the branch labels of {compiled.scene.name}")
+    deadline.note(f"certifying the branch labels of {compiled.scene.name}")
     with timed(timings, "certify"):
         certified = certify_labels(compiled, branches) if certify else [None] * len(branches)
     timings["total"] = time.perf_counter() - start
@@ -121,32 +117,33 @@ def _verify(prepared: Prepared, engine: Engine, eliminations: Mapping[str, Elimi
 
 
 def curve(scene: SceneLike | Prepared, point: str, *, method: str = DEFAULT_METHOD, backend: str = "flint",
-          params: Sequence[str] = (), samples: int = 40, seed: int = 0, budget: Budget | None = None,
+          params: Sequence[str] = (), samples: int = 40, seed: int = 0, budget: Budget | Deadline | None = None,
           set: Values | None = None) -> CurveResult:  # noqa: A002 - as in derive
     """The implicit curve ``F(point_x, point_y) = 0`` traced by ``point`` (a one-input motion).
 
     ``scene`` may be a ``Prepared`` one with ``point`` among its outputs. A ``Budget`` bounds the
     time of the whole computation, loading and compiling the scene included, and the size of its
-    eliminants. ``set`` gives dimensions exact values.
+    eliminants (or the ``Deadline`` of one running, as in ``derive``). ``set`` gives dimensions
+    exact values.
     """
     engine = Engine(method=method, backend=backend, samples=samples, seed=seed)
     source = _source(scene, engine, params=params, values=set)
-    started = _started(budget)
-    return started.run(functools.partial(_curve, source, engine, point=point, budget=started,
-                                         start=time.perf_counter()))
+    deadline = started(validation.budget(budget))
+    return deadline.run(functools.partial(_curve, source, engine, point=point, deadline=deadline,
+                                          start=time.perf_counter()))
 
 
-def _curve(source: _Source, engine: Engine, *, point: str, budget: Budget, start: float) -> CurveResult:
-    prepared = _prepared_for_curve(source, point, budget)
+def _curve(source: _Source, engine: Engine, *, point: str, deadline: Deadline, start: float) -> CurveResult:
+    prepared = _prepared_for_curve(source, point, deadline)
     compiled = prepared.compiled
     timings = dict(prepared.timings)
     refuse_still(compiled, prepared.branches, point)
     with timed(timings, "eliminate"):
         task = curve_task(compiled, prepared.witnesses, point)
-        result = task.run(family_method(task, engine.method), engine.backend, budget)
+        result = task.run(family_method(task, engine.method), engine.backend, deadline)
     variables = task.keep[:2]
     degree, circularity = curve_figures(result.exact[0], variables)
-    budget.note(f"verifying the curve of {point} in {compiled.scene.name}")
+    deadline.note(f"verifying the curve of {point} in {compiled.scene.name}")
     with timed(timings, "verify"):
         verification = _verify(prepared, engine, {"curve": result})
     timings["total"] = time.perf_counter() - start
@@ -154,7 +151,7 @@ def _curve(source: _Source, engine: Engine, *, point: str, budget: Budget, start
                        verification, timings)
 
 
-def _prepared_for_curve(source: _Source, point: str, budget: Budget) -> Prepared:
+def _prepared_for_curve(source: _Source, point: str, deadline: Deadline) -> Prepared:
     """The scene prepared for ``point``, refused before its branches are sought when ``point`` is
     not a point of it or moves with more than one input."""
     if isinstance(source.scene, Prepared):
@@ -165,14 +162,14 @@ def _prepared_for_curve(source: _Source, point: str, budget: Budget) -> Prepared
                              f"(outputs: {', '.join(prepared.compiled.outputs)})")
         _check_one_input(prepared.compiled, point)
         return prepared
-    scene = load(source.scene, values=source.values, params=source.params)
+    scene = load(source.scene, values=source.values, params=source.params, deadline=deadline)
     _check_point(scene, point)
-    budget.note(f"compiling {scene.name}")
+    deadline.note(f"compiling {scene.name}")
     timings: dict[str, float] = {}
     with timed(timings, "compile"):
         compiled = compile_scene(scene, [point], source.params)
     _check_one_input(compiled, point)
-    budget.note(f"finding the branches of {scene.name}")
+    deadline.note(f"finding the branches of {scene.name}")
     return prepared_from(compiled, timings)
 
 

@@ -32,7 +32,7 @@ import attrs
 from ..branches import Branch, check_assembly, closed_forms
 from ..errors import UsageError
 from ..runtime import validation
-from ..runtime.budget import current
+from ..runtime.budget import Deadline, started
 from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled, Scene, compile_scene
 from ..scene.compile import resolve_outputs
@@ -77,24 +77,27 @@ class Prepared:
 
 
 def prepare(scene: SceneLike, *, outputs: Sequence[str] | None = None, params: Sequence[str] = (),
-            set: Values | None = None) -> Prepared:  # noqa: A002 - ``set=`` is the public name (the command line's --set)
+            set: Values | None = None,  # noqa: A002 - ``set=`` is the public name (the command line's --set)
+            deadline: Deadline | None = None) -> Prepared:
     """``scene`` (a catalog name, a file, a ``Scene``) compiled for ``outputs`` (all of them by
     default) with the dimensions ``params`` symbolic and those in ``set`` given exact values, its
     branches found and checked to assemble, and their witnesses drawn.
 
-    It runs in the caller's process: ``derive(scene, budget=...)`` bounds the preparation too."""
+    It runs in the caller's process, telling ``deadline`` (if any) what it does; ``derive(scene,
+    budget=...)`` bounds the preparation too."""
     outputs, params = validation.names("outputs", outputs), validation.names("params", params) or ()
-    loaded = load(scene, values=set, params=params)
-    current().note(f"compiling {loaded.name} and finding its branches")
+    deadline = started(deadline)
+    loaded = load(scene, values=set, params=params, deadline=deadline)
+    deadline.note(f"compiling {loaded.name} and finding its branches")
     timings: dict[str, float] = {}
     with timed(timings, "compile"):
         compiled = compile_scene(loaded, outputs, params)
     return prepared_from(compiled, timings)
 
 
-def load(scene: SceneLike, *, values: Values | None, params: Sequence[str]) -> Scene:
+def load(scene: SceneLike, *, values: Values | None, params: Sequence[str], deadline: Deadline) -> Scene:
     """The scene, loaded (or a given one checked), with the dimensions in ``values`` set."""
-    current().note(f"loading {getattr(scene, 'name', scene)}")
+    deadline.note(f"loading {getattr(scene, 'name', scene)}")
     return with_values(as_scene(scene), values, params)
 
 

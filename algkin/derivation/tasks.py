@@ -15,8 +15,9 @@ from typing import Union
 import flint
 import sympy
 
-from ..eliminate import Budget, Elimination, eliminate
+from ..eliminate import Elimination, eliminate
 from ..eliminate.select import WitnessGroups
+from ..runtime.budget import Budget, Deadline
 from ..scene import Compiled
 from ..system import System
 
@@ -34,7 +35,7 @@ class EliminationTask:
     witnesses: WitnessGroups
     polynomials: tuple[flint.fmpq_mpoly, ...] = ()  # the equations in python-flint, when the task has them
 
-    def run(self, method: str, backend: str, budget: Budget | None = None) -> Eliminant:
+    def run(self, method: str, backend: str, budget: Budget | Deadline | None = None) -> Eliminant:
         return eliminate(self.polynomials or self.equations, self.eliminate, self.keep, method=method,
                          backend=backend, witnesses=self.witnesses, parameters=self.parameters, budget=budget)
 

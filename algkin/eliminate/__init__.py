@@ -26,7 +26,7 @@ import flint
 import sympy
 
 from ..errors import ComputationError, UsageError
-from ..runtime.budget import Budget, current
+from ..runtime.budget import Budget, Deadline, started
 from ..system.convert import flint_context, to_flint
 from .backends import BACKENDS
 from .interpolate import interpolation
@@ -37,7 +37,7 @@ from .protocol import Backend, P
 from .request import EliminationRequest, LogEntry, Method
 from .select import Witness, WitnessGroups, select_factors, unreal_factors
 
-__all__ = ["eliminate", "Elimination", "Witness", "Budget", "current", "METHODS", "DEFAULT_METHOD", "BACKENDS",
+__all__ = ["eliminate", "Elimination", "Witness", "Budget", "Deadline", "METHODS", "DEFAULT_METHOD", "BACKENDS",
            "method_names", "backend_names"]
 
 
@@ -163,7 +163,7 @@ def _consistent(engine: Backend[P], polys: list[P]) -> list[P]:
 
 def eliminate(equations: Sequence[sympy.Expr | flint.fmpq_mpoly], eliminate: Sequence[str], keep: Sequence[str], *,
               method: str = DEFAULT_METHOD, backend: str = "flint", witnesses: WitnessGroups = (),
-              parameters: Sequence[str] = (), budget: Budget | None = None
+              parameters: Sequence[str] = (), budget: Budget | Deadline | None = None
               ) -> Elimination[flint.fmpq_mpoly] | Elimination[sympy.Poly]:
     """Eliminate the variables ``eliminate`` from ``equations`` (polynomials over QQ: sympy
     expressions, or python-flint ``fmpq_mpoly`` over any names, matched by name).
@@ -172,15 +172,16 @@ def eliminate(equations: Sequence[sympy.Expr | flint.fmpq_mpoly], eliminate: Seq
     (groups of configurations, name -> arb) do not satisfy dropped and reported.
     ``parameters`` (a subset of ``keep``: dimensions, and a derivation's inputs) may appear
     in the multipliers of the ``linear`` method. A ``Budget`` bounds the time and the terms of every intermediate
-    eliminant (by default, the budget of the ``Budget.run()`` under way, if any).
+    eliminant; or the ``Deadline`` of one already running, which the elimination then counts against (by
+    default, no bound).
     """
     run = _lookup(METHODS, "method", method)
     engine = _lookup(BACKENDS, "backend", backend)(tuple(eliminate) + tuple(keep))
-    budget = budget or current()
-    budget.note(f"eliminating {', '.join(map(str, eliminate)) or 'nothing'} "
-                f"(keeping {', '.join(map(str, keep))}) by {method} on {backend}")
-    request = EliminationRequest(tuple(eliminate), witnesses, tuple(parameters), budget)
-    return budget.run(functools.partial(_eliminate, engine, method, run, equations, tuple(keep), request))
+    deadline = started(budget)
+    deadline.note(f"eliminating {', '.join(map(str, eliminate)) or 'nothing'} "
+                  f"(keeping {', '.join(map(str, keep))}) by {method} on {backend}")
+    request = EliminationRequest(tuple(eliminate), witnesses, tuple(parameters), deadline)
+    return deadline.run(functools.partial(_eliminate, engine, method, run, equations, tuple(keep), request))
 
 
 def _eliminate(engine: Backend[P], method: str, run: Method, equations: Sequence[sympy.Expr | flint.fmpq_mpoly],

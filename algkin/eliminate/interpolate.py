@@ -32,6 +32,11 @@ rebuilds the family's eliminant from such images:
   directly at that point (both primitive), over QQ and with no factor dropped; the two processes
   each do one beside their images. It is recorded in the log as ``("checked-at", k)``.
 
+The algebra that rebuilds a polynomial from images (Newton interpolation, Chinese
+remaindering, rational reconstruction) is ``algkin.eliminate.reconstruct``; the second
+process is forked by ``algkin.runtime.child``; the exact elimination the signature is read
+from runs on a ``Recording`` of the backend, which keeps the factors it met.
+
 >>> import sympy
 >>> from algkin.eliminate import eliminate
 >>> x, y, r = sympy.symbols("x y r")
@@ -45,8 +50,6 @@ r**4 - 26*r**2 + 36*y**2 + 25
 
 import functools
 import math
-import multiprocessing
-import os
 import random
 from collections.abc import Callable, Sequence
 
@@ -55,33 +58,24 @@ from typing import Any, TypeVar, cast
 import flint
 
 from ..errors import ComputationError
-from ..runtime.budget import bind_to_parent
+from ..runtime.child import can_fork, forked
 from .backends import FlintBackend
 from .linear import linear_elimination
 from .methods import prepare
 from .modular import PRIMES, ModularBackend, Shape, shape
 from .protocol import Backend, P
+from .reconstruct import (MAX_DEGREE, RETRIES, Image, NotPolynomial, Residues, Unlucky, crt, line_degree, newton,
+                          rational)
+from .recording import Recording
 from .request import EliminationRequest, LogEntry, MethodOutcome
 from .select import select_factors
 
 __all__ = ["interpolation", "MAX_DEGREE", "CHECKS"]
 
-MAX_DEGREE = 80  # the largest total degree in the parameters looked for
 CHECKS = 2  # exact checks at random rational parameters, beyond the interpolation's needs
 SPARE_BITS = 6  # a reconstructed fraction is trusted for its denominator with this many bits to spare
-RETRIES = 20  # unlucky points skipped in a row before giving up
 
 _T = TypeVar("_T")
-
-Image = Callable[[dict[str, int]], "flint.nmod_mpoly | None"]
-
-
-class _Unlucky(Exception):
-    """Too many unlucky points in a row."""
-
-
-class _NotPolynomial(Exception):
-    """The monic images are not a polynomial of degree up to ``MAX_DEGREE`` in the parameters."""
 
 
 def interpolation(backend: Backend[P], polys: list[P], request: EliminationRequest) -> MethodOutcome[P]:
@@ -94,7 +88,7 @@ def interpolation(backend: Backend[P], polys: list[P], request: EliminationReque
     family = _Family(cast(FlintBackend, backend), cast(list[flint.fmpq_mpoly], polys), request, parameters)
     try:
         return MethodOutcome([cast(P, family.solve())], log=family.log)
-    except _NotPolynomial:  # the leading coefficient holds a parameter: no monic normalisation
+    except NotPolynomial:  # the leading coefficient holds a parameter: no monic normalisation
         return MethodOutcome(polys, log=[("interpolation-declined", "leading coefficient")]).then(
             linear_elimination(backend, polys, request))
 
@@ -131,12 +125,12 @@ class _Family:
         exact = getattr(point, "exact", {}) if point is not None else {}
         if point is None or not all(n in exact for n in self.parameters):  # no witness: keep every factor
             return sorted(self._degrees(f) for f in self._exact(self._rational_point())), frozenset()
-        recording = _Recording(self.backend.names)
+        recording = Recording(self.backend)
         polys = [recording.specialize(p, {n: exact[n] for n in self.parameters}) for p in self.polys]
-        request = EliminationRequest(self.request.eliminate, [[point]], (), self.request.budget)
+        request = EliminationRequest(self.request.eliminate, [[point]], (), self.request.deadline)
         prepared = prepare(recording, polys, request.eliminate)
         outcome = linear_elimination(recording, prepared.left, request)
-        final = _eliminant_factors(recording, outcome.left, EliminationRequest((), (), (), request.budget))
+        final = _eliminant_factors(recording, outcome.left, EliminationRequest((), (), (), request.deadline))
         kept, _ = select_factors(recording, final, [[point]], check=False)
         dropped = {shape(f) for f in outcome.dropped}
         others = {shape(f) for f in recording.seen if not any(f == g for g in outcome.dropped)}
@@ -164,7 +158,7 @@ class _Family:
         rng = rng or self.random
         return {n: flint.fmpq(rng.randrange(-999, 1000), rng.randrange(1, 1000)) for n in self.parameters}
 
-    def _pick(self, backend: Backend[Any], factors: Sequence[Any]) -> Any:
+    def _pick(self, backend: Backend[P], factors: Sequence[P]) -> P | None:
         """The monic product of the factors of the signature's degrees; None (an unlucky point)
         unless they are exactly the signature's."""
         chosen = [f for f in factors if self._degrees_in(backend, f) in self.signature]
@@ -175,7 +169,7 @@ class _Family:
             product = product * factor
         return backend.primitive(product)
 
-    def _degrees_in(self, backend: Backend[Any], poly: Any) -> tuple[int, ...]:
+    def _degrees_in(self, backend: Backend[P], poly: P) -> tuple[int, ...]:
         return tuple(backend.degree(poly, n) for n in self.kept)
 
     # -- modular images -----------------------------------------------------------------------
@@ -205,21 +199,21 @@ class _Family:
         images in a forked child (the two cores of a small machine); in the first round,
         each process also eliminates directly at one of the checks' points (they do not
         depend on the images)."""
-        residues: dict[tuple[int, ...], int] = {}
+        residues: Residues = {}
         modulus, count = 1, 0
-        degree = _line_degree(self._images(PRIMES[0]), self.parameters, PRIMES[0], self.random)
+        degree = line_degree(self._images(PRIMES[0]), self.parameters, PRIMES[0], self.random)
         self.log.append(("parameter-degree", degree))
         checks: list[tuple[dict[str, flint.fmpq], flint.fmpq_mpoly]] = []
         for first, second in zip(PRIMES[::2], PRIMES[1::2]):
             here, there = (0, 0) if checks else (CHECKS - CHECKS // 2, CHECKS // 2)  # direct eliminations each
             rounds = _both(self._round, (first, degree, here), (second, degree, there))
             for prime, (found, direct) in zip((first, second), rounds):
-                checks += [(values, self.backend.ctx.from_dict(terms)) for values, terms in direct]
+                checks += [(values, self._ring().from_dict(terms)) for values, terms in direct]
                 if found is None:  # unlucky throughout: the next prime
                     continue
                 values, used = found
                 count += used
-                residues, modulus = _crt(residues, modulus, values, prime)
+                residues, modulus = crt(residues, modulus, values, prime)
             candidate = self._lift(residues, modulus) if residues else None
             if candidate is not None and self._check(candidate, checks):
                 self.log += [("interpolated", count), ("checked-at", len(checks))]
@@ -228,7 +222,7 @@ class _Family:
                                f"no check passed after {len(PRIMES)} primes")
 
     def _round(self, prime: int, degree: int, directs: int
-               ) -> tuple[tuple[dict[tuple[int, ...], int], int] | None, list[tuple[dict[str, flint.fmpq], Any]]]:
+               ) -> tuple[tuple[Residues, int] | None, list[tuple[dict[str, flint.fmpq], Any]]]:
         """``_interpolated``, then ``directs`` direct eliminations at random rational points
         (drawn from a generator of the prime's own: a forked child's copy of ``self.random``
         would draw the parent's points), each as ``(point, its terms)``: a process boundary
@@ -249,23 +243,23 @@ class _Family:
                 return values, direct
         raise ComputationError(f"interpolating in {', '.join(self.parameters)}: no check point of the signature")
 
-    def _interpolated(self, prime: int, degree: int) -> tuple[dict[tuple[int, ...], int], int] | None:
+    def _interpolated(self, prime: int, degree: int) -> tuple[Residues, int] | None:
         """The family mod ``prime`` (monomial -> residue) and the images it took; None if unlucky."""
         try:
-            poly, used = _newton(self._images(prime), self.parameters, degree, prime, random.Random(prime))
-        except _Unlucky:
+            poly, used = newton(self._images(prime), self.parameters, degree, prime, random.Random(prime))
+        except Unlucky:
             return None
         return {m: int(c) for m, c in zip(poly.monoms(), poly.coeffs())}, used
 
-    def _lift(self, residues: dict[tuple[int, ...], int], modulus: int) -> flint.fmpq_mpoly | None:
+    def _lift(self, residues: Residues, modulus: int) -> flint.fmpq_mpoly | None:
         """The rational polynomial the residues stand for: the denominators found by rational
         reconstruction where it succeeds with bits to spare, then every coefficient times their lcm lifted as an
         integer (symmetric range): half the bits rational reconstruction needs, so fewer primes
         (the check decides). None if no coefficient reconstructs."""
         # denominators are small (they divide the integer eliminant's leading coefficient), numerators
         # not: reconstructions allowed a quarter of the bits for the denominator
-        rational = functools.partial(_rational, modulus=modulus, denominator_bits=modulus.bit_length() // 4)
-        found = [value for value in map(rational, residues.values()) if value is not None]
+        reconstructed = functools.partial(rational, modulus=modulus, denominator_bits=modulus.bit_length() // 4)
+        found = [value for value in map(reconstructed, residues.values()) if value is not None]
         # a false reconstruction fills the bound (numerator times denominator near the modulus);
         # a true one, of a small coefficient, leaves bits to spare
         room = modulus.bit_length() - SPARE_BITS
@@ -280,7 +274,12 @@ class _Family:
             if abs(lifted).bit_length() >= room:  # a numerator filling the modulus: the lcm is short of a factor
                 return None
             terms[monomial] = flint.fmpq(lifted, common)
-        return self.backend.ctx.from_dict(terms)
+        return self._ring().from_dict(terms)
+
+    def _ring(self) -> flint.fmpq_mpoly_ctx:
+        """The backend's polynomial ring, where polynomials are rebuilt from their terms."""
+        ring: flint.fmpq_mpoly_ctx = self.backend.ctx
+        return ring
 
     def _check(self, candidate: flint.fmpq_mpoly, checks: Sequence[tuple[dict[str, flint.fmpq], flint.fmpq_mpoly]]
                ) -> bool:
@@ -289,22 +288,9 @@ class _Family:
         return all(backend.primitive(backend.specialize(candidate, values)) == direct for values, direct in checks)
 
 
-class _Recording(FlintBackend):
-    """The flint backend, keeping every factor it was asked for."""
-
-    def __init__(self, names: Sequence[str]) -> None:
-        super().__init__(names)
-        self.seen: list[flint.fmpq_mpoly] = []
-
-    def factors(self, poly: flint.fmpq_mpoly) -> list[flint.fmpq_mpoly]:
-        found = super().factors(poly)
-        self.seen.extend(found)
-        return found
-
-
 def _eliminant(backend: Backend[P], polys: list[P], request: EliminationRequest) -> P | None:
     """The eliminant of ``polys`` by the linear method, unselected (None: a number)."""
-    bare = EliminationRequest(request.eliminate, (), (), request.budget)
+    bare = EliminationRequest(request.eliminate, (), (), request.deadline)
     prepared = prepare(backend, polys, bare.eliminate)
     left = [p for p in linear_elimination(backend, prepared.left, bare).left if not backend.is_zero(p)]
     if not left:
@@ -316,163 +302,19 @@ def _eliminant(backend: Backend[P], polys: list[P], request: EliminationRequest)
 
 
 def _eliminant_factors(backend: Backend[P], polys: list[P], request: EliminationRequest) -> list[P]:
-    """The irreducible factors of the eliminant of ``polys`` by the linear method, unselected."""
+    """The irreducible factors of the eliminant of ``polys`` by the linear method, unselected: on a
+    backend over QQ, whose ``factors`` are irreducible (an image mod a prime is cut by
+    ``ModularBackend.irreducible``)."""
     eliminant = _eliminant(backend, polys, request)
-    # the modular backend's ``factors`` gives squarefree parts: an image is cut to irreducibles
-    return [] if eliminant is None else getattr(backend, "irreducible", backend.factors)(eliminant)
-
-
-def _line_degree(image: Image, parameters: Sequence[str], prime: int, rng: random.Random) -> int:
-    """The total degree in the parameters: Newton interpolation along a random line through
-    them until the next two images are predicted exactly."""
-    start = {n: rng.randrange(prime) for n in parameters}
-    slope = {n: rng.randrange(1, prime) for n in parameters}
-    ts: list[int] = []
-    table: list[flint.nmod_mpoly] = []  # Newton coefficients
-    hits, misses = 0, 0
-    while len(ts) <= MAX_DEGREE + 2:
-        t = rng.randrange(prime)
-        value = image({n: (start[n] + slope[n] * t) % prime for n in parameters})
-        if value is None or t in ts:
-            misses += 1
-            if misses > RETRIES:
-                raise ComputationError(f"interpolating in {', '.join(parameters)}: every image unlucky")
-            continue
-        misses = 0
-        if table and value == _newton_value(table, ts, t, prime):
-            hits += 1
-            if hits == 2:
-                return len(table) - 1
-            continue
-        hits = 0
-        table.append(_divided(value, table, ts, t, prime))
-        ts.append(t)
-    raise _NotPolynomial
-
-
-def _newton_value(table: Sequence[flint.nmod_mpoly], ts: Sequence[int], t: int, prime: int) -> flint.nmod_mpoly:
-    """The Newton form ``table`` (not empty) on nodes ``ts`` at ``t`` (Horner)."""
-    total = table[-1]
-    for k in range(len(table) - 2, -1, -1):
-        total = total * ((t - ts[k]) % prime) + table[k]
-    return total
-
-
-def _divided(value: flint.nmod_mpoly, table: Sequence[flint.nmod_mpoly], ts: Sequence[int], t: int,
-             prime: int) -> flint.nmod_mpoly:
-    """The next Newton coefficient, for the node ``t`` with ``value``."""
-    residual = value - _newton_value(table, ts, t, prime) if table else value
-    weight = 1
-    for node in ts:
-        weight = weight * (t - node) % prime
-    return residual * pow(weight, -1, prime)
-
-
-def _newton(image: Image, parameters: Sequence[str], degree: int, prime: int, rng: random.Random
-            ) -> tuple[flint.nmod_mpoly, int]:
-    """The polynomial of total degree ``degree`` in ``parameters`` whose values ``image`` gives,
-    by Newton interpolation on a triangular grid; and how many images it took."""
-    if not parameters:
-        value = image({})
-        if value is None:
-            raise _Unlucky
-        return value, 1
-    first, rest = parameters[0], parameters[1:]
-    nodes: list[int] = []
-    parts: list[flint.nmod_mpoly] = []  # h_i: G = sum_i prod_{k<i} (first - nodes[k]) h_i(rest)
-    used = 0
-    for i in range(degree + 1):
-        for _ in range(RETRIES):
-            node = rng.randrange(prime)
-            if node in nodes:
-                continue
-            try:
-                part, count = _newton(_peeled(image, first, node, nodes, parts, prime), rest, degree - i, prime, rng)
-            except _Unlucky:
-                continue
-            used += count
-            nodes.append(node)
-            parts.append(part)
-            break
-        else:
-            raise _Unlucky
-    gen = parts[0].context().gens()[parts[0].context().names().index(first)]
-    total, basis = parts[0] * 0, parts[0] * 0 + 1
-    for node, part in zip(nodes, parts):
-        total = total + basis * part
-        basis = basis * (gen - node)
-    return total, used
-
-
-def _peeled(image: Image, first: str, node: int, nodes: Sequence[int], parts: Sequence[flint.nmod_mpoly],
-            prime: int) -> Image:
-    """Images of the next Newton part at ``first = node``: the known parts subtracted, divided
-    by their basis there."""
-    def peeled(point: dict[str, int]) -> flint.nmod_mpoly | None:
-        value = image({first: node, **point})
-        if value is None:
-            return None
-        weight = 1
-        for k, part in enumerate(parts):
-            value = value - (part.subs(cast("dict[str | int, int]", point)) if point else part) * weight
-            weight = weight * (node - nodes[k]) % prime
-        return value * pow(weight, -1, prime)
-
-    return peeled
-
-
-def _crt(residues: dict[tuple[int, ...], int], modulus: int, new: dict[tuple[int, ...], int], prime: int
-         ) -> tuple[dict[tuple[int, ...], int], int]:
-    """The residues mod ``modulus`` joined with ``new``'s mod ``prime``."""
-    inverse = pow(modulus, -1, prime)
-    joined = {}
-    for monomial in set(residues) | set(new):
-        old = residues.get(monomial, 0)
-        joined[monomial] = old + modulus * ((new.get(monomial, 0) - old) * inverse % prime)
-    return joined, modulus * prime
+    return [] if eliminant is None else backend.factors(eliminant)
 
 
 def _both(work: Callable[..., _T], here: tuple[Any, ...], there: tuple[Any, ...]) -> tuple[_T, _T]:
     """``(work(*here), work(*there))``, the second in a forked child while the first runs here;
-    both here where fork is missing or this process may have no children (a daemonic one, such
-    as a bench measurement's). The child dies with this process and is always reaped."""
-    if "fork" not in multiprocessing.get_all_start_methods() or multiprocessing.current_process().daemon:
+    both here where this process cannot fork (a daemonic one, such as a bench measurement's
+    or a budget's). The child's error is raised here; the child is always reaped."""
+    if not can_fork():
         return work(*here), work(*there)
-    receive, send = multiprocessing.Pipe(duplex=False)
-    child = multiprocessing.get_context("fork").Process(target=_child, args=(work, there, send, os.getpid()),
-                                                         daemon=True)
-    child.start()
-    try:
+    with forked(lambda tell: work(*there)) as child:
         mine = work(*here)
-        ok, theirs = receive.recv()
-        if not ok:
-            raise ComputationError(f"interpolating in a child process: {theirs}")
-        return mine, theirs
-    finally:
-        child.kill()
-        child.join()
-
-
-def _child(work: Callable[..., Any], arguments: tuple[Any, ...], pipe: Any, parent: int) -> None:
-    bind_to_parent(parent)
-    try:
-        pipe.send((True, work(*arguments)))
-    except Exception as error:  # the parent raises it
-        pipe.send((False, f"{type(error).__name__}: {error}"))
-
-
-def _rational(residue: int, modulus: int, denominator_bits: int | None = None) -> flint.fmpq | None:
-    """The fraction ``n/d`` congruent to ``residue`` with ``d`` below ``2**denominator_bits``
-    and ``|n| d < modulus/2`` (by default ``|n|, d < sqrt(modulus/2)``), or None."""
-    if denominator_bits is None:
-        numerator_bound = denominator_bound = math.isqrt(modulus // 2)
-    else:
-        denominator_bound = 1 << denominator_bits
-        numerator_bound = modulus // (2 * denominator_bound)
-    r0, r1, s0, s1 = modulus, residue % modulus, 0, 1
-    while r1 >= numerator_bound:
-        q = r0 // r1
-        r0, r1, s0, s1 = r1, r0 - q * r1, s1, s0 - q * s1
-    if s1 == 0 or abs(s1) >= denominator_bound:
-        return None
-    return flint.fmpq(r1, s1) if s1 > 0 else flint.fmpq(-r1, -s1)
+        return mine, child.answer()

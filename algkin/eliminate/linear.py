@@ -134,7 +134,7 @@ def _substitution(backend: Backend[P], polys: list[P], found: _Linear[P], *, str
     its coefficient is a multiplier if it holds a variable."""
     var, coefficient = found.var, found.coefficient
     polys, stripped = _substitute(backend, polys, found, strip=strip)
-    request.budget.check_terms(max(map(backend.nterms, polys), default=0), f"an equation after substituting {var}")
+    request.deadline.check_terms(max(map(backend.nterms, polys), default=0), f"an equation after substituting {var}")
     multipliers = [] if backend.is_constant(coefficient) else [coefficient]
     # a stripped equation is no longer in the ideal (only in its saturation by the multiplier)
     log: list[LogEntry] = [("substituted", var)]

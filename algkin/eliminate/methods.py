@@ -95,7 +95,7 @@ def resultant_step(backend: Backend[P], polys: list[P], var: str, *, request: El
             raise ComputationError(f"resultant in {var} vanished: the equations share a factor")
         if backend.is_constant(result):
             raise ComputationError(f"resultant in {var} is a non-zero constant: the system is inconsistent")
-        request.budget.check_terms(backend.nterms(result), f"the resultant in {var}")
+        request.deadline.check_terms(backend.nterms(result), f"the resultant in {var}")
         if last:
             others.append(result)
             continue
@@ -122,6 +122,6 @@ def groebner_basis(backend: Backend[P], polys: list[P], request: EliminationRequ
     order = list(request.eliminate) + keep
     basis = backend.groebner_lex(polys, order)
     for element in basis:  # the basis is one call: its size is checked once it is there
-        request.budget.check_terms(backend.nterms(element), "an element of the Gröbner basis")
+        request.deadline.check_terms(backend.nterms(element), "an element of the Gröbner basis")
     left = [g for g in basis if not (backend.variables(g) & set(request.eliminate))]
     return MethodOutcome(left, log=[("groebner", len(basis))])

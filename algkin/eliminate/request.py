@@ -9,7 +9,7 @@ outcomes too, chained with ``MethodOutcome.then``.
 from dataclasses import dataclass, field
 from typing import Generic, Protocol
 
-from ..runtime.budget import Budget, current
+from ..runtime.budget import Deadline, started
 from .protocol import Backend, P
 from .select import WitnessGroups
 
@@ -22,12 +22,12 @@ LogEntry = tuple[str, str | int]
 @dataclass(frozen=True)
 class EliminationRequest:
     """The unknowns to eliminate; the witness groups that choose factors; the ``parameters``
-    (kept variables a ``linear`` multiplier may hold); the budget the work keeps to."""
+    (kept variables a ``linear`` multiplier may hold); the deadline the work keeps to (by default, none)."""
 
     eliminate: tuple[str, ...]
     witnesses: WitnessGroups = ()
     parameters: tuple[str, ...] = ()
-    budget: Budget = field(default_factory=current)
+    deadline: Deadline = field(default_factory=started)
 
 
 @dataclass(frozen=True)

@@ -1,19 +1,19 @@
 """Budgets for commands and eliminations: wall seconds and the size of every intermediate eliminant.
 
-A python-flint resultant or Gröbner basis is one C call that no signal interrupts, so a
-time budget runs the work in a forked child process that is killed at the deadline; the
-result comes back pickled. The child reports what it is doing (``note``), so the message
-says what was being eliminated when time ran out; the parent shows it as progress
-(``algkin.runtime.progress``), since the child does not write to the terminal itself. A terms budget
-is checked after every resultant and Gröbner basis. An elimination called without a budget,
-inside a budget's ``run()``, counts against that budget (``current()``).
+A ``Budget`` is a value, what a caller allows: at most ``seconds`` of wall time, at most
+``terms`` terms per eliminant. ``start()`` makes a ``Deadline``, the budget running from now,
+which is passed to the work that keeps to it (``budget=`` of ``derive``, ``eliminate``...):
+one budget starts any number of deadlines.
 
-No child outlives its parent: the kernel kills it when the parent dies (Linux), and the
-parent kills and joins it however ``run()`` ends, an exception raised by a signal included.
+A python-flint resultant or Gröbner basis is one C call that no signal interrupts, so a
+deadline's ``run()`` computes in a forked child process killed at the deadline
+(``algkin.runtime.child``). The work says what it is doing (``note``), so the message says
+what was being computed when time ran out; the parent shows it as progress
+(``algkin.runtime.progress``). A terms budget is checked after every resultant and Gröbner basis.
 This module imports no algebra, so that a command's parent process stays light.
 
->>> budget = Budget(terms=3)
->>> budget.check_terms(4, "the resultant in B_x")
+>>> deadline = Budget(terms=3).start()
+>>> deadline.check_terms(4, "the resultant in B_x")
 Traceback (most recent call last):
 ...
 algkin.errors.BudgetExceeded: max_terms=3: the resultant in B_x has 4 terms, while computing
@@ -23,11 +23,11 @@ moves when they say, so that nothing depends on how fast the machine is. Here on
 still (the deadline never comes), then one that reads 0 when the budget starts and 10.5 ever
 after, against work that would never end:
 
->>> Budget(seconds=10, clock=lambda: 0.0).run(lambda: sum(range(10)))
+>>> Budget(seconds=10, clock=lambda: 0.0).start().run(lambda: sum(range(10)))
 45
 >>> import threading
 >>> readings = iter([0.0])
->>> Budget(seconds=10, clock=lambda: next(readings, 10.5)).run(threading.Event().wait)
+>>> Budget(seconds=10, clock=lambda: next(readings, 10.5)).start().run(threading.Event().wait)
 Traceback (most recent call last):
 ...
 algkin.errors.BudgetExceeded: max_seconds=10: stopped after 10.50 s while computing
@@ -41,167 +41,24 @@ Traceback (most recent call last):
 algkin.errors.UsageError: max_seconds=10000000000.0: must be a positive number of seconds, at most a week (604800)
 """
 
-import ctypes
-import multiprocessing
-import os
-import pickle
-import signal
-import sys
 import time
+from collections.abc import Callable
+from typing import Any, TypeVar
 
-from ..errors import BudgetExceeded, ComputationError, UsageError
+import attrs
+
+from ..errors import BudgetExceeded, UsageError
 from . import progress
+from .child import Tell, TimeUp, bind_to_parent, forked
 
-__all__ = ["Budget", "current", "bind_to_parent", "time_budget", "MAX_SECONDS"]
+__all__ = ["Budget", "Deadline", "started", "bind_to_parent", "time_budget", "MAX_SECONDS"]
 
 MAX_SECONDS = 7 * 24 * 3600  # a week
 
-_ACTIVE = []  # the budgets whose run() is under way in this process, innermost last
-_PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
-# Signals that stop a command: the parent turns them into an exception (algkin.ui.cli); the child,
-# which would otherwise inherit that handler, just dies (Ctrl-C reaches the whole process group).
-_STOPPING = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
+T = TypeVar("T")
 
 
-def current():
-    """The budget of the ``run()`` under way, for eliminations called without one.
-
-    >>> current().seconds is None
-    True
-    >>> Budget(terms=7).run(lambda: current().terms)
-    7
-    """
-    return _ACTIVE[-1] if _ACTIVE else Budget()
-
-
-class Budget:
-    """At most ``seconds`` of wall time from ``start()`` and ``terms`` terms per eliminant.
-
-    Either may be None (no limit). One budget covers everything run under it: the
-    deadline is set once, by the first ``start()`` or ``run()``, on ``clock`` (seconds).
-    """
-
-    def __init__(self, seconds=None, terms=None, *, clock=time.monotonic):
-        if seconds is not None:
-            time_budget(seconds, "max_seconds")
-        if terms is not None and (int(terms) != terms or not terms > 0):
-            raise UsageError("max_terms", terms, "a terms budget must be a positive integer")
-        self.seconds, self.terms = seconds, terms
-        self.deadline = None
-        self._clock = clock
-        self.doing = "computing"
-        self._report = None  # in a child process: the pipe to the parent
-
-    def __repr__(self):
-        return f"Budget(seconds={self.seconds!r}, terms={self.terms!r})"
-
-    def start(self):
-        """Set the deadline (once) and return the budget."""
-        if self.seconds is not None and self.deadline is None:
-            self.deadline = self._clock() + self.seconds
-        return self
-
-    def note(self, doing):
-        """Say what is being computed now, for the message if the time runs out, and as progress."""
-        self.doing = doing
-        if self._report is not None:
-            self._report.send(("doing", doing))  # the parent shows it
-        else:
-            progress.stage(doing)
-
-    def check_terms(self, count, what):
-        """Raise BudgetExceeded if ``what`` (an intermediate eliminant) has more than ``terms`` terms."""
-        if self.terms is not None and count > self.terms:
-            raise BudgetExceeded(f"max_terms={self.terms}: {what} has {count} terms, while {self.doing}")
-
-    def run(self, function):
-        """``function()``, stopped at the deadline when there is a time budget."""
-        if self.seconds is None or self._report is not None:
-            return self._within(function)  # no deadline, or already inside the child that has one
-        self.start()
-        context = multiprocessing.get_context("fork")
-        parent, child = context.Pipe(duplex=False)
-        process = context.Process(target=self._child, args=(function, child, os.getpid()), daemon=True)
-        process.start()
-        try:
-            child.close()
-            return self._wait(parent, process)
-        finally:  # however the wait ended (answer, deadline, error, a signal's exception): no child left
-            if process.is_alive():
-                process.kill()
-            process.join()
-            parent.close()
-
-    def _within(self, function):
-        _ACTIVE.append(self)
-        try:
-            return function()
-        finally:
-            _ACTIVE.remove(self)
-
-    def _child(self, function, report, parent_pid):
-        bind_to_parent(parent_pid)
-        self._report = report
-        progress.hand_over(lambda event: report.send(("progress", event)))
-        try:
-            outcome = ("done", self._within(function))
-        except BaseException as err:  # noqa: BLE001 - every failure goes back to the parent
-            outcome = ("error", err)
-        try:
-            report.send(outcome)
-        except (pickle.PicklingError, TypeError, AttributeError) as err:
-            report.send(("error", ComputationError(f"the result could not be sent back: {err}")))
-
-    def _wait(self, pipe, process):
-        """The child's answer, taking its notes on the way, until the deadline."""
-        while True:
-            left = self.deadline - self._clock()
-            if left <= 0:
-                return self._overtime(pipe, process)
-            if not pipe.poll(left):
-                continue  # the clock says when the deadline has come (a poll may wake early)
-            try:
-                kind, value = pipe.recv()
-            except (EOFError, OSError):  # OSError: the pipe closed in the middle of a message
-                process.join()
-                raise ComputationError(f"the process {self.doing} ended without an answer "
-                                       f"(exit code {process.exitcode})") from None
-            if not self._noted(kind, value):
-                return self._outcome(kind, value)
-
-    def _overtime(self, pipe, process):
-        """Past the deadline: kill the child, then read only what it had sent already.
-
-        Once the child is dead the pipe holds a bounded amount, so this cannot spin or wait:
-        an answer that came in time is still taken, a late note only names what was cut short.
-        """
-        process.kill()
-        process.join()
-        for kind, value in _already_sent(pipe):
-            if not self._noted(kind, value):
-                return self._outcome(kind, value)
-        elapsed = self.seconds - (self.deadline - self._clock())
-        raise BudgetExceeded(f"max_seconds={self.seconds:g}: stopped after {elapsed:.2f} s while {self.doing}")
-
-    def _noted(self, kind, value):
-        """Take a note from the child, what it is doing or other progress, and show it: whether it was one."""
-        if kind == "doing":
-            self.doing = value
-            progress.stage(value)
-        elif kind == "progress":
-            progress.replay(value)
-        else:
-            return False
-        return True
-
-    @staticmethod
-    def _outcome(kind, value):
-        if kind == "error":
-            raise value
-        return value
-
-
-def time_budget(seconds, argument):
+def time_budget(seconds: float, argument: str) -> float:
     """``seconds`` if it is a time budget that can be kept: a positive number, at most ``MAX_SECONDS``;
     else UsageError naming ``argument``.
 
@@ -217,27 +74,121 @@ def time_budget(seconds, argument):
     return seconds
 
 
-def _already_sent(pipe):
-    """The messages in ``pipe`` now, up to the end of what was written or a message cut off."""
-    try:
-        while pipe.poll(0):
-            yield pipe.recv()
-    except (EOFError, OSError):
+def _seconds(_: Any, __: Any, seconds: float | None) -> None:
+    if seconds is not None:
+        time_budget(seconds, "max_seconds")
+
+
+def _terms(_: Any, __: Any, terms: int | None) -> None:
+    if terms is None:
         return
+    try:
+        whole = int(terms) == terms
+    except (TypeError, ValueError, OverflowError):  # not a number, nan, inf
+        whole = False
+    if not whole or not terms > 0:
+        raise UsageError("max_terms", terms, "a terms budget must be a positive integer")
 
 
-def bind_to_parent(parent_pid):
-    """In a worker just forked by ``parent_pid``: die with the parent, and of a stopping signal.
+@attrs.frozen
+class Budget:
+    """At most ``seconds`` of wall time from ``start()`` and ``terms`` terms per eliminant.
 
-    On Linux the kernel kills the worker when its parent dies (elsewhere only the parent's own
-    clean-up stops it). Strictly the kernel watches the parent's thread that forked, which
-    waits for the worker, so it ends no sooner. A parent killed before the request took
-    effect is caught by the check that follows it: the worker has then been re-parented, and
-    leaves at once.
+    Either may be None (no limit); the time is read on ``clock`` (seconds). A value: equal
+    budgets are interchangeable, and starting one changes nothing in it.
+
+    >>> Budget(seconds=10) == Budget(10) and len({Budget(10), Budget(10)}) == 1
+    True
     """
-    if sys.platform.startswith("linux"):
-        ctypes.CDLL(None, use_errno=True).prctl(_PR_SET_PDEATHSIG, signal.SIGKILL)
-    if os.getppid() != parent_pid:
-        os._exit(1)
-    for signum in _STOPPING:
-        signal.signal(signum, signal.SIG_DFL)
+
+    seconds: float | None = attrs.field(default=None, validator=_seconds)
+    terms: int | None = attrs.field(default=None, validator=_terms)
+    clock: Callable[[], float] = attrs.field(default=time.monotonic, kw_only=True, repr=False)
+
+    def start(self) -> "Deadline":
+        """This budget running from now: its deadline ``seconds`` on from the clock's reading."""
+        return Deadline(self, self.clock())
+
+
+@attrs.define(eq=False)
+class Deadline:
+    """A budget started when its clock read ``begun``, and what its work is doing now.
+
+    The work's notes (``note``) say what it is doing, for the message if the time runs out and
+    as progress. Compared by identity: two deadlines of one budget are two runs of it.
+
+    >>> readings = iter([100.0, 104.0])
+    >>> deadline = Budget(seconds=10, clock=lambda: next(readings)).start()
+    >>> deadline.begun, deadline.left()
+    (100.0, 6.0)
+    """
+
+    budget: Budget = attrs.field(on_setattr=attrs.setters.frozen)
+    begun: float = attrs.field(on_setattr=attrs.setters.frozen)
+    doing: str = "computing"
+    _tell: Tell | None = attrs.field(default=None, init=False)  # in its child process: to the parent
+
+    def left(self) -> float | None:
+        """The seconds left before the deadline (None: no time budget); zero or less once it has passed."""
+        seconds = self.budget.seconds
+        return None if seconds is None else self.begun + seconds - self.budget.clock()
+
+    def note(self, doing: str) -> None:
+        """Say what is being computed now, for the message if the time runs out, and as progress."""
+        self.doing = doing
+        if self._tell is not None:
+            self._tell(doing)  # the parent shows it
+        else:
+            progress.stage(doing)
+
+    def check_terms(self, count: int, what: str) -> None:
+        """Raise BudgetExceeded if ``what`` (an intermediate eliminant) has more than ``terms`` terms."""
+        terms = self.budget.terms
+        if terms is not None and count > terms:
+            raise BudgetExceeded(f"max_terms={terms}: {what} has {count} terms, while {self.doing}")
+
+    def run(self, function: Callable[[], T]) -> T:
+        """``function()``, stopped at the deadline when there is a time budget: in a forked
+        child, unless this is already the child keeping this deadline."""
+        seconds, clock = self.budget.seconds, self.budget.clock
+        if seconds is None or self._tell is not None:
+            return function()
+        with forked(lambda tell: self._within(function, tell), shows_progress=True) as child:
+            try:
+                return child.answer(left=lambda: self.begun + seconds - clock(), heard=self._heard)
+            except TimeUp:
+                elapsed = clock() - self.begun
+                raise BudgetExceeded(f"max_seconds={seconds:g}: stopped after {elapsed:.2f} s "
+                                     f"while {self.doing}") from None
+
+    def _within(self, function: Callable[[], T], tell: Tell) -> T:
+        """In the child: ``function()``, this deadline's notes told to the parent."""
+        self._tell = tell
+        return function()
+
+    def _heard(self, doing: str) -> None:
+        """A note from the child, kept and shown."""
+        self.doing = doing
+        progress.stage(doing)
+
+
+def started(budget: "Budget | Deadline | None" = None) -> Deadline:
+    """The deadline work keeps to: ``budget`` started now, a deadline already running, or none (no limit).
+
+    >>> started().left() is None
+    True
+    >>> deadline = Budget(terms=7).start()
+    >>> started(deadline) is deadline
+    True
+    >>> started(10)
+    Traceback (most recent call last):
+    ...
+    algkin.errors.UsageError: budget=10: expected an algkin.Budget, e.g. Budget(seconds=10)
+    """
+    if isinstance(budget, Deadline):
+        return budget
+    if budget is None:
+        return Budget().start()
+    if not isinstance(budget, Budget):
+        raise UsageError("budget", budget, "expected an algkin.Budget, e.g. Budget(seconds=10)")
+    return budget.start()

@@ -36,7 +36,7 @@ from typing import TYPE_CHECKING
 from ..errors import UsageError
 
 if TYPE_CHECKING:
-    from .budget import Budget
+    from .budget import Budget, Deadline
 
 __all__ = ["names", "count", "seed", "budget", "real", "whole", "rational", "MAX_VERIFY_SAMPLES",
            "MAX_ACCURACY_SAMPLES"]
@@ -81,12 +81,12 @@ def seed(value: object) -> int:
     return count("seed", value, 2**64 - 1)
 
 
-def budget(value: object) -> Budget | None:
-    """None or a ``Budget``."""
-    from .budget import Budget
+def budget(value: object) -> Budget | Deadline | None:
+    """None, a ``Budget`` or the ``Deadline`` of one started."""
+    from .budget import Budget, Deadline
 
-    if value is not None and not isinstance(value, Budget):
-        raise UsageError("budget", value, "expected an algkin.eliminate.Budget, e.g. Budget(seconds=10)")
+    if value is not None and not isinstance(value, (Budget, Deadline)):
+        raise UsageError("budget", value, "expected an algkin.Budget, e.g. Budget(seconds=10)")
     return value
 
 

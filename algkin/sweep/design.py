@@ -25,12 +25,15 @@ import time
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..errors import BudgetExceeded, SceneError
 from ..runtime import progress
 from ..scene import Scene, load_scene
 from .analyses import ANALYSES, Design
+
+if TYPE_CHECKING:
+    from ..runtime.budget import Deadline
 
 __all__ = ["Job", "evaluate_design", "evaluate_chunk", "columns", "TIMING_PREFIX", "REASON_CHARS", "STATUSES"]
 
@@ -85,8 +88,9 @@ def evaluate_design(job: Job, design: int, values: Mapping[str, Fraction]) -> di
     else:
         from ..runtime.budget import Budget
 
+        deadline = Budget(seconds=job.budget).start()
         try:
-            found = Budget(seconds=job.budget).run(lambda: _analyse(job, values))
+            found = deadline.run(lambda: _analyse(job, values, deadline))
         except BudgetExceeded as err:
             found = {"status": "failed", "reason": _one_line(f"budget: {err}")}
     row.update(found)
@@ -94,8 +98,9 @@ def evaluate_design(job: Job, design: int, values: Mapping[str, Fraction]) -> di
     return row
 
 
-def _analyse(job: Job, values: Mapping[str, Fraction]) -> dict[str, Any]:
-    """The status, reason, analyses' columns and timings of one design (no design id, no values)."""
+def _analyse(job: Job, values: Mapping[str, Fraction], deadline: Deadline | None = None) -> dict[str, Any]:
+    """The status, reason, analyses' columns and timings of one design (no design id, no values);
+    each analysis noted on ``deadline``, if any, for the message if its time runs out."""
     begun = time.perf_counter()
     try:
         design = _assembled(job, values)
@@ -108,6 +113,8 @@ def _analyse(job: Job, values: Mapping[str, Fraction]) -> dict[str, Any]:
     if found["status"] != "ok":
         return found
     for name in job.analyses:
+        if deadline is not None:
+            deadline.note(f"running the {name} analysis")
         begun = time.perf_counter()
         try:
             found.update(ANALYSES[name].run(design))

@@ -3,7 +3,8 @@ hand (or, where a hand value would be long, against the other backend).
 
 Polynomials go in and come out through ``from_sympy`` / ``to_sympy``, so one expected sympy
 expression serves both backends. The last test reads this file and fails if an operation of
-the protocol is never called on ``backend`` here: a new operation needs its test.
+the protocol is never called on ``backend`` here: a new operation needs its test. A ``Recording``
+of each backend (which the interpolate method runs an elimination on) passes as the backend does.
 """
 
 import ast
@@ -16,6 +17,7 @@ import sympy
 from algkin.eliminate.backends import BACKENDS
 from algkin.errors import ComputationError
 from algkin.eliminate.protocol import Backend
+from algkin.eliminate.recording import Recording
 from algkin.system import symbol
 
 NAMES = ("x", "y", "z", "w")  # four, so that flint's proof of irreducibility (beyond three) is reached
@@ -23,9 +25,13 @@ x, y, z, w = (symbol(n) for n in NAMES)
 HALF = sympy.Rational(1, 2)
 
 
-@pytest.fixture(params=sorted(BACKENDS))
+MAKERS = {**BACKENDS, **{f"recording {name}": lambda names, make=make: Recording(make(names))
+                         for name, make in BACKENDS.items()}}
+
+
+@pytest.fixture(params=sorted(MAKERS))
 def backend(request):
-    return BACKENDS[request.param](NAMES)
+    return MAKERS[request.param](NAMES)
 
 
 def same(backend, poly, expected):
@@ -43,7 +49,7 @@ def as_sympy(backend, polys):
 
 
 def test_name_and_names(backend, request):
-    assert backend.name == request.node.callspec.params["backend"]
+    assert backend.name == request.node.callspec.params["backend"].removeprefix("recording ")
     assert backend.names == NAMES
 
 
@@ -250,7 +256,7 @@ def protocol_operations():
 
 
 def test_both_backends_have_every_operation():
-    for make in BACKENDS.values():
+    for make in MAKERS.values():
         assert all(hasattr(make(NAMES), n) for n in protocol_operations())
 
 
@@ -261,3 +267,14 @@ def test_every_operation_of_the_protocol_is_tested_here():
     operations = protocol_operations()
     assert len(operations) == 29  # 27 operations, name and names: a sanity check on the listing
     assert operations <= called, f"untested: {sorted(operations - called)}"
+
+
+def test_a_recording_keeps_every_factor_it_was_asked_for(backend):
+    if not isinstance(backend, Recording):
+        pytest.skip("a recording's own")
+    # (x - y)(x + y), then (x + 1)**2 (y - 2): the distinct irreducible factors, in the order asked
+    backend.factors(backend.from_sympy(x**2 - y**2))
+    backend.factors(backend.from_sympy((x + 1) ** 2 * (y - 2)))
+    seen = [backend.to_sympy(backend.primitive(p)) for p in backend.seen]
+    assert sorted(seen[:2], key=sympy.default_sort_key) == sorted([x - y, x + y], key=sympy.default_sort_key)
+    assert sorted(seen[2:], key=sympy.default_sort_key) == sorted([x + 1, y - 2], key=sympy.default_sort_key)

@@ -39,16 +39,16 @@ def long_elimination(budget):
 def test_derive_stops_when_the_deadline_passes_while_it_eliminates():
     # Unbudgeted, `derive stephenson-iii` on 10,000 samples takes several seconds of eliminations
     # and sampling; the deadline passes as soon as the parent hears that the worker eliminates.
-    budget = Budget(seconds=1, clock=Clock(late=1.25, passed=lambda: budget.doing.startswith("eliminating")))
+    deadline = Budget(seconds=1, clock=Clock(late=1.25, passed=lambda: deadline.doing.startswith("eliminating"))).start()
     with pytest.raises(BudgetExceeded, match=r"max_seconds=1: stopped after 1\.25 s while eliminating "):
-        pipeline.derive("stephenson-iii", samples=10_000, budget=budget)
+        pipeline.derive("stephenson-iii", samples=10_000, budget=deadline)
     assert multiprocessing.active_children() == []  # the worker killed and joined
 
 
 def test_one_long_elimination_stops_when_the_deadline_passes():
-    budget = Budget(seconds=1, clock=Clock(late=1.5, passed=lambda: budget.doing.startswith("eliminating")))
+    deadline = Budget(seconds=1, clock=Clock(late=1.5, passed=lambda: deadline.doing.startswith("eliminating"))).start()
     with pytest.raises(BudgetExceeded, match=re.escape(f"max_seconds=1: stopped after 1.50 s while {P_X}")):
-        long_elimination(budget)
+        long_elimination(deadline)
     assert multiprocessing.active_children() == []
 
 
@@ -77,16 +77,18 @@ def test_command_line_stops_with_one_line_and_exit_1(monkeypatch, capsys):
 # without reading it). In a process of its own, so that a spinning watchdog fails the test.
 CHATTER = """
 import itertools
-from algkin.eliminate import Budget, current
+from algkin.eliminate import Budget
 from tests.clocks import Clock
+
+readings = itertools.count()  # the parent reads the clock once a note: the deadline passes at the 100th
+deadline = Budget(seconds=0.2, clock=Clock(late=0.25, passed=lambda: next(readings) >= 100)).start()
 
 def chatter():
     for count in range(10**9):
-        current().note(f"saying {count}")
+        deadline.note(f"saying {count}")
 
-readings = itertools.count()  # the parent reads the clock once a note: the deadline passes at the 100th
 try:
-    Budget(seconds=0.2, clock=Clock(late=0.25, passed=lambda: next(readings) >= 100)).run(chatter)
+    deadline.run(chatter)
 except Exception as err:
     print(type(err).__name__, err)
 """
@@ -139,7 +141,7 @@ def test_budget_must_be_positive_and_at_most_a_week(seconds, terms):
 def test_the_longest_budget_is_kept():
     # a week, on the machine's clock: a poll's timeout past 24 days overflowed (OverflowError)
     assert MAX_SECONDS == 7 * 24 * 3600
-    assert Budget(seconds=MAX_SECONDS).run(lambda: sum(range(10))) == 45
+    assert Budget(seconds=MAX_SECONDS).start().run(lambda: sum(range(10))) == 45
 
 
 @pytest.mark.parametrize("command,option,value", [
@@ -186,3 +188,89 @@ def test_accuracy_keeps_to_its_time_budget(monkeypatch, capsys):
     captured = capsys.readouterr()
     assert captured.out == "" and captured.err == \
         "algkin: failed: max_seconds=0.5: stopped after 3600.00 s while measuring each strategy on chebyshev-lambda\n"
+
+
+class Dial:
+    """A clock that reads what the test sets: ``dial.now``."""
+
+    def __init__(self):
+        self.now = 0.0
+
+    def __call__(self):
+        return self.now
+
+
+def test_a_budget_serves_again_later():
+    # One Budget(seconds=10), two eliminations an hour apart on its clock: each starts its own
+    # deadline (the budget once kept the first start's, and the second failed at once).
+    dial = Dial()
+    budget = Budget(seconds=10, clock=dial)
+    first = eliminate(CIRCLES, ["x"], ["y", "c", "s"], method="resultant", budget=budget)
+    dial.now = 3600.0
+    again = eliminate(CIRCLES, ["x"], ["y", "c", "s"], method="resultant", budget=budget)
+    assert again.polynomial == first.polynomial
+    assert budget == Budget(seconds=10, clock=dial)  # nothing in it changed
+
+
+def test_a_budget_is_a_frozen_hashable_value():
+    import attrs
+
+    budget = Budget(seconds=5, terms=100)
+    assert budget == Budget(5, 100) and hash(budget) == hash(Budget(5, 100)) and len({budget, Budget(5, 100)}) == 1
+    with pytest.raises(attrs.exceptions.FrozenInstanceError):
+        budget.seconds = 50
+    assert repr(budget) == "Budget(seconds=5, terms=100)"
+
+
+def test_deadlines_of_one_budget_are_apart():
+    # each start reads the clock once; the time left is counted from each one's own start
+    dial = Dial()
+    budget = Budget(seconds=10, clock=dial)
+    first = budget.start()
+    dial.now = 4.0
+    second = budget.start()
+    dial.now = 12.0
+    assert (first.left(), second.left()) == (-2.0, 2.0)
+    first.note("a note of the first")
+    assert (first.doing, second.doing) == ("a note of the first", "computing")
+
+
+def test_budget_is_importable_from_the_package_and_from_where_it_was():
+    import algkin
+    import algkin.eliminate
+    from algkin.runtime import budget as runtime_budget
+
+    assert algkin.Budget is algkin.eliminate.Budget is runtime_budget.Budget
+    assert "Budget" in algkin.__all__
+
+
+def test_a_budget_where_none_is_expected_is_refused_by_name():
+    with pytest.raises(UsageError, match=r"^budget=10: expected an algkin\.Budget"):
+        pipeline.derive("chebyshev-lambda", ["B"], samples=0, budget=10)
+    with pytest.raises(UsageError, match=r"^budget='soon': expected an algkin\.Budget"):
+        eliminate(CIRCLES, ["x"], ["y", "c", "s"], budget="soon")
+
+
+@pytest.mark.parametrize("analysis", ["toggles", "limits", "extremum", "singular"])
+def test_every_eliminating_analysis_keeps_to_a_budget_from_python(analysis):
+    # once found through a global stack, only under the command line's run(); now passed on
+    from algkin import extremum, singular
+    from algkin.analyses.limits import limits
+    from algkin.analyses.toggles import toggles
+
+    calls = {"toggles": lambda b: toggles("chebyshev-lambda", budget=b),
+             "limits": lambda b: limits("fourbar", budget=b),
+             "extremum": lambda b: extremum("arm-string", "AB", params=["b"], budget=b),
+             "singular": lambda b: singular("fourbar", "P", samples=0, budget=b)}
+    with pytest.raises(BudgetExceeded, match=r"^max_terms=3: .* has \d+ terms, while eliminating "):
+        calls[analysis](Budget(terms=3))
+
+
+def test_an_extremums_own_eliminations_keep_to_its_budget():
+    # the derivation of AB (b symbolic) keeps to 10 terms a step; the stationary condition does not
+    budget = Budget(terms=10)
+    pipeline.derive("arm-string", ["AB"], params=["b"], samples=0, budget=budget)
+    from algkin import extremum
+
+    with pytest.raises(BudgetExceeded, match=r"^max_terms=10: the resultant in \w+ has \d+ terms"):
+        extremum("arm-string", "AB", params=["b"], budget=budget)

@@ -3,12 +3,10 @@ unlucky points skipped, and the cases it declines."""
 
 import random
 
-import flint
 import pytest
 import sympy
 
 from algkin.eliminate import eliminate
-from algkin.eliminate.interpolate import _newton, _rational
 from algkin.eliminate.modular import PRIMES, ModularBackend
 
 x, y, r, s, d = sympy.symbols("x y r s d", real=True)  # algkin's symbols are real
@@ -53,25 +51,6 @@ def test_no_parameter_is_the_linear_method():
     assert _same_up_to_constant(result.polynomial, 4 * y**2 - 3)  # x = 1/2
 
 
-def test_unlucky_points_are_skipped():
-    prime = PRIMES[0]
-    backend = ModularBackend(("x", "u", "v"), prime)
-    gx, gu, gv = backend.ctx.gens()
-    family = gx**2 + (3 * gu**2 - gv) * gx + gu * gv**3 + 5
-    refused = []
-
-    def image(point):
-        if point["u"] % 3 == 0 or (point["u"] + point["v"]) % 5 == 0:  # a third and a fifth unlucky
-            refused.append(point)
-            return None
-        return family.subs(point)
-
-    found, used = _newton(image, ["u", "v"], 4, prime, random.Random(3))
-    assert found == family
-    assert used == 15  # (4 + 1)(4 + 2)/2 grid points, the refused ones not counted
-    assert refused
-
-
 def test_a_dropped_shape_tells_factors_of_equal_degrees_apart():
     backend = ModularBackend(("x", "y"), PRIMES[0], frozenset({((1, 2), 4)}))
     gx, gy = backend.ctx.gens()
@@ -111,13 +90,6 @@ def test_the_learned_drop_is_trusted_and_one_dropping_the_motions_factor_is_not(
     assert family._trusted(family.drop) == family.drop
     wrong = frozenset((split, terms) for terms in range(1, 1000) if terms != spurious[0])  # the other one
     assert family._trusted(wrong) == frozenset()
-
-
-@pytest.mark.parametrize("numerator,denominator", [(3, 7), (-123456, 7919), (0, 1), (5, 1)])
-def test_rational_reconstruction(numerator, denominator):
-    modulus = PRIMES[0] * PRIMES[1]
-    residue = numerator * pow(denominator, -1, modulus) % modulus
-    assert _rational(residue, modulus) == flint.fmpq(numerator, denominator)
 
 
 def _curve_task(scene, params):

@@ -7,7 +7,7 @@ import sys
 import threading
 
 from algkin.runtime import progress
-from algkin.runtime.budget import Budget, current
+from algkin.runtime.budget import Budget
 
 from ..clocks import still, ticks
 from ..processes import ENV
@@ -48,9 +48,11 @@ def test_nothing_shows_off_a_terminal_with_quiet_or_outside_the_block():
 
 def test_a_forked_worker_shows_through_its_parent():
     # The worker's copy of the terminal is not the parent's: what shows here was handed over.
+    deadline = Budget(seconds=30, clock=still).start()  # a worker, and no deadline to come
+
     def work():
-        current().note("compiling in the worker")
-        Budget().note("a stage another budget notes")
+        deadline.note("compiling in the worker")
+        Budget().start().note("a stage another budget notes")
         with progress.counting(3, "cases"):
             progress.step()
         return "done"
@@ -58,7 +60,7 @@ def test_a_forked_worker_shows_through_its_parent():
     terminal, threads = Terminal(), threading.active_count()
     with progress.shown(stream=terminal, clock=ticks()):
         assert threading.active_count() == threads  # no tqdm monitor: a process that forks keeps to one thread
-        assert Budget(seconds=30, clock=still).run(work) == "done"  # a worker, and no deadline to come
+        assert deadline.run(work) == "done"
     shown = terminal.getvalue()
     assert "algkin: compiling in the worker" in shown and "algkin: a stage another budget notes" in shown
     assert "1/3 cases" in shown

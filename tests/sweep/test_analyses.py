@@ -118,3 +118,12 @@ def test_singular_points_of_a_designed_coupler_curve():
     assert found["singular_count"] >= found["singular_cusps"] + found["singular_crunodes"]
     places = {(p["kind"], p["exact"]["x"], p["exact"]["y"]) for p in json.loads(found["singular_points"])}
     assert ("cusp", "3", "4") in places and ("crunode", "11/5", "12/5") in places
+
+
+def test_a_design_past_its_budget_says_which_analysis_was_cut_short(monkeypatch):
+    from ..clocks import late_budgets
+
+    late_budgets(monkeypatch, doing="running the curve")  # the deadline passes once the curve is begun
+    found = evaluate_design(Job(FOURBAR, ("grashof", "curve"), "P", 30.0), 0, {})
+    assert (found["status"], found["reason"]) == \
+        ("failed", "budget: max_seconds=30: stopped after 3600.00 s while running the curve analysis")

@@ -23,6 +23,7 @@ from ...derivation.pipeline import derive
 from ...derivation.prepared import Prepared, given, prepare, require_outputs
 from ...derivation.witnesses import Groups
 from ...errors import UsageError
+from ...runtime.budget import Budget, Deadline, started
 from ...scene.load import SceneLike, Values
 from ...scene.model import Input, length_range_problem, range_problem
 from ...system import symbol
@@ -86,10 +87,11 @@ def _text(expr: sympy.Expr | None) -> str | None:
 
 
 def problem_for(derived: Derivation, output: str, degrees: tuple[sympy.Expr, sympy.Expr] | None = None, *,
-                witnesses: Groups | None = None) -> Problem:
+                witnesses: Groups | None = None, deadline: Deadline | None = None) -> Problem:
     """The extremum problem of ``output`` (a scalar or an angle) in a derivation of it; a
     direction's reference is chosen for its motion over ``degrees`` (lo, hi), by default the
-    input's range. ``witnesses``: the derivation's (its ``Prepared``'s), drawn again if not given."""
+    input's range. ``witnesses``: the derivation's (its ``Prepared``'s), drawn again if not given;
+    its eliminations keep to ``deadline``, if any."""
     compiled = derived.compiled
     if len(compiled.system.inputs) != 1:
         raise UsageError("scene", compiled.scene.name, "an extremum needs exactly one input")
@@ -99,7 +101,8 @@ def problem_for(derived: Derivation, output: str, degrees: tuple[sympy.Expr, sym
     angle = compiled.angles.get(output_name)
     if angle is not None and angle.direction:
         lo, hi = degrees if degrees is not None else compiled.scene.inputs[name].span
-        return direction_problem(derived, angle, line, parameters, lo, hi, output, witnesses=witnesses)
+        return direction_problem(derived, angle, line, parameters, lo, hi, output, witnesses=witnesses,
+                                 deadline=deadline)
     if len(unknowns) != 1:
         raise UsageError("output", output, "name a scalar output (a distance, a coordinate or an angle), not a point")
     chosen = next(b for b in derived.branches if b.selected)
@@ -127,43 +130,52 @@ def _span(spec: Input, angle_range: tuple[float | str, float | str] | None) -> t
 
 def extremum(scene: SceneLike | Prepared, output: str, angle_range: tuple[float | str, float | str] | None = None,
              params: Sequence[str] = (), largest: bool = False, method: str = "resultant", backend: str = "flint",
-             set: Values | None = None) -> Extremum:  # noqa: A002 - the public API's name, as in derive
+             set: Values | None = None,  # noqa: A002 - the public API's name, as in derive
+             budget: Budget | Deadline | None = None) -> Extremum:
     """Critical points, minimum and maximum of ``output`` over the scene's one input.
 
     ``angle_range`` is in the input's unit (default: its declared range). With ``params``
     symbolic, ``closed_form`` gives the minimum (the maximum with ``largest``) and its
     input in those parameters, with where that holds. ``set`` gives dimensions exact values.
-    ``scene`` may be a ``Prepared`` one (``prepare``) for ``output`` alone.
+    ``scene`` may be a ``Prepared`` one (``prepare``) for ``output`` alone. A ``Budget`` (or the
+    ``Deadline`` of one running) bounds the time and the eliminants' terms.
     """
+    deadline = started(budget)
     given(scene, params=params, set=set)
-    prepared = scene if isinstance(scene, Prepared) else prepare(scene, outputs=[output], params=params, set=set)
+    prepared = scene if isinstance(scene, Prepared) else prepare(scene, outputs=[output], params=params, set=set,
+                                                                 deadline=deadline)
     require_outputs(prepared, "output", [output])
-    derived = derive(prepared, method=method, backend=backend, samples=0)
-    return extremum_of(derived, output, angle_range, largest, backend, witnesses=prepared.witnesses)
+    derived = derive(prepared, method=method, backend=backend, samples=0, budget=deadline)
+    return extremum_of(derived, output, angle_range, largest, backend, witnesses=prepared.witnesses,
+                       deadline=deadline)
 
 
 def extremum_of(derived: Derivation, output: str, angle_range: tuple[float | str, float | str] | None = None,
-                largest: bool = False, backend: str = "flint", *, witnesses: Groups | None = None) -> Extremum:
+                largest: bool = False, backend: str = "flint", *, witnesses: Groups | None = None,
+                deadline: Deadline | None = None) -> Extremum:
     """``extremum`` of an output of an existing derivation (with that output alone).
 
     An angle output's values are in degrees (see ``angles``): its extrema are the via's,
-    mapped, and the least and greatest exchanged where the angle falls as its via grows.
+    mapped, and the least and greatest exchanged where the angle falls as its via grows. Its
+    eliminations keep to ``deadline``, if any.
     """
     inputs = derived.compiled.system.inputs
     if len(inputs) != 1:
         raise UsageError("scene", derived.compiled.scene.name, "an extremum needs exactly one input")
     (name,) = inputs
     lo, hi = _span(derived.compiled.scene.inputs[name], angle_range)
-    problem = problem_for(derived, output, (lo, hi), witnesses=witnesses)
+    problem = problem_for(derived, output, (lo, hi), witnesses=witnesses, deadline=deadline)
     scale = problem.scale
     flip = scale is not None and scale.decreasing
     defaults = {p: sympy.Rational(str(derived.compiled.parameter_values[p.name])) for p in problem.parameters}
-    stationary = stationary_factors(problem, backend)
+    stationary = stationary_factors(problem, backend, deadline=deadline)
     points = points_at(problem, stationary, defaults, lo, hi)
-    closed = closed_form(problem, stationary, defaults, lo, hi, largest != flip) if problem.parameters else None
+    closed = closed_form(problem, stationary, defaults, lo, hi, largest != flip, deadline=deadline) \
+        if problem.parameters else None
     exact = None
     if scale is not None:
-        exact = {key: _exact(problem, stationary, defaults, extreme(points, largest=(key == "maximum") != flip))
+        exact = {key: _exact(problem, stationary, defaults, extreme(points, largest=(key == "maximum") != flip),
+                             deadline)
                  for key in ("minimum", "maximum")}
         points = [in_degrees(p, scale) for p in points]
         closed = closed if closed is None else closed_in_degrees(closed, scale)
@@ -173,14 +185,15 @@ def extremum_of(derived: Derivation, output: str, angle_range: tuple[float | str
 
 
 def _exact(problem: Problem, stationary: Sequence[sympy.Expr], defaults: Mapping[sympy.Symbol, sympy.Expr],
-           best: CriticalPoint) -> Exact:
+           best: CriticalPoint, deadline: Deadline | None) -> Exact:
     """``(degrees, via)`` of an angle's extremum ``best`` at the dimensions ``defaults``, as exact
     expressions (radicals); ``(None, None)`` where the via's root has none of degree <= 4."""
     assert problem.scale is not None, "an angle output's"
     fixed = problem.at(defaults)
     factors = [sympy.expand(f.xreplace(defaults)) for f in stationary]
     with mpmath.workdps(DIGITS):
-        found = describe(fixed, factors, value_factors(fixed), {}, best, meeting_factors(fixed))
+        found = describe(fixed, factors, value_factors(fixed, deadline=deadline), {}, best,
+                         meeting_factors(fixed, deadline=deadline))
         if found.value is None or not _equal(found.value, best.value):
             return None, None
         return problem.scale.expr(found.value), found.value

@@ -33,6 +33,7 @@ import sympy
 from ...derivation.witnesses import Groups, witnesses as drawn
 from ...derivation.tasks import equations_for
 from ...eliminate import Witness, eliminate
+from ...runtime.budget import Deadline
 from ...errors import ComputationError, UsageError
 from ...evaluate import NUMPY, evaluate
 from ...system import input_values, symbol
@@ -126,10 +127,11 @@ def _fresh(name: str, taken: set[str]) -> sympy.Symbol:
 
 def direction_problem(derived: Derivation, angle: AngleOutput, line: Parametrisation,
                       parameters: tuple[sympy.Symbol, ...], lo: float, hi: float, output: str, *,
-                      witnesses: Groups | None = None) -> Problem:
+                      witnesses: Groups | None = None, deadline: Deadline | None = None) -> Problem:
     """The ``Problem`` of a direction output: ``w = tan((phi - k*90)/2)`` on the chosen branch,
     and its eliminant in ``w``, the input's variables and the symbolic dimensions (the factors
-    kept by the derivation's ``witnesses``, drawn again if not given)."""
+    kept by the derivation's ``witnesses``, drawn again if not given; the elimination keeping to
+    ``deadline``, if any)."""
     compiled = derived.compiled
     system = compiled.system
     chosen = next(b for b in derived.branches if b.selected)
@@ -141,12 +143,13 @@ def direction_problem(derived: Derivation, angle: AngleOutput, line: Parametrisa
     turned_cos, turned_sin = _rotated(cos_form, sin_form, -k)
     closed = turned_sin / (1 + turned_cos)
     groups = witnesses if witnesses is not None else drawn(derived.compiled, derived.branches)
-    eliminant = _eliminant(derived, angle, k, w, groups)
+    eliminant = _eliminant(derived, angle, k, w, groups, deadline)
     return Problem(eliminant, closed, w, line, parameters, AngleScale(w.name, k),
                    tuple(chosen.discriminants.values()))
 
 
-def _eliminant(derived: Derivation, angle: AngleOutput, k: int, w: sympy.Symbol, groups: Groups) -> sympy.Expr:
+def _eliminant(derived: Derivation, angle: AngleOutput, k: int, w: sympy.Symbol, groups: Groups,
+               deadline: Deadline | None) -> sympy.Expr:
     """``w``'s polynomial: the equations the direction's cosine and sine need, with those two
     written in ``w`` (times ``1 + w**2``), every other unknown eliminated; the factors the
     branches' witnesses vanish on kept."""
@@ -166,7 +169,7 @@ def _eliminant(derived: Derivation, angle: AngleOutput, k: int, w: sympy.Symbol,
     keep_always = tuple(system.input_variables) + tuple(system.parameters)
     try:
         result = eliminate(written, others, (w.name,) + keep_always, method="linear", backend="flint",
-                           witnesses=_witnesses(groups, angle, k, w), parameters=keep_always)
+                           witnesses=_witnesses(groups, angle, k, w), parameters=keep_always, budget=deadline)
     except ComputationError as err:
         raise ComputationError(f"no polynomial for the direction {angle.name}: {err}") from None
     return result.polynomial

@@ -30,6 +30,7 @@ import sympy
 
 from ...eliminate import eliminate
 from ...errors import ComputationError
+from ...runtime.budget import Deadline
 from ...system.convert import univariate
 from ...system.roots import real_roots
 from .critical import DIGITS, ROOT_BITS, CriticalPoint, Number, Problem, extreme, meeting_factors, points_at
@@ -82,11 +83,12 @@ def _text(expr: sympy.Expr | None) -> str | None:
     return None if expr is None else str(expr)
 
 
-def value_factors(problem: Problem, backend: str = "flint") -> list[sympy.Expr]:
-    """Factors, in ``u`` and the parameters, of the resultant in ``t`` of ``F`` and ``dF/dtheta``."""
+def value_factors(problem: Problem, backend: str = "flint", *, deadline: Deadline | None = None) -> list[sympy.Expr]:
+    """Factors, in ``u`` and the parameters, of the resultant in ``t`` of ``F`` and ``dF/dtheta``
+    (the elimination keeping to ``deadline``, if any)."""
     names = [p.name for p in problem.parameters]
     factors = eliminate(problem.half_angle(), [problem.t.name], [problem.u.name] + names,
-                        method="resultant", backend=backend).factors
+                        method="resultant", backend=backend, budget=deadline).factors
     return [f for f in factors if f.has(problem.u)]
 
 
@@ -234,10 +236,11 @@ def _sign_definite(poly: sympy.Expr, parameters: Sequence[sympy.Symbol]) -> bool
 
 
 def closed_form(problem: Problem, stationary: list[sympy.Expr], defaults: Values, lo: Number, hi: Number,
-                largest: bool = False) -> ClosedForm:
-    """The extremum of ``problem`` (parameters symbolic) over ``[lo, hi]`` degrees as a closed form."""
-    values_factors = value_factors(problem)
-    meeting = meeting_factors(problem)
+                largest: bool = False, *, deadline: Deadline | None = None) -> ClosedForm:
+    """The extremum of ``problem`` (parameters symbolic) over ``[lo, hi]`` degrees as a closed form
+    (its eliminations keeping to ``deadline``, if any)."""
+    values_factors = value_factors(problem, deadline=deadline)
+    meeting = meeting_factors(problem, deadline=deadline)
 
     def extremum_at(values: Values) -> Found | None:
         """The certified extremum at ``values`` and its description; ``None`` where the output

@@ -27,6 +27,7 @@ from ...system.convert import univariate
 from ...system.roots import real_roots
 
 if TYPE_CHECKING:
+    from ...runtime.budget import Deadline
     from .angles import AngleScale
 
 __all__ = ["Problem", "CriticalPoint", "critical_points", "points_at", "extreme",
@@ -108,29 +109,31 @@ class CriticalPoint:
         return point
 
 
-def stationary_factors(problem: Problem, backend: str = "flint") -> list[sympy.Expr]:
-    """Factors, in ``t`` and the parameters, of the resultant in ``u`` of ``F`` and ``dF/dtheta``."""
+def stationary_factors(problem: Problem, backend: str = "flint", *, deadline: Deadline | None = None
+                       ) -> list[sympy.Expr]:
+    """Factors, in ``t`` and the parameters, of the resultant in ``u`` of ``F`` and ``dF/dtheta``
+    (the elimination keeping to ``deadline``, if any)."""
     names = [p.name for p in problem.parameters]
     try:
         return eliminate(problem.half_angle(), [problem.u.name], [problem.t.name] + names,
-                         method="resultant", backend=backend).factors
+                         method="resultant", backend=backend, budget=deadline).factors
     except ComputationError as err:
         raise ComputationError(f"no stationary condition for {problem.u}: {err}") from None
 
 
-def meeting_factors(problem: Problem) -> list[sympy.Expr]:
+def meeting_factors(problem: Problem, *, deadline: Deadline | None = None) -> list[sympy.Expr]:
     """Factors, in ``t`` and the parameters, of ``F``'s discriminant in ``u``: where two values
     of the output meet (dead centres among them); none where ``u`` is polynomial in the input.
     With them, the factors of the branch's own discriminants (``Problem.valid``): where it
     stops assembling even though the output's values do not meet (both modes give a
-    transmission angle the same cosine)."""
+    transmission angle the same cosine). The elimination keeps to ``deadline``, if any."""
     eliminant = problem.numerator_in_t(problem.eliminant)
     found: list[sympy.Expr] = []
     if sympy.degree(eliminant, problem.u) >= 2:
         names = [p.name for p in problem.parameters]
         try:
             found = eliminate([eliminant, sympy.diff(eliminant, problem.u)], [problem.u.name],
-                              [problem.t.name] + names, method="resultant").factors
+                              [problem.t.name] + names, method="resultant", budget=deadline).factors
         except ComputationError:
             pass  # the discriminant is a constant: the values never meet
     for discriminant in problem.valid:

@@ -50,6 +50,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from ...errors import UsageError
+from ...runtime.budget import Budget, Deadline, started
 from ...scene import load_scene
 from ...scene.model import Scene
 from ...scene.settings import with_values
@@ -61,9 +62,12 @@ from .results import Limit, Limits, TimeRatio
 __all__ = ["limits", "stationary_condition", "Limit", "Limits", "TimeRatio"]
 
 
-def limits(scene: Scene | str, set: Mapping[str, object] | None = None) -> Limits:  # noqa: A002 - the public name (the command line's --set)
+def limits(scene: Scene | str, set: Mapping[str, object] | None = None, *,  # noqa: A002 - the public name (the command line's --set)
+           budget: Budget | Deadline | None = None) -> Limits:
     """Every limit position of every dyad and slider with a fixed path, certified, and the time
-    ratio of the last of them (the output) on the scene's branch."""
+    ratio of the last of them (the output) on the scene's branch. A ``Budget`` (or the
+    ``Deadline`` of one running) bounds the time and the eliminants' terms."""
+    deadline = started(budget)
     scene = with_values(scene if not isinstance(scene, str) else load_scene(scene), dict(set) if set else None)
     implicit = [n for n, p in scene.points.items() if p.labels]
     if not implicit:
@@ -75,7 +79,7 @@ def limits(scene: Scene | str, set: Mapping[str, object] | None = None) -> Limit
         raise UsageError("scene", scene.name, f"limit positions and the time ratio are for a turning input; "
                                               f"{name} is a length (its toggles end the strokes)")
     lo, hi = scene.inputs[name].span
-    points = [point_limits(scene, point, lo, hi) for point in implicit]
+    points = [point_limits(scene, point, lo, hi, deadline) for point in implicit]
     found = sorted((g for p in points for g in p.limits), key=lambda g: (g.input_deg, g.point, g.branch))
     dropped = [d for p in points for d in p.dropped]
     skipped = [{"point": p.point, "why": p.skipped} for p in points if p.skipped]
@@ -83,5 +87,5 @@ def limits(scene: Scene | str, set: Mapping[str, object] | None = None) -> Limit
     if not moving:
         return Limits(scene.name, name, (lo, hi), found, None, "no dyad or slider moves on a fixed path", dropped,
                       skipped)
-    ratio, reason = time_ratio(moving[-1], lo, hi)
+    ratio, reason = time_ratio(moving[-1], lo, hi, deadline)
     return Limits(scene.name, name, (lo, hi), found, ratio, reason, dropped, skipped)

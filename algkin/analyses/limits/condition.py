@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import sympy
 
 from ...eliminate import eliminate
+from ...runtime.budget import Deadline
 from ...scene import Compiled
 from ...system import symbol
 
@@ -98,10 +99,12 @@ def stationary_condition(compiled: Compiled, point: str) -> Stationary | str:
     return Stationary(point, (x, y), curve, coupling, condition, tuple(earlier), tuple(unknowns))
 
 
-def eliminant(stationary: Stationary, c: sympy.Symbol, s: sympy.Symbol) -> tuple[sympy.Expr, list[sympy.Expr]]:
-    """The condition with every unknown eliminated, and the factors the elimination dropped (in ``c, s``)."""
+def eliminant(stationary: Stationary, c: sympy.Symbol, s: sympy.Symbol, deadline: Deadline | None = None
+              ) -> tuple[sympy.Expr, list[sympy.Expr]]:
+    """The condition with every unknown eliminated (keeping to ``deadline``, if any), and the factors
+    the elimination dropped (in ``c, s``)."""
     equations = [stationary.condition, stationary.coupling, stationary.path.equation, *stationary.earlier]
     names = [str(u) for u in (*stationary.unknowns, *stationary.earlier_unknowns)]
-    result = eliminate(equations, names, [str(c), str(s)])
+    result = eliminate(equations, names, [str(c), str(s)], budget=deadline)
     dropped = [f for f in result.dropped if f.free_symbols <= {c, s} and f.free_symbols]
     return result.polynomial, dropped

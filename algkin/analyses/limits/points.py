@@ -11,6 +11,7 @@ import sympy
 from ...branches import Branch
 from ...derivation.prepared import prepare
 from ...evaluate import ARB, evaluate
+from ...runtime.budget import Deadline
 from ...scene import Compiled
 from ...scene.model import Scene
 from ..toggles import single_input
@@ -37,16 +38,17 @@ class PointLimits:
     skipped: str | None  # why the point has no limit positions to look for
 
 
-def point_limits(scene: Scene, point: str, lo: float, hi: float) -> PointLimits:
-    """The limits of one point (every branch), the roots dropped, or why the point has none."""
-    prepared = prepare(scene, outputs=[point])
+def point_limits(scene: Scene, point: str, lo: float, hi: float, deadline: Deadline | None = None) -> PointLimits:
+    """The limits of one point (every branch), the roots dropped, or why the point has none (its
+    elimination keeping to ``deadline``, if any)."""
+    prepared = prepare(scene, outputs=[point], deadline=deadline)
     compiled = prepared.compiled
     _, line = single_input(compiled, "limit positions")
     c, s = line.variables
     stationary = stationary_condition(compiled, point)
     if isinstance(stationary, str):
         return PointLimits(point, compiled, None, [], [], [], stationary)
-    condition, dropped_factors = eliminant(stationary, c, s)
+    condition, dropped_factors = eliminant(stationary, c, s, deadline)
     t = sympy.Symbol("t")
     with flint.ctx.workprec(ROOT_BITS):
         roots = angle_roots([condition], c, s, t)

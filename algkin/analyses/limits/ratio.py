@@ -14,6 +14,7 @@ import flint
 import sympy
 
 from ...evaluate import ARB, evaluate
+from ...runtime.budget import Deadline
 from ...scene import Compiled
 from ..toggles import single_input, toggle_conditions
 from .certificate import CHECK_BITS, angle_values
@@ -27,14 +28,15 @@ from .results import Json, Limit, TimeRatio
 __all__ = ["time_ratio", "turns_fully", "stroke"]
 
 
-def turns_fully(compiled: Compiled, lo: float, hi: float) -> str | None:
-    """None when the input turns fully with every point the output needs assembled; else why not."""
+def turns_fully(compiled: Compiled, lo: float, hi: float, deadline: Deadline | None = None) -> str | None:
+    """None when the input turns fully with every point the output needs assembled; else why not
+    (the toggle conditions' eliminations keeping to ``deadline``, if any)."""
     if hi - lo < 360:
         return f"the input's range [{lo:g}, {hi:g}] deg is less than a full turn"
     _, line = single_input(compiled, "limit positions")
     with flint.ctx.workprec(ROOT_BITS):
         for spec in compiled.implicit:
-            for name, condition in toggle_conditions(compiled, spec).items():
+            for name, condition in toggle_conditions(compiled, spec, deadline=deadline).items():
                 balls = line.roots(condition)
                 if balls:
                     angles = ", ".join(f"{float(b.mid()):.6g}" for b in balls)
@@ -42,11 +44,13 @@ def turns_fully(compiled: Compiled, lo: float, hi: float) -> str | None:
     return None
 
 
-def time_ratio(found: PointLimits, lo: float, hi: float) -> tuple[TimeRatio | None, str | None]:
-    """The time ratio of ``found``'s point on the scene's branch, or why it has none."""
+def time_ratio(found: PointLimits, lo: float, hi: float, deadline: Deadline | None = None
+               ) -> tuple[TimeRatio | None, str | None]:
+    """The time ratio of ``found``'s point on the scene's branch, or why it has none (its
+    eliminations keeping to ``deadline``, if any)."""
     point, compiled, stationary = found.point, found.compiled, found.stationary
     assert stationary is not None
-    why = turns_fully(compiled, lo, hi)
+    why = turns_fully(compiled, lo, hi, deadline)
     if why is not None:
         return None, why
     branch = next(b for b in found.branches if b.selected)

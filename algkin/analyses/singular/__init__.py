@@ -36,7 +36,7 @@ import flint
 import sympy
 
 from ...errors import ComputationError, UsageError
-from ...runtime.budget import current
+from ...runtime.budget import Budget, Deadline, started
 from ...system.convert import flint_context, to_flint, to_flint_integer
 from .exact import ENCLOSURE_BITS, Coordinate, coordinates, polynomial_text
 from .local import Local, describe, multiplicity, shift
@@ -120,15 +120,16 @@ class Singularities:
 
 
 def singular(scene: SceneLike, point: str, *, set: Values | None = None,  # noqa: A002 - the public name (--set)
-             samples: int = 40,
-             seed: int = 0) -> Singularities:
+             samples: int = 40, seed: int = 0, budget: Budget | Deadline | None = None) -> Singularities:
     """The singular points of the curve ``point`` traces in ``scene`` (``algkin.curve``, its
     verification on ``samples`` inputs included), every dimension at its default or ``set``;
-    ``scene`` may be a ``Prepared`` one (``prepare``) with ``point`` among its outputs."""
+    ``scene`` may be a ``Prepared`` one (``prepare``) with ``point`` among its outputs. A
+    ``Budget`` (or the ``Deadline`` of one running) bounds the curve's time and eliminants' terms."""
     from ...derivation.pipeline import curve
 
-    traced = curve(scene, point, samples=samples, seed=seed, set=set)
-    current().note(f"finding the singular points of the curve of {point} in {traced.compiled.scene.name}")
+    deadline = started(budget)
+    traced = curve(scene, point, samples=samples, seed=seed, set=set, budget=deadline)
+    deadline.note(f"finding the singular points of the curve of {point} in {traced.compiled.scene.name}")
     found = singular_points(traced)
     found.source = {"scene": traced.compiled.scene.name, "point": point,
                     "curve_verification": traced.verification.to_json()}

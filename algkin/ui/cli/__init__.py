@@ -104,13 +104,14 @@ def _command(args: argparse.Namespace) -> int:
 
 def _run(args: argparse.Namespace) -> Outcome:
     """The command's output and exit code, all of its work (imports, loading, compiling, the algebra,
-    formatting) done within its budget: in a child process killed at the deadline, if it has one."""
+    formatting) done within its budget: in a child process killed at the deadline, if it has one.
+    The command finds the deadline it keeps to (and passes on) as ``args.deadline``."""
     from ...runtime.budget import Budget
     from .commands import COMMANDS
 
-    budget = Budget(seconds=getattr(args, "max_seconds", None), terms=getattr(args, "max_terms", None))
-    budget.note(f"starting {args.command}")  # until the command says more (its imports come first)
-    return budget.run(functools.partial(COMMANDS[args.command], args))
+    args.deadline = Budget(seconds=getattr(args, "max_seconds", None), terms=getattr(args, "max_terms", None)).start()
+    args.deadline.note(f"starting {args.command}")  # until the command says more (its imports come first)
+    return args.deadline.run(functools.partial(COMMANDS[args.command], args))
 
 
 def _save(files: Sequence[File] = ()) -> None:

@@ -1,5 +1,6 @@
 """One function per command: its whole output (text or JSON) and exit code, and the files it
-makes, computed inside the command's budget (``algkin.ui.cli.main`` runs it and writes)."""
+makes, computed inside the command's budget (``algkin.ui.cli.main`` runs it and writes): the
+command passes its deadline, ``args.deadline``, to the work that keeps to it."""
 
 from __future__ import annotations
 
@@ -105,7 +106,7 @@ def _cmd_extremum(args: argparse.Namespace) -> Outcome:
 
     _check_latex(args)
     angles = _range(args.range) if args.range else None
-    found = extremum(_scene_of(args), args.of, angles, params=args.param)
+    found = extremum(_scene_of(args), args.of, angles, params=args.param, budget=args.deadline)
     if args.latex:
         return latex_lines(extremum_forms(found)), 0
     return render(args, found.to_json(), report_extremum), 0
@@ -116,16 +117,16 @@ def _cmd_toggles(args: argparse.Namespace) -> Outcome:
     from ...analyses.toggles import toggles
 
     scene = _scene_of(args)
-    document = toggles(scene).to_json()
+    document = toggles(scene, budget=args.deadline).to_json()
     if document["unit"] == "deg":  # a turning input's: the output's limit positions and time ratio
-        document.update(limits(scene).to_json())
+        document.update(limits(scene, budget=args.deadline).to_json())
     return render(args, document, report_toggles), 0
 
 
 def _cmd_singular(args: argparse.Namespace) -> Outcome:
     from ...analyses.singular import singular
 
-    found = singular(_scene_of(args, ()), args.point, samples=args.samples, seed=args.seed)
+    found = singular(_scene_of(args, ()), args.point, samples=args.samples, seed=args.seed, budget=args.deadline)
     document = found.to_json()
     return render(args, document, report_singular), _verdict_of(document["curve_verification"])
 
@@ -141,7 +142,7 @@ def _cmd_accuracy(args: argparse.Namespace) -> Outcome:
     if args.samples < 10:
         raise UsageError("--samples", args.samples, "needs at least 10 samples per case")
     out = _figure_path("--plot", args.plot) if args.plot is not None else None
-    result = accuracy(_scene_of(args), args.samples, args.seed, of=args.of)
+    result = accuracy(_scene_of(args), args.samples, args.seed, of=args.of, budget=args.deadline)
     text = render(args, result.to_json(), report_accuracy)
     if out is None:
         return text, 0
@@ -215,14 +216,13 @@ def _cmd_list(args: argparse.Namespace) -> Outcome:
 
 
 def _cmd_show(args: argparse.Namespace) -> Outcome:
-    from ...runtime.budget import current
     from ...scene import compile_scene
     from ...scene.load import as_scene
     from ...system import inputs_json
 
-    current().note(f"loading {args.scene}")
+    args.deadline.note(f"loading {args.scene}")
     scene = as_scene(_scene_of(args))
-    current().note(f"compiling {scene.name}")
+    args.deadline.note(f"compiling {scene.name}")
     compiled = compile_scene(scene, args.outputs, args.param)
     document = {
         "scene": scene.name,
@@ -296,8 +296,10 @@ def _finish(args: argparse.Namespace, out: pathlib.Path | None, document: Docume
 
 
 def _engine(args: argparse.Namespace) -> dict[str, Any]:
-    """The options derive, curve and verify share, by name: method, backend, symbolic dimensions, sampling."""
-    return dict(method=_method(args), backend=args.backend, params=args.param, samples=args.samples, seed=args.seed)
+    """The options derive, curve and verify share, by name: method, backend, symbolic dimensions, sampling,
+    and the command's deadline."""
+    return dict(method=_method(args), backend=args.backend, params=args.param, samples=args.samples, seed=args.seed,
+                budget=args.deadline)
 
 
 def _verdict(verification: Verification | RatesCheck) -> int:
