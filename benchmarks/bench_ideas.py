@@ -46,7 +46,6 @@ import algkin.eliminate.select as select
 from algkin.bench.problems import build
 from algkin.eliminate.linear import linear_elimination
 from algkin.derivation.prepared import prepare
-from algkin.scene import load_scene
 from algkin.derivation.tasks import EliminationTask, eliminant_tasks
 
 PROBLEMS = ("two-circles", "lambda-coupler", "slider-crank", "fourbar-symbolic", "watt-i", "stephenson-iii")
