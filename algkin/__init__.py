@@ -6,6 +6,12 @@
 ['left', 'right']
 >>> result.verification.passed
 True
+
+A scene asked several questions is prepared once (compiled, its branches and witnesses found):
+
+>>> prepared = algkin.prepare("chebyshev-lambda", outputs=["P"])
+>>> algkin.curve(prepared, "P", samples=0).degree, algkin.derive(prepared, samples=0).branches == prepared.branches
+(6, True)
 """
 
 from __future__ import annotations
@@ -20,6 +26,8 @@ __all__ = [
     "load_quantities",
     "load_scene",
     "compile_scene",
+    "prepare",
+    "Prepared",
     "derive",
     "curve",
     "extremum",
@@ -54,7 +62,9 @@ if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ 
     from .analyses.singular import Singularities, singular
     from .analyses.solve import Solution, solve
     from .branches import Branch
-    from .derivation.pipeline import CurveResult, Derivation, curve, derive
+    from .derivation.pipeline import curve, derive
+    from .derivation.prepared import Prepared, prepare
+    from .derivation.results import CurveResult, Derivation
     from .runtime.budget import Budget
     from .scene import SceneBuilder, catalog_names, compile_scene, load_scene
     from .ui.widgets import interact
@@ -67,7 +77,9 @@ if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ 
 # elimination and verification layers; interact needs ipywidgets only when called.
 _LAZY = {
     **dict.fromkeys(("SceneBuilder", "catalog_names", "compile_scene", "load_scene"), ".scene"),
-    **dict.fromkeys(("derive", "curve", "Derivation", "CurveResult"), ".derivation.pipeline"),
+    **dict.fromkeys(("derive", "curve"), ".derivation.pipeline"),
+    **dict.fromkeys(("prepare", "Prepared"), ".derivation.prepared"),  # what derive, curve and the analyses share
+    **dict.fromkeys(("Derivation", "CurveResult"), ".derivation.results"),
     "Verification": ".verify",
     "Branch": ".branches",
     **dict.fromkeys(("extremum", "Extremum"), ".analyses.extremum"),

@@ -45,8 +45,7 @@ import algkin.eliminate.methods as methods
 import algkin.eliminate.select as select
 from algkin.bench.problems import build
 from algkin.eliminate.linear import linear_elimination
-from algkin.derivation.pipeline import compile_and_branch
-from algkin.scene import load_scene
+from algkin.derivation.prepared import prepare
 from algkin.derivation.tasks import EliminationTask, eliminant_tasks
 
 PROBLEMS = ("two-circles", "lambda-coupler", "slider-crank", "fourbar-symbolic", "watt-i", "stephenson-iii")
@@ -143,8 +142,9 @@ def with_and_without(task, without, rounds=ROUNDS):
 def derive_inputs_row(scene="stephenson-iii", unknown="P_x"):
     """``derive``'s task for ``unknown`` as algkin builds it, against its inputs kept out of
     the multipliers: one timed run each after a warm-up of algkin's, eliminants compared."""
-    compiled, _, groups, _ = compile_and_branch(load_scene(scene), [unknown.split("_")[0]], ())
-    task = eliminant_tasks(compiled, groups)[unknown]
+    prepared = prepare(scene, outputs=[unknown.split("_")[0]])
+    compiled = prepared.compiled
+    task = eliminant_tasks(compiled, prepared.witnesses)[unknown]
     dimensions = replace(task, parameters=tuple(compiled.system.parameters))
     task.run("linear", "flint")
     with_seconds, reference = cpu_time(lambda: task.run("linear", "flint"))

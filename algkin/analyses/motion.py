@@ -28,6 +28,7 @@ from numpy.typing import ArrayLike, NDArray
 from ..branches import closed_forms
 from ..errors import UsageError
 from ..evaluate import NUMPY, evaluate
+from ..derivation.prepared import Prepared, given
 from ..scene import Scene, compile_scene, load_scene
 from ..scene.compile import Compiled
 from ..scene.implicit.base import FloatArray
@@ -74,13 +75,31 @@ def symbolic_parameters(scene: Scene, wanted: Sequence[str] | None = None) -> tu
             kept.remove(err.value)
 
 
-class Motion:
-    """Closed forms of every point of ``scene`` on every branch, dimensions symbolic."""
+def _every_point(prepared: Prepared) -> Compiled:
+    """The prepared scene's compiled system, which must hold every point's coordinates."""
+    missing = [p for p in prepared.scene.points if p not in prepared.compiled.coordinates]
+    if missing:
+        raise UsageError("scene", prepared.scene.name, f"prepared without {', '.join(missing)}: a motion draws every "
+                         "point (prepare it with outputs=list(scene.points))")
+    return prepared.compiled
 
-    def __init__(self, scene: SceneLike, params: Sequence[str] | None = None) -> None:
-        self.scene = scene if isinstance(scene, Scene) else load_scene(scene)
-        self.params, self.compiled = symbolic_parameters(self.scene, params)
-        self.branches = closed_forms(self.compiled)
+
+class Motion:
+    """Closed forms of every point of ``scene`` on every branch, dimensions symbolic.
+
+    ``scene`` may be a ``Prepared`` one (``algkin.prepare``) with every point among its outputs:
+    its branches are taken as they are. Given a scene, the motion compiles it itself, with no
+    check that it assembles (a drawing shows where it does not)."""
+
+    def __init__(self, scene: SceneLike | Prepared, params: Sequence[str] | None = None) -> None:
+        if isinstance(scene, Prepared):
+            given(scene, params=params)
+            self.scene, self.compiled, self.branches = scene.scene, _every_point(scene), list(scene.branches)
+            self.params = self.compiled.system.parameters
+        else:
+            self.scene = scene if isinstance(scene, Scene) else load_scene(scene)
+            self.params, self.compiled = symbolic_parameters(self.scene, params)
+            self.branches = closed_forms(self.compiled)
         self.inputs = {n: self.scene.inputs[n] for n in self.compiled.system.inputs}
         if not self.inputs:  # a scene of dimensions alone (a length swept as a parameter): nothing to sweep
             raise UsageError("scene", self.scene.name, "has no input: nothing moves to draw (a length that "

@@ -37,6 +37,7 @@ from ..system import symbol
 if TYPE_CHECKING:
     from ..branches.certify import Interval
     from ..derivation.pipeline import Derivation
+    from ..derivation.prepared import Prepared
     from .extremum import Extremum
     from .extremum.critical import Problem
 
@@ -94,16 +95,23 @@ class Quantity:
         self.text = text
 
     @cached_property
+    def prepared(self) -> Prepared:
+        """The mechanism's scene prepared for this quantity (``algkin.prepare``): its derivation's and extremum's."""
+        from ..derivation.prepared import prepare
+
+        return prepare(self.mechanism.scene, outputs=[self.text], params=self.mechanism.params)
+
+    @cached_property
     def derivation(self) -> Derivation:
         from ..derivation.pipeline import derive
 
-        return derive(self.mechanism.scene, [self.text], params=self.mechanism.params, samples=0)
+        return derive(self.prepared, samples=0)
 
     @cached_property
     def _problem(self) -> Problem:
         from .extremum import problem_for
 
-        return problem_for(self.derivation, self.text)
+        return problem_for(self.derivation, self.text, witnesses=self.prepared.witnesses)
 
     @property
     def input(self) -> sympy.Symbol:
@@ -201,7 +209,7 @@ class Quantity:
         if key not in kernels:
             from ..branches import closed_forms
             from ..branches.stable import StableBranch, output_forms
-            from ..derivation.pipeline import certify_labels
+            from ..derivation.assembles import certify_labels
             from ..scene import compile_scene
 
             compiled = compile_scene(with_values(self.mechanism.scene, settings or None), [self.text])
@@ -224,7 +232,7 @@ class Quantity:
         """Critical points, minimum and maximum; closed forms in the symbolic dimensions."""
         from .extremum import extremum_of
 
-        return extremum_of(self.derivation, self.text, range, largest)
+        return extremum_of(self.derivation, self.text, range, largest, witnesses=self.prepared.witnesses)
 
     def __repr__(self) -> str:
         return f"Quantity({self.text!r} of {self.mechanism.scene.name})"

@@ -26,7 +26,8 @@ from typing import Any, TypedDict
 import flint
 import sympy
 
-from ..branches import Branch, closed_forms
+from ..branches import Branch
+from ..derivation.prepared import Prepared, given, prepared_from
 from ..branches.constructions import algebra_of
 from ..eliminate import eliminate
 from ..errors import UsageError
@@ -143,15 +144,20 @@ def toggles(scene: SceneLike, artefacts: bool = True,
 
     With ``artefacts`` the eliminants are also derived, to report which factors of their
     discriminants are not toggles. ``set`` gives dimensions exact values in place of their defaults.
+    ``scene`` may be a ``Prepared`` one (``prepare``) with every dyad and slider among its outputs.
     A ``Budget`` (or the ``Deadline`` of one running) bounds the time and the eliminants' terms.
     """
     deadline = started(budget)
-    scene = with_values(as_scene(scene), set)  # a name, a path (str or pathlib) or a Scene
+    prepared = given(scene, set=set)
+    scene = prepared.scene if prepared else with_values(as_scene(scene), set)  # a name, a path (str or pathlib) or a Scene
     refuse_solved_together(scene)
     implicit = [n for n, p in scene.points.items() if p.labels]  # the points with assembly modes
     if not implicit:
         raise UsageError("scene", scene.name, "has no dyad or slider, so no assembly modes to meet")
-    compiled = compile_scene(scene, implicit)
+    if prepared and {d.point for d in prepared.compiled.implicit} != frozenset(implicit):
+        raise UsageError("scene", scene.name, f"prepared for {', '.join(prepared.compiled.outputs)}: toggles need "
+                         f"every dyad and slider (prepare it with outputs={implicit})")
+    compiled = prepared.compiled if prepared else compile_scene(scene, implicit)
     name, line = single_input(compiled)
     lo, hi = scene.inputs[name].span
     found: list[Toggle] = []
@@ -161,21 +167,22 @@ def toggles(scene: SceneLike, artefacts: bool = True,
                 for ball in line.roots(condition):
                     found += [Toggle(float(ball.mid()) + turn, ball + turn, spec.point, kind, line.is_angle)
                               for turn in line.turns if lo <= float(ball.mid()) + turn <= hi]
-        dropped = _artefacts(compiled, line, deadline) if artefacts else []
+        # the eliminants' branches and witnesses: the scene's own, prepared once
+        dropped = _artefacts(prepared or prepared_from(compiled), line, deadline) if artefacts else []
     found.sort(key=lambda g: g.input_deg)
     unit = "deg" if line.is_angle else "length"
     return Toggles(scene.name, name, (lo, hi), found, grashof(compiled), dropped, unit)
 
 
-def _artefacts(compiled: Compiled, line: Parametrisation, deadline: Deadline) -> list[Artefact]:
+def _artefacts(prepared: Prepared, line: Parametrisation, deadline: Deadline) -> list[Artefact]:
     """Factors of the eliminants' discriminants that are not toggles, with the certificate."""
     from ..derivation.pipeline import derive
 
-    derived = derive(compiled.scene, [d.point for d in compiled.implicit], samples=0, budget=deadline)
+    compiled, branches = prepared.compiled, list(prepared.branches)
+    derived = derive(prepared, samples=0, certify=False, budget=deadline)  # its eliminants alone
     geometric = [line.numerator(cond) for d in compiled.implicit
                  for cond in toggle_conditions(compiled, d, deadline=deadline).values()]
     t = line.t
-    branches = closed_forms(compiled)
     dropped: list[Artefact] = []
     for unknown, elimination in derived.eliminations.items():
         u = symbol(unknown)

@@ -50,7 +50,8 @@ from numpy.typing import NDArray
 
 from ..branches import Branch, closed_forms
 from ..branches.stable import StableBranch, output_forms
-from ..derivation.pipeline import certify_labels, derive
+from ..derivation.assembles import certify_labels
+from ..derivation.pipeline import derive
 from ..errors import UsageError
 from ..evaluate.fused import numba_available
 from ..runtime import progress, validation
@@ -308,7 +309,7 @@ def sample_cases(subject: Subject, samples: int, rng: np.random.Generator) -> di
     """The cases an accuracy run measures ``subject`` on (see the module's text), drawn with the
     numpy generator ``rng``: name (``uniform``, ``toggle-1e-06``..., ``near-fold``) -> sorted float64
     input angles (radians), about ``samples`` of them per case."""
-    intervals = [i for i in certify_labels(subject.compiled, [subject.branch])[0] if i["status"] == "certified"]
+    intervals = [i for i in certify_labels(subject.compiled, [subject.branch])[0] or [] if i["status"] == "certified"]
     if not intervals:
         raise UsageError("scene", subject.compiled.scene.name, "no input interval where the branch is certified")
     widths = np.array([i["to_deg"] - i["from_deg"] for i in intervals])

@@ -30,11 +30,10 @@ class Problem:
 
 
 def _curve(scene: str, point: str, params: Sequence[str] = ()) -> EliminationTask:
-    from ..derivation.pipeline import compile_and_branch
-    from ..scene import load_scene
+    from ..derivation.prepared import prepare
 
-    compiled, _, groups, _ = compile_and_branch(load_scene(scene), [point], params)
-    return curve_task(compiled, groups, point)
+    prepared = prepare(scene, outputs=[point], params=params)
+    return curve_task(prepared.compiled, prepared.witnesses, point)
 
 
 def _curve_run(scene: str, point: str, params: Sequence[str] = ()) -> Callable[[], object]:
@@ -44,11 +43,10 @@ def _curve_run(scene: str, point: str, params: Sequence[str] = ()) -> Callable[[
 
 
 def _two_circles() -> EliminationTask:
-    from ..derivation.pipeline import compile_and_branch
-    from ..scene import load_scene
+    from ..derivation.prepared import prepare
 
-    compiled, _, groups, _ = compile_and_branch(load_scene("chebyshev-lambda"), ["B"], ())
-    return eliminant_tasks(compiled, groups)["B_y"]
+    prepared = prepare("chebyshev-lambda", outputs=["B"])
+    return eliminant_tasks(prepared.compiled, prepared.witnesses)["B_y"]
 
 
 def _two_circles_run() -> Callable[[], object]:

@@ -27,34 +27,32 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from fractions import Fraction
-from typing import Any
 
 import attrs
+import flint
 import numpy as np
 import sympy
 
 from ..branches import Branch, certify_label
-from ..branches.certify import interval_keys
+from ..branches.certify import Interval, interval_keys
 from ..errors import SceneError
 from ..evaluate import ARB, NUMPY
 from ..evaluate.program import compile_program
-from ..runtime.cache import BoundedCache
 from ..scene import Compiled
 from ..system import input_values, symbol
 from ..verify.check import real_floats
 
-__all__ = ["where_assembled", "certify_labels", "STRUCTURE", "GRID", "NARROW", "STILL"]
+__all__ = ["where_assembled", "certify_labels", "Pieces", "STRUCTURE", "GRID", "NARROW", "STILL"]
 
 GRID = 721  # inputs of the float grid over the range, as check_assembly's
 NARROW = 1 / 4  # a branch real on less of the grid: its labels are certified, the samples drawn where it may be
 STILL = 1e-4  # undecided stretches together narrower than this part of the range, nothing certified: no motion
-KEPT = 32  # compiled scenes whose answer is kept
-# where_assembled's answers (or the scene's error) by the compiled scene, its file and its branches
-FOUND: BoundedCache[tuple[Any, SceneError | None]] = BoundedCache(KEPT)
 STRUCTURE = "a structure, not a motion"  # what a structure's error says (the sweep's status reads it)
 
+Pieces = Sequence[tuple[float, float]]  # stretches of an input's range: (lo, hi) in radians, or lengths
 
-def certify_labels(compiled: Compiled, branches: Sequence[Branch]) -> list[Any]:
+
+def certify_labels(compiled: Compiled, branches: Sequence[Branch]) -> list[list[Interval] | None]:
     """Per branch, the input intervals where its label is certified (dimensions at defaults)."""
     if len(compiled.system.inputs) != 1:
         return [None] * len(branches)
@@ -63,7 +61,7 @@ def certify_labels(compiled: Compiled, branches: Sequence[Branch]) -> list[Any]:
     return [certify_label(b, variables, lo, hi, _balls(compiled)) for b in branches]
 
 
-def _balls(compiled: Compiled) -> dict[str, Any]:
+def _balls(compiled: Compiled) -> dict[str, flint.arb]:
     return {n: ARB.number(Fraction(str(v)).numerator, Fraction(str(v)).denominator)
             for n, v in compiled.parameter_values.items()}
 
@@ -73,23 +71,7 @@ def where_assembled(compiled: Compiled, branches: Sequence[Branch]) -> dict[str,
     some branch is real on a narrow part of the range only; ``None`` when the whole range is to be
     sampled. SceneError when the scene's own branch assembles at isolated inputs only.
 
-    Found once per compiled scene and branches (the pipeline asks before its witnesses, and again
-    to verify)."""
-    branches = tuple(branches)
-    where, error = FOUND.get((compiled, compiled.scene.source, branches), lambda: _found(compiled, branches))
-    if error is not None:
-        raise error
-    return where
-
-
-def _found(compiled: Compiled, branches: Sequence[Branch]) -> tuple[Any, SceneError | None]:
-    try:
-        return _where(compiled, branches), None
-    except SceneError as err:
-        return None, err
-
-
-def _where(compiled: Compiled, branches: Sequence[Branch]) -> dict[str, list[tuple[float, float]]] | None:
+    ``algkin.derivation.prepare`` finds it once, for the witnesses and the verification."""
     if len(compiled.system.inputs) != 1 or not branches:
         return None
     (name, variables), = compiled.system.inputs.items()
@@ -143,13 +125,13 @@ def _joined(pieces: list[tuple[float, float]]) -> list[tuple[float, float]]:
     return joined
 
 
-def _refuse_structure(compiled: Compiled, branch: Branch, intervals: list[Any], span: tuple[float, float]) -> None:
+def _refuse_structure(compiled: Compiled, branch: Branch, intervals: list[Interval], span: tuple[float, float]) -> None:
     """SceneError naming where ``branch`` assembles if it is certified nowhere and what is undecided is
     narrower than ``STILL`` of the range (a touch of its discriminant's zero, not a stretch of motion)."""
     start, end = interval_keys("from_deg" in intervals[0])
     if any(i["status"] == "certified" for i in intervals):
         return
-    undecided = [(i[start], i[end]) for i in intervals if i["status"] == "undecided"]
+    undecided = [(i[start], i[end]) for i in intervals if i["status"] == "undecided"]  # type: ignore[literal-required]
     if not undecided or sum(b - a for a, b in undecided) >= STILL * (span[1] - span[0]):
         return
     (name, _), = compiled.system.inputs.items()

@@ -7,28 +7,40 @@ factors. A task made from a compiled system also holds the equations as python-f
 polynomials (``System.polynomials``), which it eliminates from: no sympy on the way.
 """
 
+from __future__ import annotations
+
 from dataclasses import dataclass
+from typing import Union
 
-from ..eliminate import eliminate
+import flint
+import sympy
 
-__all__ = ["EliminationTask", "curve_task", "eliminant_tasks", "equations_for"]
+from ..eliminate import Elimination, eliminate
+from ..eliminate.select import WitnessGroups
+from ..runtime.budget import Budget, Deadline
+from ..scene import Compiled
+from ..system import System
+
+__all__ = ["EliminationTask", "Eliminant", "curve_task", "eliminant_tasks", "equations_for"]
+
+Eliminant = Union[Elimination[flint.fmpq_mpoly], Elimination[sympy.Poly]]  # what ``eliminate`` gives (flint's, sympy's)
 
 
 @dataclass(frozen=True)
 class EliminationTask:
-    equations: tuple
-    eliminate: tuple
-    keep: tuple
-    parameters: tuple
-    witnesses: tuple
-    polynomials: tuple = ()  # the equations in python-flint, when the task has them
+    equations: tuple[sympy.Expr, ...]
+    eliminate: tuple[str, ...]
+    keep: tuple[str, ...]
+    parameters: tuple[str, ...]
+    witnesses: WitnessGroups
+    polynomials: tuple[flint.fmpq_mpoly, ...] = ()  # the equations in python-flint, when the task has them
 
-    def run(self, method, backend, budget=None):
+    def run(self, method: str, backend: str, budget: Budget | Deadline | None = None) -> Eliminant:
         return eliminate(self.polynomials or self.equations, self.eliminate, self.keep, method=method,
                          backend=backend, witnesses=self.witnesses, parameters=self.parameters, budget=budget)
 
 
-def curve_task(compiled, groups, point):
+def curve_task(compiled: Compiled, groups: WitnessGroups, point: str) -> EliminationTask:
     """Everything but the point's coordinates eliminated: its implicit curve."""
     system = compiled.system
     variables = (f"{point}_x", f"{point}_y")
@@ -37,7 +49,7 @@ def curve_task(compiled, groups, point):
                            tuple(system.parameters), tuple(groups), system.polynomials)
 
 
-def eliminant_tasks(compiled, groups):
+def eliminant_tasks(compiled: Compiled, groups: WitnessGroups) -> dict[str, EliminationTask]:
     """Unknown -> the task giving its eliminant in the inputs' cos and sin (and dimensions).
 
     The inputs' cos and sin are kept here, and multipliers may hold them as they hold
@@ -56,13 +68,13 @@ def eliminant_tasks(compiled, groups):
     return tasks
 
 
-def equations_for(system, unknown):
+def equations_for(system: System, unknown: str) -> tuple[list[sympy.Expr], list[str]]:
     """The equations ``unknown`` depends on, and their unknowns (construction order)."""
     chosen, unknowns = _chosen_for(system, unknown)
     return [system.equations[k] for k in chosen], unknowns
 
 
-def _chosen_for(system, unknown):
+def _chosen_for(system: System, unknown: str) -> tuple[list[int], list[str]]:
     """The indices of the equations ``unknown`` depends on, and their unknowns.
 
     An equation belongs to the unknowns in it that appeared last (equations come in
@@ -72,7 +84,7 @@ def _chosen_for(system, unknown):
     """
     known = set(system.unknowns)
     names = [[str(v) for v in e.free_symbols if str(v) in known] for e in system.equations]
-    introduced = {}  # unknown -> index of the first equation that mentions it
+    introduced: dict[str, int] = {}  # unknown -> index of the first equation that mentions it
     for k, n in enumerate(names):
         for v in n:
             introduced.setdefault(v, k)

@@ -53,6 +53,10 @@ Label: TypeAlias = tuple[tuple[str, str], ...]  # (point, label) pairs, sorted b
 Root: TypeAlias = list[flint.arb]  # the unknowns' enclosures, in the system's order
 
 
+def _indicators(indicators: Iterable[Indicator]) -> tuple[Indicator, ...]:
+    return tuple(indicators)
+
+
 def _frozen_forms(branches: Iterable[BranchForms]) -> tuple[BranchForms, ...]:
     return tuple((frozen(labels), frozen(values), frozen(discriminants)) for labels, values, discriminants in branches)
 
@@ -65,7 +69,7 @@ class CheckSetup:
     units (``inputs``) and a value for each symbolic parameter (``parameters``)."""
 
     system: System
-    indicators: tuple[Indicator, ...] = attrs.field(converter=tuple)
+    indicators: tuple[Indicator, ...] = attrs.field(converter=_indicators)  # typed: ``tuple`` reads as Iterable[_T_co]
     branches: tuple[BranchForms, ...] = attrs.field(converter=_frozen_forms)
     inputs: FrozenDict[str, tuple[float, float]] = attrs.field(converter=frozen)
     parameters: FrozenDict[str, ExactValue] = attrs.field(converter=frozen)

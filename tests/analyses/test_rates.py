@@ -15,7 +15,8 @@ from algkin.analyses.rates import Rate, check_forms, rates_of
 from algkin.analyses.rates.check import check_rates
 from algkin.analyses.rates.forms import Derivative
 from algkin.analyses.rates.text import quick
-from algkin.derivation.pipeline import check_setup, derive
+from algkin.derivation.pipeline import derive
+from algkin.derivation.checking import check_setup
 from algkin.errors import UsageError
 from algkin.evaluate import MPMATH, evaluate
 from algkin.scene import load_scene_text
@@ -160,7 +161,8 @@ def test_zero_samples_skip_the_check_and_two_inputs_are_refused():
 
 def test_a_check_with_nothing_to_compare_fails():
     found = algkin.rates("chebyshev-lambda", outputs=["B"], samples=0)
-    system, indicators, branches, _ = check_setup(found.derivation.compiled, found.derivation.branches)
+    setup = check_setup(found.derivation.compiled, found.derivation.branches)
+    system, indicators, branches = setup.system, setup.indicators, setup.branches
     nothing = check_rates(system, indicators, [(labels, {}, d) for labels, _, d in branches], (0.0, 6.0), 4)
     assert not nothing.passed and nothing.compared == 0 and "no branch rate compared" in nothing.failures[0]
 
@@ -206,7 +208,8 @@ def test_four_bar_velocity_matches_the_implicit_function_theorem(scene, theta):
     with mpmath.workdps(40):
         found = algkin.rates(scene, outputs=["B"], samples=0)
         compiled = found.derivation.compiled
-        system, indicators, branches, _ = check_setup(compiled, found.derivation.branches)
+        setup = check_setup(compiled, found.derivation.branches)
+        system, indicators, branches = setup.system, setup.indicators, setup.branches
         (c, s), = system.inputs.values()
         point = {symbol(c): sympy.Float(mpmath.cos(theta), 40), symbol(s): sympy.Float(mpmath.sin(theta), 40)}
         for branch, (labels, _, discriminants) in zip(found.branches, branches):

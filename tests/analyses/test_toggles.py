@@ -7,8 +7,11 @@ from importlib.resources import files
 import pytest
 from hypothesis import assume, example, given, settings, strategies as st
 
+from algkin.derivation.prepared import prepare
 from algkin.scene import compile_scene, load_scene_text
 from algkin.analyses.toggles import grashof, toggles
+
+from ..derivation.work import counting
 
 
 def four_bar(crank, ground, coupler, rocker):
@@ -160,6 +163,18 @@ def test_random_slider_cranks_match_the_arcsine(crank, rod, offset):
         return
     found = toggles(slider_crank(crank, rod, offset)).toggles
     assert [t.input_deg for t in found] == pytest.approx(expected, abs=1e-9)
+
+
+def test_toggles_compile_and_branch_the_scene_once_with_its_artefacts(monkeypatch):
+    # The artefacts' eliminants (B_x and B_y of the four-bar's one dyad) reuse the scene the
+    # toggles compiled and branched: one compilation, one set of branches.
+    work = counting(monkeypatch)
+    _, done = work(lambda: toggles("fourbar"))
+    assert done == {"compile_scene": 1, "closed_forms": 1, "eliminate": 2}
+    prepared = prepare("fourbar", outputs=["B"])
+    found, done = work(lambda: toggles(prepared))
+    assert done == {"compile_scene": 0, "closed_forms": 0, "eliminate": 2}
+    assert found.to_json() == toggles("fourbar").to_json()
 
 
 def test_a_scene_file_given_as_a_path_object(tmp_path):

@@ -8,7 +8,7 @@ from hypothesis import assume, given, settings, strategies as st
 
 from algkin.branches import closed_forms
 from algkin.evaluate import MPMATH, evaluate
-from algkin.derivation.pipeline import certify_labels
+from algkin.derivation.assembles import certify_labels
 from algkin.scene import compile_scene
 
 from ..analyses.test_toggles import four_bar, law_of_cosines

@@ -93,12 +93,11 @@ def test_the_learned_drop_is_trusted_and_one_dropping_the_motions_factor_is_not(
 
 
 def _curve_task(scene, params):
-    from algkin.derivation.pipeline import compile_and_branch
+    from algkin.derivation.prepared import prepare
     from algkin.derivation.tasks import curve_task
-    from algkin.scene import load_scene
 
-    compiled, _, groups, _ = compile_and_branch(load_scene(scene), ["P"], params)
-    return curve_task(compiled, groups, "P")
+    prepared = prepare(scene, outputs=["P"], params=params)
+    return curve_task(prepared.compiled, prepared.witnesses, "P")
 
 
 def _direct(task, values):
@@ -147,7 +146,7 @@ def test_stephenson_iii_family_equals_the_fixed_point_curves():
 
 
 def test_curve_interpolates_a_symbolic_tracing_point_beyond_a_four_bar():
-    from algkin.derivation.pipeline import family_method
+    from algkin.derivation.curves import family_method
 
     family = _curve_task("stephenson-iii-family", ["u", "v"])
     assert family_method(family, "linear") == "interpolate"

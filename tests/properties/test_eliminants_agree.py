@@ -11,7 +11,7 @@ from hypothesis import given, settings
 
 from algkin.branches import closed_forms
 from algkin.eliminate import eliminate
-from algkin.derivation.pipeline import witnesses
+from algkin.derivation.witnesses import witnesses
 from algkin.derivation.tasks import eliminant_tasks
 from algkin.scene import compile_scene
 from algkin.system import symbol

@@ -10,7 +10,8 @@ import algkin
 from algkin.branches import closed_forms
 from algkin.errors import UsageError
 from algkin.derivation.assembles import where_assembled
-from algkin.derivation.pipeline import check_setup, compile_and_branch
+from algkin.derivation.checking import check_setup
+from algkin.derivation.prepared import prepare
 from algkin.scene import compile_scene, load_scene, load_scene_text
 from algkin.verify import CheckSetup, verify_branches
 
@@ -18,10 +19,7 @@ from algkin.verify import CheckSetup, verify_branches
 def check(compiled, branches, samples, polynomials, factors=None):
     """The pipeline's independent check of ``branches`` (seed 1): ``verify_branches`` on what
     ``check_setup`` gives, the samples where some branch may assemble."""
-    system, indicators, forms, inputs = check_setup(compiled, branches)
-    setup = CheckSetup(system=system, indicators=indicators, branches=forms, inputs=inputs,
-                       parameters=compiled.parameter_values)
-    return verify_branches(setup, samples=samples, seed=1, polynomials=polynomials, factors=factors,
+    return verify_branches(check_setup(compiled, branches), samples=samples, seed=1, polynomials=polynomials, factors=factors,
                            where=where_assembled(compiled, branches))
 
 
@@ -145,8 +143,8 @@ LAMBDA_TEXT = (files("algkin.catalog") / "chebyshev-lambda.toml").read_text(enco
 def lambda_curve():
     """The coupler curve of P with its kept factors, and the branches it is checked against."""
     result = algkin.curve("chebyshev-lambda", "P", samples=0)
-    compiled, branches, _, _ = compile_and_branch(load_scene("chebyshev-lambda"), ["P"], ())
-    return compiled, branches, result.elimination.factors
+    prepared = prepare("chebyshev-lambda", outputs=["P"])
+    return prepared.compiled, prepared.branches, result.elimination.factors
 
 
 def curve_check(lambda_curve, factors):
@@ -207,11 +205,9 @@ def test_curve_and_derive_check_their_kept_factors():
 
 def test_the_check_setup_is_a_frozen_hashable_value_and_the_rest_is_keyword_only():
     compiled, branches = lambda_setup()
-    system, indicators, forms, inputs = check_setup(compiled, branches)
-    setup = CheckSetup(system=system, indicators=indicators, branches=forms, inputs=inputs,
-                       parameters=compiled.parameter_values)
-    again = CheckSetup(system=system, indicators=list(indicators), branches=list(forms), inputs=dict(inputs),
-                       parameters=dict(compiled.parameter_values))
+    setup = check_setup(compiled, branches)
+    again = CheckSetup(system=setup.system, indicators=list(setup.indicators), branches=list(setup.branches),
+                       inputs=dict(setup.inputs), parameters=dict(compiled.parameter_values))
     assert setup == again and hash(setup) == hash(again)
     with pytest.raises(attrs.exceptions.FrozenInstanceError):
         setup.inputs = {}

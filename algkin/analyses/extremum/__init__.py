@@ -20,6 +20,8 @@ import mpmath
 import sympy
 
 from ...derivation.pipeline import derive
+from ...derivation.prepared import Prepared, given, prepare, require_outputs
+from ...derivation.witnesses import Groups
 from ...errors import UsageError
 from ...runtime.budget import Budget, Deadline, started
 from ...scene.load import SceneLike, Values
@@ -85,10 +87,11 @@ def _text(expr: sympy.Expr | None) -> str | None:
 
 
 def problem_for(derived: Derivation, output: str, degrees: tuple[sympy.Expr, sympy.Expr] | None = None, *,
-                deadline: Deadline | None = None) -> Problem:
+                witnesses: Groups | None = None, deadline: Deadline | None = None) -> Problem:
     """The extremum problem of ``output`` (a scalar or an angle) in a derivation of it; a
     direction's reference is chosen for its motion over ``degrees`` (lo, hi), by default the
-    input's range. Its eliminations keep to ``deadline``, if any."""
+    input's range. ``witnesses``: the derivation's (its ``Prepared``'s), drawn again if not given;
+    its eliminations keep to ``deadline``, if any."""
     compiled = derived.compiled
     if len(compiled.system.inputs) != 1:
         raise UsageError("scene", compiled.scene.name, "an extremum needs exactly one input")
@@ -98,7 +101,8 @@ def problem_for(derived: Derivation, output: str, degrees: tuple[sympy.Expr, sym
     angle = compiled.angles.get(output_name)
     if angle is not None and angle.direction:
         lo, hi = degrees if degrees is not None else compiled.scene.inputs[name].span
-        return direction_problem(derived, angle, line, parameters, lo, hi, output, deadline=deadline)
+        return direction_problem(derived, angle, line, parameters, lo, hi, output, witnesses=witnesses,
+                                 deadline=deadline)
     if len(unknowns) != 1:
         raise UsageError("output", output, "name a scalar output (a distance, a coordinate or an angle), not a point")
     chosen = next(b for b in derived.branches if b.selected)
@@ -124,7 +128,7 @@ def _span(spec: Input, angle_range: tuple[float | str, float | str] | None) -> t
     return lo, hi
 
 
-def extremum(scene: SceneLike, output: str, angle_range: tuple[float | str, float | str] | None = None,
+def extremum(scene: SceneLike | Prepared, output: str, angle_range: tuple[float | str, float | str] | None = None,
              params: Sequence[str] = (), largest: bool = False, method: str = "resultant", backend: str = "flint",
              set: Values | None = None,  # noqa: A002 - the public API's name, as in derive
              budget: Budget | Deadline | None = None) -> Extremum:
@@ -133,15 +137,22 @@ def extremum(scene: SceneLike, output: str, angle_range: tuple[float | str, floa
     ``angle_range`` is in the input's unit (default: its declared range). With ``params``
     symbolic, ``closed_form`` gives the minimum (the maximum with ``largest``) and its
     input in those parameters, with where that holds. ``set`` gives dimensions exact values.
-    A ``Budget`` (or the ``Deadline`` of one running) bounds the time and the eliminants' terms.
+    ``scene`` may be a ``Prepared`` one (``prepare``) for ``output`` alone. A ``Budget`` (or the
+    ``Deadline`` of one running) bounds the time and the eliminants' terms.
     """
     deadline = started(budget)
-    derived = derive(scene, [output], method, backend, params=params, samples=0, set=set, budget=deadline)
-    return extremum_of(derived, output, angle_range, largest, backend, deadline=deadline)
+    given(scene, params=params, set=set)
+    prepared = scene if isinstance(scene, Prepared) else prepare(scene, outputs=[output], params=params, set=set,
+                                                                 deadline=deadline)
+    require_outputs(prepared, "output", [output])
+    derived = derive(prepared, method=method, backend=backend, samples=0, budget=deadline)
+    return extremum_of(derived, output, angle_range, largest, backend, witnesses=prepared.witnesses,
+                       deadline=deadline)
 
 
 def extremum_of(derived: Derivation, output: str, angle_range: tuple[float | str, float | str] | None = None,
-                largest: bool = False, backend: str = "flint", *, deadline: Deadline | None = None) -> Extremum:
+                largest: bool = False, backend: str = "flint", *, witnesses: Groups | None = None,
+                deadline: Deadline | None = None) -> Extremum:
     """``extremum`` of an output of an existing derivation (with that output alone).
 
     An angle output's values are in degrees (see ``angles``): its extrema are the via's,
@@ -153,7 +164,7 @@ def extremum_of(derived: Derivation, output: str, angle_range: tuple[float | str
         raise UsageError("scene", derived.compiled.scene.name, "an extremum needs exactly one input")
     (name,) = inputs
     lo, hi = _span(derived.compiled.scene.inputs[name], angle_range)
-    problem = problem_for(derived, output, (lo, hi), deadline=deadline)
+    problem = problem_for(derived, output, (lo, hi), witnesses=witnesses, deadline=deadline)
     scale = problem.scale
     flip = scale is not None and scale.decreasing
     defaults = {p: sympy.Rational(str(derived.compiled.parameter_values[p.name])) for p in problem.parameters}

@@ -30,7 +30,7 @@ import numpy as np
 from numpy.typing import NDArray
 import sympy
 
-from ...derivation.pipeline import witnesses
+from ...derivation.witnesses import Groups, witnesses as drawn
 from ...derivation.tasks import equations_for
 from ...eliminate import Witness, eliminate
 from ...runtime.budget import Deadline
@@ -41,7 +41,7 @@ from ...system.angles import Parametrisation
 from .critical import DIGITS, Problem
 
 if TYPE_CHECKING:
-    from ...derivation.pipeline import Derivation
+    from ...derivation.results import Derivation
     from ...scene.compile import AngleOutput
 
 __all__ = ["AngleScale", "direction_problem", "SAMPLES", "MARGIN_DEG"]
@@ -127,10 +127,11 @@ def _fresh(name: str, taken: set[str]) -> sympy.Symbol:
 
 def direction_problem(derived: Derivation, angle: AngleOutput, line: Parametrisation,
                       parameters: tuple[sympy.Symbol, ...], lo: float, hi: float, output: str, *,
-                      deadline: Deadline | None = None) -> Problem:
+                      witnesses: Groups | None = None, deadline: Deadline | None = None) -> Problem:
     """The ``Problem`` of a direction output: ``w = tan((phi - k*90)/2)`` on the chosen branch,
-    and its eliminant in ``w``, the input's variables and the symbolic dimensions (the
-    elimination keeping to ``deadline``, if any)."""
+    and its eliminant in ``w``, the input's variables and the symbolic dimensions (the factors
+    kept by the derivation's ``witnesses``, drawn again if not given; the elimination keeping to
+    ``deadline``, if any)."""
     compiled = derived.compiled
     system = compiled.system
     chosen = next(b for b in derived.branches if b.selected)
@@ -141,12 +142,13 @@ def direction_problem(derived: Derivation, angle: AngleOutput, line: Parametrisa
     w = _fresh(f"tan_half_{angle.name}", taken)
     turned_cos, turned_sin = _rotated(cos_form, sin_form, -k)
     closed = turned_sin / (1 + turned_cos)
-    eliminant = _eliminant(derived, angle, k, w, deadline)
+    groups = witnesses if witnesses is not None else drawn(derived.compiled, derived.branches)
+    eliminant = _eliminant(derived, angle, k, w, groups, deadline)
     return Problem(eliminant, closed, w, line, parameters, AngleScale(w.name, k),
                    tuple(chosen.discriminants.values()))
 
 
-def _eliminant(derived: Derivation, angle: AngleOutput, k: int, w: sympy.Symbol,
+def _eliminant(derived: Derivation, angle: AngleOutput, k: int, w: sympy.Symbol, groups: Groups,
                deadline: Deadline | None) -> sympy.Expr:
     """``w``'s polynomial: the equations the direction's cosine and sine need, with those two
     written in ``w`` (times ``1 + w**2``), every other unknown eliminated; the factors the
@@ -167,22 +169,23 @@ def _eliminant(derived: Derivation, angle: AngleOutput, k: int, w: sympy.Symbol,
     keep_always = tuple(system.input_variables) + tuple(system.parameters)
     try:
         result = eliminate(written, others, (w.name,) + keep_always, method="linear", backend="flint",
-                           witnesses=_witnesses(derived, angle, k, w), parameters=keep_always, budget=deadline)
+                           witnesses=_witnesses(groups, angle, k, w), parameters=keep_always, budget=deadline)
     except ComputationError as err:
         raise ComputationError(f"no polynomial for the direction {angle.name}: {err}") from None
     return result.polynomial
 
 
-def _witnesses(derived: Derivation, angle: AngleOutput, k: int, w: sympy.Symbol) -> list[list[Witness]]:
+def _witnesses(groups: Groups, angle: AngleOutput, k: int, w: sympy.Symbol) -> list[list[Witness]]:
     """The derivation's witness configurations with ``w`` added, where it is finite."""
-    groups: list[list[Witness]] = []
+    assert angle.sin is not None, "a direction has a sine"
+    extended_groups: list[list[Witness]] = []
     with flint.ctx.workprec(256):
-        for group in witnesses(derived.compiled, derived.branches):
+        for group in groups:
             extended: list[Witness] = []
             for point in group:
                 turned_cos, turned_sin = _rotated(point[angle.cos], point[angle.sin], -k)
                 denominator = 1 + turned_cos
                 if not denominator.contains(0):
                     extended.append(Witness({**point, w.name: turned_sin / denominator}, point.exact))
-            groups.append(extended)
-    return groups
+            extended_groups.append(extended)
+    return extended_groups

@@ -8,10 +8,11 @@ from dataclasses import dataclass
 import flint
 import sympy
 
-from ...branches import Branch, closed_forms
+from ...branches import Branch
+from ...derivation.prepared import prepare
 from ...evaluate import ARB, evaluate
 from ...runtime.budget import Deadline
-from ...scene import Compiled, compile_scene
+from ...scene import Compiled
 from ...scene.model import Scene
 from ..toggles import single_input
 from .certificate import CHECK_BITS, angle_values, certify, interval
@@ -40,7 +41,8 @@ class PointLimits:
 def point_limits(scene: Scene, point: str, lo: float, hi: float, deadline: Deadline | None = None) -> PointLimits:
     """The limits of one point (every branch), the roots dropped, or why the point has none (its
     elimination keeping to ``deadline``, if any)."""
-    compiled = compile_scene(scene, [point])
+    prepared = prepare(scene, outputs=[point], deadline=deadline)
+    compiled = prepared.compiled
     _, line = single_input(compiled, "limit positions")
     c, s = line.variables
     stationary = stationary_condition(compiled, point)
@@ -51,7 +53,7 @@ def point_limits(scene: Scene, point: str, lo: float, hi: float, deadline: Deadl
     with flint.ctx.workprec(ROOT_BITS):
         roots = angle_roots([condition], c, s, t)
         others = [r.degrees for r in roots] + [r.degrees for r in angle_roots(dropped_factors, c, s, t)]
-    branches = closed_forms(compiled)
+    branches = list(prepared.branches)
     centre = centre_name(scene, compiled, stationary.path)
     found: list[Limit] = []
     dropped: list[Json] = []

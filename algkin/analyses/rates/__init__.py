@@ -22,7 +22,10 @@ from typing import Any
 
 import sympy
 
-from ...derivation.pipeline import Derivation, check_setup, derive
+from ...derivation.pipeline import derive
+from ...derivation.checking import check_setup
+from ...derivation.prepared import Prepared
+from ...derivation.results import Derivation
 from ...eliminate import DEFAULT_METHOD
 from ...errors import UsageError
 from ...runtime import validation
@@ -68,14 +71,16 @@ class Rates:
                 "rates_verification": self.verification.to_json()}
 
 
-def rates(scene: SceneLike, outputs: list[str] | None = None, params: tuple[str, ...] | list[str] = (),
+def rates(scene: SceneLike | Prepared, outputs: list[str] | None = None, params: tuple[str, ...] | list[str] = (),
           samples: int = SAMPLES, seed: int = 0, method: str = DEFAULT_METHOD, backend: str = "flint",
           set: dict[str, Any] | None = None) -> Rates:  # noqa: A002 - ``set=`` as in derive
     """Velocity and acceleration of every coordinate of ``outputs`` of a one-input ``scene``, per
     branch, checked on ``samples`` inputs (0 skips the check); the positions' derivation and its
-    own verification are in ``.derivation``."""
+    own verification are in ``.derivation``. ``scene`` may be a ``Prepared`` one (``prepare``)."""
     validation.count("samples", samples, validation.MAX_VERIFY_SAMPLES)
-    return rates_of(derive(scene, outputs, method, backend, params, samples, seed, set=set), samples, seed)
+    derivation = derive(scene, outputs, method=method, backend=backend, params=params, samples=samples, seed=seed,
+                        set=set)
+    return rates_of(derivation, samples, seed)
 
 
 def rates_of(derivation: Derivation, samples: int = SAMPLES, seed: int = 0) -> Rates:
@@ -103,7 +108,8 @@ def check_forms(derivation: Derivation, forms: list[dict[str, Rate]], samples: i
     """``forms`` (per branch of ``derivation``, unknown -> ``Rate``) against central differences,
     symbolic dimensions at their defaults; a test hands it wrong forms to see them caught."""
     compiled: Any = derivation.compiled
-    system, indicators, branches, spans = check_setup(compiled, derivation.branches)
+    setup = check_setup(compiled, derivation.branches)
+    system, indicators, branches, spans = setup.system, setup.indicators, setup.branches, setup.inputs
     defaults = {symbol(n): compiled.parameter_values[n] for n in compiled.system.parameters}
     checked = [(labels, {u: (r.velocity.xreplace(defaults), r.acceleration.xreplace(defaults)) for u, r in f.items()},
                 discriminants) for (labels, _, discriminants), f in zip(branches, forms)]

@@ -122,7 +122,8 @@ class Singularities:
 def singular(scene: SceneLike, point: str, *, set: Values | None = None,  # noqa: A002 - the public name (--set)
              samples: int = 40, seed: int = 0, budget: Budget | Deadline | None = None) -> Singularities:
     """The singular points of the curve ``point`` traces in ``scene`` (``algkin.curve``, its
-    verification on ``samples`` inputs included), every dimension at its default or ``set``. A
+    verification on ``samples`` inputs included), every dimension at its default or ``set``;
+    ``scene`` may be a ``Prepared`` one (``prepare``) with ``point`` among its outputs. A
     ``Budget`` (or the ``Deadline`` of one running) bounds the curve's time and eliminants' terms."""
     from ...derivation.pipeline import curve
 

@@ -1,0 +1,112 @@
+"""What ``derive`` and ``curve`` answer: immutable, hashable values, and their JSON documents.
+
+A result's timings are not part of what it equals: two runs of the same question are equal.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from typing import Any, Union
+
+import attrs
+
+from ..branches import Branch
+from ..runtime.frozen import FrozenDict, frozen
+from ..scene import Compiled
+from ..system import inputs_json
+from ..verify import Verification
+from .tasks import Eliminant
+
+__all__ = ["Derivation", "CurveResult", "Certified", "Eliminant", "Json"]
+
+Json = dict[str, Any]  # a JSON document: its values are whatever JSON holds
+Certified = Union[tuple[FrozenDict[str, Union[float, str]], ...], None]
+"""One branch's certified intervals (``algkin.branches.certify_label``'s, frozen), or None where not certified."""
+
+
+def _branches(branches: Iterable[Branch]) -> tuple[Branch, ...]:
+    return tuple(branches)
+
+
+def _intervals(certified: Iterable[Iterable[Mapping[str, object]] | None]) -> tuple[Certified, ...]:
+    """Per branch, its certified intervals as frozen mappings (None where labels were not certified)."""
+    return tuple(None if c is None else tuple(frozen(i) for i in c) for c in certified)
+
+
+@attrs.frozen
+class Derivation:
+    """What ``derive`` found for a scene: system, eliminants, branches, verification (an
+    immutable, hashable value; its timings are not part of what it equals)."""
+
+    compiled: Compiled
+    method: str
+    backend: str
+    eliminations: FrozenDict[str, Eliminant] = attrs.field(converter=frozen)  # unknown -> its eliminant
+    branches: tuple[Branch, ...] = attrs.field(converter=_branches)
+    verification: Verification
+    timings: FrozenDict[str, float] = attrs.field(converter=frozen, eq=False)
+    # per branch: ({from_deg, to_deg, status}, ...), one-input scenes
+    certified: tuple[Certified, ...] = attrs.field(default=(), converter=_intervals)
+
+    def to_json(self) -> Json:
+        system = self.compiled.system
+        return {
+            "scene": self.compiled.scene.name,
+            "method": self.method,
+            "backend": self.backend,
+            "inputs": inputs_json(system.inputs),
+            "system": system.to_json(),
+            "outputs": {n: list(v) for n, v in self.compiled.outputs.items()},
+            "eliminants": {u: str(e.polynomial) for u, e in self.eliminations.items()},
+            "eliminant_figures": {u: _figures(e) for u, e in self.eliminations.items()},
+            "branches": [dict(b.to_json(), certified=None if c is None else [dict(i) for i in c])
+                         for b, c in zip(self.branches, self.certified)],
+            "verification": self.verification.to_json(),
+            "timings": dict(self.timings),
+        }
+
+
+@attrs.frozen
+class CurveResult:
+    """The implicit curve of a point: polynomial, figures, dropped factors, verification (an
+    immutable, hashable value; its timings are not part of what it equals)."""
+
+    compiled: Compiled
+    point: str
+    variables: tuple[str, ...]
+    elimination: Eliminant
+    degree: int
+    circularity: int
+    irreducible: bool
+    verification: Verification
+    timings: FrozenDict[str, float] = attrs.field(converter=frozen, eq=False)
+
+    def to_json(self) -> Json:
+        return {
+            "scene": self.compiled.scene.name,
+            "point": self.point,
+            "variables": list(self.variables),
+            "parameters": list(self.compiled.system.parameters),
+            "method": self.elimination.method,
+            "backend": self.elimination.backend,
+            "curve": self.elimination.text,
+            "degree": self.degree,
+            "circularity": self.circularity,
+            "irreducible": self.irreducible,
+            # why the curve needed no choice of factors at the witnesses, when it needed none
+            "irreducibility": str(self.elimination.proof) if self.elimination.proof else None,
+            "terms": self.elimination.terms,
+            "coefficient_bits": self.elimination.bits,
+            "dropped_factors": [str(f) for f in self.elimination.dropped],
+            "verification": self.verification.to_json(),
+            "timings": dict(self.timings),
+        }
+
+
+def _figures(elimination: Eliminant) -> Json:
+    return {
+        "degree": elimination.degree,
+        "terms": elimination.terms,
+        "coefficient_bits": elimination.bits,
+        "dropped_factors": [str(f) for f in elimination.dropped],
+    }
