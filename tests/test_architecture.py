@@ -15,7 +15,7 @@ ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / ".importlinter"
 
 PUBLIC = ["load_quantities", "load_scene", "compile_scene", "derive", "curve", "extremum", "rates", "singular",
-          "catalog_names", "interact", "AlgkinError", "SceneBuilder", "prepare", "Prepared",
+          "solve", "catalog_names", "interact", "AlgkinError", "SceneBuilder", "prepare", "Prepared",
           "Derivation", "CurveResult", "Verification", "Branch", "Extremum", "Rates", "Singularities", "Solution",
           "Mechanism", "Quantity", "Budget"]
 
