@@ -33,6 +33,7 @@ __all__ = [
     "extremum",
     "rates",
     "singular",
+    "solve",
     "catalog_names",
     "interact",
     "AlgkinError",
@@ -45,6 +46,7 @@ __all__ = [
     "Extremum",
     "Rates",
     "Singularities",
+    "Solution",
     "Mechanism",
     "Quantity",
     # what bounds them
@@ -58,6 +60,7 @@ if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ 
     from .analyses.quantities import Mechanism, Quantity, load_quantities
     from .analyses.rates import Rates, rates
     from .analyses.singular import Singularities, singular
+    from .analyses.solve import Solution, solve
     from .branches import Branch
     from .derivation.pipeline import curve, derive
     from .derivation.prepared import Prepared, prepare
@@ -82,6 +85,7 @@ _LAZY = {
     **dict.fromkeys(("extremum", "Extremum"), ".analyses.extremum"),
     **dict.fromkeys(("rates", "Rates"), ".analyses.rates"),
     **dict.fromkeys(("singular", "Singularities"), ".analyses.singular"),
+    **dict.fromkeys(("solve", "Solution"), ".analyses.solve"),
     **dict.fromkeys(("load_quantities", "Mechanism", "Quantity"), ".analyses.quantities"),
     "interact": ".ui.widgets",
     "Budget": ".runtime.budget",  # its module loads multiprocessing: only when asked for

@@ -15,9 +15,9 @@ ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / ".importlinter"
 
 PUBLIC = ["load_quantities", "load_scene", "compile_scene", "derive", "curve", "extremum", "rates", "singular",
-          "catalog_names", "interact", "AlgkinError", "SceneBuilder", "prepare", "Prepared",
-          "Derivation", "CurveResult", "Verification", "Branch", "Extremum", "Rates", "Singularities", "Mechanism",
-          "Quantity", "Budget"]
+          "solve", "catalog_names", "interact", "AlgkinError", "SceneBuilder", "prepare", "Prepared",
+          "Derivation", "CurveResult", "Verification", "Branch", "Extremum", "Rates", "Singularities", "Solution",
+          "Mechanism", "Quantity", "Budget"]
 
 
 def test_the_import_contract_is_kept():

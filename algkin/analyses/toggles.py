@@ -34,6 +34,7 @@ from ..errors import UsageError
 from ..runtime.budget import Budget, Deadline, started
 from ..evaluate import ARB, evaluate
 from ..scene import Compiled, compile_scene
+from ..scene.compile import refuse_solved_together
 from ..scene.constructions import Crank, Dyad, Fixed
 from ..scene.implicit import DyadSpec, ImplicitSpec
 from ..scene.load import SceneLike, Values, as_scene
@@ -149,6 +150,7 @@ def toggles(scene: SceneLike, artefacts: bool = True,
     deadline = started(budget)
     prepared = given(scene, set=set)
     scene = prepared.scene if prepared else with_values(as_scene(scene), set)  # a name, a path (str or pathlib) or a Scene
+    refuse_solved_together(scene)
     implicit = [n for n, p in scene.points.items() if p.labels]  # the points with assembly modes
     if not implicit:
         raise UsageError("scene", scene.name, "has no dyad or slider, so no assembly modes to meet")

@@ -57,7 +57,7 @@ from ..evaluate.fused import numba_available
 from ..runtime import progress, validation
 from ..runtime.budget import Budget, Deadline, started
 from ..scene import Scene, compile_scene
-from ..scene.compile import Compiled
+from ..scene.compile import Compiled, refuse_solved_together
 from ..scene.constructions import Dyad, Fixed
 from ..scene.implicit.base import ImplicitSpec
 from ..scene.load import SceneLike, Values, as_scene
@@ -371,6 +371,7 @@ def accuracy(scene: SceneLike, samples: int = 2000, seed: int = 0, set: Values |
     validation.count("samples", samples, validation.MAX_ACCURACY_SAMPLES, minimum=10)
     validation.seed(seed)
     scene = with_values(as_scene(scene), set)
+    refuse_solved_together(scene)
     if of is None:
         of = next((n for n, p in scene.points.items() if isinstance(p, Dyad)), None) or next(iter(scene.outputs), None)
     if of is None:

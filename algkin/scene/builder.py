@@ -55,7 +55,7 @@ __all__ = ["SceneBuilder"]
 Expr = Union[str, int, float, Fraction, sympy.Expr]
 Pair = Sequence[Expr]
 
-_TABLES = ("parameters", "inputs", "points", "outputs")
+_TABLES = ("parameters", "inputs", "points", "constraints", "outputs")
 
 
 def _data(value: object) -> object:
@@ -136,13 +136,22 @@ class SceneBuilder:
         line = _given(slider) if isinstance(slider, Mapping) else slider
         self.point(name, slider=line, distance=distance, branch=branch, **extra)
 
+    def unknown(self, name: str, unknown: bool = True, **extra: Any) -> None:
+        """``P1 = { unknown = true }``: a point solved together with others, held by constraints."""
+        self.point(name, unknown=unknown, **extra)
+
+    def constraint(self, name: str, text: str) -> None:
+        """``leg1 = "dist(A1, P1) = r1"`` in ``[constraints]`` (also ``dist(P, Q)**2 = L2``, ``on(P, line(A, B))``)."""
+        self._add("constraints", name, text)
+
     def output(self, name: str, text: str | None = None) -> None:
         """``AB = "dist(A, B)"``; without ``text``, the point of the same name (``P = "P"``)."""
         self._add("outputs", name, name if text is None else text)
 
     def data(self) -> dict[str, Any]:
         """The scene as a parsed scene file: what ``build()`` checks (a copy)."""
-        return {"name": self.name, "description": self.description, **copy.deepcopy(self._tables)}
+        tables = {table: rows for table, rows in copy.deepcopy(self._tables).items() if rows or table != "constraints"}
+        return {"name": self.name, "description": self.description, **tables}
 
     def build(self) -> Scene:
         """The ``Scene``, checked as a loaded file is (``SceneError`` on the first problem)."""

@@ -28,7 +28,7 @@ from .load import parse_output
 from .model import Output, Scene
 from .names import angle_unknowns, check_names, check_output_unknowns, check_symbol_name
 
-__all__ = ["Compiled", "DyadSpec", "SliderSpec", "AngleOutput", "compile_scene", "resolve_outputs"]
+__all__ = ["Compiled", "DyadSpec", "SliderSpec", "AngleOutput", "compile_scene", "resolve_outputs", "refuse_solved_together"]
 
 Substitution = Mapping[sympy.Symbol, sympy.Expr]
 
@@ -188,11 +188,24 @@ def defaults_subs(defaults: Mapping[str, sympy.Expr],
     return {symbols[n]: v for n, v in defaults.items()}
 
 
+def refuse_solved_together(scene: Scene) -> None:
+    """UsageError for a scene with points solved together, saying the command that takes it (a
+    SceneError first if its groups are bad: bad input whatever the command)."""
+    if scene.unknown_points:
+        from .groups import compile_groups  # below: groups builds on this module
+
+        compile_groups(scene)
+        raise UsageError("scene", scene.name, f"has points solved together ({', '.join(scene.unknown_points)}): "
+                         "`algkin solve` works on it; this command does not yet")
+
+
 def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: Iterable[str] = ()) -> Compiled:
     """Compile ``scene`` for ``outputs`` (names, point names, ``dist(P, Q)``, ``P.x``).
 
-    Parameters named in ``params`` stay symbolic; the others take their exact defaults.
+    Parameters named in ``params`` stay symbolic; the others take their exact defaults. A scene
+    with points solved together (``unknown = true``) is refused: only ``algkin solve`` takes it, for now.
     """
+    refuse_solved_together(scene)
     symbolic = tuple(params)
     defaults, substitution, bits = _parameter_values(scene, symbolic)
     resolved = resolve_outputs(scene, outputs)

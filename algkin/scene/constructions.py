@@ -17,7 +17,7 @@ from .implicit import DyadSpec, ImplicitSpec, MirrorSpec, SliderSpec
 from .implicit.mirror import mirror_equations
 from .implicit.base import Point
 
-__all__ = ["Construction", "Fixed", "Crank", "Dyad", "Slider", "Frame", "CONSTRUCTIONS", "Builder", "Indicator", "Unbuildable"]
+__all__ = ["Construction", "Fixed", "Crank", "Dyad", "Slider", "Frame", "Unknown", "CONSTRUCTIONS", "Builder", "Indicator", "Unbuildable"]
 
 
 class Unbuildable(ValueError):
@@ -235,5 +235,17 @@ class Frame:
         return (px + u * d[0] + v * n[0], py + u * d[1] + v * n[1])
 
 
+@dataclass(frozen=True)
+class Unknown:
+    """``unknown = true``: a point held by the scene's ``[constraints]``, solved together with the
+    others of its group (``algkin.scene.groups``), never built on its own."""
+
+    references = ()
+    labels = ()
+
+    def build(self, name: str, coords: Mapping[str, Point], builder: Builder) -> Point:
+        raise Unbuildable("it is solved together with others (unknown = true), not built on its own")
+
+
 CONSTRUCTIONS: dict[str, type[Construction]] = {"fixed": Fixed, "crank": Crank, "dyad": Dyad, "frame": Frame,
-                                                 "slider": Slider}
+                                                 "slider": Slider, "unknown": Unknown}

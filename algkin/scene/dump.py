@@ -14,7 +14,7 @@ True
 import json
 from collections.abc import Iterable
 
-from .constructions import Construction, Crank, Dyad, Fixed, Frame, Slider
+from .constructions import Construction, Crank, Dyad, Fixed, Frame, Slider, Unknown
 from .model import Scene
 
 __all__ = ["dump_scene"]
@@ -48,6 +48,8 @@ def _point(construction: Construction, scene: Scene) -> str:
         return (f"slider = {{ through = {_string(construction.through)}, {line} }}, "
                 f"distance = {{ to = {_string(construction.to)}, length = {_string(construction.length)} }}, "
                 f"branch = {_string(construction.branch)}")
+    if isinstance(construction, Unknown):
+        return "unknown = true"
     raise TypeError(f"no TOML form for a {type(construction).__name__} construction")
 
 
@@ -68,6 +70,9 @@ def dump_scene(scene: Scene) -> str:
               for name, i in scene.inputs.items()]
     lines += ["", "[points]"]
     lines += [f"{name} = {{ {_point(c, scene)} }}" for name, c in scene.points.items()]
+    if scene.constraints:
+        lines += ["", "[constraints]"]
+        lines += [f"{name} = {_string(c.text)}" for name, c in scene.constraints.items()]
     lines += ["", "[outputs]"]
     lines += [f"{name} = {_string(output.text)}" for name, output in scene.outputs.items()]
     return "\n".join(lines) + "\n"

@@ -26,7 +26,8 @@ else:  # Python 3.10
 import sympy
 
 from ..errors import SceneError, UsageError
-from .constructions import CONSTRUCTIONS, Construction, Crank, Dyad, Fixed, Frame, Slider
+from .constraints import Constraint, parse_constraint
+from .constructions import CONSTRUCTIONS, Construction, Crank, Dyad, Fixed, Frame, Slider, Unknown
 from .expr import exact_number, irrational, parse
 from .model import Input, Output, Scene, length_range_problem, range_problem
 from .names import check_names
@@ -37,7 +38,7 @@ __all__ = ["load_scene", "load_scene_text", "as_scene", "catalog_names", "MAX_SC
 MAX_SCENE_BYTES = 256 * 1024
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
 _CATALOG = os.path.join(os.path.dirname(os.path.dirname(__file__)), "catalog")
-_TOP_KEYS = {"name", "description", "parameters", "inputs", "points", "outputs"}
+_TOP_KEYS = {"name", "description", "parameters", "inputs", "points", "constraints", "outputs"}
 Table = dict[str, Any]
 SceneLike = Union[str, "os.PathLike[str]", Scene]  # what the public functions take for a scene
 Values = Mapping[str, Union[str, int, Fraction]]  # ``set=``: dimensions given exact values  # a TOML table as tomllib reads it: values of any TOML type, checked here
@@ -49,6 +50,7 @@ _EXTRA_KEYS = {
     "dyad": {"lengths", "branch"},
     "frame": {"at"},
     "slider": {"distance", "branch"},
+    "unknown": set(),
 }
 
 
@@ -166,8 +168,9 @@ class _Loader:
         parameters, ranges = self.parameters(self.table(data, "parameters", "parameters"))
         inputs = self.inputs(self.table(data, "inputs", "inputs"))
         points = self.points(self.table(data, "points", "points"), inputs)
+        constraints = self.constraints(self.table(data, "constraints", "constraints"), points)
         outputs = self.outputs(self.table(data, "outputs", "outputs"), points, inputs, parameters)
-        scene = Scene(name, description, parameters, inputs, points, outputs, self.source, ranges)
+        scene = Scene(name, description, parameters, inputs, points, outputs, self.source, ranges, constraints)
         check_names(scene)
         return scene
 
@@ -370,6 +373,28 @@ class _Loader:
         at = tuple(self.expr(v, f"{element}.at") for v in self.pair(spec, "at", element))
         return Frame(bases, at)
 
+    def unknown(self, spec: Table, element: str, names: set[str], inputs: dict[str, Input]) -> Unknown:
+        if spec["unknown"] is not True:
+            self.fail(f"{element}.unknown", f"expected true (a point solved together with others), got {spec['unknown']!r}")
+        return Unknown()
+
+    def constraints(self, table: Table, points: Mapping[str, Construction]) -> dict[str, Constraint]:
+        """``name = "dist(P, Q) = L"`` and the like (``algkin.scene.constraints``); each must hold a
+        point solved together (``unknown = true``) or one built on such points."""
+        constraints: dict[str, Constraint] = {}
+        for name, text in table.items():
+            element = f"constraints.{name}"
+            self.identifier(name, element)
+            if not isinstance(text, str):
+                self.fail(element, "expected a string such as \"dist(A1, P1) = r1\"")
+            try:
+                constraints[name] = parse_constraint(text, names=self.names, points=points)
+            except ValueError as err:
+                self.fail(element, str(err))
+            if not any(_moves_with_unknowns(p, points) for p in constraints[name].points):
+                self.fail(element, "holds no point solved together (unknown = true) nor one built on such points")
+        return constraints
+
     def check_acyclic(self, points: Mapping[str, Construction]) -> None:
         state: dict[str, str] = {}  # point -> 'active' (on the path) or 'done'
 
@@ -400,6 +425,12 @@ class _Loader:
             if outputs[name].kind == "dist" and name in taken:
                 self.fail(element, f"a distance output needs a name of its own, {name!r} is taken")
         return outputs
+
+
+def _moves_with_unknowns(point: str, points: Mapping[str, Construction]) -> bool:
+    """Whether ``point`` is solved together or built, through its references, on such a point."""
+    construction = points[point]
+    return isinstance(construction, Unknown) or any(_moves_with_unknowns(r, points) for r in construction.references)
 
 
 _DIST = re.compile(r"^\s*dist\(\s*(\w+)\s*,\s*(\w+)\s*\)\s*$")

@@ -4,7 +4,8 @@ import attrs
 import sympy
 
 from ..runtime.frozen import FrozenDict, frozen
-from .constructions import Construction
+from .constraints import Constraint
+from .constructions import Construction, Unknown
 
 __all__ = ["Scene", "Input", "Output", "range_problem", "length_range_problem"]
 
@@ -126,6 +127,13 @@ class Scene:
     # name -> (lo, hi), for sliders and sweeps
     parameter_ranges: FrozenDict[str, tuple[sympy.Rational, sympy.Rational]] = attrs.field(
         factory=FrozenDict, converter=frozen)
+    # name -> a constraint on points solved together (``unknown = true``), in file order
+    constraints: FrozenDict[str, Constraint] = attrs.field(factory=FrozenDict, converter=frozen)
+
+    @property
+    def unknown_points(self) -> tuple[str, ...]:
+        """The points solved together (``unknown = true``): a scene only ``algkin solve`` takes, for now."""
+        return tuple(n for n, c in self.points.items() if isinstance(c, Unknown))
 
     def parameter_symbols(self) -> dict[str, sympy.Symbol]:
         return {name: sympy.Symbol(name, real=True) for name in self.parameters}

@@ -81,9 +81,11 @@ def plan(scene: SceneLike, *, grid: Iterable[str] = (), random: int | None = Non
          chunk: int = CHUNK) -> Plan:
     """The sweep's job, designs and manifest, every argument checked (UsageError, SceneError)."""
     from ..scene.dump import dump_scene
+    from ..scene.compile import refuse_solved_together
     from ..scene.load import as_scene
 
     scene = as_scene(scene)
+    refuse_solved_together(scene)
     chosen = tuple(a.name for a in analyses_named(analyses))
     grid = list(grid)
     space: dict[str, Any]

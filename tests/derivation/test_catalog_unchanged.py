@@ -22,6 +22,8 @@ from algkin.scene import catalog_names
 from algkin.scene.constructions import Fixed
 
 REFERENCE = Path(__file__).with_name("catalog_before.json.gz")
+# the scenes derive and curve take (points solved together: algkin solve only, for now)
+DERIVED = [name for name in catalog_names() if not algkin.load_scene(name).unknown_points]
 
 
 def _without_timings(document: Any) -> Any:
@@ -57,11 +59,11 @@ def reference() -> dict[str, Any]:
 
 
 def test_the_reference_covers_the_catalog(reference):
-    assert sorted(reference) == sorted(catalog_names())
+    assert sorted(reference) == sorted(DERIVED)
     assert sum(len(entry["curve"]) for entry in reference.values()) >= 50
 
 
-@pytest.mark.parametrize("name", catalog_names())
+@pytest.mark.parametrize("name", DERIVED)
 def test_derive_and_curve_answer_as_before(name, reference):
     now = snapshot(name)
     assert now["derive"] == reference[name]["derive"]
@@ -71,7 +73,7 @@ def test_derive_and_curve_answer_as_before(name, reference):
 
 
 def main() -> None:
-    documents = {name: snapshot(name) for name in catalog_names()}
+    documents = {name: snapshot(name) for name in DERIVED}
     with gzip.open(REFERENCE, "wt", encoding="utf-8") as text:
         json.dump(documents, text, sort_keys=True, indent=0)
     print(f"wrote {REFERENCE.name}: {len(documents)} scenes", file=sys.stderr)

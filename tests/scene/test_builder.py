@@ -140,6 +140,8 @@ def rebuild(data, source="<scene>"):
     for name, spec in data.get("points", {}).items():
         kind = next(key for key in spec if key in CONSTRUCTIONS)
         getattr(b, kind)(name, **spec)  # the construction's key names its first argument
+    for name, text in data.get("constraints", {}).items():
+        b.constraint(name, text)
     for name, text in data.get("outputs", {}).items():
         b.output(name, text)
     return b

@@ -16,7 +16,7 @@ from ...errors import UsageError
 from ...runtime.validation import real
 from .sweep import COMMANDS as SWEEP_COMMANDS
 from .reports import (Document, Form, extremum_forms, latex_lines, render, report_accuracy, report_curve,
-                      report_derive, report_extremum, report_show, report_singular, report_toggles, verification_line,
+                      report_derive, report_extremum, report_show, report_singular, report_solve, report_toggles, verification_line,
                       terminal_safe)
 
 if TYPE_CHECKING:
@@ -341,7 +341,27 @@ def _cmd_export(args: argparse.Namespace) -> Outcome:
     return text, 0, [(pathlib.Path(args.out), code)]
 
 
+def _cmd_solve(args: argparse.Namespace) -> Outcome:
+    from ...analyses.solve import solve
+
+    found = solve(_scene_of(args), _at(args.at), mode=args.mode, digits=args.digits)
+    return render(args, found.to_json(), report_solve), 0
+
+
+def _at(texts: Sequence[str]) -> dict[str, str]:
+    """``--at NAME=VALUE``s as ``{name: value}``, each input once."""
+    at: dict[str, str] = {}
+    for text in texts:
+        name, equals, value = text.partition("=")
+        if not (equals and name.strip() and value.strip()):
+            raise UsageError("--at", text, "expected INPUT=VALUE, e.g. theta=30")
+        if name.strip() in at:
+            raise UsageError("--at", text, f"{name.strip()} given twice")
+        at[name.strip()] = value.strip()
+    return at
+
+
 COMMANDS: dict[str, Command] = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
             "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot,
             "toggles": _cmd_toggles, "singular": _cmd_singular, "accuracy": _cmd_accuracy, "bench": _cmd_bench,
-            "export": _cmd_export, **SWEEP_COMMANDS}
+            "export": _cmd_export, "solve": _cmd_solve, **SWEEP_COMMANDS}

@@ -45,6 +45,9 @@ FLAGS = {
     "scheduler": "--scheduler",
     "chunk": "--chunk",
     "out": "--out",
+    "at": "--at",  # solve's inputs
+    "mode": "--mode",
+    "digits": "--digits",
 }
 
 

@@ -256,6 +256,16 @@ def build_parser() -> argparse.ArgumentParser:
                         help="with --to latex: keep this dimension symbolic (repeatable)")
     _json(export, "the scene, the language, and the code (or the file it was written to)")
     _budget_options(export, terms=False)
+    solve = _command(commands, "solve", "every real configuration (each mode or branch) at given inputs, "
+                                        "certified in balls; none when nothing assembles there (exit 0)")
+    _scene(solve)
+    solve.add_argument("--at", action="append", default=[], metavar="INPUT=VALUE",
+                       help="an input's exact value (degrees for an angle, e.g. 30, 1/3, 22.5; a length as it "
+                            "is), one for each input")
+    solve.add_argument("--mode", metavar="LABEL", help="only the configuration of this mode or branch")
+    solve.add_argument("--digits", type=int, default=30, help="significant digits of each coordinate")
+    _json(solve)
+    _budget_options(solve, terms=False)
     bench = _command(commands, "bench", "elimination methods compared on a problem set, peers beside")
     bench.add_argument("--problems", nargs="+", help="problem names (default: the whole suite)")
     bench.add_argument("--methods", nargs="+", help="elimination methods (default: all)")

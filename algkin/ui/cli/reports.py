@@ -14,7 +14,7 @@ if TYPE_CHECKING:
 
     from ...analyses.extremum import Extremum
 
-__all__ = ["render", "report_show", "report_derive", "report_curve", "report_singular", "report_toggles",
+__all__ = ["render", "report_show", "report_derive", "report_curve", "report_singular", "report_solve", "report_toggles",
            "report_extremum", "report_accuracy", "verification_line", "latex_lines", "extremum_forms", "terminal_safe",
            "Document", "Form"]
 
@@ -184,6 +184,28 @@ def render(args: argparse.Namespace, document: Document, report: Callable[[Docum
     'a.svg\\n'
     """
     return (json.dumps(document, indent=2) if args.json else terminal_safe(report(document))) + "\n"
+
+
+def report_solve(d: Document) -> str:
+    """``algkin solve``'s text: each configuration's mode and points, or that none assembles.
+
+    >>> print(report_solve({"scene": "s", "at": {"t": "30"}, "digits": 5, "configurations": [
+    ...     {"mode": "left", "points": {"B": ["1.5", "2.4495"]}, "radius": 1e-40}]}))
+    s at t = 30: 1 configuration (5 digits, enclosures within 1e-40)
+      left: B = (1.5, 2.4495)
+    """
+    at = ", ".join(f"{n} = {v}" for n, v in d["at"].items()) or "its only configuration"
+    found = d["configurations"]
+    if not found:
+        return f"{d['scene']} at {at}: no configuration: nothing assembles there"
+    radius = max(c["radius"] for c in found)
+    lines = [f"{d['scene']} at {at}: {len(found)} configuration{'s' * (len(found) != 1)} "
+             f"({d['digits']} digits, enclosures within {radius:.2g})"]
+    if "complex_count" in d:
+        lines.append(f"  complex solutions of the group's eliminant: {d['complex_count']}")
+    lines += [f"  {c['mode']}: " + ", ".join(f"{p} = ({x}, {y})" for p, (x, y) in c["points"].items())
+              for c in found]
+    return "\n".join(lines)
 
 
 def report_show(d: Document) -> str:

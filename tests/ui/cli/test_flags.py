@@ -31,7 +31,6 @@ NOT_FROM_THE_COMMAND_LINE = {
     "equations": "eliminate.group's solve_group, from Python only: no command solves a group",
     "unknowns": "eliminate.group's solve_group, from Python only",
     "prefer": "eliminate.group's solve_group, from Python only",
-    "at": "eliminate.group's sample point, from Python only",
 }
 
 # A name given as the first argument of UsageError, or of the helpers that pass it on to one.

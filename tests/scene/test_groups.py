@@ -1,0 +1,125 @@
+"""Points solved together: the ``unknown = true`` points and ``[constraints]`` table (SPEC section 2,
+"Loops solved together, and modes"), loaded, written back, and cut into groups."""
+
+import pytest
+import sympy
+
+from algkin.errors import SceneError, UsageError
+from algkin.scene import compile_scene, dump_scene, load_scene_text
+from algkin.scene.groups import compile_groups
+
+# The SPEC's example, as written there.
+SPEC_3RPR = '''
+name = "3rpr"
+description = "3-RPR parallel manipulator: a rigid triangle on three legs."
+
+[inputs]
+r1 = { range = [5, 12], unit = "length" }      # the leg A1P1, driven
+
+[parameters]
+r2 = 9
+r3 = 8
+
+[points]
+A1 = { fixed = [0, 0] }
+A2 = { fixed = [10, 0] }
+A3 = { fixed = [3, 8] }
+P1 = { unknown = true }
+P2 = { unknown = true }
+P3 = { frame = ["P1", "P2"], at = ["1/2", "3/4"] }   # rigid with the platform side P1P2
+
+[constraints]
+leg1 = "dist(A1, P1) = r1"
+leg2 = "dist(A2, P2) = r2"
+leg3 = "dist(A3, P3) = r3"
+side = "dist(P1, P2) = 5"
+
+[outputs]
+P1 = "P1"
+'''
+
+
+def _scene(points, constraints, extra=""):
+    return load_scene_text(f"{extra}\n[points]\n{points}\n[constraints]\n{constraints}\n", "s.toml")
+
+
+def test_the_spec_example_loads_and_is_one_group_of_four_equations():
+    scene = load_scene_text(SPEC_3RPR, "3rpr.toml")
+    assert scene.unknown_points == ("P1", "P2")
+    assert load_scene_text(dump_scene(scene)) == scene
+    (group,) = compile_groups(scene).groups
+    assert group.points == ("P1", "P2") and group.unknowns == ("P1_x", "P1_y", "P2_x", "P2_y")
+    assert group.constraints == ("leg1", "leg2", "leg3", "side")
+    x1, y1, x2, y2, r1 = sympy.symbols("P1_x P1_y P2_x P2_y r1", real=True)
+    # P3 = P1 + (P2 - P1)/2 + 3/4 rot90(P2 - P1), at distance 8 from (3, 8), by hand
+    p3 = (x1 + (x2 - x1) / 2 - sympy.Rational(3, 4) * (y2 - y1), y1 + (y2 - y1) / 2 + sympy.Rational(3, 4) * (x2 - x1))
+    expected = [x1**2 + y1**2 - r1**2, (x2 - 10)**2 + y2**2 - 81, (p3[0] - 3)**2 + (p3[1] - 8)**2 - 64,
+                (x1 - x2)**2 + (y1 - y2)**2 - 25]
+    assert [sympy.expand(e - f) for e, f in zip(group.equations, expected)] == [0] * 4
+
+
+def test_a_squared_length_and_a_point_on_a_line():
+    scene = _scene('A = { fixed = [0, 0] }\nB = { fixed = [4, 0] }\nP = { unknown = true }',
+                   'a = "dist(A, P)**2 = 10"\nb = "on(P, line(A, B))"')
+    (group,) = compile_groups(scene).groups
+    x, y = sympy.symbols("P_x P_y", real=True)
+    assert list(group.equations) == [x**2 + y**2 - 10, 4 * y]
+    assert load_scene_text(dump_scene(scene)) == scene
+
+
+def test_groups_come_in_dependency_order_and_a_cycle_is_one_group():
+    """Q hangs on P (a dyad-like pair of constraints); R and S hold each other (a cycle)."""
+    scene = _scene('A = { fixed = [0, 0] }\nB = { fixed = [4, 0] }\nQ = { unknown = true }\n'
+                   'P = { unknown = true }\nR = { unknown = true }\nS = { unknown = true }',
+                   'q1 = "dist(P, Q) = 1"\nq2 = "dist(B, Q) = 2"\np1 = "dist(A, P) = 3"\np2 = "dist(B, P) = 3"\n'
+                   'r1 = "dist(A, R) = 2"\nr2 = "dist(R, S) = 2"\ns1 = "dist(B, S) = 2"\ns2 = "on(S, line(A, R))"')
+    groups = compile_groups(scene).groups
+    assert [set(g.points) for g in groups][:1] == [{"P"}]
+    assert {g.points[0]: i for i, g in enumerate(groups)}["P"] < {g.points[0]: i for i, g in enumerate(groups)}["Q"]
+    assert sorted(sorted(g.points) for g in groups) == [["P"], ["Q"], ["R", "S"]]
+
+
+@pytest.mark.parametrize(("points", "constraints", "said"), [
+    ('A = { fixed = [0, 0] }\nP = { unknown = true }', 'a = "dist(A, P) = 1"',
+     "constraints: the group of P has fewer equations than unknowns: 1 (a) for 2 (P_x, P_y)"),
+    ('A = { fixed = [0, 0] }\nB = { fixed = [1, 0] }\nC = { fixed = [0, 1] }\nP = { unknown = true }',
+     'a = "dist(A, P) = 1"\nb = "dist(B, P) = 1"\nc = "dist(C, P) = 1"',
+     "constraints: the group of P has more equations than unknowns: 3 (a, b, c) for 2 (P_x, P_y)"),
+    ('A = { fixed = [0, 0] }\nP = { unknown = true }\nQ = { unknown = true }',
+     'a = "dist(A, P) = 1"\nb = "on(P, line(A, Q))"\nc = "dist(P, Q) = 1"',
+     "the group of P, Q has fewer equations than unknowns: 3 (a, b, c) for 4"),
+])
+def test_a_group_whose_counts_differ_names_its_points_and_the_counts(points, constraints, said):
+    with pytest.raises(SceneError) as caught:
+        compile_groups(_scene(points, constraints))
+    assert said in str(caught.value) and "\n" not in str(caught.value)
+
+
+@pytest.mark.parametrize(("points", "constraints", "said"), [
+    ('P = { unknown = false }', '', "points.P.unknown: expected true"),
+    ('A = { fixed = [0, 0] }\nP = { unknown = true }', 'a = "dist(A, P) ="', "constraints.a: expected dist(P, Q) = L"),
+    ('A = { fixed = [0, 0] }\nP = { unknown = true }', 'a = "dist(A, Z) = 1"', "constraints.a: unknown point 'Z'"),
+    ('A = { fixed = [0, 0] }\nP = { unknown = true }', 'a = "dist(A, P) = -1"', "constraints.a: the length must be positive"),
+    ('A = { fixed = [0, 0] }\nP = { unknown = true }', 'a = "dist(A, P) = q"', "constraints.a: unknown name 'q'"),
+    ('A = { fixed = [0, 0] }\nB = { fixed = [1, 0] }\nP = { unknown = true }', 'a = "dist(A, B) = 1"',
+     "constraints.a: holds no point solved together"),
+    ('A = { fixed = [0, 0] }\nP = { unknown = true }', 'a = "on(P, line(A, A))"', "constraints.a: line(A, A) has no direction"),
+    ('A = { fixed = [0, 0] }\nP = { unknown = true }', 'a = 3', "constraints.a: expected a string"),
+])
+def test_bad_constraints_are_one_line_naming_the_element(points, constraints, said):
+    with pytest.raises(SceneError) as caught:
+        _scene(points, constraints)
+    assert said in str(caught.value)
+
+
+def test_a_dyad_beside_points_solved_together_is_not_supported_yet():
+    scene = _scene('A = { fixed = [0, 0] }\nB = { fixed = [4, 0] }\nP = { unknown = true }\n'
+                   'D = { dyad = ["A", "B"], lengths = [3, 3] }',
+                   'a = "dist(A, P) = 3"\nb = "dist(D, P) = 3"')
+    with pytest.raises(SceneError, match="points.D: a dyad beside points solved together"):
+        compile_groups(scene)
+
+
+def test_compile_scene_refuses_them_naming_the_command_that_takes_them():
+    with pytest.raises(UsageError, match="has points solved together \\(P1, P2\\): `algkin solve` works on it"):
+        compile_scene(load_scene_text(SPEC_3RPR, "3rpr.toml"))
