@@ -3,8 +3,9 @@ or dropped with why."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from typing import Any
 
+import attrs
 import flint
 import sympy
 
@@ -20,21 +21,27 @@ from .condition import Stationary, eliminant, stationary_condition
 from .exact import exact_point
 from .isolation import ROOT_BITS, angle_roots
 from .position import centre_name, kind, middle, position
+from ...runtime.frozen import FrozenDict
+from ..frozen import frozen_rows
 from .results import Json, Limit
 
 __all__ = ["PointLimits", "point_limits"]
 
 
-@dataclass
+def _tuple(items: Any) -> tuple[Any, ...]:
+    return tuple(items)
+
+
+@attrs.frozen
 class PointLimits:
     """One point's limit positions on every branch, the roots that are none, or why it has none."""
 
     point: str
     compiled: Compiled
     stationary: Stationary | None
-    branches: list[Branch]
-    limits: list[Limit]
-    dropped: list[Json]
+    branches: tuple[Branch, ...] = attrs.field(converter=_tuple)
+    limits: tuple[Limit, ...] = attrs.field(converter=_tuple)
+    dropped: tuple[FrozenDict[str, Any], ...] = attrs.field(converter=frozen_rows)
     skipped: str | None  # why the point has no limit positions to look for
 
 
