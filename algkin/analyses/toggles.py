@@ -16,7 +16,7 @@ points apart at every real root), and reported as dropped.
 
 >>> result = toggles("chebyshev-lambda")
 >>> result.toggles, result.grashof["class"]
-([], 'crank-rocker')
+((), 'crank-rocker')
 """
 
 from collections.abc import Mapping, Sequence
