@@ -13,16 +13,16 @@ from ...branches import Branch
 from ...derivation.prepared import prepare
 from ...evaluate import ARB, evaluate
 from ...runtime.budget import Deadline
+from ...runtime.frozen import FrozenDict
 from ...scene import Compiled
 from ...scene.model import Scene
+from ..frozen import frozen_rows
 from ..toggles import single_input
 from .certificate import CHECK_BITS, angle_values, certify, interval
 from .condition import Stationary, eliminant, stationary_condition
 from .exact import exact_point
 from .isolation import ROOT_BITS, angle_roots
 from .position import centre_name, kind, middle, position
-from ...runtime.frozen import FrozenDict
-from ..frozen import frozen_rows
 from .results import Json, Limit
 
 __all__ = ["PointLimits", "point_limits"]
