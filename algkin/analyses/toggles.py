@@ -16,13 +16,13 @@ points apart at every real root), and reported as dropped.
 
 >>> result = toggles("chebyshev-lambda")
 >>> result.toggles, result.grashof["class"]
-([], 'crank-rocker')
+((), 'crank-rocker')
 """
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
 from typing import Any, TypedDict
 
+import attrs
 import flint
 import sympy
 
@@ -41,6 +41,8 @@ from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
 from ..system import input_values, symbol
 from ..system.angles import Parametrisation
+from ..runtime.frozen import FrozenDict
+from .frozen import deep_frozen, frozen_rows, thawed
 
 __all__ = ["toggles", "Toggle", "Toggles", "grashof", "single_input"]
 
@@ -60,10 +62,10 @@ class Artefact(TypedDict):
     why: str
 
 
-@dataclass
+@attrs.frozen
 class Toggle:
     input_deg: float  # a length input's value, for a length
-    enclosure: flint.arb  # degrees (or the length)
+    enclosure: flint.arb = attrs.field(eq=False)  # degrees (or the length); balls do not hash
     point: str  # the dyad or slider
     kind: str  # extended / folded (dyad), tangent (slider)
     angle: bool = True  # False: the input is a length, its keys have no _deg
@@ -74,20 +76,25 @@ class Toggle:
                 "kind": self.kind, "certified": True}
 
 
-@dataclass
+def _toggles(toggles: Any) -> tuple[Toggle, ...]:
+    return tuple(toggles)
+
+
+@attrs.frozen
 class Toggles:
     scene: str
     input: str
     range: tuple[float, float]
-    toggles: list[Toggle]
-    grashof: Grashof | None = None
-    artefacts: list[Artefact] = field(default_factory=list)  # dropped discriminant factors, with why
+    toggles: tuple[Toggle, ...] = attrs.field(converter=_toggles)
+    grashof: FrozenDict[str, Any] | None = attrs.field(default=None, converter=deep_frozen)  # a Grashof, frozen
+    artefacts: tuple[FrozenDict[str, str], ...] = attrs.field(default=(), converter=frozen_rows)  # dropped
+    # discriminant factors (Artefact rows), with why
     unit: str = "deg"  # the range's and the toggles' unit: "deg", or "length" for a length input
 
     def to_json(self) -> dict[str, object]:
         return {"scene": self.scene, "input": self.input, "unit": self.unit, "range": list(self.range),
-                "toggles": [t.to_json() for t in self.toggles], "grashof": self.grashof,
-                "artefacts": self.artefacts}
+                "toggles": [t.to_json() for t in self.toggles], "grashof": thawed(self.grashof),
+                "artefacts": thawed(self.artefacts)}
 
 
 def _defaults(compiled: Compiled) -> dict[sympy.Symbol, sympy.Expr]:

@@ -25,7 +25,7 @@ algkin.errors.UsageError: analyses='wobble': unknown; valid: curve, grashof, tog
 from __future__ import annotations
 
 import json
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -140,7 +140,7 @@ def _transmission(design: Design) -> dict[str, Any]:
 
     output = transmission_output(design)
     found = extremum(design.scene, output)
-    exact = found.exact or {}
+    exact: Mapping[str, Any] = found.exact or {}
     row: dict[str, Any] = {"transmission_of": output}
     for key, point in (("min", found.minimum), ("max", found.maximum)):
         degrees = exact.get("minimum" if key == "min" else "maximum", (None, None))[0]

@@ -14,8 +14,8 @@ from __future__ import annotations
 import io
 import os
 import pathlib
-from collections.abc import Callable, Sequence
-from typing import TYPE_CHECKING, TypeVar, Union
+from collections.abc import Callable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any, TypeVar, Union
 
 import numpy as np
 import sympy
@@ -28,7 +28,6 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
     from ..analyses.extremum import Extremum
-    from ..analyses.extremum.closed import Region
     from ..analyses.quantities import Quantity
     from ..bench.accuracy import Accuracy
     from ..bench.row import BenchRow
@@ -140,7 +139,8 @@ def minimum_figure(quantity: Quantity, found: Extremum, parameter: str, lo: floa
     return figure
 
 
-def _within(region: Region, x: float) -> bool:
+def _within(region: Mapping[str, Any], x: float) -> bool:
+    """Whether ``x`` is in a closed form's region (a ``Region``, kept frozen)."""
     return (region["from"] is None or region["from"] <= x) and (region["to"] is None or x <= region["to"])
 
 

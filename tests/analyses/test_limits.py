@@ -156,7 +156,7 @@ def test_triple_rocker_has_limits_but_no_time_ratio():
 
 def test_a_rocker_that_turns_fully_has_no_limit_and_no_time_ratio():
     found = limits(four_bar(3, 1, "7/2", "5/2"))  # ground shortest: a double crank
-    assert found.limits == []
+    assert found.limits == ()
     assert found.time_ratio is None and "turns without stopping" in found.time_ratio_reason
 
 
@@ -168,7 +168,7 @@ def test_a_range_short_of_a_turn_has_no_time_ratio():
 
 def test_a_point_on_two_moving_points_is_skipped_with_why():
     found = limits("watt-i")  # F hangs on E and C, both moving
-    assert found.skipped == [{"point": "F", "why": "its path is not fixed: both its equations involve moving points"}]
+    assert found.skipped == ({"point": "F", "why": "its path is not fixed: both its equations involve moving points"},)
     assert {g.point for g in found.limits} == {"B"}
 
 

@@ -13,9 +13,9 @@ sqrt(b**2 + 160000) - 350
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any, Union
 
+import attrs
 import mpmath
 import sympy
 
@@ -24,6 +24,7 @@ from ...derivation.prepared import Prepared, given, prepare, require_outputs
 from ...derivation.witnesses import Groups
 from ...errors import UsageError
 from ...runtime.budget import Budget, Deadline, started
+from ...runtime.frozen import FrozenDict, frozen
 from ...scene.load import SceneLike, Values
 from ...scene.model import Input, length_range_problem, range_problem
 from ...system import symbol
@@ -42,7 +43,19 @@ __all__ = ["extremum", "extremum_of", "problem_for", "Extremum", "ClosedForm", "
            "critical_points", "points_at", "extreme", "extreme_at", "AngleScale"]
 
 
-@dataclass
+def _points(points: Any) -> tuple[CriticalPoint, ...]:
+    return tuple(points)
+
+
+def _maybe_tuple(items: Any) -> tuple[sympy.Expr, ...] | None:
+    return None if items is None else tuple(items)
+
+
+def _maybe_frozen(items: Any) -> FrozenDict[str, Exact] | None:
+    return None if items is None else frozen(items)
+
+
+@attrs.frozen
 class Extremum:
     """Critical points of an output in a range, its minimum and maximum, and closed forms."""
 
@@ -50,14 +63,18 @@ class Extremum:
     output: str
     input: str
     range: tuple[float, float]
-    parameters: dict[str, sympy.Expr]  # the dimensions the numbers are for (symbolic ones at their defaults)
-    critical_points: list[CriticalPoint]  # stationary ones then the two range ends
+    # the dimensions the numbers are for (symbolic ones at their defaults)
+    parameters: FrozenDict[str, sympy.Expr] = attrs.field(converter=frozen)
+    critical_points: tuple[CriticalPoint, ...] = attrs.field(converter=_points)  # stationary ones, the range ends
     minimum: CriticalPoint
     maximum: CriticalPoint
     closed_form: ClosedForm | None = None
-    problem: Problem | None = None
-    stationary: list[sympy.Expr] | None = None  # stationary factors in t and the symbolic dimensions
-    exact: dict[str, Exact] | None = None  # an angle output: 'minimum'/'maximum' -> (degrees, via), or Nones
+    # how it was found, not what: its parametrisation compares by identity
+    problem: Problem | None = attrs.field(default=None, eq=False)
+    # stationary factors in t and the symbolic dimensions
+    stationary: tuple[sympy.Expr, ...] | None = attrs.field(default=None, converter=_maybe_tuple)
+    # an angle output: 'minimum'/'maximum' -> (degrees, via), or Nones
+    exact: FrozenDict[str, Exact] | None = attrs.field(default=None, converter=_maybe_frozen)
 
     def to_json(self) -> dict[str, object]:
         angle = self.problem is None or self.problem.line.is_angle
@@ -218,14 +235,14 @@ def closed_in_degrees(form: ClosedForm, scale: AngleScale) -> ClosedForm:
     regions: list[Region] = []
     k = 0
     for original in form.regions:
-        region = original.copy()
+        region: Region = dict(original)  # type: ignore[assignment]  # a frozen Region, thawed to change
         if region["at"] != "nowhere":
             region["value"] = _text(values[k])
             if "sample_value" in region:
                 region["sample_value"] = float(scale.degrees(region["sample_value"]))
         k += 1
         regions.append(region)
-    return replace(form, value=scale.expr(form.value), regions=regions, region_values=values, via_value=form.value)
+    return attrs.evolve(form, value=scale.expr(form.value), regions=regions, region_values=values, via_value=form.value)
 
 
 def extreme_at(problem: Problem, stationary: Sequence[sympy.Expr], values: Mapping[sympy.Symbol, sympy.Expr],

@@ -22,8 +22,9 @@ import itertools
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Optional, TypedDict
+from typing import Any, Optional, TypedDict
 
+import attrs
 import flint
 import mpmath
 import sympy
@@ -31,8 +32,10 @@ import sympy
 from ...eliminate import eliminate
 from ...errors import ComputationError
 from ...runtime.budget import Deadline
+from ...runtime.frozen import FrozenDict
 from ...system.convert import univariate
 from ...system.roots import real_roots
+from ..frozen import frozen_rows, thawed
 from .critical import DIGITS, ROOT_BITS, CriticalPoint, Number, Problem, extreme, meeting_factors, points_at
 
 __all__ = ["ClosedForm", "closed_form", "value_factors", "Region"]
@@ -57,7 +60,11 @@ class Region(_Interval, total=False):
 MATCH = mpmath.mpf(10) ** -20
 
 
-@dataclass
+def _tuple(items: Any) -> tuple[Any, ...]:
+    return tuple(items)
+
+
+@attrs.frozen
 class ClosedForm:
     """The extremum in the parameters: value and input (degrees), and where that holds."""
 
@@ -65,15 +72,16 @@ class ClosedForm:
     input: sympy.Expr | None  # degrees; None when the root has no expression in radicals
     at: str  # 'stationary', 'dead centre' or 'endpoint'
     input_polynomial: sympy.Expr | None  # in t = tan(input/2); None at an endpoint
-    valid_when: list[str]  # in sympy syntax
-    regions: list[Region]  # one parameter: [{from, to, at, input, value, ...}], else []
-    region_values: list[sympy.Expr | None]  # each region's value as sympy: drawn without parsing the text back
+    valid_when: tuple[str, ...] = attrs.field(converter=_tuple)  # in sympy syntax
+    # one parameter: [{from, to, at, input, value, ...}] (Regions, frozen), else []
+    regions: tuple[FrozenDict[str, Any], ...] = attrs.field(converter=frozen_rows)
+    region_values: tuple[sympy.Expr | None, ...] = attrs.field(converter=_tuple)  # each region's value as sympy: drawn without parsing the text back
     via_value: sympy.Expr | None = None  # an angle output: the value of the scalar standing for it
 
     def to_json(self) -> dict[str, object]:
         document: dict[str, object] = {"value": _text(self.value), "input": _text(self.input), "at": self.at,
-                    "input_polynomial": _text(self.input_polynomial), "valid_when": self.valid_when,
-                    "regions": self.regions}
+                    "input_polynomial": _text(self.input_polynomial), "valid_when": list(self.valid_when),
+                    "regions": thawed(self.regions)}
         if self.via_value is not None:
             document["via_value"] = _text(self.via_value)
         return document

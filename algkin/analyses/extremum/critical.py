@@ -12,7 +12,7 @@ values shown as lengths where an angle's are in degrees (``input_deg`` holds eit
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Union
 
 import flint
@@ -97,7 +97,8 @@ class CriticalPoint:
     input_deg: mpmath.mpf
     value: mpmath.mpf
     kind: str  # minimum, maximum, inflection, dead centre, endpoint
-    enclosure: flint.arb | None = None  # the input in degrees; None at a range end
+    # the input in degrees; None at a range end (balls do not hash: left out of eq and hash)
+    enclosure: flint.arb | None = field(default=None, compare=False)
     via: mpmath.mpf | None = None  # an angle output: the value of the scalar standing for it (``angles``)
 
     def to_json(self) -> dict[str, object]:

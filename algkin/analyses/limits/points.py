@@ -3,8 +3,9 @@ or dropped with why."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from typing import Any
 
+import attrs
 import flint
 import sympy
 
@@ -12,8 +13,10 @@ from ...branches import Branch
 from ...derivation.prepared import prepare
 from ...evaluate import ARB, evaluate
 from ...runtime.budget import Deadline
+from ...runtime.frozen import FrozenDict
 from ...scene import Compiled
 from ...scene.model import Scene
+from ..frozen import frozen_rows
 from ..toggles import single_input
 from .certificate import CHECK_BITS, angle_values, certify, interval
 from .condition import Stationary, eliminant, stationary_condition
@@ -25,16 +28,20 @@ from .results import Json, Limit
 __all__ = ["PointLimits", "point_limits"]
 
 
-@dataclass
+def _tuple(items: Any) -> tuple[Any, ...]:
+    return tuple(items)
+
+
+@attrs.frozen
 class PointLimits:
     """One point's limit positions on every branch, the roots that are none, or why it has none."""
 
     point: str
     compiled: Compiled
     stationary: Stationary | None
-    branches: list[Branch]
-    limits: list[Limit]
-    dropped: list[Json]
+    branches: tuple[Branch, ...] = attrs.field(converter=_tuple)
+    limits: tuple[Limit, ...] = attrs.field(converter=_tuple)
+    dropped: tuple[FrozenDict[str, Any], ...] = attrs.field(converter=frozen_rows)
     skipped: str | None  # why the point has no limit positions to look for
 
 

@@ -17,9 +17,9 @@ c_angle*s_angle*(8*c_angle + 5)/(sqrt((5 - 4*c_angle)*(c_angle + 5))*(4*c_angle 
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass
 from typing import Any
 
+import attrs
 import sympy
 
 from ...derivation.pipeline import derive
@@ -29,6 +29,7 @@ from ...derivation.results import Derivation
 from ...eliminate import DEFAULT_METHOD
 from ...errors import UsageError
 from ...runtime import validation
+from ...runtime.frozen import FrozenDict, frozen
 from ...scene.load import SceneLike
 from ...system import symbol
 from .check import RatesCheck, check_rates
@@ -40,28 +41,32 @@ __all__ = ["rates", "rates_of", "check_forms", "Rates", "BranchRates", "RatesChe
 SAMPLES = 20  # inputs the rates are checked at by default
 
 
-@dataclass
+@attrs.frozen
 class BranchRates:
     """One branch's velocity and acceleration closed forms, per output coordinate (unknown)."""
 
     label: str
     selected: bool
-    velocity: dict[str, sympy.Expr]
-    acceleration: dict[str, sympy.Expr]
+    velocity: FrozenDict[str, sympy.Expr] = attrs.field(converter=frozen)
+    acceleration: FrozenDict[str, sympy.Expr] = attrs.field(converter=frozen)
 
     def to_json(self) -> dict[str, dict[str, str]]:
         return {u: {"velocity": text(v), "acceleration": text(self.acceleration[u])} for u, v in self.velocity.items()}
 
 
-@dataclass
+def _branches(branches: Any) -> tuple[BranchRates, ...]:
+    return tuple(branches)
+
+
+@attrs.frozen
 class Rates:
     """The rates of a derivation's outputs: per branch closed forms, and their check."""
 
     derivation: Derivation
     input: str  # the input the derivatives are taken in
-    branches: list[BranchRates]
+    branches: tuple[BranchRates, ...] = attrs.field(converter=_branches)
     verification: RatesCheck
-    timings: dict[str, float]
+    timings: FrozenDict[str, float] = attrs.field(converter=frozen, eq=False)  # how long, not what
     per: str = "radian"  # "radian" for an input angle, "length" for a length input
 
     def to_json(self) -> dict[str, Any]:

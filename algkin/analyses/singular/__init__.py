@@ -29,19 +29,21 @@ from __future__ import annotations
 
 import time
 from collections.abc import Sequence
-from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, TypedDict, Union
 
+import attrs
 import flint
 import sympy
 
 from ...errors import ComputationError, UsageError
 from ...runtime.budget import Budget, Deadline, started
+from ...runtime.frozen import FrozenDict, frozen
 from ...system.convert import flint_context, to_flint, to_flint_integer
 from .exact import ENCLOSURE_BITS, Coordinate, coordinates, polynomial_text
-from .local import Local, describe, multiplicity, shift
+from .local import describe, multiplicity, shift
 from .numberfield import RealRoot
 from .locate import ExactPoint, locate, top_form
+from ..frozen import deep_frozen, frozen_rows, thawed
 
 if TYPE_CHECKING:
     from ...derivation.pipeline import CurveResult
@@ -63,14 +65,14 @@ class ComplexPoints(TypedDict):
     representation: Representation
 
 
-@dataclass
+@attrs.frozen
 class SingularPoint:
     """One real singular point: coordinates (each exact, as a ball and a float) and local type."""
 
     x: Coordinate
     y: Coordinate
-    local: Local
-    representation: Representation
+    local: FrozenDict[str, Any] = attrs.field(converter=deep_frozen)  # a Local, frozen
+    representation: FrozenDict[str, Union[str, int]] = attrs.field(converter=frozen)  # a Representation
 
     @property
     def kind(self) -> str:
@@ -83,14 +85,18 @@ class SingularPoint:
     def to_json(self) -> dict[str, Any]:
         return {"x": self.x.value, "y": self.y.value, "kind": self.kind, "multiplicity": self.multiplicity,
                 "a_k": self.local["a_k"], "hessian_sign": self.local["hessian_sign"],
-                "real_branches": self.local["real_branches"], "tangents": self.local["tangents"],
+                "real_branches": self.local["real_branches"], "tangents": thawed(self.local["tangents"]),
                 "enclosure": {"x": self.x.ball.str(20), "y": self.y.ball.str(20)},
                 "exact": {"x": str(self.x.exact), "y": str(self.y.exact)},
                 "minimal_polynomials": {"x": str(self.x.minimal), "y": str(self.y.minimal)},
-                "representation": self.representation, "certified": True}
+                "representation": dict(self.representation), "certified": True}
 
 
-@dataclass
+def _points(points: Any) -> tuple[SingularPoint, ...]:
+    return tuple(points)
+
+
+@attrs.frozen
 class Singularities:
     """The singular points of a curve: the real ones in full, the complex ones counted."""
 
@@ -98,10 +104,11 @@ class Singularities:
     variables: tuple[str, str]
     degree: int
     circularity: int
-    points: list[SingularPoint]
-    complex: list[ComplexPoints]
-    timings: dict[str, float] = field(default_factory=dict)
-    source: dict[str, object] = field(default_factory=dict)  # scene, point, verification: when from a scene
+    points: tuple[SingularPoint, ...] = attrs.field(converter=_points)
+    complex: tuple[FrozenDict[str, Any], ...] = attrs.field(converter=frozen_rows)  # ComplexPoints, frozen
+    timings: FrozenDict[str, float] = attrs.field(default=FrozenDict(), converter=frozen, eq=False)
+    # scene, point, verification: when from a scene
+    source: FrozenDict[str, Any] = attrs.field(default=FrozenDict(), converter=deep_frozen)
 
     @property
     def counts(self) -> dict[str, int]:
@@ -113,10 +120,10 @@ class Singularities:
         return dict(sorted(counts.items()), complex=sum(c["count"] for c in self.complex))
 
     def to_json(self) -> dict[str, Any]:
-        return {**self.source, "variables": list(self.variables), "curve": str(self.curve),
+        return {**thawed(self.source), "variables": list(self.variables), "curve": str(self.curve),
                 "degree": self.degree, "circularity": self.circularity, "counts": self.counts,
                 "singular_points": [p.to_json() for p in self.points],
-                "complex_singular_points": self.complex, "timings": self.timings}
+                "complex_singular_points": thawed(self.complex), "timings": dict(self.timings)}
 
 
 def singular(scene: SceneLike, point: str, *, set: Values | None = None,  # noqa: A002 - the public name (--set)
@@ -131,10 +138,9 @@ def singular(scene: SceneLike, point: str, *, set: Values | None = None,  # noqa
     traced = curve(scene, point, samples=samples, seed=seed, set=set, budget=deadline)
     deadline.note(f"finding the singular points of the curve of {point} in {traced.compiled.scene.name}")
     found = singular_points(traced)
-    found.source = {"scene": traced.compiled.scene.name, "point": point,
-                    "curve_verification": traced.verification.to_json()}
-    found.timings = {"curve": traced.timings["total"], **found.timings}
-    return found
+    return attrs.evolve(found, source={"scene": traced.compiled.scene.name, "point": point,
+                                       "curve_verification": traced.verification.to_json()},
+                        timings={"curve": traced.timings["total"], **found.timings})
 
 
 def singular_points(curve: sympy.Expr | CurveResult, variables: Sequence[str] | None = None) -> Singularities:

@@ -19,8 +19,7 @@ overlaps alone (a rational as itself, a quadratic's root in radicals).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
+import attrs
 import flint
 import sympy
 
@@ -34,12 +33,12 @@ __all__ = ["Coordinate", "coordinates", "minimal_polynomial", "polynomial_text",
 ENCLOSURE_BITS = 192
 
 
-@dataclass
+@attrs.frozen
 class Coordinate:
     """One coordinate of a real singular point: float, certified ball, exact value, minimal polynomial."""
 
     value: float
-    ball: flint.arb
+    ball: flint.arb = attrs.field(eq=False)  # balls do not hash: the exact value says which point
     exact: sympy.Expr
     minimal: sympy.Expr
 

@@ -22,8 +22,7 @@ through a vanishing leading coefficient.
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
-from dataclasses import dataclass
-
+import attrs
 import flint
 
 from ...errors import ComputationError
@@ -34,7 +33,7 @@ __all__ = ["ExactPoint", "locate", "top_form"]
 MAX_SHEARS = 40
 
 
-@dataclass
+@attrs.frozen
 class ExactPoint:
     """A class of conjugate singular points: for each root ``t`` of ``field.minimal``, the
     point ``(x(t), y(t))``; ``t = x + shear*y``."""

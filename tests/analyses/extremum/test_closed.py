@@ -35,7 +35,7 @@ def test_value_in_b_is_the_hand_formula(in_b):
 
 def test_minimiser_never_leaves_0_180_for_any_b(in_b):
     # a = 400 > 0 keeps atan2(a, b) inside (0, 180) for every b.
-    assert in_b.valid_when == ["every real b"]
+    assert in_b.valid_when == ("every real b",)
     assert [r["at"] for r in in_b.regions] == ["stationary"]
 
 
@@ -58,7 +58,7 @@ def test_minimiser_leaving_the_range_is_reported_with_the_endpoint():
     # Over [0, 90] the minimiser atan2(400, b) leaves the range for b < 0; the minimum is then
     # at 90 deg, where A = (350, 0): |AB| = sqrt(50**2 + b**2).
     form = extremum("arm-string", "AB", (0, 90), params=["b"]).closed_form
-    assert form.valid_when == ["b > 0"]
+    assert form.valid_when == ("b > 0",)
     below, above = form.regions
     assert (below["from"], below["to"], below["at"], below["input"]) == (None, 0.0, "endpoint", "90")
     assert sympy.simplify(sympy.sympify(below["value"], locals={"b": b}) - sympy.sqrt(b**2 + 2500)) == 0

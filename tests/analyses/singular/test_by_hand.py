@@ -85,7 +85,7 @@ def test_nodes_sharing_their_x_need_a_shear():
 def test_a_circle_is_smooth():
     """x² + y² - 1: F_x = 2x, F_y = 2y vanish only at the origin, off the circle."""
     found = singular_points(x**2 + y**2 - 1)
-    assert (found.points, found.complex, found.degree, found.circularity) == ([], [], 2, 1)
+    assert (found.points, found.complex, found.degree, found.circularity) == ((), (), 2, 1)
 
 
 def test_tacnode_is_reported_as_such():
@@ -126,7 +126,7 @@ def test_triple_point_with_one_real_tangent():
 def test_complex_nodes_are_counted_not_listed():
     """(x² + 1)² + y² - ... : y² + (x² + 1)²(x - 5) has nodes at x = ±i (y = 0), not real."""
     found = singular_points(y**2 + (x**2 + 1)**2 * (x - 5))
-    assert found.points == []
+    assert found.points == ()
     assert [(c["count"], c["multiplicity"]) for c in found.complex] == [(2, 2)]
 
 
