@@ -63,6 +63,7 @@ def test_the_reference_covers_the_catalog(reference):
     assert sum(len(entry["curve"]) for entry in reference.values()) >= 50
 
 
+@pytest.mark.slow  # 40 s: the whole catalog derived and every curve traced (CI runs the slow set too)
 @pytest.mark.parametrize("name", DERIVED)
 def test_derive_and_curve_answer_as_before(name, reference):
     now = snapshot(name)
