@@ -208,6 +208,7 @@ def test_six_bar_rocker_limits_are_where_its_angular_velocity_vanishes():
 lengths = st.fractions(min_value=Fraction(1, 2), max_value=8, max_denominator=12)
 
 
+@pytest.mark.slow  # one of the largest property runs (10-25 s): the slow set, which CI runs
 @settings(max_examples=12, deadline=None)
 @given(st.lists(lengths, min_size=4, max_size=4, unique=True), st.permutations([0, 1, 2]))
 def test_random_crank_rockers_match_the_law_of_cosines(drawn, order):

@@ -1,5 +1,6 @@
 """Closed forms match the independent numeric solution (``algkin.verify``) on every branch."""
 
+import pytest
 from hypothesis import given, settings, strategies as st
 
 from algkin.derivation.pipeline import derive
@@ -8,6 +9,7 @@ from algkin.testing import strategies
 SAMPLES = 2
 
 
+@pytest.mark.slow  # one of the largest property runs (10-25 s): the slow set, which CI runs
 @settings(max_examples=60)
 @given(strategies.scenes(), st.integers(0, 2**16))
 def test_branches_match_numeric_solutions(scene, seed):
@@ -31,6 +33,7 @@ def test_every_branch_is_compared_when_the_crank_turns(scene, seed):
     assert verification.compared == 2 * verification.samples >= 2 * SAMPLES
 
 
+@pytest.mark.slow  # one of the largest property runs (10-25 s): the slow set, which CI runs
 @settings(max_examples=30)
 @given(strategies.with_symbolic(max_symbols=2), st.integers(0, 2**16))
 def test_symbolic_closed_forms_at_the_defaults(scene_and_params, seed):

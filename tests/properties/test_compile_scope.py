@@ -37,6 +37,7 @@ INVERSORS = {  # output -> (unknowns, parameters), where they differ from the fo
 }
 
 
+@pytest.mark.slow  # one of the largest property runs (10-25 s): the slow set, which CI runs
 @settings(max_examples=590)
 @given(strategies.scenes(), st.sampled_from(sorted(NEEDS)))
 def test_only_what_the_output_needs(scene, output):
