@@ -270,12 +270,32 @@ def report_derive(d: Document) -> str:
         mark = "  (scene's choice)" if branch["selected"] else ""
         lines.append(f"  [{branch['label']}]{mark} valid when {_brief(branch['valid_when'])}")
         lines += [f"      {u} = {_brief(v)}" for u, v in branch["values"].items()]
+    for mode in d.get("modes", ()):
+        lines += _mode_lines(mode)
     lines.append(verification_line(d["verification"]))
     forms = [*d["eliminants"].values(), *(f for b in d["branches"] for f in (b["valid_when"], *b["values"].values()))]
     if "rates" in d:
         lines += _rates_lines(d)
         forms += [f for b in d["rates"].values() for r in b.values() for f in r.values()]
     return "\n".join(lines + [_timings_line(d["timings"])] + _hint(forms))
+
+
+def _mode_lines(mode: Document) -> list[str]:
+    """A named mode: where it was named, the factor it traces, its pieces (each the branch whose
+    closed forms are above) and its change points."""
+    at = ", ".join(f"{n} = {v}" for n, v in mode["at"].items())
+    near = ", ".join(mode["near"])
+    lines = [f"named mode of {mode['point']} (at {at}, near [{near}]), on the factor {_brief(mode['factor'])} "
+             f"of its curve:"]
+    for piece in mode["pieces"]:
+        lo, hi = (piece.get(k, piece.get(k.replace("deg", "length"))) for k in ("from_deg", "to_deg"))
+        what = f"[{piece['branch']}]" if piece["branch"] else piece["status"]
+        lines.append(f"  {lo:.6g} to {hi:.6g}: {what}")
+    for change in mode["change_points"]:
+        where = change.get("enclosure_deg", change.get("enclosure_length"))
+        lines.append(f"  change point at {where} (a root of {change['polynomial']}): {mode['point']} "
+                     f"{change['from']} -> {change['to']}")
+    return lines
 
 
 def _rates_lines(d: Document) -> list[str]:
@@ -306,6 +326,10 @@ def report_curve(d: Document) -> str:
              f"{d['coefficient_bits']}-bit coefficients",
              f"dropped {len(d['dropped_factors'])} extraneous factor(s):"]
     lines += [f"  {_brief(f)}" for f in d["dropped_factors"]]
+    for mode in d.get("modes", ()):
+        at = ", ".join(f"{n} = {v}" for n, v in mode["at"].items())
+        lines.append(f"on the named mode of {mode['point']} (at {at}, near [{', '.join(mode['near'])}]): "
+                     f"{len(d['other_modes_dropped'])} of the dropped factors are other modes' paths")
     lines += [verification_line(d["verification"]), _timings_line(d["timings"])]
     return "\n".join(lines + _hint([d["curve"], *d["dropped_factors"]]))
 
