@@ -45,7 +45,7 @@ on every piece (no change points), as a ``branch`` would.
 >>> [(p.labels["C"], round(p.lo, 2), round(p.hi, 2)) for p in followed[0].pieces if p.status == "mode"]
 [('left', 0.0, 75.52), ('right', 284.48, 300.0), ('left', 300.0, 360.0)]
 >>> [(c.enclosure.str(8), c.polynomial) for c in followed[0].change_points]
-[('[300.00000 +/- 4.31e-10]', '3*t_angle**2 - 1')]
+[('[300.00000 +/- 1e-10]', '3*t_angle**2 - 1')]
 """
 
 from __future__ import annotations
