@@ -78,7 +78,7 @@ from .tasks import Eliminant
 from .witnesses import Groups, sampled_witnesses
 
 __all__ = ["resolve_modes", "follow_modes", "Followed", "Piece", "ChangePoint", "moded_points", "mode_witnesses",
-           "other_modes", "BITS"]
+           "other_modes", "on_mode", "BITS"]
 
 BITS = 128
 CLOSE = 4  # near is close to a configuration within 1/CLOSE of the distance between the two
@@ -225,7 +225,7 @@ class Followed:
 
     point: str
     mode: Mode
-    factor: str
+    factor: sympy.Expr  # in the point's coordinates, the dimensions at their values
     pieces: tuple[Piece, ...]
     change_points: tuple[ChangePoint, ...]
     unit: str
@@ -240,7 +240,7 @@ class Followed:
 
     def to_json(self) -> dict[str, Any]:
         at = {n: str(v) for n, v in self.mode.at}
-        return {"point": self.point, "at": at, "near": [str(v) for v in self.mode.near], "factor": self.factor,
+        return {"point": self.point, "at": at, "near": [str(v) for v in self.mode.near], "factor": str(self.factor),
                 "pieces": [p.to_json(self.unit) for p in self.pieces if p.status != "no-assembly"],
                 "change_points": [c.to_json(self.unit) for c in self.change_points]}
 
@@ -265,7 +265,7 @@ def _follow(scene: Scene, point: str, deadline: Deadline | None) -> Followed:
         named = next(b for b in pair if b.labels[point] == construction.branch)
         factor = _factor_at(factors, named, _spec(compiled, point), values, scene.source)
         if len(compiled.system.inputs) != 1:
-            return Followed(point, mode, str(factor), (), (), "deg")
+            return Followed(point, mode, factor, (), (), "deg")
         (name, variables), = compiled.system.inputs.items()
         line = Parametrisation(tuple(symbol(v) for v in variables),
                                symbol(f"t_{name}") if len(variables) == 2 else symbol(name))
@@ -273,7 +273,13 @@ def _follow(scene: Scene, point: str, deadline: Deadline | None) -> Followed:
         cuts = _cuts(compiled, pair[0], line, spec.span, deadline)
         pieces = [_piece(compiled, pair, point, factor, lo, hi) for (lo, _), (hi, _) in zip(cuts, cuts[1:])]
     merged, changes = _joined(pieces, cuts, point)
-    return Followed(point, mode, str(factor), tuple(merged), tuple(changes), spec.unit)
+    return Followed(point, mode, factor, tuple(merged), tuple(changes), spec.unit)
+
+
+def on_mode(followed: Followed, values: Mapping[str, flint.arb]) -> bool:
+    """Whether a configuration (name -> ball: its point's coordinates, the dimensions) may be on the
+    named mode: False where the ball of the mode's factor excludes 0 (certified off it)."""
+    return bool(evaluate(followed.factor, values, ARB).contains(0))
 
 
 def _curve_factors(compiled: Compiled, branches: Sequence[Branch], point: str,
@@ -422,11 +428,11 @@ def mode_witnesses(compiled: Compiled, followed: Followed) -> Groups:
     return tuple(groups)
 
 
-def other_modes(elimination: Eliminant, groups: Groups) -> tuple[str, ...]:
+def other_modes(elimination: Eliminant, groups: Groups) -> tuple[sympy.Expr, ...]:
     """The factors a curve on a named mode dropped that vanish at some branch's witnesses in
     ``groups`` (the scene's every branch): those the other modes trace, not extraneous ones."""
     engine, dropped = elimination.engine, elimination.raw_dropped
     if engine is None or not dropped:
         return ()
     traced, _ = select_factors(engine, dropped, groups, check=False)
-    return tuple(str(engine.to_sympy(engine.primitive(f))) for f in traced)
+    return tuple(engine.to_sympy(engine.primitive(f)) for f in traced)

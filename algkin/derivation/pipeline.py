@@ -159,15 +159,14 @@ def _curve(source: _Source, engine: Engine, *, point: str, deadline: Deadline, s
     deadline.note(f"verifying the curve of {point} in {compiled.scene.name}")
     with timed(timings, "verify"):
         if others:  # every branch is checked: on the curve of the whole motion, the other modes' factors with it
-            traced = [sympy.parse_expr(f) for f in others]
             verification = verify_prepared(prepared, samples=engine.samples, seed=engine.seed,
-                                           polynomials={"curve": sympy.Mul(result.polynomial, *traced)},
-                                           factors={"curve": [*result.factors, *traced]})
+                                           polynomials={"curve": sympy.Mul(result.polynomial, *others)},
+                                           factors={"curve": [*result.factors, *others]})
         else:
             verification = _verify(prepared, engine, {"curve": result})
     timings["total"] = time.perf_counter() - start
     return CurveResult(compiled, point, variables, result, degree, circularity, len(result.raw_factors or ()) == 1,
-                       verification, timings, modes, others)
+                       verification, timings, modes, tuple(str(f) for f in others))
 
 
 def _prepared_for_curve(source: _Source, point: str, deadline: Deadline) -> Prepared:

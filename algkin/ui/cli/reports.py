@@ -196,8 +196,10 @@ def report_solve(d: Document) -> str:
     """
     at = ", ".join(f"{n} = {v}" for n, v in d["at"].items()) or "its only configuration"
     found = d["configurations"]
+    named = [f"on the mode the scene names for {', '.join(d['named_modes'])}: {d['left_out']} configuration"
+             f"{'s' * (d['left_out'] != 1)} of other modes left out"] if d.get("named_modes") else []
     if not found:
-        return f"{d['scene']} at {at}: no configuration: nothing assembles there"
+        return "\n".join([f"{d['scene']} at {at}: no configuration: nothing assembles there"] + named)
     radius = max(c["radius"] for c in found)
     lines = [f"{d['scene']} at {at}: {len(found)} configuration{'s' * (len(found) != 1)} "
              f"({d['digits']} digits, enclosures within {radius:.2g})"]
@@ -205,7 +207,7 @@ def report_solve(d: Document) -> str:
         lines.append(f"  complex solutions of the group's eliminant: {d['complex_count']}")
     lines += [f"  {c['mode']}: " + ", ".join(f"{p} = ({x}, {y})" for p, (x, y) in c["points"].items())
               for c in found]
-    return "\n".join(lines)
+    return "\n".join(lines + named)
 
 
 def report_show(d: Document) -> str:
