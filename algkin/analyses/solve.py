@@ -131,12 +131,7 @@ def _on_named(compiled: Compiled, branch: Branch, at: Mapping[str, Fraction], na
     factor is certified nonzero at its point there (another mode)."""
     with flint.ctx.workprec(MODE_BITS):
         values = _ball_inputs(compiled, at)
-        for followed in named:
-            x, y = (f"{followed.point}_{c}" for c in "xy")
-            point = {x: evaluate(branch.values[x], values, ARB), y: evaluate(branch.values[y], values, ARB)}
-            if not on_mode(followed, point):
-                return False
-    return True
+        return all(on_mode(followed, branch, values) for followed in named)
 
 
 def _inputs(scene: Scene, used: Iterable[str], at: Mapping[str, Any]) -> dict[str, Fraction]:

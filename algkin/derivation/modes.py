@@ -220,12 +220,15 @@ class Piece:
 
 @attrs.frozen
 class Followed:
-    """A named mode followed: its point, where it was named, the factor of the point's curve it
-    traces, and its pieces and change points over the input's range (none with several inputs)."""
+    """A named mode followed: its point, where it was named and its ``label`` there, the factor of
+    the point's curve it traces (None where no factor tells the two modes apart: an irreducible
+    curve, or several inputs), and its pieces and change points over the input's range (none with
+    several inputs)."""
 
     point: str
     mode: Mode
-    factor: sympy.Expr  # in the point's coordinates, the dimensions at their values
+    label: str
+    factor: sympy.Expr | None  # in the point's coordinates, the dimensions at their values
     pieces: tuple[Piece, ...]
     change_points: tuple[ChangePoint, ...]
     unit: str
@@ -240,7 +243,9 @@ class Followed:
 
     def to_json(self) -> dict[str, Any]:
         at = {n: str(v) for n, v in self.mode.at}
-        return {"point": self.point, "at": at, "near": [str(v) for v in self.mode.near], "factor": str(self.factor),
+        factor = None if self.factor is None else str(self.factor)
+        return {"point": self.point, "at": at, "near": [str(v) for v in self.mode.near], "label_at": self.label,
+                "factor": factor,
                 "pieces": [p.to_json(self.unit) for p in self.pieces if p.status != "no-assembly"],
                 "change_points": [c.to_json(self.unit) for c in self.change_points]}
 
@@ -256,30 +261,35 @@ def _follow(scene: Scene, point: str, deadline: Deadline | None) -> Followed:
     compiled = compile_scene(scene, [point])
     construction = scene.points[point]
     assert isinstance(construction, (Dyad, Slider)) and construction.mode is not None
-    mode = construction.mode
+    mode, label = construction.mode, construction.branch
+    if len(compiled.system.inputs) != 1:  # a region, not a curve: the mode is its label at ``at``
+        return Followed(point, mode, label, None, (), (), "deg")
     branches = closed_forms(compiled)
     pair = _pair(compiled, branches, point)
     factors = _curve_factors(compiled, branches, point, deadline)
     with flint.ctx.workprec(BITS):
         values = _values(compiled, {n: _ball(compiled, n, v) for n, v in mode.at if n in compiled.system.inputs})
-        named = next(b for b in pair if b.labels[point] == construction.branch)
-        factor = _factor_at(factors, named, _spec(compiled, point), values, scene.source)
-        if len(compiled.system.inputs) != 1:
-            return Followed(point, mode, factor, (), (), "deg")
+        named = next(b for b in pair if b.labels[point] == label)
+        factor = _factor_at(factors, named, _spec(compiled, point), values, scene.source) if len(factors) > 1 else None
         (name, variables), = compiled.system.inputs.items()
         line = Parametrisation(tuple(symbol(v) for v in variables),
                                symbol(f"t_{name}") if len(variables) == 2 else symbol(name))
         spec = scene.inputs[name]
         cuts = _cuts(compiled, pair[0], line, spec.span, deadline)
-        pieces = [_piece(compiled, pair, point, factor, lo, hi) for (lo, _), (hi, _) in zip(cuts, cuts[1:])]
+        pieces = [_piece(compiled, pair, point, factor or label, lo, hi) for (lo, _), (hi, _) in zip(cuts, cuts[1:])]
     merged, changes = _joined(pieces, cuts, point)
-    return Followed(point, mode, factor, tuple(merged), tuple(changes), spec.unit)
+    return Followed(point, mode, label, factor, tuple(merged), tuple(changes), spec.unit)
 
 
-def on_mode(followed: Followed, values: Mapping[str, flint.arb]) -> bool:
-    """Whether a configuration (name -> ball: its point's coordinates, the dimensions) may be on the
-    named mode: False where the ball of the mode's factor excludes 0 (certified off it)."""
-    return bool(evaluate(followed.factor, values, ARB).contains(0))
+def on_mode(followed: Followed, branch: Branch, values: Mapping[str, flint.arb]) -> bool:
+    """Whether ``branch``'s configuration at ``values`` (the inputs' variables and the dimensions,
+    in balls) may be on the named mode: False where the ball of the mode's factor at its point
+    excludes 0 (certified off it); without a factor, whether the branch has the named label."""
+    if followed.factor is None:
+        return branch.labels[followed.point] == followed.label
+    x, y = (f"{followed.point}_{c}" for c in "xy")
+    point = dict(values, **{x: evaluate(branch.values[x], values, ARB), y: evaluate(branch.values[y], values, ARB)})
+    return bool(evaluate(followed.factor, point, ARB).contains(0))
 
 
 def _curve_factors(compiled: Compiled, branches: Sequence[Branch], point: str,
@@ -368,9 +378,10 @@ def _eliminated(compiled: Compiled, condition: sympy.Expr, spec: ImplicitSpec, d
                      budget=deadline).polynomial
 
 
-def _piece(compiled: Compiled, pair: tuple[Branch, Branch], point: str, factor: sympy.Expr,
+def _piece(compiled: Compiled, pair: tuple[Branch, Branch], point: str, factor: sympy.Expr | str,
            lo: float, hi: float) -> Piece:
-    """The piece between two cuts, decided at its middle."""
+    """The piece between two cuts, decided at its middle: the branch whose point lies on the mode's
+    ``factor`` there, or (where no factor tells the modes apart) the one with the named label."""
     spec = _spec(compiled, point)
     (name, _), = compiled.system.inputs.items()
     middle = flint.arb((lo + hi) / 2)
@@ -379,6 +390,10 @@ def _piece(compiled: Compiled, pair: tuple[Branch, Branch], point: str, factor: 
     status = _assembles(pair[0], values)
     if status != "yes":
         return Piece(lo, hi, "no-assembly" if status == "no" else "undecided", {})
+    chain = {s.point for s in compiled.implicit if s.labels}
+    if isinstance(factor, str):
+        named = next(b for b in pair if b.labels[point] == factor)
+        return Piece(lo, hi, "mode", {p: l for p, l in named.labels.items() if p in chain})
     on = []
     for branch in pair:
         x, y = _place(branch, spec, values)
@@ -389,7 +404,6 @@ def _piece(compiled: Compiled, pair: tuple[Branch, Branch], point: str, factor: 
     if holds == [True, True]:
         return Piece(lo, hi, "undecided", {})
     chosen = pair[holds.index(True)]
-    chain = {s.point for s in compiled.implicit if s.labels}
     return Piece(lo, hi, "mode", {p: l for p, l in chosen.labels.items() if p in chain})
 
 

@@ -287,8 +287,10 @@ def _mode_lines(mode: Document) -> list[str]:
     closed forms are above) and its change points."""
     at = ", ".join(f"{n} = {v}" for n, v in mode["at"].items())
     near = ", ".join(mode["near"])
-    lines = [f"named mode of {mode['point']} (at {at}, near [{near}]), on the factor {_brief(mode['factor'])} "
-             f"of its curve:"]
+    traced = f"on the factor {_brief(mode['factor'])} of its curve" if mode["factor"] else \
+        f"{mode['label_at']} (no factor of its curve tells its modes apart: the label is held)" if mode["pieces"] else \
+        f"{mode['label_at']} (not followed: it moves with several inputs)"
+    lines = [f"named mode of {mode['point']} (at {at}, near [{near}]), {traced}:"]
     for piece in mode["pieces"]:
         lo, hi = (piece.get(k, piece.get(k.replace("deg", "length"))) for k in ("from_deg", "to_deg"))
         what = f"[{piece['branch']}]" if piece["branch"] else piece["status"]
