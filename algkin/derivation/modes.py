@@ -38,7 +38,14 @@ takes the named mode.
    its irreducible polynomial in ``t`` and its certified enclosure in the input's unit.
 
 Where the point's curve is irreducible, no factor tells two modes apart: the named label holds
-on every piece (no change points), as a ``branch`` would.
+on every piece (no change points), as a ``branch`` would; so it does, not followed, on a point
+that moves with several inputs.
+
+**Using it.** ``derive`` reports each named mode (``follow_modes``) with the branch that is the
+mode on each piece; ``curve`` takes its witness configurations from the mode's pieces alone
+(``mode_witnesses``), so the elimination keeps the factors the mode traces and drops the others
+(``other_modes`` tells those from extraneous ones); ``algkin solve`` leaves out the
+configurations certified off the factor (``on_mode``).
 
 >>> from algkin.scene import load_scene
 >>> followed = follow_modes(resolve_modes(load_scene("hart-inversor")))
@@ -111,8 +118,11 @@ def resolve_modes(scene: Scene) -> Scene:
 def _named_label(scene: Scene, point: str, mode: Mode) -> str:
     compiled = compile_scene(scene, [point])
     spec = _spec(compiled, point)
-    pair = _pair(compiled, closed_forms(compiled), point)
     element = f"points.{point}.mode"
+    if not spec.labels:  # the other intersection of two circles through an earlier point: no choice to name
+        raise SceneError(scene.source, element, f"{point}'s circles pass through an earlier point: it is their other "
+                         "intersection, with no mode of its own to name (give its branch)")
+    pair = _pair(compiled, closed_forms(compiled), point)
     at = dict(mode.at)
     shown = ", ".join(f"{n} = {scene.inputs[n].shown(float(v))}" for n, v in mode.at)
     with flint.ctx.workprec(BITS):
@@ -322,24 +332,29 @@ def _cuts(compiled: Compiled, branch: Branch, line: Parametrisation, span: tuple
     """The range's ends and, between them, every root of the chain's toggle conditions where the
     chain is not certified apart, ascending: (input, its root) pairs, the ends' root None."""
     lo, hi = span
-    found: dict[float, ChangeRoot] = {}
+    found: dict[tuple[str, int, int], ChangeRoot] = {}  # (polynomial, rank among its real roots, turn) -> cut
     for spec in compiled.implicit:
         if not spec.labels:
             continue
         for condition in algebra_of(spec).toggle_conditions().values():
             polynomial = _eliminated(compiled, condition, spec, deadline)
             numerator = line.numerator(polynomial)
-            roots = [(line.shown(r.refined(2 * BITS).ball), str(sympy.Poly(list(reversed(r.coefficients)), line.t).as_expr()))
+            roots = [(line.shown(r.refined(2 * BITS).ball), _in_t(r.coefficients, line.t), r.index)
                      for r in real_roots(univariate(numerator, line.t))] if numerator.has(line.t) else []
-            roots += [(ball, f"{line.t} = oo (a half turn)") for ball in line.at_infinity(polynomial)]
-            for ball, exact in roots:
-                for shown in (ball + turn for turn in line.turns):
-                    mid = float(shown.mid())
-                    if lo < mid < hi and _assembles(branch, _at(compiled, shown, line)) != "no":
-                        found.setdefault(round(mid, 9), ChangeRoot(shown, exact))
+            roots += [(ball, f"{line.t} = oo (a half turn)", 0) for ball in line.at_infinity(polynomial)]
+            for ball, exact, index in roots:
+                for turn in line.turns:
+                    shown = ball + turn
+                    if lo < float(shown.mid()) < hi and _assembles(branch, _at(compiled, shown, line)) != "no":
+                        found[exact, index, turn] = ChangeRoot(shown, exact)
     cuts: list[tuple[float, ChangeRoot | None]] = [(lo, None)]
-    cuts += [(float(found[k].ball.mid()), found[k]) for k in sorted(found)]
+    cuts += sorted(((float(root.ball.mid()), root) for root in found.values()), key=lambda cut: cut[0])
     return cuts + [(hi, None)]
+
+
+def _in_t(coefficients: Sequence[int], t: sympy.Symbol) -> str:
+    """An irreducible polynomial (coefficients low to high) as text in ``t``."""
+    return str(sympy.Poly(list(reversed(coefficients)), t).as_expr())
 
 
 @attrs.frozen

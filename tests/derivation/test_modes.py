@@ -90,3 +90,10 @@ def test_a_mode_named_where_its_two_configurations_meet_is_refused():
 def test_several_inputs_need_a_table_for_at():
     with pytest.raises(SceneError, match=r"points\.P\.mode\.at: expected a table \{ t1 = \.\., t2 = \.\. \}"):
         scene_with("five-bar", 'branch = "left" }', "mode = { at = 90, near = [1, 4] } }")
+
+
+def test_the_other_intersection_of_two_circles_has_no_mode_to_name():
+    scene = scene_with("peaucellier-lipkin", 'lengths = ["s", "s"], branch = "left" }',
+                       'lengths = ["s", "s"], mode = { at = 0, near = [3, 0] } }')
+    with pytest.raises(SceneError, match=r"points\.P\.mode: P's circles pass through an earlier point"):
+        resolve_modes(scene)
