@@ -439,14 +439,14 @@ def _joined(pieces: Sequence[Piece], cuts: Sequence[tuple[float, ChangeRoot | No
     return merged, changes
 
 
-def mode_witnesses(compiled: Compiled, followed: Followed) -> Groups:
-    """Witness configurations on the named mode alone, a group per piece (``compiled``'s branches
-    with the piece's labels, the other points on their own): the curve keeps the mode's factors."""
+def mode_witnesses(compiled: Compiled, branches: Sequence[Branch], followed: Followed) -> Groups:
+    """Witness configurations on the named mode alone, a group per piece (of ``branches``,
+    ``compiled``'s, the one with the piece's labels, the other points on their own): the curve
+    keeps the mode's factors."""
     (name, _), = compiled.system.inputs.items()
     spec = compiled.scene.inputs[name]
     scale = float(sympy.pi / 180) if spec.is_angle else 1.0
     chosen = {s.point: s.branch for s in compiled.implicit if s.labels}
-    branches = closed_forms(compiled)
     groups: list[tuple] = []
     for piece in followed.pieces:
         if piece.status != "mode":

@@ -150,7 +150,7 @@ def _curve(source: _Source, engine: Engine, *, point: str, deadline: Deadline, s
         if moded_points(compiled.scene) else ()
     with timed(timings, "eliminate"):
         # on a named mode, its configurations are the witnesses: the curve keeps the mode's factors
-        groups = tuple(g for m in modes for g in mode_witnesses(compiled, m)) or prepared.witnesses
+        groups = tuple(g for m in modes for g in mode_witnesses(compiled, prepared.branches, m)) or prepared.witnesses
         task = curve_task(compiled, groups, point)
         result = task.run(family_method(task, engine.method), engine.backend, deadline)
     variables = task.keep[:2]
