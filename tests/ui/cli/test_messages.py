@@ -73,3 +73,10 @@ def test_plot_of_names_its_flag(capsys, tmp_path):
     err = one_error(capsys, "plot", "arm-string", "--of", "|AB|", "--out", str(tmp_path / "x.svg"))
     assert err.startswith("algkin: error: --of='|AB|'"), err
     assert not (tmp_path / "x.svg").exists()
+
+
+def test_a_curve_with_nothing_dropped_says_so_without_a_dangling_colon(capsys):
+    code, out, _ = run(capsys, "curve", "slider-crank", "--point", "B", "--samples", "0")
+    assert code == 0
+    assert "no extraneous factor dropped" in out.splitlines()
+    assert not any(line.endswith(":") for line in out.splitlines())
