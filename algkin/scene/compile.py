@@ -19,7 +19,8 @@ import sympy
 from ..errors import SceneError, UsageError
 from ..runtime.frozen import FrozenDict, frozen
 from ..system import System, symbol
-from .constructions import Builder, Construction, Dyad, Indicator, Unbuildable
+from .constructions import Builder, Construction, Crank, Dyad, Indicator, Unbuildable
+from .driven import driven_angles, root_of
 from .expr import MAX_VALUE_BITS, bits_bound, irrational
 from .implicit import DyadSpec, ImplicitSpec, SliderSpec
 from .implicit.algebra import Circles, reduce_on_circles
@@ -211,7 +212,8 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
     resolved = resolve_outputs(scene, outputs)
     points = _needed_points(scene, resolved)
     inputs = _used_inputs(scene, points)
-    builder = Builder({n: pair for n, pair in inputs.items() if len(pair) == 2})
+    angles = {n: pair for n, pair in inputs.items() if len(pair) == 2}
+    builder = Builder(angles, driven_angles(scene, angles))
     coords: dict[str, Point] = {}
     # every dimension at its default, the symbolic ones too: where the checks and samples are
     everywhere = {symbol(n): defaults[n] for n in symbolic}
@@ -256,8 +258,9 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
 
 
 def _used_inputs(scene: Scene, points: Sequence[str]) -> dict[str, tuple[sympy.Symbol, ...]]:
-    """The inputs the ``points`` move with (a crank's angle, a length in an expression) -> their variables."""
-    used = {getattr(scene.points[p], "input", None) for p in points}  # the cranks' angles
+    """The inputs the ``points`` move with (a crank's angle, a length in an expression) -> their variables;
+    a crank on a geared input moves with the input at the root of its gears."""
+    used = {root_of(scene, p.input)[0] for p in (scene.points[n] for n in points) if isinstance(p, Crank)}
     for name in points:
         for value in vars(scene.points[name]).values():
             for item in value if isinstance(value, tuple) else (value,):
