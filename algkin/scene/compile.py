@@ -232,6 +232,7 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
                 _check_finite(scene, f"points.{name}", item)
         _check_lengths(scene, name, construction, inputs)
         _check_direction(scene, name, construction)
+        _check_phase(scene, name, construction)
         made = len(builder.equations)
         try:
             x, y = construction.build(name, coords, builder)
@@ -387,6 +388,15 @@ def _check_direction(scene: Scene, name: str, construction: Construction) -> Non
     if direction is not None and all(d.is_number and d == 0 for d in direction):
         raise SceneError(scene.source, f"points.{name}.slider.direction",
                          "direction must not be zero, got [0, 0] with the parameters' default values")
+
+
+def _check_phase(scene: Scene, name: str, construction: Construction) -> None:
+    """A crank's phase given by parameters must still be a point of the unit circle with their defaults."""
+    if isinstance(construction, Crank) and all(v.is_number for v in construction.phase):
+        norm = sympy.expand(construction.phase[0] ** 2 + construction.phase[1] ** 2)
+        if norm != 1:
+            raise SceneError(scene.source, f"points.{name}.phase", f"cos**2 + sin**2 must be 1 (a point of the unit "
+                             f"circle), got {norm} with the parameters' default values")
 
 
 def _output_equations(outputs: Sequence[Output], coords: Mapping[str, Point], builder: Builder, *,
