@@ -41,7 +41,7 @@ class Branch:
     discriminants: FrozenDict[str, sympy.Expr] = attrs.field(converter=frozen)
     selected: bool  # the branch the scene file asks for
     # points whose discriminant is a square f**2: they exist where f != 0 (a meet of two lines)
-    squares: frozenset[str] = attrs.field(default=frozenset(), converter=frozenset)
+    squares: frozenset[str] = frozenset()
 
     @property
     def valid_when(self) -> str:
@@ -94,7 +94,7 @@ def _branch(compiled: Compiled, chosen: dict[str, str]) -> Branch:
     labels = list(chosen.values())
     label = labels[0] if len(labels) == 1 else " ".join(f"{p}:{l}" for p, l in chosen.items())
     selected = all(chosen[spec.point] == spec.branch for spec in specs if spec.labels)
-    return Branch(label or "unique", chosen, values, discriminants, selected, squares)
+    return Branch(label or "unique", chosen, values, discriminants, selected, frozenset(squares))
 
 
 def _output_value(definition: sympy.Expr, substitution: dict[sympy.Symbol, sympy.Expr],

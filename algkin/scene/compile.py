@@ -212,8 +212,8 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
     resolved = resolve_outputs(scene, outputs)
     points = _needed_points(scene, resolved)
     inputs = _used_inputs(scene, points)
-    angles = {n: pair for n, pair in inputs.items() if len(pair) == 2}
-    builder = Builder(angles, driven_angles(scene, angles))
+    turning = {n: pair for n, pair in inputs.items() if len(pair) == 2}
+    builder = Builder(turning, driven_angles(scene, turning))
     coords: dict[str, Point] = {}
     # every dimension at its default, the symbolic ones too: where the checks and samples are
     everywhere = {symbol(n): defaults[n] for n in symbolic}

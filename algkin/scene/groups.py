@@ -100,7 +100,7 @@ def _coordinates(scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -> dic
     """Every point's (x, y): an unknown point's own unknowns, a construction's in those of its references."""
     coordinates: dict[str, Point] = {}
     angles = {n: i.symbols for n, i in scene.inputs.items() if i.is_angle}
-    builder = Builder(angles, driven_angles(scene, angles))  # type: ignore[arg-type]
+    builder = Builder(angles, driven_angles(scene, angles))
 
     def build(name: str) -> Point:
         if name not in coordinates:

@@ -67,3 +67,9 @@ def test_instant_centre_toggles_are_its_four_bar_s():
 def test_catalog_scene_dumps_and_loads_back(scene):
     loaded = load_scene(scene)
     assert load_scene_text(dump_scene(loaded), scene) == loaded
+
+
+def test_show_names_the_geared_input():
+    document = run("show", "geared-five-bar")
+    assert document["geared"] == {"phi": {"driven_by": "theta", "ratio": "-2"}}
+    assert list(document["inputs"]) == ["theta"]
