@@ -267,8 +267,8 @@ class _Loader:
             if driver == name:
                 self.fail(f"{element}.driven_by", f"{name!r} cannot drive itself")
             if driver not in inputs and driver not in table:
-                known = ", ".join(n for n in [*inputs, *table] if n != name) or "none"
-                self.fail(f"{element}.driven_by", f"unknown input {driver!r} (inputs: {known})")
+                others = [n for n in [*inputs, *table] if n != name]
+                self.fail(f"{element}.driven_by", f"unknown input {driver!r}" + suggest.known(driver, others, plural="inputs"))
             if driver in inputs and not inputs[driver].is_angle:
                 self.fail(f"{element}.driven_by", f"{driver!r} is a length input: gears turn with an angle")
             driven[name] = DrivenInput(name, driver, self.ratio(spec.get("ratio"), f"{element}.ratio", (name, driver)))
@@ -368,8 +368,8 @@ class _Loader:
         length = self.positive(spec["length"], f"{element}.length")
         name = spec.get("input")
         if name not in inputs and name not in self.driven:
-            known = ", ".join([*inputs, *self.driven]) or "none"
-            self.fail(f"{element}.input", f"unknown input {name!r} (inputs: {known})")
+            self.fail(f"{element}.input", f"unknown input {name!r}"
+                      + suggest.known(str(name), [*inputs, *self.driven], plural="inputs"))
         root = inputs[self.root(name)]
         if not root.is_angle:
             self.fail(f"{element}.input", f"{name!r} is a length input: a crank turns with an angle "
