@@ -236,6 +236,8 @@ def _cmd_show(args: argparse.Namespace) -> Outcome:
         # point -> why it never assembles: dyads on two fixed bases, decided exactly
         "never_assembles": dict(compiled.never_assembles),
     }
+    if scene.driven:  # inputs turned by others through gears: no variables of their own
+        document["geared"] = {n: {"driven_by": d.driver, "ratio": str(d.ratio)} for n, d in scene.driven.items()}
     return render(args, document, report_show), 0
 
 

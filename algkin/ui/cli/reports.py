@@ -217,6 +217,7 @@ def report_show(d: Document) -> str:
              "unknowns: " + ", ".join(d["system"]["unknowns"]),
              "parameters: " + (", ".join(d["system"]["parameters"]) or "none (all exact)"),
              "inputs: " + ", ".join(f"{n} as ({v['cos']}, {v['sin']})" for n, v in d["inputs"].items()),
+             *[f"geared: {n} = {g['ratio']}*{g['driven_by']}" for n, g in d.get("geared", {}).items()],
              "equations (= 0):"]
     lines += [f"  {eq}" for eq in d["system"]["equations"]]
     lines += [f"never assembles: {point}: {why}" for point, why in d.get("never_assembles", {}).items()]
