@@ -12,7 +12,7 @@ in radicals where the factor is of degree 1 or 2.
 >>> group.variable, group.degree, len(group.modes), found.reference.shown
 ('P1_x', 6, 2, '5')
 >>> [m.label for m in group.modes]
-['--+', '+-+']
+['---', '+++']
 """
 
 from __future__ import annotations
