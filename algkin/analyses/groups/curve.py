@@ -33,7 +33,7 @@ from ...scene import Scene
 from ...system import symbol
 from .scene import GroupScene, Sample, prepare_groups
 
-__all__ = ["curve_groups", "GroupCurve", "WITNESS_SAMPLES", "configurations"]
+__all__ = ["curve_groups", "GroupCurve", "WITNESS_SAMPLES", "configurations", "assembling"]
 
 WITNESS_SAMPLES = 6
 """Sample inputs whose real modes choose the curve's factors."""
@@ -114,6 +114,21 @@ def _samples(prepared: GroupScene, count: int, rng: random.Random) -> list[Sampl
     return found
 
 
+def assembling(prepared: GroupScene, count: int, rng: random.Random, *, tries: int = 10) -> list[Sample]:
+    """Up to ``count`` seeded inputs in range where every group has a real mode (of ``tries`` times
+    as many drawn: a group may assemble over a small part of the range only)."""
+    found: list[Sample] = []
+    for sample in _samples(prepared, count * tries + 1, rng)[1:]:
+        try:
+            if all(prepared.modes(sample)):
+                found.append(sample)
+        except ComputationError:  # modes meet exactly there: not a sample to compare at
+            continue
+        if len(found) == count:
+            break
+    return found
+
+
 def configurations(prepared: GroupScene, sample: Sample, points: dict[str, tuple[str, str]] | None = None,
                    *, bits: int = 128) -> list[dict[str, flint.arb]]:
     """Every real configuration at ``sample`` (one mode per group), each variable in a ball: the
@@ -142,7 +157,7 @@ def _check(prepared: GroupScene, curve: flint.fmpq_mpoly, *, point: str, variabl
         return {"status": "skipped", "passed": True, "samples": 0}
     names = [str(n) for n in curve.context().names()]
     compared, worst, failures = 0, 0.0, []
-    for sample in _samples(prepared, samples + 1, rng)[1:]:
+    for sample in assembling(prepared, samples, rng):
         for values in configurations(prepared, sample, {point: (variables[0], variables[1])}, bits=256):
             with flint.ctx.workprec(256):
                 residual = _value(curve, names, values)

@@ -11,7 +11,7 @@ complex modes meeting, or more than two roots at once) is listed as not certifie
 
 >>> found = toggles_groups("3rpr")
 >>> [(round(t.value, 6), t.certified) for t in found.toggles]
-[(8.422458, True), (9.846497, True)]
+[(7.92278, True), (11.206442, True)]
 """
 
 from __future__ import annotations
