@@ -139,7 +139,7 @@ def configurations(prepared: GroupScene, sample: Sample, points: dict[str, tuple
     except ComputationError:
         return []
     unknowns = {u for g in prepared.compiled.groups for u in g.unknowns}  # not a linear form's variable
-    combos: list[dict[str, flint.arb]] = [sample.balls()]
+    combos: list[dict[str, flint.arb]] = [sample.balls(bits)]
     for group in found:
         combos = [dict(c, **{u: v for u, v in m.values.items() if u in unknowns}) for c in combos for m in group]
     with flint.ctx.workprec(bits):

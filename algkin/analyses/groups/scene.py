@@ -52,8 +52,10 @@ class Sample:
     def exact(self) -> dict[str, flint.fmpq]:
         return {n: flint.fmpq(Fraction(v).numerator, Fraction(v).denominator) for n, v in self.values.items()}
 
-    def balls(self) -> dict[str, flint.arb]:
-        return {n: flint.arb(v) for n, v in self.exact().items()}
+    def balls(self, bits: int = 192) -> dict[str, flint.arb]:
+        """The values as balls, rounded at ``bits`` (exact where they fit)."""
+        with flint.ctx.workprec(bits):
+            return {n: flint.arb(v) for n, v in self.exact().items()}
 
 
 @attrs.frozen
@@ -84,7 +86,8 @@ class GroupScene:
         t = Fraction(math.tan(math.radians(float(exact)) / 2)).limit_denominator(10**6)
         if exact % 90 == 0:  # exactly: the tangent's float is off by an ulp
             t = Fraction((0, 1, None, -1)[int(exact // 90) % 4] or 0)
-        degrees = float(exact) + round((math.degrees(2 * math.atan(t)) - float(exact)) / 360) * 360
+        half = math.degrees(2 * math.atan(t))
+        degrees = half + round((float(exact) - half) / 360) * 360
         return Sample({c: (1 - t * t) / (1 + t * t), s: 2 * t / (1 + t * t)}, degrees, f"{degrees:.6g}°")
 
     def modes(self, sample: Sample, *, bits: int = 128) -> list[tuple[Mode, ...]]:
