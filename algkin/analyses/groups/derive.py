@@ -105,7 +105,7 @@ class GroupDerivation:
         parameters = list(self.prepared.variables)
         reference = None
         if self.reference is not None and self.prepared.input is not None:
-            reference = {"input": self.prepared.input.name, "value": self.reference.value,
+            reference = {"input": self.prepared.input.name, "value": self.reference.value, "shown": self.reference.shown,
                          "values": {n: str(v) for n, v in self.reference.values.items()}}
         branches = [{"label": " ".join(m.label for m in combination),
                      "values": {u: v for m in combination for u, v in m.values.items()},
