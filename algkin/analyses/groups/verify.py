@@ -1,6 +1,7 @@
 """``verify`` on a scene with points solved together: the modes against independent solutions.
 
-At seeded inputs in range (exact: rational lengths, rational points of the circle), each group's
+At seeded inputs in range (exact: rational lengths, rational points of the circle; half of them
+where the groups assemble), each group's
 modes come from its eliminant (``GroupScene.modes``: real roots certified, the other unknowns
 their lifts); independently (``algkin.verify.groups``, which never sees the eliminant) its
 original equations are solved by Newton's method from many random starts and every root is
@@ -28,6 +29,7 @@ from ...errors import ComputationError
 from ...runtime.frozen import FrozenDict, frozen
 from ...scene import Scene
 from ...verify.groups import STARTS, real_solutions
+from .curve import assembling
 from .scene import GroupScene, Sample, prepare_groups
 
 __all__ = ["verify_groups", "GroupVerification", "RETRY"]
@@ -78,10 +80,14 @@ def verify_groups(scene: Scene | str | GroupScene, *, samples: int = 40, seed: i
 
 
 def _draw(prepared: GroupScene, count: int, rng: random.Random) -> list[Sample]:
+    """``count`` seeded inputs: half where every group assembles (a group may assemble over a
+    small part of the range only), the rest drawn anywhere in range (where none may be found)."""
     if prepared.input is None:
         return []
     lo, hi = prepared.input.span
-    return [prepared.sample(Fraction(rng.uniform(lo, hi)).limit_denominator(1000)) for _ in range(count)]
+    found = assembling(prepared, (count + 1) // 2, rng)
+    return found + [prepared.sample(Fraction(rng.uniform(lo, hi)).limit_denominator(1000))
+                    for _ in range(count - len(found))]
 
 
 def _expected(prepared: GroupScene, sample: Sample, index: int) -> list[Mapping[str, flint.arb]] | None:
