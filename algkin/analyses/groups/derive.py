@@ -26,6 +26,7 @@ import flint
 import sympy
 
 from ...eliminate.group import GroupSolution, Mode
+from ...eliminate.group.records import Values
 from ...eliminate.group.algebra import coefficients, univariate
 from ...errors import AlgkinError
 from ...scene import Scene
@@ -195,7 +196,8 @@ def _mode_form(solution: GroupSolution, factors: Sequence[flint.fmpq_mpoly], mod
     """Which factor's root the mode is (by its exact root at the reference), and its closed forms."""
     variable = solution.variable
     for position, factor in enumerate(factors):
-        roots = list(real_roots(univariate(factor.subs(dict(at)), variable)))
+        point: Values = {name: value for name, value in at.items()}
+        roots = list(real_roots(univariate(factor.subs(point), variable)))
         if mode.root in roots:
             rank = roots.index(mode.root)
             value = _radical(factor, variable, rank=rank, count=len(roots), at=at) or \

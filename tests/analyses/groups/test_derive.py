@@ -7,7 +7,7 @@ import sympy
 from algkin.analyses.groups.derive import derive_groups
 from algkin.analyses.solve import solve
 
-from .triad import LOOPS, ax, ay, bx, by, c, s
+from .triad import LOOPS, ax, c, s
 
 
 @pytest.fixture(scope="module")
