@@ -59,7 +59,7 @@ class GroupToggle:
         if unit == "deg":
             document.update(input_deg=self.value, enclosure_deg=self.enclosure)
         else:
-            document.update(input_value=self.value, enclosure_length=self.enclosure)
+            document.update(input_length=self.value, enclosure_length=self.enclosure)
         if self.why:
             document["why"] = self.why
         return document

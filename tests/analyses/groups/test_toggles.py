@@ -39,7 +39,7 @@ def test_the_3rpr_singularity_locus_in_r1():
     assert low == pytest.approx(7.92278018529, abs=1e-9) and high == pytest.approx(11.2064417138, abs=1e-9)
     assert _counts("3rpr", [7, 9, 10, 12]) == [2, 0, 0, 2]
     assert found.to_json()["toggles"][0]["kind"] == "modes meet"
-    assert "input_value" in found.to_json()["toggles"][0]
+    assert "input_length" in found.to_json()["toggles"][0]
 
 
 def test_between_the_triads_toggles_it_assembles_only_near_zero_and_between_193_and_231():
