@@ -30,7 +30,7 @@ from ...eliminate.group import GroupSolution, Mode, modes, solve_group
 from ...eliminate.group.algebra import pseudo_remainder
 from ...errors import ComputationError, SceneError, UsageError
 from ...scene import Input, Scene
-from ...scene.groups import Group, Groups, compile_groups
+from ...scene.groups import Groups, compile_groups
 from ...scene.load import as_scene
 from ...system.convert import flint_context, to_flint
 
@@ -151,12 +151,6 @@ def _solution(compiled: Groups, index: int) -> GroupSolution:
                          "supported yet")
     ctx = flint_context(group.unknowns + tuple(names))
     return solve_group([to_flint(e, ctx) for e in group.equations], group.unknowns)
-
-
-def flint_equations(group: Group, names: Sequence[str]) -> list[flint.fmpq_mpoly]:
-    """The group's equations over the names ``names`` (its unknowns and every other name they hold)."""
-    ctx = flint_context(tuple(names))
-    return [to_flint(e, ctx) for e in group.equations]
 
 
 def on_circle(poly: flint.fmpq_mpoly, variables: Sequence[str]) -> flint.fmpq_mpoly:

@@ -26,6 +26,7 @@ import flint
 
 from ...eliminate.group import GroupSolution
 from ...eliminate.group.algebra import coefficients, linear_relation
+from ...errors import ComputationError, UsageError
 from ...runtime.frozen import FrozenDict, frozen
 from ...scene import Scene
 from ...system.convert import flint_context, to_flint
@@ -87,8 +88,7 @@ def toggles_groups(scene: Scene | str) -> GroupToggles:
     start = time.perf_counter()
     prepared = prepare_groups(scene, command="toggles")
     if prepared.input is None:
-        raise_still(prepared)
-    assert prepared.input is not None
+        raise UsageError("scene", prepared.scene.name, "moves with no input: its groups have no toggles to find")
     found: list[GroupToggle] = []
     for index, solution in enumerate(prepared.solutions):
         found += _group_toggles(prepared, index, solution)
@@ -96,12 +96,6 @@ def toggles_groups(scene: Scene | str) -> GroupToggles:
     unit = "deg" if prepared.input.is_angle else "length"
     return GroupToggles(prepared.scene, prepared.input.name, unit, prepared.input.span, tuple(found),
                         {"total": time.perf_counter() - start})
-
-
-def raise_still(prepared: GroupScene) -> None:
-    from ...errors import UsageError
-
-    raise UsageError("scene", prepared.scene.name, "moves with no input: its groups have no toggles to find")
 
 
 def _group_toggles(prepared: GroupScene, index: int, solution: GroupSolution) -> list[GroupToggle]:
@@ -133,12 +127,19 @@ def _group_toggles(prepared: GroupScene, index: int, solution: GroupSolution) ->
 
 def _in_input(poly: flint.fmpq_mpoly, variables: Sequence[str], names: tuple[str, str]) -> flint.fmpq_mpoly:
     """``poly`` in the separating variable and the input: an angle's ``c``, ``s`` replaced by
-    their rational forms in ``t`` (denominators cleared), a length as it is."""
+    their rational forms in ``t`` (denominators cleared), a length as it is.
+
+    >>> ctx = flint.fmpq_mpoly_ctx.get(("u", "c", "s"), "lex")
+    >>> u, c, s = ctx.gens()
+    >>> _in_input(u * s - c**3 * s**2, ("c", "s"), ("u", "t"))   # times (1+t^2)^5, its factor t dropped
+    2*u*t^8 + 8*u*t^6 + 12*u*t^4 + 8*u*t^2 + 2*u + 4*t^7 - 12*t^5 + 12*t^3 - 4*t
+    """
     ctx = flint.fmpq_mpoly_ctx.get(names, "lex")
     u, t = ctx.gens()
     if len(variables) == 1:
         return _primitive_in(poly.project_to_context(ctx), names[0])
-    degree = max(poly.degrees()[list(poly.context().names()).index(v)] for v in variables)
+    indices = [list(poly.context().names()).index(v) for v in variables]
+    degree = max(sum(int(m[k]) for k in indices) for m in poly.monoms())  # the highest in c and s together
     lookup = {names[0]: u, variables[0]: (1 - t * t), variables[1]: 2 * t}
     # each term c**i s**j times (1 + t**2)**(degree - i - j): the form divided by (1 + t**2)**degree
     total = ctx.from_dict({})
@@ -182,8 +183,6 @@ def _half_turn(prepared: GroupScene, index: int, solution: GroupSolution) -> lis
     lo, hi = prepared.input.span
     if not _inside(flint.arb(180), lo, hi, True):
         return []
-    from ...errors import ComputationError
-
     try:
         prepared.modes(prepared.sample(180))
     except ComputationError as error:
