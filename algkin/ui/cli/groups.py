@@ -7,11 +7,14 @@ from __future__ import annotations
 
 import argparse
 from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING
 
 from ...errors import UsageError
-from ...scene import Scene
 from .reports import (Document, Form, render, report_group_curve, report_group_derive, report_group_toggles,
                       report_group_verify)
+
+if TYPE_CHECKING:  # the command line loads the algebra only once a command needs it
+    from ...scene import Scene
 
 __all__ = ["group_derive", "group_curve", "group_verify", "group_toggles"]
 
