@@ -28,6 +28,7 @@ from ...eliminate import eliminate
 from ...eliminate.select import Witness
 from ...errors import ComputationError, UsageError
 from ...evaluate import ARB, evaluate
+from ...runtime import suggest
 from ...runtime.frozen import FrozenDict, frozen
 from ...scene import Scene
 from ...system import symbol
@@ -74,7 +75,7 @@ def curve_groups(scene: Scene | str, point: str, *, samples: int = 40, seed: int
     prepared = prepare_groups(scene, command="curve")
     scene = prepared.scene
     if not isinstance(point, str) or point not in scene.points:
-        raise UsageError("point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
+        raise UsageError("point", point, f"not a point of {scene.name}" + suggest.known(point, scene.points, plural="points"))
     x, y = (sympy.sympify(v) for v in prepared.compiled.coordinates[point])
     unknowns = [u for g in prepared.compiled.groups for u in g.unknowns]
     moving = set(unknowns) | set(prepared.variables)

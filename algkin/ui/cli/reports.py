@@ -395,7 +395,7 @@ def report_group_derive(d: Document) -> str:
     for group in d["groups"]:
         lines.append(f"group {', '.join(group['points'])} ({', '.join(group['constraints'])}):")
         lines.append(f"  eliminant in {group['variable']}, degree {group['degree']} "
-                     f"(inputs as parameters; dropped {len(group['dropped_factors'])} factor(s)):")
+                     f"(inputs as parameters; {_dropped(len(group['dropped_factors']))}):")
         lines.append(f"      {_brief(group['eliminant'])} = 0")
         lines += [f"  {u} = {_brief(v)}" for u, v in group["lifts"].items()]
         where = f" at {reference['input']} = {reference['shown']}" if reference else ""
@@ -428,7 +428,7 @@ def report_group_curve(d: Document) -> str:
     lines = [f"curve of {d['point']} in {d['scene']}  (points solved together)",
              f"  {_brief(d['curve'])} = 0",
              f"degree {d['degree']}, circularity {d['circularity']}, {len(d['factors'])} factor(s) kept",
-             f"dropped {len(d['dropped_factors'])} extraneous factor(s):"]
+             _dropped(len(d["dropped_factors"])) + (":" if d["dropped_factors"] else "")]
     lines += [f"  {_brief(f)}" for f in d["dropped_factors"]]
     v = d["verification"]
     if v["status"] == "skipped":
