@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any, Union
 from ...runtime import suggest
 from ...errors import UsageError, renamed
 from ...runtime.validation import real
+from .groups import group_curve, group_derive, group_toggles, group_verify
 from .sweep import COMMANDS as SWEEP_COMMANDS
 from .reports import (Document, Form, extremum_forms, latex_lines, render, report_accuracy, report_curve,
                       report_derive, report_extremum, report_show, report_singular, report_solve, report_toggles, verification_line,
@@ -117,6 +118,9 @@ def _cmd_toggles(args: argparse.Namespace) -> Outcome:
     from ...analyses.limits import limits
     from ...analyses.toggles import toggles
 
+    together = _solved_together(args)
+    if together is not None:
+        return group_toggles(args, together)
     scene = _scene_of(args)
     document = toggles(scene, budget=args.deadline).to_json()
     if document["unit"] == "deg":  # a turning input's: the output's limit positions and time ratio
@@ -245,6 +249,9 @@ def _cmd_derive(args: argparse.Namespace) -> Outcome:
     from ...derivation.pipeline import derive
 
     out = _full_forms_target(args)
+    together = _solved_together(args)
+    if together is not None:
+        return _finish(args, out, *group_derive(args, together))
     result = derive(_scene_of(args), args.outputs, **_engine(args))
     forms = [(f"eliminant of {u}", e.polynomial, "= 0") for u, e in result.eliminations.items()]
     forms += [(f"{u}, branch {b.label}", v, "") for b in result.branches for u, v in b.values.items()]
@@ -315,6 +322,9 @@ def _cmd_curve(args: argparse.Namespace) -> Outcome:
     from ...derivation.pipeline import curve
 
     out = _full_forms_target(args)
+    together = _solved_together(args)
+    if together is not None:
+        return _finish(args, out, *group_curve(args, together))
     result = curve(_scene_of(args), args.point, **_engine(args))
     # the sympy form only for LaTeX: on a family's curve it costs seconds
     forms = [(f"curve of {result.point}", result.elimination.polynomial, "= 0")] if args.latex else []
@@ -326,12 +336,23 @@ def _cmd_verify(args: argparse.Namespace) -> Outcome:
 
     if args.samples == 0:
         raise UsageError("--samples", 0, "verify needs at least one sample (derive and curve take 0 to skip it)")
+    together = _solved_together(args)
+    if together is not None:
+        return group_verify(args, together)
     result = derive(_scene_of(args), args.outputs, certify=False, **_engine(args))
     document = {"scene": result.compiled.scene.name, "verification": result.verification.to_json(),
                 "branches": [b.label for b in result.branches], "timings": dict(result.timings)}
     text = render(args, document, lambda d: f"scene {d['scene']}, branches {', '.join(d['branches'])}\n"
                                             + verification_line(d["verification"]))
     return text, _verdict(result.verification)
+
+
+def _solved_together(args: argparse.Namespace) -> Scene | None:
+    """The command's scene when it has points solved together (``unknown = true``), else None."""
+    from ...scene.load import as_scene
+
+    scene = as_scene(_scene_of(args))
+    return scene if scene.unknown_points else None
 
 
 def _cmd_export(args: argparse.Namespace) -> Outcome:

@@ -386,3 +386,71 @@ def _brief(form: str) -> str:
 def _hint(forms: Sequence[str], where: str = "full forms: --json or --out FILE") -> list[str]:
     """The line that says where the whole forms are, when ``_brief`` shortened any of ``forms``."""
     return [where] if any(len(f) > _WHOLE for f in forms) else []
+
+
+def report_group_derive(d: Document) -> str:
+    """``algkin derive``'s text on a scene with points solved together: per group, its eliminant,
+    the other unknowns rational in its variable, and each mode's closed form at the reference input."""
+    reference = d["reference"]
+    lines = [f"scene {d['scene']}  (points solved together: {len(d['groups'])} group(s))"]
+    for group in d["groups"]:
+        lines.append(f"group {', '.join(group['points'])} ({', '.join(group['constraints'])}):")
+        lines.append(f"  eliminant in {group['variable']}, degree {group['degree']} "
+                     f"(inputs as parameters; {_dropped(len(group['dropped_factors']))}):")
+        lines.append(f"      {_brief(group['eliminant'])} = 0")
+        lines += [f"  {u} = {_brief(v)}" for u, v in group["lifts"].items()]
+        where = f" at {reference['input']} = {reference['shown']}" if reference else ""
+        lines.append(f"  modes{where}: {group['real_modes']} real of {group['complex_count']} complex")
+        for mode in group["modes"]:
+            lines.append(f"    [{mode['label']}] {group['variable']} = {_brief(mode['values'][group['variable']])}"
+                         f" = {mode['value']}")
+    lines.append(_group_verification_line(d["verification"]))
+    forms = [f for g in d["groups"] for f in (g["eliminant"], *g["lifts"].values())]
+    return "\n".join(lines + [_timings_line(d["timings"])] + _hint(forms))
+
+
+def _group_verification_line(v: Document) -> str:
+    """The check of a group scene (``algkin.analyses.groups.verify``) in one line, then its failures."""
+    if v["status"] == "skipped":
+        return "verification skipped (--samples 0)"
+    verdict = "passed" if v["passed"] else "FAILED"
+    line = (f"verification {verdict}: {v['configurations']} proved numeric solutions on {v['samples']} samples, "
+            f"each matched to one mode, none missing, none extra; max abs error {v['max_abs_error']:.2e}")
+    return "\n".join([line] + [f"  {f}" for f in v["failures"][:10]])
+
+
+def report_group_verify(d: Document) -> str:
+    """``algkin verify``'s text on a scene with points solved together."""
+    return f"scene {d['scene']}\n" + _group_verification_line(d["verification"])
+
+
+def report_group_curve(d: Document) -> str:
+    """``algkin curve``'s text on a scene with points solved together."""
+    lines = [f"curve of {d['point']} in {d['scene']}  (points solved together)",
+             f"  {_brief(d['curve'])} = 0",
+             f"degree {d['degree']}, circularity {d['circularity']}, {len(d['factors'])} factor(s) kept",
+             _dropped(len(d["dropped_factors"])) + (":" if d["dropped_factors"] else "")]
+    lines += [f"  {_brief(f)}" for f in d["dropped_factors"]]
+    v = d["verification"]
+    if v["status"] == "skipped":
+        lines.append("verification skipped (--samples 0)")
+    else:
+        lines.append(f"verification {'passed' if v['passed'] else 'FAILED'}: the point at {v['compared']} real "
+                     f"modes of sampled inputs on the curve, max abs value {v['max_abs_error']:.2e}")
+        lines += [f"  {f}" for f in v["failures"][:10]]
+    lines.append(_timings_line(d["timings"]))
+    return "\n".join(lines + _hint([d["curve"], *d["dropped_factors"]]))
+
+
+def report_group_toggles(d: Document) -> str:
+    """``algkin toggles``'s text on a scene with points solved together: where its modes meet."""
+    lo, hi = d["range"]
+    unit = " deg" if d["unit"] == "deg" else ""
+    lines = [f"toggles of {d['scene']} over {d['input']} in [{lo:g}, {hi:g}]{unit} (modes meet):"]
+    for g in d["toggles"]:
+        where = g.get("enclosure_deg", g.get("enclosure_length"))
+        said = "certified" if g["certified"] else f"NOT certified: {g['why']}"
+        lines.append(f"  {g['kind']} ({g['point']}) at {where}{unit} ({said})")
+    if not d["toggles"]:
+        lines.append("  none: no two modes meet over the range")
+    return "\n".join(lines)

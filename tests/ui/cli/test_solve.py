@@ -63,7 +63,7 @@ def test_solve_on_points_solved_together_gives_the_complex_count(capsys, platfor
 
 
 @pytest.mark.parametrize("command", [
-    ["show"], ["derive"], ["curve", "--point", "P3"], ["verify"], ["toggles"], ["extremum", "--of", "P1.x"],
+    ["show"], ["extremum", "--of", "P1.x"],
     ["singular", "--point", "P3"], ["accuracy"], ["export", "--to", "c"], ["plot", "--out", "{tmp}/x.png"],
     ["sweep", "--grid", "r2=8:9:2", "--out", "{tmp}/sweep"],
 ], ids=lambda c: c[0])
