@@ -110,20 +110,29 @@ class Follower:
         unknowns = [symbol(n) for n in names]
         jacobian = sympy.Matrix(list(equations)).jacobian(unknowns)
         rate = [self._rate(e) for e in equations]
-        # d2/dt2 of F(y + (t - tm) v, t), v per radian for an angle: the path's bend, which the proof bounds
+        # F and J along the sheared path y + (t - tm) v, to second order in t (v per radian for an
+        # angle): the first derivatives at the step's middle point, the second over the whole step,
+        # and J's own derivatives in x (F's second) for the box around the path
         slope = [symbol(f"follow_v{k}") for k in range(self.n)]
-        along = [sum((sympy.diff(e, u) * v for u, v in zip(unknowns, slope)), sympy.Integer(0)) + r
-                 for e, r in zip(equations, rate)]
-        bend = [sum((sympy.diff(a, u) * v for u, v in zip(unknowns, slope)), sympy.Integer(0)) + self._rate(a)
-                for a in along]
+        entries = list(equations) + list(jacobian)
+        along = [self._along(e, unknowns, slope) for e in entries]
+        bend = [self._along(a, unknowns, slope) for a in along]
+        second = [sympy.diff(e, u) for u in unknowns for e in jacobian]
         arguments = list(names) + list(variables) + list(parameters)
         self.equations, self.jacobian_matrix = list(equations), jacobian
         self.programs = {kind.name: (compile_program(list(equations), arguments, kind),
                                      compile_program(list(jacobian), arguments, kind),
                                      compile_program(rate, arguments, kind)) for kind in (ARB, FLOAT)}
-        self.bend = compile_program(bend, arguments + [str(v) for v in slope], ARB)
+        with_slope = arguments + [str(v) for v in slope]
+        self.along = compile_program(along, with_slope, ARB)
+        self.bend = compile_program(bend, with_slope, ARB)
+        self.second = compile_program(second, arguments, ARB)
         self.point = BlockCertifier(names, equations, list(variables) + list(parameters))
         self._fold: Fold | None = None
+
+    def _along(self, expr: sympy.Expr, unknowns: Sequence[sympy.Symbol], slope: Sequence[sympy.Symbol]) -> sympy.Expr:
+        """d/dt of ``expr`` at ``x = y + (t - tm) slope``."""
+        return sum((sympy.diff(expr, u) * v for u, v in zip(unknowns, slope)), self._rate(expr))
 
     def _rate(self, expr: sympy.Expr) -> sympy.Expr:
         """d/dt of ``expr`` through the input's variables (t in radians for an angle: d cos = -sin, d sin = cos)."""
@@ -277,25 +286,35 @@ class _Track:
         if not all(b.contains(e - d * vi) for enclosure, d in sections for b, e, vi in zip(box, enclosure, v)):
             return False
         inputs = self.inputs(_ball(tm, abs(tb - ta) / 2))
-        at_middle = self.inputs(_ball(tm))
+        at_middle = [*c, *self.inputs(_ball(tm)), *self.known]
         tube = [b + offset * vi for b, vi in zip(box, v)]
         line = [ci + offset * vi for ci, vi in zip(c, v)]
-        over_tube = arb_mat(n, n, jacobian(*tube, *inputs, *self.known))
-        # F(c + (t - tm) v, t) to second order in t - tm, the last term over the whole step: tight
-        # where a first-order form's interval would be several times the path's bend
-        along = arb_mat(n, n, jacobian(*c, *at_middle, *self.known)) * arb_mat(n, 1, v) \
-            + arb_mat(n, 1, rate(*c, *at_middle, *self.known)) * self.unit
-        bend = arb_mat(n, 1, self.f.bend(*line, *inputs, *self.known, *[vi / self.unit for vi in v])) \
-            * (self.unit * self.unit / 2)
-        middle = arb_mat(n, 1, residual(*c, *at_middle, *self.known)) + along * offset + bend * (offset * offset)
         _, float_jacobian, _ = self.float_parts(centre, float(tm))
         try:
             inverse = arb_mat(np.linalg.inv(float_jacobian).tolist())
         except np.linalg.LinAlgError:
             return False
+        # F and J on the path's line to second order in t - tm: the first derivatives at one point,
+        # the second over the step; each times Y before the interval of t - tm multiplies it, so
+        # that Y keeps its cancellations (Y F'' is the path's bend, small however large Y is)
+        per_radian = [vi / self.unit for vi in v]
+        first = [a * self.unit for a in self.f.along(*at_middle, *per_radian)]
+        bend = [b * (self.unit * self.unit / 2) for b in self.f.bend(*line, *inputs, *self.known, *per_radian)]
+        half = abs(tb - ta) / 2
+        square = _ball(half * half / 2, half * half / 2)  # (t - tm)**2: [0, half**2]
+
+        def taylor(value: Sequence[arb], rate: Sequence[arb], curve: Sequence[arb], columns: int) -> arb_mat:
+            return (inverse * arb_mat(n, columns, list(value)) + (inverse * arb_mat(n, columns, list(rate))) * offset
+                    + (inverse * arb_mat(n, columns, list(curve))) * square)
+
+        newton = taylor(residual(*at_middle), first[:n], bend[:n], 1)
+        turned = taylor(jacobian(*at_middle), first[n:], bend[n:], n)
+        second = self.f.second(*tube, *inputs, *self.known)
+        for k in range(n):  # J's spread over the box around the line: F's second derivatives
+            turned += (inverse * arb_mat(n, n, second[k * n * n:(k + 1) * n * n])) * arb(0, radius)
         identity = arb_mat([[int(i == j) for j in range(n)] for i in range(n)])
         spread = arb_mat(n, 1, [arb(0, radius)] * n)
-        k = arb_mat(n, 1, c) - inverse * middle + (identity - inverse * over_tube) * spread
+        k = arb_mat(n, 1, c) - newton + (identity - turned) * spread
         return all(b.contains_interior(k[i, 0]) for i, b in enumerate(box))
 
     def meeting(self, x: Floats, enclosure: list[arb], ta: Fraction, tried: Fraction, t1: Fraction) -> Meeting:
