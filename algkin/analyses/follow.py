@@ -43,7 +43,7 @@ from ..scene.implicit.base import Point
 from ..system import symbol
 from ..verify.follow import BITS, Follower, Path
 from .frozen import deep_frozen, thawed
-from .solve import DIGITS, MAX_DIGITS, _decimal, _value, solve
+from .solve import DIGITS, MAX_DIGITS, _decimal, _quarter, _value, solve
 
 __all__ = ["follow", "Followed", "FollowedSample"]
 
@@ -201,6 +201,8 @@ def _input_balls(variables: tuple[str, ...], value: Fraction) -> dict[str, flint
     ball = flint.arb(flint.fmpq(value.numerator, value.denominator))
     if len(variables) == 1:
         return {variables[0]: ball}
+    if value % 90 == 0:  # exact, as solve gives them: a crank at 90 degrees is at x = 0
+        return dict(zip(variables, map(flint.arb, _quarter(value))))
     radians = ball * flint.arb.pi() / 180
     return {variables[0]: radians.cos(), variables[1]: radians.sin()}
 
@@ -234,8 +236,10 @@ def _outward(value: Fraction, digits: int, rounding: str) -> str:
 
     >>> _outward(Fraction(1, 3), 3, ROUND_FLOOR), _outward(Fraction(1, 3), 3, ROUND_CEILING), _outward(Fraction(90), 3, ROUND_FLOOR)
     ('0.333', '0.334', '90')
+    >>> _outward(Fraction(10**40 + 1, 10**40), 35, ROUND_CEILING)  # past Decimal's own 28 digits
+    '1.0000000000000000000000000000000001'
     """
     with localcontext() as context:
         context.prec, context.rounding = digits, rounding
-        exact = Decimal(value.numerator) / Decimal(value.denominator)
-    return format(exact.normalize(), "f")
+        rounded = (Decimal(value.numerator) / Decimal(value.denominator)).normalize()
+    return format(rounded, "f")
