@@ -23,7 +23,7 @@ samples are the proven steps' ends, each point's coordinates as decimal strings.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal, localcontext
 from fractions import Fraction
 from typing import Any
@@ -43,7 +43,7 @@ from ..scene.implicit.base import Point
 from ..system import symbol
 from ..verify.follow import BITS, Follower, Path
 from .frozen import deep_frozen, thawed
-from .solve import DIGITS, MAX_DIGITS, _decimal, _quarter, _value, solve
+from .solve import DIGITS, MAX_DIGITS, decimal_text, input_value, quarter_turn, solve
 
 __all__ = ["follow", "Followed", "FollowedSample"]
 
@@ -62,6 +62,10 @@ class FollowedSample:
         return {"at": self.at, "points": {p: list(xy) for p, xy in self.points.items()}, "radius": self.radius}
 
 
+def _frozen_meeting(meeting: Mapping[str, Any] | None) -> FrozenDict[str, Any] | None:
+    return None if meeting is None else deep_frozen(meeting)
+
+
 @attrs.frozen
 class Followed:
     """The mode ``mode`` of ``scene`` followed along ``input`` from ``start`` toward ``stop``:
@@ -77,7 +81,7 @@ class Followed:
     samples: tuple[FollowedSample, ...]
     steps: int
     ended: str
-    meeting: FrozenDict[str, Any] | None = attrs.field(converter=lambda m: None if m is None else deep_frozen(m))
+    meeting: FrozenDict[str, Any] | None = attrs.field(converter=_frozen_meeting)
 
     def to_json(self) -> dict[str, Any]:
         return {"scene": self.scene, "mode": self.mode, "input": self.input, "from": str(self.start),
@@ -144,7 +148,7 @@ def _span(scene: Scene, start: Mapping[str, Any], stop: Any) -> tuple[str, Fract
 def _checked(scene: Scene, name: str, value: Any, argument: str) -> Fraction:
     """``solve``'s check of an input value, its error naming ``argument``."""
     try:
-        return _value(scene, name, value)
+        return input_value(scene, name, value)
     except UsageError as err:
         raise UsageError(argument, err.value, err.message) from None
 
@@ -202,7 +206,7 @@ def _input_balls(variables: tuple[str, ...], value: Fraction) -> dict[str, flint
     if len(variables) == 1:
         return {variables[0]: ball}
     if value % 90 == 0:  # exact, as solve gives them: a crank at 90 degrees is at x = 0
-        return dict(zip(variables, map(flint.arb, _quarter(value))))
+        return dict(zip(variables, map(flint.arb, quarter_turn(value))))
     radians = ball * flint.arb.pi() / 180
     return {variables[0]: radians.cos(), variables[1]: radians.sin()}
 
@@ -217,9 +221,9 @@ def _sample(system: _Equations, variables: tuple[str, ...], path: Path, index: i
                   for p, xy in system.coordinates.items()}
     radii = [float(b.rad()) for xy in points.values() for b in xy]
     radius = math.nextafter(max(radii, default=0.0), math.inf) if any(radii) else 0.0
-    shown = {p: (_decimal(x, digits), _decimal(y, digits)) for p, (x, y) in points.items()}
+    shown = {p: (decimal_text(x, digits), decimal_text(y, digits)) for p, (x, y) in points.items()}
     at = flint.arb(flint.fmpq(sample.t.numerator, sample.t.denominator))
-    return FollowedSample(_decimal(at, digits), shown, radius, sample.values)
+    return FollowedSample(decimal_text(at, digits), shown, radius, sample.values)
 
 
 def _meeting(path: Path, digits: int) -> dict[str, Any]:

@@ -39,6 +39,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from fractions import Fraction
+from typing import Any
 
 import attrs
 import flint
@@ -238,14 +239,15 @@ class _Track:
     def tangent(self, x: Floats, t: Fraction) -> Floats | None:
         _, jacobian, rate = self.float_parts(x, float(t))
         try:
-            return -np.linalg.solve(jacobian, rate)
+            tangent: Floats = -np.linalg.solve(jacobian, rate).astype(np.float64)
         except np.linalg.LinAlgError:
             return None
+        return tangent
 
     # balls
     def enclose(self, x: Floats, t: Fraction) -> list[arb] | None:
         """The solution next to ``x`` at ``t`` proved unique in a small box, in balls."""
-        return self.f.point(x, self.inputs(_ball(t)) + self.known)
+        return self.f.point(x.tolist(), self.inputs(_ball(t)) + self.known)
 
     def step(self, x: Floats, enclosure: list[arb], ta: Fraction, tb: Fraction) -> tuple[Floats, list[arb]] | None:
         """The path from ``enclosure`` at ``ta`` proved to ``tb``: the float solution and enclosure there, or None."""
@@ -303,15 +305,15 @@ class _Track:
         half = abs(tb - ta) / 2
         square = _ball(half * half / 2, half * half / 2)  # (t - tm)**2: [0, half**2]
 
-        def taylor(value: Sequence[arb], rate: Sequence[arb], curve: Sequence[arb], columns: int) -> arb_mat:
+        def taylor(value: Sequence[Any], rate: Sequence[Any], curve: Sequence[Any], columns: int) -> arb_mat:
             return (inverse * arb_mat(n, columns, list(value)) + (inverse * arb_mat(n, columns, list(rate))) * offset
                     + (inverse * arb_mat(n, columns, list(curve))) * square)
 
         newton = taylor(residual(*at_middle), first[:n], bend[:n], 1)
         turned = taylor(jacobian(*at_middle), first[n:], bend[n:], n)
         second = self.f.second(*tube, *inputs, *self.known)
-        for k in range(n):  # J's spread over the box around the line: F's second derivatives
-            turned += (inverse * arb_mat(n, n, second[k * n * n:(k + 1) * n * n])) * arb(0, radius)
+        for axis in range(n):  # J's spread over the box around the line: F's second derivatives
+            turned += (inverse * arb_mat(n, n, second[axis * n * n:(axis + 1) * n * n])) * arb(0, radius)
         identity = arb_mat([[int(i == j) for j in range(n)] for i in range(n)])
         spread = arb_mat(n, 1, [arb(0, radius)] * n)
         k = arb_mat(n, 1, c) - newton + (identity - turned) * spread
@@ -369,7 +371,7 @@ class Fold:
         solved = self._newton(guess, parameters)
         if solved is None:
             return None
-        enclosure = self.certifier(solved, [arb(p) for p in null] + track.known)
+        enclosure = self.certifier(solved.tolist(), [arb(p) for p in null] + track.known)
         if enclosure is None:
             return None
         values, variables = enclosure[:self.n], enclosure[2 * self.n:]

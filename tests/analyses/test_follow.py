@@ -141,3 +141,8 @@ def test_bad_input_names_the_argument(kwargs, said):
 def test_a_mode_that_does_not_assemble_at_the_start_is_refused():
     with pytest.raises(UsageError, match="mode='left': does not assemble at theta = 150"):
         follow("fourbar-nongrashof", mode="left", start={"theta": 150}, stop=0)
+
+
+def test_the_facade_exports_it():
+    followed = algkin.follow("chebyshev-lambda", mode="right", start={"angle": 0}, stop=90)
+    assert type(followed) is algkin.Followed and followed.mode == "right" and followed.samples[-1].at == "90"
