@@ -146,3 +146,11 @@ def test_a_mode_that_does_not_assemble_at_the_start_is_refused():
 def test_the_facade_exports_it():
     followed = algkin.follow("chebyshev-lambda", mode="right", start={"angle": 0}, stop=90)
     assert type(followed) is algkin.Followed and followed.mode == "right" and followed.samples[-1].at == "90"
+
+
+def test_the_result_is_a_frozen_value_its_balls_kept_out_of_equality():
+    first, second = (follow("chebyshev-lambda", mode="left", start={"angle": 0}, stop=90, digits=10) for _ in range(2))
+    assert first == second and hash(first) == hash(second)
+    assert all(isinstance(ball, flint.arb) for ball in first.samples[-1].values.values())
+    with pytest.raises(AttributeError):
+        first.steps = 0
