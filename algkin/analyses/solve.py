@@ -35,6 +35,7 @@ import attrs
 import flint
 import sympy
 
+from ..runtime import suggest
 from ..branches import Branch, closed_forms
 from ..eliminate.group import GroupSolution, Mode, modes, solve_group
 from ..errors import ComputationError, SceneError, UsageError
@@ -117,7 +118,7 @@ def _inputs(scene: Scene, used: Iterable[str], at: Mapping[str, Any]) -> dict[st
     """``at`` as exact values, checked: every input the scene's points move with (``used``) given, each in range."""
     for name in at:
         if name not in scene.inputs:
-            raise UsageError("at", name, f"not an input of {scene.name} (inputs: {', '.join(scene.inputs) or 'none'})")
+            raise UsageError("at", name, f"not an input of {scene.name}" + suggest.known(name, scene.inputs, plural="inputs"))
     missing = [n for n in used if n not in at]
     if missing:
         raise UsageError("at", ", ".join(missing), f"no value given for {', '.join(missing)} (NAME=VALUE)")

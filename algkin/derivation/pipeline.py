@@ -17,6 +17,7 @@ from collections.abc import Mapping, Sequence
 
 import attrs
 
+from ..runtime import suggest
 from ..eliminate import DEFAULT_METHOD
 from ..errors import UsageError
 from ..runtime import validation
@@ -158,8 +159,8 @@ def _prepared_for_curve(source: _Source, point: str, deadline: Deadline) -> Prep
         prepared = source.scene
         _check_point(prepared.scene, point)
         if point not in prepared.compiled.outputs:
-            raise UsageError("point", point, f"not an output {prepared.scene.name} was prepared for "
-                             f"(outputs: {', '.join(prepared.compiled.outputs)})")
+            raise UsageError("point", point, f"not an output {prepared.scene.name} was prepared for"
+                             + suggest.known(point, prepared.compiled.outputs, plural="outputs"))
         _check_one_input(prepared.compiled, point)
         return prepared
     scene = load(source.scene, values=source.values, params=source.params, deadline=deadline)
@@ -175,7 +176,7 @@ def _prepared_for_curve(source: _Source, point: str, deadline: Deadline) -> Prep
 
 def _check_point(scene: Scene, point: str) -> None:
     if not isinstance(point, str) or point not in scene.points:
-        raise UsageError("point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
+        raise UsageError("point", point, f"not a point of {scene.name}" + suggest.known(point, scene.points, plural="points"))
 
 
 def _check_one_input(compiled: Compiled, point: str) -> None:

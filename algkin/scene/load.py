@@ -14,7 +14,7 @@ import os
 import re
 import stat
 import sys
-from collections.abc import Container, Mapping
+from collections.abc import Collection, Mapping
 from fractions import Fraction
 from typing import Any, NoReturn, Union
 
@@ -25,6 +25,7 @@ else:  # Python 3.10
 
 import sympy
 
+from ..runtime import suggest
 from ..errors import SceneError, UsageError
 from .constraints import Constraint, parse_constraint
 from .constructions import CONSTRUCTIONS, Construction, Crank, Dyad, Fixed, Frame, Slider, Unknown
@@ -70,8 +71,9 @@ def load_scene(name_or_path: str | os.PathLike[str]) -> Scene:
         if path in catalog_names():
             path = os.path.join(_CATALOG, path + ".toml")
         else:
-            known = ", ".join(catalog_names())
-            raise SceneError(path, "", f"no such file and no catalog scene of that name (catalog: {known})")
+            names = catalog_names()
+            raise SceneError(path, "", "no such file and no catalog scene of that name"
+                             + suggest.known(path, names, plural="catalog"))
     data = _read(path)
     try:
         text = data.decode("utf-8")
@@ -262,9 +264,9 @@ class _Loader:
             self.fail(f"{element}.{key}", f"the two base points must differ, got {first!r} twice")
         return first, second
 
-    def point_ref(self, value: object, element: str, names: Container[str]) -> str:
+    def point_ref(self, value: object, element: str, names: Collection[str]) -> str:
         if not isinstance(value, str) or value not in names:
-            self.fail(element, f"unknown point {value!r}")
+            self.fail(element, f"unknown point {value!r}" + suggest.did_you_mean(str(value), names))
         return value
 
     def positive(self, value: object, element: str) -> sympy.Expr:
@@ -439,7 +441,7 @@ _ANGLE = re.compile(r"^\s*angle\s*\((.*)\)\s*$", re.DOTALL)
 _ANGLE_FORMS = "angle(P, Q) (the direction of PQ) or angle(P, Q, R) (the angle at Q between QP and QR)"
 
 
-def parse_output(name: str, text: str, points: Container[str], *, source: str = "<scene>",
+def parse_output(name: str, text: str, points: Collection[str], *, source: str = "<scene>",
                  element: str | None = None) -> Output:
     """Read an output string: a point name, ``dist(P, Q)``, ``P.x``, ``P.y``, ``angle(P, Q)``
     (the direction of PQ) or ``angle(P, Q, R)`` (the angle at Q between QP and QR, in [0, 180] deg).
@@ -462,7 +464,7 @@ def parse_output(name: str, text: str, points: Container[str], *, source: str = 
         kind, refs = "point", (text.strip(),)
     for ref in refs:
         if ref not in points:
-            raise SceneError(source, element, f"unknown point {ref!r} in {text!r}")
+            raise SceneError(source, element, f"unknown point {ref!r} in {text!r}" + suggest.did_you_mean(ref, points))
     return Output(name, kind, tuple(refs), text)
 
 

@@ -290,7 +290,7 @@ def report_derive(d: Document) -> str:
         lines.append(f"  {unknown}: {_brief(poly)}")
         lines.append(f"      degree {figures['degree']}, {figures['terms']} terms, "
                      f"{figures['coefficient_bits']}-bit coefficients, "
-                     f"dropped {len(figures['dropped_factors'])} extraneous factor(s)")
+                     + _dropped(len(figures['dropped_factors'])))
     lines.append("branches:")
     for branch in d["branches"]:
         mark = "  (scene's choice)" if branch["selected"] else ""
@@ -323,6 +323,17 @@ def _rates_lines(d: Document) -> list[str]:
     return lines + [f"  {f}" for f in v["failures"]]
 
 
+def _dropped(count: int) -> str:
+    """How many extraneous factors were dropped, said in words that read when there are none or one.
+
+    >>> _dropped(0), _dropped(1), _dropped(3)
+    ('no extraneous factor dropped', 'dropped 1 extraneous factor', 'dropped 3 extraneous factors')
+    """
+    if not count:
+        return "no extraneous factor dropped"
+    return f"dropped {count} extraneous factor{'s' if count > 1 else ''}"
+
+
 def report_curve(d: Document) -> str:
     """``algkin curve``'s text: the curve, its figures, the dropped factors, the verification."""
     lines = [f"curve of {d['point']} in {d['scene']}  (method {d['method']}, backend {d['backend']})",
@@ -330,7 +341,7 @@ def report_curve(d: Document) -> str:
              f"degree {d['degree']}, circularity {d['circularity']}, "
              f"{'irreducible' if d['irreducible'] else 'reducible'}, {d['terms']} terms, "
              f"{d['coefficient_bits']}-bit coefficients",
-             f"dropped {len(d['dropped_factors'])} extraneous factor(s):"]
+             _dropped(len(d["dropped_factors"])) + (":" if d["dropped_factors"] else "")]
     lines += [f"  {_brief(f)}" for f in d["dropped_factors"]]
     lines += [verification_line(d["verification"]), _timings_line(d["timings"])]
     return "\n".join(lines + _hint([d["curve"], *d["dropped_factors"]]))
