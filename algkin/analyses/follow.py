@@ -34,6 +34,7 @@ import sympy
 
 from ..errors import ComputationError, UsageError
 from ..evaluate import ARB, evaluate
+from ..runtime import suggest
 from ..runtime.budget import Deadline
 from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Scene, compile_scene
@@ -141,7 +142,7 @@ def _span(scene: Scene, start: Mapping[str, Any], stop: Any) -> tuple[str, Fract
         raise UsageError("start", start, "expected one input and its value, e.g. {'theta': 0}")
     (name, value), = start.items()
     if name not in scene.inputs:
-        raise UsageError("start", name, f"not an input of {scene.name} (inputs: {', '.join(scene.inputs) or 'none'})")
+        raise UsageError("start", name, f"not an input of {scene.name}" + suggest.known(name, scene.inputs, plural="inputs"))
     return name, _checked(scene, name, value, "start"), _checked(scene, name, stop, "stop")
 
 
