@@ -10,9 +10,11 @@ and a box ``B`` around the predicted ``y``,
 
     K = c - Y G(c, T) + (I - Y J(B + (T - tm) v, T)) (B - c),
 
-(``G(c, T)`` in centred form, ``G(c, tm) + (T - tm) dG/dt``) lies inside ``B``: then for every
-``t`` in the step there is exactly one solution in ``B``'s sheared section, and ``J`` is regular
-there, so the solutions form one smooth path through the step. Each step's end is enclosed on its
+lies inside ``B``: then for every ``t`` in the step there is exactly one solution in ``B``'s
+sheared section, and ``J`` is regular there, so the solutions form one smooth path through the step. ``G`` and ``J`` along the line are
+bounded to second order in ``t - tm`` (the first derivatives at the middle point, the second over
+the step, each multiplied by ``Y`` before the interval of ``t - tm``): ``Y`` keeps its cancellations,
+so a step stays long next to a toggle, where ``Y`` is large. Each step's end is enclosed on its
 own (``BlockCertifier``) and checked inside both steps' sections at that ``t``: the path cannot
 jump to another root, at any step size. A failed proof halves the step, a success doubles it
 (up to ``max_step``); a step below ``min_step`` stops the path where it meets another solution (a
@@ -121,9 +123,10 @@ class Follower:
         second = [sympy.diff(e, u) for u in unknowns for e in jacobian]
         arguments = list(names) + list(variables) + list(parameters)
         self.equations, self.jacobian_matrix = list(equations), jacobian
-        self.programs = {kind.name: (compile_program(list(equations), arguments, kind),
-                                     compile_program(list(jacobian), arguments, kind),
-                                     compile_program(rate, arguments, kind)) for kind in (ARB, FLOAT)}
+        self.floats = (compile_program(list(equations), arguments, FLOAT),
+                       compile_program(list(jacobian), arguments, FLOAT), compile_program(rate, arguments, FLOAT))
+        self.residual = compile_program(list(equations), arguments, ARB)
+        self.jacobian = compile_program(list(jacobian), arguments, ARB)
         with_slope = arguments + [str(v) for v in slope]
         self.along = compile_program(along, with_slope, ARB)
         self.bend = compile_program(bend, with_slope, ARB)
@@ -212,7 +215,7 @@ class _Track:
 
     # floats
     def float_parts(self, x: Floats, t: float) -> tuple[Floats, Floats, Floats]:
-        residual, jacobian, rate = self.f.programs["float"]
+        residual, jacobian, rate = self.f.floats
         arguments = [*map(float, x), *self.float_inputs(t), *self.known_floats]
         unit = math.pi / 180 if self.f.angle else 1.0
         return (np.array(residual(*arguments), dtype=float),
@@ -277,7 +280,7 @@ class _Track:
         """Whether the Krawczyk test proves one solution in each section of the sheared box
         ``centre +- radius + (t - tm) slope`` for every ``t`` between the ends, each end's enclosure in its section."""
         (ta, at_start), (tb, at_end) = start, end
-        residual, jacobian, rate = self.f.programs["arb"]
+        residual, jacobian = self.f.residual, self.f.jacobian
         n = self.f.n
         tm = (ta + tb) / 2
         offset = _ball(tm, abs(tb - ta) / 2) - _ball(tm)  # t - tm over the step
@@ -328,7 +331,7 @@ class _Track:
             lo, hi = _bounds(at)
             near = max(abs(float(v.mid()) - a) for v, a in zip(values, x)) <= 1e-2 * (1 + float(np.max(np.abs(x))))
             if min(ta, t1) <= hi and lo <= max(ta, t1) and near:
-                determinant = arb_mat(self.f.n, self.f.n, self.f.programs["arb"][1](*values, *self.inputs(at),
+                determinant = arb_mat(self.f.n, self.f.n, self.f.jacobian(*values, *self.inputs(at),
                                                                                    *self.known)).det()
                 return Meeting(min(ta, lo), max(ta, hi), determinant, True)
         tangent = self.tangent(x, ta)
@@ -336,7 +339,7 @@ class _Track:
         box = [e + arb(0, reach + 1e-12 * (1 + abs(float(e.mid())))) for e in enclosure]
         lo, hi = min(ta, tried), max(ta, tried)
         inputs = self.inputs(_ball((lo + hi) / 2, (hi - lo) / 2))
-        determinant = arb_mat(self.f.n, self.f.n, self.f.programs["arb"][1](*box, *inputs, *self.known)).det()
+        determinant = arb_mat(self.f.n, self.f.n, self.f.jacobian(*box, *inputs, *self.known)).det()
         return Meeting(lo, hi, determinant, False)
 
 
