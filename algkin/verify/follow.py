@@ -160,7 +160,8 @@ class Follower:
             x = track.newton(np.array(start, dtype=float), t0)
             enclosure = None if x is None else track.enclose(x, t0)
             if x is None or enclosure is None:
-                raise ComputationError(f"the start {list(start)} at {t0} is not proved to be next to a regular solution")
+                raise ComputationError(f"the start {list(start)} at {t0} is not proved to be next to a regular solution "
+                                       "(modes meet there, at a toggle?): start a little away from it")
             samples = [Sample(t0, dict(zip(self.names, enclosure)))]
             h, t = min(largest, span), t0
             while t != t1:
