@@ -18,7 +18,7 @@ from ...runtime.validation import real
 from .groups import group_curve, group_derive, group_toggles, group_verify
 from .sweep import COMMANDS as SWEEP_COMMANDS
 from .reports import (Document, Form, extremum_forms, latex_lines, render, report_accuracy, report_curve,
-                      report_derive, report_extremum, report_show, report_singular, report_solve, report_toggles, verification_line,
+                      report_derive, report_extremum, report_follow, report_show, report_singular, report_solve, report_toggles, verification_line,
                       terminal_safe)
 
 if TYPE_CHECKING:
@@ -373,15 +373,24 @@ def _cmd_solve(args: argparse.Namespace) -> Outcome:
     return render(args, found.to_json(), report_solve), 0
 
 
-def _at(texts: Sequence[str]) -> dict[str, str]:
-    """``--at NAME=VALUE``s as ``{name: value}``, each input once."""
+def _cmd_follow(args: argparse.Namespace) -> Outcome:
+    from ...analyses.follow import follow
+
+    start = _at([args.start], "--from")
+    found = follow(_scene_of(args), mode=args.mode, start=start, stop=args.stop, at=_at(args.at),
+                   digits=args.digits, max_step=args.max_step, deadline=args.deadline)
+    return render(args, found.to_json(), report_follow), 0
+
+
+def _at(texts: Sequence[str], flag: str = "--at") -> dict[str, str]:
+    """``NAME=VALUE``s (of ``flag``) as ``{name: value}``, each input once."""
     at: dict[str, str] = {}
     for text in texts:
         name, equals, value = text.partition("=")
         if not (equals and name.strip() and value.strip()):
-            raise UsageError("--at", text, "expected INPUT=VALUE, e.g. theta=30")
+            raise UsageError(flag, text, "expected INPUT=VALUE, e.g. theta=30")
         if name.strip() in at:
-            raise UsageError("--at", text, f"{name.strip()} given twice")
+            raise UsageError(flag, text, f"{name.strip()} given twice")
         at[name.strip()] = value.strip()
     return at
 
@@ -389,4 +398,4 @@ def _at(texts: Sequence[str]) -> dict[str, str]:
 COMMANDS: dict[str, Command] = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
             "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot,
             "toggles": _cmd_toggles, "singular": _cmd_singular, "accuracy": _cmd_accuracy, "bench": _cmd_bench,
-            "export": _cmd_export, "solve": _cmd_solve, **SWEEP_COMMANDS}
+            "export": _cmd_export, "solve": _cmd_solve, "follow": _cmd_follow, **SWEEP_COMMANDS}

@@ -14,7 +14,7 @@ if TYPE_CHECKING:
 
     from ...analyses.extremum import Extremum
 
-__all__ = ["render", "report_show", "report_derive", "report_curve", "report_singular", "report_solve", "report_toggles",
+__all__ = ["render", "report_show", "report_derive", "report_curve", "report_singular", "report_solve", "report_follow", "report_toggles",
            "report_extremum", "report_accuracy", "verification_line", "latex_lines", "extremum_forms", "terminal_safe",
            "Document", "Form"]
 
@@ -208,6 +208,32 @@ def report_solve(d: Document) -> str:
     lines += [f"  {c['mode']}: " + ", ".join(f"{p} = ({x}, {y})" for p, (x, y) in c["points"].items())
               for c in found]
     return "\n".join(lines + named)
+
+
+def report_follow(d: Document) -> str:
+    """``algkin follow``'s text: how the path ended, then each proven step's end and its points.
+
+    >>> print(report_follow({"scene": "s", "mode": "left", "input": "t", "from": "0", "to": "90", "digits": 5,
+    ...     "ended": "meets", "steps": 1, "samples": [{"at": "0", "points": {"B": ["1", "0"]}, "radius": 1e-30}],
+    ...     "meeting": {"from": "45", "to": "45.001", "determinant": "[+/- 1e-30]", "holds_zero": True,
+    ...                 "proved": True}}))
+    s, mode left, t from 0 to 90: meets another mode for t in [45, 45.001] after 1 proven step
+      det J there: [+/- 1e-30] (holds 0; the meeting point proved)
+      t = 0: B = (1, 0)
+    """
+    head = f"{d['scene']}, mode {d['mode']}, {d['input']} from {d['from']} to {d['to']}: "
+    steps = f"{d['steps']} proven step{'s' * (d['steps'] != 1)}"
+    meeting = d["meeting"]
+    if meeting is None:
+        lines = [head + f"reached {d['to']} in {steps}"]
+    else:
+        proved = "the meeting point proved" if meeting["proved"] else "where the proof could go no further"
+        zero = "holds 0" if meeting["holds_zero"] else "does not hold 0"
+        lines = [head + f"meets another mode for {d['input']} in [{meeting['from']}, {meeting['to']}] after {steps}",
+                 f"  det J there: {meeting['determinant']} ({zero}; {proved})"]
+    lines += [f"  {d['input']} = {s['at']}: " + ", ".join(f"{p} = ({x}, {y})" for p, (x, y) in s["points"].items())
+              for s in d["samples"]]
+    return "\n".join(lines)
 
 
 def report_show(d: Document) -> str:
