@@ -10,8 +10,6 @@ never shows it again at the end of the cell since it does not know the figure. I
 only where matplotlib is (``algkin.ui.plot.new_figure``).
 
 >>> figure = ShownFigure()
->>> FigureCanvasAgg(figure) is figure.canvas
-True
 >>> figure._repr_png_()[:8]
 b'\\x89PNG\\r\\n\\x1a\\n'
 """
@@ -20,10 +18,9 @@ from __future__ import annotations
 
 import io
 
-from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-__all__ = ["ShownFigure", "FigureCanvasAgg"]
+__all__ = ["ShownFigure"]
 
 
 class ShownFigure(Figure):

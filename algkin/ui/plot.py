@@ -44,7 +44,9 @@ def new_figure() -> Figure:
     """An empty figure on the Agg canvas (no pyplot state) that a notebook shows as an image
     (``algkin.ui.figure.ShownFigure``); AlgkinError without matplotlib."""
     try:
-        from .figure import FigureCanvasAgg, ShownFigure
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+        from .figure import ShownFigure
     except ImportError:
         raise AlgkinError("plotting needs matplotlib: pip install 'algkin[plot]'") from None
     figure = ShownFigure(figsize=(6.4, 4.4), layout="constrained")
