@@ -1,0 +1,58 @@
+"""``algkin export`` on scenes with points solved together: the numpy code (a root of the eliminant
+found by a root finder, the mode followed by continuation from where ``solve`` labels it, the other
+unknowns rational in it) gives ``algkin solve``'s coordinates; a hostile scene name stays data."""
+
+import importlib.util
+import math
+
+import numpy as np
+import pytest
+
+from algkin.analyses.solve import solve
+from algkin.scene import load_scene
+from algkin.ui.export import export
+
+from .cli.test_usage import run_cli
+
+
+def module(code, path):
+    path.write_text(code)
+    spec = importlib.util.spec_from_file_location("exported", path)
+    loaded = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(loaded)
+    return loaded
+
+
+@pytest.mark.parametrize("scene, inputs, radians", [
+    ("3rpr", ["5", "6", "7", "23/2", "12"], False),
+    ("stephenson-iii-triad", ["0", "360"], True),
+])
+def test_the_numpy_code_gives_solve_s_modes(tmp_path, scene, inputs, radians):
+    loaded = module(export(scene, ["P1"] if scene == "3rpr" else ["A", "P"], "numpy"), tmp_path / "m.py")
+    functions = [getattr(loaded, n) for n in dir(loaded) if n.startswith(scene.replace("-", "_").replace("3", "x3"))]
+    values = np.array([float(eval(v)) for v in inputs])  # noqa: S307 - our own literals
+    computed = [np.array(f(np.radians(values) if radians else values)) for f in functions]
+    name = "theta" if radians else "r1"
+    for k, value in enumerate(inputs):
+        found = solve(scene, {name: value}, digits=20).configurations
+        points = ["P1"] if scene == "3rpr" else ["A", "P"]
+        expected = sorted(tuple(float(v) for p in points for v in c.points[p]) for c in found)
+        here = sorted(tuple(c[:, k]) for c in computed if not math.isnan(c[0, k]))
+        assert len(here) == len(expected), (value, here, expected)
+        np.testing.assert_allclose(here, expected, atol=1e-9)
+
+
+def test_a_hostile_scene_name_stays_data(tmp_path):
+    text = (load_scene("3rpr").source if False else None)
+    source = (pathlib_text := __import__("importlib.resources", fromlist=["files"]).files("algkin.catalog")
+              .joinpath("3rpr.toml").read_text())
+    hostile = 'x\\"\\"\\"\\nimport pathlib; pathlib.Path(\\"PWNED_py\\").touch()\\n#'
+    scene = tmp_path / "hostile.toml"
+    scene.write_text(source.replace('name = "3rpr"', f'name = "{hostile}"'))
+    done = run_cli(["export", str(scene), "--to", "numpy", "--out", "m.py"], tmp_path)
+    assert done.returncode == 0, done.stderr
+    loaded = module((tmp_path / "m.py").read_text(), tmp_path / "m2.py")
+    assert not (tmp_path / "PWNED_py").exists()
+    functions = [n for n in dir(loaded) if callable(getattr(loaded, n)) and not n.startswith(("algkin_", "_"))]
+    assert len(functions) == 4 and all(n.isidentifier() for n in functions)
+    assert text is None and pathlib_text
