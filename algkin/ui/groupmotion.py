@@ -22,6 +22,7 @@ import math
 from collections.abc import Mapping, Sequence
 from fractions import Fraction
 from functools import cached_property
+from typing import Any
 
 import attrs
 import numpy as np
@@ -122,7 +123,7 @@ class GroupMotion:
     # -- floats, for filling in and drawing
 
     @cached_property
-    def _numeric(self) -> tuple[object, object, object]:
+    def _numeric(self) -> tuple[Any, Any, Any]:  # lambdified: equations, Jacobian, coordinates
         unknowns = [sympy.Symbol(u, real=True) for u in self.unknowns]
         variables = [sympy.Symbol(v, real=True) for v in self.variables]
         rename = {sympy.Symbol(n): sympy.Symbol(n, real=True) for n in (*self.unknowns, *self.variables)}
@@ -140,9 +141,9 @@ class GroupMotion:
         radians = math.radians(value)
         return [math.cos(radians), math.sin(radians)]
 
-    def place(self, unknowns: Sequence[float], value: float) -> dict[str, tuple[float, float]]:
+    def place(self, unknowns: Sequence[float] | Floats, value: float) -> dict[str, tuple[float, float]]:
         """Every point's (x, y) from the unknowns' values at the input ``value``."""
-        flat = self._numeric[2](list(unknowns), self.input_values(value))  # type: ignore[operator]
+        flat = self._numeric[2](list(unknowns), self.input_values(value))
         return {p: (float(flat[2 * k]), float(flat[2 * k + 1])) for k, p in enumerate(self.compiled.coordinates)}
 
     def newton(self, guess: Sequence[float], value: float) -> Floats:
@@ -151,8 +152,9 @@ class GroupMotion:
         x = np.array(guess, dtype=float)
         at = self.input_values(value)
         for _ in range(NEWTON):
-            step = np.linalg.lstsq(np.array(J(list(x), at), dtype=float),  # type: ignore[operator]
-                                   -np.array(F(list(x), at), dtype=float).ravel(), rcond=None)[0]  # type: ignore[operator]
+            jacobian = np.asarray(J(list(x), at), dtype=np.float64)
+            residual = np.asarray(F(list(x), at), dtype=np.float64).ravel()
+            step = np.linalg.lstsq(jacobian, -residual, rcond=None)[0]
             x = x + step
             if np.max(np.abs(step)) <= 1e-15 * (1 + np.max(np.abs(x))):
                 break

@@ -3,8 +3,6 @@ input drawn with its platform where ``algkin solve`` puts it; the .html page's s
 platform along each mode's followed path, checked in a headless browser against ``solve`` (and
 ``follow`` where ``solve`` cannot take the angle); bad input one line, exit 2, nothing written."""
 
-import pathlib
-import re
 
 import numpy as np
 import pytest
@@ -26,6 +24,7 @@ def solved(scene, at):
             for c in solve(scene, at, digits=20).configurations}
 
 
+@pytest.mark.slow
 def test_the_svg_draws_each_real_mode_platform_where_solve_puts_it(tmp_path):
     out = tmp_path / "3rpr.svg"
     done = run_cli(["plot", "3rpr", "--out", str(out), "--input", "r1=6"], tmp_path)
@@ -113,4 +112,3 @@ def test_the_triad_page_agrees_with_solve_and_follow(pages):
     expected = {p: (float(x), float(y)) for p, (x, y) in path.samples[-1].points.items()}
     close(state["positions"], expected)
     close(circles, expected)
-    assert re.search(r"\d", state["values"] and str(state["values"]))
