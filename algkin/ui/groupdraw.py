@@ -58,9 +58,10 @@ def _bounds(motion: GroupMotion) -> Bounds:
 
 
 def draw_configuration(axes: Axes, motion: GroupMotion, at: Mapping[str, tuple[float, float]], *,
-                       color: str = "tab:blue", gid: str = "") -> None:
+                       color: str = "tab:blue", gid: str = "", named: Sequence[str] | None = None) -> None:
     """Rails, legs, cranks, platforms, ground and joints of the configuration ``at`` (point -> (x, y));
-    the platforms' polygons get the id ``gid`` + ``platform`` (an SVG group's id)."""
+    the platforms' polygons get the id ``gid`` + ``platform-k`` (an SVG group's id); the points
+    ``named`` (default: all) get their name beside them."""
     for rail in motion.rails:
         _, a, b = rail.points
         if a in at and b in at and at[a] != at[b]:
@@ -80,6 +81,8 @@ def draw_configuration(axes: Axes, motion: GroupMotion, at: Mapping[str, tuple[f
     joints = [at[p] for p in at if p not in motion.ground]
     axes.plot([x for x, _ in joints], [y for _, y in joints], linestyle="none", **_JOINT)
     for name, (x, y) in at.items():
+        if named is not None and name not in named:
+            continue
         axes.annotate(name, (x, y), textcoords="offset points", xytext=(6, 6), fontsize="small",
                       annotation_clip=True).set_parse_math(False)  # a point's name is text
 
@@ -141,26 +144,35 @@ def modes_figure(motion: GroupMotion, value: float | None = None) -> Figure:
 
 
 def animate_modes(motion: GroupMotion, out: PathT, *, frames: int = 72, fps: int = 24) -> PathT:
-    """The input moved through its range, every mode that exists there drawn in its colour (``.gif``)."""
+    """The input moved through its range, every mode that exists there drawn in its colour (``.gif``).
+
+    The paths and the axes are drawn once; a frame replaces only the configurations' artists."""
     from matplotlib import animation
 
     bounds = _bounds(motion)
     figure = new_figure()
     axes = figure.add_subplot()
+    _paths(axes, motion)
+    _finish(axes, bounds, "")
     lo, hi = motion.input.span
+    static = set(axes.get_children())
 
     def frame(value: float) -> None:
-        axes.clear()
-        _paths(axes, motion)
+        for artist in [a for a in axes.get_children() if a not in static]:
+            artist.remove()
         built = motion.place([0.0] * len(motion.unknowns), value)
         draw_configuration(axes, motion, {p: built[p] for p in motion.built})
         shown = [k for k, path in enumerate(motion.paths) if path.covers(value)]
         for k in shown:
-            draw_configuration(axes, motion, motion.paths[k].at(value), color=_MODES[k % len(_MODES)])
+            draw_configuration(axes, motion, motion.paths[k].at(value), color=_MODES[k % len(_MODES)],
+                               named=motion.moving)  # the ground's names once, with the built points
         if not shown:
             axes.text(0.5, 0.5, _not_assembled(motion, value), transform=axes.transAxes, ha="center",
                       va="center", color="tab:red", wrap=True, parse_math=False)
-        _finish(axes, bounds, f"{motion.scene.name}: {motion.input.name} = {motion.input.shown(value)}")
+        axes.set_xlim(bounds[0], bounds[1])  # axline and fill must not move the limits
+        axes.set_ylim(bounds[2], bounds[3])
+        axes.set_title(f"{motion.scene.name}: {motion.input.name} = {motion.input.shown(value)}",
+                       fontsize="medium", parse_math=False)
 
     movie = animation.FuncAnimation(figure, frame, frames=list(np.linspace(lo, hi, frames)), cache_frame_data=False)
     with atomic_output(out) as temporary:  # the writer infers the format from the kept suffix

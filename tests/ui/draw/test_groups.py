@@ -112,3 +112,27 @@ def test_the_triad_page_agrees_with_solve_and_follow(pages):
     expected = {p: (float(x), float(y)) for p, (x, y) in path.samples[-1].points.items()}
     close(state["positions"], expected)
     close(circles, expected)
+
+
+@pytest.mark.slow
+def test_the_gif_moves_every_mode(tmp_path):
+    from PIL import Image
+
+    from algkin.ui.groupdraw import animate_modes
+
+    out = animate_modes(GroupMotion("3rpr"), tmp_path / "3rpr.gif", frames=3)
+    assert Image.open(out).n_frames == 3
+
+
+def test_the_page_keeps_a_hostile_scene_name_data(tmp_path):
+    from importlib import resources
+
+    from algkin.scene import load_scene_text
+    from algkin.ui.html.groups import group_page
+
+    hostile = "</script><script>alert(1)</script><!--"
+    text = resources.files("algkin.catalog").joinpath("3rpr.toml").read_text()
+    scene = load_scene_text(text.replace('name = "3rpr"', f'name = "{hostile}"'), "hostile.toml")
+    page = group_page(GroupMotion(scene))
+    assert page.count("<script>") == 1 and page.count("</script>") == 1 and "<!--" not in page
+    assert "&lt;/script&gt;&lt;script&gt;alert(1)" in page  # the title, escaped
