@@ -18,6 +18,7 @@ from algkin.bench.engines import find_msolve
 from algkin.errors import ComputationError, UsageError
 from algkin.eliminate.group import modes, solve_group
 from algkin.eliminate.group.algebra import univariate
+from algkin.eliminate.group.solve import _factored
 
 UNKNOWNS = ["x1", "y1", "x2", "y2"]
 
@@ -217,6 +218,18 @@ def test_a_stephenson_triad_driven_from_a_crank_outside_the_four_bar():
         _matched(found, triad.poses(lengths), UNKNOWNS)
         counts.append(len(found))
     assert counts[:2] == [6, 4]
+
+
+def test_an_eliminant_split_by_a_hint_has_the_factors_of_the_whole():
+    # the eliminant u**2 (u - r)**3 (u**2 - r) (r**2 + 1) split at its gcd with the hint (u - r) u (u + 1):
+    # the factors of both parts merged, multiplicities added, are flint's factors of the whole
+    ctx = flint.fmpq_mpoly_ctx.get(("u", "r"), "lex")
+    u, r = ctx.gens()
+    eliminant = 3 * u**2 * (u - r)**3 * (u**2 - r) * (r**2 + 1)
+    whole = {(str(f), m) for f, m in eliminant.factor()[1]}
+    assert {(str(f), m) for f, m in _factored(eliminant, (u - r) * u * (u + 1))} == whole
+    assert {(str(f), m) for f, m in _factored(eliminant, None)} == whole == {
+        ("u", 2), ("u - r", 3), ("u^2 - r", 1), ("r^2 + 1", 1)}
 
 
 def test_as_many_equations_as_unknowns():

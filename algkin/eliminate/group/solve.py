@@ -36,7 +36,7 @@ from __future__ import annotations
 
 import itertools
 import random
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 
 import attrs
 import flint
@@ -142,11 +142,12 @@ def _solve_by(group: _Group, variable: str, rng: random.Random) -> GroupSolution
     """The representation with ``variable`` separating, or _NotSeparating."""
     home = flint.fmpq_mpoly_ctx.get((variable,) + group.parameters, "lex")
     eliminant = _eliminant(group, variable).project_to_context(home)
-    _, factored = eliminant.factor()
+    others = [u for u in group.unknowns if u != variable]
+    lifted = {x: _lift(group, x, variable=variable, home=home) for x in others}
+    relations = {x: (r.a, r.b) for x, r in lifted.items()}
+    factored = _factored(eliminant, _hint(lifted.values(), home=home, bound=len(eliminant)))
     factors = [(f, m) for f, m in factored if f.degrees()[0] > 0]
     conditions = [f for f, _ in factored if f.degrees()[0] == 0]
-    others = [u for u in group.unknowns if u != variable]
-    relations = {x: _lift(group, x, variable=variable, home=home) for x in others}
     genuine = _genuine(group, variable, factors=factors, relations=relations, rng=rng)
     kept = [f for f, _ in factors if any(f is g for g in genuine)]
     product = home.from_dict({(0,) * len(home.names()): 1})
@@ -194,20 +195,70 @@ def _eliminant(group: _Group, variable: str) -> flint.fmpq_mpoly:
     return eliminant
 
 
-def _lift(group: _Group, unknown: str, *, variable: str, home: flint.fmpq_mpoly_ctx
-          ) -> tuple[flint.fmpq_mpoly, flint.fmpq_mpoly]:
-    """``(a, b)`` in ``variable`` and the parameters with ``a*unknown + b`` in the ideal."""
+@attrs.frozen
+class _Relation:
+    """``a*unknown + b`` in the ideal (``a``, ``b`` in the variable and the parameters, over
+    ``home``), and ``holder``, the member of least degree in ``unknown`` of the ideal's
+    elimination to ``unknown`` and the variable (in its own ring)."""
+
+    unknown: str
+    a: flint.fmpq_mpoly
+    b: flint.fmpq_mpoly
+    holder: flint.fmpq_mpoly
+
+
+def _lift(group: _Group, unknown: str, *, variable: str, home: flint.fmpq_mpoly_ctx) -> _Relation:
+    """The relation linear in ``unknown`` over ``variable`` and the parameters."""
     left = _eliminated(group, (unknown, variable))
     index = list(left[0].context().names()).index(unknown) if left else 0
     holders = sorted((p for p in left if p.degrees()[index] > 0), key=lambda p: (p.degrees()[index], len(p)))
     if holders and holders[0].degrees()[index] == 1:
         b, a = coefficients(holders[0], unknown)
-        return a.project_to_context(home), b.project_to_context(home)
+        return _Relation(unknown, a.project_to_context(home), b.project_to_context(home), holders[-1])
     for first, second in itertools.combinations(holders, 2):  # the lowest degrees first
         relation = linear_relation(first, second, unknown)
         if relation is not None:
-            return relation[0].project_to_context(home), relation[1].project_to_context(home)
+            return _Relation(unknown, relation[0].project_to_context(home), relation[1].project_to_context(home),
+                             holders[0])
     raise _NotSeparating(f"no relation linear in {unknown} over {variable}")
+
+
+def _hint(relations: Iterable[_Relation], *, home: flint.fmpq_mpoly_ctx, bound: int) -> flint.fmpq_mpoly | None:
+    """A polynomial in the variable and the parameters that the genuine part of the eliminant
+    likely divides and its extraneous factors likely do not: the resultant in ``x`` of the
+    smallest relation ``a*x + b`` with its holder of degree at most 2 (the holder at
+    ``x = -b/a``; on the 3-RPR, the platform joint's circle at its lift: the sextic itself);
+    None where there is none, or it is zero or larger than ``bound`` terms. Only a hint: it
+    splits the eliminant before factoring (``_factored``), never decides a factor."""
+    small = [r for r in relations if r.holder.degrees()[list(r.holder.context().names()).index(r.unknown)] <= 2]
+    if not small:
+        return None
+    relation = min(small, key=lambda r: len(r.a) + len(r.b))
+    ctx = relation.holder.context()
+    x = ctx.gens()[list(ctx.names()).index(relation.unknown)]
+    linear = relation.a.project_to_context(ctx) * x + relation.b.project_to_context(ctx)
+    hint = relation.holder.resultant(linear, relation.unknown)
+    return None if hint.is_zero() or len(hint) > bound else hint.project_to_context(home)
+
+
+def _factored(eliminant: flint.fmpq_mpoly, hint: flint.fmpq_mpoly | None) -> list[tuple[flint.fmpq_mpoly, int]]:
+    """The eliminant's irreducible factors with their multiplicities, as ``factor`` gives them;
+    where ``hint`` splits it (their gcd a proper factor ``g``), the factors of ``g`` and of
+    the cofactor merged: factoring two small polynomials costs a fifth of factoring their
+    product (the 3-RPR's eliminant: its sextic and an extraneous octic)."""
+    common = eliminant.gcd(hint) if hint is not None else None
+    if common is None or common.is_constant() or common.degrees() == eliminant.degrees():
+        return list(eliminant.factor()[1])
+    merged: dict[str, tuple[flint.fmpq_mpoly, int]] = {}
+    for part in (common, eliminant / common):
+        for factor, multiplicity in part.factor()[1]:
+            key = str(_monic(factor))
+            merged[key] = (merged[key][0], merged[key][1] + multiplicity) if key in merged else (factor, multiplicity)
+    return list(merged.values())
+
+
+def _monic(poly: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
+    return poly / poly.leading_coefficient()
 
 
 def _genuine(group: _Group, variable: str, *, factors: list[tuple[flint.fmpq_mpoly, int]],
