@@ -18,7 +18,7 @@ from algkin.bench.engines import find_msolve
 from algkin.errors import ComputationError, UsageError
 from algkin.eliminate.group import modes, solve_group
 from algkin.eliminate.group.algebra import univariate
-from algkin.eliminate.group.solve import _factored
+from algkin.eliminate.group.solve import PRIME, _factored, _fails_modulo
 
 UNKNOWNS = ["x1", "y1", "x2", "y2"]
 
@@ -230,6 +230,18 @@ def test_an_eliminant_split_by_a_hint_has_the_factors_of_the_whole():
     assert {(str(f), m) for f, m in _factored(eliminant, (u - r) * u * (u + 1))} == whole
     assert {(str(f), m) for f, m in _factored(eliminant, None)} == whole == {
         ("u", 2), ("u - r", 3), ("u^2 - r", 1), ("r^2 + 1", 1)}
+
+
+def test_a_prime_rules_out_a_factor_only_where_the_lifts_fail_over_qq():
+    # the circle x**2 + y**2 = 2 and the line y = x: the lift y = x; on x**2 - 1 (x = +-1) the
+    # equations hold, on x - 3 they do not (9 + 9 != 2), and a modulus with the prime in a
+    # denominator leaves the decision to the exact check
+    ctx = flint.fmpq_mpoly_ctx.get(("x", "y"), "lex")
+    x, y = ctx.gens()
+    equations, lifted = [x**2 + y**2 - 2, x - y], {"y": (flint.fmpq_poly([1]), flint.fmpq_poly([0, -1]))}
+    assert not _fails_modulo(equations, "x", lifted=lifted, modulus=flint.fmpq_poly([-1, 0, 1]))
+    assert _fails_modulo(equations, "x", lifted=lifted, modulus=flint.fmpq_poly([-3, 1]))
+    assert not _fails_modulo(equations, "x", lifted=lifted, modulus=flint.fmpq_poly([-3, 1]) / PRIME)
 
 
 def test_as_many_equations_as_unknowns():
