@@ -59,7 +59,8 @@ def _ratio(root: RealRoot, numerator: flint.fmpq_poly, denominator: flint.fmpq_p
         if not below.contains(0):
             with flint.ctx.workprec(root.bits):  # the division at the root's precision, not the default 53 bits
                 value = root.value(numerator) / below
-                if value.rad() <= flint.arb(2) ** (16 - bits) * max(1, abs(value.mid())) or root.bits >= 4 * bits:
+                scale = abs(value.mid()) if abs(value.mid()) > 1 else flint.arb(1)
+                if value.rad() <= flint.arb(2) ** (16 - bits) * scale or root.bits >= 4 * bits:
                     return value
         root = root.refined(root.bits * 2)
 
