@@ -20,12 +20,15 @@ True
 
 from __future__ import annotations
 
+import contextlib
 import os
+from collections.abc import Iterator
 
 __all__ = [
     "AlgkinError",
     "SceneError",
     "UsageError",
+    "renamed",
     "BudgetExceeded",
     "ComputationError",
     "OutputError",
@@ -61,6 +64,25 @@ class UsageError(AlgkinError, ValueError):
 
     def __reduce__(self) -> tuple[type[UsageError], tuple[str, object, str]]:
         return type(self), (self.argument, self.value, self.message)
+
+
+
+@contextlib.contextmanager
+def renamed(argument: str, *, to: str) -> Iterator[None]:
+    """A UsageError raised within that names ``argument`` names ``to`` instead: a caller's own
+    parameter, passed on under the other name.
+
+    >>> with renamed("outputs", to="output"):
+    ...     raise UsageError("outputs", "|AB|", "unknown point")
+    Traceback (most recent call last):
+    algkin.errors.UsageError: output='|AB|': unknown point
+    """
+    try:
+        yield
+    except UsageError as err:
+        if err.argument != argument:
+            raise
+        raise UsageError(to, err.value, err.message) from None
 
 
 class BudgetExceeded(AlgkinError, RuntimeError):

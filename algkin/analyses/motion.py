@@ -25,6 +25,7 @@ import numpy as np
 import sympy
 from numpy.typing import ArrayLike, NDArray
 
+from ..runtime import suggest
 from ..branches import closed_forms
 from ..errors import UsageError
 from ..evaluate import NUMPY, evaluate
@@ -199,8 +200,8 @@ class Motion:
         given: dict[str, _V | float] = dict(inputs or {})
         for name in given:
             if name not in self.inputs:
-                raise UsageError("inputs", name, f"not an input of {self.scene.name} "
-                                                  f"(inputs: {', '.join(self.inputs)})")
+                raise UsageError("inputs", name, f"not an input of {self.scene.name}"
+                                 + suggest.known(name, self.inputs, plural="inputs"))
         for name, spec in self.inputs.items():
             given.setdefault(name, spec.span[0])
         parameters = dict(parameters or {})

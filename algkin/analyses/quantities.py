@@ -69,9 +69,16 @@ class Mechanism:
         return Quantity(self, f"dist({p}, {q})")
 
     def x(self, point: str) -> Quantity:
+        """The x coordinate of ``point`` on the scene's chosen branch, as a ``Quantity``.
+
+        >>> B = load_quantities("chebyshev-lambda").x("B")
+        >>> round(B.at(angle=0), 12)   # the crank along the ground: B above (2 - 1/2, 0)
+        1.5
+        """
         return Quantity(self, f"{point}.x")
 
     def y(self, point: str) -> Quantity:
+        """The y coordinate of ``point`` on the scene's chosen branch, as a ``Quantity``."""
         return Quantity(self, f"{point}.y")
 
     def angle(self, p: str, q: str, r: str | None = None) -> Quantity:
@@ -135,7 +142,16 @@ class Quantity:
     def expr(self) -> sympy.Expr:
         """The closed form on the scene's chosen branch, in the input angle (``cos(theta)``,
         ``sin(theta)``) and symbolic dimensions; an angle in degrees (``acos``/``atan`` of the
-        closed form of the scalar standing for it, see ``algkin.analyses.extremum.angles``)."""
+        closed form of the scalar standing for it, see ``algkin.analyses.extremum.angles``).
+
+        The input angle here is in **radians**, as sympy's ``cos`` takes it, while ``at`` takes
+        degrees, as the scene's range and every command do:
+
+        >>> AB = load_quantities("arm-string", params=["b"]).dist("A", "B")
+        >>> theta, (b,) = AB.input, AB.symbolic_dimensions
+        >>> round(float(AB.expr.subs({theta: sympy.pi / 2, b: 80})), 9), round(AB.at(theta=90, b=80), 9)
+        (94.339811321, 94.339811321)
+        """
         return self._in_angle(self.expr_cs)
 
     @property

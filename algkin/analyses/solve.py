@@ -35,13 +35,16 @@ import attrs
 import flint
 import sympy
 
+from ..runtime import suggest
 from ..branches import Branch, closed_forms
+from ..derivation.modes import Followed, follow_modes, moded_points, on_mode, resolve_modes
 from ..eliminate.group import GroupSolution, Mode, modes, solve_group
 from ..errors import ComputationError, SceneError, UsageError
 from ..evaluate import ARB, evaluate
 from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled, Input, Scene, compile_scene
 from ..scene.groups import Groups, compile_groups
+from ..scene.constructions import Unknown
 from ..scene.load import as_scene
 from ..system.convert import flint_context, to_flint
 from ..system import input_values, symbol
@@ -53,6 +56,8 @@ DIGITS = 30
 MAX_DIGITS = 1000
 """The most digits asked for: past this the balls cost more than any reader needs."""
 RAISES = 5
+MODE_BITS = 128
+"""Working precision of the test that a configuration lies on a named mode's factor."""
 """Doublings of the working precision tried before a branch is left undecided."""
 
 
@@ -79,6 +84,8 @@ class Solution:
     digits: int
     configurations: tuple[Configuration, ...]
     complex_count: int | None = None
+    named_modes: tuple[str, ...] = ()  # the points whose mode the scene names by a configuration
+    left_out: int = 0  # configurations certified off those modes, left out
 
     def to_json(self) -> dict[str, Any]:
         document: dict[str, Any] = {"scene": self.scene, "at": {n: str(v) for n, v in self.at.items()},
@@ -86,6 +93,9 @@ class Solution:
                                     "configurations": [c.to_json() for c in self.configurations]}
         if self.complex_count is not None:
             document["complex_count"] = self.complex_count
+        if self.named_modes:  # keys of their own: a scene naming no mode gives the document it always gave
+            document["named_modes"] = list(self.named_modes)
+            document["left_out"] = self.left_out
         return document
 
 
@@ -109,15 +119,27 @@ def solve(scene: Scene | str, at: Mapping[str, Any], *, mode: str | None = None,
     labels = [b.label for b in branches]
     if mode is not None and mode not in labels:
         raise UsageError("mode", mode, f"not a mode of {scene.name} (modes: {', '.join(labels)})")
-    found = [_configuration(compiled, b, values, digits) for b in branches if mode in (None, b.label)]
-    return Solution(scene.name, values, digits, tuple(c for c in found if c is not None))
+    named = follow_modes(resolve_modes(scene)) if moded_points(scene) else ()
+    found = [(b, _configuration(compiled, b, values, digits)) for b in branches if mode in (None, b.label)]
+    assembled = [(b, c) for b, c in found if c is not None]
+    kept = tuple(c for b, c in assembled if _on_named(compiled, b, values, named))
+    return Solution(scene.name, values, digits, kept, named_modes=tuple(m.point for m in named),
+                    left_out=len(assembled) - len(kept))
+
+
+def _on_named(compiled: Compiled, branch: Branch, at: Mapping[str, Fraction], named: Sequence[Followed]) -> bool:
+    """Whether ``branch``'s configuration at ``at`` may lie on every named mode: False where a mode's
+    factor is certified nonzero at its point there (another mode)."""
+    with flint.ctx.workprec(MODE_BITS):
+        values = _ball_inputs(compiled, at)
+        return all(on_mode(followed, branch, values) for followed in named)
 
 
 def _inputs(scene: Scene, used: Iterable[str], at: Mapping[str, Any]) -> dict[str, Fraction]:
     """``at`` as exact values, checked: every input the scene's points move with (``used``) given, each in range."""
     for name in at:
         if name not in scene.inputs:
-            raise UsageError("at", name, f"not an input of {scene.name} (inputs: {', '.join(scene.inputs) or 'none'})")
+            raise UsageError("at", name, f"not an input of {scene.name}" + suggest.known(name, scene.inputs, plural="inputs"))
     missing = [n for n in used if n not in at]
     if missing:
         raise UsageError("at", ", ".join(missing), f"no value given for {', '.join(missing)} (NAME=VALUE)")
@@ -275,7 +297,56 @@ def _solved_together(scene: Scene, at: Mapping[str, Any], *, mode: str | None, d
     if mode is not None and mode not in labels:
         raise UsageError("mode", mode, f"not a mode of {scene.name} at {_said(values)} (modes: {', '.join(labels) or 'none'})")
     count = math.prod(s.complex_count for s in solutions)
-    return Solution(scene.name, values, digits, tuple(c for label, c in labelled if mode in (None, label)), count)
+    found = [c for label, c in labelled if mode in (None, label)]
+    named = [p for p, c in scene.points.items() if isinstance(c, Unknown) and c.mode is not None]
+    kept = [c for c in found if all(_group_label(compiled, p, c.mode) == _named_group_label(compiled, solutions, p)
+                                    for p in named)]
+    return Solution(scene.name, values, digits, tuple(kept), count, named_modes=tuple(named),
+                    left_out=len(found) - len(kept))
+
+
+def _group_label(compiled: Groups, point: str, label: str) -> str:
+    """The part of a configuration's label that is the mode of ``point``'s group."""
+    index = next(k for k, g in enumerate(compiled.groups) if point in g.points)
+    return label.split(" ")[index]
+
+
+def _named_group_label(compiled: Groups, solutions: Sequence[GroupSolution], point: str) -> str:
+    """The label of the mode of ``point``'s group that its ``mode = { at, near }`` names: at ``at``,
+    the configuration whose ``point`` is close to ``near`` (within a quarter of the distance from it to
+    the next configuration's ``point``), certified in balls; a SceneError naming the nearest otherwise."""
+    scene = compiled.scene
+    construction = scene.points[point]
+    assert isinstance(construction, Unknown) and construction.mode is not None
+    element = f"points.{point}.mode"
+    at = dict(construction.mode.at)
+    try:
+        values = _inputs(scene, list(at), at)
+        exact = _exact_inputs(compiled, values)
+    except UsageError as err:
+        raise SceneError(scene.source, f"{element}.at", err.message) from None
+    labelled = _configurations(compiled, solutions, exact, values, DIGITS)
+    with flint.ctx.workprec(MODE_BITS):
+        near = [flint.arb(flint.fmpq(int(v.p), int(v.q))) for v in construction.mode.near]
+        places = [[flint.arb(f"{v} +/- {c.radius}") for v in c.points[point]] for _, c in labelled]
+        distances = [_distance(p, near) for p in places]
+        order = sorted(range(len(places)), key=lambda k: float(distances[k].mid()))
+        if not order:
+            raise SceneError(scene.source, f"{element}.at", f"no configuration of {point}'s group at {_said(values)}")
+        gap = min((_distance(places[order[0]], places[k]) for k in order[1:]), key=lambda b: float(b.mid()),
+                  default=None)
+        if gap is not None and not distances[order[0]] * 4 < gap:
+            x, y = labelled[order[0]][1].points[point]
+            raise SceneError(scene.source, f"{element}.near", "[" + ", ".join(f"{float(v.mid()):g}" for v in near)
+                             + f"] is not close to a configuration of {point} at {_said(values)}: the nearest is [{float(x):.6g}, "
+                             f"{float(y):.6g}] ({labelled[order[0]][0]}), {float(distances[order[0]].mid()):.3g} away "
+                             f"(close: within 1/4 of the {float(gap.mid()):.3g} to the next configuration's {point})")
+    return _group_label(compiled, point, labelled[order[0]][0])
+
+
+def _distance(p: Sequence[flint.arb], q: Sequence[flint.arb]) -> flint.arb:
+    dx, dy = p[0] - q[0], p[1] - q[1]
+    return (dx * dx + dy * dy).sqrt()
 
 
 def _exact_inputs(compiled: Groups, at: Mapping[str, Fraction]) -> dict[str, flint.fmpq]:

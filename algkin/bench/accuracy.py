@@ -52,7 +52,7 @@ from ..branches import Branch, closed_forms
 from ..branches.stable import StableBranch, output_forms
 from ..derivation.assembles import certify_labels
 from ..derivation.pipeline import derive
-from ..errors import UsageError
+from ..errors import UsageError, renamed
 from ..evaluate.fused import numba_available
 from ..runtime import progress, validation
 from ..runtime.budget import Budget, Deadline, started
@@ -380,7 +380,8 @@ def accuracy(scene: SceneLike, samples: int = 2000, seed: int = 0, set: Values |
     if lengths:  # the stabilised forms and the hard cases near toggles are laid out on a turning input
         raise UsageError("scene", scene.name, f"accuracy is measured over an input angle; {lengths[0]} is a length")
     rng = np.random.default_rng(seed)
-    subject = Subject(scene, of, deadline=deadline)
+    with renamed("outputs", to="of"):
+        subject = Subject(scene, of, deadline=deadline)
     rows: list[AccuracyRow] = []
     deadline.note(f"measuring each strategy on {scene.name}")
     for case, theta in progress.counted(sample_cases(subject, samples, rng).items(), "cases"):

@@ -12,6 +12,7 @@ methods are timed on what a user's command runs, plus that command itself, end t
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from ..runtime import suggest
 from ..derivation.tasks import EliminationTask, curve_task, eliminant_tasks
 from ..errors import UsageError
 
@@ -103,6 +104,6 @@ def problem_names() -> list[str]:
 def build(name: str) -> Problem:
     """The ``Problem`` called ``name``; a UsageError naming the valid ones otherwise."""
     if name not in PROBLEMS:
-        raise UsageError("problems", name, f"unknown problem; valid: {', '.join(PROBLEMS)}")
+        raise UsageError("problems", name, "unknown problem" + suggest.known(name, PROBLEMS, plural="valid"))
     description, task, run = PROBLEMS[name]
     return Problem(name, description, task(), run())

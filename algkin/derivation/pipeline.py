@@ -16,7 +16,9 @@ import time
 from collections.abc import Mapping, Sequence
 
 import attrs
+import sympy
 
+from ..runtime import suggest
 from ..eliminate import DEFAULT_METHOD
 from ..errors import UsageError
 from ..runtime import validation
@@ -26,6 +28,7 @@ from ..scene.load import SceneLike, Values
 from ..verify import Verification
 from .assembles import certify_labels
 from .curves import curve_figures, family_method, refuse_still
+from .modes import Followed, follow_modes, mode_witnesses, moded_points, other_modes
 from .checking import verify_prepared
 from .prepared import Prepared, given, load, prepare, prepared_from, timed
 from .results import CurveResult, Derivation
@@ -105,8 +108,14 @@ def _derive(source: _Source, engine: Engine, *, certify: bool, deadline: Deadlin
     deadline.note(f"certifying the branch labels of {compiled.scene.name}")
     with timed(timings, "certify"):
         certified = certify_labels(compiled, branches) if certify else [None] * len(branches)
+    modes: tuple[Followed, ...] = ()
+    if moded_points(compiled.scene):
+        deadline.note(f"following the named modes of {compiled.scene.name}")
+        with timed(timings, "modes"):
+            modes = follow_modes(compiled.scene, {s.point for s in compiled.implicit}, deadline=deadline)
     timings["total"] = time.perf_counter() - start
-    return Derivation(compiled, engine.method, engine.backend, eliminations, branches, verification, timings, certified)
+    return Derivation(compiled, engine.method, engine.backend, eliminations, branches, verification, timings, certified,
+                      modes)
 
 
 def _verify(prepared: Prepared, engine: Engine, eliminations: Mapping[str, Eliminant]) -> Verification:
@@ -138,17 +147,27 @@ def _curve(source: _Source, engine: Engine, *, point: str, deadline: Deadline, s
     compiled = prepared.compiled
     timings = dict(prepared.timings)
     refuse_still(compiled, prepared.branches, point)
+    modes = follow_modes(compiled.scene, {s.point for s in compiled.implicit}, deadline=deadline) \
+        if moded_points(compiled.scene) else ()
     with timed(timings, "eliminate"):
-        task = curve_task(compiled, prepared.witnesses, point)
+        # on a named mode, its configurations are the witnesses: the curve keeps the mode's factors
+        groups = tuple(g for m in modes for g in mode_witnesses(compiled, prepared.branches, m)) or prepared.witnesses
+        task = curve_task(compiled, groups, point)
         result = task.run(family_method(task, engine.method), engine.backend, deadline)
     variables = task.keep[:2]
     degree, circularity = curve_figures(result.exact[0], variables)
+    others = other_modes(result, prepared.witnesses) if modes else ()
     deadline.note(f"verifying the curve of {point} in {compiled.scene.name}")
     with timed(timings, "verify"):
-        verification = _verify(prepared, engine, {"curve": result})
+        if others:  # every branch is checked: on the curve of the whole motion, the other modes' factors with it
+            verification = verify_prepared(prepared, samples=engine.samples, seed=engine.seed,
+                                           polynomials={"curve": sympy.Mul(result.polynomial, *others)},
+                                           factors={"curve": [*result.factors, *others]})
+        else:
+            verification = _verify(prepared, engine, {"curve": result})
     timings["total"] = time.perf_counter() - start
     return CurveResult(compiled, point, variables, result, degree, circularity, len(result.raw_factors or ()) == 1,
-                       verification, timings)
+                       verification, timings, modes, tuple(str(f) for f in others))
 
 
 def _prepared_for_curve(source: _Source, point: str, deadline: Deadline) -> Prepared:
@@ -158,8 +177,8 @@ def _prepared_for_curve(source: _Source, point: str, deadline: Deadline) -> Prep
         prepared = source.scene
         _check_point(prepared.scene, point)
         if point not in prepared.compiled.outputs:
-            raise UsageError("point", point, f"not an output {prepared.scene.name} was prepared for "
-                             f"(outputs: {', '.join(prepared.compiled.outputs)})")
+            raise UsageError("point", point, f"not an output {prepared.scene.name} was prepared for"
+                             + suggest.known(point, prepared.compiled.outputs, plural="outputs"))
         _check_one_input(prepared.compiled, point)
         return prepared
     scene = load(source.scene, values=source.values, params=source.params, deadline=deadline)
@@ -175,7 +194,7 @@ def _prepared_for_curve(source: _Source, point: str, deadline: Deadline) -> Prep
 
 def _check_point(scene: Scene, point: str) -> None:
     if not isinstance(point, str) or point not in scene.points:
-        raise UsageError("point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
+        raise UsageError("point", point, f"not a point of {scene.name}" + suggest.known(point, scene.points, plural="points"))
 
 
 def _check_one_input(compiled: Compiled, point: str) -> None:

@@ -39,6 +39,7 @@ from ..scene.compile import resolve_outputs
 from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
 from .assembles import Pieces, where_assembled
+from .modes import resolve_modes
 from .witnesses import Groups, sampled_witnesses
 
 __all__ = ["Prepared", "prepare", "prepared_from", "load", "given", "require_outputs", "timed"]
@@ -96,9 +97,10 @@ def prepare(scene: SceneLike, *, outputs: Sequence[str] | None = None, params: S
 
 
 def load(scene: SceneLike, *, values: Values | None, params: Sequence[str], deadline: Deadline) -> Scene:
-    """The scene, loaded (or a given one checked), with the dimensions in ``values`` set."""
+    """The scene, loaded (or a given one checked), with the dimensions in ``values`` set and the
+    modes it names by a configuration resolved (``algkin.derivation.modes``)."""
     deadline.note(f"loading {getattr(scene, 'name', scene)}")
-    return with_values(as_scene(scene), values, params)
+    return resolve_modes(with_values(as_scene(scene), values, params))
 
 
 def prepared_from(compiled: Compiled, timings: Mapping[str, float] = FrozenDict()) -> Prepared:

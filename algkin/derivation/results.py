@@ -15,6 +15,7 @@ from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled
 from ..system import inputs_json
 from ..verify import Verification
+from .modes import Followed
 from .tasks import Eliminant
 
 __all__ = ["Derivation", "CurveResult", "Certified", "Eliminant", "Json"]
@@ -47,8 +48,24 @@ class Derivation:
     timings: FrozenDict[str, float] = attrs.field(converter=frozen, eq=False)
     # per branch: ({from_deg, to_deg, status}, ...), one-input scenes
     certified: tuple[Certified, ...] = attrs.field(default=(), converter=_intervals)
+    modes: tuple[Followed, ...] = ()  # the modes the scene names by a configuration, followed
 
     def to_json(self) -> Json:
+        document = self._json()
+        if self.modes:  # a key of its own: a scene without modes gives the document it always gave
+            document["modes"] = [self._mode_json(m) for m in self.modes]
+        return document
+
+    def _mode_json(self, followed: Followed) -> Json:
+        """A named mode, its pieces each with the branch that is the mode there and its closed forms."""
+        document = followed.to_json()
+        for piece, shown in zip((p for p in followed.pieces if p.status != "no-assembly"), document["pieces"]):
+            branch = followed.branch_of(piece, self.branches) if piece.status == "mode" else None
+            shown["branch"] = branch.label if branch else None
+            shown["values"] = {k: str(v) for k, v in branch.values.items()} if branch else {}
+        return document
+
+    def _json(self) -> Json:
         system = self.compiled.system
         return {
             "scene": self.compiled.scene.name,
@@ -80,8 +97,18 @@ class CurveResult:
     irreducible: bool
     verification: Verification
     timings: FrozenDict[str, float] = attrs.field(converter=frozen, eq=False)
+    modes: tuple[Followed, ...] = ()  # the named modes the curve keeps to
+    other_modes: tuple[str, ...] = ()  # the dropped factors that other modes trace
 
     def to_json(self) -> Json:
+        document = self._json()
+        if self.modes:  # a key of its own: a scene without modes gives the document it always gave
+            document["modes"] = [{"point": m.point, "at": {n: str(v) for n, v in m.mode.at},
+                                  "near": [str(v) for v in m.mode.near]} for m in self.modes]
+            document["other_modes_dropped"] = list(self.other_modes)
+        return document
+
+    def _json(self) -> Json:
         return {
             "scene": self.compiled.scene.name,
             "point": self.point,

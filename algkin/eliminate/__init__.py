@@ -25,6 +25,7 @@ from typing import Any, Generic, TypeVar, cast
 import flint
 import sympy
 
+from ..runtime import suggest
 from ..errors import ComputationError, UsageError
 from ..runtime.budget import Budget, Deadline, started
 from ..system.convert import flint_context, to_flint
@@ -149,7 +150,7 @@ class Elimination(Generic[P]):
 
 def _lookup(table: dict[str, _T], kind: str, name: str) -> _T:
     if name not in table:
-        raise UsageError(kind, name, f"unknown elimination {kind}; valid: {', '.join(sorted(table))}")
+        raise UsageError(kind, name, f"unknown elimination {kind}" + suggest.known(str(name), sorted(table), plural="valid"))
     return table[name]
 
 

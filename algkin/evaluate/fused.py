@@ -45,6 +45,7 @@ from typing import Any
 
 import numpy as np
 
+from ..runtime import suggest
 from ..errors import UsageError
 from ..runtime.files import write_atomic
 from .trace import Operand, Program
@@ -106,7 +107,7 @@ class Kernel:
     def engine(self, samples: int, engine: str = "auto") -> str:
         """``"compiled"`` or ``"numpy"``: what evaluates ``samples`` samples under ``engine``."""
         if engine not in ENGINES:
-            raise UsageError("engine", engine, f"unknown; valid: {', '.join(ENGINES)}")
+            raise UsageError("engine", engine, "unknown" + suggest.known(str(engine), ENGINES, plural="valid"))
         if engine == "numpy" or not numba_available():
             return "numpy"
         if engine == "compiled" or self.loaded:

@@ -16,6 +16,7 @@ from collections.abc import Iterable, Mapping, Sequence
 import attrs
 import sympy
 
+from ..runtime import suggest
 from ..errors import SceneError, UsageError
 from ..runtime.frozen import FrozenDict, frozen
 from ..system import System, symbol
@@ -109,11 +110,18 @@ def resolve_outputs(scene: Scene, requested: Sequence[str] | None) -> list[Outpu
         except SceneError as err:
             if text in scene.outputs:  # the scene file's own output: the file is at fault
                 raise
-            raise UsageError("outputs", text, err.message) from None
+            raise UsageError("outputs", text, err.message + _output_names(scene, text, err.message)) from None
         outputs.append(output)
     if not outputs:
         raise SceneError(scene.source, "outputs", "the scene has no outputs; ask for some by name")
     return outputs
+
+
+def _output_names(scene: Scene, text: str, said: str) -> str:
+    """What an output may be, and the scene's output most like ``text`` unless ``said`` (the error
+    so far) already suggests a point."""
+    hint = "" if "did you mean" in said else suggest.did_you_mean(text, scene.outputs)
+    return f" (outputs: {', '.join(scene.outputs) or 'none'}; or a point, P.x, P.y, dist(P, Q), angle(P, Q, R))" + hint
 
 
 def _requested_output(scene: Scene, text: str, generated: Mapping[str, str]) -> Output:
@@ -161,8 +169,8 @@ def _parameter_values(scene: Scene, symbolic: Sequence[str]) \
         -> tuple[dict[str, sympy.Expr], dict[sympy.Symbol, sympy.Expr], dict[str, int]]:
     for name in symbolic:
         if name not in scene.parameters:
-            known = ", ".join(scene.parameters) or "none"
-            raise UsageError("params", name, f"not a parameter of {scene.name} (parameters: {known})")
+            raise UsageError("params", name, f"not a parameter of {scene.name}"
+                             + suggest.known(name, scene.parameters, plural="parameters"))
     symbols = scene.parameter_symbols()
     defaults: dict[str, sympy.Expr] = {}
     substitution: dict[sympy.Symbol, sympy.Expr] = {}

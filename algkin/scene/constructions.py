@@ -17,7 +17,8 @@ from .implicit import DyadSpec, ImplicitSpec, MirrorSpec, SliderSpec
 from .implicit.mirror import mirror_equations
 from .implicit.base import Point
 
-__all__ = ["Construction", "Fixed", "Crank", "Dyad", "Slider", "Frame", "Unknown", "CONSTRUCTIONS", "Builder", "Indicator", "Unbuildable"]
+__all__ = ["Construction", "Fixed", "Crank", "Dyad", "Slider", "Frame", "Unknown", "Mode", "CONSTRUCTIONS", "Builder",
+           "Indicator", "Unbuildable"]
 
 
 class Unbuildable(ValueError):
@@ -33,6 +34,16 @@ class Indicator:
     positive: str
     negative: str
     chosen: str
+
+
+@dataclass(frozen=True)
+class Mode:
+    """``mode = { at = v, near = [x, y] }``: the assembly mode meant is the one whose point lies
+    nearest ``near`` when the inputs take the values ``at`` (input name -> exact value, in the
+    input's unit); ``algkin.derivation.modes`` resolves and follows it along the motion."""
+
+    at: tuple[tuple[str, sympy.Rational], ...]
+    near: tuple[sympy.Rational, sympy.Rational]
 
 
 class Builder:
@@ -125,7 +136,8 @@ class Dyad:
 
     bases: tuple[str, str]
     lengths: tuple[sympy.Expr, sympy.Expr]
-    branch: str
+    branch: str  # with a ``mode``: the mode's label at its ``at`` once resolved (the first label before)
+    mode: Mode | None = None
     labels = DyadSpec.labels
 
     @property
@@ -181,6 +193,7 @@ class Slider:
     length: sympy.Expr
     branch: str
     toward: str | None = None
+    mode: Mode | None = None  # as a dyad's
     labels = SliderSpec.labels
 
     @property
@@ -238,8 +251,10 @@ class Frame:
 @dataclass(frozen=True)
 class Unknown:
     """``unknown = true``: a point held by the scene's ``[constraints]``, solved together with the
-    others of its group (``algkin.scene.groups``), never built on its own."""
+    others of its group (``algkin.scene.groups``), never built on its own; a ``mode`` names the
+    group's mode that ``algkin solve`` keeps."""
 
+    mode: Mode | None = None
     references = ()
     labels = ()
 

@@ -14,7 +14,7 @@ True
 import json
 from collections.abc import Iterable
 
-from .constructions import Construction, Crank, Dyad, Fixed, Frame, Slider, Unknown
+from .constructions import Construction, Crank, Dyad, Fixed, Frame, Mode, Slider, Unknown
 from .model import Scene
 
 __all__ = ["dump_scene"]
@@ -39,7 +39,7 @@ def _point(construction: Construction, scene: Scene) -> str:
                 f"input = {_string(construction.input)}, phase = {phase}")
     if isinstance(construction, Dyad):
         return (f"dyad = {_exprs(construction.bases)}, lengths = {_exprs(construction.lengths)}, "
-                f"branch = {_string(construction.branch)}")
+                f"{_branch(construction.branch, construction.mode)}")
     if isinstance(construction, Frame):
         return f"frame = {_exprs(construction.bases)}, at = {_exprs(construction.at)}"
     if isinstance(construction, Slider):
@@ -47,10 +47,19 @@ def _point(construction: Construction, scene: Scene) -> str:
             else f"direction = {_exprs(construction.direction)}"
         return (f"slider = {{ through = {_string(construction.through)}, {line} }}, "
                 f"distance = {{ to = {_string(construction.to)}, length = {_string(construction.length)} }}, "
-                f"branch = {_string(construction.branch)}")
+                f"{_branch(construction.branch, construction.mode)}")
     if isinstance(construction, Unknown):
-        return "unknown = true"
+        return "unknown = true" + (f", {_branch('', construction.mode)}" if construction.mode else "")
     raise TypeError(f"no TOML form for a {type(construction).__name__} construction")
+
+
+def _branch(branch: str, mode: Mode | None) -> str:
+    """``branch = "left"``, or the ``mode = { at = .., near = [..] }`` that names it."""
+    if mode is None:
+        return f"branch = {_string(branch)}"
+    at = _string(mode.at[0][1]) if len(mode.at) == 1 else \
+        "{ " + ", ".join(f"{name} = {_string(value)}" for name, value in mode.at) + " }"
+    return f"mode = {{ at = {at}, near = {_exprs(mode.near)} }}"
 
 
 def _parameter(name: str, value: object, bounds: Iterable[object] | None) -> str:

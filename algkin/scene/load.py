@@ -14,7 +14,7 @@ import os
 import re
 import stat
 import sys
-from collections.abc import Container, Mapping
+from collections.abc import Collection, Mapping
 from fractions import Fraction
 from typing import Any, NoReturn, Union
 
@@ -25,9 +25,10 @@ else:  # Python 3.10
 
 import sympy
 
+from ..runtime import suggest
 from ..errors import SceneError, UsageError
 from .constraints import Constraint, parse_constraint
-from .constructions import CONSTRUCTIONS, Construction, Crank, Dyad, Fixed, Frame, Slider, Unknown
+from .constructions import CONSTRUCTIONS, Construction, Crank, Dyad, Fixed, Frame, Mode, Slider, Unknown
 from .expr import exact_number, irrational, parse
 from .model import Input, Output, Scene, length_range_problem, range_problem
 from .names import check_names
@@ -47,10 +48,10 @@ Ranges = dict[str, tuple[sympy.Rational, sympy.Rational]]
 _EXTRA_KEYS = {
     "fixed": set(),
     "crank": {"length", "input", "phase"},
-    "dyad": {"lengths", "branch"},
+    "dyad": {"lengths", "branch", "mode"},
     "frame": {"at"},
-    "slider": {"distance", "branch"},
-    "unknown": set(),
+    "slider": {"distance", "branch", "mode"},
+    "unknown": {"mode"},
 }
 
 
@@ -70,8 +71,9 @@ def load_scene(name_or_path: str | os.PathLike[str]) -> Scene:
         if path in catalog_names():
             path = os.path.join(_CATALOG, path + ".toml")
         else:
-            known = ", ".join(catalog_names())
-            raise SceneError(path, "", f"no such file and no catalog scene of that name (catalog: {known})")
+            names = catalog_names()
+            raise SceneError(path, "", "no such file and no catalog scene of that name"
+                             + suggest.known(path, names, plural="catalog"))
     data = _read(path)
     try:
         text = data.decode("utf-8")
@@ -262,9 +264,9 @@ class _Loader:
             self.fail(f"{element}.{key}", f"the two base points must differ, got {first!r} twice")
         return first, second
 
-    def point_ref(self, value: object, element: str, names: Container[str]) -> str:
+    def point_ref(self, value: object, element: str, names: Collection[str]) -> str:
         if not isinstance(value, str) or value not in names:
-            self.fail(element, f"unknown point {value!r}")
+            self.fail(element, f"unknown point {value!r}" + suggest.did_you_mean(str(value), names))
         return value
 
     def positive(self, value: object, element: str) -> sympy.Expr:
@@ -316,10 +318,42 @@ class _Loader:
     def dyad(self, spec: Table, element: str, names: set[str], inputs: dict[str, Input]) -> Dyad:
         bases = self.point_pair(spec, "dyad", element, names)
         lengths = tuple(self.positive(v, f"{element}.lengths") for v in self.pair(spec, "lengths", element))
+        mode = self.mode(spec, element, inputs)
         branch = spec.get("branch", "left")
         if branch not in Dyad.labels:
             self.fail(f"{element}.branch", f"branch must be 'left' or 'right', got {branch!r}")
-        return Dyad(bases, lengths, branch)
+        return Dyad(bases, lengths, branch, mode)
+
+    def mode(self, spec: Table, element: str, inputs: Mapping[str, Input]) -> Mode | None:
+        """``mode = { at = v, near = [x, y] }`` (``at = { t1 = v1, t2 = v2 }`` with several inputs),
+        exact numbers; refused beside a ``branch``, which it replaces."""
+        if "mode" not in spec:
+            return None
+        if "branch" in spec:
+            self.fail(f"{element}.mode", "give branch or mode, not both (mode names the branch by a configuration)")
+        table = self.subtable(spec, "mode", element, keys=("at", "near"), example="{ at = 0, near = [1, 2] }")
+        near = tuple(self.number(v, f"{element}.mode.near") for v in self.pair(table, "near", f"{element}.mode"))
+        return Mode(self.mode_at(table["at"], f"{element}.mode.at", inputs), (near[0], near[1]))
+
+    def mode_at(self, value: object, element: str, inputs: Mapping[str, Input]) -> tuple[tuple[str, sympy.Rational], ...]:
+        """The inputs' values where a mode is named: a number for the one input, else {input = value} for each."""
+        if not inputs:
+            self.fail(element, "the scene has no input: a mode is named at the inputs' values")
+        if not isinstance(value, dict):
+            if len(inputs) > 1:
+                self.fail(element, f"expected a table {{ {' = .., '.join(inputs)} = .. }}: the scene has "
+                          f"{len(inputs)} inputs")
+            value = {next(iter(inputs)): value}
+        if set(value) != set(inputs):
+            missing = sorted(set(inputs) - set(value)) or sorted(set(value) - set(inputs))
+            self.fail(f"{element}.{missing[0]}", f"expected a value for each input ({', '.join(inputs)}), no other")
+        at = []
+        for name, given in value.items():
+            number, spec = self.number(given, f"{element}.{name}"), inputs[name]
+            if not spec.lo <= number <= spec.hi:
+                self.fail(f"{element}.{name}", f"{number} is outside the input's range [{spec.lo}, {spec.hi}]")
+            at.append((name, number))
+        return tuple(at)
 
     def subtable(self, spec: Table, key: str, element: str, *, keys: tuple[str, ...], example: str) -> Table:
         value = spec.get(key)
@@ -362,11 +396,12 @@ class _Loader:
         distance = self.subtable(spec, "distance", element, keys=("to", "length"), example='{ to = "A", length = 3 }')
         to = self.point_ref(distance["to"], f"{element}.distance.to", names)
         length = self.positive(distance["length"], f"{element}.distance.length")
+        mode = self.mode(spec, element, inputs)
         branch = spec.get("branch", "ahead")
         if branch not in Slider.labels:
             self.fail(f"{element}.branch", "branch must be 'ahead' or 'behind' (along the direction, "
                       f"from the foot of the perpendicular from {to}), got {branch!r}")
-        return Slider(through, direction, to, length, branch, toward)
+        return Slider(through, direction, to, length, branch, toward, mode)
 
     def frame(self, spec: Table, element: str, names: set[str], inputs: dict[str, Input]) -> Frame:
         bases = self.point_pair(spec, "frame", element, names)
@@ -376,7 +411,7 @@ class _Loader:
     def unknown(self, spec: Table, element: str, names: set[str], inputs: dict[str, Input]) -> Unknown:
         if spec["unknown"] is not True:
             self.fail(f"{element}.unknown", f"expected true (a point solved together with others), got {spec['unknown']!r}")
-        return Unknown()
+        return Unknown(self.mode(spec, element, inputs))
 
     def constraints(self, table: Table, points: Mapping[str, Construction]) -> dict[str, Constraint]:
         """``name = "dist(P, Q) = L"`` and the like (``algkin.scene.constraints``); each must hold a
@@ -439,7 +474,7 @@ _ANGLE = re.compile(r"^\s*angle\s*\((.*)\)\s*$", re.DOTALL)
 _ANGLE_FORMS = "angle(P, Q) (the direction of PQ) or angle(P, Q, R) (the angle at Q between QP and QR)"
 
 
-def parse_output(name: str, text: str, points: Container[str], *, source: str = "<scene>",
+def parse_output(name: str, text: str, points: Collection[str], *, source: str = "<scene>",
                  element: str | None = None) -> Output:
     """Read an output string: a point name, ``dist(P, Q)``, ``P.x``, ``P.y``, ``angle(P, Q)``
     (the direction of PQ) or ``angle(P, Q, R)`` (the angle at Q between QP and QR, in [0, 180] deg).
@@ -462,7 +497,7 @@ def parse_output(name: str, text: str, points: Container[str], *, source: str = 
         kind, refs = "point", (text.strip(),)
     for ref in refs:
         if ref not in points:
-            raise SceneError(source, element, f"unknown point {ref!r} in {text!r}")
+            raise SceneError(source, element, f"unknown point {ref!r} in {text!r}" + suggest.did_you_mean(ref, points))
     return Output(name, kind, tuple(refs), text)
 
 

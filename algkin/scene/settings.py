@@ -24,6 +24,7 @@ from fractions import Fraction
 import attrs
 import sympy
 
+from ..runtime import suggest
 from ..errors import UsageError
 from .expr import MAX_NUMBER_BITS, irrational, parse
 from .model import Scene
@@ -64,8 +65,8 @@ def with_values(scene: Scene, values: Mapping[str, object] | None, params: Itera
     defaults = dict(scene.parameters)
     for name, value in values.items():
         if name not in defaults:
-            raise UsageError("set", _given(name, value), f"not a parameter of {scene.name} "
-                             f"(parameters: {', '.join(defaults) or 'none'})")
+            raise UsageError("set", _given(name, value), f"not a parameter of {scene.name}"
+                             + suggest.known(str(name), defaults, plural="parameters"))
         if name in (params or ()):
             raise UsageError("set", _given(name, value), f"{name} is also kept symbolic; give a value or keep it symbolic, not both")
         defaults[name] = _exact(name, value)

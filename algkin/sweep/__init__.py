@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
+from ..runtime import suggest
 from ..errors import UsageError
 from ..runtime.budget import time_budget
 from .analyses import ANALYSES, Analysis, analyses_named, register
@@ -99,8 +100,8 @@ def plan(scene: SceneLike, *, grid: Iterable[str] = (), random: int | None = Non
                             "ranges": {n: [_text(lo), _text(hi)] for n, (lo, hi) in ranges.items()}}}
     for name in designs[0]:
         if name not in scene.parameters:
-            raise UsageError("grid", name, f"not a parameter of {scene.name} "
-                                             f"(parameters: {', '.join(scene.parameters) or 'none'})")
+            raise UsageError("grid", name, f"not a parameter of {scene.name}"
+                             + suggest.known(name, scene.parameters, plural="parameters"))
     point = point or list(scene.points)[-1]
     if point not in scene.points:
         raise UsageError("point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
@@ -199,7 +200,7 @@ def _duration(seconds: float) -> str:
 
 def _check_executor(executor: str, workers: int | None, scheduler: str | None) -> None:
     if executor not in EXECUTORS:
-        raise UsageError("executor", executor, f"unknown; valid: {', '.join(EXECUTORS)}")
+        raise UsageError("executor", executor, "unknown" + suggest.known(str(executor), EXECUTORS, plural="valid"))
     if workers is not None and (executor != "dask" or scheduler is not None):
         raise UsageError("workers", workers, "sizes the LocalCluster: only for the dask executor without a scheduler")
     if scheduler is not None and executor != "dask":

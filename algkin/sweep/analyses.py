@@ -29,6 +29,7 @@ from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from ..runtime import suggest
 from ..errors import ComputationError, UsageError
 
 if TYPE_CHECKING:
@@ -206,7 +207,7 @@ def analyses_named(names: Iterable[str]) -> list[Analysis]:
     names = [n.strip() for n in names]
     for name in names:
         if name not in ANALYSES:
-            raise UsageError("analyses", name, f"unknown; valid: {', '.join(ANALYSES)}")
+            raise UsageError("analyses", name, "unknown" + suggest.known(name, ANALYSES, plural="valid"))
         if names.count(name) > 1:
             raise UsageError("analyses", name, "given twice")
     if not names:

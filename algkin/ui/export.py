@@ -35,8 +35,10 @@ from collections.abc import Sequence
 
 import sympy
 
+from ..runtime import suggest
 from ..branches import Branch, closed_forms
 from ..branches.stable import StableBranch, output_forms
+from ..derivation.modes import resolve_modes
 from ..errors import UsageError
 from ..evaluate.trace import Program, trace
 from ..scene import compile_scene
@@ -78,11 +80,11 @@ def export(scene: SceneLike, outputs: Sequence[str] | None = None, to: str = "c"
            set: Values | None = None) -> str:  # noqa: A002 - the public name (the command line's --set)
     """The source text of every branch of ``scene`` evaluating ``outputs`` (default: the scene's), in ``to``."""
     if to not in TARGETS:
-        raise UsageError("--to", to, f"unknown target; valid: {', '.join(TARGETS)}")
+        raise UsageError("--to", to, "unknown target" + suggest.known(str(to), TARGETS, plural="valid"))
     if params and to != "latex":
         raise UsageError("--param", params[0], "the stabilised code takes exact dimensions (--set); "
                                                "a symbolic one goes with --to latex")
-    scene = with_values(as_scene(scene), set, params)
+    scene = resolve_modes(with_values(as_scene(scene), set, params))  # a mode named by a configuration: its label
     compiled = compile_scene(scene, outputs, list(params))
     branches = closed_forms(compiled)
     if to == "latex":

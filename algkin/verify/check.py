@@ -35,6 +35,7 @@ from .balls import Block, BlockCertifier, certifier_of, certify_parameters
 from .minimal import FactorCheck, structure_failures
 from .residual import ExactValue, Polynomial, PolynomialLike, polynomial_of
 from .solve import STARTS, blocks_of, solve_floats
+from .tally import Tally
 
 __all__ = ["Verification", "Status", "CheckSetup", "verify_branches", "WORKING_BITS", "real_floats", "decided_real"]
 
@@ -135,28 +136,17 @@ class Verification:
         }
 
 
-@dataclass
-class _Tally:
-    """What a check counts while it runs; ``verification()`` makes the result of it."""
-
-    samples: int = 0
-    max_abs_error: float = 0.0
-    max_rel_error: float = 0.0
-    compared: int = 0
-    near_degenerate: int = 0
-    evaluated: int = 0
-    failures: list[str] = field(default_factory=list)
-
-    def verification(self, residuals: Mapping[str, float], factors: Mapping[str, Sequence[float]]) -> Verification:
-        """The check's result, passed when nothing failed and every error is within its tolerance."""
-        passed = (not self.failures and self.max_rel_error <= MAX_ERROR
-                  and all(v <= TOLERANCE for v in residuals.values()))
-        return Verification(self.samples, self.max_abs_error, Status.PASSED if passed else Status.FAILED,
-                            compared=self.compared, near_degenerate=self.near_degenerate,
-                            max_polynomial_residual=dict(residuals), failures=tuple(self.failures),
-                            evaluated=self.evaluated,
-                            smallest_factor_residual={k: tuple(v) for k, v in factors.items()},
-                            max_rel_error=self.max_rel_error)
+def _verification(report: Tally, residuals: Mapping[str, float],
+                  factors: Mapping[str, Sequence[float]]) -> Verification:
+    """The check's result, passed when nothing failed and every error is within its tolerance."""
+    passed = (not report.failures and report.max_rel_error <= MAX_ERROR
+              and all(v <= TOLERANCE for v in residuals.values()))
+    return Verification(report.samples, report.max_abs_error, Status.PASSED if passed else Status.FAILED,
+                        compared=report.compared, near_degenerate=report.near_degenerate,
+                        max_polynomial_residual=dict(residuals), failures=tuple(report.failures),
+                        evaluated=report.evaluated,
+                        smallest_factor_residual={k: tuple(v) for k, v in factors.items()},
+                        max_rel_error=report.max_rel_error)
 
 
 class _Plan:
@@ -242,7 +232,7 @@ def verify_branches(setup: CheckSetup, *, samples: int = 50, seed: int = 0,
     """
     spans = {n: list((where or {}).get(n) or [span]) for n, span in setup.inputs.items()}
     rng = np.random.default_rng(seed)
-    report = _Tally()
+    report = Tally()
     useful = drawn = 0
     with flint.ctx.workprec(WORKING_BITS), progress.counting(samples, "samples"):
         # the plan's exact dimensions become balls at this working precision
@@ -264,7 +254,7 @@ def verify_branches(setup: CheckSetup, *, samples: int = 50, seed: int = 0,
     _require_comparisons(report, branches=bool(setup.branches), polynomials=bool(plan.polynomials))
     report.failures += plan.factors.failures(TOLERANCE, report.evaluated)
     report.failures += structure_failures(polynomials or {}, factors)
-    return report.verification(worst, plan.factors.to_json())
+    return _verification(report, worst, plan.factors.to_json())
 
 
 def _batch(plan: _Plan, spans: Mapping[str, Sequence[tuple[float, float]]], rng: np.random.Generator, *,
@@ -297,7 +287,7 @@ def _uniform(rng: np.random.Generator, pieces: Sequence[tuple[float, float]], co
     return np.asarray(starts[index] + along - (ends[index] - widths[index]), dtype=np.float64)
 
 
-def _check_batch(report: _Tally, plan: _Plan, angles: Mapping[str, Floats], *, rng: np.random.Generator,
+def _check_batch(report: Tally, plan: _Plan, angles: Mapping[str, Floats], *, rng: np.random.Generator,
                  worst: dict[str, float]) -> int:
     """Solve, prove and compare every sample of the batch; how many compared something."""
     count = len(next(iter(angles.values()), [None]))
@@ -432,7 +422,7 @@ def _magnitudes(plan: _Plan, floats: Mapping[str, Floats], samples: list[_Sample
     return rows
 
 
-def _check_sample(report: _Tally, plan: _Plan, sample: _Sample, *, magnitudes: list[dict[int, float]],
+def _check_sample(report: Tally, plan: _Plan, sample: _Sample, *, magnitudes: list[dict[int, float]],
                   worst: dict[str, float]) -> None:
     """Evaluate the polynomials on the sample's roots and compare its branches."""
     report.samples += 1
@@ -463,7 +453,7 @@ def _residuals(values: Mapping[str, flint.arb], sizes: Mapping[int, float]) -> C
     return residual
 
 
-def _compare(report: _Tally, plan: _Plan, sample: _Sample) -> None:
+def _compare(report: Tally, plan: _Plan, sample: _Sample) -> None:
     by_label: dict[Label | None, list[Root]] = {}
     for labels, root in zip(sample.labels, sample.roots):
         by_label.setdefault(labels, []).append(root)
@@ -475,11 +465,8 @@ def _compare(report: _Tally, plan: _Plan, sample: _Sample) -> None:
             report.failures.append(f"branch {dict(branch.key)}: {len(matches)} numeric solutions with its label")
             continue
         error, size = _error(plan, branch, values, matches[0]), _size(matches[0])
-        report.max_abs_error = max(report.max_abs_error, error)
-        report.max_rel_error = max(report.max_rel_error, error / size)
-        said = f"branch {dict(branch.key)}: its closed form is"
-        if not error <= MAX_ERROR * size and not any(f.startswith(said) for f in report.failures):
-            report.failures.append(f"{said} {error:.3g} from the root of its label (relative {error / size:.3g})")
+        report.error(error, scale=size, tolerance=MAX_ERROR, said=f"branch {dict(branch.key)}: its closed form is",
+                     detail=f"{error:.3g} from the root of its label (relative {error / size:.3g})")
         report.compared += 1
     for key in by_label:
         # every label is decided here (_check_sample compares no sample with an undecided one)
@@ -501,12 +488,11 @@ def _error(plan: _Plan, branch: _Branch, values: list[flint.arb | int], root: Ro
     return error
 
 
-def _require_comparisons(report: _Tally, *, branches: bool, polynomials: bool) -> None:
+def _require_comparisons(report: Tally, *, branches: bool, polynomials: bool) -> None:
     """A check that compared nothing fails, saying why, rather than passing vacuously."""
     if not (branches or polynomials):
         report.failures.append("nothing to compare: no branch and no polynomial was given")
-    if branches and not report.compared:
-        report.failures.append(f"no branch value compared on {report.samples} samples "
-                               f"({report.near_degenerate} near a degenerate configuration)")
+    if branches:
+        report.require_compared("branch value")
     if polynomials and not report.evaluated:
         report.failures.append(f"no numeric solution to evaluate the polynomials at on {report.samples} samples")

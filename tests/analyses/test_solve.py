@@ -221,3 +221,38 @@ d = "on(Q, line(A, B))"
 ''', "two.toml")
     with pytest.raises(SceneError, match="the group of Q is held by points of an earlier group \\(P_x"):
         solve(scene, at={})
+
+
+# Modes named by a configuration (``mode = { at, near }``): solve keeps the configurations on them.
+
+def test_the_hart_inversor_solved_keeps_its_named_crossed_mode():
+    """At 290 deg (between D's toggle and the flat configuration, where C's `left` is the
+    parallelogram) the kept configurations are the crossed ones: Q on x = -3/2, by hand."""
+    found = solve("hart-inversor", at={"angle": 290}, digits=35)
+    assert found.named_modes == ("C",) and found.left_out == 2
+    assert [c.mode for c in found.configurations] == ["D:left C:right", "D:right C:right"]
+    assert all(mpmath.mpf(c.points["Q"][0]) == mpmath.mpf("-1.5") for c in found.configurations)
+    document = found.to_json()
+    assert document["named_modes"] == ["C"] and document["left_out"] == 2
+    assert "named_modes" not in solve("fourbar", at={"theta": 0}).to_json()
+
+
+def _3rpr_named(near):
+    return load_scene_text(SPEC_3RPR.replace('P1 = { unknown = true }',
+                                             f'P1 = {{ unknown = true, mode = {{ at = 6, near = {near} }} }}'), "3rpr.toml")
+
+
+def test_a_3rpr_mode_named_at_one_leg_length_is_kept_at_another():
+    # at r1 = 6 the two real modes put P1 near (3.86, 4.60) and (5.89, 1.15) (test above: the loop equations)
+    found = solve(_3rpr_named("[3.8, 4.6]"), at={"r1": 7}, digits=40)
+    (kept,) = found.configurations
+    everything = solve(load_scene_text(SPEC_3RPR, "3rpr.toml"), at={"r1": 7}, digits=40).configurations
+    assert found.left_out == 1 and kept in everything
+    at_six = solve(load_scene_text(SPEC_3RPR, "3rpr.toml"), at={"r1": 6}, digits=40).configurations
+    assert kept.mode == min(at_six, key=lambda c: abs(float(c.points["P1"][0]) - 3.8)).mode
+
+
+def test_a_3rpr_mode_named_far_from_every_configuration_is_refused_naming_the_nearest():
+    with pytest.raises(SceneError, match=r"points\.P1\.mode\.near: \[5, 3\] is not close to a configuration of P1 "
+                                         r"at r1 = 6: the nearest is \[3\.85685, 4\.59616\]"):
+        solve(_3rpr_named("[5, 3]"), at={"r1": 7})

@@ -15,7 +15,7 @@ import sympy
 
 from algkin.ui.cli import main
 
-from .geometry import at_angle, circles, on_circle, rigid, run
+from .geometry import ROOT, at_angle, circles, on_circle, rigid, run
 
 P_x, P_y, Q_x, Q_y, L, s, r, a, b = sympy.symbols("P_x P_y Q_x Q_y L s r a b")
 
@@ -132,5 +132,112 @@ def test_a_point_named_where_its_twin_is_is_bad_input(tmp_path, capsys, change, 
     path = cell(tmp_path, **change)
     outputs = ["--outputs", "P", "E"] if "extra" in change else []  # only the points the outputs need are built
     assert main(["derive", path, *outputs]) == 2
+    error = capsys.readouterr().err.strip()
+    assert len(error.splitlines()) == 1 and said in error, error
+
+
+# -- Hart's crossed mode, named by a configuration and followed across its change point ---------
+# By hand (a=4, b=2, r=1): D exists while |A - Z| <= 2, i.e. cos(angle) >= 1/4; at angle 0, A = (2, 0),
+# B = (-2, 0), D = (1, -sqrt(3)) (left of A -> W, W = 2Z - A = O) and C is (-1, sqrt(3)) crossed (Q.x =
+# -3/2) or B + D - A = (-3, -sqrt(3)) for the parallelogram. At 300 deg D = O and C = 2B: the flat
+# configuration where the two modes cross (tan(300/2)**2 = 1/3).
+HART_ENDS = (float(mpmath.degrees(mpmath.acos(mpmath.mpf(1) / 4))), 360 - float(mpmath.degrees(mpmath.acos(0.25))))
+
+
+def hart_scene(tmp_path, c_line):
+    text = (ROOT / "algkin" / "catalog" / "hart-inversor.toml").read_text()
+    lines = [c_line if line.startswith("C =") else line for line in text.splitlines()]
+    path = tmp_path / "hart.toml"
+    path.write_text("\n".join(lines) + "\n")
+    return str(path)
+
+
+def named_pieces(document):
+    """(from, to, branch) of the named mode's pieces, the branch as derive labels it there."""
+    (mode,) = document["modes"]
+    return [(p["from_deg"], p["to_deg"], p["branch"]) for p in mode["pieces"] if p["status"] == "mode"]
+
+
+def on_mode(pieces, theta):
+    """The branch label of the piece holding ``theta`` strictly inside, or None."""
+    return next((label for lo, hi, label in pieces if lo < theta < hi), None)
+
+
+@pytest.fixture(scope="module")
+def hart_derived():
+    return run("derive", "hart-inversor", "--outputs", "Q", "C", "--samples", "0")
+
+
+def test_hart_named_mode_changes_label_at_the_flat_configuration(hart_derived):
+    (mode,) = hart_derived["modes"]
+    assert [(round(lo, 9), round(hi, 9), b) for lo, hi, b in named_pieces(hart_derived)] == [
+        (0, round(HART_ENDS[0], 9), "D:left C:left"), (round(HART_ENDS[1], 9), 300, "D:left C:right"),
+        (300, 360, "D:left C:left")]
+    (change,) = mode["change_points"]
+    assert (change["input_deg"], change["from"], change["to"]) == (300.0, "right", "left")
+    t = sympy.Symbol("t_angle")
+    assert sympy.parse_expr(change["polynomial"]).subs(t, sympy.tan(sympy.pi * 150 / 180)).equals(0)
+
+
+def test_hart_named_crossed_mode_keeps_q_on_its_line_across_the_change_point(hart_derived):
+    pieces = named_pieces(hart_derived)
+    values = {b["label"]: b["values"] for b in hart_derived["branches"]}
+    sampled = 0
+    with mpmath.workdps(45):  # 128+ bits
+        for theta in [284.5 + k / 2 for k in range(152)] + [k / 2 for k in range(152)]:
+            label = on_mode(pieces, theta % 360)
+            if label is None:
+                continue
+            sampled += 1
+            q_x = at_angle(values[label]["Q_x"], theta % 360, "angle", digits=45)
+            assert abs(q_x + mpmath.mpf(3) / 2) < 1e-30, (theta, label, q_x)
+    assert sampled >= 2 * 150  # every half degree where the mode exists: 284.5-360 and 0-75.5
+
+
+def test_the_old_left_scene_leaves_the_line_between_the_toggle_and_the_fold(tmp_path):
+    # the failure this fixes: `branch = "left"` is the parallelogram mode over (284.48, 300)
+    path = hart_scene(tmp_path, 'C = { dyad = ["B", "D"], lengths = ["b", "a"], branch = "left" }')
+    document = run("derive", path, "--outputs", "Q", "--samples", "0")
+    chosen = next(b for b in document["branches"] if b["selected"])
+    assert "modes" not in document
+    assert abs(at_angle(chosen["values"]["Q_x"], 290, "angle") + mpmath.mpf(3) / 2) > 0.1
+
+
+def test_the_parallelogram_named_takes_q_off_the_line(tmp_path):
+    path = hart_scene(tmp_path, 'C = { dyad = ["B", "D"], lengths = ["b", "a"], mode = { at = 0, near = [-3, -1.7] } }')
+    document = run("derive", path, "--outputs", "Q", "C", "--samples", "0")
+    pieces = named_pieces(document)
+    values = {b["label"]: b["values"] for b in document["branches"]}
+    with mpmath.workdps(40):
+        for theta in (290, 299, 301, 330, 1, 40, 70):
+            label = on_mode(pieces, theta)
+            a_, b_, _, d_, _, _ = hart(theta)
+            c_ = (b_[0] + d_[0] - a_[0], b_[1] + d_[1] - a_[1])  # the parallelogram ABCD
+            got = [at_angle(values[label][u], theta, "angle") for u in ("C_x", "C_y", "Q_x")]
+            assert abs(got[0] - c_[0]) < 1e-30 and abs(got[1] - c_[1]) < 1e-30, theta
+            assert abs(got[2] + mpmath.mpf(3) / 2) > 1e-3, theta
+
+
+def test_the_curve_of_q_on_the_named_mode_is_the_line_alone():
+    document = run("curve", "hart-inversor", "--point", "Q")
+    assert sympy.parse_expr(document["curve"]) in (2 * Q_x + 3, -(2 * Q_x + 3))
+    (sextic,) = document["other_modes_dropped"]
+    assert sympy.Poly(sympy.parse_expr(sextic), Q_x, Q_y).total_degree() == 6
+    assert sextic in document["dropped_factors"] and document["verification"]["passed"]
+
+
+@pytest.mark.parametrize("c_line, said", [
+    ('C = { dyad = ["B", "D"], lengths = ["b", "a"], mode = { at = 0, near = [-2, 0] } }',
+     "points.C.mode.near: [-2, 0] is not close to a configuration of C at angle = 0°: the nearest is [-1, 1.73205]"),
+    ('C = { dyad = ["B", "D"], lengths = ["b", "a"], branch = "left", mode = { at = 0, near = [-1, 1.7] } }',
+     "points.C.mode: give branch or mode, not both"),
+    ('C = { dyad = ["B", "D"], lengths = ["b", "a"], mode = { at = 180, near = [-1, 1.7] } }',
+     "points.C.mode.at: C does not assemble at angle = 180°"),
+    ('C = { dyad = ["B", "D"], lengths = ["b", "a"], mode = { at = 400, near = [-1, 1.7] } }',
+     "points.C.mode.at.angle: 400 is outside the input's range [0, 360]"),
+    ('C = { dyad = ["B", "D"], lengths = ["b", "a"], mode = { at = 0 } }', "points.C.mode.near: missing"),
+])
+def test_a_bad_mode_is_refused_in_one_line(tmp_path, capsys, c_line, said):
+    assert main(["derive", hart_scene(tmp_path, c_line), "--samples", "0"]) == 2
     error = capsys.readouterr().err.strip()
     assert len(error.splitlines()) == 1 and said in error, error

@@ -22,7 +22,7 @@ import sympy
 from ...derivation.pipeline import derive
 from ...derivation.prepared import Prepared, given, prepare, require_outputs
 from ...derivation.witnesses import Groups
-from ...errors import UsageError
+from ...errors import UsageError, renamed
 from ...runtime.budget import Budget, Deadline, started
 from ...runtime.frozen import FrozenDict, frozen
 from ...scene.load import SceneLike, Values
@@ -159,8 +159,9 @@ def extremum(scene: SceneLike | Prepared, output: str, angle_range: tuple[float 
     """
     deadline = started(budget)
     given(scene, params=params, set=set)
-    prepared = scene if isinstance(scene, Prepared) else prepare(scene, outputs=[output], params=params, set=set,
-                                                                 deadline=deadline)
+    with renamed("outputs", to="output"):
+        prepared = scene if isinstance(scene, Prepared) else prepare(scene, outputs=[output], params=params, set=set,
+                                                                     deadline=deadline)
     require_outputs(prepared, "output", [output])
     derived = derive(prepared, method=method, backend=backend, samples=0, budget=deadline)
     return extremum_of(derived, output, angle_range, largest, backend, witnesses=prepared.witnesses,

@@ -22,7 +22,7 @@ import itertools
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any, Optional, TypedDict
+from typing import Any, Optional, TypeAlias, TypedDict
 
 import attrs
 import flint
@@ -72,15 +72,18 @@ class ClosedForm:
     input: sympy.Expr | None  # degrees; None when the root has no expression in radicals
     at: str  # 'stationary', 'dead centre' or 'endpoint'
     input_polynomial: sympy.Expr | None  # in t = tan(input/2); None at an endpoint
-    valid_when: tuple[str, ...] = attrs.field(converter=_tuple)  # in sympy syntax
+    # where it holds: sympy relations (``true``: at every real value); ``valid_when_text`` says them
+    # in words, as the JSON does ('every real b', '0.5 < b < 2')
+    valid_when: tuple[sympy.Basic, ...] = attrs.field(converter=_tuple)
     # one parameter: [{from, to, at, input, value, ...}] (Regions, frozen), else []
     regions: tuple[FrozenDict[str, Any], ...] = attrs.field(converter=frozen_rows)
     region_values: tuple[sympy.Expr | None, ...] = attrs.field(converter=_tuple)  # each region's value as sympy: drawn without parsing the text back
     via_value: sympy.Expr | None = None  # an angle output: the value of the scalar standing for it
+    valid_when_text: tuple[str, ...] = attrs.field(default=(), converter=_tuple)
 
     def to_json(self) -> dict[str, object]:
         document: dict[str, object] = {"value": _text(self.value), "input": _text(self.input), "at": self.at,
-                    "input_polynomial": _text(self.input_polynomial), "valid_when": list(self.valid_when),
+                    "input_polynomial": _text(self.input_polynomial), "valid_when": list(self.valid_when_text),
                     "regions": thawed(self.regions)}
         if self.via_value is not None:
             document["via_value"] = _text(self.via_value)
@@ -272,21 +275,34 @@ def closed_form(problem: Problem, stationary: list[sympy.Expr], defaults: Values
             regions, values = [], []  # no regions in more than one dimension
             own = event_polynomials(problem, stationary + meeting, values_factors, (lo, hi), here)
             conditions = _sign_conditions(own, defaults)
-    return ClosedForm(here.value, here.input, here.at, here.input_factor, conditions, regions, values)
+    return ClosedForm(here.value, here.input, here.at, here.input_factor, [c for c, _ in conditions], regions, values,
+                      valid_when_text=[text for _, text in conditions])
 
 
-def _sign_conditions(events: Iterable[sympy.Expr], defaults: Values) -> list[str]:
-    conditions = []
+Condition: TypeAlias = tuple[sympy.Basic, str]
+"""A condition on the parameters as a sympy relation, and in words."""
+
+
+def _sign_conditions(events: Iterable[sympy.Expr], defaults: Values) -> list[Condition]:
+    conditions: list[Condition] = []
     for event in events:
         sign = mpmath.sign(_numeric(event, defaults).real)
-        conditions.append(f"{event if sign > 0 else -event} > 0" if sign else f"{event} = 0")
+        positive = event if sign > 0 else -event
+        conditions.append((positive > 0, f"{positive} > 0") if sign else (sympy.Eq(event, 0), f"{event} = 0"))
     return conditions
 
 
-def _interval_conditions(name: sympy.Symbol, regions: Sequence[Region], defaults: Values) -> list[str]:
+def _interval_conditions(name: sympy.Symbol, regions: Sequence[Region], defaults: Values) -> list[Condition]:
     home = next(r for r in regions if _contains(r, defaults[name]))
-    return [_interval_text(name, r["from"], r["to"]) for r in regions
+    return [(_interval(name, r["from"], r["to"]), _interval_text(name, r["from"], r["to"])) for r in regions
             if (r["at"], r["input"], r["value"]) == (home["at"], home["input"], home["value"])]
+
+
+def _interval(name: sympy.Symbol, lo: float | None, hi: float | None) -> sympy.Basic:
+    """``lo < name < hi`` (an end None: unbounded) as a sympy relation; ``true`` when both are."""
+    above = sympy.true if lo is None else name > sympy.Float(lo, 15)
+    below = sympy.true if hi is None else name < sympy.Float(hi, 15)
+    return sympy.And(above, below)
 
 
 def _contains(region: Region, value: float) -> bool:

@@ -22,7 +22,7 @@ branch there. A check that compared nothing never passes.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, TypeAlias
 
 import attrs
@@ -37,6 +37,7 @@ from ...system import System, input_values, symbol
 from ...verify.balls import certifier_of, certify_parameters
 from ...verify.check import Status, decided_real, real_floats
 from ...verify.solve import STARTS, blocks_of, solve_floats
+from ...verify.tally import Tally
 
 __all__ = ["RatesCheck", "check_rates", "WORKING_BITS", "STEP_BITS", "MAX_REL_ERROR"]
 
@@ -90,21 +91,10 @@ class RatesCheck:
                            f"tolerance {MAX_REL_ERROR:g} relative")}
 
 
-@dataclass
-class _Tally:
-    """What the check counts while it runs; ``result()`` makes the ``RatesCheck`` of it."""
-
-    samples: int = 0
-    compared: int = 0
-    max_rel_error: float = 0.0
-    max_abs_error: float = 0.0
-    near_degenerate: int = 0
-    failures: list[str] = field(default_factory=list)
-
-    def result(self) -> RatesCheck:
-        passed = not self.failures and self.max_rel_error <= MAX_REL_ERROR
-        return RatesCheck(self.samples, self.compared, self.max_rel_error, self.max_abs_error,
-                          self.near_degenerate, tuple(self.failures), Status.PASSED if passed else Status.FAILED)
+def _result(report: Tally) -> RatesCheck:
+    passed = not report.failures and report.max_rel_error <= MAX_REL_ERROR
+    return RatesCheck(report.samples, report.compared, report.max_rel_error, report.max_abs_error,
+                      report.near_degenerate, tuple(report.failures), Status.PASSED if passed else Status.FAILED)
 
 
 def check_rates(system: System, indicators: Sequence[Indicator], branches: Sequence[RateForms],
@@ -113,7 +103,7 @@ def check_rates(system: System, indicators: Sequence[Indicator], branches: Seque
     some branch is real; ``system`` has one input and no symbolic dimension left."""
     if not samples:
         return RatesCheck.skipped()
-    report = _Tally()
+    report = Tally()
     rng = np.random.default_rng(seed)
     with flint.ctx.workprec(WORKING_BITS):
         plan = _Plan(system, indicators, branches)
@@ -122,10 +112,8 @@ def check_rates(system: System, indicators: Sequence[Indicator], branches: Seque
             if plan.lacks_a_root(theta, roots):  # Newton's random starts may miss one
                 roots = plan.roots(np.array([theta]), rng, RETRY_STARTS)[0]
             _compare(report, plan, theta, roots)
-    if not report.compared:
-        report.failures.append(f"no branch rate compared on {report.samples} samples "
-                               f"({report.near_degenerate} near a degenerate configuration)")
-    return report.result()
+    report.require_compared("branch rate")
+    return _result(report)
 
 
 class _Plan:
@@ -265,7 +253,7 @@ class _Branch:
         return {u: (values[2 * k], values[2 * k + 1]) for k, u in enumerate(self.unknowns)}
 
 
-def _compare(report: _Tally, plan: _Plan, theta: float, roots: list[list[_Root]]) -> None:
+def _compare(report: Tally, plan: _Plan, theta: float, roots: list[list[_Root]]) -> None:
     """Compare every branch real at all three inputs with its roots' central differences."""
     report.samples += 1
     knowns = [plan.known(theta, shift) for shift in SHIFTS]
@@ -285,7 +273,7 @@ def _compare(report: _Tally, plan: _Plan, theta: float, roots: list[list[_Root]]
         _compare_branch(report, plan, branch, theta, [m[0] for m in matches])
 
 
-def _compare_branch(report: _Tally, plan: _Plan, branch: _Branch, theta: float, roots: list[_Root]) -> None:
+def _compare_branch(report: Tally, plan: _Plan, branch: _Branch, theta: float, roots: list[_Root]) -> None:
     h = arb(2) ** -STEP_BITS
     rates = branch.values(roots[1].known)
     if not rates:
@@ -298,13 +286,10 @@ def _compare_branch(report: _Tally, plan: _Plan, branch: _Branch, theta: float, 
             difference = (high - low) / (2 * h) if order == 1 else (high - 2 * middle + low) / (h * h)
             gap = abs(difference - closed[which])
             error = float(gap.upper().mid()) if gap.is_finite() else float("inf")
-            report.max_abs_error = max(report.max_abs_error, error)
-            report.max_rel_error = max(report.max_rel_error, error / scale)
             what = "velocity" if order == 1 else "acceleration"
-            said = f"branch {dict(branch.key)}: the {what} of {unknown}"
-            if not error <= MAX_REL_ERROR * scale and not any(f.startswith(said) for f in report.failures):
-                report.failures.append(f"{said} is {error / scale:.3g} (relative) from its central difference "
-                                       f"at {theta:.17g} rad")
+            report.error(error, scale=scale, tolerance=MAX_REL_ERROR,
+                         said=f"branch {dict(branch.key)}: the {what} of {unknown}",
+                         detail=f"is {error / scale:.3g} (relative) from its central difference at {theta:.17g} rad")
     report.compared += 1
 
 

@@ -12,7 +12,8 @@ import pathlib
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any, Union
 
-from ...errors import UsageError
+from ...runtime import suggest
+from ...errors import UsageError, renamed
 from ...runtime.validation import real
 from .sweep import COMMANDS as SWEEP_COMMANDS
 from .reports import (Document, Form, extremum_forms, latex_lines, render, report_accuracy, report_curve,
@@ -53,7 +54,7 @@ def _cmd_bench(args: argparse.Namespace) -> Outcome:
                                  ("--backends", args.backends, backend_names())):
         for name in given or ():
             if name not in valid:
-                raise UsageError(option, name, f"unknown; valid: {', '.join(valid)}")
+                raise UsageError(option, name, "unknown" + suggest.known(name, valid, plural="valid"))
     if args.rounds < 1:
         raise UsageError("--rounds", args.rounds, "must be at least 1")
     report = bench(args.problems, args.methods, args.backends, args.budget, not args.no_peers, args.rounds)
@@ -187,7 +188,8 @@ def _cmd_plot(args: argparse.Namespace) -> Outcome:
 
     params = [against[0]] if against else []
     quantity = load_quantities(_scene_of(args, params), params).output(args.of)
-    found = quantity.extremum(_range(args.range) if args.range else None)
+    with renamed("outputs", to="of"):
+        found = quantity.extremum(_range(args.range) if args.range else None)
     figure = minimum_figure(quantity, found, *against) if against else \
         quantity_figure(quantity, found, derivative=args.derivative)
     return render(args, _written(args, save(figure, out)), lambda d: d["out"]), 0

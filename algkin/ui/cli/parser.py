@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any, NoReturn
 
 from ...errors import UsageError
+from ...runtime import suggest
 from ...runtime.validation import real, whole
 
 if TYPE_CHECKING:
@@ -39,10 +40,48 @@ class _Parser(argparse.ArgumentParser):
     def error(self, message: str) -> NoReturn:
         raise UsageError("arguments", " ".join(sys.argv[1:]), message)
 
+    def parse_known_args(self, args: Sequence[str] | None = None,  # type: ignore[override]
+                         namespace: argparse.Namespace | None = None) -> tuple[argparse.Namespace, list[str]]:
+        """As argparse, and with the positional a list option swallowed given back to it:
+        ``derive --outputs B chebyshev-lambda`` reads as ``derive chebyshev-lambda --outputs B``."""
+        try:
+            return super().parse_known_args(args, namespace)
+        except UsageError as err:
+            given = list(sys.argv[1:] if args is None else args)
+            moved = _positional_first(given, self._list_options()) if "are required" in err.message else None
+            if moved is None:
+                raise
+            return super().parse_known_args(moved, namespace)
+
+    def _list_options(self) -> set[str]:
+        return {flag for action in self._actions if action.nargs in ("+", "*") for flag in action.option_strings}
+
+    def _check_value(self, action: argparse.Action, value: Any) -> None:
+        """An unknown choice said with the close match (``dervie``: did you mean 'derive'?)."""
+        if action.choices is not None and value not in action.choices:
+            name = action.option_strings[0] if action.option_strings else action.dest
+            raise UsageError(name, value, f"not a valid {action.dest}"
+                             + suggest.known(str(value), map(str, action.choices), plural="valid"))
+
     def _print_message(self, message: str, file: SupportsWrite[str] | None = None) -> None:
         if file is sys.stdout:  # help and version (None too: a closed stdout, said as such)
             raise Shown(message)
         super()._print_message(message, file)
+
+
+def _positional_first(args: list[str], list_options: set[str]) -> list[str] | None:
+    """``args`` with the last value of the last list option that took two or more moved to the
+    front (where a positional argument is read), or None if no list option took two."""
+    found = None
+    for start, token in enumerate(args):
+        if token not in list_options:
+            continue
+        end = start + 1
+        while end < len(args) and not args[end].startswith("-"):
+            end += 1
+        if end - start > 2:
+            found = end - 1
+    return None if found is None else [args[found]] + args[:found] + args[found + 1:]
 
 
 def _whole(text: str) -> int:

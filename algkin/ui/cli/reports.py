@@ -196,8 +196,10 @@ def report_solve(d: Document) -> str:
     """
     at = ", ".join(f"{n} = {v}" for n, v in d["at"].items()) or "its only configuration"
     found = d["configurations"]
+    named = [f"on the mode the scene names for {', '.join(d['named_modes'])}: {d['left_out']} configuration"
+             f"{'s' * (d['left_out'] != 1)} of other modes left out"] if d.get("named_modes") else []
     if not found:
-        return f"{d['scene']} at {at}: no configuration: nothing assembles there"
+        return "\n".join([f"{d['scene']} at {at}: no configuration: nothing assembles there"] + named)
     radius = max(c["radius"] for c in found)
     lines = [f"{d['scene']} at {at}: {len(found)} configuration{'s' * (len(found) != 1)} "
              f"({d['digits']} digits, enclosures within {radius:.2g})"]
@@ -205,7 +207,7 @@ def report_solve(d: Document) -> str:
         lines.append(f"  complex solutions of the group's eliminant: {d['complex_count']}")
     lines += [f"  {c['mode']}: " + ", ".join(f"{p} = ({x}, {y})" for p, (x, y) in c["points"].items())
               for c in found]
-    return "\n".join(lines)
+    return "\n".join(lines + named)
 
 
 def report_show(d: Document) -> str:
@@ -264,18 +266,40 @@ def report_derive(d: Document) -> str:
         lines.append(f"  {unknown}: {_brief(poly)}")
         lines.append(f"      degree {figures['degree']}, {figures['terms']} terms, "
                      f"{figures['coefficient_bits']}-bit coefficients, "
-                     f"dropped {len(figures['dropped_factors'])} extraneous factor(s)")
+                     + _dropped(len(figures['dropped_factors'])))
     lines.append("branches:")
     for branch in d["branches"]:
         mark = "  (scene's choice)" if branch["selected"] else ""
         lines.append(f"  [{branch['label']}]{mark} valid when {_brief(branch['valid_when'])}")
         lines += [f"      {u} = {_brief(v)}" for u, v in branch["values"].items()]
+    for mode in d.get("modes", ()):
+        lines += _mode_lines(mode)
     lines.append(verification_line(d["verification"]))
     forms = [*d["eliminants"].values(), *(f for b in d["branches"] for f in (b["valid_when"], *b["values"].values()))]
     if "rates" in d:
         lines += _rates_lines(d)
         forms += [f for b in d["rates"].values() for r in b.values() for f in r.values()]
     return "\n".join(lines + [_timings_line(d["timings"])] + _hint(forms))
+
+
+def _mode_lines(mode: Document) -> list[str]:
+    """A named mode: where it was named, the factor it traces, its pieces (each the branch whose
+    closed forms are above) and its change points."""
+    at = ", ".join(f"{n} = {v}" for n, v in mode["at"].items())
+    near = ", ".join(mode["near"])
+    traced = f"on the factor {_brief(mode['factor'])} of its curve" if mode["factor"] else \
+        f"{mode['label_at']} (no factor of its curve tells its modes apart: the label is held)" if mode["pieces"] else \
+        f"{mode['label_at']} (not followed: it moves with several inputs)"
+    lines = [f"named mode of {mode['point']} (at {at}, near [{near}]), {traced}:"]
+    for piece in mode["pieces"]:
+        lo, hi = (piece.get(k, piece.get(k.replace("deg", "length"))) for k in ("from_deg", "to_deg"))
+        what = f"[{piece['branch']}]" if piece["branch"] else piece["status"]
+        lines.append(f"  {lo:.6g} to {hi:.6g}: {what}")
+    for change in mode["change_points"]:
+        where = change.get("enclosure_deg", change.get("enclosure_length"))
+        lines.append(f"  change point at {where} (a root of {change['polynomial']}): {mode['point']} "
+                     f"{change['from']} -> {change['to']}")
+    return lines
 
 
 def _rates_lines(d: Document) -> list[str]:
@@ -297,6 +321,17 @@ def _rates_lines(d: Document) -> list[str]:
     return lines + [f"  {f}" for f in v["failures"]]
 
 
+def _dropped(count: int) -> str:
+    """How many extraneous factors were dropped, said in words that read when there are none or one.
+
+    >>> _dropped(0), _dropped(1), _dropped(3)
+    ('no extraneous factor dropped', 'dropped 1 extraneous factor', 'dropped 3 extraneous factors')
+    """
+    if not count:
+        return "no extraneous factor dropped"
+    return f"dropped {count} extraneous factor{'s' if count > 1 else ''}"
+
+
 def report_curve(d: Document) -> str:
     """``algkin curve``'s text: the curve, its figures, the dropped factors, the verification."""
     lines = [f"curve of {d['point']} in {d['scene']}  (method {d['method']}, backend {d['backend']})",
@@ -304,8 +339,12 @@ def report_curve(d: Document) -> str:
              f"degree {d['degree']}, circularity {d['circularity']}, "
              f"{'irreducible' if d['irreducible'] else 'reducible'}, {d['terms']} terms, "
              f"{d['coefficient_bits']}-bit coefficients",
-             f"dropped {len(d['dropped_factors'])} extraneous factor(s):"]
+             _dropped(len(d["dropped_factors"])) + (":" if d["dropped_factors"] else "")]
     lines += [f"  {_brief(f)}" for f in d["dropped_factors"]]
+    for mode in d.get("modes", ()):
+        at = ", ".join(f"{n} = {v}" for n, v in mode["at"].items())
+        lines.append(f"on the named mode of {mode['point']} (at {at}, near [{', '.join(mode['near'])}]): "
+                     f"{len(d['other_modes_dropped'])} of the dropped factors are other modes' paths")
     lines += [verification_line(d["verification"]), _timings_line(d["timings"])]
     return "\n".join(lines + _hint([d["curve"], *d["dropped_factors"]]))
 

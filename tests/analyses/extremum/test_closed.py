@@ -35,7 +35,8 @@ def test_value_in_b_is_the_hand_formula(in_b):
 
 def test_minimiser_never_leaves_0_180_for_any_b(in_b):
     # a = 400 > 0 keeps atan2(a, b) inside (0, 180) for every b.
-    assert in_b.valid_when == ("every real b",)
+    assert in_b.valid_when == (sympy.true,)
+    assert in_b.valid_when_text == ("every real b",) and in_b.to_json()["valid_when"] == ["every real b"]
     assert [r["at"] for r in in_b.regions] == ["stationary"]
 
 
@@ -58,7 +59,9 @@ def test_minimiser_leaving_the_range_is_reported_with_the_endpoint():
     # Over [0, 90] the minimiser atan2(400, b) leaves the range for b < 0; the minimum is then
     # at 90 deg, where A = (350, 0): |AB| = sqrt(50**2 + b**2).
     form = extremum("arm-string", "AB", (0, 90), params=["b"]).closed_form
-    assert form.valid_when == ("b > 0",)
+    assert form.valid_when_text == ("b > 0",)
+    (holds,) = form.valid_when  # a sympy relation, true exactly where the minimiser stays in range (b > 0)
+    assert [bool(holds.subs(b, value)) for value in (-400, -0.5, 0, 0.5, 400)] == [False, False, False, True, True]
     below, above = form.regions
     assert (below["from"], below["to"], below["at"], below["input"]) == (None, 0.0, "endpoint", "90")
     assert sympy.simplify(sympy.sympify(below["value"], locals={"b": b}) - sympy.sqrt(b**2 + 2500)) == 0
@@ -77,7 +80,8 @@ def test_value_in_a_and_b_is_the_hand_formula(in_a_b):
 def test_conditions_in_a_and_b_are_the_geometric_ones(in_a_b):
     # In range needs a > 0 (atan2(a, b) in (0, 180)); |OB| - 350 is the distance only while
     # B is outside the arm's circle (else it is 350 - |OB|).
-    assert sorted(in_a_b.valid_when) == ["a > 0", "a**2 + b**2 - 122500 > 0"]
+    assert sorted(in_a_b.valid_when_text) == ["a > 0", "a**2 + b**2 - 122500 > 0"]
+    assert set(in_a_b.valid_when) == {a > 0, a**2 + b**2 - 122500 > 0}  # sympy relations, as written
 
 
 @pytest.mark.parametrize("a_value, b_value", [(400, 80), (300, -500), (1, 400), (900, 0), (250, -250)])

@@ -36,7 +36,7 @@ BAD_USAGE = {
     "angle-unknown-point": (["derive", "fourbar", "--outputs", "angle(D, Z)"], ["--outputs", "unknown point 'Z'"]),
     "angle-one-point": (["derive", "fourbar", "--outputs", "angle(D)"], ["--outputs", "angle(P, Q)"]),
     "angle-same-point": (["show", "fourbar", "--outputs", "angle(D, D)"], ["--outputs", "same point"]),
-    "angle-at-an-end": (["extremum", "fourbar", "--of", "angle(A, B, B)"], ["--outputs", "no angle at B"]),
+    "angle-at-an-end": (["extremum", "fourbar", "--of", "angle(A, B, B)"], ["--of", "no angle at B"]),
     "angle-turning-full-circle": (["extremum", "fourbar", "--of", "angle(O, A)"], ["--of", "full circle"]),
     "angle-of-a-point": (["extremum", "fourbar", "--of", "B"], ["--of", "not a point"]),
     "option-but-no-command": (["--quiet"], ["command"]),

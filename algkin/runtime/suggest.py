@@ -1,0 +1,41 @@
+"""The names a lookup knows, said in an error, with the close match a typo most likely meant.
+
+>>> known("gg", ["a", "b", "r", "g"], plural="parameters")
+" (parameters: a, b, r, g); did you mean 'g'?"
+>>> known("theta", [], plural="inputs")
+' (inputs: none)'
+>>> close_match("dervie", ["derive", "curve", "verify"]), close_match("zzz", ["derive"])
+('derive', None)
+>>> close_match("THETA", ["theta", "phi"])  # a case slip is a match however short the name
+'theta'
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+
+__all__ = ["close_match", "did_you_mean", "known"]
+
+CUTOFF = 0.6
+"""difflib's similarity ratio a name must reach to be suggested (its own default)."""
+
+
+def close_match(word: str, names: Iterable[str]) -> str | None:
+    """The name most like ``word``, if one is like it at all."""
+    names = [n for n in names if n != word]
+    folded = [n for n in names if n.casefold() == word.casefold()]
+    found = folded or difflib.get_close_matches(word, names, n=1, cutoff=CUTOFF)
+    return found[0] if found else None
+
+
+def did_you_mean(word: str, names: Iterable[str]) -> str:
+    """``"; did you mean 'name'?"`` for the close match, else nothing."""
+    match = close_match(word, names)
+    return f"; did you mean {match!r}?" if match else ""
+
+
+def known(word: str, names: Iterable[str], *, plural: str) -> str:
+    """The known names in brackets (``plural``: what they are), then the close match if any."""
+    names = list(names)
+    return f" ({plural}: {', '.join(names) or 'none'})" + did_you_mean(word, names)

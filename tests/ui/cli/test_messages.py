@@ -1,0 +1,82 @@
+"""Messages that guide (issue 35, items 4-6): options and the scene in any order, the flag the user
+typed named, and the close match of a mistyped name suggested wherever a name is looked up."""
+
+import json
+
+import pytest
+
+from algkin.ui.cli import main
+
+
+def run(capsys, *args):
+    code = main(list(args))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def one_error(capsys, *args):
+    code, _, err = run(capsys, *args)
+    assert code == 2
+    assert err.count("\n") == 1 and err.startswith("algkin: error: ")
+    return err
+
+
+def test_a_list_option_before_the_scene_gives_the_scene_back(capsys):
+    code, after, _ = run(capsys, "derive", "chebyshev-lambda", "--outputs", "B", "--samples", "0", "--json")
+    assert code == 0
+    code, before, _ = run(capsys, "derive", "--outputs", "B", "chebyshev-lambda", "--samples", "0", "--json")
+    assert code == 0
+    strip = lambda text: {k: v for k, v in json.loads(text).items() if k != "timings"}  # noqa: E731
+    assert strip(before) == strip(after)
+    assert json.loads(before)["scene"] == "chebyshev-lambda"
+
+
+def test_two_outputs_before_the_scene(capsys):
+    code, out, _ = run(capsys, "show", "--outputs", "B", "P", "chebyshev-lambda", "--json")
+    assert code == 0, out
+    assert json.loads(out)["scene"] == "chebyshev-lambda"
+
+
+def test_a_missing_scene_is_still_said(capsys):
+    assert "required: scene" in one_error(capsys, "derive", "--outputs", "B")
+
+
+@pytest.mark.parametrize(("args", "words"), [
+    (["dervie", "chebyshev-lambda"], ["command='dervie'", "did you mean 'derive'?"]),
+    (["derive", "chebyshev-lambd"], ["chebyshev-lambd", "did you mean 'chebyshev-lambda'?"]),
+    (["derive", "arm-string", "--param", "gg"], ["--param='gg'", "parameters: a, b, r, g", "did you mean 'g'?"]),
+    (["derive", "arm-string", "--set", "rr=2"], ["--set='rr=2'", "did you mean 'r'?"]),
+    (["derive", "chebyshev-lambda", "--method", "linaer"], ["--method='linaer'", "did you mean 'linear'?"]),
+    (["curve", "fourbar", "--point", "b"], ["--point='b'", "did you mean 'B'?"]),
+    (["solve", "fourbar", "--at", "thetaa=30"], ["--at='thetaa'", "did you mean 'theta'?"]),
+    (["derive", "arm-string", "--outputs", "Bx"], ["--outputs='Bx'", "did you mean 'B'?"]),
+])
+def test_a_mistyped_name_gets_its_close_match(capsys, args, words):
+    err = one_error(capsys, *args)
+    for word in words:
+        assert word in err, err
+
+
+def test_a_name_like_nothing_gets_no_suggestion(capsys):
+    err = one_error(capsys, "derive", "arm-string", "--param", "zzzz")
+    assert "did you mean" not in err and "parameters: a, b, r, g" in err
+
+
+@pytest.mark.parametrize("command", ["extremum", "accuracy"])
+def test_the_flag_typed_is_named_with_the_outputs_it_could_be(capsys, command):
+    err = one_error(capsys, command, "arm-string", "--of", "|AB|")
+    assert err.startswith("algkin: error: --of='|AB|'"), err
+    assert "outputs: AB" in err and "did you mean 'AB'?" in err
+
+
+def test_plot_of_names_its_flag(capsys, tmp_path):
+    err = one_error(capsys, "plot", "arm-string", "--of", "|AB|", "--out", str(tmp_path / "x.svg"))
+    assert err.startswith("algkin: error: --of='|AB|'"), err
+    assert not (tmp_path / "x.svg").exists()
+
+
+def test_a_curve_with_nothing_dropped_says_so_without_a_dangling_colon(capsys):
+    code, out, _ = run(capsys, "curve", "slider-crank", "--point", "B", "--samples", "0")
+    assert code == 0
+    assert "no extraneous factor dropped" in out.splitlines()
+    assert not any(line.endswith(":") for line in out.splitlines())
