@@ -202,7 +202,7 @@ class _Found:
 
 
 def _msolve(problem: Kinematics, budget: float) -> _Found:
-    from .engines import _msolve_startup, find_msolve
+    from .engines import msolve_startup, find_msolve
     from .peers import PeerFailure, execute, failure
 
     executable = find_msolve()
@@ -230,7 +230,7 @@ def _msolve(problem: Kinematics, budget: float) -> _Found:
                 walls.append(time.perf_counter() - start)
                 output = target.read_text()
         solutions = _msolve_solutions(output, len(names))
-        startup = _msolve_startup(executable)
+        startup = msolve_startup(executable)
     except PeerFailure as why:
         return _Found(None, None, str(why))
     seconds = statistics.median(walls[1:]) - startup
