@@ -17,7 +17,7 @@ import sympy
 from algkin.bench.engines import find_msolve
 from algkin.errors import ComputationError, UsageError
 from algkin.eliminate.group import modes, solve_group
-from algkin.eliminate.group.algebra import univariate
+from algkin.eliminate.group.algebra import pseudo_remainder, univariate
 from algkin.eliminate.group.solve import PRIME, _factored, _fails_modulo
 
 UNKNOWNS = ["x1", "y1", "x2", "y2"]
@@ -242,6 +242,16 @@ def test_a_prime_rules_out_a_factor_only_where_the_lifts_fail_over_qq():
     assert not _fails_modulo(equations, "x", lifted=lifted, modulus=flint.fmpq_poly([-1, 0, 1]))
     assert _fails_modulo(equations, "x", lifted=lifted, modulus=flint.fmpq_poly([-3, 1]))
     assert not _fails_modulo(equations, "x", lifted=lifted, modulus=flint.fmpq_poly([-3, 1]) / PRIME)
+
+
+def test_a_pseudo_remainder_by_a_constant_leading_coefficient_is_the_one_by_hand():
+    # 2**2 (y**3 + p) = (2 y**2 - 1)(2 y) + 2 y + 4 p, by hand; y first in the ring (flint's division)
+    # and y second (the coefficient loop) alike
+    for names in (("y", "p"), ("p", "y")):
+        ctx = flint.fmpq_mpoly_ctx.get(names, "lex")
+        y, p = ctx.gens()[names.index("y")], ctx.gens()[names.index("p")]
+        assert pseudo_remainder(y**3 + p, 2 * y**2 - 1, "y") == 2 * y + 4 * p
+        assert pseudo_remainder(y**3 + p, 2 * y**2 - 1, "y", power=3) == 2 * (2 * y + 4 * p)
 
 
 def test_as_many_equations_as_unknowns():
