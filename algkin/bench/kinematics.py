@@ -465,10 +465,8 @@ def _peer_runs(problem: Kinematics, variable: str) -> dict[str, Callable[[float]
     from .peers import PeerProblem, parse, polynomial_ring
 
     keep = (variable,) + problem.parameters
-    ctx = problem.equations[0].context()
     equations = tuple(str(e).replace("^", "**") for e in problem.equations)
     peer_problem = PeerProblem(problem.name, equations, tuple(u for u in problem.unknowns if u != variable), keep)
-    assert all(str(n) in problem.unknowns + problem.parameters for n in ctx.names())
 
     def eliminating(engine: str) -> Callable[[float], tuple[BenchRow, Any]]:
         def go(budget: float) -> tuple[BenchRow, Any]:
