@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test test-loaded test-slow bench peers browser docs clean
+.PHONY: demo test test-loaded test-slow bench peers browser docs lab clean
 
 $(STAMP): pyproject.toml Makefile
 	$(PY) -m venv $(VENV)
@@ -73,6 +73,22 @@ browser:
 	elif command -v sudo >/dev/null 2>&1; then sudo="sudo"; \
 	else echo "browser: apt-get needs root or sudo; the browser tests will skip"; exit 0; fi; \
 	$$sudo apt-get update -q && DEBIAN_FRONTEND=noninteractive $$sudo apt-get install -y -q chromium
+
+LAB_STAMP := $(VENV)/.lab-installed
+
+# JupyterLab and jupytext (the lab extra) for make lab only: make test and make demo stay lean. The
+# setting (in .venv, not your home) opens a Markdown file, so a MyST tutorial, as a notebook.
+$(LAB_STAMP): $(STAMP)
+	$(BIN)/python -m pip install -q -e '.[lab]'
+	$(BIN)/jupytext-config --settings-file $(VENV)/etc/jupyter/labconfig/default_setting_overrides.json \
+	  set-default-viewer markdown myst
+	touch $(LAB_STAMP)
+
+# JupyterLab on docs/: the tutorials open as notebooks, docs/notebooks has the Sage seed notebook
+# redone; algkin.interact's sliders work (ipywidgets and its JupyterLab extension, the notebook extra).
+# As root (a container), JupyterLab needs --allow-root; LAB_FLAGS passes more (LAB_FLAGS=--no-browser).
+lab: $(LAB_STAMP)
+	$(BIN)/jupyter lab --ServerApp.root_dir=docs $$([ "$$(id -u)" = 0 ] && echo --allow-root) $(LAB_FLAGS)
 
 # The HTML site in docs/_build/html; the tutorials run inside the build, warnings are errors.
 docs: $(DOCS_STAMP)

@@ -34,6 +34,7 @@ __all__ = [
     "rates",
     "singular",
     "solve",
+    "follow",
     "catalog_names",
     "interact",
     "AlgkinError",
@@ -47,6 +48,7 @@ __all__ = [
     "Rates",
     "Singularities",
     "Solution",
+    "Followed",
     "Mechanism",
     "Quantity",
     # what bounds them
@@ -57,6 +59,7 @@ from .errors import AlgkinError
 
 if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ loads them at run time)
     from .analyses.extremum import Extremum, extremum
+    from .analyses.follow import Followed, follow
     from .analyses.quantities import Mechanism, Quantity, load_quantities
     from .analyses.rates import Rates, rates
     from .analyses.singular import Singularities, singular
@@ -86,6 +89,7 @@ _LAZY = {
     **dict.fromkeys(("rates", "Rates"), ".analyses.rates"),
     **dict.fromkeys(("singular", "Singularities"), ".analyses.singular"),
     **dict.fromkeys(("solve", "Solution"), ".analyses.solve"),
+    **dict.fromkeys(("follow", "Followed"), ".analyses.follow"),
     **dict.fromkeys(("load_quantities", "Mechanism", "Quantity"), ".analyses.quantities"),
     "interact": ".ui.widgets",
     "Budget": ".runtime.budget",  # its module loads multiprocessing: only when asked for

@@ -4,7 +4,7 @@ project = "algkin"
 author = "the algkin developers"
 copyright = "2026, the algkin developers"  # without it the footer reads "©." alone
 extensions = ["myst_nb", "sphinx.ext.autodoc"]
-exclude_patterns = ["_build", "jupyter_execute", "images/README.md"]
+exclude_patterns = ["_build", "jupyter_execute", "images/README.md", "notebooks"]  # notebooks: run by the tests, opened by make lab
 # Every tutorial and command page runs on each build, so none of them can rot; a failing
 # cell fails the build.
 nb_execution_mode = "force"

@@ -29,3 +29,26 @@ def test_make_test_sets_up_the_browser_its_page_tests_drive():
     (prerequisites,) = re.findall(r"^test:(.*)$", makefile, re.M)
     assert "browser" in prerequisites.split()
     assert "make browser" in README.read_text(encoding="utf-8")
+
+
+def test_make_lab_opens_jupyterlab_with_a_kernel_and_make_test_stays_without_it():
+    # Issue 35: the notebook extra installed ipywidgets but no kernel and no Jupyter (.venv/bin/jupyter
+    # did not exist). `make lab` installs JupyterLab (the lab extra) and opens it; `make test` does not.
+    try:
+        import tomllib
+    except ImportError:  # Python 3.10
+        import tomli as tomllib
+    extras = tomllib.loads((README.parent / "pyproject.toml").read_text(encoding="utf-8"))["project"][
+        "optional-dependencies"]
+
+    def names(extra):
+        return {re.split(r"[<>=!~\[; ]", requirement)[0] for requirement in extras[extra]}
+
+    assert {"jupyterlab", "jupytext", "ipykernel", "ipywidgets", "matplotlib"} <= names("lab")
+    assert {"ipykernel", "ipywidgets", "matplotlib"} <= names("notebook")
+    assert "jupyterlab" not in names("test") | names("notebook")
+    makefile = (README.parent / "Makefile").read_text(encoding="utf-8")
+    recipes = dict(re.findall(r"^(\S+):[^=\n]*\n((?:\t.*\n)+)", makefile, re.M))
+    assert "jupyter lab" in recipes["lab"]
+    assert "'.[lab]'" in recipes["$(LAB_STAMP)"] and "lab" not in recipes["$(STAMP)"]
+    assert "make lab" in README.read_text(encoding="utf-8")

@@ -34,7 +34,7 @@ from ..scene import Scene, compile_scene, load_scene
 from ..scene.compile import Compiled
 from ..scene.implicit.base import FloatArray
 from ..scene.load import SceneLike
-from ..scene.constructions import Crank, Dyad, Fixed, Frame, Slider
+from ..scene.constructions import Crank, Dyad, Fixed, Frame, Meet, Slider
 from ..system import input_values, symbol
 
 __all__ = ["Motion", "Pose", "symbolic_parameters", "Trajectories"]
@@ -145,6 +145,8 @@ class Motion:
                 bars.append((c.to, name))
                 if c.toward is not None:  # a moving line: the slotted bar through its two points
                     bars.append((c.through, c.toward))
+            elif isinstance(c, Meet):  # each line drawn out to where they meet
+                bars += [(p, name) for p in c.references]
         return bars
 
     @property

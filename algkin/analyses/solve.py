@@ -143,10 +143,10 @@ def _inputs(scene: Scene, used: Iterable[str], at: Mapping[str, Any]) -> dict[st
     missing = [n for n in used if n not in at]
     if missing:
         raise UsageError("at", ", ".join(missing), f"no value given for {', '.join(missing)} (NAME=VALUE)")
-    return {name: _value(scene, name, value) for name, value in at.items()}
+    return {name: input_value(scene, name, value) for name, value in at.items()}
 
 
-def _value(scene: Scene, name: str, value: Any) -> Fraction:
+def input_value(scene: Scene, name: str, value: Any) -> Fraction:
     """An input's value, exactly, within its range (degrees for an angle)."""
     spec = scene.inputs[name]
     try:
@@ -217,14 +217,14 @@ def _ball_inputs(compiled: Compiled | Groups, at: Mapping[str, Fraction]) -> dic
         if len(variables) == 1:
             values[variables[0]] = flint.arb(flint.fmpq(value.numerator, value.denominator))
         elif value % 90 == 0:  # degrees, whatever the unit the scene declares its range in
-            values.update(dict(zip(variables, map(flint.arb, _quarter(value)))))
+            values.update(dict(zip(variables, map(flint.arb, quarter_turn(value)))))
         else:
             radians = flint.arb.pi() * flint.fmpq(value.numerator, value.denominator) / 180
             values.update(input_values(variables, radians))
     return values
 
 
-def _quarter(degrees: Fraction) -> tuple[int, int]:
+def quarter_turn(degrees: Fraction) -> tuple[int, int]:
     """cos and sin of a multiple of 90 degrees."""
     return ((1, 0), (0, 1), (-1, 0), (0, -1))[int(degrees // 90) % 4]
 
@@ -256,17 +256,17 @@ def _written(mode: str, points: Mapping[str, tuple[flint.arb, ...]], digits: int
     largest = max((float(r) for r in radii), default=0.0)
     # rounded up: an upper bound even where the float underflows to 0
     radius = 0.0 if all(r == 0 for r in radii) else math.nextafter(largest, math.inf)
-    shown = {p: (_decimal(x, digits), _decimal(y, digits)) for p, (x, y) in points.items()}
+    shown = {p: (decimal_text(x, digits), decimal_text(y, digits)) for p, (x, y) in points.items()}
     return Configuration(mode, shown, radius)
 
 
-def _decimal(ball: flint.arb, digits: int) -> str:
+def decimal_text(ball: flint.arb, digits: int) -> str:
     """The ball's midpoint rounded to ``digits`` significant digits, trailing zeros left out
     (sin 30 degrees, 1/2 in a ball, is ``0.5``), in plain notation unless very large or small.
 
-    >>> _decimal(flint.arb(2).sqrt(), 5), _decimal(flint.arb(3) / 2, 30), _decimal(flint.arb(0), 30)
+    >>> decimal_text(flint.arb(2).sqrt(), 5), decimal_text(flint.arb(3) / 2, 30), decimal_text(flint.arb(0), 30)
     ('1.4142', '1.5', '0')
-    >>> _decimal(flint.arb(-400), 8), _decimal(flint.arb(10) ** 9, 3), _decimal(flint.arb(1) / 2**70, 3)
+    >>> decimal_text(flint.arb(-400), 8), decimal_text(flint.arb(10) ** 9, 3), decimal_text(flint.arb(1) / 2**70, 3)
     ('-400', '1e+9', '8.47e-22')
     """
     mantissa, exponent = ball.mid().man_exp()
@@ -358,7 +358,7 @@ def _exact_inputs(compiled: Groups, at: Mapping[str, Fraction]) -> dict[str, fli
         if len(variables) == 1:
             exact[variables[0]] = flint.fmpq(value.numerator, value.denominator)
         elif value % 90 == 0:
-            exact.update(zip(variables, map(flint.fmpq, _quarter(value))))
+            exact.update(zip(variables, map(flint.fmpq, quarter_turn(value))))
         else:
             raise UsageError("at", f"{name}={value}", "with points solved together an angle needs rational cos and "
                              "sin, for now: a multiple of 90 degrees")

@@ -40,11 +40,15 @@ class Branch:
     # dyad or slider point -> expression that must be >= 0
     discriminants: FrozenDict[str, sympy.Expr] = attrs.field(converter=frozen)
     selected: bool  # the branch the scene file asks for
+    # points whose discriminant is a square f**2: they exist where f != 0 (a meet of two lines)
+    squares: frozenset[str] = frozenset()
 
     @property
     def valid_when(self) -> str:
-        """Where the branch is real, each discriminant without its positive numeric factor."""
-        return " & ".join(f"({_without_positive_number(d)} >= 0)" for d in self.discriminants.values()) or "True"
+        """Where the branch is real, each discriminant without its positive numeric factor (a square's
+        base != 0)."""
+        return " & ".join(f"({d.base} != 0)" if p in self.squares and d.is_Pow else
+                          f"({_without_positive_number(d)} >= 0)" for p, d in self.discriminants.items()) or "True"
 
     def to_json(self) -> dict[str, object]:
         return {
@@ -76,9 +80,13 @@ def _branch(compiled: Compiled, chosen: dict[str, str]) -> Branch:
     inputs, specs = compiled.circles, compiled.implicit
     substitution: dict[sympy.Symbol, sympy.Expr] = {}
     discriminants: dict[str, sympy.Expr] = {}
+    squares: set[str] = set()
     for spec in specs:
         sigma = spec.sign(chosen[spec.point]) if spec.labels else 1
-        (x, y), discriminants[spec.point] = algebra_of(spec).closed_form(substitution, sigma=sigma, inputs=inputs)
+        algebra = algebra_of(spec)
+        (x, y), discriminants[spec.point] = algebra.closed_form(substitution, sigma=sigma, inputs=inputs)
+        if algebra.square:
+            squares.add(spec.point)
         substitution.update({symbol(spec.unknowns[0]): x, symbol(spec.unknowns[1]): y})
     values = {u: substitution[symbol(u)] for spec in specs for u in spec.unknowns}
     for unknown, definition in compiled.definitions.items():
@@ -86,7 +94,7 @@ def _branch(compiled: Compiled, chosen: dict[str, str]) -> Branch:
     labels = list(chosen.values())
     label = labels[0] if len(labels) == 1 else " ".join(f"{p}:{l}" for p, l in chosen.items())
     selected = all(chosen[spec.point] == spec.branch for spec in specs if spec.labels)
-    return Branch(label or "unique", chosen, values, discriminants, selected)
+    return Branch(label or "unique", chosen, values, discriminants, selected, frozenset(squares))
 
 
 def _output_value(definition: sympy.Expr, substitution: dict[sympy.Symbol, sympy.Expr],

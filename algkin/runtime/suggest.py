@@ -6,6 +6,8 @@
 ' (inputs: none)'
 >>> close_match("dervie", ["derive", "curve", "verify"]), close_match("zzz", ["derive"])
 ('derive', None)
+>>> close_match("rates", ["atlas", "plot"]) is None   # a few letters shared is no match
+True
 >>> close_match("THETA", ["theta", "phi"])  # a case slip is a match however short the name
 'theta'
 """
@@ -18,14 +20,18 @@ from collections.abc import Iterable
 __all__ = ["close_match", "did_you_mean", "known"]
 
 CUTOFF = 0.6
-"""difflib's similarity ratio a name must reach to be suggested (its own default)."""
+"""difflib's similarity ratio a short name (4 characters or fewer) must reach to be suggested
+(difflib's default: ``gg`` for ``g``); a longer one must reach ``LONG_CUTOFF``, or two words
+sharing a few letters would be paired (``rates`` and ``atlas``: 0.6)."""
+LONG_CUTOFF = 0.7
 
 
 def close_match(word: str, names: Iterable[str]) -> str | None:
     """The name most like ``word``, if one is like it at all."""
     names = [n for n in names if n != word]
     folded = [n for n in names if n.casefold() == word.casefold()]
-    found = folded or difflib.get_close_matches(word, names, n=1, cutoff=CUTOFF)
+    cutoff = CUTOFF if len(word) <= 4 else LONG_CUTOFF
+    found = folded or difflib.get_close_matches(word, names, n=1, cutoff=cutoff)
     return found[0] if found else None
 
 

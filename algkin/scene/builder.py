@@ -136,6 +136,10 @@ class SceneBuilder:
         line = _given(slider) if isinstance(slider, Mapping) else slider
         self.point(name, slider=line, distance=distance, branch=branch, **extra)
 
+    def meet(self, name: str, meet: Sequence[Sequence[str]], **extra: Any) -> None:
+        """``I = { meet = [["O", "A"], ["D", "B"]] }``: where the line OA meets the line DB."""
+        self.point(name, meet=meet, **extra)
+
     def unknown(self, name: str, unknown: bool = True, **extra: Any) -> None:
         """``P1 = { unknown = true }``: a point solved together with others, held by constraints."""
         self.point(name, unknown=unknown, **extra)

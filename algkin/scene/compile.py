@@ -20,7 +20,8 @@ from ..runtime import suggest
 from ..errors import SceneError, UsageError
 from ..runtime.frozen import FrozenDict, frozen
 from ..system import System, symbol
-from .constructions import Builder, Construction, Dyad, Indicator, Unbuildable
+from .constructions import Builder, Construction, Crank, Dyad, Indicator, Unbuildable
+from .driven import driven_angles, root_of
 from .expr import MAX_VALUE_BITS, bits_bound, irrational
 from .implicit import DyadSpec, ImplicitSpec, SliderSpec
 from .implicit.algebra import Circles, reduce_on_circles
@@ -204,7 +205,7 @@ def refuse_solved_together(scene: Scene) -> None:
 
         compile_groups(scene)
         raise UsageError("scene", scene.name, f"has points solved together ({', '.join(scene.unknown_points)}): "
-                         "`algkin solve` works on it; this command does not yet")
+                         "solve, follow, derive, curve, verify and toggles take it; this command does not yet")
 
 
 def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: Iterable[str] = ()) -> Compiled:
@@ -219,7 +220,8 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
     resolved = resolve_outputs(scene, outputs)
     points = _needed_points(scene, resolved)
     inputs = _used_inputs(scene, points)
-    builder = Builder({n: pair for n, pair in inputs.items() if len(pair) == 2})
+    turning = {n: pair for n, pair in inputs.items() if len(pair) == 2}
+    builder = Builder(turning, driven_angles(scene, turning))
     coords: dict[str, Point] = {}
     # every dimension at its default, the symbolic ones too: where the checks and samples are
     everywhere = {symbol(n): defaults[n] for n in symbolic}
@@ -238,6 +240,7 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
                 _check_finite(scene, f"points.{name}", item)
         _check_lengths(scene, name, construction, inputs)
         _check_direction(scene, name, construction)
+        _check_phase(scene, name, construction)
         made = len(builder.equations)
         try:
             x, y = construction.build(name, coords, builder)
@@ -264,8 +267,9 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
 
 
 def _used_inputs(scene: Scene, points: Sequence[str]) -> dict[str, tuple[sympy.Symbol, ...]]:
-    """The inputs the ``points`` move with (a crank's angle, a length in an expression) -> their variables."""
-    used = {getattr(scene.points[p], "input", None) for p in points}  # the cranks' angles
+    """The inputs the ``points`` move with (a crank's angle, a length in an expression) -> their variables;
+    a crank on a geared input moves with the input at the root of its gears."""
+    used = {root_of(scene, p.input)[0] for p in (scene.points[n] for n in points) if isinstance(p, Crank)}
     for name in points:
         for value in vars(scene.points[name]).values():
             for item in value if isinstance(value, tuple) else (value,):
@@ -392,6 +396,15 @@ def _check_direction(scene: Scene, name: str, construction: Construction) -> Non
     if direction is not None and all(d.is_number and d == 0 for d in direction):
         raise SceneError(scene.source, f"points.{name}.slider.direction",
                          "direction must not be zero, got [0, 0] with the parameters' default values")
+
+
+def _check_phase(scene: Scene, name: str, construction: Construction) -> None:
+    """A crank's phase given by parameters must still be a point of the unit circle with their defaults."""
+    if isinstance(construction, Crank) and all(v.is_number for v in construction.phase):
+        norm = sympy.expand(construction.phase[0] ** 2 + construction.phase[1] ** 2)
+        if norm != 1:
+            raise SceneError(scene.source, f"points.{name}.phase", f"cos**2 + sin**2 must be 1 (a point of the unit "
+                             f"circle), got {norm} with the parameters' default values")
 
 
 def _output_equations(outputs: Sequence[Output], coords: Mapping[str, Point], builder: Builder, *,

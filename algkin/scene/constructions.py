@@ -13,12 +13,14 @@ from typing import Protocol
 
 import sympy
 
-from .implicit import DyadSpec, ImplicitSpec, MirrorSpec, SliderSpec
+from .implicit import DyadSpec, ImplicitSpec, MeetSpec, MirrorSpec, SliderSpec
+from .implicit.algebra import reduce_on_circles
+from .implicit.meet import meet_equations
 from .implicit.mirror import mirror_equations
 from .implicit.base import Point
 
-__all__ = ["Construction", "Fixed", "Crank", "Dyad", "Slider", "Frame", "Unknown", "Mode", "CONSTRUCTIONS", "Builder",
-           "Indicator", "Unbuildable"]
+__all__ = ["Construction", "Fixed", "Crank", "Dyad", "Slider", "Frame", "Meet", "Unknown", "Mode", "CONSTRUCTIONS",
+           "Builder", "Indicator", "Unbuildable"]
 
 
 class Unbuildable(ValueError):
@@ -49,8 +51,10 @@ class Mode:
 class Builder:
     """Collects unknowns, equations, branch indicators and implicit points' specs while a scene compiles."""
 
-    def __init__(self, inputs: Mapping[str, tuple[sympy.Symbol, sympy.Symbol]]) -> None:
+    def __init__(self, inputs: Mapping[str, tuple[sympy.Symbol, sympy.Symbol]],
+                 driven: Mapping[str, tuple[sympy.Expr, sympy.Expr]] | None = None) -> None:
         self.inputs = inputs  # input name -> (cos symbol, sin symbol)
+        self.driven = driven or {}  # geared input name -> (cos, sin) polynomials in its root input's symbols
         self.unknowns: list[sympy.Symbol] = []
         self.equations: list[sympy.Expr] = []
         self.indicators: list[Indicator] = []
@@ -61,6 +65,10 @@ class Builder:
         symbol = sympy.Symbol(name, real=True)
         self.unknowns.append(symbol)
         return symbol
+
+    def angle(self, name: str) -> tuple[sympy.Expr, sympy.Expr]:
+        """The cos and sin of the angle input ``name``: its symbols, or a geared input's polynomials in them."""
+        return self.driven[name] if name in self.driven else self.inputs[name]
 
     def distance(self, p: str, q: str, length: sympy.Expr) -> None:
         """Record that the constructions hold ``|pq| = length``."""
@@ -105,23 +113,35 @@ class Fixed:
         return (self.x, self.y)
 
 
+QUARTER_TURNS = ((1, 0), (0, 1), (-1, 0), (0, -1))  # (cos, sin) of 0, 90, 180, 270 degrees
+
+
 @dataclass(frozen=True)
 class Crank:
-    """``crank = P, length = L, input = t, phase = k*90``: ``P + L*(cos(t+phase), sin(t+phase))``."""
+    """``crank = P, length = L, input = t, phase = ...``: ``P + L*(cos(t+phase), sin(t+phase))``.
+
+    The phase is kept as its exact cosine and sine (a multiple of 90 degrees, a rational point
+    of the unit circle, or parameters), so that the coordinates stay polynomial over the rationals.
+    """
 
     center: str
     length: sympy.Expr
     input: str
-    quarter_turns: int  # phase as a multiple of 90 degrees, so cos and sin stay exact
+    phase: tuple[sympy.Expr, sympy.Expr] = (sympy.Integer(1), sympy.Integer(0))  # (cos, sin)
     labels = ()
 
     @property
     def references(self) -> tuple[str, ...]:
         return (self.center,)
 
+    @property
+    def quarter_turns(self) -> int | None:
+        """The phase as a number of quarter turns, or None when it is no multiple of 90 degrees."""
+        return next((k for k, pair in enumerate(QUARTER_TURNS) if self.phase == pair), None)
+
     def build(self, name: str, coords: Mapping[str, Point], builder: Builder) -> Point:
-        c, s = builder.inputs[self.input]
-        cos_phase, sin_phase = [(1, 0), (0, 1), (-1, 0), (0, -1)][self.quarter_turns % 4]
+        c, s = builder.angle(self.input)
+        cos_phase, sin_phase = self.phase
         px, py = coords[self.center]
         builder.distance(self.center, name, self.length)
         return (
@@ -249,6 +269,36 @@ class Frame:
 
 
 @dataclass(frozen=True)
+class Meet:
+    """``meet = [[A, B], [C, D]]``: where the line through A and B meets the line through C and D
+    (a slot and a rod, two sliders' lines, a four-bar's instant centre); rational in the four
+    points, one point, no branch. Where the lines turn parallel it does not assemble."""
+
+    lines: tuple[tuple[str, str], tuple[str, str]]
+    labels = ()
+
+    @property
+    def references(self) -> tuple[str, ...]:
+        return (*self.lines[0], *self.lines[1])
+
+    def build(self, name: str, coords: Mapping[str, Point], builder: Builder) -> Point:
+        a, b, c, d = (coords[p] for p in self.references)
+        first, second = (a, b), (c, d)
+        for (start, end), line in zip((first, second), self.lines):
+            if sympy.expand(end[0] - start[0]) == 0 and sympy.expand(end[1] - start[1]) == 0:
+                raise Unbuildable(f"its line through {line[0]} and {line[1]} has no direction: the two points "
+                                  "coincide")
+        x, y = builder.unknown(f"{name}_x"), builder.unknown(f"{name}_y")
+        spec = MeetSpec(point=name, unknowns=(x.name, y.name), branch="unique", first=first, second=second)
+        if reduce_on_circles(spec.determinant(), list(builder.inputs.values())) == 0:
+            raise Unbuildable(f"its lines {'-'.join(self.lines[0])} and {'-'.join(self.lines[1])} are parallel "
+                              "for every input: they never meet in one point")
+        builder.equations += meet_equations((x, y), first, second)
+        builder.implicit[name] = spec
+        return (x, y)
+
+
+@dataclass(frozen=True)
 class Unknown:
     """``unknown = true``: a point held by the scene's ``[constraints]``, solved together with the
     others of its group (``algkin.scene.groups``), never built on its own; a ``mode`` names the
@@ -263,4 +313,4 @@ class Unknown:
 
 
 CONSTRUCTIONS: dict[str, type[Construction]] = {"fixed": Fixed, "crank": Crank, "dyad": Dyad, "frame": Frame,
-                                                 "slider": Slider, "unknown": Unknown}
+                                                 "slider": Slider, "meet": Meet, "unknown": Unknown}

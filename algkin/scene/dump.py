@@ -14,7 +14,8 @@ True
 import json
 from collections.abc import Iterable
 
-from .constructions import Construction, Crank, Dyad, Fixed, Frame, Mode, Slider, Unknown
+from .constructions import Construction, Crank, Dyad, Fixed, Frame, Meet, Mode, Slider, Unknown
+from .driven import root_of
 from .model import Scene
 
 __all__ = ["dump_scene"]
@@ -33,10 +34,8 @@ def _point(construction: Construction, scene: Scene) -> str:
     if isinstance(construction, Fixed):
         return f"fixed = {_exprs((construction.x, construction.y))}"
     if isinstance(construction, Crank):
-        unit = scene.inputs[construction.input].unit
-        phase = construction.quarter_turns * 90 if unit == "deg" else 0
         return (f"crank = {_string(construction.center)}, length = {_string(construction.length)}, "
-                f"input = {_string(construction.input)}, phase = {phase}")
+                f"input = {_string(construction.input)}, phase = {phase_text(construction, scene)}")
     if isinstance(construction, Dyad):
         return (f"dyad = {_exprs(construction.bases)}, lengths = {_exprs(construction.lengths)}, "
                 f"{_branch(construction.branch, construction.mode)}")
@@ -48,6 +47,8 @@ def _point(construction: Construction, scene: Scene) -> str:
         return (f"slider = {{ through = {_string(construction.through)}, {line} }}, "
                 f"distance = {{ to = {_string(construction.to)}, length = {_string(construction.length)} }}, "
                 f"{_branch(construction.branch, construction.mode)}")
+    if isinstance(construction, Meet):
+        return f"meet = [{_exprs(construction.lines[0])}, {_exprs(construction.lines[1])}]"
     if isinstance(construction, Unknown):
         return "unknown = true" + (f", {_branch('', construction.mode)}" if construction.mode else "")
     raise TypeError(f"no TOML form for a {type(construction).__name__} construction")
@@ -60,6 +61,21 @@ def _branch(branch: str, mode: Mode | None) -> str:
     at = _string(mode.at[0][1]) if len(mode.at) == 1 else \
         "{ " + ", ".join(f"{name} = {_string(value)}" for name, value in mode.at) + " }"
     return f"mode = {{ at = {at}, near = {_exprs(mode.near)} }}"
+
+
+def phase_text(crank: Crank, scene: Scene) -> str:
+    """A crank's phase as the file writes it: degrees for a quarter turn of a crank in degrees, 0 for
+    none, else its exact ``{ cos = ..., sin = ... }``.
+
+    >>> from algkin.scene import load_scene
+    >>> phase_text(load_scene("arm-string").points["A"], load_scene("arm-string"))
+    '-90'
+    """
+    unit = scene.inputs[root_of(scene, crank.input)[0]].unit
+    turns = crank.quarter_turns
+    if turns is not None and (unit == "deg" or turns == 0):
+        return str([0, 90, 180, -90][turns])
+    return f"{{ cos = {_string(crank.phase[0])}, sin = {_string(crank.phase[1])} }}"
 
 
 def _parameter(name: str, value: object, bounds: Iterable[object] | None) -> str:
@@ -77,6 +93,8 @@ def dump_scene(scene: Scene) -> str:
     lines += ["", "[inputs]"]
     lines += [f"{name} = {{ range = {_exprs((i.lo, i.hi))}, unit = {_string(i.unit)} }}"
               for name, i in scene.inputs.items()]
+    lines += [f"{name} = {{ driven_by = {_string(d.driver)}, ratio = {_string(d.ratio)} }}"
+              for name, d in scene.driven.items()]
     lines += ["", "[points]"]
     lines += [f"{name} = {{ {_point(c, scene)} }}" for name, c in scene.points.items()]
     if scene.constraints:

@@ -38,6 +38,7 @@ from ..runtime.frozen import FrozenDict, frozen
 from ..system import symbol
 from .compile import defaults_subs
 from .constructions import Builder, Crank, Fixed, Frame, Unknown
+from .driven import driven_angles
 from .implicit.base import Point
 from .model import Scene
 
@@ -98,7 +99,8 @@ def _defaults(scene: Scene) -> dict[sympy.Symbol, sympy.Expr]:
 def _coordinates(scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -> dict[str, Point]:
     """Every point's (x, y): an unknown point's own unknowns, a construction's in those of its references."""
     coordinates: dict[str, Point] = {}
-    builder = Builder({n: i.symbols for n, i in scene.inputs.items() if i.is_angle})
+    angles = {n: i.symbols for n, i in scene.inputs.items() if i.is_angle}
+    builder = Builder(angles, driven_angles(scene, angles))
 
     def build(name: str) -> Point:
         if name not in coordinates:

@@ -28,9 +28,10 @@ import sympy
 from ..runtime import suggest
 from ..errors import SceneError, UsageError
 from .constraints import Constraint, parse_constraint
-from .constructions import CONSTRUCTIONS, Construction, Crank, Dyad, Fixed, Frame, Mode, Slider, Unknown
+from .constructions import CONSTRUCTIONS, QUARTER_TURNS, Construction, Crank, Dyad, Fixed, Frame, Meet, Mode, Slider, \
+    Unknown
 from .expr import exact_number, irrational, parse
-from .model import Input, Output, Scene, length_range_problem, range_problem
+from .model import DrivenInput, Input, Output, Scene, length_range_problem, range_problem
 from .names import check_names
 
 __all__ = ["load_scene", "load_scene_text", "as_scene", "catalog_names", "MAX_SCENE_BYTES", "SceneLike",
@@ -51,8 +52,11 @@ _EXTRA_KEYS = {
     "dyad": {"lengths", "branch", "mode"},
     "frame": {"at"},
     "slider": {"distance", "branch", "mode"},
+    "meet": set(),
     "unknown": {"mode"},
 }
+_PHASE_FORMS = ('a multiple of 90 degrees (0 in radians), { cos = "3/5", sin = "4/5" } (exact, '
+                'cos**2 + sin**2 = 1) or { tan_half = "1/2" } (the tangent of half the phase)')
 
 
 class _FloatText(str):
@@ -133,6 +137,7 @@ class _Loader:
     def __init__(self, source: str) -> None:
         self.source = source
         self.names: dict[str, sympy.Expr] = {}  # parameters read so far, as symbols
+        self.driven: dict[str, DrivenInput] = {}  # geared inputs, once read
 
     def fail(self, element: str, message: str) -> NoReturn:
         raise SceneError(self.source, element, message)
@@ -168,11 +173,15 @@ class _Loader:
         if not isinstance(name, str) or not isinstance(description, str):
             self.fail("name", "name and description must be strings")
         parameters, ranges = self.parameters(self.table(data, "parameters", "parameters"))
-        inputs = self.inputs(self.table(data, "inputs", "inputs"))
+        table = self.table(data, "inputs", "inputs")
+        geared = {n: spec for n, spec in table.items() if isinstance(spec, dict) and "driven_by" in spec}
+        inputs = self.inputs({n: spec for n, spec in table.items() if n not in geared})
+        self.driven = self.geared(geared, inputs)
         points = self.points(self.table(data, "points", "points"), inputs)
         constraints = self.constraints(self.table(data, "constraints", "constraints"), points)
         outputs = self.outputs(self.table(data, "outputs", "outputs"), points, inputs, parameters)
-        scene = Scene(name, description, parameters, inputs, points, outputs, self.source, ranges, constraints)
+        scene = Scene(name, description, parameters, inputs, points, outputs, self.source, ranges, constraints,
+                      self.driven)
         check_names(scene)
         return scene
 
@@ -241,6 +250,61 @@ class _Loader:
         self.names.update({name: i.symbols[0] for name, i in inputs.items() if not i.is_angle})
         return inputs
 
+    def geared(self, table: Table, inputs: Mapping[str, Input]) -> dict[str, DrivenInput]:
+        """``t2 = { driven_by = "t1", ratio = "-2" }``: angle inputs geared to others, ``t2 = ratio * t1``."""
+        driven: dict[str, DrivenInput] = {}
+        for name, spec in table.items():
+            element = f"inputs.{name}"
+            self.identifier(name, element)
+            if name in self.names:
+                self.fail(element, f"input {name!r} has the name of a parameter")
+            extra = set(spec) - {"driven_by", "ratio"}
+            if extra:
+                self.fail(f"{element}.{sorted(extra)[0]}", "unknown key for a geared input (expected driven_by, "
+                          "ratio; its range and unit are its driver's)")
+            driver = spec["driven_by"]
+            if not isinstance(driver, str):
+                self.fail(f"{element}.driven_by", f"expected the name of an input, got {driver!r}")
+            if driver == name:
+                self.fail(f"{element}.driven_by", f"{name!r} cannot drive itself")
+            if driver not in inputs and driver not in table:
+                others = [n for n in [*inputs, *table] if n != name]
+                self.fail(f"{element}.driven_by", f"unknown input {driver!r}" + suggest.known(driver, others, plural="inputs"))
+            if driver in inputs and not inputs[driver].is_angle:
+                self.fail(f"{element}.driven_by", f"{driver!r} is a length input: gears turn with an angle")
+            driven[name] = DrivenInput(name, driver, self.ratio(spec.get("ratio"), f"{element}.ratio", (name, driver)))
+        for name in driven:
+            self.check_gears(name, driven)
+        return driven
+
+    def ratio(self, value: object, element: str, gear: tuple[str, str]) -> sympy.Integer:
+        """A gear ratio: a nonzero integer (a fraction p/q would need the driver's angle over q as the variable)."""
+        if value is None:
+            self.fail(element, 'missing: the gear ratio, a nonzero integer such as "2" or "-1"')
+        try:
+            ratio = parse(value, {}) if not isinstance(value, _FloatText) else exact_number(value)
+        except ValueError:
+            ratio = None
+        if ratio is None or not ratio.is_Rational or ratio == 0:
+            self.fail(element, f'expected a nonzero integer such as "2" or "-1" (negative: external gears), got '
+                      f'{value!r}')
+        if not ratio.is_Integer:
+            name, driver = gear
+            self.fail(element, f"ratio {ratio} is not an integer (the system would not stay polynomial): drive both "
+                      f"from a slower input u, {driver} = {{ driven_by = \"u\", ratio = \"{ratio.q}\" }} and "
+                      f"{name} = {{ driven_by = \"u\", ratio = \"{ratio.p}\" }}")
+        return ratio
+
+    def check_gears(self, name: str, driven: Mapping[str, DrivenInput]) -> None:
+        """Refuse inputs that drive each other in a cycle (``t2 -> t3 -> t2``)."""
+        chain = [name]
+        while chain[-1] in driven:
+            chain.append(driven[chain[-1]].driver)
+            if chain[-1] == name:
+                self.fail(f"inputs.{name}.driven_by", f"inputs drive each other in a cycle: {' -> '.join(chain)}")
+            if chain[-1] in chain[:-1]:
+                return  # a cycle further up the chain: reported from its own inputs
+
     def number(self, value: object, element: str) -> sympy.Rational:
         saved, self.names = self.names, {}
         try:
@@ -304,16 +368,44 @@ class _Loader:
             self.fail(f"{element}.length", "a crank needs a length")
         length = self.positive(spec["length"], f"{element}.length")
         name = spec.get("input")
-        if name not in inputs:
-            self.fail(f"{element}.input", f"unknown input {name!r} (inputs: {', '.join(inputs) or 'none'})")
-        if not inputs[name].is_angle:
+        if name not in inputs and name not in self.driven:
+            self.fail(f"{element}.input", f"unknown input {name!r}"
+                      + suggest.known(str(name), [*inputs, *self.driven], plural="inputs"))
+        root = inputs[self.root(name)]
+        if not root.is_angle:
             self.fail(f"{element}.input", f"{name!r} is a length input: a crank turns with an angle "
                                           "(use the length in a dyad's lengths or a frame's at)")
-        phase = self.number(spec.get("phase", 0), f"{element}.phase")
-        quarter = phase / 90 if inputs[name].unit == "deg" else phase
-        if not quarter.is_Integer or (inputs[name].unit == "rad" and phase != 0):
-            self.fail(f"{element}.phase", f"phase must be a multiple of 90 degrees (0 in radians), got {phase}")
-        return Crank(center, length, name, int(quarter))
+        return Crank(center, length, name, self.phase(spec.get("phase", 0), f"{element}.phase", root.unit))
+
+    def root(self, name: str) -> str:
+        """The input at the root of ``name``'s gears (checked acyclic)."""
+        while name in self.driven:
+            name = self.driven[name].driver
+        return name
+
+    def phase(self, value: object, element: str, unit: str) -> tuple[sympy.Expr, sympy.Expr]:
+        """A crank's phase as its exact (cos, sin): see ``_PHASE_FORMS``."""
+        if isinstance(value, dict):
+            return self.phase_table(value, element)
+        phase = self.number(value, element)
+        quarter = phase / 90 if unit == "deg" else phase
+        if not quarter.is_Integer or (unit == "rad" and phase != 0):
+            self.fail(element, f"phase {phase} {unit} has no rational cos and sin: give {_PHASE_FORMS}")
+        cos, sin = QUARTER_TURNS[int(quarter) % 4]
+        return sympy.Integer(cos), sympy.Integer(sin)
+
+    def phase_table(self, value: Table, element: str) -> tuple[sympy.Expr, sympy.Expr]:
+        """``{ cos = c, sin = s }`` (c**2 + s**2 = 1 where both are numbers) or ``{ tan_half = t }``."""
+        if set(value) == {"tan_half"}:
+            half = self.expr(value["tan_half"], f"{element}.tan_half")
+            return sympy.cancel((1 - half**2) / (1 + half**2)), sympy.cancel(2 * half / (1 + half**2))
+        if set(value) != {"cos", "sin"}:
+            self.fail(element, f"expected {_PHASE_FORMS}, got the keys {', '.join(sorted(value)) or 'none'}")
+        cos, sin = (self.expr(value[k], f"{element}.{k}") for k in ("cos", "sin"))
+        if cos.is_number and sin.is_number and cos**2 + sin**2 != 1:
+            self.fail(element, f"cos**2 + sin**2 must be 1 (a point of the unit circle), got {cos**2 + sin**2} "
+                      f"for cos = {cos}, sin = {sin}")
+        return cos, sin
 
     def dyad(self, spec: Table, element: str, names: set[str], inputs: dict[str, Input]) -> Dyad:
         bases = self.point_pair(spec, "dyad", element, names)
@@ -407,6 +499,23 @@ class _Loader:
         bases = self.point_pair(spec, "frame", element, names)
         at = tuple(self.expr(v, f"{element}.at") for v in self.pair(spec, "at", element))
         return Frame(bases, at)
+
+    def meet(self, spec: Table, element: str, names: set[str], inputs: dict[str, Input]) -> Meet:
+        """``meet = [["A", "B"], ["C", "D"]]``: two lines, each through two different points, not the same line."""
+        lines = self.pair(spec, "meet", element)
+        pairs = []
+        for line in lines:
+            if not isinstance(line, list) or len(line) != 2:
+                self.fail(f"{element}.meet", f'expected two lines, each two points: [["A", "B"], ["C", "D"]], got {lines!r}')
+            first, second = (self.point_ref(p, f"{element}.meet", names) for p in line)
+            if first == second:
+                self.fail(f"{element}.meet", f"the line through {first} and {second} has no direction: name two "
+                          "different points")
+            pairs.append((first, second))
+        if set(pairs[0]) == set(pairs[1]):
+            self.fail(f"{element}.meet", f"a line meets itself everywhere: {'-'.join(pairs[0])} and "
+                      f"{'-'.join(pairs[1])} are the same line")
+        return Meet((pairs[0], pairs[1]))
 
     def unknown(self, spec: Table, element: str, names: set[str], inputs: dict[str, Input]) -> Unknown:
         if spec["unknown"] is not True:

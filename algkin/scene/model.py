@@ -7,7 +7,7 @@ from ..runtime.frozen import FrozenDict, frozen
 from .constraints import Constraint
 from .constructions import Construction, Unknown
 
-__all__ = ["Scene", "Input", "Output", "range_problem", "length_range_problem"]
+__all__ = ["Scene", "Input", "DrivenInput", "Output", "range_problem", "length_range_problem"]
 
 # The motion repeats after a turn; a range past two turns or far from zero only multiplies
 # the work (certificates and samples are spread over it).
@@ -90,6 +90,19 @@ class Input:
 
 
 @attrs.frozen
+class DrivenInput:
+    """An angle input turned by another through gears: ``t2 = { driven_by = "t1", ratio = "-2" }``
+    is ``t2 = -2*t1`` (external gears mesh with a negative ratio). ``driver`` is an input or
+    another driven input; ``ratio`` a nonzero integer, so that cos and sin of ``t2`` are
+    polynomials in those of the input at the root of the chain (``algkin.scene.driven``).
+    """
+
+    name: str
+    driver: str
+    ratio: sympy.Integer
+
+
+@attrs.frozen
 class Output:
     """A named output: ``kind`` is 'point', 'dist', 'x' or 'y' of ``points``."""
 
@@ -129,6 +142,8 @@ class Scene:
         factory=FrozenDict, converter=frozen)
     # name -> a constraint on points solved together (``unknown = true``), in file order
     constraints: FrozenDict[str, Constraint] = attrs.field(factory=FrozenDict, converter=frozen)
+    # name -> an angle input geared to another (no variables of its own), in file order
+    driven: FrozenDict[str, DrivenInput] = attrs.field(factory=FrozenDict, converter=frozen)
 
     @property
     def unknown_points(self) -> tuple[str, ...]:

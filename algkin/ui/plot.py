@@ -1,7 +1,8 @@
 """The seed documents' figures, drawn from derived closed forms (matplotlib, loaded only here).
 
 Figures are built on ``matplotlib.figure.Figure`` with the Agg canvas, never through
-``pyplot``'s global state, so plotting leaves no backend or style changed.
+``pyplot``'s global state, so plotting leaves no backend or style changed; as a notebook
+cell's last line each shows as an image, once (``algkin.ui.figure``).
 
 - ``quantity_figure``: a quantity against the input with its minimum marked, or its
   derivative with the zero marked (the seed's two plots);
@@ -40,13 +41,15 @@ FORMATS = (".png", ".svg", ".pdf")
 
 
 def new_figure() -> Figure:
-    """An empty figure on the Agg canvas (no pyplot state); AlgkinError without matplotlib."""
+    """An empty figure on the Agg canvas (no pyplot state) that a notebook shows as an image
+    (``algkin.ui.figure.ShownFigure``); AlgkinError without matplotlib."""
     try:
         from matplotlib.backends.backend_agg import FigureCanvasAgg
-        from matplotlib.figure import Figure
+
+        from .figure import ShownFigure
     except ImportError:
         raise AlgkinError("plotting needs matplotlib: pip install 'algkin[plot]'") from None
-    figure = Figure(figsize=(6.4, 4.4), layout="constrained")
+    figure = ShownFigure(figsize=(6.4, 4.4), layout="constrained")
     FigureCanvasAgg(figure)
     return figure
 

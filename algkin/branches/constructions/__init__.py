@@ -1,7 +1,7 @@
 """The branch algebra of each implicit point's construction: what branches and analyses ask of a
 compiled spec (``algkin.scene.implicit``, which describes geometry only).
 
-One module per construction (``dyad``, ``slider``, ``mirror``), each a ``BranchAlgebra``:
+One module per construction (``dyad``, ``slider``, ``mirror``, ``meet``), each a ``BranchAlgebra``:
 the point's closed form on a mode, the conditions where its two modes meet, and a float64
 evaluator free of cancellation. ``algebra_of`` picks it by the spec's type; a new
 construction is one more spec in the scene layer and one more case here.
@@ -11,13 +11,14 @@ construction is one more spec in the scene layer and one more case here.
 ['DyadAlgebra', 'MirrorAlgebra', 'MirrorAlgebra']
 """
 
-from ...scene.implicit import DyadSpec, ImplicitSpec, MirrorSpec, SliderSpec
+from ...scene.implicit import DyadSpec, ImplicitSpec, MeetSpec, MirrorSpec, SliderSpec
 from .base import BranchAlgebra, Fix, HalfAngle, StableEvaluator, Substitution
 from .dyad import DyadAlgebra
+from .meet import MeetAlgebra
 from .mirror import MirrorAlgebra
 from .slider import SliderAlgebra
 
-__all__ = ["algebra_of", "BranchAlgebra", "DyadAlgebra", "MirrorAlgebra", "SliderAlgebra", "StableEvaluator",
+__all__ = ["algebra_of", "BranchAlgebra", "DyadAlgebra", "MeetAlgebra", "MirrorAlgebra", "SliderAlgebra", "StableEvaluator",
            "Substitution", "Fix", "HalfAngle"]
 
 
@@ -30,4 +31,6 @@ def algebra_of(spec: ImplicitSpec) -> BranchAlgebra:
             return SliderAlgebra(spec)
         case MirrorSpec():
             return MirrorAlgebra(spec)
+        case MeetSpec():
+            return MeetAlgebra(spec)
     raise TypeError(f"no branch algebra for {type(spec).__name__}: add its case to algkin.branches.constructions")

@@ -6,7 +6,7 @@ construction's own is in its module (``dyad``, ``slider``, ``mirror``).
 
 from abc import ABC, abstractmethod
 from collections.abc import Callable, Mapping, Sequence
-from typing import Protocol
+from typing import ClassVar, Protocol
 
 import sympy
 
@@ -33,6 +33,10 @@ class StableEvaluator(Protocol):
 
 class BranchAlgebra(ABC):
     """The branch algebra of one implicit point: its closed form per mode, its toggles, its stable floats."""
+
+    # True when the discriminant ``closed_form`` gives is a square ``f**2`` (real everywhere): the
+    # point exists where ``f != 0`` (a meet's determinant), which ``valid_when`` says
+    square: ClassVar[bool] = False
 
     @abstractmethod
     def closed_form(self, substitution: Substitution, *, sigma: int, inputs: Circles) -> tuple[Point, sympy.Expr]:

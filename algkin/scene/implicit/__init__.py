@@ -2,7 +2,8 @@
 
 from .base import ImplicitSpec
 from .dyad import DyadSpec
+from .meet import MeetSpec
 from .mirror import MirrorSpec
 from .slider import SliderSpec
 
-__all__ = ["ImplicitSpec", "DyadSpec", "MirrorSpec", "SliderSpec"]
+__all__ = ["ImplicitSpec", "DyadSpec", "MeetSpec", "MirrorSpec", "SliderSpec"]

@@ -15,9 +15,10 @@ from typing import TYPE_CHECKING, Any, Union
 from ...runtime import suggest
 from ...errors import UsageError, renamed
 from ...runtime.validation import real
+from .groups import group_curve, group_derive, group_toggles, group_verify
 from .sweep import COMMANDS as SWEEP_COMMANDS
 from .reports import (Document, Form, extremum_forms, latex_lines, render, report_accuracy, report_curve,
-                      report_derive, report_extremum, report_show, report_singular, report_solve, report_toggles, verification_line,
+                      report_derive, report_extremum, report_follow, report_show, report_singular, report_solve, report_toggles, verification_line,
                       terminal_safe)
 
 if TYPE_CHECKING:
@@ -117,6 +118,9 @@ def _cmd_toggles(args: argparse.Namespace) -> Outcome:
     from ...analyses.limits import limits
     from ...analyses.toggles import toggles
 
+    together = _solved_together(args)
+    if together is not None:
+        return group_toggles(args, together)
     scene = _scene_of(args)
     document = toggles(scene, budget=args.deadline).to_json()
     if document["unit"] == "deg":  # a turning input's: the output's limit positions and time ratio
@@ -236,6 +240,8 @@ def _cmd_show(args: argparse.Namespace) -> Outcome:
         # point -> why it never assembles: dyads on two fixed bases, decided exactly
         "never_assembles": dict(compiled.never_assembles),
     }
+    if scene.driven:  # inputs turned by others through gears: no variables of their own
+        document["geared"] = {n: {"driven_by": d.driver, "ratio": str(d.ratio)} for n, d in scene.driven.items()}
     return render(args, document, report_show), 0
 
 
@@ -243,6 +249,9 @@ def _cmd_derive(args: argparse.Namespace) -> Outcome:
     from ...derivation.pipeline import derive
 
     out = _full_forms_target(args)
+    together = _solved_together(args)
+    if together is not None:
+        return _finish(args, out, *group_derive(args, together))
     result = derive(_scene_of(args), args.outputs, **_engine(args))
     forms = [(f"eliminant of {u}", e.polynomial, "= 0") for u, e in result.eliminations.items()]
     forms += [(f"{u}, branch {b.label}", v, "") for b in result.branches for u, v in b.values.items()]
@@ -313,6 +322,9 @@ def _cmd_curve(args: argparse.Namespace) -> Outcome:
     from ...derivation.pipeline import curve
 
     out = _full_forms_target(args)
+    together = _solved_together(args)
+    if together is not None:
+        return _finish(args, out, *group_curve(args, together))
     result = curve(_scene_of(args), args.point, **_engine(args))
     # the sympy form only for LaTeX: on a family's curve it costs seconds
     forms = [(f"curve of {result.point}", result.elimination.polynomial, "= 0")] if args.latex else []
@@ -324,12 +336,23 @@ def _cmd_verify(args: argparse.Namespace) -> Outcome:
 
     if args.samples == 0:
         raise UsageError("--samples", 0, "verify needs at least one sample (derive and curve take 0 to skip it)")
+    together = _solved_together(args)
+    if together is not None:
+        return group_verify(args, together)
     result = derive(_scene_of(args), args.outputs, certify=False, **_engine(args))
     document = {"scene": result.compiled.scene.name, "verification": result.verification.to_json(),
                 "branches": [b.label for b in result.branches], "timings": dict(result.timings)}
     text = render(args, document, lambda d: f"scene {d['scene']}, branches {', '.join(d['branches'])}\n"
                                             + verification_line(d["verification"]))
     return text, _verdict(result.verification)
+
+
+def _solved_together(args: argparse.Namespace) -> Scene | None:
+    """The command's scene when it has points solved together (``unknown = true``), else None."""
+    from ...scene.load import as_scene
+
+    scene = as_scene(_scene_of(args))
+    return scene if scene.unknown_points else None
 
 
 def _cmd_export(args: argparse.Namespace) -> Outcome:
@@ -350,15 +373,24 @@ def _cmd_solve(args: argparse.Namespace) -> Outcome:
     return render(args, found.to_json(), report_solve), 0
 
 
-def _at(texts: Sequence[str]) -> dict[str, str]:
-    """``--at NAME=VALUE``s as ``{name: value}``, each input once."""
+def _cmd_follow(args: argparse.Namespace) -> Outcome:
+    from ...analyses.follow import follow
+
+    start = _at([args.start], "--from")
+    found = follow(_scene_of(args), mode=args.mode, start=start, stop=args.stop, at=_at(args.at),
+                   digits=args.digits, max_step=args.max_step, deadline=args.deadline)
+    return render(args, found.to_json(), report_follow), 0
+
+
+def _at(texts: Sequence[str], flag: str = "--at") -> dict[str, str]:
+    """``NAME=VALUE``s (of ``flag``) as ``{name: value}``, each input once."""
     at: dict[str, str] = {}
     for text in texts:
         name, equals, value = text.partition("=")
         if not (equals and name.strip() and value.strip()):
-            raise UsageError("--at", text, "expected INPUT=VALUE, e.g. theta=30")
+            raise UsageError(flag, text, "expected INPUT=VALUE, e.g. theta=30")
         if name.strip() in at:
-            raise UsageError("--at", text, f"{name.strip()} given twice")
+            raise UsageError(flag, text, f"{name.strip()} given twice")
         at[name.strip()] = value.strip()
     return at
 
@@ -366,4 +398,4 @@ def _at(texts: Sequence[str]) -> dict[str, str]:
 COMMANDS: dict[str, Command] = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
             "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot,
             "toggles": _cmd_toggles, "singular": _cmd_singular, "accuracy": _cmd_accuracy, "bench": _cmd_bench,
-            "export": _cmd_export, "solve": _cmd_solve, **SWEEP_COMMANDS}
+            "export": _cmd_export, "solve": _cmd_solve, "follow": _cmd_follow, **SWEEP_COMMANDS}

@@ -48,6 +48,9 @@ FLAGS = {
     "at": "--at",  # solve's inputs
     "mode": "--mode",
     "digits": "--digits",
+    "start": "--from",  # follow's input and start value
+    "stop": "--to",
+    "max_step": "--max-step",
 }
 
 

@@ -305,6 +305,21 @@ def build_parser() -> argparse.ArgumentParser:
     solve.add_argument("--digits", type=int, default=30, help="significant digits of each coordinate")
     _json(solve)
     _budget_options(solve, terms=False)
+    follow = _command(commands, "follow", "one mode followed along an input by certified continuation, up to "
+                                          "the end or to where it meets another mode (a toggle), reported")
+    _scene(follow)
+    follow.add_argument("--mode", metavar="LABEL", required=True,
+                        help="the mode or branch, as `algkin solve` labels it at the start")
+    follow.add_argument("--from", dest="start", metavar="INPUT=VALUE", required=True,
+                        help="the input followed and its exact start value (degrees for an angle)")
+    follow.add_argument("--to", dest="stop", metavar="VALUE", required=True, help="its exact end value")
+    follow.add_argument("--at", action="append", default=[], metavar="INPUT=VALUE",
+                        help="each other input's exact value, where the scene has more than one")
+    follow.add_argument("--max-step", dest="max_step", metavar="STEP",
+                        help="the largest step, in the input's unit (default: an eighth of the way)")
+    follow.add_argument("--digits", type=int, default=15, help="significant digits of each coordinate")
+    _json(follow)
+    _budget_options(follow, terms=False)
     bench = _command(commands, "bench", "elimination methods compared on a problem set, peers beside")
     bench.add_argument("--problems", nargs="+", help="problem names (default: the whole suite)")
     bench.add_argument("--methods", nargs="+", help="elimination methods (default: all)")

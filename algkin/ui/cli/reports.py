@@ -14,7 +14,7 @@ if TYPE_CHECKING:
 
     from ...analyses.extremum import Extremum
 
-__all__ = ["render", "report_show", "report_derive", "report_curve", "report_singular", "report_solve", "report_toggles",
+__all__ = ["render", "report_show", "report_derive", "report_curve", "report_singular", "report_solve", "report_follow", "report_toggles",
            "report_extremum", "report_accuracy", "verification_line", "latex_lines", "extremum_forms", "terminal_safe",
            "Document", "Form"]
 
@@ -210,6 +210,32 @@ def report_solve(d: Document) -> str:
     return "\n".join(lines + named)
 
 
+def report_follow(d: Document) -> str:
+    """``algkin follow``'s text: how the path ended, then each proven step's end and its points.
+
+    >>> print(report_follow({"scene": "s", "mode": "left", "input": "t", "from": "0", "to": "90", "digits": 5,
+    ...     "ended": "meets", "steps": 1, "samples": [{"at": "0", "points": {"B": ["1", "0"]}, "radius": 1e-30}],
+    ...     "meeting": {"from": "45", "to": "45.001", "determinant": "[+/- 1e-30]", "holds_zero": True,
+    ...                 "proved": True}}))
+    s, mode left, t from 0 to 90: meets another mode for t in [45, 45.001] after 1 proven step
+      det J there: [+/- 1e-30] (holds 0; the meeting point proved)
+      t = 0: B = (1, 0)
+    """
+    head = f"{d['scene']}, mode {d['mode']}, {d['input']} from {d['from']} to {d['to']}: "
+    steps = f"{d['steps']} proven step{'s' * (d['steps'] != 1)}"
+    meeting = d["meeting"]
+    if meeting is None:
+        lines = [head + f"reached {d['to']} in {steps}"]
+    else:
+        proved = "the meeting point proved" if meeting["proved"] else "where the proof could go no further"
+        zero = "holds 0" if meeting["holds_zero"] else "does not hold 0"
+        lines = [head + f"meets another mode for {d['input']} in [{meeting['from']}, {meeting['to']}] after {steps}",
+                 f"  det J there: {meeting['determinant']} ({zero}; {proved})"]
+    lines += [f"  {d['input']} = {s['at']}: " + ", ".join(f"{p} = ({x}, {y})" for p, (x, y) in s["points"].items())
+              for s in d["samples"]]
+    return "\n".join(lines)
+
+
 def report_show(d: Document) -> str:
     """``algkin show``'s text: the points, unknowns, parameters, inputs and equations of the scene."""
     lines = [f"scene {d['scene']}: {d['description']}",
@@ -217,6 +243,7 @@ def report_show(d: Document) -> str:
              "unknowns: " + ", ".join(d["system"]["unknowns"]),
              "parameters: " + (", ".join(d["system"]["parameters"]) or "none (all exact)"),
              "inputs: " + ", ".join(f"{n} as ({v['cos']}, {v['sin']})" for n, v in d["inputs"].items()),
+             *[f"geared: {n} = {g['ratio']}*{g['driven_by']}" for n, g in d.get("geared", {}).items()],
              "equations (= 0):"]
     lines += [f"  {eq}" for eq in d["system"]["equations"]]
     lines += [f"never assembles: {point}: {why}" for point, why in d.get("never_assembles", {}).items()]
@@ -385,3 +412,71 @@ def _brief(form: str) -> str:
 def _hint(forms: Sequence[str], where: str = "full forms: --json or --out FILE") -> list[str]:
     """The line that says where the whole forms are, when ``_brief`` shortened any of ``forms``."""
     return [where] if any(len(f) > _WHOLE for f in forms) else []
+
+
+def report_group_derive(d: Document) -> str:
+    """``algkin derive``'s text on a scene with points solved together: per group, its eliminant,
+    the other unknowns rational in its variable, and each mode's closed form at the reference input."""
+    reference = d["reference"]
+    lines = [f"scene {d['scene']}  (points solved together: {len(d['groups'])} group(s))"]
+    for group in d["groups"]:
+        lines.append(f"group {', '.join(group['points'])} ({', '.join(group['constraints'])}):")
+        lines.append(f"  eliminant in {group['variable']}, degree {group['degree']} "
+                     f"(inputs as parameters; {_dropped(len(group['dropped_factors']))}):")
+        lines.append(f"      {_brief(group['eliminant'])} = 0")
+        lines += [f"  {u} = {_brief(v)}" for u, v in group["lifts"].items()]
+        where = f" at {reference['input']} = {reference['shown']}" if reference else ""
+        lines.append(f"  modes{where}: {group['real_modes']} real of {group['complex_count']} complex")
+        for mode in group["modes"]:
+            lines.append(f"    [{mode['label']}] {group['variable']} = {_brief(mode['values'][group['variable']])}"
+                         f" = {mode['value']}")
+    lines.append(_group_verification_line(d["verification"]))
+    forms = [f for g in d["groups"] for f in (g["eliminant"], *g["lifts"].values())]
+    return "\n".join(lines + [_timings_line(d["timings"])] + _hint(forms))
+
+
+def _group_verification_line(v: Document) -> str:
+    """The check of a group scene (``algkin.analyses.groups.verify``) in one line, then its failures."""
+    if v["status"] == "skipped":
+        return "verification skipped (--samples 0)"
+    verdict = "passed" if v["passed"] else "FAILED"
+    line = (f"verification {verdict}: {v['configurations']} proved numeric solutions on {v['samples']} samples, "
+            f"each matched to one mode, none missing, none extra; max abs error {v['max_abs_error']:.2e}")
+    return "\n".join([line] + [f"  {f}" for f in v["failures"][:10]])
+
+
+def report_group_verify(d: Document) -> str:
+    """``algkin verify``'s text on a scene with points solved together."""
+    return f"scene {d['scene']}\n" + _group_verification_line(d["verification"])
+
+
+def report_group_curve(d: Document) -> str:
+    """``algkin curve``'s text on a scene with points solved together."""
+    lines = [f"curve of {d['point']} in {d['scene']}  (points solved together)",
+             f"  {_brief(d['curve'])} = 0",
+             f"degree {d['degree']}, circularity {d['circularity']}, {len(d['factors'])} factor(s) kept",
+             _dropped(len(d["dropped_factors"])) + (":" if d["dropped_factors"] else "")]
+    lines += [f"  {_brief(f)}" for f in d["dropped_factors"]]
+    v = d["verification"]
+    if v["status"] == "skipped":
+        lines.append("verification skipped (--samples 0)")
+    else:
+        lines.append(f"verification {'passed' if v['passed'] else 'FAILED'}: the point at {v['compared']} real "
+                     f"modes of sampled inputs on the curve, max abs value {v['max_abs_error']:.2e}")
+        lines += [f"  {f}" for f in v["failures"][:10]]
+    lines.append(_timings_line(d["timings"]))
+    return "\n".join(lines + _hint([d["curve"], *d["dropped_factors"]]))
+
+
+def report_group_toggles(d: Document) -> str:
+    """``algkin toggles``'s text on a scene with points solved together: where its modes meet."""
+    lo, hi = d["range"]
+    unit = " deg" if d["unit"] == "deg" else ""
+    lines = [f"toggles of {d['scene']} over {d['input']} in [{lo:g}, {hi:g}]{unit} (modes meet):"]
+    for g in d["toggles"]:
+        where = g.get("enclosure_deg", g.get("enclosure_length"))
+        said = "certified" if g["certified"] else f"NOT certified: {g['why']}"
+        lines.append(f"  {g['kind']} ({g['point']}) at {where}{unit} ({said})")
+    if not d["toggles"]:
+        lines.append("  none: no two modes meet over the range")
+    return "\n".join(lines)

@@ -1,0 +1,54 @@
+"""derive, curve, verify and toggles on scenes with points solved together, from the command line."""
+
+import json
+
+import pytest
+
+from algkin.ui.cli import main
+
+
+@pytest.mark.parametrize("argv, says", [
+    (["derive", "stephenson-iii-triad"], "modes at theta = 0°: 2 real of 6 complex"),
+    (["curve", "stephenson-iii-triad", "--point", "P"], "degree 6, circularity 3"),
+    (["verify", "stephenson-iii-triad"], "verification passed"),
+    (["toggles", "stephenson-iii-triad"], "(certified)"),
+    (["toggles", "3rpr"], "modes meet (P1, P2) at [7.92278018529"),
+], ids=lambda a: " ".join(a) if isinstance(a, list) else "")
+def test_the_triad_through_each_command(capsys, argv, says):
+    assert main([*argv, "--samples", "6"] if argv[0] != "toggles" else argv) == 0
+    assert says in capsys.readouterr().out
+
+
+def test_derive_json_and_out(capsys, tmp_path):
+    out = tmp_path / "triad.json"
+    assert main(["derive", "stephenson-iii-triad", "--samples", "4", "--json", "--out", str(out)]) == 0
+    document = json.loads(capsys.readouterr().out)
+    assert json.loads(out.read_text()) == document
+    assert document["groups"][0]["degree"] == 6 and document["verification"]["passed"]
+    assert [b["label"] for b in document["branches"]] == ["-++", "+++"]
+
+
+def test_curve_json(capsys):
+    assert main(["curve", "stephenson-iii-triad", "--point", "P", "--samples", "4", "--json"]) == 0
+    document = json.loads(capsys.readouterr().out)
+    assert (document["degree"], document["circularity"], document["dropped_factors"]) == (6, 3, ["P_x + 2*P_y"])
+
+
+@pytest.mark.parametrize("argv, flag", [
+    (["derive", "3rpr", "--param", "r2"], "--param"),
+    (["derive", "3rpr", "--rates"], "--rates"),
+    (["derive", "3rpr", "--latex"], "--latex"),
+    (["derive", "3rpr", "--outputs", "P1"], "--outputs"),
+    (["curve", "3rpr", "--point", "P3", "--method", "groebner"], "--method"),
+    (["verify", "3rpr", "--backend", "sympy"], "--backend"),
+], ids=lambda a: " ".join(a) if isinstance(a, list) else "")
+def test_what_only_the_dyads_take_is_refused_in_one_line(capsys, argv, flag):
+    assert main(argv) == 2
+    captured = capsys.readouterr()
+    assert captured.out == "" and captured.err.count("\n") == 1
+    assert flag in captured.err and "points solved together" in captured.err
+
+
+def test_a_point_of_no_scene_is_refused(capsys):
+    assert main(["curve", "stephenson-iii-triad", "--point", "Z"]) == 2
+    assert "not a point of stephenson-iii-triad" in capsys.readouterr().err
