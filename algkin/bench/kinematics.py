@@ -87,28 +87,28 @@ class Kinematics:
 
 # -- the problems ---------------------------------------------------------------------------
 
-def _catalog(scene: str, sample: Fraction, *, real: bool) -> Kinematics:
-    """The catalog 3-RPR ``scene``'s group, its leg ``r1`` symbolic or at ``sample``."""
+def _catalog(scene: str, at: tuple[str, str], sample: dict[str, flint.fmpq], *, real: bool) -> Kinematics:
+    """The catalog ``scene``'s group (its first), the input's variables symbolic or at
+    ``sample`` (the input ``at``: its name and value, as ``algkin solve --at`` takes it)."""
     from ..analyses.solve import solve
     from ..scene.groups import compile_groups
     from ..scene.load import as_scene
 
     group = compile_groups(as_scene(scene)).groups[0]
-    names = tuple(group.unknowns) + ("r1",)
-    ctx = flint_context(names)
-    equations = tuple(to_flint(e, ctx) for e in group.equations)
-    value = flint.fmpq(sample.numerator, sample.denominator)
-    kind = "every real solution at" if real else "the eliminant with r1 symbolic, its modes at"
-    description = f"catalog {scene}: {kind} r1 = {sample}"
+    symbolic = tuple(sorted({str(v) for e in group.equations for v in e.free_symbols} - set(group.unknowns)))
+    equations = tuple(to_flint(e, flint_context(tuple(group.unknowns) + symbolic)) for e in group.equations)
+    name, value = at
     if not real:
-        return Kinematics(f"{scene}-symbolic", description, equations, tuple(group.unknowns), ("r1",), {"r1": value})
-    special = _specialised(equations, {"r1": value}, group.unknowns)
-    return Kinematics(f"{scene}-real", description, special, tuple(group.unknowns), (), {},
-                      lambda: solve(scene, at={"r1": str(sample)}))
+        return Kinematics(f"{scene}-symbolic", f"catalog {scene}: the eliminant with {', '.join(symbolic)} symbolic, "
+                          f"its modes at {name} = {value}", equations, tuple(group.unknowns), symbolic, sample)
+    return Kinematics(f"{scene}-real", f"catalog {scene}: every real solution at {name} = {value}",
+                      _specialised(equations, sample, group.unknowns), tuple(group.unknowns), (), {},
+                      lambda: solve(scene, at={name: value}))
 
 
 TRIAD_UNKNOWNS = ("B_x", "B_y", "C_x", "C_y")
 TRIAD_CRANK = {"c": flint.fmpq(-24, 25), "s": flint.fmpq(-7, 25)}
+TRIAD_AT_ZERO = {"c_theta": flint.fmpq(1), "s_theta": flint.fmpq(0)}  # the catalog triad at theta = 0: two real
 
 
 def _triad_equations() -> tuple[flint.fmpq_mpoly, ...]:
@@ -143,12 +143,15 @@ def _specialised(equations: Sequence[flint.fmpq_mpoly], values: dict[str, flint.
 
 # name -> what makes it
 KINEMATICS: dict[str, Callable[[], Kinematics]] = {
-    "3rpr-symbolic": lambda: _catalog("3rpr", Fraction(6), real=False),
-    "3rpr-real": lambda: _catalog("3rpr", Fraction(6), real=True),
-    "3rpr-six-modes-symbolic": lambda: _catalog("3rpr-six-modes", Fraction("14.98"), real=False),
-    "3rpr-six-modes-real": lambda: _catalog("3rpr-six-modes", Fraction("14.98"), real=True),
+    "3rpr-symbolic": lambda: _catalog("3rpr", ("r1", "6"), {"r1": flint.fmpq(6)}, real=False),
+    "3rpr-real": lambda: _catalog("3rpr", ("r1", "6"), {"r1": flint.fmpq(6)}, real=True),
+    "3rpr-six-modes-symbolic": lambda: _catalog("3rpr-six-modes", ("r1", "14.98"), {"r1": flint.fmpq(749, 50)},
+                                                real=False),
+    "3rpr-six-modes-real": lambda: _catalog("3rpr-six-modes", ("r1", "14.98"), {"r1": flint.fmpq(749, 50)}, real=True),
     "stephenson-triad-symbolic": lambda: _triad(real=False),
     "stephenson-triad-real": lambda: _triad(real=True),
+    "stephenson-iii-triad-symbolic": lambda: _catalog("stephenson-iii-triad", ("theta", "0"), TRIAD_AT_ZERO, real=False),
+    "stephenson-iii-triad-real": lambda: _catalog("stephenson-iii-triad", ("theta", "0"), TRIAD_AT_ZERO, real=True),
 }
 
 

@@ -10,7 +10,8 @@ from algkin.bench.kinematics import _msolve_solutions, _real, matched
 
 
 def test_the_forward_kinematics_problems_are_in_the_suite():
-    assert {"3rpr-real", "3rpr-symbolic", "3rpr-six-modes-real", "stephenson-triad-symbolic"} <= set(problem_names())
+    assert {"3rpr-real", "3rpr-symbolic", "3rpr-six-modes-real", "stephenson-triad-symbolic",
+            "stephenson-iii-triad-real"} <= set(problem_names())
 
 
 def test_real_solutions_are_matched_whatever_their_order():
