@@ -19,7 +19,7 @@ kind (``singular_count``, all real ones, is what the atlas filters on) and the p
 >>> analyses_named(["grashof", "wobble"])
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: analyses='wobble': unknown; valid: curve, grashof, toggles, limits, transmission, singular
+algkin.errors.UsageError: analyses='wobble': unknown (valid: curve, grashof, toggles, limits, transmission, singular)
 """
 
 from __future__ import annotations

@@ -72,7 +72,7 @@ def test_every_other_command_refuses_them_saying_which_command_works(capsys, pla
     assert main(argv) == 2
     captured = capsys.readouterr()
     assert captured.out == "" and captured.err.count("\n") == 1
-    assert "has points solved together (P1, P2): solve, follow, derive, curve, verify and toggles take it" in captured.err
+    assert "has points solved together (P1, P2): solve, follow, derive, curve, verify, toggles, plot and export take it" in captured.err
     assert not (tmp_path / "x.png").exists() and not (tmp_path / "sweep").exists()
 
 
