@@ -136,3 +136,14 @@ def test_hypothesis_knows_the_scene_type_through_the_entry_point():
 def test_unknown_kind_is_refused(kind):
     with pytest.raises(ValueError, match="valid: crank-rocker"):
         strategies.four_bars(kind)
+
+
+@settings(max_examples=10, deadline=None)
+@given(strategies.group_scenes())
+def test_group_scenes_are_one_group_of_two_points_solved_together(scene):
+    from algkin.scene.groups import compile_groups
+
+    (group,) = compile_groups(scene).groups
+    assert scene.name in ("3rpr-drawn", "triad-drawn") and len(group.unknowns) == len(group.equations) == 4
+    name, value = strategies.design_input(scene)
+    assert scene.inputs[name].lo < value < scene.inputs[name].hi
