@@ -509,7 +509,7 @@ P3 = "P3"
     return load_scene_text(text, "3rpr-drawn.toml")
 
 
-_QUARTERS = {90: (0, 1), 180: (-1, 0), 270: (0, -1)}
+_QUARTERS: dict[int, Point] = {q: (Fraction(c), Fraction(s)) for q, (c, s) in {90: (0, 1), 180: (-1, 0), 270: (0, -1)}.items()}
 
 
 @st.composite
