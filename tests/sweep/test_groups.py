@@ -56,3 +56,4 @@ def test_sweep_command_on_a_group_scene(tmp_path, capsys):
     assert main([*argv[:-1], str(tmp_path / "other"), "--analyses", "curve"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "--analyses" in err and "toggles, modes" in err
+    assert not (tmp_path / "other").exists()  # refused before anything is written

@@ -9,8 +9,8 @@ The acceleration is the total derivative ``d/dt = d/dt|_X + sum_j X'_j d/dX_j`` 
 ``(D (D N_k,t + sum_j N_j N_k,j) - N_k (D D_t + sum_j N_j D_j)) / D**3``. An angle's variables are
 its ``c``, ``s``, and ``d/dt = -s d/dc + c d/ds`` (per radian); a length's is itself.
 
-A point on the circle of radius 2 about the origin, held on the line ``y = 1/2 x``... as
-``x = r`` moves: ``y' = 0``, and for ``x**2 + y**2 - 4 = 0`` at fixed ``x = r``, ``y' = -x/y``:
+A point on the circle of radius 2 about the origin whose ``x`` is the input ``r``: ``x' = 1`` and
+``y' = -x/y`` (``D = 2y``, ``N_y = -2x``); at ``(0, 2)``, ``y'' = -(y**2 + x**2)/y**3 = -1/2``:
 
 >>> import flint
 >>> ctx = flint.fmpq_mpoly_ctx.get(("x", "y", "r"), "lex")

@@ -65,7 +65,6 @@ def test_solve_on_points_solved_together_gives_the_complex_count(capsys, platfor
 @pytest.mark.parametrize("command", [
     ["show"], ["extremum", "--of", "P1.x"],
     ["singular", "--point", "P3"], ["accuracy"], ["export", "--to", "c"], ["plot", "--out", "{tmp}/x.png"],
-    ["sweep", "--grid", "r2=8:9:2", "--out", "{tmp}/sweep"],
 ], ids=lambda c: c[0])
 def test_every_other_command_refuses_them_saying_which_command_works(capsys, platform, tmp_path, command):
     argv = [command[0], platform, *(a.format(tmp=tmp_path) for a in command[1:])]
