@@ -30,6 +30,7 @@ import attrs
 import flint
 import numpy as np
 
+from ...eliminate.group import GroupSolution
 from ...errors import ComputationError
 from ...verify.groups import BITS, STARTS, real_solutions
 from ...verify.tally import Tally
@@ -87,6 +88,8 @@ def check_group_rates(prepared: GroupScene, forms: Sequence[ImplicitRates], *, s
     drawn = assembling(prepared, samples, random.Random(seed))
     inputs = {n: v for n, v in prepared.compiled.inputs.items() if set(v) & set(prepared.variables)}
     rng = np.random.default_rng(seed)
+    by_eliminant = [implicit_rates([s.eliminant.to_flint()], (s.variable,), prepared.variables)
+                    for s in prepared.solutions]  # the second method: the eliminant alone
     for sample in drawn:
         tally.samples += 1
         moved = [shifted(prepared, sample, Fraction(k, 2**STEP_BITS)) for k in (-1, 0, 1)]
@@ -104,10 +107,11 @@ def check_group_rates(prepared: GroupScene, forms: Sequence[ImplicitRates], *, s
             for mode in modes:
                 values = dict(mode.values, **points[1][0].balls(BITS))
                 with flint.ctx.workprec(BITS):
-                    closed = forms[index].at(values)
+                    closed = forms[index].at(values, points[1][0].exact())
                     _compare(tally, prepared, group.unknowns, mode.values, closed, roots, at=points[1][1],
                              where=f"group {', '.join(group.points)} mode {mode.index + 1} at {sample.shown}")
-                    eliminant[0] += _compare_eliminant(tally, prepared, index, values, closed,
+                    eliminant[0] += _compare_eliminant(tally, prepared.solutions[index], by_eliminant[index],
+                                                       values, closed, points[1][0].exact(),
                                                        where=f"group {', '.join(group.points)} mode "
                                                              f"{mode.index + 1} at {sample.shown}")
     tally.require_compared("mode's rates")
@@ -198,12 +202,13 @@ def _per_radian(x_u: flint.arb, x_uu: flint.arb, *, u: flint.arb) -> tuple[flint
     return x_t, (x_uu - x_t * t_uu) / (t_u * t_u)
 
 
-def _compare_eliminant(tally: Tally, prepared: GroupScene, index: int, values: Mapping[str, flint.arb],
-                       closed: Mapping[str, tuple[flint.arb, flint.arb]], *, where: str) -> int:
-    """The separating variable's rates from the eliminant against the forms' (1 where compared)."""
-    solution = prepared.solutions[index]
+def _compare_eliminant(tally: Tally, solution: GroupSolution, eliminant: ImplicitRates,
+                       values: Mapping[str, flint.arb], closed: Mapping[str, tuple[flint.arb, flint.arb]],
+                       exact: Mapping[str, flint.fmpq], *, where: str) -> int:
+    """The separating variable's rates from the eliminant (``eliminant``: its implicit rates)
+    against the forms' (1 where compared)."""
     variable = solution.variable
-    by_eliminant = implicit_rates([solution.eliminant.to_flint()], (variable,), prepared.variables).at(values)
+    by_eliminant = eliminant.at(values, exact)
     weights = dict(solution.form) if solution.form else {variable: 1}
     scale = max(abs(float(values[variable].mid())), 1.0)
     for which, what in enumerate(("velocity", "acceleration")):

@@ -47,12 +47,18 @@ class ImplicitRates:
     velocity: FrozenDict[str, flint.fmpq_mpoly] = attrs.field(converter=frozen)
     acceleration: FrozenDict[str, flint.fmpq_mpoly] = attrs.field(converter=frozen)
 
-    def at(self, values: Mapping[str, flint.arb]) -> dict[str, tuple[flint.arb, flint.arb]]:
-        """Each unknown's velocity and acceleration in balls at ``values`` (every variable's ball)."""
-        d = evaluate(self.denominator, values)
+    def at(self, values: Mapping[str, flint.arb], exact: Mapping[str, flint.fmpq] | None = None,
+           ) -> dict[str, tuple[flint.arb, flint.arb]]:
+        """Each unknown's velocity and acceleration in balls at ``values`` (a ball for every variable
+        not in ``exact``); the ``exact`` ones (the input's, rational) put in first, exactly: fewer terms."""
+        def at(poly: flint.fmpq_mpoly) -> flint.arb:
+            names = {str(n) for n in poly.context().names()}
+            point: dict[str | int, int | flint.fmpz | flint.fmpq] = {n: v for n, v in (exact or {}).items() if n in names}
+            return evaluate(poly.subs(point) if point else poly, values)
+
+        d = at(self.denominator)
         cube = d * d * d
-        return {u: (evaluate(self.velocity[u], values) / d, evaluate(self.acceleration[u], values) / cube)
-                for u in self.unknowns}
+        return {u: (at(self.velocity[u]) / d, at(self.acceleration[u]) / cube) for u in self.unknowns}
 
 
 def implicit_rates(equations: Sequence[flint.fmpq_mpoly], unknowns: Sequence[str],
@@ -123,11 +129,15 @@ def determinant(rows: Sequence[Sequence[flint.fmpq_mpoly]], zero: flint.fmpq_mpo
 def evaluate(poly: flint.fmpq_mpoly, values: Mapping[str, flint.arb]) -> flint.arb:
     """``poly`` in balls at ``values`` (a ball for every variable it holds), term by term."""
     names = [str(n) for n in poly.context().names()]
+    powers: dict[tuple[int, int], flint.arb] = {}  # each variable's powers once, not once per term
     total = flint.arb(0)
     for exponents, coefficient in zip(poly.monoms(), poly.coeffs()):
         term = flint.arb(coefficient)
-        for name, e in zip(names, exponents):
+        for k, e in enumerate(exponents):
             if e:
-                term *= values[name] ** int(e)
+                power = powers.get((k, e))
+                if power is None:
+                    power = powers[(k, e)] = values[names[k]] ** int(e)
+                term *= power
         total += term
     return total

@@ -161,7 +161,7 @@ def _forms(prepared: GroupScene, index: int, found: ImplicitRates) -> GroupRateF
 
 def _mode_rates(found: ImplicitRates, label: str, values: Mapping[str, flint.arb], sample: Sample) -> ModeRates:
     with flint.ctx.workprec(BITS):
-        rates = found.at(dict(values, **sample.balls(BITS)))
+        rates = found.at(dict(values, **sample.balls(BITS)), sample.exact())
     return ModeRates(label, {u: _decimal(v) for u, (v, _) in rates.items()},
                      {u: _decimal(a) for u, (_, a) in rates.items()})
 
