@@ -55,8 +55,8 @@ from ..scene.implicit.base import FloatPoint
 Point = tuple[Fraction, Fraction]
 
 __all__ = ["GRASHOF_KINDS", "lengths", "four_bar_lengths", "four_bars", "near_toggle_four_bars",
-           "slider_cranks", "moving_sliders", "inversors", "length_driven", "scenes", "with_symbolic", "MIN_ASSEMBLED_DEGREES",
-           "three_rprs", "triads", "group_scenes", "design_input"]
+           "slider_cranks", "moving_sliders", "inversors", "length_driven", "scenes", "with_symbolic",
+           "MIN_ASSEMBLED_DEGREES", "three_rprs", "triads", "group_scenes", "design_input"]
 
 # Which link is the shortest decides a Grashof four-bar's class.
 _SHORTEST = {"crank-rocker": "crank", "double-crank": "ground", "double-rocker": "coupler",
@@ -509,7 +509,8 @@ P3 = "P3"
     return load_scene_text(text, "3rpr-drawn.toml")
 
 
-_QUARTERS: dict[int, Point] = {q: (Fraction(c), Fraction(s)) for q, (c, s) in {90: (0, 1), 180: (-1, 0), 270: (0, -1)}.items()}
+_QUARTERS: dict[int, Point] = {90: (Fraction(0), Fraction(1)), 180: (Fraction(-1), Fraction(0)),
+                               270: (Fraction(0), Fraction(-1))}  # a quarter turn's cos and sin
 
 
 @st.composite

@@ -53,7 +53,8 @@ class ImplicitRates:
         not in ``exact``); the ``exact`` ones (the input's, rational) put in first, exactly: fewer terms."""
         def at(poly: flint.fmpq_mpoly) -> flint.arb:
             names = {str(n) for n in poly.context().names()}
-            point: dict[str | int, int | flint.fmpz | flint.fmpq] = {n: v for n, v in (exact or {}).items() if n in names}
+            point: dict[str | int, int | flint.fmpz | flint.fmpq] = \
+                {n: v for n, v in (exact or {}).items() if n in names}
             return evaluate(poly.subs(point) if point else poly, values)
 
         d = at(self.denominator)
