@@ -121,6 +121,6 @@ def test_a_dyad_beside_points_solved_together_is_not_supported_yet():
 
 
 def test_compile_scene_refuses_them_naming_the_command_that_takes_them():
-    said = "has points solved together \\(P1, P2\\): solve, follow, derive, curve, verify, toggles, plot and export take it"
+    said = "has points solved together \\(P1, P2\\): solve, follow, derive, curve, verify, toggles, plot, export and sweep take it"
     with pytest.raises(UsageError, match=said):
         compile_scene(load_scene_text(SPEC_3RPR, "3rpr.toml"))
