@@ -83,6 +83,11 @@ class Derivation:
         }
 
 
+IRREDUCIBLE_FACTOR = ("irreducible over QQ: the one factor, of the eliminant's factorization over QQ, that the "
+                      "witnesses lie on")
+"""Why a curve chosen among the eliminant's factors is irreducible."""
+
+
 @attrs.frozen
 class CurveResult:
     """The implicit curve of a point: polynomial, figures, dropped factors, verification (an
@@ -108,6 +113,14 @@ class CurveResult:
             document["other_modes_dropped"] = list(self.other_modes)
         return document
 
+    @property
+    def irreducibility(self) -> str | None:
+        """Why the curve is irreducible over QQ (None when it is not): the proof that made
+        choosing factors at the witnesses needless, else the full factorization's."""
+        if self.elimination.proof:
+            return str(self.elimination.proof)
+        return IRREDUCIBLE_FACTOR if self.irreducible else None
+
     def _json(self) -> Json:
         return {
             "scene": self.compiled.scene.name,
@@ -120,8 +133,7 @@ class CurveResult:
             "degree": self.degree,
             "circularity": self.circularity,
             "irreducible": self.irreducible,
-            # why the curve needed no choice of factors at the witnesses, when it needed none
-            "irreducibility": str(self.elimination.proof) if self.elimination.proof else None,
+            "irreducibility": self.irreducibility,
             "terms": self.elimination.terms,
             "coefficient_bits": self.elimination.bits,
             "dropped_factors": [str(f) for f in self.elimination.dropped],

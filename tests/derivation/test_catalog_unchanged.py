@@ -4,7 +4,8 @@ The reference, catalog_before.json.gz, was written by this module's ``main`` at 
 the pipeline was split and its caches made explicit: a refactor changes how answers are reached, never
 the answers. Timings are left out (they are the only part that differs between runs). A change meant to
 alter an answer rewrites the reference (``python -m tests.derivation.test_catalog_unchanged``) in the
-same commit, where the diff shows what changed.
+same commit, where the diff shows what changed (since: Hart's named crossed mode, each irreducible
+curve's reason, and the scenes added to the catalog).
 """
 
 from __future__ import annotations

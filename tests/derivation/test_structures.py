@@ -54,3 +54,12 @@ def test_a_short_stretch_of_motion_is_sampled_where_it_assembles(monkeypatch):
     assert drawn and all(min(t, 2 * math.pi - t) <= end + 1e-9 for t in drawn)
     # the coupler curve of a four-bar: the tricircular sextic, its extraneous factor dropped
     assert (found.degree, found.circularity) == (6, 3)
+
+
+def test_an_irreducible_curve_says_why_even_when_its_factor_was_chosen_at_the_witnesses():
+    # Peaucellier's P: the line 2 r x = L^2 - s^2, kept among the eliminant's factors at the
+    # witnesses (no cheaper proof): a degree-1 factor is irreducible, and the JSON says why
+    # instead of irreducibility: null beside irreducible: true (issue 35 item 7)
+    document = curve("peaucellier-lipkin", "P", samples=0).to_json()
+    assert document["degree"] == 1 and document["irreducible"] is True
+    assert document["irreducibility"].startswith("irreducible over QQ: the one factor")
