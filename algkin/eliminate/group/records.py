@@ -102,8 +102,8 @@ class Mode:
     ball, certified; ``index``: its place among the real roots of the eliminant, in increasing
     order; ``root``: that root exactly (its irreducible factor and rank), its ball the variable's.
     The exact root is the mode's identity: the balls, like a ``RealRoot``'s, are not compared
-    (nor hashed: a ball is no exact number)."""
+    (nor hashed: a ball is no exact number); None where the parameters were balls (no exact root)."""
 
     index: int
-    root: RealRoot
+    root: RealRoot | None
     values: FrozenDict[str, flint.arb] = attrs.field(converter=frozen, eq=False)
