@@ -205,8 +205,9 @@ def test_a_thousand_digits_are_certified_too():
         assert 0 < configuration.radius  # an upper bound, the smallest float where the radius underflows
 
 
-def test_groups_solved_in_sequence_are_refused_for_now():
-    """Q hangs on P: its group's equations hold P's coordinates, irrational balls, not exact values."""
+def test_groups_solved_in_sequence_give_every_configuration_of_both():
+    """Q hangs on P: its group's equations hold P's coordinates (irrational balls), solved after
+    P's. By hand: P = (2, +-sqrt(5)); Q on the x axis at 3 from P: Q = (2 +- 2, 0), four in all."""
     scene = load_scene_text('''
 [points]
 A = { fixed = [0, 0] }
@@ -216,11 +217,18 @@ Q = { unknown = true }
 [constraints]
 a = "dist(A, P) = 3"
 b = "dist(B, P) = 3"
-c = "dist(P, Q) = 1"
+c = "dist(P, Q) = 3"
 d = "on(Q, line(A, B))"
 ''', "two.toml")
-    with pytest.raises(SceneError, match="the group of Q is held by points of an earlier group \\(P_x"):
-        solve(scene, at={})
+    found = solve(scene, at={}, digits=40)
+    with mpmath.workdps(60):
+        points = sorted((tuple(map(mpmath.mpf, c.points["P"])), tuple(map(mpmath.mpf, c.points["Q"])))
+                        for c in found.configurations)
+        root5 = mpmath.sqrt(5)
+        expected = sorted(((2, y), (x, 0)) for y in (-root5, root5) for x in (0, 4))
+        assert len(points) == 4 and found.complex_count == 4
+        for (p, q), (ep, eq) in zip(points, expected):
+            assert _close(p, ep, mpmath.mpf(10) ** -38) and _close(q, eq, mpmath.mpf(10) ** -38)
 
 
 # Modes named by a configuration (``mode = { at, near }``): solve keeps the configurations on them.
