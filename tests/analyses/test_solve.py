@@ -264,3 +264,32 @@ def test_a_3rpr_mode_named_far_from_every_configuration_is_refused_naming_the_ne
     with pytest.raises(SceneError, match=r"points\.P1\.mode\.near: \[5, 3\] is not close to a configuration of P1 "
                                          r"at r1 = 6: the nearest is \[3\.85685, 4\.59616\]"):
         solve(_3rpr_named("[5, 3]"), at={"r1": 7})
+
+
+def test_a_slider_and_a_meet_on_points_solved_together_are_solved_after_them():
+    """P = (2, +-sqrt(5)) (circles about A and B); S on the horizontal line through P, 5 from A:
+    S = (+-sqrt(20), P_y), `ahead` where S_x > 0 (along (1, 0) past A's foot); M where the lines
+    A-P and B-S meet, by Cramer's rule. Four configurations, each by hand."""
+    scene = load_scene_text('''
+[points]
+A = { fixed = [0, 0] }
+B = { fixed = [4, 0] }
+P = { unknown = true }
+S = { slider = { through = "P", direction = [1, 0] }, distance = { to = "A", length = 5 }, branch = "ahead" }
+M = { meet = [["A", "P"], ["B", "S"]] }
+[constraints]
+a = "dist(A, P) = 3"
+b = "dist(B, P) = 3"
+''', "slider.toml")
+    found = solve(scene, at={}, digits=40)
+    assert len(found.configurations) == 4
+    with mpmath.workdps(60):
+        for configuration in found.configurations:
+            (px, py), (sx, sy), (mx, my) = ([mpmath.mpf(v) for v in configuration.points[p]] for p in "PSM")
+            assert abs(px - 2) < 1e-38 and abs(abs(py) - mpmath.sqrt(5)) < 1e-38 and abs(sy - py) < 1e-38
+            assert abs(abs(sx) - mpmath.sqrt(20)) < 1e-38
+            assert configuration.mode.split(" ")[1] == ("S:ahead" if sx > 0 else "S:behind")
+            # M = k (P - A) = B + l (S - B): two linear equations in k and l
+            det = px * -(sy - 0) - py * -(sx - 4)
+            k = (4 * -(sy - 0) - 0 * -(sx - 4)) / det
+            assert abs(mx - k * px) < 1e-35 and abs(my - k * py) < 1e-35

@@ -151,8 +151,10 @@ def derive_groups(scene: Scene | str, *, samples: int = 40, seed: int = 0) -> Gr
     prepared = prepare_groups(scene, command="derive")
     timings["eliminate"] = time.perf_counter() - start
     reference = prepared.reference() if prepared.input is not None else None
-    found = prepared.modes(reference) if reference is not None else [() for _ in prepared.solutions]
-    configurations, parents = None, {}
+    found: list[tuple[Mode, ...]] = prepared.modes(reference) if reference is not None else \
+        [() for _ in prepared.solutions]
+    configurations: tuple[tuple[int, ...], ...] | None = None
+    parents: dict[int, dict[str, flint.arb]] = {}
     if reference is not None and prepared.later():  # a later group's modes hang on the earlier ones'
         found, configurations, parents = _in_turn(prepared, reference, found)
     labels = _labels(prepared, reference, found)
@@ -177,12 +179,12 @@ def _in_turn(prepared: GroupScene, reference: Sample, found: list[tuple[Mode, ..
     each later mode's earlier unknowns' balls (by the mode's id)."""
     configurations = prepared.configurations(reference)
     later = prepared.later()
-    found = [list(group) if k not in later else list({id(c[k]): c[k] for c in configurations}.values())
+    modes = [group if k not in later else tuple({id(c[k]): c[k] for c in configurations}.values())
              for k, group in enumerate(found)]
-    positions = tuple(tuple(next(i for i, m in enumerate(found[k]) if (m is mode if k in later else m == mode))
+    positions = tuple(tuple(next(i for i, m in enumerate(modes[k]) if (m is mode if k in later else m == mode))
                             for k, mode in enumerate(c)) for c in configurations)
     parents = {id(c[k]): {u: v for m in c[:k] for u, v in m.values.items()} for c in configurations for k in later}
-    return [tuple(g) for g in found], positions, parents
+    return modes, positions, parents
 
 
 def _labels(prepared: GroupScene, reference: Sample | None, found: Sequence[Sequence[Mode]]) -> list[list[str]]:
