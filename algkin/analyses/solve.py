@@ -43,7 +43,7 @@ from ..evaluate import ARB, evaluate
 from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled, Input, Scene, compile_scene
 from ..scene.groups import Groups, compile_groups
-from ..scene.constructions import Unknown
+from ..scene.constructions import Dyad, Slider, Unknown
 from ..scene.load import as_scene
 from ..system.convert import flint_context, to_flint
 from ..system import input_values, symbol
@@ -297,7 +297,8 @@ def _solved_together(scene: Scene, at: Mapping[str, Any], *, mode: str | None, d
         raise UsageError("mode", mode, f"not a mode of {scene.name} at {_said(values)} (modes: {', '.join(labels) or 'none'})")
     count = math.prod(s.complex_count for s in solutions)
     found = [c for label, c in labelled if mode in (None, label)]
-    named = [p for p, c in scene.points.items() if isinstance(c, Unknown) and c.mode is not None]
+    # an unknown point's mode, or a dyad's or slider's (a group of its own beside them)
+    named = [p for p, c in scene.points.items() if isinstance(c, (Unknown, Dyad, Slider)) and c.mode is not None]
     kept = [c for c in found if all(_group_label(compiled, p, c.mode) == _named_group_label(compiled, solutions, p)
                                     for p in named)]
     return Solution(scene.name, values, digits, tuple(kept), count, named_modes=tuple(named),
@@ -316,7 +317,7 @@ def _named_group_label(compiled: Groups, solutions: Sequence[GroupSolution], poi
     the next configuration's ``point``), certified in balls; a SceneError naming the nearest otherwise."""
     scene = compiled.scene
     construction = scene.points[point]
-    assert isinstance(construction, Unknown) and construction.mode is not None
+    assert isinstance(construction, (Unknown, Dyad, Slider)) and construction.mode is not None
     element = f"points.{point}.mode"
     at = dict(construction.mode.at)
     try:

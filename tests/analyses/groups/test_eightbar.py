@@ -4,19 +4,21 @@ the triad's, then the dyad's at each of its modes. Checked against the whole loo
 by hand and solved numerically (mpmath, many starts), the dyad's closed form, and P's curve
 derived by hand (the four-bar D-B-G-H's coupler curve)."""
 
-import random
+import pathlib
 
 import mpmath
 import numpy as np
 import pytest
 import sympy
 
+import algkin
 from algkin.analyses.follow import follow
 from algkin.analyses.groups.curve import curve_groups
 from algkin.analyses.groups.derive import derive_groups
 from algkin.analyses.groups.toggles import toggles_groups
 from algkin.analyses.groups.verify import verify_groups
 from algkin.analyses.solve import solve
+from algkin.scene import load_scene_text
 
 SCENE = "eightbar-triad-dyad"
 Q = mpmath.mpf
@@ -180,3 +182,13 @@ def test_follow_keeps_the_triads_mode_and_the_dyads_side_up_to_the_triads_toggle
         for sample in path.samples:
             (bx, by), (gx, gy) = ((Q(v) for v in sample.points[p]) for p in ("B", "G"))
             assert (H[0] - bx) * (gy - by) - (H[1] - by) * (gx - bx) > 0     # G stays left of B -> H
+
+
+def test_a_dyad_beside_a_triad_may_name_its_mode_by_a_configuration():
+    """G named near (4.8, 2) at 0 degrees: the right side of B -> H there (G = (4.77, 2.01) and
+    (5.15, 2.00) on the two triad modes), so solve keeps the G:right configurations elsewhere."""
+    text = (pathlib.Path(algkin.__file__).parent / "catalog" / f"{SCENE}.toml").read_text()
+    text = text.replace('branch = "left"', 'mode = { at = { theta = 0 }, near = [4.8, 2.0] }')
+    found = solve(load_scene_text(text, "named.toml"), at={"theta": 180}, digits=20)
+    assert found.named_modes == ("G",) and found.left_out == 2
+    assert [c.mode.split(" ")[1] for c in found.configurations] == ["G:right", "G:right"]
