@@ -16,7 +16,7 @@ from pathlib import Path
 from .peers import (BUDGET, MIN_REPEATS, MIN_SECONDS, Encoded, Peer, PeerFailure, PeerProblem, PeerResult, decode,
                     eliminant, encode, execute, failure, peer, polynomial_ring)
 
-__all__ = ["PEERS", "run_peers", "find_msolve", "found_peers"]
+__all__ = ["PEERS", "run_peers", "find_msolve", "msolve_startup", "found_peers"]
 
 
 # -- Singular -------------------------------------------------------------------------------
@@ -253,7 +253,7 @@ def msolve_eliminate(problem: PeerProblem, budget: float = BUDGET) -> PeerResult
         return PeerResult(engine, None, None, str(failure))
 
 
-def _msolve_startup(executable: str) -> float:
+def msolve_startup(executable: str) -> float:
     """msolve's wall time on a trivial system: what a run costs besides the work (measured
     right after the problem's runs, at the machine's speed then)."""
     trivial = "x,y\n0\nx-y,\ny-1\n"
@@ -269,7 +269,7 @@ def _msolve_startup(executable: str) -> float:
 def _msolve_result(engine: str, executable: str, walls: Sequence[float], polynomial: str, note: str) -> PeerResult:
     """The process wall time less msolve's start-up: its own clock has 10 ms ticks and counts
     the start-up too (it reads 0.01 s on a trivial system), so it cannot exclude it."""
-    startup = _msolve_startup(executable)
+    startup = msolve_startup(executable)
     seconds = statistics.median(walls) - startup
     clock = f"process wall time less start-up ({startup * 1e3:.1f} ms, a trivial system's)"
     if seconds <= 0:

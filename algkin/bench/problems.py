@@ -95,7 +95,10 @@ PROBLEMS: dict[str, tuple[str, Callable[[], EliminationTask], Callable[[], Calla
 
 
 def problem_names() -> list[str]:
-    return list(PROBLEMS)
+    """The elimination problems, then the forward-kinematics ones (``bench.kinematics``)."""
+    from .kinematics import KINEMATICS
+
+    return list(PROBLEMS) + list(KINEMATICS)
 
 
 def build(name: str) -> Problem:

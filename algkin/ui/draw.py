@@ -24,6 +24,7 @@ import sympy
 from ..errors import UsageError
 from ..runtime.files import atomic_output, check_output
 from ..runtime.validation import real
+from ..scene.load import as_scene
 from .plot import FORMATS as FIGURE_FORMATS, new_figure
 
 if TYPE_CHECKING:
@@ -396,9 +397,16 @@ def plot_mechanism(scene: str | Scene, out: PathT, inputs: Sequence[str] = (), b
     if modes and branch is not None:
         raise UsageError("--branch", branch, "--modes draws every assembly mode; leave out --branch")
     sliders = parse_ranges(ranges)
+    loaded = as_scene(scene)
+    if loaded.unknown_points:  # points solved together: every mode, from solve and follow
+        from .groupdraw import plot_groups
+
+        if params:
+            raise UsageError("--param", params[0], "points solved together take their dimensions' values: use --set")
+        return plot_groups(loaded, out, inputs=inputs, branch=branch, ranges=ranges)
     if sliders and suffix != ".html":
         raise UsageError("--range-of", ranges[0], "only the .html page has sliders; write a .html")
-    motion = Motion(scene, params)
+    motion = Motion(loaded, params)
     chosen = parse_inputs(motion, inputs) or None
     motion.branch_index(branch)  # a bad --branch fails before anything is drawn
     check_assembly(motion.compiled, motion.branches)

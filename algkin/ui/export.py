@@ -84,7 +84,14 @@ def export(scene: SceneLike, outputs: Sequence[str] | None = None, to: str = "c"
     if params and to != "latex":
         raise UsageError("--param", params[0], "the stabilised code takes exact dimensions (--set); "
                                                "a symbolic one goes with --to latex")
-    scene = resolve_modes(with_values(as_scene(scene), set, params))  # a mode named by a configuration: its label
+    scene = with_values(as_scene(scene), set, params)
+    if scene.unknown_points:  # a root of an eliminant, chosen by continuation
+        from .groupexport import export_groups
+
+        if params:
+            raise UsageError("--param", params[0], "points solved together take their dimensions' values (--set)")
+        return export_groups(scene, outputs, to)
+    scene = resolve_modes(scene)  # a mode named by a configuration: its label
     compiled = compile_scene(scene, outputs, list(params))
     branches = closed_forms(compiled)
     if to == "latex":

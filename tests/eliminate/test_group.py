@@ -17,7 +17,8 @@ import sympy
 from algkin.bench.engines import find_msolve
 from algkin.errors import ComputationError, UsageError
 from algkin.eliminate.group import modes, solve_group
-from algkin.eliminate.group.algebra import univariate
+from algkin.eliminate.group.algebra import pseudo_remainder, univariate
+from algkin.eliminate.group.solve import PRIME, _factored, _fails_modulo
 
 UNKNOWNS = ["x1", "y1", "x2", "y2"]
 
@@ -217,6 +218,40 @@ def test_a_stephenson_triad_driven_from_a_crank_outside_the_four_bar():
         _matched(found, triad.poses(lengths), UNKNOWNS)
         counts.append(len(found))
     assert counts[:2] == [6, 4]
+
+
+def test_an_eliminant_split_by_a_hint_has_the_factors_of_the_whole():
+    # the eliminant u**2 (u - r)**3 (u**2 - r) (r**2 + 1) split at its gcd with the hint (u - r) u (u + 1):
+    # the factors of both parts merged, multiplicities added, are flint's factors of the whole
+    ctx = flint.fmpq_mpoly_ctx.get(("u", "r"), "lex")
+    u, r = ctx.gens()
+    eliminant = 3 * u**2 * (u - r)**3 * (u**2 - r) * (r**2 + 1)
+    whole = {(str(f), m) for f, m in eliminant.factor()[1]}
+    assert {(str(f), m) for f, m in _factored(eliminant, (u - r) * u * (u + 1))} == whole
+    assert {(str(f), m) for f, m in _factored(eliminant, None)} == whole == {
+        ("u", 2), ("u - r", 3), ("u^2 - r", 1), ("r^2 + 1", 1)}
+
+
+def test_a_prime_rules_out_a_factor_only_where_the_lifts_fail_over_qq():
+    # the circle x**2 + y**2 = 2 and the line y = x: the lift y = x; on x**2 - 1 (x = +-1) the
+    # equations hold, on x - 3 they do not (9 + 9 != 2), and a modulus with the prime in a
+    # denominator leaves the decision to the exact check
+    ctx = flint.fmpq_mpoly_ctx.get(("x", "y"), "lex")
+    x, y = ctx.gens()
+    equations, lifted = [x**2 + y**2 - 2, x - y], {"y": (flint.fmpq_poly([1]), flint.fmpq_poly([0, -1]))}
+    assert not _fails_modulo(equations, "x", lifted=lifted, modulus=flint.fmpq_poly([-1, 0, 1]))
+    assert _fails_modulo(equations, "x", lifted=lifted, modulus=flint.fmpq_poly([-3, 1]))
+    assert not _fails_modulo(equations, "x", lifted=lifted, modulus=flint.fmpq_poly([-3, 1]) / PRIME)
+
+
+def test_a_pseudo_remainder_by_a_constant_leading_coefficient_is_the_one_by_hand():
+    # 2**2 (y**3 + p) = (2 y**2 - 1)(2 y) + 2 y + 4 p, by hand; y first in the ring (flint's division)
+    # and y second (the coefficient loop) alike
+    for names in (("y", "p"), ("p", "y")):
+        ctx = flint.fmpq_mpoly_ctx.get(names, "lex")
+        y, p = ctx.gens()[names.index("y")], ctx.gens()[names.index("p")]
+        assert pseudo_remainder(y**3 + p, 2 * y**2 - 1, "y") == 2 * y + 4 * p
+        assert pseudo_remainder(y**3 + p, 2 * y**2 - 1, "y", power=3) == 2 * (2 * y + 4 * p)
 
 
 def test_as_many_equations_as_unknowns():

@@ -61,6 +61,9 @@ def pseudo_remainder(f: flint.fmpq_mpoly, g: flint.fmpq_mpoly, var: str, *,
     if power < steps:
         raise ValueError(f"a pseudo-remainder needs the power {steps} at least, not {power}")
     lead, used = divisor[-1], 0
+    if lead.is_constant() and str(f.context().names()[0]) == var:
+        # g's leading term in lex is then var**m alone: flint's division is the univariate one (twice as fast)
+        return divmod(f, g)[1] * lead ** power
     while len(remainder) >= len(divisor):
         top, shift = remainder[-1], len(remainder) - len(divisor)
         remainder = [c * lead for c in remainder]
@@ -77,25 +80,31 @@ def _trimmed(parts: list[flint.fmpq_mpoly]) -> list[flint.fmpq_mpoly]:
     return parts
 
 
-def _primitive_in(poly: flint.fmpq_mpoly, var: str) -> flint.fmpq_mpoly:
-    """``poly`` divided by the gcd of its coefficients in ``var`` (its content): the pseudo-remainders'
-    coefficients stay small, and a content's zeros are no zeros of the relation."""
+def _primitive_in(poly: flint.fmpq_mpoly, var: str, contents: list[flint.fmpq_mpoly] | None = None
+                  ) -> flint.fmpq_mpoly:
+    """``poly`` divided by the gcd of its coefficients in ``var`` (its content, appended to
+    ``contents`` if given): the pseudo-remainders' coefficients stay small, and a content's
+    zeros are no zeros of the relation."""
     content = poly.context().from_dict({})
     for part in coefficients(poly, var):
         content = content.gcd(part)
+    if contents is not None and not content.is_constant():
+        contents.append(content)
     return poly if content.is_constant() else poly / content
 
 
-def linear_relation(f: flint.fmpq_mpoly, g: flint.fmpq_mpoly, var: str
-                    ) -> tuple[flint.fmpq_mpoly, flint.fmpq_mpoly] | None:
+def linear_relation(f: flint.fmpq_mpoly, g: flint.fmpq_mpoly, var: str, *,
+                    contents: list[flint.fmpq_mpoly] | None = None) -> tuple[flint.fmpq_mpoly, flint.fmpq_mpoly] | None:
     """``(a, b)``, free of ``var``, with ``a*var + b`` in the ideal of ``f`` and ``g``: the
     degree-1 member of their pseudo-remainder sequence in ``var`` (primitive parts taken on the
-    way); None where the sequence skips degree 1 (no unique common root in general)."""
+    way, their contents appended to ``contents`` if given: the relation holds on the common
+    zeros where none of them vanishes); None where the sequence skips degree 1 (no unique
+    common root in general)."""
     index = list(f.context().names()).index(var)
     if f.degrees()[index] < g.degrees()[index]:
         f, g = g, f
     while g.degrees()[index] > 1:
-        f, g = g, _primitive_in(pseudo_remainder(f, g, var), var)
+        f, g = g, _primitive_in(pseudo_remainder(f, g, var), var, contents)
         if g.is_zero():
             return None
     if g.degrees()[index] != 1:

@@ -38,7 +38,9 @@ class Polynomial:
     @classmethod
     def of(cls, poly: flint.fmpq_mpoly) -> Polynomial:
         """The record of a python-flint polynomial."""
-        terms = tuple((tuple(int(e) for e in m), int(c.p), int(c.q)) for m, c in zip(poly.monoms(), poly.coeffs()))
+        coeffs = poly.coeffs()  # lists mapped, no generator per term: a lift has hundreds of terms
+        terms = tuple(zip([tuple(map(int, m)) for m in poly.monoms()], [int(c.p) for c in coeffs],
+                          [int(c.q) for c in coeffs]))
         return cls(tuple(str(n) for n in poly.context().names()), terms)
 
     def to_flint(self) -> flint.fmpq_mpoly:

@@ -36,7 +36,8 @@ from __future__ import annotations
 
 import itertools
 import random
-from collections.abc import Sequence
+from collections.abc import Callable, Iterable, Sequence
+from typing import Any
 
 import attrs
 import flint
@@ -142,12 +143,20 @@ def _solve_by(group: _Group, variable: str, rng: random.Random) -> GroupSolution
     """The representation with ``variable`` separating, or _NotSeparating."""
     home = flint.fmpq_mpoly_ctx.get((variable,) + group.parameters, "lex")
     eliminant = _eliminant(group, variable).project_to_context(home)
-    _, factored = eliminant.factor()
+    others = [u for u in group.unknowns if u != variable]
+    lifted = _relations(group, others, variable=variable, home=home, eliminant=eliminant)
+    factored = _factored(eliminant, _hint(lifted.values(), home=home, bound=len(eliminant)))
     factors = [(f, m) for f, m in factored if f.degrees()[0] > 0]
     conditions = [f for f, _ in factored if f.degrees()[0] == 0]
-    others = [u for u in group.unknowns if u != variable]
-    relations = {x: _lift(group, x, variable=variable, home=home) for x in others}
-    genuine = _genuine(group, variable, factors=factors, relations=relations, rng=rng)
+    relations = {x: (r.a, r.b) for x, r in lifted.items()}
+    try:
+        genuine = _genuine(group, variable, factors=factors, relations=relations, rng=rng)
+    except _NotSeparating:
+        if all(r.holder is not None for r in lifted.values()):
+            raise
+        # a relation found through another unknown may fail where a direct one holds: decided on those
+        relations = {x: (r.a, r.b) for x, r in ((x, _lift(group, x, variable=variable, home=home)) for x in others)}
+        genuine = _genuine(group, variable, factors=factors, relations=relations, rng=rng)
     kept = [f for f, _ in factors if any(f is g for g in genuine)]
     product = home.from_dict({(0,) * len(home.names()): 1})
     for factor in kept:
@@ -194,20 +203,143 @@ def _eliminant(group: _Group, variable: str) -> flint.fmpq_mpoly:
     return eliminant
 
 
-def _lift(group: _Group, unknown: str, *, variable: str, home: flint.fmpq_mpoly_ctx
-          ) -> tuple[flint.fmpq_mpoly, flint.fmpq_mpoly]:
-    """``(a, b)`` in ``variable`` and the parameters with ``a*unknown + b`` in the ideal."""
+@attrs.frozen
+class _Relation:
+    """``a*unknown + b`` in the ideal (``a``, ``b`` in the variable and the parameters, over
+    ``home``), and ``holder``, the member of least degree in ``unknown`` of the ideal's
+    elimination to ``unknown`` and the variable (in its own ring); None for a relation found
+    through another unknown's."""
+
+    unknown: str
+    a: flint.fmpq_mpoly
+    b: flint.fmpq_mpoly
+    holder: flint.fmpq_mpoly | None
+
+
+def _relations(group: _Group, others: Sequence[str], *, variable: str, home: flint.fmpq_mpoly_ctx,
+               eliminant: flint.fmpq_mpoly) -> dict[str, _Relation]:
+    """A relation linear in each of ``others``: the one sharing most equations with the
+    variable (the base) directly, every other through the base where it can (the base kept
+    in the elimination, then replaced by its lift): on the 3-RPR, P2's coordinates from the
+    radical axes given P1, linear already, where eliminating P1's other coordinate too leaves
+    relations twice the size that take three times as long. Where the base's lift is of high
+    degree (a triad's, with its crank symbolic), the direct relations (``_through``)."""
+    base = max(others, key=lambda x: _shared(group, x, (variable,)))
+    direct = _lift(group, base, variable=variable, home=home)
+    found = {x: _through(group, x, base=direct, variable=variable, home=home, eliminant=eliminant)
+             for x in others if x != base}
+    return {x: direct if x == base else found[x] or _lift(group, x, variable=variable, home=home) for x in others}
+
+
+def _lift(group: _Group, unknown: str, *, variable: str, home: flint.fmpq_mpoly_ctx) -> _Relation:
+    """The relation linear in ``unknown`` over ``variable`` and the parameters."""
     left = _eliminated(group, (unknown, variable))
     index = list(left[0].context().names()).index(unknown) if left else 0
     holders = sorted((p for p in left if p.degrees()[index] > 0), key=lambda p: (p.degrees()[index], len(p)))
     if holders and holders[0].degrees()[index] == 1:
         b, a = coefficients(holders[0], unknown)
-        return a.project_to_context(home), b.project_to_context(home)
+        return _Relation(unknown, a.project_to_context(home), b.project_to_context(home), holders[-1])
     for first, second in itertools.combinations(holders, 2):  # the lowest degrees first
         relation = linear_relation(first, second, unknown)
         if relation is not None:
-            return relation[0].project_to_context(home), relation[1].project_to_context(home)
+            return _Relation(unknown, relation[0].project_to_context(home), relation[1].project_to_context(home),
+                             holders[0])
     raise _NotSeparating(f"no relation linear in {unknown} over {variable}")
+
+
+def _through(group: _Group, unknown: str, *, base: _Relation, variable: str, home: flint.fmpq_mpoly_ctx,
+             eliminant: flint.fmpq_mpoly) -> _Relation | None:
+    """The relation linear in ``unknown`` over the variable and ``base``'s unknown, with
+    ``base = -b/a`` put in (both sides times ``a**d``, ``d`` their degree in it); None where
+    elimination finds none, or where a content divided out on the way shares a factor in the
+    variable with the ``eliminant`` (the relation might fail at a solution)."""
+    try:
+        left = _eliminated(group, (unknown, variable, base.unknown))
+    except ComputationError:
+        return None
+    index = list(left[0].context().names()).index(unknown) if left else 0
+    holders = sorted((p for p in left if p.degrees()[index] > 0), key=lambda p: (p.degrees()[index], len(p)))
+    pairs = [(h, None) for h in holders[:1] if h.degrees()[index] == 1] + list(itertools.combinations(holders, 2))
+    for first, second in pairs:
+        contents: list[flint.fmpq_mpoly] = []
+        relation = linear_relation(first, second, unknown, contents=contents) if second is not None else \
+            tuple(reversed(coefficients(first, unknown)))
+        if relation is None:
+            continue
+        if _degree_through(tuple(relation), base, variable) >= eliminant.degrees()[0]:
+            return None  # longer to reduce modulo the eliminant than a direct relation (a triad's: 20 s)
+        a, b = _substituted(tuple(relation), base)
+        removed = [_substituted((c,), base)[0].project_to_context(home) for c in contents]
+        if a.is_zero() or any(_meets(c, eliminant) for c in removed):
+            return None
+        return _Relation(unknown, a.project_to_context(home), b.project_to_context(home), None)
+    return None
+
+
+def _meets(content: flint.fmpq_mpoly, eliminant: flint.fmpq_mpoly) -> bool:
+    """Whether ``content`` and ``eliminant`` (over one ring, the variable first) share a factor in the variable."""
+    return content.is_zero() or content.gcd(eliminant).degrees()[0] > 0
+
+
+def _degree_through(relation: tuple[flint.fmpq_mpoly, ...], base: _Relation, variable: str) -> int:
+    """A bound on the degree in ``variable`` of ``relation`` with ``base`` put in (``_substituted``)."""
+    names = list(relation[0].context().names())
+    power = max(int(p.degrees()[names.index(base.unknown)]) for p in relation)
+    own = max(int(p.degrees()[names.index(variable)]) for p in relation)
+    return own + power * max(int(base.a.degrees()[0]), int(base.b.degrees()[0]))
+
+
+def _substituted(relation: tuple[flint.fmpq_mpoly, ...], base: _Relation) -> tuple[flint.fmpq_mpoly, ...]:
+    """The polynomials of ``relation`` with ``base``'s unknown ``-b/a`` put in, times the same power of ``a``."""
+    ctx = relation[0].context()
+    a, minus_b = base.a.project_to_context(ctx), -base.b.project_to_context(ctx)
+    index = list(ctx.names()).index(base.unknown)
+    power = max(int(p.degrees()[index]) for p in relation)
+    done = []
+    for poly in relation:
+        parts = coefficients(poly, base.unknown)
+        done.append(sum((part * minus_b**k * a**(power - k) for k, part in enumerate(parts)), ctx.from_dict({})))
+    return tuple(done)
+
+
+def _hint(relations: Iterable[_Relation], *, home: flint.fmpq_mpoly_ctx, bound: int) -> flint.fmpq_mpoly | None:
+    """A polynomial in the variable and the parameters that the genuine part of the eliminant
+    likely divides and its extraneous factors likely do not: the resultant in ``x`` of the
+    smallest relation ``a*x + b`` with its holder of degree at most 2 (the holder at
+    ``x = -b/a``; on the 3-RPR, the platform joint's circle at its lift: the sextic itself);
+    None where there is none, or it is zero or larger than ``bound`` terms. Only a hint: it
+    splits the eliminant before factoring (``_factored``), never decides a factor."""
+    small = [r for r in relations
+             if r.holder is not None and r.holder.degrees()[list(r.holder.context().names()).index(r.unknown)] <= 2]
+    if not small:
+        return None
+    relation = min(small, key=lambda r: len(r.a) + len(r.b))
+    assert relation.holder is not None
+    ctx = relation.holder.context()
+    x = ctx.gens()[list(ctx.names()).index(relation.unknown)]
+    linear = relation.a.project_to_context(ctx) * x + relation.b.project_to_context(ctx)
+    hint = relation.holder.resultant(linear, relation.unknown)
+    return None if hint.is_zero() or len(hint) > bound else hint.project_to_context(home)
+
+
+def _factored(eliminant: flint.fmpq_mpoly, hint: flint.fmpq_mpoly | None) -> list[tuple[flint.fmpq_mpoly, int]]:
+    """The eliminant's irreducible factors with their multiplicities, as ``factor`` gives them;
+    where ``hint`` splits it (their gcd a proper factor ``g``), the factors of ``g`` and of
+    the cofactor merged: factoring two small polynomials costs a fifth of factoring their
+    product (the 3-RPR's eliminant: its sextic and an extraneous octic)."""
+    common = eliminant.gcd(hint) if hint is not None else None
+    if common is None or common.is_constant() or common.degrees() == eliminant.degrees():
+        return list(eliminant.factor()[1])
+    merged: dict[str, tuple[flint.fmpq_mpoly, int]] = {}
+    for part in (common, eliminant / common):
+        for factor, multiplicity in part.factor()[1]:
+            key = str(_monic(factor))
+            merged[key] = (merged[key][0], merged[key][1] + multiplicity) if key in merged else (factor, multiplicity)
+    return list(merged.values())
+
+
+def _monic(poly: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
+    return poly / poly.leading_coefficient()
 
 
 def _genuine(group: _Group, variable: str, *, factors: list[tuple[flint.fmpq_mpoly, int]],
@@ -239,7 +371,10 @@ def _genuine(group: _Group, variable: str, *, factors: list[tuple[flint.fmpq_mpo
 
 def _solves(equations: Sequence[flint.fmpq_mpoly], variable: str, *,
             lifted: dict[str, tuple[flint.fmpq_poly, flint.fmpq_poly]], modulus: flint.fmpq_poly) -> bool:
-    """Whether the lifts satisfy every equation modulo ``modulus`` (over QQ, at the point)."""
+    """Whether the lifts satisfy every equation modulo ``modulus`` (over QQ, at the point);
+    a factor that a prime shows they do not is answered there (``_fails_modulo``)."""
+    if _fails_modulo(equations, variable, lifted=lifted, modulus=modulus):
+        return False
     values = {variable: flint.fmpq_poly([0, 1]) % modulus}
     for x, (a, b) in lifted.items():
         common, inverse, _ = a.xgcd(modulus)
@@ -249,17 +384,64 @@ def _solves(equations: Sequence[flint.fmpq_mpoly], variable: str, *,
     return all(_residue(e, values, modulus).is_zero() for e in equations)
 
 
-def _residue(poly: flint.fmpq_mpoly, values: dict[str, flint.fmpq_poly], modulus: flint.fmpq_poly) -> flint.fmpq_poly:
-    """``poly`` (in the unknowns alone) at ``values``, modulo ``modulus``."""
+def _fails_modulo(equations: Sequence[flint.fmpq_mpoly], variable: str, *,
+                  lifted: dict[str, tuple[flint.fmpq_poly, flint.fmpq_poly]], modulus: flint.fmpq_poly) -> bool:
+    """Whether, modulo the prime ``PRIME``, every lift's denominator is invertible modulo
+    ``modulus`` and some equation's residue is not zero: then so over QQ (a common factor over
+    QQ stays one modulo a prime that keeps the degrees; a residue zero over QQ is zero modulo
+    any), and the factor is no solution, decided without the exact inverses (an extraneous
+    factor's: five milliseconds on the 3-RPR). False at a prime that divides a denominator or a
+    leading coefficient, or shows nothing: the exact check decides."""
+    image = _image(modulus)
+    if image is None or image.degree() != modulus.degree():
+        return False
+    values = {variable: flint.nmod_poly([0, 1], PRIME) % image}
+    for x, (a, b) in lifted.items():
+        a_image, b_image = _image(a), _image(b)
+        if a_image is None or b_image is None:
+            return False
+        common, inverse, _ = a_image.xgcd(image)
+        if common.degree() != 0:
+            return False
+        values[x] = -b_image * inverse % image
+    residues = [_residue(e, values, image, constant=_constant) for e in equations]
+    return None not in residues and any(not r.is_zero() for r in residues if r is not None)
+
+
+PRIME = 2**61 - 1
+"""The prime of ``_fails_modulo`` (a Mersenne prime, the largest below a machine word)."""
+
+
+def _image(poly: flint.fmpq_poly) -> flint.nmod_poly | None:
+    """``poly`` modulo ``PRIME``; None where the prime divides a denominator."""
+    coefficients_ = []
+    for c in poly.coeffs():
+        denominator = int(c.q) % PRIME
+        if denominator == 0:
+            return None
+        coefficients_.append(int(c.p) * pow(denominator, -1, PRIME) % PRIME)
+    return flint.nmod_poly(coefficients_, PRIME)
+
+
+def _constant(value: flint.fmpq) -> flint.nmod_poly | None:
+    return _image(flint.fmpq_poly([value]))
+
+
+def _residue(poly: flint.fmpq_mpoly, values: dict[str, Any], modulus: Any, *,
+             constant: Callable[[flint.fmpq], Any] = lambda c: flint.fmpq_poly([c])) -> Any:
+    """``poly`` (in the unknowns alone) at ``values``, modulo ``modulus`` (``fmpq_poly``, or
+    ``nmod_poly`` with ``constant`` the image of a coefficient; None if one has none)."""
     names = [str(n) for n in poly.context().names()]
-    total = flint.fmpq_poly([])
+    total = None
     for monomial, coefficient in zip(poly.monoms(), poly.coeffs()):
-        term = flint.fmpq_poly([coefficient])
+        term = constant(coefficient)
+        if term is None:
+            return None
         for name, exponent in zip(names, monomial):
             for _ in range(exponent):
                 term = term * values[name] % modulus
-        total += term
-    return total % modulus
+        total = term if total is None else total + term
+    return (constant(flint.fmpq(0)) if total is None else total) % modulus
 
 
 def _reduced(unknown: str, relation: tuple[flint.fmpq_mpoly, flint.fmpq_mpoly], *, eliminant: flint.fmpq_mpoly,
