@@ -9,7 +9,7 @@
 >>> eliminate(circles, ["x"], ["y", "c", "s"], method="magic")
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: method='magic': unknown elimination method; valid: groebner, interpolate, linear, resultant
+algkin.errors.UsageError: method='magic': unknown elimination method (valid: groebner, interpolate, linear, resultant)
 >>> eliminate(circles, ["x"], ["y", "c", "s"], method="resultant", budget=Budget(terms=5))
 Traceback (most recent call last):
 ...

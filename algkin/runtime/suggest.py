@@ -26,8 +26,13 @@ sharing a few letters would be paired (``rates`` and ``atlas``: 0.6)."""
 LONG_CUTOFF = 0.7
 
 
-def close_match(word: str, names: Iterable[str]) -> str | None:
-    """The name most like ``word``, if one is like it at all."""
+def close_match(word: object, names: Iterable[str]) -> str | None:
+    """The name most like ``word`` (a name, or whatever was given in its place), if one is like it at all.
+
+    >>> close_match(3, ["B", "P"]) is None
+    True
+    """
+    word = str(word)
     names = [n for n in names if n != word]
     folded = [n for n in names if n.casefold() == word.casefold()]
     cutoff = CUTOFF if len(word) <= 4 else LONG_CUTOFF
@@ -35,13 +40,13 @@ def close_match(word: str, names: Iterable[str]) -> str | None:
     return found[0] if found else None
 
 
-def did_you_mean(word: str, names: Iterable[str]) -> str:
+def did_you_mean(word: object, names: Iterable[str]) -> str:
     """``"; did you mean 'name'?"`` for the close match, else nothing."""
     match = close_match(word, names)
     return f"; did you mean {match!r}?" if match else ""
 
 
-def known(word: str, names: Iterable[str], *, plural: str) -> str:
+def known(word: object, names: Iterable[str], *, plural: str) -> str:
     """The known names in brackets (``plural``: what they are), then the close match if any."""
     names = list(names)
     return f" ({plural}: {', '.join(names) or 'none'})" + did_you_mean(word, names)

@@ -32,7 +32,7 @@ from typing import TYPE_CHECKING, Any
 from ..runtime import suggest
 from ..errors import UsageError
 from ..runtime.budget import time_budget
-from .analyses import ANALYSES, Analysis, analyses_named, register
+from .analyses import ANALYSES, Analysis, analyses_named, applicable, register
 from .design import STATUSES, TIMING_PREFIX, Job, columns
 from .executor import EXECUTORS, dask_modules, run_chunks
 from .grid import Designs, grid_designs, parse_grid, parse_ranges, random_designs
@@ -82,12 +82,14 @@ def plan(scene: SceneLike, *, grid: Iterable[str] = (), random: int | None = Non
          chunk: int = CHUNK) -> Plan:
     """The sweep's job, designs and manifest, every argument checked (UsageError, SceneError)."""
     from ..scene.dump import dump_scene
-    from ..scene.compile import refuse_solved_together
+    from ..scene.groups import compile_groups
     from ..scene.load import as_scene
 
     scene = as_scene(scene)
-    refuse_solved_together(scene)
+    if scene.unknown_points:
+        compile_groups(scene)  # a SceneError for bad groups, whatever the analyses
     chosen = tuple(a.name for a in analyses_named(analyses))
+    applicable(chosen, solved_together=bool(scene.unknown_points))
     grid = list(grid)
     space: dict[str, Any]
     if random is None:

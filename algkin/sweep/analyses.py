@@ -12,14 +12,23 @@ refuses to start a run projected from them past a day without ``--yes``. ``singu
 singular points of the coupler curve, exactly (``algkin.analyses.singular``): their count by
 kind (``singular_count``, all real ones, is what the atlas filters on) and the points.
 
+A scene with points solved together (``unknown = true``) takes the analyses that have a way for
+its groups (``groups``): ``modes`` (its real modes at the reference input, where ``derive`` counts
+them: ``algkin.analyses.groups``) and ``toggles`` (where its modes meet, the same columns as a
+dyad scene's); ``applicable`` names them, and refuses the others in one line.
+
 >>> list(ANALYSES)
-['curve', 'grashof', 'toggles', 'limits', 'transmission', 'singular']
+['curve', 'grashof', 'toggles', 'limits', 'transmission', 'singular', 'modes']
 >>> ANALYSES["grashof"].columns
 {'grashof_class': 'string', 'grashof_margin': 'string', 'grashof_margin_float': 'float64'}
 >>> analyses_named(["grashof", "wobble"])
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: analyses='wobble': unknown; valid: curve, grashof, toggles, limits, transmission, singular
+algkin.errors.UsageError: analyses='wobble': unknown (valid: curve, grashof, toggles, limits, transmission, singular, modes)
+>>> applicable(["modes"], solved_together=False)
+Traceback (most recent call last):
+...
+algkin.errors.UsageError: analyses='modes': is for points solved together (unknown = true); this scene takes curve, grashof, toggles, limits, transmission, singular
 """
 
 from __future__ import annotations
@@ -33,11 +42,12 @@ from ..runtime import suggest
 from ..errors import ComputationError, UsageError
 
 if TYPE_CHECKING:
+    from ..analyses.groups.scene import GroupScene
     from ..derivation.pipeline import CurveResult
     from ..scene import Scene
     from ..scene.compile import Compiled
 
-__all__ = ["Analysis", "Design", "ANALYSES", "register", "analyses_named", "GRASHOF_CLASSES"]
+__all__ = ["Analysis", "Design", "ANALYSES", "register", "analyses_named", "applicable", "GRASHOF_CLASSES"]
 
 # algkin.analyses.toggles.grashof's words -> the sweep's class names (the input link's view)
 GRASHOF_CLASSES = {"crank-rocker": "crank-rocker", "double crank": "double-crank", "double rocker": "double-rocker",
@@ -47,12 +57,14 @@ GRASHOF_CLASSES = {"crank-rocker": "crank-rocker", "double crank": "double-crank
 
 @dataclass
 class Design:
-    """One design: its scene (exact dimensions), compiled with its implicit points, and the traced point."""
+    """One design: its scene (exact dimensions), compiled with its implicit points, and the traced point;
+    a scene with points solved together has its ``groups`` solved instead (and no ``compiled``)."""
 
     scene: Scene
-    compiled: Compiled
+    compiled: Compiled | None
     point: str
     found: dict[str, Any] = field(default_factory=dict)  # what one analysis computed that another reuses
+    groups: GroupScene | None = None
 
 
 def _verified_curve(design: Design) -> CurveResult:
@@ -72,9 +84,16 @@ def _verified_curve(design: Design) -> CurveResult:
 class Analysis:
     name: str
     columns: dict[str, str]  # column -> Arrow type: string, float64, int64, bool, list<float64>
-    run: Callable[[Design], dict[str, Any]]
+    run: Callable[[Design], dict[str, Any]] | None  # None: not for a scene of dyads and sliders
     # seconds one design takes at least (a four-bar's, rounded down): what a sweep's length is projected from
     seconds: float = 0.0
+    groups: Callable[[Design], dict[str, Any]] | None = None  # the way for points solved together, if any
+
+    def __call__(self, design: Design) -> dict[str, Any]:
+        """The design's columns, by the way its scene takes (``applicable`` checked it has one)."""
+        run = self.groups if design.groups is not None else self.run
+        assert run is not None, f"{self.name}: no way for this design (applicable refuses it)"
+        return run(design)
 
 
 def _curve(design: Design) -> dict[str, Any]:
@@ -89,6 +108,7 @@ def _grashof(design: Design) -> dict[str, Any]:
 
     from ..analyses.toggles import grashof
 
+    assert design.compiled is not None  # a scene of dyads: points solved together have no grashof
     found = grashof(design.compiled)
     if found is None:
         raise ComputationError("not a four-bar: no dyad on a crank tip and a ground pivot")
@@ -103,6 +123,32 @@ def _toggles(design: Design) -> dict[str, Any]:
     found = toggles(design.scene, artefacts=False).toggles
     return {"toggles_count": len(found), "toggles_deg": [t.input_deg for t in found],
             "toggles_exact": json.dumps([{k: v for k, v in t.to_json().items() if k != "certified"} for t in found])}
+
+
+def _group_toggles(design: Design) -> dict[str, Any]:
+    """Where the modes of a scene with points solved together meet (``algkin.analyses.groups.toggles``)."""
+    from ..analyses.groups.toggles import toggles_groups
+
+    assert design.groups is not None
+    found = toggles_groups(design.groups).to_json()["toggles"]
+    return {"toggles_count": len(found),
+            "toggles_deg": [t.get("input_deg", t.get("input_length")) for t in found],
+            "toggles_exact": json.dumps([{k: v for k, v in t.items() if k != "certified"} for t in found])}
+
+
+def _modes(design: Design) -> dict[str, Any]:
+    """The real modes at the reference input (the evenly spaced input with the most, as ``derive``
+    counts them) of a scene with points solved together, every group's together, and its complex count:
+    the reference exactly (a length's rational; an angle's degrees, to 6 digits) and as a float."""
+    import math
+
+    assert design.groups is not None
+    reference = design.groups.reference()
+    found = design.groups.modes(reference)
+    exact = reference.shown if len(reference.values) == 2 else str(next(iter(reference.values.values())))
+    return {"modes_reference": exact, "modes_reference_float": reference.value,
+            "modes_real": math.prod(len(group) for group in found),
+            "modes_complex": math.prod(s.complex_count for s in design.groups.solutions)}
 
 
 def _limits(design: Design) -> dict[str, Any]:
@@ -189,7 +235,7 @@ register(Analysis("curve", {"curve_point": "string", "curve_degree": "int64", "c
 register(Analysis("grashof", {"grashof_class": "string", "grashof_margin": "string",
                               "grashof_margin_float": "float64"}, _grashof, seconds=0.001))
 register(Analysis("toggles", {"toggles_count": "int64", "toggles_deg": "list<float64>",
-                              "toggles_exact": "string"}, _toggles, seconds=0.003))
+                              "toggles_exact": "string"}, _toggles, seconds=0.003, groups=_group_toggles))
 register(Analysis("limits", {"limits_count": "int64", "limits_deg": "list<float64>", "limits_exact": "string",
                              "limits_time_ratio": "float64", "limits_time_ratio_exact": "string",
                              "limits_time_ratio_reason": "string", "limits_stroke": "float64",
@@ -200,6 +246,24 @@ register(Analysis("transmission", {"transmission_of": "string",
                   _transmission, seconds=0.05))
 register(Analysis("singular", {"singular_count": "int64", **{f"singular_{kind}s": "int64" for kind in _KINDS},
                                "singular_complex": "int64", "singular_points": "string"}, _singular, seconds=0.01))
+
+
+register(Analysis("modes", {"modes_reference": "string", "modes_reference_float": "float64", "modes_real": "int64",
+                            "modes_complex": "int64"}, None, seconds=0.05, groups=_modes))
+
+
+def applicable(names: Iterable[str], *, solved_together: bool) -> None:
+    """UsageError, in one line naming the analyses that apply, for the first of ``names`` that has
+    no way for the scene (``solved_together``: it has points solved together)."""
+    def fits(analysis: Analysis) -> bool:
+        return (analysis.groups if solved_together else analysis.run) is not None
+
+    for name in names:
+        if not fits(ANALYSES[name]):
+            takes = ", ".join(n for n, a in ANALYSES.items() if fits(a))
+            what = ("does not apply to points solved together (unknown = true)" if solved_together
+                    else "is for points solved together (unknown = true)")
+            raise UsageError("analyses", name, f"{what}; this scene takes {takes}")
 
 
 def analyses_named(names: Iterable[str]) -> list[Analysis]:

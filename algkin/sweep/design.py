@@ -117,7 +117,7 @@ def _analyse(job: Job, values: Mapping[str, Fraction], deadline: Deadline | None
             deadline.note(f"running the {name} analysis")
         begun = time.perf_counter()
         try:
-            found.update(ANALYSES[name].run(design))
+            found.update(ANALYSES[name](design))
         except Exception as err:  # noqa: BLE001 - the other analyses still run; the first failure is said
             if found["status"] == "ok":
                 found.update(status="failed", reason=_one_line(f"{name}: {type(err).__name__}: {err}"))
@@ -135,13 +135,18 @@ def _status_of(err: SceneError) -> str:
 
 
 def _assembled(job: Job, values: Mapping[str, Fraction]) -> Design:
-    """The design's scene, compiled with its dyads and sliders; SceneError if its branch never assembles."""
+    """The design's scene, compiled with its dyads and sliders (SceneError if its branch never
+    assembles), or with its groups of points solved together solved."""
     from ..branches import check_assembly, closed_forms
     from ..derivation.assembles import where_assembled
     from ..scene import compile_scene
     from ..scene.settings import with_values
 
     scene = with_values(job.scene if not isinstance(job.scene, str) else load_scene(job.scene), dict(values))
+    if scene.unknown_points:  # its groups solved once, for every analysis
+        from ..analyses.groups.scene import prepare_groups
+
+        return Design(scene, None, job.point, groups=prepare_groups(scene, command="sweep"))
     implicit = [n for n, p in scene.points.items() if p.labels]
     compiled = compile_scene(scene, implicit or [job.point])
     if implicit:

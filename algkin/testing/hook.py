@@ -1,4 +1,5 @@
-"""hypothesis's entry point (group ``hypothesis``): ``from_type(Scene)`` draws random scenes.
+"""hypothesis's entry point (group ``hypothesis``): ``from_type(Scene)`` draws random scenes, those
+with points solved together (``strategies.group_scenes``) among them.
 
 hypothesis runs ``setup`` when it is imported; the strategies module loads only when a
 ``Scene`` is first drawn.
@@ -25,7 +26,7 @@ __all__ = ["setup"]
 
 
 def setup() -> None:
-    """Register ``algkin.testing.strategies.scenes()`` for algkin's ``Scene`` type."""
+    """Register ``algkin.testing.strategies.scenes()`` and ``group_scenes()`` for algkin's ``Scene`` type."""
     from hypothesis import strategies as st
 
     from ..scene import Scene
@@ -34,6 +35,8 @@ def setup() -> None:
 
 
 def _scenes() -> st.SearchStrategy[Scene]:
-    from .strategies import scenes
+    from hypothesis import strategies as st
 
-    return scenes()
+    from .strategies import group_scenes, scenes
+
+    return st.one_of(scenes(), group_scenes())

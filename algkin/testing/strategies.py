@@ -23,6 +23,13 @@ closed at P, a Peaucellier cell). Every scene keeps the points O, A (the crank),
 output ``phi = "angle(X, B)"`` too, X a point at a fixed distance from B (or
 ``angle(O, A)``, the crank's own).
 
+Scenes with points solved together (``unknown = true``; ``group_scenes``): 3-RPR parallel
+manipulators (``three_rprs``) and Stephenson six-bars driven from the link that closes no
+four-bar (``triads``), each built around an assembled design: the pose is drawn first (rational
+points, rational unit directions), the fixed joints placed at rational distances from it, so the
+design assembles exactly at the middle of its input's range (a length, or a multiple of 90 degrees,
+where ``algkin.solve`` takes an angle). ``scenes()`` keeps to the scenes every command takes.
+
 >>> from hypothesis import given, settings
 >>> @settings(max_examples=10, database=None)
 ... @given(four_bars("crank-rocker"))
@@ -48,7 +55,8 @@ from ..scene.implicit.base import FloatPoint
 Point = tuple[Fraction, Fraction]
 
 __all__ = ["GRASHOF_KINDS", "lengths", "four_bar_lengths", "four_bars", "near_toggle_four_bars",
-           "slider_cranks", "moving_sliders", "inversors", "length_driven", "scenes", "with_symbolic", "MIN_ASSEMBLED_DEGREES"]
+           "slider_cranks", "moving_sliders", "inversors", "length_driven", "scenes", "with_symbolic",
+           "MIN_ASSEMBLED_DEGREES", "three_rprs", "triads", "group_scenes", "design_input"]
 
 # Which link is the shortest decides a Grashof four-bar's class.
 _SHORTEST = {"crank-rocker": "crank", "double-crank": "ground", "double-rocker": "coupler",
@@ -424,3 +432,125 @@ def with_symbolic(scene_strategy: st.SearchStrategy[Scene] | None = None,
     scene_strategy = scenes() if scene_strategy is None else scene_strategy
     return scene_strategy.flatmap(lambda scene: st.tuples(st.just(scene), st.lists(
         st.sampled_from(sorted(scene.parameters)), min_size=1, max_size=max_symbols, unique=True).map(tuple)))
+
+
+def _plus(point: Point, length: Fraction, direction: Point) -> Point:
+    return point[0] + length * direction[0], point[1] + length * direction[1]
+
+
+def _framed(first: Point, second: Point, at: Point) -> Point:
+    """``frame = [first, second], at = [u, v]``: ``first + u*(second - first) + v*rot90(second - first)``."""
+    dx, dy = second[0] - first[0], second[1] - first[1]
+    return first[0] + at[0] * dx - at[1] * dy, first[1] + at[0] * dy + at[1] * dx
+
+
+def _legs_apart(joints: list[Point], directions: list[Point]) -> bool:
+    """Whether three legs (through ``joints``, along ``directions``) hold a rigid body firmly: their
+    lines neither meet in one point nor are all parallel (where they do, the design is a toggle)."""
+    lines = [(-dy, dx, dy * x - dx * y) for (x, y), (dx, dy) in zip(joints, directions)]
+    (a, b, c), (d, e, f), (g, h, i) = lines
+    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g) != 0
+
+
+def _fixed(name: str, point: Point) -> str:
+    return f"{name} = {{ fixed = [{_q(point[0])}, {_q(point[1])}] }}\n"
+
+
+def design_input(scene: Scene) -> tuple[str, Fraction]:
+    """The input of a drawn group scene and the value where its design assembles: its range's middle.
+
+    >>> from hypothesis import given, settings
+    >>> @settings(max_examples=3, database=None, deadline=None)
+    ... @given(group_scenes())
+    ... def check(scene):
+    ...     name, value = design_input(scene)
+    ...     assert scene.unknown_points and (value in (90, 180, 270) or not scene.inputs[name].is_angle)
+    >>> check()
+    """
+    (name, spec), = scene.inputs.items()
+    lo, hi = spec.span
+    return name, Fraction(lo + hi).limit_denominator(1000) / 2
+
+
+@st.composite
+def three_rprs(draw: st.DrawFn) -> Scene:
+    """A 3-RPR parallel manipulator: the platform P1 P2 (side ``d``) with P3 rigid with it, on
+    three legs from base joints A1, A2, A3 (the first, ``r1``, the input; ``r2``, ``r3`` parameters),
+    assembled at ``r1`` in the middle of its range."""
+    p1 = (draw(_coordinates), draw(_coordinates))
+    d = draw(lengths(Fraction(1), Fraction(6), 4))
+    p2 = _plus(p1, d, draw(_directions))
+    at = (draw(_frame), draw(_frame.filter(lambda v: v != 0)))  # off the side: a triangle
+    p3 = _framed(p1, p2, at)
+    legs = [draw(lengths(Fraction(2), Fraction(8), 4)) for _ in range(3)]
+    directions = [draw(_directions) for _ in legs]
+    assume(_legs_apart([p1, p2, p3], directions))
+    bases = [_plus(p, leg, u) for p, leg, u in zip((p1, p2, p3), legs, directions)]
+    text = f"""name = "3rpr-drawn"
+description = "random 3-RPR: side {d}, legs {', '.join(map(str, legs))}"
+[inputs]
+r1 = {{ range = [{float(legs[0] - Fraction(1, 2))}, {float(legs[0] + Fraction(1, 2))}], unit = "length" }}
+[parameters]
+r2 = {_q(legs[1])}
+r3 = {_q(legs[2])}
+d = {_q(d)}
+[points]
+{_fixed("A1", bases[0])}{_fixed("A2", bases[1])}{_fixed("A3", bases[2])}P1 = {{ unknown = true }}
+P2 = {{ unknown = true }}
+P3 = {{ frame = ["P1", "P2"], at = [{_q(at[0])}, {_q(at[1])}] }}
+[constraints]
+leg1 = "dist(A1, P1) = r1"
+leg2 = "dist(A2, P2) = r2"
+leg3 = "dist(A3, P3) = r3"
+side = "dist(P1, P2) = d"
+[outputs]
+P3 = "P3"
+"""
+    return load_scene_text(text, "3rpr-drawn.toml")
+
+
+_QUARTERS: dict[int, Point] = {90: (Fraction(0), Fraction(1)), 180: (Fraction(-1), Fraction(0)),
+                               270: (Fraction(0), Fraction(-1))}  # a quarter turn's cos and sin
+
+
+@st.composite
+def triads(draw: st.DrawFn) -> Scene:
+    """A Stephenson six-bar driven from the binary link EF that closes no four-bar: the coupler's
+    joints A, B (C rigid with them) on the legs OA, DB and FC, a triad solved together; assembled
+    at ``theta`` in the middle of its range (a multiple of 90 degrees)."""
+    middle = draw(st.sampled_from(sorted(_QUARTERS)))
+    a = (draw(_coordinates), draw(_coordinates))
+    coupler = draw(lengths(Fraction(1), Fraction(5), 4))
+    b = _plus(a, coupler, draw(_directions))
+    at = (draw(_frame), draw(_frame.filter(lambda v: v != 0)))
+    c = _framed(a, b, at)
+    crank, link, first, second = (draw(lengths(Fraction(1), Fraction(5), 4)) for _ in range(4))
+    directions = [draw(_directions) for _ in range(3)]
+    assume(_legs_apart([a, b, c], directions))
+    o, d, f = (_plus(p, leg, u) for p, leg, u in zip((a, b, c), (first, second, link), directions))
+    e = _plus(f, -crank, _QUARTERS[middle])  # F = E + crank*(cos theta, sin theta) at the middle
+    text = f"""name = "triad-drawn"
+description = "random Stephenson triad: coupler {coupler}, crank {crank}, link {link}, legs {first}, {second}"
+[inputs]
+theta = {{ range = [{middle - 30}, {middle + 30}], unit = "deg" }}
+[parameters]
+k = {_q(crank)}
+[points]
+{_fixed("O", o)}{_fixed("D", d)}{_fixed("E", e)}F = {{ crank = "E", length = "k", input = "theta" }}
+A = {{ unknown = true }}
+B = {{ unknown = true }}
+C = {{ frame = ["A", "B"], at = [{_q(at[0])}, {_q(at[1])}] }}
+[constraints]
+crank = "dist(O, A) = {first}"
+rocker = "dist(D, B) = {second}"
+coupler = "dist(A, B) = {coupler}"
+link = "dist(C, F) = {link}"
+[outputs]
+C = "C"
+"""
+    return load_scene_text(text, "triad-drawn.toml")
+
+
+def group_scenes() -> st.SearchStrategy[Scene]:
+    """Scenes with points solved together: 3-RPRs and Stephenson triads."""
+    return st.one_of(three_rprs(), triads())

@@ -128,7 +128,7 @@ def test_hypothesis_knows_the_scene_type_through_the_entry_point():
                  "@settings(max_examples=3, database=None)\n"
                  "@given(st.from_type(Scene))\n"
                  "def draw(scene): seen.append(sorted(scene.points))\n"
-                 "draw(); print(len(seen), all('A' in p and 'B' in p for p in seen))")
+                 "draw(); print(len(seen), all(('A' in p and 'B' in p) or 'P1' in p for p in seen))")
     assert result.returncode == 0 and result.stdout.split() == ["3", "True"], result.stderr
 
 
@@ -136,3 +136,23 @@ def test_hypothesis_knows_the_scene_type_through_the_entry_point():
 def test_unknown_kind_is_refused(kind):
     with pytest.raises(ValueError, match="valid: crank-rocker"):
         strategies.four_bars(kind)
+
+
+@settings(max_examples=10, deadline=None)
+@given(strategies.group_scenes())
+def test_group_scenes_are_one_group_of_two_points_solved_together(scene):
+    from algkin.scene.groups import compile_groups
+
+    (group,) = compile_groups(scene).groups
+    assert scene.name in ("3rpr-drawn", "triad-drawn") and len(group.unknowns) == len(group.equations) == 4
+    name, value = strategies.design_input(scene)
+    assert scene.inputs[name].lo < value < scene.inputs[name].hi
+
+
+def test_the_scene_type_draws_points_solved_together_too():
+    from hypothesis import find
+
+    from algkin.scene import Scene
+
+    found = find(st.from_type(Scene), lambda scene: bool(scene.unknown_points), settings=settings(database=None))
+    assert found.name in ("3rpr-drawn", "triad-drawn")

@@ -87,10 +87,11 @@ class GroupToggles:
                 "timings": dict(self.timings)}
 
 
-def toggles_groups(scene: Scene | str) -> GroupToggles:
-    """Where the modes of each group of ``scene`` meet as its one input moves over its range, certified."""
+def toggles_groups(scene: Scene | str | GroupScene) -> GroupToggles:
+    """Where the modes of each group of ``scene`` (or of its groups solved) meet as its one input
+    moves over its range, certified."""
     start = time.perf_counter()
-    prepared = prepare_groups(scene, command="toggles")
+    prepared = scene if isinstance(scene, GroupScene) else prepare_groups(scene, command="toggles")
     if prepared.input is None:
         raise UsageError("scene", prepared.scene.name, "moves with no input: its groups have no toggles to find")
     found: list[GroupToggle] = []

@@ -17,7 +17,7 @@ c_angle*s_angle*(8*c_angle + 5)/(sqrt((5 - 4*c_angle)*(c_angle + 5))*(4*c_angle 
 from __future__ import annotations
 
 import time
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import attrs
 import sympy
@@ -30,11 +30,14 @@ from ...eliminate import DEFAULT_METHOD
 from ...errors import UsageError
 from ...runtime import validation
 from ...runtime.frozen import FrozenDict, frozen
-from ...scene.load import SceneLike
+from ...scene.load import SceneLike, as_scene
 from ...system import symbol
 from .check import RatesCheck, check_rates
 from .forms import Rate, rates_of_values
 from .text import text
+
+if TYPE_CHECKING:
+    from ..groups.rates import GroupRates
 
 __all__ = ["rates", "rates_of", "check_forms", "Rates", "BranchRates", "RatesCheck", "Rate"]
 
@@ -78,14 +81,34 @@ class Rates:
 
 def rates(scene: SceneLike | Prepared, outputs: list[str] | None = None, params: tuple[str, ...] | list[str] = (),
           samples: int = SAMPLES, seed: int = 0, method: str = DEFAULT_METHOD, backend: str = "flint",
-          set: dict[str, Any] | None = None) -> Rates:  # noqa: A002 - ``set=`` as in derive
+          set: dict[str, Any] | None = None) -> Rates | GroupRates:  # noqa: A002 - ``set=`` as in derive
     """Velocity and acceleration of every coordinate of ``outputs`` of a one-input ``scene``, per
     branch, checked on ``samples`` inputs (0 skips the check); the positions' derivation and its
-    own verification are in ``.derivation``. ``scene`` may be a ``Prepared`` one (``prepare``)."""
+    own verification are in ``.derivation``. ``scene`` may be a ``Prepared`` one (``prepare``).
+
+    A scene with points solved together (``unknown = true``) has every unknown's rates per mode
+    instead (``algkin.analyses.groups.rates.GroupRates``; ``outputs``, ``params``, ``method`` and
+    ``backend`` are the dyads' and are refused there)."""
     validation.count("samples", samples, validation.MAX_VERIFY_SAMPLES)
+    if not isinstance(scene, Prepared) and as_scene(scene).unknown_points:
+        return _group_rates(scene, outputs=outputs, params=params, method=method, values=set, samples=samples,
+                            seed=seed)
     derivation = derive(scene, outputs, method=method, backend=backend, params=params, samples=samples, seed=seed,
                         set=set)
     return rates_of(derivation, samples, seed)
+
+
+def _group_rates(scene: SceneLike, *, outputs: list[str] | None, params: tuple[str, ...] | list[str], method: str,
+                 values: dict[str, Any] | None, samples: int, seed: int) -> GroupRates:
+    """``rates`` of a scene with points solved together: its dyads' options refused, by name."""
+    from ..groups.rates import group_rates
+
+    dyads = (("outputs", outputs), ("params", params), ("method", None if method == DEFAULT_METHOD else method),
+             ("set", values))
+    for name, given in dyads:
+        if given:
+            raise UsageError(name, given, "is not taken with points solved together (unknown = true) yet")
+    return group_rates(as_scene(scene), samples=samples, seed=seed)
 
 
 def rates_of(derivation: Derivation, samples: int = SAMPLES, seed: int = 0) -> Rates:

@@ -1,7 +1,8 @@
 """derive, curve, verify and toggles on a scene with points solved together (``unknown = true``).
 
 Options that only the dyad pipeline has (an elimination method or backend, symbolic dimensions,
-outputs, rates, LaTeX) are refused here in one line, before any work."""
+outputs, LaTeX) are refused here in one line, before any work. ``derive --rates`` adds each
+unknown's velocity and acceleration per mode (``algkin.analyses.groups.rates``)."""
 
 from __future__ import annotations
 
@@ -14,6 +15,7 @@ from .reports import (Document, Form, render, report_group_curve, report_group_d
                       report_group_verify)
 
 if TYPE_CHECKING:  # the command line loads the algebra only once a command needs it
+    from ...analyses.groups.derive import GroupDerivation
     from ...scene import Scene
 
 __all__ = ["group_derive", "group_curve", "group_verify", "group_toggles"]
@@ -36,9 +38,33 @@ def group_derive(args: argparse.Namespace, scene: Scene) -> tuple[Document, Call
     """``derive``: the JSON document, its report, the LaTeX forms (none) and the exit code."""
     from ...analyses.groups.derive import derive_groups
 
-    _refuse(args, ("outputs", "param", "rates", "latex", "method", "backend"))
+    _refuse(args, ("outputs", "param", "latex", "method", "backend"))
     found = derive_groups(scene, samples=args.samples, seed=args.seed)
-    return found.to_json(), report_group_derive, [], 0 if found.passed else 1
+    document: Document = found.to_json()
+    code = 0 if found.passed else 1
+    if args.rates:
+        document = _with_rates(found, document, args)
+        code = max(code, 0 if _rates_passed(document) else 1)
+    return document, report_group_derive, [], code
+
+
+def _with_rates(found: GroupDerivation, document: Document, args: argparse.Namespace) -> Document:
+    """``derive --rates``: the document with the rates' keys, and their timings before the total."""
+    from ...analyses.groups.rates import rates_of_groups
+
+    try:
+        rates = rates_of_groups(found, samples=args.samples, seed=args.seed)
+    except UsageError as err:  # a structure: nothing moves
+        raise UsageError("--rates", err.value, err.message) from None
+    document = dict(document, **rates.to_json())
+    timings = dict(document["timings"], **rates.timings)
+    timings["total"] = timings.pop("total") + sum(rates.timings.values())
+    document["timings"] = timings
+    return document
+
+
+def _rates_passed(document: Document) -> bool:
+    return bool(document["rates_verification"]["status"] in ("passed", "skipped"))
 
 
 def group_curve(args: argparse.Namespace, scene: Scene) -> tuple[Document, Callable[[Document], str], list[Form], int]:

@@ -223,7 +223,8 @@ def build_parser() -> argparse.ArgumentParser:
     derive.add_argument("--rates", action="store_true",
                         help="also each output coordinate's velocity and acceleration per branch (derivatives "
                              "in the input angle, per radian), checked against central differences of "
-                             "independent numeric solutions on --samples inputs")
+                             "independent numeric solutions on --samples inputs; with points solved together, "
+                             "every unknown's per mode")
     _full_forms(derive)
     curve = _command(commands, "curve", "implicit trajectory curve of a point")
     _common(curve)

@@ -435,7 +435,34 @@ def report_group_derive(d: Document) -> str:
                          f" = {mode['value']}")
     lines.append(_group_verification_line(d["verification"]))
     forms = [f for g in d["groups"] for f in (g["eliminant"], *g["lifts"].values())]
+    if "rates" in d:
+        lines += _group_rates_lines(d)
+        forms += [f for g in d["rates"]["groups"] for f in (*g["velocity"].values(), *g["acceleration"].values())]
     return "\n".join(lines + [_timings_line(d["timings"])] + _hint(forms))
+
+
+def _group_rates_lines(d: Document) -> list[str]:
+    """``derive --rates`` on a group scene: per group the forms (the same for every mode), then
+    each mode's values at the reference input, and the check."""
+    name = d["rates_input"]["name"]
+    per = "per radian" if d["rates_input"]["per"] == "radian" else "per unit of the length"
+    lines = [f"rates in {name} (x' = dx/d{name}, x'' = d2x/d{name}2, {per}), by the implicit function "
+             "theorem on each group's equations, rational in the mode's coordinates:"]
+    for group in d["rates"]["groups"]:
+        lines.append(f"  group {', '.join(group['points'])}:")
+        for u, v in group["velocity"].items():
+            lines += [f"      {u}' = {_brief(v)}", f"      {u}'' = {_brief(group['acceleration'][u])}"]
+        for label, values in group["modes"].items():
+            lines.append(f"    [{label}] " + ", ".join(f"{u}' = {r['velocity']}, {u}'' = {r['acceleration']}"
+                                                    for u, r in values.items()))
+    v = d["rates_verification"]
+    if v["status"] == "skipped":
+        return lines + ["rates verification skipped (--samples 0)"]
+    verdict = "passed" if v["passed"] else "FAILED"
+    lines.append(f"rates verification {verdict}: {v['compared']} modes against central differences of proved "
+                 f"numeric solutions, {v['eliminant_compared']} against the eliminant's implicit derivative; "
+                 f"max rel error {v['max_rel_error']:.2e}")
+    return lines + [f"  {f}" for f in v["failures"][:10]]
 
 
 def _group_verification_line(v: Document) -> str:

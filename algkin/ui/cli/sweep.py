@@ -26,7 +26,8 @@ def add_commands(commands: Subcommands, command: Callable[[Subcommands, str, str
     sweep.add_argument("--random", type=_positive, metavar="N", help="N designs drawn in the --grid ranges")
     sweep.add_argument("--seed", type=int, default=0, help="random seed of the --random draws")
     sweep.add_argument("--analyses", default="curve", metavar="A,B,...",
-                       help="comma-separated: curve, grashof, toggles, limits, transmission, singular")
+                       help="comma-separated: curve, grashof, toggles, limits, transmission, singular; "
+                            "for points solved together: modes, toggles")
     sweep.add_argument("--point", help="the point whose coupler curve is found and drawn (default: the scene's last)")
     sweep.add_argument("--out", required=True, metavar="DIR", help="the sweep's directory (resumed if it holds it)")
     sweep.add_argument("--executor", default="dask", help="dask (a LocalCluster, or --scheduler) or serial")

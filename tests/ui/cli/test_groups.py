@@ -36,7 +36,6 @@ def test_curve_json(capsys):
 
 @pytest.mark.parametrize("argv, flag", [
     (["derive", "3rpr", "--param", "r2"], "--param"),
-    (["derive", "3rpr", "--rates"], "--rates"),
     (["derive", "3rpr", "--latex"], "--latex"),
     (["derive", "3rpr", "--outputs", "P1"], "--outputs"),
     (["curve", "3rpr", "--point", "P3", "--method", "groebner"], "--method"),
@@ -52,3 +51,18 @@ def test_what_only_the_dyads_take_is_refused_in_one_line(capsys, argv, flag):
 def test_a_point_of_no_scene_is_refused(capsys):
     assert main(["curve", "stephenson-iii-triad", "--point", "Z"]) == 2
     assert "not a point of stephenson-iii-triad" in capsys.readouterr().err
+
+
+def test_derive_rates_on_a_group_scene(capsys):
+    assert main(["derive", "3rpr", "--rates", "--samples", "3", "--json"]) == 0
+    document = json.loads(capsys.readouterr().out)
+    group, = document["rates"]["groups"]
+    assert list(group["modes"]) == ["---", "+++"] and set(group["velocity"]) == {"P1_x", "P1_y", "P2_x", "P2_y"}
+    assert document["rates_input"] == {"name": "r1", "per": "length"}
+    assert document["rates_verification"]["passed"] and document["rates_verification"]["eliminant_compared"] > 0
+
+
+def test_derive_rates_text_on_the_triad(capsys):
+    assert main(["derive", "stephenson-iii-triad", "--rates", "--samples", "3"]) == 0
+    out = capsys.readouterr().out
+    assert "per radian" in out and "rates verification passed" in out and "[+++] A_x' = " in out

@@ -14,7 +14,7 @@ GOOD = ["sweep", "fourbar", "--grid", "a=1:2:2", "--analyses", "grashof", "--exe
     (["--grid", "a=1:2"], "--grid='a=1:2': expected NAME=LO:HI:COUNT"),
     (["--grid", "zz=1:2:3"], "--grid='zz': not a parameter of fourbar"),
     (["--grid", "a=2:1:3"], "LO must not exceed HI"),
-    (["--analyses", "grashof,wobble"], "--analyses='wobble': unknown (valid: curve, grashof, toggles, limits, transmission, singular)"),
+    (["--analyses", "grashof,wobble"], "--analyses='wobble': unknown (valid: curve, grashof, toggles, limits, transmission, singular, modes)"),
     (["--executor", "threads"], "--executor='threads': unknown (valid: dask, serial)"),
     (["--workers", "2"], "--workers=2: sizes the LocalCluster: only for the dask executor without a scheduler"),
     (["--workers", "0"], "expected a whole number from 1"),
