@@ -192,3 +192,11 @@ def test_a_dyad_beside_a_triad_may_name_its_mode_by_a_configuration():
     found = solve(load_scene_text(text, "named.toml"), at={"theta": 180}, digits=20)
     assert found.named_modes == ("G",) and found.left_out == 2
     assert [c.mode.split(" ")[1] for c in found.configurations] == ["G:right", "G:right"]
+
+
+def test_rates_of_groups_solved_in_turn_are_refused_naming_the_later_group():
+    from algkin.analyses.groups.rates import group_rates
+    from algkin.errors import UsageError
+
+    with pytest.raises(UsageError, match="its group of G is solved after another"):
+        group_rates(SCENE, samples=0)
