@@ -100,10 +100,12 @@ class GroupSolution:
 class Mode:
     """One real solution of a group at a sample: each unknown's (and the variable's) value as a
     ball, certified; ``index``: its place among the real roots of the eliminant, in increasing
-    order; ``root``: that root exactly (its irreducible factor and rank), its ball the variable's.
+    order; ``root``: that root exactly (its irreducible factor and rank), its ball the variable's;
+    None for a group solved after another, whose parameters took an earlier mode's balls (the
+    mode is then told by its ``index`` under that earlier mode).
     The exact root is the mode's identity: the balls, like a ``RealRoot``'s, are not compared
     (nor hashed: a ball is no exact number)."""
 
     index: int
-    root: RealRoot
+    root: RealRoot | None
     values: FrozenDict[str, flint.arb] = attrs.field(converter=frozen, eq=False)

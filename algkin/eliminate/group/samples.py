@@ -18,17 +18,17 @@ root's ball.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 
 import flint
 import sympy
 
 from ...errors import ComputationError, UsageError
 from ...system.roots import RealRoot, real_roots
-from .algebra import univariate
+from .algebra import coefficients, univariate
 from .records import GroupSolution, Mode, Values
 
-__all__ = ["modes"]
+__all__ = ["modes", "modes_in_balls", "modes_in_sequence", "ball_value"]
 
 
 def modes(solution: GroupSolution, at: Mapping[str, int | str | flint.fmpq], *, bits: int = 128) -> tuple[Mode, ...]:
@@ -97,3 +97,101 @@ def _shape(numerator: flint.fmpq_mpoly, denominator: flint.fmpq_mpoly, *, elimin
         raise ComputationError(f"at this sample a lift's denominator vanishes at a root in {variable}")
     return univariate(numerator, variable) % eliminant, below % eliminant
 
+
+def modes_in_balls(solution: GroupSolution, at: Mapping[str, flint.fmpq], balls: Mapping[str, flint.arb], *,
+                   bits: int = 128) -> tuple[Mode, ...]:
+    """Every real solution of ``solution``'s group with some parameters at exact values (``at``)
+    and the others in balls (``balls``: an earlier group's unknowns at one of its modes), in
+    increasing order of the variable, each ``root`` None. Certified for every value in the balls:
+    the eliminant's complex roots are isolated in disjoint discs (Arb), and a disc that meets the
+    real axis and whose mirror image meets no other disc holds a real root (the mirror image of a
+    root of a real polynomial is a root). A ComputationError where that cannot be told: the
+    leading coefficient's ball holds 0, two roots are too close (modes meet), a disc is undecided,
+    or a lift's denominator's ball holds 0.
+
+    >>> import flint
+    >>> from .solve import solve_group
+    >>> ctx = flint.fmpq_mpoly_ctx.get(("x", "y", "r"), "lex")
+    >>> x, y, r = ctx.gens()
+    >>> solution = solve_group([x**2 + y**2 - r, x - 2*y], ["x", "y"])
+    >>> [m.values["x"].str(6, radius=False) for m in modes_in_balls(solution, {}, {"r": flint.arb(5)})]
+    ['-2.00000', '2.00000']
+    """
+    with flint.ctx.workprec(bits):
+        exact = {n: v for n, v in at.items() if n in solution.parameters}
+        given = {n: flint.arb(v) for n, v in exact.items()} | dict(balls)
+        missing = [p for p in solution.parameters if p not in given]
+        if missing:
+            raise UsageError("at", sorted(given), f"needs a value for every parameter; missing {', '.join(missing)}")
+        eliminant = solution.eliminant.to_flint()
+        parts = [ball_value(c, given) for c in coefficients(eliminant, solution.variable)]
+        while len(parts) > 1 and parts[-1].is_zero():
+            parts.pop()
+        if len(parts) - 1 != solution.complex_count or parts[-1].contains(0):
+            raise ComputationError(f"at this sample the eliminant in {solution.variable} may drop its degree")
+        try:
+            roots = flint.acb_poly([flint.acb(c) for c in parts]).roots(tol=flint.arb(2) ** (16 - bits), maxprec=4 * bits)
+        except ValueError:
+            raise ComputationError(f"at this sample the roots of the eliminant in {solution.variable} could not be "
+                                   "isolated: two modes meet, or nearly") from None
+        real = [r.real for r in roots if _real(r, roots)]
+        found = []
+        for index, root in enumerate(sorted(real, key=lambda b: float(b.mid()))):
+            values = {**given, solution.variable: root}
+            for lift in solution.lifts:
+                bottom = ball_value(lift.denominator.to_flint(), values)
+                if bottom.contains(0):
+                    raise ComputationError(f"at this sample a lift's denominator may vanish at a root in "
+                                           f"{solution.variable}")
+                values[lift.unknown] = ball_value(lift.numerator.to_flint(), values) / bottom
+            found.append(Mode(index, None, {u: values[u] for u in (solution.variable, *solution.unknowns)
+                                            if u in values}))
+    return tuple(found)
+
+
+def _real(root: flint.acb, roots: Sequence[flint.acb]) -> bool:
+    """Whether the isolated ``root`` is real (its disc meets the real axis and its mirror image
+    meets no other disc), False where it is certified not real."""
+    if not root.imag.contains(0):
+        return False
+    mirror = root.conjugate()
+    if any(other is not root and mirror.overlaps(other) for other in roots):
+        raise ComputationError("at this sample a root of the eliminant is too close to another to tell whether "
+                               "it is real")
+    return True
+
+
+def modes_in_sequence(solutions: Sequence[GroupSolution], at: Mapping[str, flint.fmpq], *,
+                      bits: int = 128) -> list[tuple[Mode, ...]]:
+    """Every real configuration of groups solved in turn (``solutions`` in dependency order, a
+    later group's parameters the inputs ``at`` and earlier groups' unknowns): one mode per group,
+    a later group's modes found at each earlier combination's balls (``modes_in_balls``), the
+    first groups' over QQ (``modes``). Combinations in order: the first group's modes outermost."""
+    known = {u for s in solutions for u in s.unknowns}
+    combinations: list[tuple[Mode, ...]] = [()]
+    for solution in solutions:
+        held = [p for p in solution.parameters if p in known]
+        if not held:
+            own = modes(solution, {p: at[p] for p in solution.parameters}, bits=bits)
+            combinations = [c + (m,) for c in combinations for m in own]
+            continue
+        combinations = [c + (m,) for c in combinations
+                        for m in modes_in_balls(solution, at, _values(c, held), bits=bits)]
+    return combinations
+
+
+def _values(combination: Sequence[Mode], names: Sequence[str]) -> dict[str, flint.arb]:
+    values = {u: v for mode in combination for u, v in mode.values.items()}
+    return {n: values[n] for n in names}
+
+
+def ball_value(poly: flint.fmpq_mpoly, values: Mapping[str, flint.arb]) -> flint.arb:
+    """``poly`` at ``values`` (a ball for every name it holds), by Horner's rule in its first held name."""
+    names = [str(n) for n in poly.context().names()]
+    held = [n for n, d in zip(names, poly.degrees()) if d > 0]
+    if not held:
+        return flint.arb(poly.coeffs()[0]) if not poly.is_zero() else flint.arb(0)
+    total = flint.arb(0)
+    for part in reversed(coefficients(poly, held[0])):
+        total = total * values[held[0]] + ball_value(part, values)
+    return total
