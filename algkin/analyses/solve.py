@@ -10,8 +10,8 @@ toggle whose cosine is irrational) is a ComputationError, never a guess.
 Points solved together (``unknown = true``, ``algkin.scene.groups``): each group's equations
 are solved by ``solve_group`` (an eliminant in one unknown, the others rational in its root) with
 the inputs as parameters, and its real modes at the inputs' exact values isolated and certified
-(``modes``), or, where an angle's cos and sin are irrational, at their balls (``ball_modes``, the
-precision raised until the roots are told apart and real or not); a configuration is one mode of each group, labelled by a sign per leg (see
+(``modes``), or, where an angle's cos and sin are irrational, at their balls (``modes_in_balls``,
+the precision raised until the roots are told apart, and real or not); a configuration is one mode of each group, labelled by a sign per leg (see
 ``_mode_labels``), and ``complex_count`` counts the complex solutions.
 
 Nothing assembling at the inputs is a valid answer, not a failure: no configurations (exit 0).
@@ -25,7 +25,6 @@ Nothing assembling at the inputs is a valid answer, not a failure: no configurat
 
 from __future__ import annotations
 
-import itertools
 import math
 from collections.abc import Iterable, Mapping, Sequence
 from decimal import Decimal, localcontext
@@ -39,13 +38,13 @@ import sympy
 from ..runtime import suggest
 from ..branches import Branch, closed_forms
 from ..derivation.modes import Followed, follow_modes, moded_points, on_mode, resolve_modes
-from ..eliminate.group import GroupSolution, Mode, ball_modes, modes, solve_group
+from ..eliminate.group import GroupSolution, Mode, modes_in_sequence, solve_group
 from ..errors import ComputationError, SceneError, UsageError
 from ..evaluate import ARB, evaluate
 from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled, Input, Scene, compile_scene
 from ..scene.groups import Groups, compile_groups
-from ..scene.constructions import Unknown
+from ..scene.constructions import Dyad, Slider, Unknown
 from ..scene.load import as_scene
 from ..system.convert import flint_context, to_flint
 from ..system import input_values, symbol
@@ -299,7 +298,8 @@ def _solved_together(scene: Scene, at: Mapping[str, Any], *, mode: str | None, d
         raise UsageError("mode", mode, f"not a mode of {scene.name} at {_said(values)} (modes: {', '.join(labels) or 'none'})")
     count = math.prod(s.complex_count for s in solutions)
     found = [c for label, c in labelled if mode in (None, label)]
-    named = [p for p, c in scene.points.items() if isinstance(c, Unknown) and c.mode is not None]
+    # an unknown point's mode, or a dyad's or slider's (a group of its own beside them)
+    named = [p for p, c in scene.points.items() if isinstance(c, (Unknown, Dyad, Slider)) and c.mode is not None]
     kept = [c for c in found if all(_group_label(compiled, p, c.mode) == _named_group_label(compiled, solutions, p)
                                     for p in named)]
     return Solution(scene.name, values, digits, tuple(kept), count, named_modes=tuple(named),
@@ -318,7 +318,7 @@ def _named_group_label(compiled: Groups, solutions: Sequence[GroupSolution], poi
     the next configuration's ``point``), certified in balls; a SceneError naming the nearest otherwise."""
     scene = compiled.scene
     construction = scene.points[point]
-    assert isinstance(construction, Unknown) and construction.mode is not None
+    assert isinstance(construction, (Unknown, Dyad, Slider)) and construction.mode is not None
     element = f"points.{point}.mode"
     at = dict(construction.mode.at)
     try:
@@ -350,10 +350,11 @@ def _distance(p: Sequence[flint.arb], q: Sequence[flint.arb]) -> flint.arb:
     return (dx * dx + dy * dy).sqrt()
 
 
-def _exact_inputs(compiled: Groups, at: Mapping[str, Fraction]) -> dict[str, flint.fmpq] | None:
-    """Each used input's variables exactly: a length as it is, an angle's cos and sin where they
-    are rational (multiples of 90 degrees: the eliminant's real roots are then isolated over QQ);
-    None where an angle's are not (the modes are then isolated with cos and sin in balls)."""
+def _exact_inputs(compiled: Groups, at: Mapping[str, Fraction]) -> dict[str, flint.fmpq]:
+    """Each used input's variables exactly where they are rational: a length as it is, an angle's
+    cos and sin at multiples of 90 degrees (the eliminant's real roots are then isolated over QQ).
+    Any other angle's are left out: given in balls (``_ball_inputs``), its group's roots isolated
+    in balls."""
     exact: dict[str, flint.fmpq] = {}
     for name, value in at.items():
         variables = compiled.inputs[name]
@@ -361,77 +362,75 @@ def _exact_inputs(compiled: Groups, at: Mapping[str, Fraction]) -> dict[str, fli
             exact[variables[0]] = flint.fmpq(value.numerator, value.denominator)
         elif value % 90 == 0:
             exact.update(zip(variables, map(flint.fmpq, quarter_turn(value))))
-        else:
-            return None
     return exact
 
 
 def _group_solution(compiled: Groups, index: int) -> GroupSolution:
-    """The group's rational univariate representation; its equations may hold inputs, not an earlier group's points."""
+    """The group's rational univariate representation; its parameters are the inputs' variables
+    and the unknowns of the earlier groups its equations hold (groups solved in turn)."""
     group = compiled.groups[index]
     names = sorted({str(v) for e in group.equations for v in e.free_symbols} - set(group.unknowns))
-    earlier = [u for g in compiled.groups[:index] for u in g.unknowns if u in names]
-    if earlier:
-        raise SceneError(compiled.scene.source, "constraints", f"the group of {', '.join(group.points)} is held by "
-                         f"points of an earlier group ({', '.join(earlier)}): groups solved in sequence are not "
-                         "supported yet")
     ctx = flint_context(group.unknowns + tuple(names))
     return solve_group([to_flint(e, ctx) for e in group.equations], group.unknowns)
 
 
-def _configurations(compiled: Groups, solutions: Sequence[GroupSolution], exact: Mapping[str, flint.fmpq] | None,
+def _configurations(compiled: Groups, solutions: Sequence[GroupSolution], exact: Mapping[str, flint.fmpq],
                     at: Mapping[str, Fraction], digits: int) -> list[tuple[str, Configuration]]:
-    """Every combination of the groups' modes, labelled, its points ``digits`` narrow; the modes
-    at the ``exact`` inputs, or, where an angle's cos and sin are irrational (``exact`` None), at
-    the inputs in balls, the precision raised until they are told apart."""
+    """Every real configuration (one mode per group, a later group's at each configuration of the
+    earlier ones: ``modes_in_sequence``), labelled, its points ``digits`` narrow. An input not in
+    ``exact`` (an angle's irrational cos and sin) is given in balls, the precision raised until its
+    group's roots are told apart, and real or not."""
     bits = int(digits * 3.33) + 64
-    isolated = True
+    undecided = None
     for _ in range(RAISES):
-        with flint.ctx.workprec(bits):
+        with flint.ctx.workprec(2 * bits):  # the inputs' balls narrower than the roots are refined to
             inputs = _ball_inputs(compiled, at)
-            attempts = [_group_modes(s, exact, inputs, bits) for s in solutions]
-            found = [f for f in attempts if f is not None]
-            isolated = len(found) == len(attempts)
-            if not isolated:
-                bits *= 2
+        inexact = {v: b for v, b in inputs.items() if v not in exact}
+        with flint.ctx.workprec(bits):
+            try:
+                combinations = modes_in_sequence(solutions, exact, balls=inexact, bits=bits)
+            except ComputationError as err:
+                if not inexact:
+                    raise
+                undecided, bits = err, bits * 2
                 continue
+            undecided = None
             labelled = []
-            for combination in itertools.product(*found):
+            for combination in combinations:
                 values = dict(inputs)
                 for group_mode in combination:
                     values.update({u: v for u, v in group_mode.values.items()})
                 points = {p: tuple(evaluate(v, values, ARB) for v in xy) for p, xy in compiled.coordinates.items()}
-                labelled.append((combination, points))
-            if all(_narrow(b, digits) for _, points in labelled for xy in points.values() for b in xy):
-                names = [_mode_labels(compiled, k, [m[k] for m, _ in labelled], [p for _, p in labelled])
+                labelled.append((combination, points, values))
+            if all(_narrow(b, digits) for _, points, _ in labelled for xy in points.values() for b in xy):
+                names = [_mode_labels(compiled, k, [m[k] for m, _, _ in labelled], [p for _, p, _ in labelled],
+                                      [v for _, _, v in labelled])
                          for k in range(len(solutions))]
                 return [(" ".join(n[i] for n in names), _written(" ".join(n[i] for n in names), points, digits))
-                        for i, (_, points) in enumerate(labelled)]
+                        for i, (_, points, _) in enumerate(labelled)]
         bits *= 2
-    if not isolated:
-        raise ComputationError(f"{compiled.scene.name} at {_said(at)}: the modes could not be told apart in balls "
-                               f"at {bits // 2} bits (two modes meeting there, at a toggle?)")
+    if undecided is not None:
+        raise ComputationError(f"{compiled.scene.name} at {_said(at)}: {undecided} (at {bits // 2} bits; "
+                               "an input at a toggle?)")
     raise ComputationError(f"{compiled.scene.name} at {_said(at)}: the coordinates did not narrow to {digits} "
                            f"digits at {bits // 2} bits")
 
 
-def _group_modes(solution: GroupSolution, exact: Mapping[str, flint.fmpq] | None,
-                 inputs: Mapping[str, flint.arb], bits: int) -> Sequence[Mode] | None:
-    """The group's modes at the ``exact`` inputs, or in balls at ``inputs`` (None: not told apart at ``bits``)."""
-    if exact is not None:
-        return modes(solution, {p: exact[p] for p in solution.parameters}, bits=bits)
-    return ball_modes(solution, {p: inputs[p] for p in solution.parameters}, bits=bits)
-
-
 def _mode_labels(compiled: Groups, index: int, group_modes: Sequence[Mode],
-                 configurations: Sequence[Mapping[str, tuple[flint.arb, ...]]]) -> list[str]:
+                 configurations: Sequence[Mapping[str, tuple[flint.arb, ...]]],
+                 values: Sequence[Mapping[str, flint.arb]]) -> list[str]:
     """Each mode's label: a sign per leg (a distance from a point outside the group to one on it,
     ``+`` when the group's centroid lies left of the leg), certified; with the mode's index
-    (``/k``, its rank among the real roots) where signs are undecided or do not tell it apart."""
+    (``/k``, its rank among the real roots) where signs are undecided or do not tell it apart.
+    A point built by a dyad or slider (a group of its own): its side, as the dyad's branch says
+    it (``D:left``)."""
     group = compiled.groups[index]
+    if len(group.points) == 1 and group.points[0] in compiled.sides:
+        return [_side(compiled, group.points[0], v) or f"{group.points[0]}:?/{m.index + 1}"
+                for m, v in zip(group_modes, values)]
     body = _body(compiled, index)
-    legs = [c.points for name in group.constraints for c in [compiled.scene.constraints[name]]
-            if c.kind in ("dist", "dist2") and len({p in body for p in c.points}) == 2]
+    legs = [c.points for name in group.constraints for c in [compiled.scene.constraints.get(name)]
+            if c is not None and c.kind in ("dist", "dist2") and len({p in body for p in c.points}) == 2]
     signs = []
     for points in configurations:
         centre = [sum((points[p][k] for p in body), flint.arb(0)) / len(body) for k in (0, 1)]
@@ -442,8 +441,18 @@ def _mode_labels(compiled: Groups, index: int, group_modes: Sequence[Mode],
             sign = _sign((px - ax) * (centre[1] - py) - (py - ay) * (centre[0] - px))
             row += {1: "+", -1: "-"}.get(sign or 0, "?")
         signs.append(row)
-    told = [row and "?" not in row and signs.count(row) == 1 for row in signs]
+    # a mode shared by several configurations (groups after it differ) counts once
+    distinct = {id(m): row for m, row in zip(group_modes, signs)}
+    rows = list(distinct.values())
+    told = [row and "?" not in row and rows.count(row) == 1 for row in signs]
     return [row if ok else f"{row}/{m.index + 1}".lstrip("/") for row, ok, m in zip(signs, told, group_modes)]
+
+
+def _side(compiled: Groups, point: str, values: Mapping[str, flint.arb]) -> str | None:
+    """``point``'s side label (its dyad's or slider's branch) at ``values``, None where the ball cannot tell."""
+    indicator = compiled.sides[point]
+    sign = _sign(evaluate(indicator.expr, values, ARB))
+    return None if not sign else f"{point}:{indicator.positive if sign > 0 else indicator.negative}"
 
 
 def _body(compiled: Groups, index: int) -> list[str]:

@@ -30,6 +30,8 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
 
+import dataclasses
+
 import attrs
 import sympy
 
@@ -37,7 +39,7 @@ from ..errors import SceneError
 from ..runtime.frozen import FrozenDict, frozen
 from ..system import symbol
 from .compile import defaults_subs
-from .constructions import Builder, Crank, Fixed, Frame, Unknown
+from .constructions import Builder, Indicator, Unbuildable, Unknown
 from .driven import driven_angles
 from .implicit.base import Point
 from .model import Scene
@@ -60,31 +62,53 @@ class Group:
 class Groups:
     """A scene with points solved together, compiled: ``groups`` in dependency order,
     ``coordinates`` of every point (in the groups' unknowns, the inputs' variables), and
-    ``inputs``: each input's variables (an angle's cos and sin, a length itself)."""
+    ``inputs``: each input's variables (an angle's cos and sin, a length itself); ``sides``:
+    each point built by a dyad or slider (a group of its own, its two equations named
+    ``D.1``, ``D.2``) -> its branch indicator, whose sign is the side label of its mode."""
 
     scene: Scene
     groups: tuple[Group, ...]
     coordinates: FrozenDict[str, Point] = attrs.field(converter=frozen)
     inputs: FrozenDict[str, tuple[str, ...]] = attrs.field(converter=frozen)
+    sides: FrozenDict[str, Indicator] = attrs.field(converter=frozen, factory=FrozenDict)
 
 
 def compile_groups(scene: Scene) -> Groups:
     """The groups of ``scene``'s unknown points, their equations and every point's coordinates.
 
-    SceneError for a group whose equations are not as many as its unknowns, and for a point built
-    by a construction that does not yet go beside points solved together (a dyad, a slider)."""
+    A point built by a dyad, slider or meet is an unknown of its own with the construction's two
+    equations (its two circles; its line and circle; its two lines): a group of its own, solved
+    after the groups its base points belong to. SceneError for a group whose equations are not as
+    many as its unknowns."""
     values = _defaults(scene)
-    coordinates = _coordinates(scene, values)
+    builder = _builder(scene)
+    coordinates = _coordinates(scene, values, builder)
     equations = {name: sympy.expand(c.equation(coordinates).xreplace(values))
                  for name, c in scene.constraints.items()}
-    unknowns = {u: p for p in scene.unknown_points for u in (f"{p}_x", f"{p}_y")}
+    for indicator_point, pair in _built_equations(builder).items():
+        equations.update({f"{indicator_point}.{k + 1}": sympy.expand(e.xreplace(values)) for k, e in enumerate(pair)})
+    built = [p for p in scene.points if f"{p}.1" in equations]
+    unknowns = {u: p for p in (*scene.unknown_points, *built) for u in (f"{p}_x", f"{p}_y")}
     holds = {name: [u for u in unknowns if symbol(u) in e.free_symbols] for name, e in equations.items()}
     matching = _matching(holds)
     _check_matched(scene, holds, matching, unknowns)
     parts = _parts(holds, matching, unknowns)
     groups = tuple(_group(part, equations, unknowns, matching) for part in parts)
     inputs = {n: tuple(str(s) for s in i.symbols) for n, i in scene.inputs.items()}
-    return Groups(scene, groups, coordinates, inputs)
+    sides = {i.point: dataclasses.replace(i, expr=sympy.expand(sympy.sympify(i.expr).xreplace(values)))
+             for i in builder.indicators}
+    return Groups(scene, groups, coordinates, inputs, sides)
+
+
+def _builder(scene: Scene) -> Builder:
+    angles = {n: i.symbols for n, i in scene.inputs.items() if i.is_angle}
+    return Builder(angles, driven_angles(scene, angles))
+
+
+def _built_equations(builder: Builder) -> dict[str, tuple[sympy.Expr, sympy.Expr]]:
+    """Each point a construction built with two equations -> them (the builder adds them in pairs)."""
+    points = [str(u)[:-2] for u in builder.unknowns[::2]]
+    return {p: (builder.equations[2 * k], builder.equations[2 * k + 1]) for k, p in enumerate(points)}
 
 
 def _defaults(scene: Scene) -> dict[sympy.Symbol, sympy.Expr]:
@@ -96,11 +120,10 @@ def _defaults(scene: Scene) -> dict[sympy.Symbol, sympy.Expr]:
     return defaults_subs(defaults, symbols)
 
 
-def _coordinates(scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -> dict[str, Point]:
-    """Every point's (x, y): an unknown point's own unknowns, a construction's in those of its references."""
+def _coordinates(scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr], builder: Builder) -> dict[str, Point]:
+    """Every point's (x, y): an unknown point's own unknowns, a construction's in those of its
+    references (a dyad's, slider's or meet's its own unknowns, its equations left in ``builder``)."""
     coordinates: dict[str, Point] = {}
-    angles = {n: i.symbols for n, i in scene.inputs.items() if i.is_angle}
-    builder = Builder(angles, driven_angles(scene, angles))
 
     def build(name: str) -> Point:
         if name not in coordinates:
@@ -109,12 +132,11 @@ def _coordinates(scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -> dic
                 build(ref)
             if isinstance(construction, Unknown):
                 point: Point = (symbol(f"{name}_x"), symbol(f"{name}_y"))
-            elif isinstance(construction, (Fixed, Crank, Frame)):  # explicit: the builder only lends the inputs
-                point = construction.build(name, coordinates, builder)
             else:
-                raise SceneError(scene.source, f"points.{name}", f"a {type(construction).__name__.lower()} beside "
-                                 "points solved together (unknown = true) is not supported yet: fixed, crank and "
-                                 "frame points only")
+                try:
+                    point = construction.build(name, coordinates, builder)
+                except Unbuildable as err:
+                    raise SceneError(scene.source, f"points.{name}", str(err)) from None
             coordinates[name] = tuple(sympy.expand(sympy.sympify(v).xreplace(values)) for v in point)
         return coordinates[name]
 

@@ -144,10 +144,10 @@ def _modes(design: Design) -> dict[str, Any]:
 
     assert design.groups is not None
     reference = design.groups.reference()
-    found = design.groups.modes(reference)
+    found = design.groups.configurations(reference)  # one mode per group (a later group's at each earlier one)
     exact = reference.shown if len(reference.values) == 2 else str(next(iter(reference.values.values())))
     return {"modes_reference": exact, "modes_reference_float": reference.value,
-            "modes_real": math.prod(len(group) for group in found),
+            "modes_real": len(found),
             "modes_complex": math.prod(s.complex_count for s in design.groups.solutions)}
 
 

@@ -249,8 +249,9 @@ def test_a_thousand_digits_are_certified_too():
         assert 0 < configuration.radius  # an upper bound, the smallest float where the radius underflows
 
 
-def test_groups_solved_in_sequence_are_refused_for_now():
-    """Q hangs on P: its group's equations hold P's coordinates, irrational balls, not exact values."""
+def test_groups_solved_in_sequence_give_every_configuration_of_both():
+    """Q hangs on P: its group's equations hold P's coordinates (irrational balls), solved after
+    P's. By hand: P = (2, +-sqrt(5)); Q on the x axis at 3 from P: Q = (2 +- 2, 0), four in all."""
     scene = load_scene_text('''
 [points]
 A = { fixed = [0, 0] }
@@ -260,11 +261,18 @@ Q = { unknown = true }
 [constraints]
 a = "dist(A, P) = 3"
 b = "dist(B, P) = 3"
-c = "dist(P, Q) = 1"
+c = "dist(P, Q) = 3"
 d = "on(Q, line(A, B))"
 ''', "two.toml")
-    with pytest.raises(SceneError, match="the group of Q is held by points of an earlier group \\(P_x"):
-        solve(scene, at={})
+    found = solve(scene, at={}, digits=40)
+    with mpmath.workdps(60):
+        points = sorted((tuple(map(mpmath.mpf, c.points["P"])), tuple(map(mpmath.mpf, c.points["Q"])))
+                        for c in found.configurations)
+        root5 = mpmath.sqrt(5)
+        expected = sorted(((2, y), (x, 0)) for y in (-root5, root5) for x in (0, 4))
+        assert len(points) == 4 and found.complex_count == 4
+        for (p, q), (ep, eq) in zip(points, expected):
+            assert _close(p, ep, mpmath.mpf(10) ** -38) and _close(q, eq, mpmath.mpf(10) ** -38)
 
 
 # Modes named by a configuration (``mode = { at, near }``): solve keeps the configurations on them.
@@ -300,3 +308,32 @@ def test_a_3rpr_mode_named_far_from_every_configuration_is_refused_naming_the_ne
     with pytest.raises(SceneError, match=r"points\.P1\.mode\.near: \[5, 3\] is not close to a configuration of P1 "
                                          r"at r1 = 6: the nearest is \[3\.85685, 4\.59616\]"):
         solve(_3rpr_named("[5, 3]"), at={"r1": 7})
+
+
+def test_a_slider_and_a_meet_on_points_solved_together_are_solved_after_them():
+    """P = (2, +-sqrt(5)) (circles about A and B); S on the horizontal line through P, 5 from A:
+    S = (+-sqrt(20), P_y), `ahead` where S_x > 0 (along (1, 0) past A's foot); M where the lines
+    A-P and B-S meet, by Cramer's rule. Four configurations, each by hand."""
+    scene = load_scene_text('''
+[points]
+A = { fixed = [0, 0] }
+B = { fixed = [4, 0] }
+P = { unknown = true }
+S = { slider = { through = "P", direction = [1, 0] }, distance = { to = "A", length = 5 }, branch = "ahead" }
+M = { meet = [["A", "P"], ["B", "S"]] }
+[constraints]
+a = "dist(A, P) = 3"
+b = "dist(B, P) = 3"
+''', "slider.toml")
+    found = solve(scene, at={}, digits=40)
+    assert len(found.configurations) == 4
+    with mpmath.workdps(60):
+        for configuration in found.configurations:
+            (px, py), (sx, sy), (mx, my) = ([mpmath.mpf(v) for v in configuration.points[p]] for p in "PSM")
+            assert abs(px - 2) < 1e-38 and abs(abs(py) - mpmath.sqrt(5)) < 1e-38 and abs(sy - py) < 1e-38
+            assert abs(abs(sx) - mpmath.sqrt(20)) < 1e-38
+            assert configuration.mode.split(" ")[1] == ("S:ahead" if sx > 0 else "S:behind")
+            # M = k (P - A) = B + l (S - B): two linear equations in k and l
+            det = px * -(sy - 0) - py * -(sx - 4)
+            k = (4 * -(sy - 0) - 0 * -(sx - 4)) / det
+            assert abs(mx - k * px) < 1e-35 and abs(my - k * py) < 1e-35

@@ -112,12 +112,42 @@ def test_bad_constraints_are_one_line_naming_the_element(points, constraints, sa
     assert said in str(caught.value)
 
 
-def test_a_dyad_beside_points_solved_together_is_not_supported_yet():
+def test_a_dyad_beside_points_solved_together_is_a_group_of_its_own_in_order():
+    """D is built by a dyad on the fixed A, B: its two circles, a group before P's (P hangs on D);
+    E is a dyad on P: a group after it. Their equations are the circles, by hand."""
     scene = _scene('A = { fixed = [0, 0] }\nB = { fixed = [4, 0] }\nP = { unknown = true }\n'
-                   'D = { dyad = ["A", "B"], lengths = [3, 3] }',
+                   'D = { dyad = ["A", "B"], lengths = [3, 3] }\nE = { dyad = ["P", "B"], lengths = [2, 5] }',
                    'a = "dist(A, P) = 3"\nb = "dist(D, P) = 3"')
-    with pytest.raises(SceneError, match="points.D: a dyad beside points solved together"):
+    compiled = compile_groups(scene)
+    assert [(g.points, g.constraints) for g in compiled.groups] == [(("D",), ("D.1", "D.2")), (("P",), ("a", "b")),
+                                                                     (("E",), ("E.1", "E.2"))]
+    dx, dy, px, py, ex, ey = sympy.symbols("D_x D_y P_x P_y E_x E_y", real=True)
+    assert [sympy.expand(e) for e in compiled.groups[0].equations] == [sympy.expand(dx**2 + dy**2 - 9),
+                                                                       sympy.expand((dx - 4)**2 + dy**2 - 9)]
+    assert [sympy.expand(e) for e in compiled.groups[2].equations] == [
+        sympy.expand((ex - px)**2 + (ey - py)**2 - 4), sympy.expand((ex - 4)**2 + ey**2 - 25)]
+    # left of P -> B: cross(B - P, E - P) > 0, as the dyad's branch says it
+    assert sympy.expand(compiled.sides["E"].expr - ((4 - px) * (ey - py) - (0 - py) * (ex - px))) == 0
+    assert (compiled.sides["E"].positive, compiled.sides["E"].negative) == ("left", "right")
+
+
+def test_a_cycle_through_a_dyad_is_one_group_not_refused():
+    """D is a dyad on P and Q, and P, Q (three equations for four unknowns) are held through D:
+    they depend on each other, so the three points are one group (a triad), merged, not refused."""
+    scene = _scene('A = { fixed = [0, 0] }\nB = { fixed = [4, 0] }\nC = { fixed = [2, 5] }\nP = { unknown = true }\n'
+                   'Q = { unknown = true }\nD = { dyad = ["P", "Q"], lengths = [3, 3] }',
+                   'a = "dist(A, P) = 2"\nb = "dist(B, Q) = 2"\nd = "dist(P, Q) = 3"\nc = "dist(D, C) = 1"')
+    (group,) = compile_groups(scene).groups
+    assert set(group.points) == {"P", "Q", "D"} and set(group.constraints) == {"a", "b", "c", "d", "D.1", "D.2"}
+
+
+def test_a_group_after_a_dyad_with_too_few_equations_is_named_with_its_counts():
+    scene = _scene('A = { fixed = [0, 0] }\nB = { fixed = [4, 0] }\nP = { unknown = true }\n'
+                   'D = { dyad = ["A", "B"], lengths = [3, 3] }', 'a = "dist(D, P) = 3"')
+    with pytest.raises(SceneError) as caught:
         compile_groups(scene)
+    said = "constraints: the group of P has fewer equations than unknowns: 1 (a) for 2 (P_x, P_y)"
+    assert said in str(caught.value) and "\n" not in str(caught.value)
 
 
 def test_compile_scene_refuses_them_naming_the_command_that_takes_them():

@@ -121,7 +121,7 @@ def assembling(prepared: GroupScene, count: int, rng: random.Random, *, tries: i
     found: list[Sample] = []
     for sample in _samples(prepared, count * tries + 1, rng)[1:]:
         try:
-            if all(prepared.modes(sample)):
+            if prepared.configurations(sample) if prepared.later() else all(prepared.modes(sample)):
                 found.append(sample)
         except ComputationError:  # modes meet exactly there: not a sample to compare at
             continue
@@ -136,13 +136,12 @@ def configurations(prepared: GroupScene, sample: Sample, points: dict[str, tuple
     input's, the groups' unknowns and, for each ``points`` entry, the point's coordinates under
     the names given; none where the sample is not generic (modes meet there)."""
     try:
-        found = prepared.modes(sample, bits=bits)
+        found = prepared.configurations(sample, bits=bits)
     except ComputationError:
         return []
     unknowns = {u for g in prepared.compiled.groups for u in g.unknowns}  # not a linear form's variable
-    combos: list[dict[str, flint.arb]] = [sample.balls(bits)]
-    for group in found:
-        combos = [dict(c, **{u: v for u, v in m.values.items() if u in unknowns}) for c in combos for m in group]
+    combos = [dict(sample.balls(bits), **{u: v for m in c for u, v in m.values.items() if u in unknowns})
+              for c in found]
     with flint.ctx.workprec(bits):
         for values in combos:
             for name, (vx, vy) in (points or {}).items():

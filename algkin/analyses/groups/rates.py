@@ -114,6 +114,11 @@ def rates_of_groups(derivation: GroupDerivation, *, samples: int = SAMPLES, seed
     prepared = derivation.prepared
     if prepared.input is None or derivation.reference is None:  # a structure: nothing moves
         raise UsageError("scene", prepared.scene.name, "rates need points that move with an input; none does")
+    later = sorted(prepared.later())
+    if later:  # its own equations hold the earlier groups' unknowns, which move too: the chain rule is not taken yet
+        group = prepared.compiled.groups[later[0]]
+        raise UsageError("scene", prepared.scene.name, f"its group of {', '.join(group.points)} is solved after "
+                         "another: rates of groups solved in turn are not taken yet")
     mark = time.perf_counter()
     implicit = [implicit_of(prepared, k) for k in range(len(prepared.solutions))]
     forms = tuple(_forms(prepared, k, f) for k, f in enumerate(implicit))

@@ -26,15 +26,15 @@ import attrs
 import flint
 import sympy
 
-from ...eliminate.group import GroupSolution, Mode, modes, solve_group
+from ...eliminate.group import GroupSolution, Mode, modes, modes_in_sequence, solve_group
 from ...eliminate.group.algebra import pseudo_remainder
-from ...errors import ComputationError, SceneError, UsageError
+from ...errors import ComputationError, UsageError
 from ...scene import Input, Scene
 from ...scene.groups import Groups, compile_groups
 from ...scene.load import as_scene
 from ...system.convert import flint_context, to_flint
 
-__all__ = ["GroupScene", "Sample", "prepare_groups", "on_circle", "REFERENCE_CANDIDATES"]
+__all__ = ["GroupScene", "Sample", "prepare_groups", "solve_in_order", "on_circle", "REFERENCE_CANDIDATES"]
 
 REFERENCE_CANDIDATES = 8
 """Evenly spaced inputs (and an angle's multiples of 90 degrees) tried for the reference sample."""
@@ -92,9 +92,40 @@ class GroupScene:
 
     def modes(self, sample: Sample, *, bits: int = 128) -> list[tuple[Mode, ...]]:
         """Each group's real modes at ``sample``, certified (a ComputationError where the
-        sample is not generic: two modes meet there)."""
+        sample is not generic: two modes meet there); a group solved after another (its
+        equations hold an earlier group's points): its modes under each real configuration of
+        the earlier ones, in turn."""
         exact = sample.exact()
-        return [modes(s, {p: exact[p] for p in s.parameters}, bits=bits) for s in self.solutions]
+        later = self.later()
+        combinations = self.configurations(sample, bits=bits) if later else []
+        found = []
+        for k, solution in enumerate(self.solutions):
+            if k not in later:
+                found.append(modes(solution, {p: exact[p] for p in solution.parameters}, bits=bits))
+                continue
+            seen = {id(c[k]): c[k] for c in combinations}
+            found.append(tuple(seen.values()))
+        return found
+
+    def configurations(self, sample: Sample, *, bits: int = 128) -> list[tuple[Mode, ...]]:
+        """Every real configuration at ``sample``: one mode per group, a later group's found at
+        each configuration of the groups before it (``modes_in_sequence``), certified."""
+        return modes_in_sequence(self.solutions, sample.exact(), bits=bits)
+
+    def chain(self, index: int) -> list[int]:
+        """Group ``index`` and every group it is solved after (whose unknowns its equations hold,
+        and theirs), in order."""
+        held = {index}
+        for k in range(index, -1, -1):
+            if k in held:
+                parameters = set(self.solutions[k].parameters)
+                held |= {j for j in range(k) if parameters & set(self.solutions[j].unknowns)}
+        return sorted(held)
+
+    def later(self) -> set[int]:
+        """The groups solved after another: their equations hold an earlier group's unknowns."""
+        earlier = {u for s in self.solutions for u in s.unknowns}
+        return {k for k, s in enumerate(self.solutions) if set(s.parameters) & earlier}
 
     def reference(self) -> Sample:
         """The sample with the most real modes among evenly spaced inputs (an angle's multiples
@@ -108,7 +139,8 @@ class GroupScene:
         for value in dict.fromkeys(candidates):
             sample = self.sample(value)
             try:
-                found = sum(len(m) for m in self.modes(sample))
+                # groups in sequence: the configurations (a later group's modes vary with the earlier's)
+                found = len(self.configurations(sample)) if self.later() else sum(len(m) for m in self.modes(sample))
             except ComputationError:  # modes meet there
                 continue
             if found > count:
@@ -125,9 +157,9 @@ def _span_exact(spec: Input) -> tuple[Fraction, Fraction]:
 
 
 def prepare_groups(scene: Scene | str, *, command: str = "this command") -> GroupScene:
-    """``scene`` (a Scene, a catalog name or a path) with its groups solved. A SceneError where
-    a group holds points of an earlier one (groups in sequence, not supported yet); a
-    UsageError where the points move with more than one input (``command`` named)."""
+    """``scene`` (a Scene, a catalog name or a path) with its groups solved, in order (a later
+    group's parameters hold the earlier groups' unknowns); a UsageError where the points move
+    with more than one input (``command`` named)."""
     scene = as_scene(scene)
     compiled = compile_groups(scene)
     solutions = tuple(_solution(compiled, k) for k in range(len(compiled.groups)))
@@ -141,14 +173,16 @@ def prepare_groups(scene: Scene | str, *, command: str = "this command") -> Grou
 
 
 def _solution(compiled: Groups, index: int) -> GroupSolution:
-    """The group's rational univariate representation; its equations may hold inputs, not an earlier group's points."""
+    """The group's rational univariate representation; its parameters are the inputs' variables
+    and the unknowns of the earlier groups its equations hold."""
+    return solve_in_order(compiled, index)
+
+
+def solve_in_order(compiled: Groups, index: int) -> GroupSolution:
+    """The rational univariate representation of group ``index``, every other name its equations
+    hold (an input's variable, an earlier group's unknown) a parameter."""
     group = compiled.groups[index]
     names = sorted({str(v) for e in group.equations for v in e.free_symbols} - set(group.unknowns))
-    earlier = [u for g in compiled.groups[:index] for u in g.unknowns if u in names]
-    if earlier:
-        raise SceneError(compiled.scene.source, "constraints", f"the group of {', '.join(group.points)} is held by "
-                         f"points of an earlier group ({', '.join(earlier)}): groups solved in sequence are not "
-                         "supported yet")
     ctx = flint_context(group.unknowns + tuple(names))
     return solve_group([to_flint(e, ctx) for e in group.equations], group.unknowns)
 

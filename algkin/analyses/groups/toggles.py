@@ -23,12 +23,16 @@ from typing import Any
 
 import attrs
 import flint
+import sympy
 
-from ...eliminate.group import GroupSolution
+from ...eliminate import eliminate
+from ...eliminate.group import GroupSolution, modes_in_balls
+from ...eliminate.group.samples import ball_value
 from ...eliminate.group.algebra import coefficients, linear_relation
 from ...errors import ComputationError, UsageError
 from ...runtime.frozen import FrozenDict, frozen
 from ...scene import Scene
+from ...system import symbol
 from ...system.convert import flint_context, to_flint
 from ...system.roots import RealRoot, real_roots
 from .scene import GroupScene, prepare_groups
@@ -91,8 +95,9 @@ def toggles_groups(scene: Scene | str | GroupScene) -> GroupToggles:
     if prepared.input is None:
         raise UsageError("scene", prepared.scene.name, "moves with no input: its groups have no toggles to find")
     found: list[GroupToggle] = []
+    later = prepared.later()
     for index, solution in enumerate(prepared.solutions):
-        found += _group_toggles(prepared, index, solution)
+        found += _later_toggles(prepared, index) if index in later else _group_toggles(prepared, index, solution)
     found.sort(key=lambda t: t.value)
     unit = "deg" if prepared.input.is_angle else "length"
     return GroupToggles(prepared.scene, prepared.input.name, unit, prepared.input.span, tuple(found),
@@ -124,6 +129,63 @@ def _group_toggles(prepared: GroupScene, index: int, solution: GroupSolution) ->
     if angle:
         found += _half_turn(prepared, index, solution)
     return found
+
+
+LATER = ("a group solved after another: its discriminant holds 0 in balls at a real configuration of the "
+         "earlier groups there (not certified)")
+
+
+def _later_toggles(prepared: GroupScene, index: int) -> list[GroupToggle]:
+    """Toggles of a group solved after others (a dyad on a triad's joint): the real roots in range
+    of the eliminant, in the input alone, of the equations of the group and those it is solved
+    after with its Jacobian's determinant; kept where, at a real configuration of the earlier
+    groups there (their modes in balls), the group's discriminant holds 0; dropped where it is
+    certified nonzero at every one (a meeting of complex modes, or no meeting)."""
+    assert prepared.input is not None
+    angle = prepared.input.is_angle
+    groups = prepared.compiled.groups
+    chain = prepared.chain(index)
+    group = groups[index]
+    jacobian = sympy.Matrix([[sympy.diff(e, symbol(u)) for u in group.unknowns] for e in group.equations]).det()
+    equations = [e for k in chain for e in groups[k].equations] + [sympy.expand(jacobian)]
+    param = "t_" if angle else prepared.variables[0]
+    if angle:
+        c, s, t = (symbol(v) for v in (*prepared.variables, param))
+        half = {c: (1 - t**2) / (1 + t**2), s: 2 * t / (1 + t**2)}
+        equations = [sympy.numer(sympy.together(e.xreplace(half))) for e in equations]
+    result = eliminate(equations, [u for k in chain for u in groups[k].unknowns], [param])
+    eliminant, _ = result.exact
+    solution = prepared.solutions[index]
+    discriminant = solution.eliminant.to_flint().discriminant(solution.variable)
+    lo, hi = prepared.input.span
+    found = []
+    for factor, _ in eliminant.factor()[1]:
+        if factor.is_constant():
+            continue
+        poly = flint.fmpq_poly([c.coeffs()[0] if not c.is_zero() else 0 for c in coefficients(factor, param)])
+        for root in real_roots(poly, bits=BITS):
+            value = _shown(root.ball, angle)
+            if _inside(value, lo, hi, angle) and _meets(prepared, chain[:-1], discriminant, root.ball):
+                found.append(GroupToggle(float(value.mid()), value.str(12), group.points,
+                                         str(factor).replace("^", "**"), root.index, False, LATER))
+    return found
+
+
+def _meets(prepared: GroupScene, chain: Sequence[int], discriminant: flint.fmpq_mpoly, t: flint.arb) -> bool:
+    """Whether, at the input ``t`` (a ball), the discriminant may vanish at some real configuration
+    of the groups in ``chain`` (True too where those cannot be told apart there)."""
+    with flint.ctx.workprec(BITS):
+        inputs = _input_balls(prepared.variables, t)
+        combinations: list[dict[str, flint.arb]] = [dict(inputs)]
+        try:
+            for k in chain:
+                solution = prepared.solutions[k]
+                combinations = [dict(c, **m.values) for c in combinations
+                                for m in modes_in_balls(solution, {}, {p: c[p] for p in solution.parameters},
+                                                        bits=BITS)]
+        except ComputationError:
+            return True
+        return any(ball_value(discriminant, c).contains(0) for c in combinations)
 
 
 def _in_input(poly: flint.fmpq_mpoly, variables: Sequence[str], names: tuple[str, str]) -> flint.fmpq_mpoly:

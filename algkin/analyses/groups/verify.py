@@ -6,7 +6,9 @@ modes come from its eliminant (``GroupScene.modes``: real roots certified, the o
 their lifts); independently (``algkin.verify.groups``, which never sees the eliminant) its
 original equations are solved by Newton's method from many random starts and every root is
 proved in balls. Every proved root must match exactly one mode (their balls overlap) and every
-mode one root: none missing, none extra. It passes only when something was compared.
+mode one root: none missing, none extra. It passes only when something was compared. A group
+solved after others (a dyad on a triad's joint) is solved with their equations, all at once:
+each proved root matched to one configuration of them all.
 
 >>> found = verify_groups("3rpr", samples=4)
 >>> found.verification["passed"], found.verification["compared"] > 0
@@ -61,17 +63,21 @@ def verify_groups(scene: Scene | str | GroupScene, *, samples: int = 40, seed: i
     rng = random.Random(seed)
     drawn = _draw(prepared, samples, rng)
     tally = _Tally()
-    for index, group in enumerate(prepared.compiled.groups):
+    groups = prepared.compiled.groups
+    for index, group in enumerate(groups):
         inputs = {n: v for n, v in prepared.compiled.inputs.items() if set(v) & set(prepared.variables)}
-        expected = [_expected(prepared, sample, index) for sample in drawn]
+        chain = prepared.chain(index)  # a later group with the groups it is solved after: their equations together
+        unknowns = tuple(u for k in chain for u in groups[k].unknowns)
+        equations = tuple(e for k in chain for e in groups[k].equations)
+        expected = [_expected(prepared, sample, index, chain) for sample in drawn]
         usable = [k for k, e in enumerate(expected) if e is not None]
-        found = real_solutions(group.unknowns, group.equations, inputs, [drawn[k].exact() for k in usable],
+        found = real_solutions(unknowns, equations, inputs, [drawn[k].exact() for k in usable],
                                np.random.default_rng(seed))
         for k, roots in zip(usable, found):
             modes = expected[k]
             assert modes is not None
             if len(roots) < len(modes):  # a root Newton's starts missed: more starts, once
-                roots = real_solutions(group.unknowns, group.equations, inputs, [drawn[k].exact()],
+                roots = real_solutions(unknowns, equations, inputs, [drawn[k].exact()],
                                        np.random.default_rng(seed + k + 1), starts=STARTS * RETRY)[0]
             tally.compare(", ".join(group.points), drawn[k], modes, roots)
         tally.skipped += len(drawn) - len(usable)
@@ -90,14 +96,20 @@ def _draw(prepared: GroupScene, count: int, rng: random.Random) -> list[Sample]:
                     for _ in range(count - len(found))]
 
 
-def _expected(prepared: GroupScene, sample: Sample, index: int) -> list[Mapping[str, flint.arb]] | None:
-    """The group's modes at ``sample`` from its eliminant (None where modes meet exactly there)."""
+def _expected(prepared: GroupScene, sample: Sample, index: int, chain: Sequence[int]
+              ) -> list[Mapping[str, flint.arb]] | None:
+    """The group's modes at ``sample`` from its eliminant (None where modes meet exactly there);
+    a later group's: with those of the groups in its ``chain``, one per configuration of them."""
+    groups = prepared.compiled.groups
     try:
-        found = prepared.modes(sample, bits=192)[index]
+        if len(chain) == 1:
+            found = prepared.modes(sample, bits=192)[index]
+            return [{u: m.values[u] for u in groups[index].unknowns} for m in found]
+        configurations = prepared.configurations(sample, bits=192)
     except ComputationError:
         return None
-    unknowns = prepared.compiled.groups[index].unknowns
-    return [{u: m.values[u] for u in unknowns} for m in found]
+    distinct = {tuple(id(c[k]) for k in chain): c for c in configurations}
+    return [{u: c[k].values[u] for k in chain for u in groups[k].unknowns} for c in distinct.values()]
 
 
 @attrs.define

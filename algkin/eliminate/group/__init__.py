@@ -5,8 +5,8 @@ every other unknown rational in it (``group.solve``); ``modes`` gives, at ration
 the parameters, every real solution in certified balls (``group.samples``).
 """
 
-from .samples import ball_modes, modes
+from .samples import modes, modes_in_balls, modes_in_sequence
 from .records import GroupSolution, Lift, Mode, Polynomial
 from .solve import solve_group
 
-__all__ = ["solve_group", "modes", "ball_modes", "GroupSolution", "Lift", "Mode", "Polynomial"]
+__all__ = ["solve_group", "modes", "modes_in_balls", "modes_in_sequence", "GroupSolution", "Lift", "Mode", "Polynomial"]

@@ -421,12 +421,15 @@ def report_group_derive(d: Document) -> str:
     lines = [f"scene {d['scene']}  (points solved together: {len(d['groups'])} group(s))"]
     for group in d["groups"]:
         lines.append(f"group {', '.join(group['points'])} ({', '.join(group['constraints'])}):")
+        after = f" and {', '.join(group['after'])}" if group.get("after") else ""
         lines.append(f"  eliminant in {group['variable']}, degree {group['degree']} "
-                     f"(inputs as parameters; {_dropped(len(group['dropped_factors']))}):")
+                     f"(inputs{after} as parameters; {_dropped(len(group['dropped_factors']))}):")
         lines.append(f"      {_brief(group['eliminant'])} = 0")
         lines += [f"  {u} = {_brief(v)}" for u, v in group["lifts"].items()]
         where = f" at {reference['input']} = {reference['shown']}" if reference else ""
-        lines.append(f"  modes{where}: {group['real_modes']} real of {group['complex_count']} complex")
+        each = f" ({group['complex_count']} complex for each configuration of {', '.join(group['after'])})" \
+            if group.get("after") else f" of {group['complex_count']} complex"
+        lines.append(f"  modes{where}: {group['real_modes']} real{each}")
         for mode in group["modes"]:
             lines.append(f"    [{mode['label']}] {group['variable']} = {_brief(mode['values'][group['variable']])}"
                          f" = {mode['value']}")
