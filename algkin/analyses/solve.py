@@ -383,7 +383,7 @@ def _configurations(compiled: Groups, solutions: Sequence[GroupSolution], exact:
     bits = int(digits * 3.33) + 64
     undecided = None
     for _ in range(RAISES):
-        with flint.ctx.workprec(2 * bits):  # the inputs' balls narrower than the roots are refined to
+        with flint.ctx.workprec(2 * bits):  # as narrow as the eliminant's coefficients are computed (modes_in_balls)
             inputs = _ball_inputs(compiled, at)
         inexact = {v: b for v, b in inputs.items() if v not in exact}
         with flint.ctx.workprec(bits):

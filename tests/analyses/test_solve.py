@@ -223,6 +223,13 @@ def _triad_poses(theta):
     return poses
 
 
+def _on_the_triad(configuration):
+    """Whether the configuration keeps the catalog scene's lengths, to 1e-27."""
+    (ax, ay), (bx, by), (cx, cy), (fx, fy) = ([mpmath.mpf(v) for v in configuration.points[p]] for p in "ABCF")
+    return all(abs(e) < 1e-27 for e in (ax ** 2 + ay ** 2 - 1, (bx - 4) ** 2 + by ** 2 - mpmath.mpf(49) / 4,
+                                        (bx - ax) ** 2 + (by - ay) ** 2 - 9, (cx - fx) ** 2 + (cy - fy) ** 2 - 9))
+
+
 @pytest.mark.parametrize("theta", [10, 200, 350])
 def test_the_triad_at_any_angle_has_the_loop_equations_real_solutions(theta):
     found = solve("stephenson-iii-triad", at={"theta": theta}, digits=30).configurations
@@ -230,12 +237,18 @@ def test_the_triad_at_any_angle_has_the_loop_equations_real_solutions(theta):
         poses = _triad_poses(theta)
         assert len(found) == len(poses) > 0
         for configuration in found:
-            (ax, ay), (bx, by), (cx, cy), (fx, fy) = ([mpmath.mpf(v) for v in configuration.points[p]] for p in "ABCF")
-            assert abs(ax ** 2 + ay ** 2 - 1) < 1e-27  # the catalog scene's lengths
-            assert abs((bx - 4) ** 2 + by ** 2 - mpmath.mpf(49) / 4) < 1e-27
-            assert abs((bx - ax) ** 2 + (by - ay) ** 2 - 9) < 1e-27
-            assert abs((cx - fx) ** 2 + (cy - fy) ** 2 - 9) < 1e-27
-            assert any(_close((ax, ay, bx, by), (*a, *b), 1e-27) for a, b in poses)
+            assert _on_the_triad(configuration)
+            a, b = ([mpmath.mpf(v) for v in configuration.points[p]] for p in "AB")
+            assert any(_close((*a, *b), (*pa, *pb), 1e-27) for pa, pb in poses)
+
+
+def test_the_triad_a_ten_thousandth_of_a_degree_before_its_toggle_is_certified():
+    """Two modes meet between 32.3086 and 32.3087 degrees, their roots a thousandth apart:
+    the balls still tell them apart, and past the toggle that nothing assembles."""
+    found = solve("stephenson-iii-triad", at={"theta": "32.3086"}, digits=30).configurations
+    with mpmath.workdps(40):
+        assert len(found) == 2 and all(_on_the_triad(c) for c in found)
+    assert solve("stephenson-iii-triad", at={"theta": "32.3087"}).configurations == ()
 
 
 def test_a_thousand_digits_are_certified_too():

@@ -124,7 +124,9 @@ def modes_in_balls(solution: GroupSolution, at: Mapping[str, flint.fmpq], balls:
         if missing:
             raise UsageError("at", sorted(given), f"needs a value for every parameter; missing {', '.join(missing)}")
         eliminant = solution.eliminant.to_flint()
-        parts = [ball_value(c, given) for c in coefficients(eliminant, solution.variable)]
+        with flint.ctx.workprec(2 * bits):  # rounded far below the roots' tolerance: near a toggle (a small
+            # derivative) a root moves by a coefficient's error over the derivative there
+            parts = [ball_value(c, given) for c in coefficients(eliminant, solution.variable)]
         while len(parts) > 1 and parts[-1].is_zero():
             parts.pop()
         if len(parts) - 1 != solution.complex_count or parts[-1].contains(0):
