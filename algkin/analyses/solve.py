@@ -10,7 +10,8 @@ toggle whose cosine is irrational) is a ComputationError, never a guess.
 Points solved together (``unknown = true``, ``algkin.scene.groups``): each group's equations
 are solved by ``solve_group`` (an eliminant in one unknown, the others rational in its root) with
 the inputs as parameters, and its real modes at the inputs' exact values isolated and certified
-(``modes``); a configuration is one mode of each group, labelled by a sign per leg (see
+(``modes``), or, where an angle's cos and sin are irrational, at their balls (``modes_in_balls``,
+the precision raised until the roots are told apart, and real or not); a configuration is one mode of each group, labelled by a sign per leg (see
 ``_mode_labels``), and ``complex_count`` counts the complex solutions.
 
 Nothing assembling at the inputs is a valid answer, not a failure: no configurations (exit 0).
@@ -350,8 +351,10 @@ def _distance(p: Sequence[flint.arb], q: Sequence[flint.arb]) -> flint.arb:
 
 
 def _exact_inputs(compiled: Groups, at: Mapping[str, Fraction]) -> dict[str, flint.fmpq]:
-    """Each used input's variables exactly: a length as it is, an angle's cos and sin where they
-    are rational (multiples of 90 degrees); the eliminant's real roots are isolated over QQ."""
+    """Each used input's variables exactly where they are rational: a length as it is, an angle's
+    cos and sin at multiples of 90 degrees (the eliminant's real roots are then isolated over QQ).
+    Any other angle's are left out: given in balls (``_ball_inputs``), its group's roots isolated
+    in balls."""
     exact: dict[str, flint.fmpq] = {}
     for name, value in at.items():
         variables = compiled.inputs[name]
@@ -359,9 +362,6 @@ def _exact_inputs(compiled: Groups, at: Mapping[str, Fraction]) -> dict[str, fli
             exact[variables[0]] = flint.fmpq(value.numerator, value.denominator)
         elif value % 90 == 0:
             exact.update(zip(variables, map(flint.fmpq, quarter_turn(value))))
-        else:
-            raise UsageError("at", f"{name}={value}", "with points solved together an angle needs rational cos and "
-                             "sin, for now: a multiple of 90 degrees")
     return exact
 
 
@@ -377,13 +377,26 @@ def _group_solution(compiled: Groups, index: int) -> GroupSolution:
 def _configurations(compiled: Groups, solutions: Sequence[GroupSolution], exact: Mapping[str, flint.fmpq],
                     at: Mapping[str, Fraction], digits: int) -> list[tuple[str, Configuration]]:
     """Every real configuration (one mode per group, a later group's at each configuration of the
-    earlier ones: ``modes_in_sequence``), labelled, its points ``digits`` narrow."""
+    earlier ones: ``modes_in_sequence``), labelled, its points ``digits`` narrow. An input not in
+    ``exact`` (an angle's irrational cos and sin) is given in balls, the precision raised until its
+    group's roots are told apart, and real or not."""
     bits = int(digits * 3.33) + 64
+    undecided = None
     for _ in range(RAISES):
-        with flint.ctx.workprec(bits):
+        with flint.ctx.workprec(2 * bits):  # as narrow as the eliminant's coefficients are computed (modes_in_balls)
             inputs = _ball_inputs(compiled, at)
+        inexact = {v: b for v, b in inputs.items() if v not in exact}
+        with flint.ctx.workprec(bits):
+            try:
+                combinations = modes_in_sequence(solutions, exact, balls=inexact, bits=bits)
+            except ComputationError as err:
+                if not inexact:
+                    raise
+                undecided, bits = err, bits * 2
+                continue
+            undecided = None
             labelled = []
-            for combination in modes_in_sequence(solutions, exact, bits=bits):
+            for combination in combinations:
                 values = dict(inputs)
                 for group_mode in combination:
                     values.update({u: v for u, v in group_mode.values.items()})
@@ -396,6 +409,9 @@ def _configurations(compiled: Groups, solutions: Sequence[GroupSolution], exact:
                 return [(" ".join(n[i] for n in names), _written(" ".join(n[i] for n in names), points, digits))
                         for i, (_, points, _) in enumerate(labelled)]
         bits *= 2
+    if undecided is not None:
+        raise ComputationError(f"{compiled.scene.name} at {_said(at)}: {undecided} (at {bits // 2} bits; "
+                               "an input at a toggle?)")
     raise ComputationError(f"{compiled.scene.name} at {_said(at)}: the coordinates did not narrow to {digits} "
                            f"digits at {bits // 2} bits")
 

@@ -143,6 +143,12 @@ def test_a_mode_that_does_not_assemble_at_the_start_is_refused():
         follow("fourbar-nongrashof", mode="left", start={"theta": 150}, stop=0)
 
 
+def test_a_triad_mode_is_followed_from_an_angle_with_irrational_cos():
+    """Once refused: points solved together took only multiples of 90 degrees."""
+    followed = follow("stephenson-iii-triad", mode="+++", start={"theta": 10}, stop=30)
+    assert (followed.samples[0].at, followed.samples[-1].at) == ("10", "30")
+
+
 def test_the_facade_exports_it():
     followed = algkin.follow("chebyshev-lambda", mode="right", start={"angle": 0}, stop=90)
     assert type(followed) is algkin.Followed and followed.mode == "right" and followed.samples[-1].at == "90"

@@ -176,7 +176,8 @@ def test_gosselins_3rpr_has_six_real_modes_each_labelled_and_one_asked_by_its_la
     assert one == found.configurations[2]
 
 
-def test_an_angle_with_irrational_cos_is_refused_beside_points_solved_together():
+def test_an_angle_with_irrational_cos_is_solved_in_balls_beside_points_solved_together():
+    """Once refused (only multiples of 90 degrees); P is where the circles about A and D meet."""
     scene = load_scene_text('''
 [inputs]
 t = { range = [0, 360] }
@@ -190,8 +191,64 @@ a = "dist(A, P) = 2"
 b = "dist(D, P) = 2"
 ''', "crank.toml")
     assert len(solve(scene, at={"t": 90}).configurations) == 2
-    with pytest.raises(UsageError, match="multiple of 90 degrees"):
-        solve(scene, at={"t": 30})
+    found = solve(scene, at={"t": 30}, digits=30).configurations
+    with mpmath.workdps(40):
+        a = (mpmath.cos(mpmath.pi / 6), mpmath.sin(mpmath.pi / 6))
+        expected = _circles(a, 2, (3, 0), 2)
+        assert len(found) == 2
+        assert all(any(_close(c.points["P"], e, 1e-28) for c in found) for e in expected)
+
+
+def _triad_poses(theta):
+    """stephenson-iii-triad's real configurations (A, B) at theta degrees, solved independently of
+    the eliminant: A = (cos a, sin a) on its crank, B where the circles of radius 3 about A and 7/2
+    about D meet (either), and C = A + (B - A)/2 + rot90(B - A)/2 at distance 3 from F: a function of
+    a alone whose sign changes over a fine scan are refined by mpmath's root finder."""
+    f = (-1 + 2 * mpmath.cos(mpmath.radians(theta)), 5 + 2 * mpmath.sin(mpmath.radians(theta)))
+
+    def pose(alpha, side):
+        a = (mpmath.cos(alpha), mpmath.sin(alpha))
+        b = _circles(a, 3, (4, 0), mpmath.mpf(7) / 2)[side]
+        c = (a[0] + (b[0] - a[0]) / 2 - (b[1] - a[1]) / 2, a[1] + (b[1] - a[1]) / 2 + (b[0] - a[0]) / 2)
+        return a, b, (c[0] - f[0]) ** 2 + (c[1] - f[1]) ** 2 - 9
+
+    poses = []
+    steps = [2 * mpmath.pi * k / 720 for k in range(721)]
+    for side in (0, 1):
+        residual = [pose(alpha, side)[2] for alpha in steps]
+        for k in range(720):
+            if residual[k] * residual[k + 1] < 0:
+                alpha = mpmath.findroot(lambda x: pose(x, side)[2], (steps[k], steps[k + 1]), solver="anderson")
+                poses.append(pose(alpha, side)[:2])
+    return poses
+
+
+def _on_the_triad(configuration):
+    """Whether the configuration keeps the catalog scene's lengths, to 1e-27."""
+    (ax, ay), (bx, by), (cx, cy), (fx, fy) = ([mpmath.mpf(v) for v in configuration.points[p]] for p in "ABCF")
+    return all(abs(e) < 1e-27 for e in (ax ** 2 + ay ** 2 - 1, (bx - 4) ** 2 + by ** 2 - mpmath.mpf(49) / 4,
+                                        (bx - ax) ** 2 + (by - ay) ** 2 - 9, (cx - fx) ** 2 + (cy - fy) ** 2 - 9))
+
+
+@pytest.mark.parametrize("theta", [10, 200, 350])
+def test_the_triad_at_any_angle_has_the_loop_equations_real_solutions(theta):
+    found = solve("stephenson-iii-triad", at={"theta": theta}, digits=30).configurations
+    with mpmath.workdps(40):
+        poses = _triad_poses(theta)
+        assert len(found) == len(poses) > 0
+        for configuration in found:
+            assert _on_the_triad(configuration)
+            a, b = ([mpmath.mpf(v) for v in configuration.points[p]] for p in "AB")
+            assert any(_close((*a, *b), (*pa, *pb), 1e-27) for pa, pb in poses)
+
+
+def test_the_triad_a_ten_thousandth_of_a_degree_before_its_toggle_is_certified():
+    """Two modes meet between 32.3086 and 32.3087 degrees, their roots a thousandth apart:
+    the balls still tell them apart, and past the toggle that nothing assembles."""
+    found = solve("stephenson-iii-triad", at={"theta": "32.3086"}, digits=30).configurations
+    with mpmath.workdps(40):
+        assert len(found) == 2 and all(_on_the_triad(c) for c in found)
+    assert solve("stephenson-iii-triad", at={"theta": "32.3087"}).configurations == ()
 
 
 def test_a_thousand_digits_are_certified_too():

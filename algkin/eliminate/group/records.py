@@ -102,7 +102,8 @@ class Mode:
     ball, certified; ``index``: its place among the real roots of the eliminant, in increasing
     order; ``root``: that root exactly (its irreducible factor and rank), its ball the variable's;
     None for a group solved after another, whose parameters took an earlier mode's balls (the
-    mode is then told by its ``index`` under that earlier mode).
+    mode is then told by its ``index`` under that earlier mode), or at an input known only as a
+    ball (an angle's irrational cos and sin).
     The exact root is the mode's identity: the balls, like a ``RealRoot``'s, are not compared
     (nor hashed: a ball is no exact number)."""
 

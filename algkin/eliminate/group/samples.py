@@ -124,7 +124,9 @@ def modes_in_balls(solution: GroupSolution, at: Mapping[str, flint.fmpq], balls:
         if missing:
             raise UsageError("at", sorted(given), f"needs a value for every parameter; missing {', '.join(missing)}")
         eliminant = solution.eliminant.to_flint()
-        parts = [ball_value(c, given) for c in coefficients(eliminant, solution.variable)]
+        with flint.ctx.workprec(2 * bits):  # rounded far below the roots' tolerance: near a toggle (a small
+            # derivative) a root moves by a coefficient's error over the derivative there
+            parts = [ball_value(c, given) for c in coefficients(eliminant, solution.variable)]
         while len(parts) > 1 and parts[-1].is_zero():
             parts.pop()
         if len(parts) - 1 != solution.complex_count or parts[-1].contains(0):
@@ -162,21 +164,37 @@ def _real(root: flint.acb, roots: Sequence[flint.acb]) -> bool:
 
 
 def modes_in_sequence(solutions: Sequence[GroupSolution], at: Mapping[str, flint.fmpq], *,
-                      bits: int = 128) -> list[tuple[Mode, ...]]:
+                      balls: Mapping[str, flint.arb] | None = None, bits: int = 128) -> list[tuple[Mode, ...]]:
     """Every real configuration of groups solved in turn (``solutions`` in dependency order, a
     later group's parameters the inputs ``at`` and earlier groups' unknowns): one mode per group,
     a later group's modes found at each earlier combination's balls (``modes_in_balls``), the
-    first groups' over QQ (``modes``). Combinations in order: the first group's modes outermost."""
+    first groups' over QQ (``modes``). Combinations in order: the first group's modes outermost.
+    ``balls``: inputs known only as balls (an angle's irrational cos and sin): a group holding one
+    is solved in balls too (``modes_in_balls``'s ComputationError where they are too wide to tell).
+
+    >>> import flint
+    >>> from .solve import solve_group
+    >>> ctx = flint.fmpq_mpoly_ctx.get(("x", "y", "r"), "lex")
+    >>> x, y, r = ctx.gens()
+    >>> solution = solve_group([x**2 + y**2 - r, x - 2*y], ["x", "y"])
+    >>> with flint.ctx.workprec(256):   # the balls narrower than the 128 bits the roots are refined to
+    ...     r_ball = flint.arb.pi() * 5    # so y = -+sqrt(pi)
+    >>> found = modes_in_sequence([solution], {}, balls={"r": r_ball})
+    >>> [round(float(m.values["y"]), 6) for m, in found]
+    [-1.772454, 1.772454]
+    """
     known = {u for s in solutions for u in s.unknowns}
+    inexact = dict(balls or {})
     combinations: list[tuple[Mode, ...]] = [()]
     for solution in solutions:
         held = [p for p in solution.parameters if p in known]
-        if not held:
+        given = {p: inexact[p] for p in solution.parameters if p in inexact}
+        if not held and not given:
             own = modes(solution, {p: at[p] for p in solution.parameters}, bits=bits)
             combinations = [c + (m,) for c in combinations for m in own]
             continue
         combinations = [c + (m,) for c in combinations
-                        for m in modes_in_balls(solution, at, _values(c, held), bits=bits)]
+                        for m in modes_in_balls(solution, at, _values(c, held) | given, bits=bits)]
     return combinations
 
 
