@@ -1,8 +1,8 @@
 """A scene with points solved together (``unknown = true``), for drawing: its parts, its modes and their paths.
 
 Nothing here solves anew. The configurations at an input are ``algkin solve``'s (certified), or,
-where ``solve`` cannot take the input (an angle off the multiples of 90 degrees), the end of a
-certified continuation to it (``algkin follow``). A mode's path over the input's range is
+where ``solve`` cannot decide them (an input a hair from a toggle), the end of a certified
+continuation to it (``algkin follow``). A mode's path over the input's range is
 ``follow``'s: from a start where ``solve`` finds the mode (evenly spaced inputs), each way to
 the range's ends or to where the mode meets another (a toggle, reported by ``follow`` and never
 crossed). Between the certified steps' ends the path is filled in for drawing by float Newton

@@ -106,7 +106,7 @@ def test_the_triad_page_agrees_with_solve_and_follow(pages):
     label = "+++ (from theta = 0°)"
     state, circles, _ = load(pages / "stephenson-iii-triad.html", query(theta=0, branch=label))
     close(state["positions"], solved("stephenson-iii-triad", {"theta": 0})["+++"])
-    # solve takes an angle at multiples of 90 degrees here; follow (certified) goes to 20 degrees
+    # the page's paths are follow's (certified continuation from 0 degrees) to 20 degrees
     state, circles, _ = load(pages / "stephenson-iii-triad.html", query(theta=20, branch=label))
     path = follow("stephenson-iii-triad", mode="+++", start={"theta": 0}, stop=20, digits=20)
     expected = {p: (float(x), float(y)) for p, (x, y) in path.samples[-1].points.items()}
