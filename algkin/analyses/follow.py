@@ -23,7 +23,7 @@ samples are the proven steps' ends, each point's coordinates as decimal strings.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal, localcontext
 from fractions import Fraction
 from typing import Any
@@ -47,6 +47,10 @@ from .frozen import deep_frozen, thawed
 from .solve import DIGITS, MAX_DIGITS, decimal_text, input_value, quarter_turn, solve
 
 __all__ = ["follow", "Followed", "FollowedSample"]
+
+MAX_INPUT_DIGITS = 40
+"""The most digits an input value is written with to tell it from its neighbours (a step is
+never shorter than 2^-36 of the span)."""
 
 
 @attrs.frozen
@@ -130,7 +134,8 @@ def follow(scene: Scene | str, *, mode: str, start: Mapping[str, Any], stop: Any
     guess = [float(configuration.points[u[:-2]][u.endswith("_y")]) for u in system.unknowns]
     step = None if max_step is None else _step(max_step)
     path = follower.follow(guess, t0, t1, known=[known[p] for p in parameters], max_step=step, deadline=deadline)
-    samples = tuple(_sample(system, variables, path, k, known, digits) for k in range(len(path.samples)))
+    inputs = _input_texts([sample.t for sample in path.samples], digits)
+    samples = tuple(_sample(system, variables, path, k, known, digits, at=inputs[k]) for k in range(len(path.samples)))
     meeting = None if path.meeting is None else _meeting(path, digits)
     return Followed(scene.name, configuration.mode, name, t0, t1, digits, samples, path.steps,
                     "reached" if meeting is None else "meets", meeting)
@@ -212,8 +217,28 @@ def _input_balls(variables: tuple[str, ...], value: Fraction) -> dict[str, flint
     return {variables[0]: radians.cos(), variables[1]: radians.sin()}
 
 
+def _input_texts(values: Sequence[Fraction], digits: int) -> list[str]:
+    """Each input value (exact) in decimal: ``digits`` significant digits, more where two
+    neighbours (steps near a meeting are short) would read the same.
+
+    >>> _input_texts([Fraction(6), Fraction(7922781, 10**6), Fraction(7922782, 10**6)], 6)
+    ['6', '7.922781', '7.922782']
+    """
+    def text(value: Fraction, shown: int) -> str:
+        return decimal_text(flint.arb(flint.fmpq(value.numerator, value.denominator)), shown)
+
+    texts = []
+    for k, value in enumerate(values):
+        neighbours = [v for v in values[max(k - 1, 0):k + 2] if v != value]
+        shown = digits
+        while shown < MAX_INPUT_DIGITS and any(text(v, shown) == text(value, shown) for v in neighbours):
+            shown += 1
+        texts.append(text(value, shown))
+    return texts
+
+
 def _sample(system: _Equations, variables: tuple[str, ...], path: Path, index: int,
-            known: Mapping[str, flint.arb], digits: int) -> FollowedSample:
+            known: Mapping[str, flint.arb], digits: int, *, at: str) -> FollowedSample:
     """A sample's points in balls from its unknowns' enclosures and the input, written to ``digits``."""
     sample = path.samples[index]
     with flint.ctx.workprec(BITS):
@@ -223,8 +248,7 @@ def _sample(system: _Equations, variables: tuple[str, ...], path: Path, index: i
     radii = [float(b.rad()) for xy in points.values() for b in xy]
     radius = math.nextafter(max(radii, default=0.0), math.inf) if any(radii) else 0.0
     shown = {p: (decimal_text(x, digits), decimal_text(y, digits)) for p, (x, y) in points.items()}
-    at = flint.arb(flint.fmpq(sample.t.numerator, sample.t.denominator))
-    return FollowedSample(decimal_text(at, digits), shown, radius, sample.values)
+    return FollowedSample(at, shown, radius, sample.values)
 
 
 def _meeting(path: Path, digits: int) -> dict[str, Any]:

@@ -97,6 +97,8 @@ def test_3rpr_modes_followed_along_a_leg_meet_where_the_discriminant_vanishes(me
         assert hi - lo < Fraction(1, 10**6)
         assert [root for root in meetings if lo <= root[0] and root[1] <= hi], (lo, hi, meetings)
         ends.append((lo, hi))
+        inputs = [sample.at for sample in followed.samples]  # steps near the meeting are short:
+        assert len(set(inputs)) == len(inputs)  # each still written so it reads apart from its neighbours
     assert len(ends) == 2 and max(lo for lo, _ in ends) <= min(hi for _, hi in ends)  # they meet each other
 
 
