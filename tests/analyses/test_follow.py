@@ -97,9 +97,15 @@ def test_3rpr_modes_followed_along_a_leg_meet_where_the_discriminant_vanishes(me
         assert hi - lo < Fraction(1, 10**6)
         assert [root for root in meetings if lo <= root[0] and root[1] <= hi], (lo, hi, meetings)
         ends.append((lo, hi))
-        inputs = [sample.at for sample in followed.samples]  # steps near the meeting are short:
-        assert len(set(inputs)) == len(inputs)  # each still written so it reads apart from its neighbours
     assert len(ends) == 2 and max(lo for lo, _ in ends) <= min(hi for _, hi in ends)  # they meet each other
+
+
+def test_inputs_near_a_meeting_are_written_apart_from_their_neighbours():
+    """Steps near a meeting are short: each input still reads apart from the next, whatever ``digits``."""
+    followed = follow("3rpr", mode="---", start={"r1": 6}, stop=12, digits=6)
+    inputs = [sample.at for sample in followed.samples]
+    assert len(set(inputs)) == len(inputs) and inputs[0] == "6"
+    assert all(len(sample.points["P1"][0].replace(".", "").lstrip("0")) <= 6 for sample in followed.samples)
 
 
 def test_3rpr_a_mode_followed_where_the_discriminant_has_no_root_reaches_its_end(meetings):
