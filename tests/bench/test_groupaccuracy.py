@@ -43,8 +43,9 @@ def test_the_injected_clock_gives_the_times():
     assert str(DIGITS) in result.to_json()["reference"]
 
 
-def test_the_cli_prints_rows_and_json(capsys):
-    assert main(["accuracy", "3rpr", "--samples", "10", "--json"]) == 0
+def test_the_cli_prints_rows_and_json_and_plots_them(capsys, tmp_path):
+    assert main(["accuracy", "3rpr", "--samples", "10", "--json", "--plot", str(tmp_path / "a.png")]) == 0
+    assert (tmp_path / "a.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     document = json.loads(capsys.readouterr().out)
     assert document["point"] == "P1, P2" and len(document["rows"]) == 9
     assert main(["accuracy", "3rpr", "--of", "P1"]) == 2
