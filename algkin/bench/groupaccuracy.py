@@ -151,12 +151,14 @@ def _distance(a: Configuration, b: Configuration) -> Fraction:
     return max(abs(a[k] - b[k]) for k in a)
 
 
-def _row(strategy: str, case: str, times: list[float], errors: list[tuple[Fraction, Fraction]], *,
+def _row(strategy: str, case: str, samples: int, times: list[float], errors: list[tuple[Fraction, Fraction]], *,
          compared: int, missed: int, unsolved: int = 0, note: str = "") -> dict[str, Any]:
+    """One strategy's figures on one case: ``times`` of the evaluations (their median), ``errors``
+    as (distance, the configuration's size) pairs."""
     worst = max((float(e) for e, _ in errors), default=float("nan"))
     relative = max((float(e / s) if s else float(e) for e, s in errors), default=float("nan"))
-    row: dict[str, Any] = {"strategy": strategy, "case": case, "samples": len(times),
-                           "ns_per_sample": statistics.median(times) * 1e9, "max_abs_error": worst,
+    row: dict[str, Any] = {"strategy": strategy, "case": case, "samples": samples,
+                           "ns_per_sample": statistics.median(times) * 1e9 if times else float("nan"), "max_abs_error": worst,
                            "max_rel_error": relative, "compared": compared, "missed": missed}
     if unsolved:
         row["unsolved"] = unsolved
@@ -211,7 +213,7 @@ class _Case:
             times.append(spent)
             c, m = self._compare([self._placed(f, k) for f in found], k, errors)
             compared, missed = compared + c, missed + m
-        return _row("eliminant-roots", self.name, times, errors, compared=compared, missed=missed)
+        return _row("eliminant-roots", self.name, len(self.values), times, errors, compared=compared, missed=missed)
 
     def _newton(self) -> dict[str, Any]:
         errors: list[tuple[Fraction, Fraction]] = []
@@ -219,6 +221,8 @@ class _Case:
         previous: dict[str, np.ndarray] = {}
         for k, value in enumerate(self.values):
             starts = {label: previous.get(label, self._unknowns(truth)) for label, truth in self.reference[k]}
+            if not starts:  # no mode to continue here: nothing to time either
+                continue
             found, spent = self._timed(lambda: {label: self.floats.newton(x, [float(value)]) for label, x in starts.items()})
             times.append(spent)
             for label, truth in self.reference[k]:
@@ -230,8 +234,9 @@ class _Case:
                 size = max(abs(v) for v in truth.values())
                 errors.append((_distance(truth, self._placed(dict(zip(self.floats.unknowns, map(float, x))), k)), size))
                 compared += 1
-        note = "each mode started from the reference at its first sample, then from its previous value"
-        return _row("newton", self.name, times, errors, compared=compared, missed=missed, unsolved=unsolved, note=note)
+        note = ("each mode started from the reference at its first sample, then from its previous value; "
+                "near a toggle it can cross onto the other mode (its error then the modes' distance)")
+        return _row("newton", self.name, len(self.values), times, errors, compared=compared, missed=missed, unsolved=unsolved, note=note)
 
     def _unknowns(self, truth: Configuration) -> np.ndarray:
         """The unknowns' floats in a reference configuration (each unknown is a point's coordinate)."""
@@ -246,7 +251,7 @@ class _Case:
             times.append(spent)
             c, m = self._compare([f for _, f in found], k, errors)
             compared, missed = compared + c, missed + m
-        return _row("certified", self.name, times, errors, compared=compared, missed=missed)
+        return _row("certified", self.name, len(self.values), times, errors, compared=compared, missed=missed)
 
 
 def _inputs(prepared: GroupScene, samples: int, rng: np.random.Generator) -> dict[str, list[Fraction]]:
