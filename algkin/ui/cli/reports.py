@@ -256,12 +256,26 @@ def report_show(d: Document) -> str:
              "points: " + ", ".join(f"{n} ({k})" for n, k in d["points"].items()),
              "unknowns: " + ", ".join(d["system"]["unknowns"]),
              "parameters: " + (", ".join(d["system"]["parameters"]) or "none (all exact)"),
-             "inputs: " + ", ".join(f"{n} as ({v['cos']}, {v['sin']})" for n, v in d["inputs"].items()),
+             "inputs: " + ", ".join(_input_said(n, v) for n, v in d["inputs"].items()),
              *[f"geared: {n} = {g['ratio']}*{g['driven_by']}" for n, g in d.get("geared", {}).items()],
              "equations (= 0):"]
     lines += [f"  {eq}" for eq in d["system"]["equations"]]
     lines += [f"never assembles: {point}: {why}" for point, why in d.get("never_assembles", {}).items()]
+    for group in d.get("groups", ()):
+        lines.append(f"solved together: {', '.join(group['points'])} (unknowns {', '.join(group['unknowns'])}; "
+                     f"constraints {', '.join(group['constraints'])})")
     return "\n".join(lines)
+
+
+def _input_said(name: str, variables: Mapping[str, str]) -> str:
+    """An input and its variables: an angle as its (cos, sin), a length as itself.
+
+    >>> _input_said("theta", {"cos": "c_theta", "sin": "s_theta"}), _input_said("s", {"value": "s"})
+    ('theta as (c_theta, s_theta)', 's (a length)')
+    """
+    if "value" in variables:
+        return f"{name} (a length)"
+    return f"{name} as ({variables['cos']}, {variables['sin']})"
 
 
 def latex_lines(forms: Iterable[Form]) -> str:
