@@ -62,7 +62,7 @@ class Derivation:
         for piece, shown in zip((p for p in followed.pieces if p.status != "no-assembly"), document["pieces"]):
             branch = followed.branch_of(piece, self.branches) if piece.status == "mode" else None
             shown["branch"] = branch.label if branch else None
-            shown["values"] = {k: str(v) for k, v in branch.values.items()} if branch else {}
+            shown["values"] = branch.shown_values() if branch else {}
         return document
 
     def _json(self) -> Json:
