@@ -55,8 +55,9 @@ def test_latex_of_derive_curve_and_extremum(tmp_path):
     derived = run_cli(["derive", "chebyshev-lambda", "--outputs", "B", "--samples", "0", "--latex"], tmp_path)
     assert derived.returncode == 0, derived.stderr
     result = algkin.derive("chebyshev-lambda", ["B"], samples=0)
-    for elimination in result.eliminations.values():
-        assert sympy.latex(elimination.polynomial) + " = 0" in derived.stdout
+    for reduced in result.eliminants_reduced.values():  # on the circle, and labelled so
+        assert sympy.latex(reduced) + " = 0" in derived.stdout
+    assert "reduced on c^2 + s^2 = 1" in derived.stdout
     assert "\\sqrt" in derived.stdout and "\\frac" in derived.stdout
     curve = run_cli(["curve", "chebyshev-lambda", "--point", "P", "--samples", "0", "--latex"], tmp_path)
     assert curve.returncode == 0, curve.stderr
