@@ -3,10 +3,11 @@
 from collections.abc import Callable, Mapping
 
 import sympy
+from sympy.core.mul import _keep_coeff
 
 from ..scene.implicit.algebra import Circles, reduce_on_circles
 
-__all__ = ["reducer", "tidy_ratio", "tidy_product", "tidy_sqrt"]
+__all__ = ["reducer", "tidy_ratio", "tidy_product", "tidy_sqrt", "readable"]
 
 
 def reducer(substitution: Mapping[sympy.Symbol, sympy.Expr], inputs: Circles) -> Callable[[sympy.Expr], sympy.Expr]:
@@ -48,3 +49,41 @@ def tidy_sqrt(expr: sympy.Expr) -> sympy.Expr:
         return sympy.sqrt(expr)
     outside, inside = sympy.sqrt(content).as_coeff_Mul()  # sqrt(200) = 10 * sqrt(2)
     return outside * sympy.sqrt(sympy.expand(inside**2 * part))
+
+
+def readable(expr: sympy.Expr) -> sympy.Expr:
+    """``expr`` as written for a reader: each sum that is a factor (of a numerator, a denominator, under
+    a root) primitive with integer coefficients, the rational contents gathered in one number in front of
+    each term; the same function of the same symbols (sympy spreads ``9/2*(5 - 3*c)`` back into
+    ``45/2 - 27*c/2``, and a dimension like 3/2 puts such contents everywhere).
+
+    >>> c, s = sympy.symbols("c s")
+    >>> readable(3*s / (16*(sympy.Rational(45, 2) - sympy.Rational(27, 2)*c)) + c/2)
+    c/2 + s/(24*(5 - 3*c))
+    >>> readable(sympy.sqrt((sympy.Rational(9, 2) - 3*c/2) * (c + 1)))
+    sqrt(6)*sqrt((3 - c)*(c + 1))/2
+    """
+    if expr.is_Add:  # a sum of terms: each term read apart (a content pulled out of them all reads worse)
+        return sympy.Add(*[readable(term) for term in expr.args])
+    return _keep_coeff(*_content_and_part(expr))
+
+
+def _content_and_part(expr: sympy.Expr) -> tuple[sympy.Expr, sympy.Expr]:
+    """``(k, p)`` with ``expr = k * p``, ``k`` a number and every sum among ``p``'s factors primitive."""
+    if expr.is_Number:
+        return expr, sympy.Integer(1)
+    if expr.is_Atom:
+        return sympy.Integer(1), expr
+    if expr.is_Add:
+        terms = readable(expr)
+        return terms.primitive() if terms.is_Add else _content_and_part(terms)
+    if expr.is_Mul:
+        parts = [_content_and_part(factor) for factor in expr.args]
+        return sympy.Mul(*[k for k, _ in parts]), sympy.Mul(*[p for _, p in parts])
+    if expr.is_Pow:
+        content, part = _content_and_part(expr.base)
+        if expr.exp.is_Integer:
+            return content**expr.exp, part**expr.exp
+        # a root: sympy takes the root of the number out of the product by itself
+        return sympy.Pow(_keep_coeff(content, part), expr.exp).as_coeff_Mul()
+    return sympy.Integer(1), expr.func(*[readable(a) for a in expr.args])

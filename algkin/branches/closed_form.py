@@ -21,7 +21,7 @@ from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled
 from ..scene.implicit.algebra import Circles, reduce_on_circles
 from ..system import symbol
-from .algebra import tidy_ratio
+from .algebra import readable, tidy_ratio
 from .constructions import algebra_of
 
 __all__ = ["Branch", "closed_forms"]
@@ -47,16 +47,21 @@ class Branch:
     def valid_when(self) -> str:
         """Where the branch is real, each discriminant without its positive numeric factor (a square's
         base != 0)."""
+        shown = {p: readable(d) for p, d in self.discriminants.items()}
         return " & ".join(f"({d.base} != 0)" if p in self.squares and d.is_Pow else
-                          f"({_without_positive_number(d)} >= 0)" for p, d in self.discriminants.items()) or "True"
+                          f"({_without_positive_number(d)} >= 0)" for p, d in shown.items()) or "True"
+
+    def shown_values(self) -> dict[str, str]:
+        """Each closed form as text, every factor primitive with integer coefficients (``readable``)."""
+        return {k: str(readable(v)) for k, v in self.values.items()}
 
     def to_json(self) -> dict[str, object]:
         return {
             "label": self.label,
             "labels": dict(self.labels),
-            "values": {k: str(v) for k, v in self.values.items()},
+            "values": self.shown_values(),
             "valid_when": self.valid_when,
-            "discriminants": {k: str(v) for k, v in self.discriminants.items()},
+            "discriminants": {k: str(readable(v)) for k, v in self.discriminants.items()},
             "selected": self.selected,
         }
 

@@ -9,10 +9,12 @@ from collections.abc import Iterable, Mapping
 from typing import Any, Union
 
 import attrs
+import sympy
 
 from ..branches import Branch
 from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled
+from ..scene.implicit.algebra import reduce_on_circles
 from ..system import inputs_json
 from ..verify import Verification
 from .modes import Followed
@@ -50,6 +52,18 @@ class Derivation:
     certified: tuple[Certified, ...] = attrs.field(default=(), converter=_intervals)
     modes: tuple[Followed, ...] = ()  # the modes the scene names by a configuration, followed
 
+    @property
+    def eliminants_reduced(self) -> dict[str, sympy.Expr]:
+        """Each eliminant reduced on its inputs' circles (``s**2 -> 1 - c**2`` for each input's
+        ``c**2 + s**2 = 1``): the same polynomial where the inputs are angles, with fewer terms.
+        ``eliminations`` keeps each as eliminated (``c**2 + s**2`` unreduced).
+
+        >>> import algkin
+        >>> algkin.derive("arm-string").eliminants_reduced["AB"]
+        AB**2 + 56000*c_theta + 280000*s_theta - 288900
+        """
+        return {u: reduce_on_circles(e.polynomial, self.compiled.circles) for u, e in self.eliminations.items()}
+
     def to_json(self) -> Json:
         document = self._json()
         if self.modes:  # a key of its own: a scene without modes gives the document it always gave
@@ -62,7 +76,7 @@ class Derivation:
         for piece, shown in zip((p for p in followed.pieces if p.status != "no-assembly"), document["pieces"]):
             branch = followed.branch_of(piece, self.branches) if piece.status == "mode" else None
             shown["branch"] = branch.label if branch else None
-            shown["values"] = {k: str(v) for k, v in branch.values.items()} if branch else {}
+            shown["values"] = branch.shown_values() if branch else {}
         return document
 
     def _json(self) -> Json:
@@ -75,6 +89,7 @@ class Derivation:
             "system": system.to_json(),
             "outputs": {n: list(v) for n, v in self.compiled.outputs.items()},
             "eliminants": {u: str(e.polynomial) for u, e in self.eliminations.items()},
+            "eliminants_reduced": {u: str(p) for u, p in self.eliminants_reduced.items()},  # on c**2 + s**2 = 1
             "eliminant_figures": {u: _figures(e) for u, e in self.eliminations.items()},
             "branches": [dict(b.to_json(), certified=None if c is None else [dict(i) for i in c])
                          for b, c in zip(self.branches, self.certified)],

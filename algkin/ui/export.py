@@ -36,7 +36,7 @@ from collections.abc import Sequence
 import sympy
 
 from ..runtime import suggest
-from ..branches import Branch, closed_forms
+from ..branches import Branch, closed_forms, readable
 from ..branches.stable import StableBranch, output_forms
 from ..derivation.modes import resolve_modes
 from ..errors import UsageError
@@ -170,8 +170,8 @@ def _latex(compiled: Compiled, branches: Sequence[Branch]) -> str:
     for branch in branches:
         lines += [comment(f"branch {branch.label}" + (" (the scene's)" if branch.selected else ""), "latex"),
                   r"\begin{align*}"]
-        rows = [f"{sympy.latex(sympy.Symbol(u))} &= {sympy.latex(branch.values[u])}" for u in wanted]
-        rows += [rf"&\text{{{latex_text(point)} assembles where }} {sympy.latex(d)} \ge 0"
+        rows = [f"{sympy.latex(sympy.Symbol(u))} &= {sympy.latex(readable(branch.values[u]))}" for u in wanted]
+        rows += [rf"&\text{{{latex_text(point)} assembles where }} {sympy.latex(readable(d))} \ge 0"
                  for point, d in branch.discriminants.items()]
         lines += [" \\\\\n".join(rows), r"\end{align*}", ""]
     return "\n".join(lines)

@@ -273,6 +273,7 @@ def _shown_groups(scene: Scene, args: argparse.Namespace) -> dict[str, object]:
 
 
 def _cmd_derive(args: argparse.Namespace) -> Outcome:
+    from ...branches import readable
     from ...derivation.pipeline import derive
 
     out = _full_forms_target(args)
@@ -280,8 +281,8 @@ def _cmd_derive(args: argparse.Namespace) -> Outcome:
     if together is not None:
         return _finish(args, out, *group_derive(args, together))
     result = derive(_scene_of(args), args.outputs, **_engine(args))
-    forms = [(f"eliminant of {u}", e.polynomial, "= 0") for u, e in result.eliminations.items()]
-    forms += [(f"{u}, branch {b.label}", v, "") for b in result.branches for u, v in b.values.items()]
+    forms = [(f"eliminant of {u}, reduced on c^2 + s^2 = 1", p, "= 0") for u, p in result.eliminants_reduced.items()]
+    forms += [(f"{u}, branch {b.label}", readable(v), "") for b in result.branches for u, v in b.values.items()]
     document: Document = result.to_json()
     code = _verdict(result.verification)
     if args.rates:

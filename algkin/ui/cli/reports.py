@@ -315,11 +315,15 @@ def _timings_line(t: Mapping[str, float]) -> str:
 
 def report_derive(d: Document) -> str:
     """``algkin derive``'s text: the eliminants' figures, each branch's closed forms, the verification."""
-    lines = [f"scene {d['scene']}  (method {d['method']}, backend {d['backend']})", "eliminants:"]
-    for unknown, poly in d["eliminants"].items():
+    reduced = "eliminants_reduced" in d  # shorter: c**2 + s**2 gone; the figures stay the eliminated ones
+    shown = d["eliminants_reduced"] if reduced else d["eliminants"]
+    lines = [f"scene {d['scene']}  (method {d['method']}, backend {d['backend']})",
+             "eliminants, reduced on each input's circle c**2 + s**2 = 1 (--json: eliminants as eliminated, "
+             "eliminants_reduced):" if reduced else "eliminants:"]
+    for unknown, poly in shown.items():
         figures = d["eliminant_figures"][unknown]
         lines.append(f"  {unknown}: {_brief(poly)}")
-        lines.append(f"      degree {figures['degree']}, {figures['terms']} terms, "
+        lines.append(f"      as eliminated: degree {figures['degree']}, {figures['terms']} terms, "
                      f"{figures['coefficient_bits']}-bit coefficients, "
                      + _dropped(len(figures['dropped_factors'])))
     lines.append("branches:")
@@ -330,7 +334,7 @@ def report_derive(d: Document) -> str:
     for mode in d.get("modes", ()):
         lines += _mode_lines(mode)
     lines.append(verification_line(d["verification"]))
-    forms = [*d["eliminants"].values(), *(f for b in d["branches"] for f in (b["valid_when"], *b["values"].values()))]
+    forms = [*shown.values(), *(f for b in d["branches"] for f in (b["valid_when"], *b["values"].values()))]
     if "rates" in d:
         lines += _rates_lines(d)
         forms += [f for b in d["rates"].values() for r in b.values() for f in r.values()]

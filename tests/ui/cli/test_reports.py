@@ -36,7 +36,7 @@ def test_short_forms_stay_whole_with_no_hint(tmp_path):
     result = run_cli(["derive", "arm-string", "--samples", "0"], tmp_path)
     assert result.returncode == 0, result.stderr
     document = algkin.derive("arm-string", samples=0).to_json()
-    for form in [*document["eliminants"].values(), *document["branches"][0]["values"].values()]:
+    for form in [*document["eliminants_reduced"].values(), *document["branches"][0]["values"].values()]:
         assert f": {form}\n" in result.stdout or f" = {form}\n" in result.stdout
     assert "full forms" not in result.stdout
 
@@ -55,8 +55,9 @@ def test_latex_of_derive_curve_and_extremum(tmp_path):
     derived = run_cli(["derive", "chebyshev-lambda", "--outputs", "B", "--samples", "0", "--latex"], tmp_path)
     assert derived.returncode == 0, derived.stderr
     result = algkin.derive("chebyshev-lambda", ["B"], samples=0)
-    for elimination in result.eliminations.values():
-        assert sympy.latex(elimination.polynomial) + " = 0" in derived.stdout
+    for reduced in result.eliminants_reduced.values():  # on the circle, and labelled so
+        assert sympy.latex(reduced) + " = 0" in derived.stdout
+    assert "reduced on c^2 + s^2 = 1" in derived.stdout
     assert "\\sqrt" in derived.stdout and "\\frac" in derived.stdout
     curve = run_cli(["curve", "chebyshev-lambda", "--point", "P", "--samples", "0", "--latex"], tmp_path)
     assert curve.returncode == 0, curve.stderr
