@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import io
 import os
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import TYPE_CHECKING, Any, TypeVar, Union
 
 import numpy as np
@@ -28,10 +28,12 @@ from ..scene.load import as_scene
 from .plot import FORMATS as FIGURE_FORMATS, new_figure
 
 if TYPE_CHECKING:
+    from matplotlib.artist import Artist
     from matplotlib.axes import Axes
     from matplotlib.contour import QuadContourSet
     from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
+    from numpy.typing import NDArray
 
     from ..analyses.motion import Motion, Pose, Trajectories
     from ..derivation.pipeline import CurveResult
@@ -75,6 +77,11 @@ class PoseArtists:
                        for name in motion.points[0]}
         self.blocked = axes.text(0.5, 0.5, "", transform=axes.transAxes, ha="center", va="center",
                                  color="tab:red", fontsize="large", visible=False)
+
+    def all(self) -> list[Artist]:
+        """Every artist made, for an animation that redraws only them."""
+        return [*self.bars, *self.strings, *self.guides, self.ground, self.joints, *self.labels.values(),
+                self.blocked]
 
     def show(self, pose: Pose) -> None:
         """Move every artist to ``pose``; where it cannot assemble, only the red text is shown."""
@@ -183,16 +190,18 @@ class LiveFigure:
     A move sets the artists' data (``PoseArtists``) and the title. Every branch is swept
     again (for the trajectories and the limits) only when a dimension changed; a new
     branch only picks its sweep. So a slider costs an evaluation and a render, not a new figure.
-    ``title``: pose -> the text above the axes.
+    ``title``: pose -> the text above the axes. ``every_mode``: the limits hold every assembly
+    mode (a mode switched by a slider keeps the scale), else only the drawn one (an animation).
     """
 
     def __init__(self, motion: Motion, parameters: Mapping[str, float] | None = None, branch: str | None = None,
-                 title: Callable[[Pose], str] | None = None) -> None:
+                 title: Callable[[Pose], str] | None = None, *, every_mode: bool = True) -> None:
         self.motion, self.title = motion, title or _pose_title(motion)
         self.parameters = motion.complete(None, parameters)[1]
         self.branch = motion.branches[motion.branch_index(branch)].label
         self.sweeps = _sweeps(motion, self.parameters)
-        self.bounds = _bounds(motion, self.parameters, self.sweeps)
+        self.every_mode = every_mode
+        self.bounds = self._fit()
         self.figure = new_figure()
         self._layout = self.figure.get_layout_engine()
         # A figure shaped like the mechanism's reach, so equal scales leave little empty space.
@@ -203,6 +212,12 @@ class LiveFigure:
         self.artists = PoseArtists(self.axes, motion)
         _finish(self.axes, "")
         self._limit()
+
+    def _fit(self, parameters: Mapping[str, float] | None = None, branch: str | None = None) -> Bounds:
+        """The box of every mode's sweep, or of ``branch``'s (the drawn one's) alone."""
+        branch = branch or self.branch
+        sweeps = self.sweeps if self.every_mode else {branch: self.sweeps[branch]}
+        return _bounds(self.motion, parameters or self.parameters, sweeps)
 
     def _limit(self) -> None:
         self._relayout = True
@@ -216,9 +231,9 @@ class LiveFigure:
 
     def show(self, pose: Pose) -> Pose:
         """Move the figure to ``pose`` (a ``Motion.at`` or ``Motion.poses`` configuration)."""
-        if pose.parameters != self.parameters:
+        if pose.parameters != self.parameters or (not self.every_mode and pose.branch != self.branch):
             self.sweeps = _sweeps(self.motion, pose.parameters)
-            self.bounds = _bounds(self.motion, pose.parameters, self.sweeps)
+            self.bounds = self._fit(pose.parameters, pose.branch)
             self._limit()
         if (pose.parameters, pose.branch) != (self.parameters, self.branch):
             for name, line in self.paths.items():
@@ -305,7 +320,11 @@ def _panels_size(bounds: Bounds, count: int, width: float = 3.6, tallest: float 
 
 def animate(motion: Motion, out: PathT, parameters: Mapping[str, float] | None = None, branch: str | None = None,
             frames: int = 72, fps: int = 24) -> PathT:
-    """Turn the first input through its range and write ``out`` (.gif with pillow, .mp4 with ffmpeg)."""
+    """Turn the first input through its range and write ``out`` (.gif with pillow, .mp4 with ffmpeg).
+
+    The axes are fitted to the drawn assembly mode. The still parts (axes, ticks, trajectories)
+    are rendered once; each frame restores them and draws only the moving artists (blitting).
+    """
     import pathlib
 
     from matplotlib import animation
@@ -314,19 +333,56 @@ def animate(motion: Motion, out: PathT, parameters: Mapping[str, float] | None =
     if suffix == ".mp4" and not animation.writers.is_available("ffmpeg"):
         raise UsageError("--out", str(out), "an .mp4 needs ffmpeg on PATH (not found); write a .gif instead")
     name = next(iter(motion.inputs))
-    # One figure moved frame by frame: the artists' data change, nothing is drawn anew.
     shown = motion.inputs[name].shown
-    live = LiveFigure(motion, parameters, branch, title=lambda pose: f"{motion.scene.name}: {name} = {shown(pose.inputs[name])}")
-
-    def frame(pose: Pose) -> None:  # no artists returned: no blitting, the whole frame is drawn
-        live.show(pose)
-
-    movie = animation.FuncAnimation(live.figure, frame, frames=motion.poses(parameters, branch, frames),
-                                    cache_frame_data=False)
-    writer = animation.PillowWriter(fps=fps) if suffix == ".gif" else animation.FFMpegWriter(fps=fps)
+    live = LiveFigure(motion, parameters, branch, every_mode=False,
+                      title=lambda pose: f"{motion.scene.name}: {name} = {shown(pose.inputs[name])}")
+    poses = motion.poses(parameters, branch, frames)
     with atomic_output(out) as temporary:  # the writers infer the format from the kept suffix
-        movie.save(str(temporary), writer=writer, dpi=80)
+        if suffix == ".gif":
+            _write_gif(temporary, _frames(live, poses, dpi=80), fps)
+        else:
+            _write_mp4(temporary, live, poses, fps)
     return out
+
+
+def _frames(live: LiveFigure, poses: Sequence[Pose], dpi: float) -> Iterator[NDArray[np.uint8]]:
+    """RGBA pixels of ``live`` moved to each of ``poses``, blitted on a background drawn once."""
+    live.figure.set_dpi(dpi)
+    moving = live.artists.all() + [live.axes.title]
+    live.show(poses[0])
+    canvas = live.figure.canvas
+    canvas.draw()  # the layout is computed here, once, then frozen
+    live.figure.set_layout_engine("none")
+    for artist in moving:
+        artist.set_animated(True)
+    canvas.draw()
+    background = canvas.copy_from_bbox(live.figure.bbox)  # type: ignore[attr-defined]  # Agg's
+    for pose in poses:
+        live.show(pose)
+        canvas.restore_region(background)  # type: ignore[attr-defined]
+        for artist in moving:
+            live.figure.draw_artist(artist)
+        yield np.array(canvas.buffer_rgba())  # type: ignore[attr-defined]
+
+
+def _write_gif(path: os.PathLike[str], pictures: Iterable[NDArray[np.uint8]], fps: int) -> None:
+    from PIL import Image
+
+    images = [Image.fromarray(p).convert("RGB") for p in pictures]
+    images[0].save(path, format="GIF", save_all=True, append_images=images[1:], duration=1000 / fps, loop=0)
+
+
+def _write_mp4(path: os.PathLike[str], live: LiveFigure, poses: Sequence[Pose], fps: int) -> None:
+    """Each pose drawn whole by matplotlib's ffmpeg writer, the layout computed once."""
+    from matplotlib import animation
+
+    writer = animation.FFMpegWriter(fps=fps)
+    with writer.saving(live.figure, os.fspath(path), dpi=80):
+        for k, pose in enumerate(poses):
+            live.show(pose)
+            writer.grab_frame()
+            if k == 0:
+                live.figure.set_layout_engine("none")
 
 
 def parse_inputs(motion: Motion, texts: Sequence[str]) -> dict[str, float]:

@@ -285,3 +285,29 @@ def test_each_traced_point_has_its_own_colour(tmp_path):
     assert len(colours) == 2 and len(set(colours.values())) == 2
     legend = {t.get_text(): h.get_color() for t, h in zip(figure.legends[0].get_texts(), figure.legends[0].legend_handles)}
     assert legend["trajectory of B (left)"] != legend["trajectory of P (left)"]
+
+
+def test_a_gif_moves_the_crank_in_every_frame_within_the_drawn_modes_box(tmp_path, monkeypatch):
+    from PIL import Image
+
+    import algkin.ui.draw as draw
+
+    made, original = [], draw.new_figure
+
+    def recorded():
+        made.append(original())
+        return made[-1]
+
+    monkeypatch.setattr(draw, "new_figure", recorded)
+    out = animate(Motion("chebyshev-lambda"), tmp_path / "turn.gif", frames=12)
+    with Image.open(out) as gif:
+        frames = []
+        for k in range(gif.n_frames):
+            gif.seek(k)
+            frames.append(np.asarray(gif.convert("RGB"), dtype=int))
+    # each frame differs from the one before (the crank turned) by more than a palette's noise
+    assert all(np.mean(np.abs(a - b).sum(axis=2) > 100) > 1e-3 for a, b in zip(frames, frames[1:]))
+    ys = [y for t in range(360) for _, y in fourbar(t, **CHEBYSHEV, branch="left").values()]
+    span = max(ys) - min(ys)
+    low, high = made[0].axes[0].get_ylim()
+    assert min(ys) - 0.15 * span <= low <= min(ys) and max(ys) <= high <= max(ys) + 0.15 * span
