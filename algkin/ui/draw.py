@@ -62,9 +62,11 @@ class PoseArtists:
     their data instead of drawing anew."""
 
     def __init__(self, axes: Axes, motion: Motion, color: str | None = None) -> None:
+        from matplotlib.patches import Circle
+
         # The scene's structure is read once: ``motion.guides`` substitutes into sympy.
         self.bar_ends, self.string_ends, self.guide_lines = motion.bars, motion.strings, motion.guides
-        self.fixed = motion.ground
+        self.motion, self.fixed = motion, motion.ground
         style = dict(_BAR, color=color) if color else _BAR
         self.bars = [axes.plot([], [], **style)[0] for _ in self.bar_ends]
         self.strings = [axes.plot([], [], color="tab:gray", linestyle="--", linewidth=1, zorder=1)[0]
@@ -75,32 +77,84 @@ class PoseArtists:
         self.joints = axes.plot([], [], linestyle="none", **_JOINT)[0]
         self.labels = {name: axes.annotate(name, (0, 0), textcoords="offset points", xytext=(6, 6), fontsize="small")
                        for name in motion.points[0]}
-        self.blocked = axes.text(0.5, 0.5, "", transform=axes.transAxes, ha="center", va="center",
-                                 color="tab:red", fontsize="large", visible=False)
+        self.blocked = axes.text(0.5, 0.97, "", transform=axes.transAxes, ha="center", va="top", color="tab:red",
+                                 fontsize="medium", visible=False, zorder=5,
+                                 bbox=dict(facecolor="white", edgecolor="none", alpha=0.8))
+        # The two circles that fail to meet where a dyad cannot assemble.
+        self.circles = [axes.add_patch(Circle((0, 0), 1, fill=False, color="tab:red", linestyle="--",
+                                              linewidth=1, zorder=1, visible=False)) for _ in range(2)]
 
     def all(self) -> list[Artist]:
         """Every artist made, for an animation that redraws only them."""
         return [*self.bars, *self.strings, *self.guides, self.ground, self.joints, *self.labels.values(),
-                self.blocked]
+                *self.circles, self.blocked]
 
     def show(self, pose: Pose) -> None:
-        """Move every artist to ``pose``; where it cannot assemble, only the red text is shown."""
-        at = {p: xy for p, xy in pose.points.items() if xy is not None}  # none where it cannot assemble
-        self.blocked.set_text(f"cannot assemble: {', '.join(pose.blocked)}")
+        """Move every artist to ``pose``; where it cannot assemble, what is built stays drawn, with
+        the two circles that fail to meet and a red text naming them."""
+        at = {p: xy for p, xy in pose.points.items() if xy is not None} if pose.assembles else built(self.motion, pose)
+        unmet = [] if pose.assembles else unmet_circles(self.motion, pose, at)
+        self.blocked.set_text(_blocked_text(pose, unmet))
         self.blocked.set_visible(not pose.assembles)
+        for patch, (_, center, _, radius) in zip(self.circles, unmet):
+            patch.set_center(at[center])
+            patch.set_radius(radius)
+        for k, patch in enumerate(self.circles):
+            patch.set_visible(k < len(unmet))
         for line, ends in zip(self.bars + self.strings, self.bar_ends + self.string_ends):
-            line.set_data(*_xy(at, ends))
+            line.set_data(*_xy(at, ends if all(e in at for e in ends) else ()))  # a bar half built is not drawn
         for line, (_, through, (dx, dy)) in zip(self.guides, self.guide_lines):
-            line.set_visible(pose.assembles)
-            if pose.assembles:
+            line.set_visible(through in at)
+            if through in at:
                 x, y = at[through]
                 line.set_xy1((x, y))
                 line.set_xy2((x + dx, y + dy))
         self.ground.set_data(*_xy(at, self.fixed))
         self.joints.set_data(*_xy(at, [p for p in at if p not in self.fixed]))
         for name, label in self.labels.items():
-            label.set_visible(pose.assembles)
+            label.set_visible(name in at)
             label.xy = at.get(name, (0, 0))
+
+
+Unmet = tuple[str, str, str, float]  # the blocked point, a circle's centre, its radius as written, its value
+
+
+def built(motion: Motion, pose: Pose) -> dict[str, tuple[float, float]]:
+    """The points of ``pose`` that are built even where it cannot assemble: those constructed
+    before the failing one and not from it (finite where the rest is nan)."""
+    points, _ = motion.evaluate(motion.branch_index(pose.branch), motion.values(pose.inputs, pose.parameters))
+    return {p: (float(x), float(y)) for p, (x, y) in points.items() if np.isfinite([x, y]).all()}
+
+
+def unmet_circles(motion: Motion, pose: Pose, at: Mapping[str, tuple[float, float]]) -> list[Unmet]:
+    """The two circles of the first blocked dyad whose centres are built: (point, centre, radius
+    as written, radius); none when the failing point is no dyad.
+
+    >>> from algkin.analyses.motion import Motion
+    >>> motion = Motion("fourbar")
+    >>> pose = motion.at({"theta": 180}, {"l": 0.75})
+    >>> [(p, c, r, round(v, 6)) for p, c, r, v in unmet_circles(motion, pose, built(motion, pose))]
+    [('B', 'A', 'l', 0.75), ('B', 'D', 'm', 3.5)]
+    """
+    from ..evaluate import NUMPY, evaluate
+    from ..scene.constructions import Dyad
+
+    values = motion.values(pose.inputs, pose.parameters)
+    for name in pose.blocked:
+        made = motion.scene.points[name]
+        if isinstance(made, Dyad) and all(b in at for b in made.bases):
+            return [(name, base, str(length), float(evaluate(length, values, NUMPY)))
+                    for base, length in zip(made.bases, made.lengths)]
+    return []
+
+
+def _blocked_text(pose: Pose, unmet: Sequence[Unmet]) -> str:
+    """What the red text says where ``pose`` cannot assemble."""
+    if not unmet:
+        return f"cannot assemble: {', '.join(pose.blocked)}"
+    (point, p, lp, vp), (_, q, lq, vq) = unmet
+    return (f"cannot assemble {point}:\nthe circles about {p} (radius {lp} = {vp:.4g}) "
+            f"and {q} (radius {lq} = {vq:.4g}) do not meet")
 
 
 def draw_pose(axes: Axes, motion: Motion, pose: Pose, color: str | None = None) -> PoseArtists:

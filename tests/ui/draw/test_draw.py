@@ -80,10 +80,17 @@ def test_both_assembly_modes_side_by_side():
         assert np.max(np.abs(joints(axes) - by_hand(200, side))) < 1e-12
 
 
-def test_cannot_assemble_is_said_not_drawn():
+def test_cannot_assemble_keeps_what_is_built_and_draws_the_circles_that_fail_to_meet():
+    # theta = 180: A = (-1, 0), D = (4, 0), |AD| = 5 > l + m = 0.75 + 3.5: no B
     figure = mechanism_figure(Motion("fourbar"), {"theta": 180}, {"l": 0.75}, curve=False)
-    texts = [t.get_text() for t in figure.axes[0].texts if t.get_visible()]
-    assert texts == ["cannot assemble: B"] and len(joints(figure.axes[0])) == 0
+    axes = figure.axes[0]
+    assert np.allclose(joints(axes), [(-1, 0), (0, 0), (4, 0)])  # A, O and D
+    assert any(line.get_xydata().shape == (2, 2) and np.allclose(line.get_xydata(), [(0, 0), (-1, 0)])
+               for line in axes.lines)  # the crank OA
+    circles = sorted((p.get_center(), p.get_radius()) for p in axes.patches if p.get_visible())
+    assert np.allclose([c for c, _ in circles], [(-1, 0), (4, 0)]) and np.allclose([r for _, r in circles], [0.75, 3.5])
+    [text] = [t.get_text() for t in axes.texts if t.get_visible() and t.get_text().startswith("cannot")]
+    assert text.startswith("cannot assemble B:\nthe circles about A (radius l = 0.75) and D (radius m = 3.5)")
 
 
 def test_gif_has_one_frame_per_angle(tmp_path):
