@@ -81,8 +81,10 @@ class PoseArtists:
                                  fontsize="medium", visible=False, zorder=5,
                                  bbox=dict(facecolor="white", edgecolor="none", alpha=0.8))
         # The two circles that fail to meet where a dyad cannot assemble.
-        self.circles = [axes.add_patch(Circle((0, 0), 1, fill=False, color="tab:red", linestyle="--",
-                                              linewidth=1, zorder=1, visible=False)) for _ in range(2)]
+        self.circles = [Circle((0, 0), 1, fill=False, color="tab:red", linestyle="--", linewidth=1, zorder=1,
+                               visible=False) for _ in range(2)]
+        for circle in self.circles:
+            axes.add_patch(circle)
 
     def all(self) -> list[Artist]:
         """Every artist made, for an animation that redraws only them."""
