@@ -225,9 +225,12 @@ def draw_curve(axes: Axes, result: CurveResult, bounds: Bounds, grid: int = 500,
     return contour
 
 
-def _finish(axes: Axes, title: str) -> None:
+def _finish(axes: Axes, title: str, unit: str = "") -> None:
     # Fixed limits on every drawing: the box, not the data limits, keeps the scales equal.
     axes.set_aspect("equal", adjustable="box")
+    if unit:  # the scene's lengths' unit (``unit = "mm"``)
+        axes.set_xlabel(f"$x$ ({unit})")
+        axes.set_ylabel(f"$y$ ({unit})")
     axes.grid(True, linewidth=0.3)
     axes.set_title(title, fontsize="medium", parse_math=False)  # a scene's name is text, never mathtext
 
@@ -266,7 +269,7 @@ class LiveFigure:
         self.axes = self.figure.add_subplot()
         self.paths = _trajectories(self.axes, motion, self.sweeps[self.branch], self.branch)
         self.artists = PoseArtists(self.axes, motion)
-        _finish(self.axes, "")
+        _finish(self.axes, "", motion.scene.unit)
         self._limit()
 
     def _fit(self, parameters: Mapping[str, float] | None = None, branch: str | None = None) -> Bounds:
@@ -359,7 +362,7 @@ def modes_figure(motion: Motion, inputs: Mapping[str, float] | None = None,
         draw_pose(axes, motion, motion.at(inputs, parameters, branch.label))
         axes.set_xlim(bounds[0], bounds[1])
         axes.set_ylim(bounds[2], bounds[3])
-        _finish(axes, f"{branch.label}" + (" (scene's choice)" if branch.selected else ""))
+        _finish(axes, f"{branch.label}" + (" (scene's choice)" if branch.selected else ""), motion.scene.unit)
         axes.label_outer()  # the shared y scale is read off the first panel
     angles = ", ".join(f"{n} = {motion.inputs[n].shown(v)}" for n, v in motion.complete(inputs)[0].items())
     figure.suptitle(f"{motion.scene.name}: assembly modes at {angles}", parse_math=False)

@@ -318,3 +318,9 @@ def test_a_gif_moves_the_crank_in_every_frame_within_the_drawn_modes_box(tmp_pat
     span = max(ys) - min(ys)
     low, high = made[0].axes[0].get_ylim()
     assert min(ys) - 0.15 * span <= low <= min(ys) and max(ys) <= high <= max(ys) + 0.15 * span
+
+
+def test_a_mechanism_drawing_says_the_scenes_unit_on_its_axes():
+    axes = mechanism_figure(Motion("chebyshev-lambda"), {"angle": 63}, curve=False).axes[0]
+    assert (axes.get_xlabel(), axes.get_ylabel()) == ("$x$ (mm)", "$y$ (mm)")
+    assert modes_figure(Motion("chebyshev-lambda")).axes[0].get_xlabel() == "$x$ (mm)"
