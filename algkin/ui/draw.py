@@ -62,21 +62,30 @@ class PoseArtists:
     their data instead of drawing anew."""
 
     def __init__(self, axes: Axes, motion: Motion, color: str | None = None) -> None:
-        from matplotlib.patches import Circle
+        from matplotlib.patches import Circle, Polygon
 
         # The scene's structure is read once: ``motion.guides`` substitutes into sympy.
         self.bar_ends, self.string_ends, self.guide_lines = motion.bars, motion.strings, motion.guides
-        self.motion, self.fixed = motion, motion.ground
+        self.motion, self.axes = motion, axes
+        # A fixed point that only places a slider's line is no pivot: the rail is drawn instead.
+        ends = {p for pair in self.bar_ends + self.string_ends for p in pair}
+        self.rail_only = {through for _, through, _ in self.guide_lines} - ends
+        self.fixed = [p for p in motion.ground if p not in self.rail_only]
         style = dict(_BAR, color=color) if color else _BAR
         self.bars = [axes.plot([], [], **style)[0] for _ in self.bar_ends]
         self.strings = [axes.plot([], [], color="tab:gray", linestyle="--", linewidth=1, zorder=1)[0]
                         for _ in self.string_ends]
-        self.guides = [axes.axline((0, 0), direction, color="tab:gray", linewidth=1, zorder=1)
-                       for _, _, direction in self.guide_lines]
+        # A rail: the slot's two edges, parallel to the slider's line; the block slides between them.
+        self.guides = [axes.axline((0, 0), direction, color="dimgray", linewidth=1.2, zorder=1)
+                       for _, _, direction in self.guide_lines for _ in range(2)]
+        self.blocks = [Polygon(np.zeros((4, 2)), closed=True, facecolor="lightgray", edgecolor="black",
+                               linewidth=1.2, zorder=3) for _ in self.guide_lines]
+        for block in self.blocks:
+            axes.add_patch(block)
         self.ground = axes.plot([], [], linestyle="none", marker="^", markersize=11, color="dimgray", zorder=3)[0]
         self.joints = axes.plot([], [], linestyle="none", **_JOINT)[0]
         self.labels = {name: axes.annotate(name, (0, 0), textcoords="offset points", xytext=(6, 6), fontsize="small")
-                       for name in motion.points[0]}
+                       for name in motion.points[0] if name not in self.rail_only}
         self.blocked = axes.text(0.5, 0.97, "", transform=axes.transAxes, ha="center", va="top", color="tab:red",
                                  fontsize="medium", visible=False, zorder=5,
                                  bbox=dict(facecolor="white", edgecolor="none", alpha=0.8))
@@ -88,7 +97,7 @@ class PoseArtists:
 
     def all(self) -> list[Artist]:
         """Every artist made, for an animation that redraws only them."""
-        return [*self.bars, *self.strings, *self.guides, self.ground, self.joints, *self.labels.values(),
+        return [*self.bars, *self.strings, *self.guides, *self.blocks, self.ground, self.joints, *self.labels.values(),
                 *self.circles, self.blocked]
 
     def show(self, pose: Pose) -> None:
@@ -105,17 +114,33 @@ class PoseArtists:
             patch.set_visible(k < len(unmet))
         for line, ends in zip(self.bars + self.strings, self.bar_ends + self.string_ends):
             line.set_data(*_xy(at, ends if all(e in at for e in ends) else ()))  # a bar half built is not drawn
-        for line, (_, through, (dx, dy)) in zip(self.guides, self.guide_lines):
-            line.set_visible(through in at)
-            if through in at:
-                x, y = at[through]
-                line.set_xy1((x, y))
-                line.set_xy2((x + dx, y + dy))
+        self._rails(at)
         self.ground.set_data(*_xy(at, self.fixed))
-        self.joints.set_data(*_xy(at, [p for p in at if p not in self.fixed]))
+        self.joints.set_data(*_xy(at, [p for p in at if p not in self.fixed and p not in self.rail_only]))
         for name, label in self.labels.items():
             label.set_visible(name in at)
             label.xy = at.get(name, (0, 0))
+
+    def _rails(self, at: Mapping[str, tuple[float, float]]) -> None:
+        """Each slider's rail (two edges through its line's point) and its block at the slider point,
+        sized from the axes' width so that they read alike at any scale."""
+        xlo, xhi = self.axes.get_xlim()
+        half = 0.015 * (xhi - xlo)  # half the block's height, the rail's half width
+        for k, (slider, through, direction) in enumerate(self.guide_lines):
+            along = np.asarray(direction, dtype=float) / np.hypot(*direction)
+            across = np.array([-along[1], along[0]])
+            for edge, side in zip(self.guides[2 * k:2 * k + 2], (1, -1)):
+                edge.set_visible(through in at)
+                if through in at:
+                    start = np.asarray(at[through]) + side * half * across
+                    edge.set_xy1(tuple(start))
+                    edge.set_xy2(tuple(start + along))
+            block = self.blocks[k]
+            block.set_visible(slider in at)
+            if slider in at:
+                centre = np.asarray(at[slider])
+                block.set_xy([centre + a * 2 * half * along + b * half * across
+                              for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1))])
 
 
 Unmet = tuple[str, str, str, float]  # the blocked point, a circle's centre, its radius as written, its value
@@ -359,9 +384,9 @@ def modes_figure(motion: Motion, inputs: Mapping[str, float] | None = None,
         axes = figure.add_subplot(1, len(motion.branches), k + 1, sharex=shared, sharey=shared)
         shared = shared or axes
         _trajectories(axes, motion, sweeps[branch.label])
-        draw_pose(axes, motion, motion.at(inputs, parameters, branch.label))
         axes.set_xlim(bounds[0], bounds[1])
         axes.set_ylim(bounds[2], bounds[3])
+        draw_pose(axes, motion, motion.at(inputs, parameters, branch.label))  # rails sized to the limits
         _finish(axes, f"{branch.label}" + (" (scene's choice)" if branch.selected else ""), motion.scene.unit)
         axes.label_outer()  # the shared y scale is read off the first panel
     angles = ", ".join(f"{n} = {motion.inputs[n].shown(v)}" for n, v in motion.complete(inputs)[0].items())

@@ -324,3 +324,20 @@ def test_a_mechanism_drawing_says_the_scenes_unit_on_its_axes():
     axes = mechanism_figure(Motion("chebyshev-lambda"), {"angle": 63}, curve=False).axes[0]
     assert (axes.get_xlabel(), axes.get_ylabel()) == ("$x$ (mm)", "$y$ (mm)")
     assert modes_figure(Motion("chebyshev-lambda")).axes[0].get_xlabel() == "$x$ (mm)"
+
+
+def test_a_slider_is_a_block_on_a_rail_and_its_lines_point_no_pivot():
+    import matplotlib.lines
+    import matplotlib.patches
+
+    # theta = 90: A = (0, 1); B on y = 1/2 at 3 from A, ahead: B = (sqrt(9 - 1/4), 1/2)
+    axes = mechanism_figure(Motion("slider-crank"), {"theta": 90}, curve=False).axes[0]
+    b = np.array([np.sqrt(9 - 0.25), 0.5])
+    [block] = [p for p in axes.patches if p.get_visible() and isinstance(p, matplotlib.patches.Polygon)]
+    corners = block.get_xy()[:4]
+    assert np.allclose(corners.mean(axis=0), b) and np.ptp(corners[:, 0]) > np.ptp(corners[:, 1]) > 0
+    rails = [line for line in axes.get_lines() if isinstance(line, matplotlib.lines.AxLine)]
+    assert len(rails) == 2 and all(line.get_visible() for line in rails)
+    heights = sorted(line.get_xy1()[1] for line in rails)  # each edge horizontal, one either side of y = 1/2
+    assert heights[0] < 0.5 < heights[1] and all(line.get_xy1()[1] == line.get_xy2()[1] for line in rails)
+    assert (0.0, 0.5) not in [tuple(xy) for xy in joints(axes)]  # L, the line's point, is no ground pivot
