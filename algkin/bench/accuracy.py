@@ -57,12 +57,14 @@ from ..evaluate.fused import numba_available
 from ..runtime import progress, validation
 from ..runtime.budget import Budget, Deadline, started
 from ..scene import Scene, compile_scene
-from ..scene.compile import Compiled, refuse_solved_together
+from ..scene.compile import Compiled
+from ..scene.groups import compile_groups
 from ..scene.constructions import Dyad, Fixed
 from ..scene.implicit.base import ImplicitSpec
 from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
 from ..system import symbol
+from .groupaccuracy import GroupAccuracy, group_accuracy
 from .reference import BITS, Floats, Reference
 
 _T = TypeVar("_T")
@@ -362,16 +364,22 @@ def _translated(scene: Scene, offset: int) -> Scene:
 
 
 def accuracy(scene: SceneLike, samples: int = 2000, seed: int = 0, set: Values | None = None,  # noqa: A002 - the public name (--set)
-             of: str | None = None, *, budget: Budget | Deadline | None = None) -> Accuracy:
+             of: str | None = None, *, budget: Budget | Deadline | None = None) -> Accuracy | GroupAccuracy:
     """Rows of speed and error per strategy and case for the output ``of`` (a point, ``dist(A, B)``,
     ``B.x`` or an output's name; default: the first dyad point, else the first output);
     ``set`` gives dimensions exact values in place of their defaults. A ``Budget`` (or the
-    ``Deadline`` of one running) bounds the derivation's eliminants and says what is measured."""
+    ``Deadline`` of one running) bounds the derivation's eliminants and says what is measured.
+    A scene with points solved together is measured by ``groupaccuracy.group_accuracy`` (every
+    moving point; ``of`` not taken)."""
     deadline = started(budget)
     validation.count("samples", samples, validation.MAX_ACCURACY_SAMPLES, minimum=10)
     validation.seed(seed)
     scene = with_values(as_scene(scene), set)
-    refuse_solved_together(scene)
+    if scene.unknown_points:
+        if of is not None:
+            raise UsageError("of", of, "points solved together are measured all at once: leave out the output")
+        compile_groups(scene)  # bad groups are bad input: a SceneError first
+        return group_accuracy(scene, samples, seed)
     if of is None:
         of = next((n for n, p in scene.points.items() if isinstance(p, Dyad)), None) or next(iter(scene.outputs), None)
     if of is None:

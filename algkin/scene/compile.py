@@ -205,7 +205,8 @@ def refuse_solved_together(scene: Scene) -> None:
 
         compile_groups(scene)
         raise UsageError("scene", scene.name, f"has points solved together ({', '.join(scene.unknown_points)}): "
-                         "solve, follow, derive, curve, verify, toggles, plot, export and sweep take it; this command does not yet")
+                         "show, solve, follow, derive, curve, verify, toggles, plot, export, sweep and accuracy take it; "
+                         "extremum and singular do not yet")
 
 
 def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: Iterable[str] = ()) -> Compiled:

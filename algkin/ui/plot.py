@@ -31,6 +31,7 @@ if TYPE_CHECKING:
     from ..analyses.extremum import Extremum
     from ..analyses.quantities import Quantity
     from ..bench.accuracy import Accuracy
+    from ..bench.groupaccuracy import GroupAccuracy
     from ..bench.row import BenchRow
 
 _PathT = TypeVar("_PathT", bound=Union[str, "os.PathLike[str]"])  # a path given back as it came
@@ -181,7 +182,7 @@ def _certified_minimum(found: Extremum, quantity: Quantity, symbol: sympy.Symbol
     return float(extreme_at(found.problem, found.stationary, values, *found.range).value)
 
 
-def accuracy_figure(result: Accuracy) -> Figure:
+def accuracy_figure(result: Accuracy | GroupAccuracy) -> Figure:
     """Time per sample against max relative error, log-log: marker per strategy, colour per case.
 
     Two legends name them instead of text beside each point (labels would pile up where
@@ -198,7 +199,8 @@ def accuracy_figure(result: Accuracy) -> Figure:
     floor = _zero_floor([r["max_rel_error"] for r in rows])
     cases = list(dict.fromkeys(r["case"] for r in rows))
     colors = {case: f"C{k % 10}" for k, case in enumerate(cases)}
-    markers = {"closed-form": "s", "stabilised": "o", "compiled": "P", "numeric": "^", "reference": "D"}
+    markers = {"closed-form": "s", "stabilised": "o", "compiled": "P", "numeric": "^", "reference": "D",
+               "eliminant-roots": "v", "newton": "<", "certified": "d"}  # the last three: points solved together
     for r in rows:
         exact = r["max_rel_error"] == 0
         axes.scatter([r["ns_per_sample"]], [floor if exact else r["max_rel_error"]],

@@ -14,6 +14,10 @@ hide the function ``algkin.interact``); the logic lives in ``Explorer`` and need
 ('B',)
 >>> explorer.caption(theta=180, l=0.75)
 'left: cannot assemble at theta = 180° (B: the two circles never meet)'
+
+A scene with points solved together (``unknown = true``) gets ``GroupExplorer``: one slider,
+its input, and the picture ``algkin plot`` draws for it (every real mode at the input, certified
+by ``algkin solve``; 'not assembled here' where none exists).
 """
 
 from __future__ import annotations
@@ -23,18 +27,20 @@ from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 from ..analyses.motion import Motion, Pose
-from ..scene.load import SceneLike
+from ..errors import UsageError
+from ..scene.load import SceneLike, as_scene
 from .html import Slider, parameter_slider
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
     from .draw import LiveFigure
+    from .groupmotion import GroupMotion
 
 # What the sliders give: input names (degrees) and dimension names to numbers, ``branch`` to a label
 SliderValues = dict[str, Any]
 
-__all__ = ["interact", "Explorer"]
+__all__ = ["interact", "Explorer", "GroupExplorer", "explorer"]
 
 
 class Explorer:
@@ -101,6 +107,54 @@ class Explorer:
         return self.live.png()
 
 
+class GroupExplorer:
+    """What the slider drives on a scene with points solved together: its ``GroupMotion`` (the
+    modes' paths found once) and ``groupdraw.modes_figure`` at the slider's value.
+
+    >>> explorer = GroupExplorer("3rpr")
+    >>> [(s["name"], s["lo"], s["hi"]) for s in explorer.sliders]
+    [('r1', 5.0, 12.0)]
+    """
+
+    def __init__(self, scene: SceneLike) -> None:
+        from .groupmotion import GroupMotion
+
+        self.motion: GroupMotion = GroupMotion(as_scene(scene))
+
+    @property
+    def sliders(self) -> list[Slider]:
+        """The one input's slider, starting where the most modes were found."""
+        lo, hi = self.motion.input.span
+        return [Slider(name=self.motion.input.name, lo=float(lo), hi=float(hi), value=float(self.motion.start()))]
+
+    def _value(self, values: SliderValues) -> float:
+        return float(values[self.motion.input.name])
+
+    def figure(self, **values: Any) -> Figure:
+        """Every real mode at the slider's value, one panel each (or 'not assembled here'): a new figure."""
+        from .groupdraw import modes_figure
+
+        return modes_figure(self.motion, self._value(values))
+
+    def png(self, **values: Any) -> bytes:
+        """The picture at the slider's value as PNG bytes (what the notebook shows)."""
+        from .plot import image
+
+        return image(self.figure(**values), ".png")
+
+
+def explorer(scene: SceneLike | Motion, params: Sequence[str] | None = None,
+             ranges: Mapping[str, tuple[float, float]] | None = None) -> Explorer | GroupExplorer:
+    """The sliders' logic for ``scene``: ``GroupExplorer`` for points solved together (no
+    dimension sliders: a UsageError for ``params`` or ``ranges``), else ``Explorer``."""
+    if isinstance(scene, Motion) or not as_scene(scene).unknown_points:
+        return Explorer(scene, params, ranges)
+    if params or ranges:
+        raise UsageError("params" if params else "ranges", list(params or ranges or ()),
+                         "points solved together take their dimensions' values: only the input has a slider")
+    return GroupExplorer(scene)
+
+
 def interact(scene: SceneLike | Motion, params: Sequence[str] | None = None,
              ranges: Mapping[str, tuple[float, float]] | None = None) -> Any:
     """A widget with a slider per input and symbolic dimension driving the drawing.
@@ -108,6 +162,7 @@ def interact(scene: SceneLike | Motion, params: Sequence[str] | None = None,
     ``scene``: a catalog name, a path, a ``Scene`` or a ``Motion``; ``params``: the
     dimensions with sliders (default: every one that keeps the system polynomial);
     ``ranges``: name -> (lo, hi) of a dimension's slider, over the scene's declared range.
+    A scene with points solved together gets one slider, its input, and every real mode drawn.
     """
     try:
         import ipywidgets
@@ -115,19 +170,19 @@ def interact(scene: SceneLike | Motion, params: Sequence[str] | None = None,
         from ..errors import AlgkinError
 
         raise AlgkinError("interact needs ipywidgets: pip install 'algkin[notebook]'") from None
-    explorer = Explorer(scene, params, ranges)
+    chosen = explorer(scene, params, ranges)
     controls = {s["name"]: ipywidgets.FloatSlider(value=s["value"], min=s["lo"], max=s["hi"],
                                                   step=(s["hi"] - s["lo"]) / 720, description=s["name"],
                                                   continuous_update=False)
-                for s in explorer.sliders}
-    branches = explorer.motion.branches
-    if len(branches) > 1:
+                for s in chosen.sliders}
+    if isinstance(chosen, Explorer) and len(chosen.motion.branches) > 1:  # a group scene draws every mode
+        branches = chosen.motion.branches
         controls["branch"] = ipywidgets.Dropdown(options=[b.label for b in branches],
-                                                 value=branches[explorer.motion.selected].label,
+                                                 value=branches[chosen.motion.selected].label,
                                                  description="mode")
 
     def picture() -> bytes:
-        return explorer.png(**{name: control.value for name, control in controls.items()})
+        return chosen.png(**{name: control.value for name, control in controls.items()})
 
     # One Image widget whose bytes are replaced on a move: the figure behind it is never rebuilt.
     image = ipywidgets.Image(value=picture(), format="png")

@@ -151,6 +151,7 @@ def test_a_group_after_a_dyad_with_too_few_equations_is_named_with_its_counts():
 
 
 def test_compile_scene_refuses_them_naming_the_command_that_takes_them():
-    said = "has points solved together \\(P1, P2\\): solve, follow, derive, curve, verify, toggles, plot, export and sweep take it"
+    said = ("has points solved together \\(P1, P2\\): show, solve, follow, derive, curve, verify, toggles, plot, export, "
+            "sweep and accuracy take it; extremum and singular do not yet")
     with pytest.raises(UsageError, match=said):
         compile_scene(load_scene_text(SPEC_3RPR, "3rpr.toml"))

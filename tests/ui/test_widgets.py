@@ -166,3 +166,57 @@ def test_interact_shows_the_live_figure_in_an_image_widget():
     moved = image.value
     mode.value = "right"
     assert image.value not in (first, moved)
+
+
+def platforms(figure):
+    """Each panel's title and its platform's corners, sorted, from the polygon drawn (gid ``mode-k-platform-0``)."""
+    drawn = {}
+    for axes in figure.axes:
+        (polygon,) = [p for p in axes.patches if (p.get_gid() or "").endswith("platform-0")]
+        drawn[axes.get_title()] = sorted(map(tuple, np.asarray(polygon.get_xy())[:3]))
+    return drawn
+
+
+def test_a_group_scene_slider_draws_each_mode_where_solve_puts_it():
+    """3rpr: at two slider values, each panel's platform P1 P2 P3 is one of algkin.solve's modes
+    (Motion refused the scene before: no sliders for points solved together)."""
+    import algkin
+    from algkin.ui.widgets import GroupExplorer, explorer
+
+    chosen = explorer("3rpr")
+    assert isinstance(chosen, GroupExplorer) and [s["name"] for s in chosen.sliders] == ["r1"]
+    for r1 in (6, 12):
+        solved = algkin.solve("3rpr", {"r1": sympy.Rational(str(r1))}).configurations
+        expected = {c.mode: sorted((float(c.points[p][0]), float(c.points[p][1])) for p in ("P1", "P2", "P3"))
+                    for c in solved}
+        drawn = platforms(chosen.figure(r1=r1))
+        assert len(drawn) == len(expected) > 0
+        for title, corners in drawn.items():
+            mode = title.split(" ")[0]
+            assert np.max(np.abs(np.subtract(corners, expected[mode]))) < 1e-9, (r1, mode)
+    assert chosen.png(r1=6)[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_a_group_scene_with_no_mode_says_not_assembled(monkeypatch):
+    """3rpr at r1 = 9 has no real mode (solve finds none): one panel, the ground drawn, the red line."""
+    from algkin.ui.groupmotion import GroupMotion
+    from algkin.ui.widgets import GroupExplorer
+
+    monkeypatch.setattr(GroupMotion, "paths", ())  # the modes' paths are the slow part and not what is shown here
+    (axes,) = GroupExplorer("3rpr").figure(r1=9).axes
+    assert axes.get_title() == "no mode"
+    assert [t.get_text() for t in axes.texts if t.get_text().startswith("not assembled here")] == [
+        "not assembled here: no real mode of P1, P2 at r1 = 9"]
+
+
+def test_interact_on_a_group_scene_has_the_input_slider_only(monkeypatch):
+    ipywidgets = pytest.importorskip("ipywidgets")
+    import algkin
+    from algkin.ui import widgets as module
+
+    shown = []
+    monkeypatch.setattr(module.GroupExplorer, "png", lambda self, **values: shown.append(values) or b"")
+    (slider,) = algkin.interact("3rpr").children[0].children
+    assert isinstance(slider, ipywidgets.FloatSlider) and (slider.description, slider.min, slider.max) == ("r1", 5, 12)
+    slider.value = 6
+    assert shown[-1] == {"r1": 6}

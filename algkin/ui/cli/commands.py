@@ -229,6 +229,8 @@ def _cmd_show(args: argparse.Namespace) -> Outcome:
     args.deadline.note(f"loading {args.scene}")
     scene = as_scene(_scene_of(args))
     args.deadline.note(f"compiling {scene.name}")
+    if scene.unknown_points:
+        return render(args, _shown_groups(scene, args), report_show), 0
     compiled = compile_scene(scene, args.outputs, args.param)
     document = {
         "scene": scene.name,
@@ -243,6 +245,31 @@ def _cmd_show(args: argparse.Namespace) -> Outcome:
     if scene.driven:  # inputs turned by others through gears: no variables of their own
         document["geared"] = {n: {"driven_by": d.driver, "ratio": str(d.ratio)} for n, d in scene.driven.items()}
     return render(args, document, report_show), 0
+
+
+def _shown_groups(scene: Scene, args: argparse.Namespace) -> dict[str, object]:
+    """``show``'s document for a scene with points solved together: each group's points,
+    unknowns, constraints and equations (every parameter at its default, as solve takes them)."""
+    from ...scene.groups import compile_groups
+    from ...system import inputs_json
+
+    for option in ("outputs", "param"):
+        if getattr(args, option):
+            raise UsageError(f"--{option}", " ".join(getattr(args, option)),
+                             "not with points solved together: show gives every group at the defaults")
+    compiled = compile_groups(scene)
+    equations = [str(eq) for group in compiled.groups for eq in group.equations]
+    return {
+        "scene": scene.name,
+        "description": scene.description,
+        "points": {n: type(c).__name__.lower() for n, c in scene.points.items()},
+        "outputs": {n: [o.text] for n, o in scene.outputs.items()},
+        "inputs": inputs_json(compiled.inputs),
+        "system": {"unknowns": [u for group in compiled.groups for u in group.unknowns], "parameters": [],
+                   "equations": equations},
+        "groups": [{"points": list(g.points), "unknowns": list(g.unknowns), "constraints": list(g.constraints),
+                    "equations": [str(eq) for eq in g.equations]} for g in compiled.groups],
+    }
 
 
 def _cmd_derive(args: argparse.Namespace) -> Outcome:

@@ -167,6 +167,8 @@ def _place(position: Document) -> str:
 
 def report_accuracy(d: Document) -> str:
     """``algkin accuracy``'s text: one row per strategy and case (time per sample, worst error, condition)."""
+    if d.get("solved_together"):
+        return _report_group_accuracy(d)
     lines = [f"accuracy of {d['point']} in {d['scene']}; truth: {d['reference']}",
              f"  {'strategy':12} {'case':13} {'samples':>7} {'ns/sample':>10} {'max rel err':>11} "
              f"{'condition':>9} {'err/(k eps)':>11}"]
@@ -174,6 +176,18 @@ def report_accuracy(d: Document) -> str:
               f"{r['max_rel_error']:11.2e} {r['condition']:9.2e} {r['error_over_kappa_eps']:11.2e}"
               + (f"\n    note: {r['note']}" if r.get("note") else "") for r in d["rows"]]
     return "\n".join(lines)
+
+
+def _report_group_accuracy(d: Document) -> str:
+    """``report_accuracy`` for points solved together: the modes compared and missed in place of the condition."""
+    lines = [f"accuracy of {d['point']} in {d['scene']}; truth: {d['reference']}",
+             f"  {'strategy':15} {'case':12} {'samples':>7} {'ns/sample':>11} {'max abs err':>11} {'max rel err':>11} "
+             f"{'compared':>8} {'missed':>6}"]
+    lines += [f"  {r['strategy']:15} {r['case']:12} {r['samples']:7} {r['ns_per_sample']:11.1f} {r['max_abs_error']:11.2e} "
+              f"{r['max_rel_error']:11.2e} {r['compared']:8} {r['missed']:6}"
+              + (f"\n    unsolved: {r['unsolved']}" if r.get("unsolved") else "")
+              + (f"\n    note: {r['note']}" if r.get("note") else "") for r in d["rows"]]
+    return "\n".join(lines + ([f"note: {d['note']}"] if d.get("note") else []))
 
 
 def render(args: argparse.Namespace, document: Document, report: Callable[[Document], str]) -> str:
@@ -242,12 +256,26 @@ def report_show(d: Document) -> str:
              "points: " + ", ".join(f"{n} ({k})" for n, k in d["points"].items()),
              "unknowns: " + ", ".join(d["system"]["unknowns"]),
              "parameters: " + (", ".join(d["system"]["parameters"]) or "none (all exact)"),
-             "inputs: " + ", ".join(f"{n} as ({v['cos']}, {v['sin']})" for n, v in d["inputs"].items()),
+             "inputs: " + ", ".join(_input_said(n, v) for n, v in d["inputs"].items()),
              *[f"geared: {n} = {g['ratio']}*{g['driven_by']}" for n, g in d.get("geared", {}).items()],
              "equations (= 0):"]
     lines += [f"  {eq}" for eq in d["system"]["equations"]]
     lines += [f"never assembles: {point}: {why}" for point, why in d.get("never_assembles", {}).items()]
+    for group in d.get("groups", ()):
+        lines.append(f"solved together: {', '.join(group['points'])} (unknowns {', '.join(group['unknowns'])}; "
+                     f"constraints {', '.join(group['constraints'])})")
     return "\n".join(lines)
+
+
+def _input_said(name: str, variables: Mapping[str, str]) -> str:
+    """An input and its variables: an angle as its (cos, sin), a length as itself.
+
+    >>> _input_said("theta", {"cos": "c_theta", "sin": "s_theta"}), _input_said("s", {"value": "s"})
+    ('theta as (c_theta, s_theta)', 's (a length)')
+    """
+    if "value" in variables:
+        return f"{name} (a length)"
+    return f"{name} as ({variables['cos']}, {variables['sin']})"
 
 
 def latex_lines(forms: Iterable[Form]) -> str:

@@ -66,3 +66,21 @@ def test_derive_rates_text_on_the_triad(capsys):
     assert main(["derive", "stephenson-iii-triad", "--rates", "--samples", "3"]) == 0
     out = capsys.readouterr().out
     assert "per radian" in out and "rates verification passed" in out and "[+++] A_x' = " in out
+
+
+def test_show_gives_each_group_its_points_unknowns_constraints_and_equations(capsys):
+    assert main(["show", "3rpr", "--json"]) == 0
+    document = json.loads(capsys.readouterr().out)
+    (group,) = document["groups"]
+    assert group["points"] == ["P1", "P2"] and group["constraints"] == ["leg1", "leg2", "leg3", "side"]
+    assert group["unknowns"] == ["P1_x", "P1_y", "P2_x", "P2_y"] and len(group["equations"]) == 4
+    # leg1 by hand: |A1 P1| = r1 with A1 at the origin
+    assert group["equations"][0] == "P1_x**2 + P1_y**2 - r1**2"
+    assert main(["show", "3rpr"]) == 0
+    assert "solved together: P1, P2" in capsys.readouterr().out
+
+
+def test_show_says_a_length_input_as_a_length(capsys):
+    # it raised KeyError 'cos' (a traceback) on every scene driven by a length
+    assert main(["show", "arm-by-string"]) == 0
+    assert "inputs: s (a length)" in capsys.readouterr().out
