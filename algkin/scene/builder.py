@@ -13,7 +13,8 @@ first. ``B = { dyad = ["A", "D"], lengths = ["5/2", "5/2"], branch = "left" }`` 
 file, or exact Python numbers (``Fraction``, sympy); tuples do for arrays.
 
 >>> from algkin.scene import load_scene
->>> b = SceneBuilder("chebyshev-lambda", "Chebyshev lambda linkage: crank 1, ground 2, rocker 5/2, coupler 5.")
+>>> b = SceneBuilder("chebyshev-lambda", "Chebyshev lambda linkage: crank 1, ground 2, rocker 5/2, coupler 5.",
+...                  unit="mm")
 >>> b.input("angle", range=(0, 360), unit="deg")
 >>> b.fixed("O", (0, 0))
 >>> b.fixed("D", (2, 0))
@@ -89,9 +90,10 @@ class SceneBuilder:
     by default. The calls and the table each one writes: docs/scene-format.md, "From Python".
     """
 
-    def __init__(self, name: str, description: str = "", *, source: str | None = None) -> None:
+    def __init__(self, name: str, description: str = "", *, source: str | None = None, unit: str = "") -> None:
         self.name = name
         self.description = description
+        self.unit = unit  # the lengths' unit, ``unit = "mm"``
         self.source = source if source is not None else (name if isinstance(name, str) and name else "<scene>")
         self._tables: dict[str, dict[str, object]] = {table: {} for table in _TABLES}
 
@@ -155,7 +157,8 @@ class SceneBuilder:
     def data(self) -> dict[str, Any]:
         """The scene as a parsed scene file: what ``build()`` checks (a copy)."""
         tables = {table: rows for table, rows in copy.deepcopy(self._tables).items() if rows or table != "constraints"}
-        return {"name": self.name, "description": self.description, **tables}
+        unit = {"unit": self.unit} if self.unit else {}
+        return {"name": self.name, "description": self.description, **unit, **tables}
 
     def build(self) -> Scene:
         """The ``Scene``, checked as a loaded file is (``SceneError`` on the first problem)."""

@@ -87,8 +87,9 @@ def _parameter(name: str, value: object, bounds: Iterable[object] | None) -> str
 
 def dump_scene(scene: Scene) -> str:
     """TOML text of ``scene``; ``load_scene_text(dump_scene(scene)) == scene``."""
-    lines = [f"name = {_string(scene.name)}", f"description = {_string(scene.description)}", "",
-             "[parameters]"]
+    lines = [f"name = {_string(scene.name)}", f"description = {_string(scene.description)}"]
+    lines += [f"unit = {_string(scene.unit)}"] if scene.unit else []
+    lines += ["", "[parameters]"]
     lines += [_parameter(name, value, scene.parameter_ranges.get(name)) for name, value in scene.parameters.items()]
     lines += ["", "[inputs]"]
     lines += [f"{name} = {{ range = {_exprs((i.lo, i.hi))}, unit = {_string(i.unit)} }}"

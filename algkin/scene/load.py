@@ -40,7 +40,7 @@ __all__ = ["load_scene", "load_scene_text", "as_scene", "catalog_names", "MAX_SC
 MAX_SCENE_BYTES = 256 * 1024
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
 _CATALOG = os.path.join(os.path.dirname(os.path.dirname(__file__)), "catalog")
-_TOP_KEYS = {"name", "description", "parameters", "inputs", "points", "constraints", "outputs"}
+_TOP_KEYS = {"name", "description", "unit", "parameters", "inputs", "points", "constraints", "outputs"}
 Table = dict[str, Any]
 SceneLike = Union[str, "os.PathLike[str]", Scene]  # what the public functions take for a scene
 Values = Mapping[str, Union[str, int, Fraction]]  # ``set=``: dimensions given exact values  # a TOML table as tomllib reads it: values of any TOML type, checked here
@@ -172,6 +172,9 @@ class _Loader:
         description = data.get("description", "")
         if not isinstance(name, str) or not isinstance(description, str):
             self.fail("name", "name and description must be strings")
+        unit = data.get("unit", "")
+        if unit != "" and not (isinstance(unit, str) and len(unit) <= 16 and unit.isalpha()):
+            self.fail("unit", f"expected a unit of length as a short word, e.g. \"mm\"; got {unit!r}")
         parameters, ranges = self.parameters(self.table(data, "parameters", "parameters"))
         table = self.table(data, "inputs", "inputs")
         geared = {n: spec for n, spec in table.items() if isinstance(spec, dict) and "driven_by" in spec}
@@ -181,7 +184,7 @@ class _Loader:
         constraints = self.constraints(self.table(data, "constraints", "constraints"), points)
         outputs = self.outputs(self.table(data, "outputs", "outputs"), points, inputs, parameters)
         scene = Scene(name, description, parameters, inputs, points, outputs, self.source, ranges, constraints,
-                      self.driven)
+                      self.driven, unit)
         check_names(scene)
         return scene
 

@@ -144,6 +144,7 @@ class Scene:
     constraints: FrozenDict[str, Constraint] = attrs.field(factory=FrozenDict, converter=frozen)
     # name -> an angle input geared to another (no variables of its own), in file order
     driven: FrozenDict[str, DrivenInput] = attrs.field(factory=FrozenDict, converter=frozen)
+    unit: str = ""  # the lengths' unit (``unit = "mm"``), written on axes; "" when not said
 
     @property
     def unknown_points(self) -> tuple[str, ...]:

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import io
 import os
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import TYPE_CHECKING, Any, TypeVar, Union
 
 import numpy as np
@@ -28,10 +28,12 @@ from ..scene.load import as_scene
 from .plot import FORMATS as FIGURE_FORMATS, new_figure
 
 if TYPE_CHECKING:
+    from matplotlib.artist import Artist
     from matplotlib.axes import Axes
     from matplotlib.contour import QuadContourSet
     from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
+    from numpy.typing import NDArray
 
     from ..analyses.motion import Motion, Pose, Trajectories
     from ..derivation.pipeline import CurveResult
@@ -60,40 +62,126 @@ class PoseArtists:
     their data instead of drawing anew."""
 
     def __init__(self, axes: Axes, motion: Motion, color: str | None = None) -> None:
+        from matplotlib.patches import Circle, Polygon
+
         # The scene's structure is read once: ``motion.guides`` substitutes into sympy.
         self.bar_ends, self.string_ends, self.guide_lines = motion.bars, motion.strings, motion.guides
-        self.fixed = motion.ground
+        self.motion, self.axes = motion, axes
+        # A fixed point that only places a slider's line is no pivot: the rail is drawn instead.
+        ends = {p for pair in self.bar_ends + self.string_ends for p in pair}
+        self.rail_only = {through for _, through, _ in self.guide_lines} - ends
+        self.fixed = [p for p in motion.ground if p not in self.rail_only]
         style = dict(_BAR, color=color) if color else _BAR
         self.bars = [axes.plot([], [], **style)[0] for _ in self.bar_ends]
         self.strings = [axes.plot([], [], color="tab:gray", linestyle="--", linewidth=1, zorder=1)[0]
                         for _ in self.string_ends]
-        self.guides = [axes.axline((0, 0), direction, color="tab:gray", linewidth=1, zorder=1)
-                       for _, _, direction in self.guide_lines]
+        # A rail: the slot's two edges, parallel to the slider's line; the block slides between them.
+        self.guides = [axes.axline((0, 0), direction, color="dimgray", linewidth=1.2, zorder=1)
+                       for _, _, direction in self.guide_lines for _ in range(2)]
+        self.blocks = [Polygon(np.zeros((4, 2)), closed=True, facecolor="lightgray", edgecolor="black",
+                               linewidth=1.2, zorder=3) for _ in self.guide_lines]
+        for block in self.blocks:
+            axes.add_patch(block)
         self.ground = axes.plot([], [], linestyle="none", marker="^", markersize=11, color="dimgray", zorder=3)[0]
         self.joints = axes.plot([], [], linestyle="none", **_JOINT)[0]
         self.labels = {name: axes.annotate(name, (0, 0), textcoords="offset points", xytext=(6, 6), fontsize="small")
-                       for name in motion.points[0]}
-        self.blocked = axes.text(0.5, 0.5, "", transform=axes.transAxes, ha="center", va="center",
-                                 color="tab:red", fontsize="large", visible=False)
+                       for name in motion.points[0] if name not in self.rail_only}
+        self.blocked = axes.text(0.5, 0.97, "", transform=axes.transAxes, ha="center", va="top", color="tab:red",
+                                 fontsize="medium", visible=False, zorder=5,
+                                 bbox=dict(facecolor="white", edgecolor="none", alpha=0.8))
+        # The two circles that fail to meet where a dyad cannot assemble.
+        self.circles = [Circle((0, 0), 1, fill=False, color="tab:red", linestyle="--", linewidth=1, zorder=1,
+                               visible=False) for _ in range(2)]
+        for circle in self.circles:
+            axes.add_patch(circle)
+
+    def all(self) -> list[Artist]:
+        """Every artist made, for an animation that redraws only them."""
+        return [*self.bars, *self.strings, *self.guides, *self.blocks, self.ground, self.joints, *self.labels.values(),
+                *self.circles, self.blocked]
 
     def show(self, pose: Pose) -> None:
-        """Move every artist to ``pose``; where it cannot assemble, only the red text is shown."""
-        at = {p: xy for p, xy in pose.points.items() if xy is not None}  # none where it cannot assemble
-        self.blocked.set_text(f"cannot assemble: {', '.join(pose.blocked)}")
+        """Move every artist to ``pose``; where it cannot assemble, what is built stays drawn, with
+        the two circles that fail to meet and a red text naming them."""
+        at = {p: xy for p, xy in pose.points.items() if xy is not None} if pose.assembles else built(self.motion, pose)
+        unmet = [] if pose.assembles else unmet_circles(self.motion, pose, at)
+        self.blocked.set_text(_blocked_text(pose, unmet))
         self.blocked.set_visible(not pose.assembles)
+        for patch, (_, center, _, radius) in zip(self.circles, unmet):
+            patch.set_center(at[center])
+            patch.set_radius(radius)
+        for k, patch in enumerate(self.circles):
+            patch.set_visible(k < len(unmet))
         for line, ends in zip(self.bars + self.strings, self.bar_ends + self.string_ends):
-            line.set_data(*_xy(at, ends))
-        for line, (_, through, (dx, dy)) in zip(self.guides, self.guide_lines):
-            line.set_visible(pose.assembles)
-            if pose.assembles:
-                x, y = at[through]
-                line.set_xy1((x, y))
-                line.set_xy2((x + dx, y + dy))
+            line.set_data(*_xy(at, ends if all(e in at for e in ends) else ()))  # a bar half built is not drawn
+        self._rails(at)
         self.ground.set_data(*_xy(at, self.fixed))
-        self.joints.set_data(*_xy(at, [p for p in at if p not in self.fixed]))
+        self.joints.set_data(*_xy(at, [p for p in at if p not in self.fixed and p not in self.rail_only]))
         for name, label in self.labels.items():
-            label.set_visible(pose.assembles)
+            label.set_visible(name in at)
             label.xy = at.get(name, (0, 0))
+
+    def _rails(self, at: Mapping[str, tuple[float, float]]) -> None:
+        """Each slider's rail (two edges through its line's point) and its block at the slider point,
+        sized from the axes' width so that they read alike at any scale."""
+        xlo, xhi = self.axes.get_xlim()
+        half = 0.015 * (xhi - xlo)  # half the block's height, the rail's half width
+        for k, (slider, through, direction) in enumerate(self.guide_lines):
+            along = np.asarray(direction, dtype=float) / np.hypot(*direction)
+            across = np.array([-along[1], along[0]])
+            for edge, side in zip(self.guides[2 * k:2 * k + 2], (1, -1)):
+                edge.set_visible(through in at)
+                if through in at:
+                    start = np.asarray(at[through]) + side * half * across
+                    edge.set_xy1(tuple(start))
+                    edge.set_xy2(tuple(start + along))
+            block = self.blocks[k]
+            block.set_visible(slider in at)
+            if slider in at:
+                centre = np.asarray(at[slider])
+                block.set_xy([centre + a * 2 * half * along + b * half * across
+                              for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1))])
+
+
+Unmet = tuple[str, str, str, float]  # the blocked point, a circle's centre, its radius as written, its value
+
+
+def built(motion: Motion, pose: Pose) -> dict[str, tuple[float, float]]:
+    """The points of ``pose`` that are built even where it cannot assemble: those constructed
+    before the failing one and not from it (finite where the rest is nan)."""
+    points, _ = motion.evaluate(motion.branch_index(pose.branch), motion.values(pose.inputs, pose.parameters))
+    return {p: (float(x), float(y)) for p, (x, y) in points.items() if np.isfinite([x, y]).all()}
+
+
+def unmet_circles(motion: Motion, pose: Pose, at: Mapping[str, tuple[float, float]]) -> list[Unmet]:
+    """The two circles of the first blocked dyad whose centres are built: (point, centre, radius
+    as written, radius); none when the failing point is no dyad.
+
+    >>> from algkin.analyses.motion import Motion
+    >>> motion = Motion("fourbar")
+    >>> pose = motion.at({"theta": 180}, {"l": 0.75})
+    >>> [(p, c, r, round(v, 6)) for p, c, r, v in unmet_circles(motion, pose, built(motion, pose))]
+    [('B', 'A', 'l', 0.75), ('B', 'D', 'm', 3.5)]
+    """
+    from ..evaluate import NUMPY, evaluate
+    from ..scene.constructions import Dyad
+
+    values = motion.values(pose.inputs, pose.parameters)
+    for name in pose.blocked:
+        made = motion.scene.points[name]
+        if isinstance(made, Dyad) and all(b in at for b in made.bases):
+            return [(name, base, str(length), float(evaluate(length, values, NUMPY)))
+                    for base, length in zip(made.bases, made.lengths)]
+    return []
+
+
+def _blocked_text(pose: Pose, unmet: Sequence[Unmet]) -> str:
+    """What the red text says where ``pose`` cannot assemble."""
+    if not unmet:
+        return f"cannot assemble: {', '.join(pose.blocked)}"
+    (point, p, lp, vp), (_, q, lq, vq) = unmet
+    return (f"cannot assemble {point}:\nthe circles about {p} (radius {lp} = {vp:.4g}) "
+            f"and {q} (radius {lq} = {vq:.4g}) do not meet")
 
 
 def draw_pose(axes: Axes, motion: Motion, pose: Pose, color: str | None = None) -> PoseArtists:
@@ -162,9 +250,12 @@ def draw_curve(axes: Axes, result: CurveResult, bounds: Bounds, grid: int = 500,
     return contour
 
 
-def _finish(axes: Axes, title: str) -> None:
+def _finish(axes: Axes, title: str, unit: str = "") -> None:
     # Fixed limits on every drawing: the box, not the data limits, keeps the scales equal.
     axes.set_aspect("equal", adjustable="box")
+    if unit:  # the scene's lengths' unit (``unit = "mm"``)
+        axes.set_xlabel(f"$x$ ({unit})")
+        axes.set_ylabel(f"$y$ ({unit})")
     axes.grid(True, linewidth=0.3)
     axes.set_title(title, fontsize="medium", parse_math=False)  # a scene's name is text, never mathtext
 
@@ -183,16 +274,18 @@ class LiveFigure:
     A move sets the artists' data (``PoseArtists``) and the title. Every branch is swept
     again (for the trajectories and the limits) only when a dimension changed; a new
     branch only picks its sweep. So a slider costs an evaluation and a render, not a new figure.
-    ``title``: pose -> the text above the axes.
+    ``title``: pose -> the text above the axes. ``every_mode``: the limits hold every assembly
+    mode (a mode switched by a slider keeps the scale), else only the drawn one (an animation).
     """
 
     def __init__(self, motion: Motion, parameters: Mapping[str, float] | None = None, branch: str | None = None,
-                 title: Callable[[Pose], str] | None = None) -> None:
+                 title: Callable[[Pose], str] | None = None, *, every_mode: bool = True) -> None:
         self.motion, self.title = motion, title or _pose_title(motion)
         self.parameters = motion.complete(None, parameters)[1]
         self.branch = motion.branches[motion.branch_index(branch)].label
         self.sweeps = _sweeps(motion, self.parameters)
-        self.bounds = _bounds(motion, self.parameters, self.sweeps)
+        self.every_mode = every_mode
+        self.bounds = self._fit()
         self.figure = new_figure()
         self._layout = self.figure.get_layout_engine()
         # A figure shaped like the mechanism's reach, so equal scales leave little empty space.
@@ -201,8 +294,14 @@ class LiveFigure:
         self.axes = self.figure.add_subplot()
         self.paths = _trajectories(self.axes, motion, self.sweeps[self.branch], self.branch)
         self.artists = PoseArtists(self.axes, motion)
-        _finish(self.axes, "")
+        _finish(self.axes, "", motion.scene.unit)
         self._limit()
+
+    def _fit(self, parameters: Mapping[str, float] | None = None, branch: str | None = None) -> Bounds:
+        """The box of every mode's sweep, or of ``branch``'s (the drawn one's) alone."""
+        branch = branch or self.branch
+        sweeps = self.sweeps if self.every_mode else {branch: self.sweeps[branch]}
+        return _bounds(self.motion, parameters or self.parameters, sweeps)
 
     def _limit(self) -> None:
         self._relayout = True
@@ -216,9 +315,9 @@ class LiveFigure:
 
     def show(self, pose: Pose) -> Pose:
         """Move the figure to ``pose`` (a ``Motion.at`` or ``Motion.poses`` configuration)."""
-        if pose.parameters != self.parameters:
+        if pose.parameters != self.parameters or (not self.every_mode and pose.branch != self.branch):
             self.sweeps = _sweeps(self.motion, pose.parameters)
-            self.bounds = _bounds(self.motion, pose.parameters, self.sweeps)
+            self.bounds = self._fit(pose.parameters, pose.branch)
             self._limit()
         if (pose.parameters, pose.branch) != (self.parameters, self.branch):
             for name, line in self.paths.items():
@@ -285,10 +384,10 @@ def modes_figure(motion: Motion, inputs: Mapping[str, float] | None = None,
         axes = figure.add_subplot(1, len(motion.branches), k + 1, sharex=shared, sharey=shared)
         shared = shared or axes
         _trajectories(axes, motion, sweeps[branch.label])
-        draw_pose(axes, motion, motion.at(inputs, parameters, branch.label))
         axes.set_xlim(bounds[0], bounds[1])
         axes.set_ylim(bounds[2], bounds[3])
-        _finish(axes, f"{branch.label}" + (" (scene's choice)" if branch.selected else ""))
+        draw_pose(axes, motion, motion.at(inputs, parameters, branch.label))  # rails sized to the limits
+        _finish(axes, f"{branch.label}" + (" (scene's choice)" if branch.selected else ""), motion.scene.unit)
         axes.label_outer()  # the shared y scale is read off the first panel
     angles = ", ".join(f"{n} = {motion.inputs[n].shown(v)}" for n, v in motion.complete(inputs)[0].items())
     figure.suptitle(f"{motion.scene.name}: assembly modes at {angles}", parse_math=False)
@@ -305,7 +404,11 @@ def _panels_size(bounds: Bounds, count: int, width: float = 3.6, tallest: float 
 
 def animate(motion: Motion, out: PathT, parameters: Mapping[str, float] | None = None, branch: str | None = None,
             frames: int = 72, fps: int = 24) -> PathT:
-    """Turn the first input through its range and write ``out`` (.gif with pillow, .mp4 with ffmpeg)."""
+    """Turn the first input through its range and write ``out`` (.gif with pillow, .mp4 with ffmpeg).
+
+    The axes are fitted to the drawn assembly mode. The still parts (axes, ticks, trajectories)
+    are rendered once; each frame restores them and draws only the moving artists (blitting).
+    """
     import pathlib
 
     from matplotlib import animation
@@ -314,19 +417,56 @@ def animate(motion: Motion, out: PathT, parameters: Mapping[str, float] | None =
     if suffix == ".mp4" and not animation.writers.is_available("ffmpeg"):
         raise UsageError("--out", str(out), "an .mp4 needs ffmpeg on PATH (not found); write a .gif instead")
     name = next(iter(motion.inputs))
-    # One figure moved frame by frame: the artists' data change, nothing is drawn anew.
     shown = motion.inputs[name].shown
-    live = LiveFigure(motion, parameters, branch, title=lambda pose: f"{motion.scene.name}: {name} = {shown(pose.inputs[name])}")
-
-    def frame(pose: Pose) -> None:  # no artists returned: no blitting, the whole frame is drawn
-        live.show(pose)
-
-    movie = animation.FuncAnimation(live.figure, frame, frames=motion.poses(parameters, branch, frames),
-                                    cache_frame_data=False)
-    writer = animation.PillowWriter(fps=fps) if suffix == ".gif" else animation.FFMpegWriter(fps=fps)
+    live = LiveFigure(motion, parameters, branch, every_mode=False,
+                      title=lambda pose: f"{motion.scene.name}: {name} = {shown(pose.inputs[name])}")
+    poses = motion.poses(parameters, branch, frames)
     with atomic_output(out) as temporary:  # the writers infer the format from the kept suffix
-        movie.save(str(temporary), writer=writer, dpi=80)
+        if suffix == ".gif":
+            _write_gif(temporary, _frames(live, poses, dpi=80), fps)
+        else:
+            _write_mp4(temporary, live, poses, fps)
     return out
+
+
+def _frames(live: LiveFigure, poses: Sequence[Pose], dpi: float) -> Iterator[NDArray[np.uint8]]:
+    """RGBA pixels of ``live`` moved to each of ``poses``, blitted on a background drawn once."""
+    live.figure.set_dpi(dpi)
+    moving = live.artists.all() + [live.axes.title]
+    live.show(poses[0])
+    canvas = live.figure.canvas
+    canvas.draw()  # the layout is computed here, once, then frozen
+    live.figure.set_layout_engine("none")
+    for artist in moving:
+        artist.set_animated(True)
+    canvas.draw()
+    background = canvas.copy_from_bbox(live.figure.bbox)  # type: ignore[attr-defined]  # Agg's
+    for pose in poses:
+        live.show(pose)
+        canvas.restore_region(background)  # type: ignore[attr-defined]
+        for artist in moving:
+            live.figure.draw_artist(artist)
+        yield np.array(canvas.buffer_rgba())  # type: ignore[attr-defined]
+
+
+def _write_gif(path: os.PathLike[str], pictures: Iterable[NDArray[np.uint8]], fps: int) -> None:
+    from PIL import Image
+
+    images = [Image.fromarray(p).convert("RGB") for p in pictures]
+    images[0].save(path, format="GIF", save_all=True, append_images=images[1:], duration=1000 / fps, loop=0)
+
+
+def _write_mp4(path: os.PathLike[str], live: LiveFigure, poses: Sequence[Pose], fps: int) -> None:
+    """Each pose drawn whole by matplotlib's ffmpeg writer, the layout computed once."""
+    from matplotlib import animation
+
+    writer = animation.FFMpegWriter(fps=fps)
+    with writer.saving(live.figure, os.fspath(path), dpi=80):
+        for k, pose in enumerate(poses):
+            live.show(pose)
+            writer.grab_frame()
+            if k == 0:
+                live.figure.set_layout_engine("none")
 
 
 def parse_inputs(motion: Motion, texts: Sequence[str]) -> dict[str, float]:

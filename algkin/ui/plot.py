@@ -76,6 +76,28 @@ def _sampler(quantity: Quantity, expr: sympy.Expr) -> Callable[[ArrayLike], NDAr
     return sympy.lambdify(quantity.input, fixed, "numpy")
 
 
+def math_name(quantity: Quantity) -> str:
+    """``quantity`` as mathtext: a distance as the seed writes it (``$|AB|$``), a coordinate
+    subscripted (``$P_x$``), any other output as its text."""
+    output = quantity.mechanism.scene.outputs.get(quantity.text)
+    if output is not None and output.kind == "dist":
+        return f"$|{''.join(output.points)}|$"
+    if output is not None and output.kind in ("x", "y"):
+        return f"${output.points[0]}_{output.kind}$"
+    return quantity.text
+
+
+def _unit(quantity: Quantity) -> str:
+    """`` (mm)`` after a length when the scene says its unit, else nothing."""
+    unit = quantity.mechanism.scene.unit
+    return f" ({unit})" if unit and not quantity.degrees else ""
+
+
+def _symbol(name: str) -> str:
+    """A variable's name as mathtext: ``theta`` -> ``$\\theta$``."""
+    return f"${sympy.latex(sympy.Symbol(name))}$"
+
+
 def quantity_figure(quantity: Quantity, found: Extremum, derivative: bool = False, points: int = 721) -> Figure:
     """``quantity`` over the range of ``found`` (an ``Extremum``) with its minimum marked.
 
@@ -92,20 +114,22 @@ def quantity_figure(quantity: Quantity, found: Extremum, derivative: bool = Fals
     best = found.minimum
     figure = new_figure()
     axes = figure.add_subplot()
-    name, text = quantity.input.name, quantity.text
+    name, text = _symbol(quantity.input.name), math_name(quantity)
+    unit = _unit(quantity)
     text += " (degrees)" if quantity.degrees else ""
-    label = f"d {text} / d {name}" if derivative else text
+    label = f"d{text}/d{name}" if derivative else text
     axes.plot(degrees, values, color="tab:blue", label=label)
     mark = 0.0 if derivative else float(best.value)
     if derivative:
         axes.axhline(0, color="black", linestyle="--", linewidth=0.8)
     axes.plot([float(best.input_deg)], [mark], "o", color="red", markersize=7,
-              label=f"minimum of {text}: {float(best.value):.6g} at {float(best.input_deg):.6g}°")
+              label=f"minimum of {text}: {float(best.value):.6g}{unit} at {float(best.input_deg):.6g}°")
     axes.annotate(f"[{float(best.input_deg):.2f}°, {mark:.4g}]", (float(best.input_deg), mark),
                   textcoords="offset points", xytext=(8, 8))
     axes.set_xlabel(f"{name} (degrees)")
-    axes.set_ylabel(f"{label} (per radian)" if derivative else text)
-    axes.set_title(f"{'Derivative of ' if derivative else ''}{text} in {quantity.mechanism.scene.name}",
+    per = f"{unit[:-1]} per radian)" if unit else " (per radian)"
+    axes.set_ylabel(f"{label}{per}" if derivative else f"{text}{unit}")
+    axes.set_title(f"{'Derivative of ' if derivative else ''}{quantity.text} in {quantity.mechanism.scene.name}",
                    parse_math=False)  # a scene's name is text, never mathtext
     axes.grid(True)
     axes.legend()
@@ -128,14 +152,15 @@ def minimum_figure(quantity: Quantity, found: Extremum, parameter: str, lo: floa
             line = sympy.lambdify(symbol, value, "numpy")
             kind = "at a range end" if region["at"] == "endpoint" else "stationary"
             axes.plot(inside, np.broadcast_to(line(inside), inside.shape),
-                      label=f"{region['value']}  ({kind})")
+                      label=f"${sympy.latex(value)}$  ({kind})")
         if region["to"] is not None and lo < region["to"] < hi:
             axes.axvline(region["to"], color="gray", linestyle=":", linewidth=0.8)
     samples = np.linspace(lo, hi, checks)
     certified = [_certified_minimum(found, quantity, symbol, x) for x in samples]
     axes.plot(samples, certified, "o", color="red", markersize=5, label="certified minimum at that value")
-    axes.set_xlabel(parameter)
-    axes.set_ylabel(f"minimum of {quantity.text}")
+    unit = _unit(quantity)
+    axes.set_xlabel(f"{_symbol(parameter)}{unit}")  # a dimension: a length
+    axes.set_ylabel(f"minimum of {math_name(quantity)}{unit}")
     axes.set_title(f"Minimum of {quantity.text} over {quantity.input.name} in "
                    f"[{found.range[0]:g}°, {found.range[1]:g}°] against {parameter}")
     axes.grid(True)

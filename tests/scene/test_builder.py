@@ -26,7 +26,8 @@ CATALOG = ROOT / "algkin" / "catalog"
 # -- by hand: each TOML table of the catalog file is one call --------------------------------------
 
 def chebyshev_lambda():
-    b = SceneBuilder("chebyshev-lambda", "Chebyshev lambda linkage: crank 1, ground 2, rocker 5/2, coupler 5.")
+    b = SceneBuilder("chebyshev-lambda", "Chebyshev lambda linkage: crank 1, ground 2, rocker 5/2, coupler 5.",
+                     unit="mm")
     b.input("angle", range=(0, 360), unit="deg")
     b.fixed("O", (0, 0))
     b.fixed("D", (2, 0))
@@ -86,7 +87,7 @@ def watt_i():
 
 
 def arm_string():
-    b = SceneBuilder("arm-string", "Arm OA about O pulled by a string from A around the fixed point B.")
+    b = SceneBuilder("arm-string", "Arm OA about O pulled by a string from A around the fixed point B.", unit="mm")
     for name, value in dict(a=400, b=80, r=350, g=120).items():
         b.parameter(name, value)
     b.input("theta", range=(0, 180), unit="deg")
@@ -129,7 +130,7 @@ def test_a_scene_built_by_hand_is_the_catalog_scene(name):
 
 def rebuild(data, source="<scene>"):
     """A builder call per table of ``data`` (a scene file as ``tomllib`` parses it)."""
-    b = SceneBuilder(data["name"], data.get("description", ""), source=source)
+    b = SceneBuilder(data["name"], data.get("description", ""), source=source, unit=data.get("unit", ""))
     for name, value in data.get("parameters", {}).items():
         if isinstance(value, dict):
             b.parameter(name, **value)

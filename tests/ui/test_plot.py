@@ -171,3 +171,17 @@ def test_the_quantity_curve_is_the_closed_form_at_each_plotted_angle():
     x, y = quantity_figure(quantity, found, points=37).axes[0].lines[0].get_data()
     expected = [quantity.at(theta=float(a)) for a in x]  # the closed form in mpmath at 30 digits, one by one
     np.testing.assert_allclose(y, expected, rtol=1e-13)
+
+
+def test_lengths_carry_the_scenes_unit_and_names_are_typeset():
+    quantity = load_quantities("arm-string", ["b"]).output("AB")  # the catalog scene says unit = "mm"
+    figure = quantity_figure(quantity, quantity.extremum((0, 180)))
+    axes = figure.axes[0]
+    assert axes.get_ylabel() == "$|AB|$ (mm)" and axes.get_xlabel() == r"$\theta$ (degrees)"
+    assert axes.get_legend().get_texts()[1].get_text().startswith("minimum of $|AB|$: ")
+    against = minimum_figure(quantity, quantity.extremum((0, 90)), "b", -400, 400).axes[0]
+    assert against.get_xlabel() == "$b$ (mm)" and against.get_ylabel() == "minimum of $|AB|$ (mm)"
+    legend = [t.get_text() for t in against.get_legend().get_texts()]
+    assert all(t.startswith("$") and "**" not in t and "sqrt(" not in t for t in legend[:-1])
+    for drawn in (figure, against.figure):
+        drawn.savefig(io.BytesIO(), format="png")  # the mathtext parses

@@ -37,7 +37,11 @@ from collections.abc import Mapping
 from importlib import resources
 from typing import TYPE_CHECKING, TypedDict, TypeVar, Union
 
+import sympy
+
 from ...runtime.files import write_atomic
+from ...scene.constructions import Dyad
+from ...system import symbol
 from .jscode import branch_function
 
 if TYPE_CHECKING:
@@ -117,12 +121,27 @@ def model(motion: Motion, inputs: Mapping[str, float] | None = None, branch: str
         "guides": [[names.index(p), names.index(t), dx, dy] for p, t, (dx, dy) in motion.guides],
         "ground": [names.index(g) for g in motion.ground],
         "traced": [names.index(t) for t in motion.traced],
+        # where a dyad cannot assemble its two circles are drawn: its point, its bases, its radii as written
+        "dyads": [[names.index(n), names.index(c.bases[0]), names.index(c.bases[1]), *map(str, c.lengths)]
+                  for n, c in _dyads(motion)],
     }
+
+
+def _dyads(motion: Motion) -> list[tuple[str, Dyad]]:
+    return [(n, c) for n, c in motion.scene.points.items() if isinstance(c, Dyad)]
+
+
+def _radii(motion: Motion) -> list[tuple[sympy.Expr, sympy.Expr]]:
+    """Each dyad's two radii, in the page's variables (a dimension that is not one at its value):
+    computed after the points, as extra pairs the page reads only where a dyad fails."""
+    fixed = {symbol(n): v for n, v in motion.compiled.parameter_values.items() if n not in motion.params}
+    return [(sympy.sympify(a).xreplace(fixed), sympy.sympify(b).xreplace(fixed)) for _, c in _dyads(motion)
+            for a, b in [c.lengths]]
 
 
 def _functions(motion: Motion) -> list[str]:
     variables = [name for pair in motion.compiled.system.inputs.values() for name in pair] + list(motion.params)
-    return [branch_function(list(b.discriminants.values()), list(forms.values()), variables)
+    return [branch_function(list(b.discriminants.values()), [*forms.values(), *_radii(motion)], variables)
             for b, forms in zip(motion.branches, motion.points)]
 
 

@@ -59,7 +59,7 @@ function current() {
 function pose(k, angles) {
   const result = BRANCHES[k](variables(angles));
   const blocked = MODEL.branches[k].blocks.filter((name, i) => !(result.disc[i] >= 0));
-  return {points: blocked.length ? null : result.points, blocked};
+  return {points: blocked.length ? null : result.points, built: result.points, blocked};
 }
 
 function sweep(k) {
@@ -77,7 +77,7 @@ function bounds(poses, extra) {
   let [xmin, xmax, ymin, ymax] = [Infinity, -Infinity, Infinity, -Infinity];
   for (const points of poses.concat([extra])) {
     if (!points) continue;
-    for (const [x, y] of points) {
+    for (const [x, y] of points.slice(0, MODEL.points.length)) {  // after the points: the dyads' radii
       if (!isFinite(x) || !isFinite(y)) continue;
       xmin = Math.min(xmin, x); xmax = Math.max(xmax, x); ymin = Math.min(ymin, y); ymax = Math.max(ymax, y);
     }
@@ -95,8 +95,22 @@ function element(name, attributes, text) {
   return node;
 }
 
-// SVG's y axis points down: draw (x, -y).
-function draw(points, poses) {
+// The two circles of the first failing dyad whose centres are built: [[centre, radius], ...] and
+// the words naming them, or [] and "" when the failure is elsewhere.
+function unmetCircles(built, blocked) {
+  const n = MODEL.points.length;
+  const ok = i => isFinite(built[i][0]) && isFinite(built[i][1]);
+  const k = MODEL.dyads.findIndex(([d, p, q]) => blocked.includes(MODEL.points[d]) && ok(p) && ok(q));
+  if (k < 0) return [[], ""];
+  const [d, p, q, lp, lq] = MODEL.dyads[k];
+  const [rp, rq] = built[n + k];
+  const words = `${MODEL.points[d]}: the circles about ${MODEL.points[p]} (radius ${lp} = ${+rp.toPrecision(4)}) `
+    + `and ${MODEL.points[q]} (radius ${lq} = ${+rq.toPrecision(4)}) do not meet`;
+  return [[[p, rp], [q, rq]], words];
+}
+
+// SVG's y axis points down: draw (x, -y); ``unmet``: circles drawn where a dyad fails.
+function draw(points, poses, unmet) {
   const [xmin, xmax, ymin, ymax] = bounds(poses, points);
   const size = Math.max(xmax - xmin, ymax - ymin);
   const unit = size / 640;  // world units per screen pixel at full size
@@ -114,22 +128,29 @@ function draw(points, poses) {
     element("path", {...thin, class: "trajectory", d: path, "stroke-width": 1.5, "data-trajectory": MODEL.points[t]});
   }
   if (!points) return;
-  for (const [p, q] of MODEL.strings) {
+  // Where the mechanism cannot assemble, what is built is drawn (finite), and the failing circles.
+  const at = i => points[i] && isFinite(points[i][0]) && isFinite(points[i][1]);
+  for (const [c, r] of unmet) {
+    element("circle", {...thin, class: "unmet", cx: points[c][0], cy: -points[c][1], r, fill: "none",
+                       stroke: "crimson", "stroke-dasharray": "4 3", "data-centre": MODEL.points[c]});
+  }
+  for (const [p, q] of MODEL.strings.filter(([p, q]) => at(p) && at(q))) {
     element("line", {...thin, class: "string", x1: points[p][0], y1: -points[p][1], x2: points[q][0], y2: -points[q][1]});
   }
-  for (const [p, t, dx, dy] of MODEL.guides) {
+  for (const [p, t, dx, dy] of MODEL.guides.filter(([p, t]) => at(t))) {
     const [x, y] = points[t];
     element("line", {...thin, class: "guide", x1: x - 3 * size * dx, y1: -(y - 3 * size * dy), x2: x + 3 * size * dx, y2: -(y + 3 * size * dy)});
   }
-  for (const [p, q] of MODEL.bars) {
+  for (const [p, q] of MODEL.bars.filter(([p, q]) => at(p) && at(q))) {
     element("line", {...thin, class: "bar", "stroke-width": 4, x1: points[p][0], y1: -points[p][1], x2: points[q][0], y2: -points[q][1]});
   }
-  for (const g of MODEL.ground) {
+  for (const g of MODEL.ground.filter(at)) {
     const [x, y] = points[g];
     const s = 9 * unit;
     element("polygon", {class: "ground", points: `${x},${-y} ${x - s},${-y + 1.7 * s} ${x + s},${-y + 1.7 * s}`});
   }
   MODEL.points.forEach((name, i) => {
+    if (!at(i)) return;
     const [x, y] = points[i];
     element("circle", {...thin, class: "joint", "stroke-width": 1.5, r: 5 * unit, cx: x, cy: -y, "data-point": name});
     element("text", {class: "label", x: x + 7 * unit, y: -y - 7 * unit, "font-size": 14 * unit}, name);
@@ -139,14 +160,15 @@ function draw(points, poses) {
 function update() {
   const angles = current();
   const now = pose(branch, angles);
-  draw(now.points, sweep(branch));
+  const [unmet, words] = now.points ? [[], ""] : unmetCircles(now.built, now.blocked);
+  draw(now.points || now.built, sweep(branch), unmet);
   const positions = {};
   if (now.points) MODEL.points.forEach((name, i) => { positions[name] = now.points[i]; });
   const values = Object.fromEntries(Object.keys(sliders).map(n => [n, sliders[n].valueAsNumber]));
   const label = MODEL.branches[branch].label;
   statusLine.className = now.points ? "" : "blocked";
   statusLine.textContent = now.points ? `${label}: assembles`
-    : `${label}: cannot assemble here (negative discriminant at ${now.blocked.join(", ")})`;
+    : `${label}: cannot assemble here ` + (words || `(negative discriminant at ${now.blocked.join(", ")})`);
   // The state, for readers of the page (and its tests): exact doubles, as JSON.
   window.algkinState = {branch: label, values, assembles: !!now.points, blocked: now.blocked, positions};
   stateOut.dataset.branch = label;

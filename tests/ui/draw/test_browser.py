@@ -5,15 +5,17 @@ must match hand geometry (law of cosines, no algkin) and algkin's own values to 
 """
 
 import math
+import re
 import subprocess
 import sys
 
 import pytest
 
+from algkin.ui.draw import built
 from algkin.ui.html import write
 from algkin.analyses.motion import Motion
 
-from .browser import load
+from .browser import dump_dom, load
 from ...hand_linkages import CHEBYSHEV, FOURBAR, fourbar
 
 
@@ -63,7 +65,12 @@ def test_cannot_assemble_where_the_discriminant_is_negative(pages):
     assert fourbar(180, **dict(FOURBAR, l=0.75)) is None
     state, circles, status = load(pages / "fourbar.html", "?theta=180&l=0.75")
     assert state["assembles"] == "false" and state["blocked"] == "B" and state["positions"] == {}
-    assert circles == {} and "cannot assemble" in status
+    # what is built stays: O, D and the crank's A = (-1, 0); the circles about A and D are named
+    close(circles, {"O": (0, 0), "D": (4, 0), "A": (-1, 0)})
+    assert "B: the circles about A (radius l = 0.75) and D (radius m = 3.5) do not meet" in status
+    unmet = re.findall(r'<circle[^>]*class="unmet"[^>]*>', dump_dom(pages / "fourbar.html", "?theta=180&l=0.75"))
+    radii = sorted(float(re.search(r' r="([^"]+)"', c).group(1)) for c in unmet)
+    assert radii == [0.75, 3.5]
 
 
 @pytest.mark.parametrize("scene, query, values", [
@@ -85,8 +92,9 @@ def test_generated_javascript_agrees_with_python(tmp_path, scene, query, values)
     if pose.assembles:
         close(state["positions"], pose.points)
         close(circles, pose.points)
-    else:
-        assert state["positions"] == {} and circles == {}
+    else:  # what is built is drawn, as the matplotlib drawing draws it
+        assert state["positions"] == {}
+        close(circles, built(motion, pose))
 
 
 def test_a_length_slider_moves_the_boom_as_the_law_of_cosines_does(tmp_path):

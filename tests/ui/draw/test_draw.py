@@ -80,10 +80,17 @@ def test_both_assembly_modes_side_by_side():
         assert np.max(np.abs(joints(axes) - by_hand(200, side))) < 1e-12
 
 
-def test_cannot_assemble_is_said_not_drawn():
+def test_cannot_assemble_keeps_what_is_built_and_draws_the_circles_that_fail_to_meet():
+    # theta = 180: A = (-1, 0), D = (4, 0), |AD| = 5 > l + m = 0.75 + 3.5: no B
     figure = mechanism_figure(Motion("fourbar"), {"theta": 180}, {"l": 0.75}, curve=False)
-    texts = [t.get_text() for t in figure.axes[0].texts if t.get_visible()]
-    assert texts == ["cannot assemble: B"] and len(joints(figure.axes[0])) == 0
+    axes = figure.axes[0]
+    assert np.allclose(joints(axes), [(-1, 0), (0, 0), (4, 0)])  # A, O and D
+    assert any(line.get_xydata().shape == (2, 2) and np.allclose(line.get_xydata(), [(0, 0), (-1, 0)])
+               for line in axes.lines)  # the crank OA
+    circles = sorted((p.get_center(), p.get_radius()) for p in axes.patches if p.get_visible())
+    assert np.allclose([c for c, _ in circles], [(-1, 0), (4, 0)]) and np.allclose([r for _, r in circles], [0.75, 3.5])
+    [text] = [t.get_text() for t in axes.texts if t.get_visible() and t.get_text().startswith("cannot")]
+    assert text.startswith("cannot assemble B:\nthe circles about A (radius l = 0.75) and D (radius m = 3.5)")
 
 
 def test_gif_has_one_frame_per_angle(tmp_path):
@@ -285,3 +292,52 @@ def test_each_traced_point_has_its_own_colour(tmp_path):
     assert len(colours) == 2 and len(set(colours.values())) == 2
     legend = {t.get_text(): h.get_color() for t, h in zip(figure.legends[0].get_texts(), figure.legends[0].legend_handles)}
     assert legend["trajectory of B (left)"] != legend["trajectory of P (left)"]
+
+
+def test_a_gif_moves_the_crank_in_every_frame_within_the_drawn_modes_box(tmp_path, monkeypatch):
+    from PIL import Image
+
+    import algkin.ui.draw as draw
+
+    made, original = [], draw.new_figure
+
+    def recorded():
+        made.append(original())
+        return made[-1]
+
+    monkeypatch.setattr(draw, "new_figure", recorded)
+    out = animate(Motion("chebyshev-lambda"), tmp_path / "turn.gif", frames=12)
+    with Image.open(out) as gif:
+        frames = []
+        for k in range(gif.n_frames):
+            gif.seek(k)
+            frames.append(np.asarray(gif.convert("RGB"), dtype=int))
+    # each frame differs from the one before (the crank turned) by more than a palette's noise
+    assert all(np.mean(np.abs(a - b).sum(axis=2) > 100) > 1e-3 for a, b in zip(frames, frames[1:]))
+    ys = [y for t in range(360) for _, y in fourbar(t, **CHEBYSHEV, branch="left").values()]
+    span = max(ys) - min(ys)
+    low, high = made[0].axes[0].get_ylim()
+    assert min(ys) - 0.15 * span <= low <= min(ys) and max(ys) <= high <= max(ys) + 0.15 * span
+
+
+def test_a_mechanism_drawing_says_the_scenes_unit_on_its_axes():
+    axes = mechanism_figure(Motion("chebyshev-lambda"), {"angle": 63}, curve=False).axes[0]
+    assert (axes.get_xlabel(), axes.get_ylabel()) == ("$x$ (mm)", "$y$ (mm)")
+    assert modes_figure(Motion("chebyshev-lambda")).axes[0].get_xlabel() == "$x$ (mm)"
+
+
+def test_a_slider_is_a_block_on_a_rail_and_its_lines_point_no_pivot():
+    import matplotlib.lines
+    import matplotlib.patches
+
+    # theta = 90: A = (0, 1); B on y = 1/2 at 3 from A, ahead: B = (sqrt(9 - 1/4), 1/2)
+    axes = mechanism_figure(Motion("slider-crank"), {"theta": 90}, curve=False).axes[0]
+    b = np.array([np.sqrt(9 - 0.25), 0.5])
+    [block] = [p for p in axes.patches if p.get_visible() and isinstance(p, matplotlib.patches.Polygon)]
+    corners = block.get_xy()[:4]
+    assert np.allclose(corners.mean(axis=0), b) and np.ptp(corners[:, 0]) > np.ptp(corners[:, 1]) > 0
+    rails = [line for line in axes.get_lines() if isinstance(line, matplotlib.lines.AxLine)]
+    assert len(rails) == 2 and all(line.get_visible() for line in rails)
+    heights = sorted(line.get_xy1()[1] for line in rails)  # each edge horizontal, one either side of y = 1/2
+    assert heights[0] < 0.5 < heights[1] and all(line.get_xy1()[1] == line.get_xy2()[1] for line in rails)
+    assert (0.0, 0.5) not in [tuple(xy) for xy in joints(axes)]  # L, the line's point, is no ground pivot
