@@ -85,5 +85,6 @@ def _content_and_part(expr: sympy.Expr) -> tuple[sympy.Expr, sympy.Expr]:
         if expr.exp.is_Integer:
             return content**expr.exp, part**expr.exp
         # a root: sympy takes the root of the number out of the product by itself
-        return sympy.Pow(_keep_coeff(content, part), expr.exp).as_coeff_Mul()
+        number, rest = sympy.Pow(_keep_coeff(content, part), expr.exp).as_coeff_Mul()
+        return number, rest
     return sympy.Integer(1), expr.func(*[readable(a) for a in expr.args])
