@@ -85,13 +85,15 @@ class FivePoses:
     """Five poses and their Burmester pairs: the real ones (``pairs``, in increasing order of
     the separating variable, the centre's ``X`` unless it fails to separate), and the number
     of complex solutions, real ones included (``complex_count``, at most four);
-    ``solution``: the exact rational univariate representation they came from; ``excluded``:
-    the factors elimination brought into the eliminant, dropped, each with the reason."""
+    ``solution``: the exact rational univariate representation they came from, None where
+    there is no solution at all (every one at infinity: four poses of one angle, say);
+    ``excluded``: the factors elimination brought into the eliminant, dropped, each with the
+    reason."""
 
     poses: tuple[Pose, ...]
     pairs: tuple[BurmesterPair, ...]
     complex_count: int
-    solution: GroupSolution
+    solution: GroupSolution | None
     excluded: tuple[tuple[str, str], ...] = ()
 
 
@@ -164,16 +166,23 @@ def burmester(poses: Sequence[Pose], *, bits: int = 128) -> FivePoses:
 
     The four equations (``system``) are solved by ``solve_group``, exactly: an eliminant in
     the separating variable, every other unknown rational in its root; the real roots
-    certified (``modes``). A UsageError for degenerate poses (``_check_poses``), or where the
-    equations are not zero-dimensional; a ComputationError where they have no solution at
-    all, even complex (every Burmester pair at infinity)."""
+    certified (``modes``). No solution at all, even complex, is an answer: no pairs, a
+    complex count of 0. A UsageError for degenerate poses (``_check_poses``), or where the
+    equations are not zero-dimensional.
+
+    >>> q, turn = flint.fmpq, Angle(flint.fmpq(0), flint.fmpq(1))
+    >>> translated = [Pose(q(x), q(y), turn) for x, y in [(-4, 3), (1, 2), (4, -4), (-3, -2)]]
+    >>> burmester(translated + [Pose(q(0), q(-3), Angle(q(4, 5), q(-3, 5)))]).complex_count
+    0
+    """
     _check_poses(poses, counts=(5,))
     equations = _equations(poses)
     try:
         solution = solve_group(equations, list(UNKNOWNS))
     except ComputationError:
-        _check_dimension(poses, equations)
-        raise
+        if _solutions(poses, equations):
+            raise
+        return FivePoses(tuple(poses), (), 0, None)
     pairs = tuple(BurmesterPair(mode.index, mode.root, (mode.values["X"], mode.values["Y"]),
                                 (mode.values["x"], mode.values["y"]))
                   for mode in modes(solution, {}, bits=bits + 16) if mode.root is not None)
@@ -293,15 +302,14 @@ def _pole(first: Pose, second: Pose) -> Point | None:
     return ((1 - cos) * tx - sin * ty) / scale, (sin * tx + (1 - cos) * ty) / scale
 
 
-def _check_dimension(poses: Sequence[Pose], equations: Sequence[flint.fmpq_mpoly]) -> None:
-    """Where ``solve_group`` failed: a UsageError if the equations are not zero-dimensional (a
-    Groebner basis says so), a ComputationError if they have no solution; else nothing (the
-    failure stands)."""
+def _solutions(poses: Sequence[Pose], equations: Sequence[flint.fmpq_mpoly]) -> bool:
+    """Where ``solve_group`` failed: whether the equations have a solution (a Groebner basis
+    says); a UsageError if they have infinitely many."""
     symbols = sympy.symbols(UNKNOWNS)
     basis = sympy.groebner([sympy.sympify(str(e).replace("^", "**")) for e in equations], *symbols, order="grevlex")
     if basis.exprs == [1]:
-        raise ComputationError("the five poses' equations have no solution, even complex: every Burmester pair "
-                               "is at infinity")
+        return False
     if not basis.is_zero_dimensional:
         raise UsageError("poses", len(poses), "the poses are degenerate: the dyads reaching them form a curve, "
                          "not finitely many pairs (the equations are not zero-dimensional)")
+    return True
