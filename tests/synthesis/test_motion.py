@@ -325,6 +325,9 @@ def test_the_order_is_deterministic():
     (burmester, [_pose(k, k * k, "3/5", "4/5") for k in range(5)], "every pose has the same angle"),
     (burmester, [_pose(0, 0, 1, 0), _pose(2, 0, 0, 1), _pose(2, 2, -1, 0), _pose(0, 2, 0, -1),
                  _pose("6/5", "-2/5", "3/5", "4/5")], r"turned about one point, \(1, 1\)"),
+    # four turns about (1, 1) and a translation: the centre (1, 1) with any circle point on a line
+    (burmester, [_pose(0, 0, 1, 0), _pose(2, 0, 0, 1), _pose(2, 2, -1, 0), _pose(0, 2, 0, -1), _pose(3, 1, 1, 0)],
+     "the dyads reaching them form a curve"),
 ])
 def test_degenerate_poses_are_refused_in_one_line(call, poses, message):
     with pytest.raises(UsageError, match=message) as caught:
