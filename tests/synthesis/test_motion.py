@@ -299,6 +299,25 @@ def test_the_balls_are_as_narrow_as_asked():
                 assert ball.rad() <= flint.arb(2)**-bits * max(abs(ball.mid()), flint.arb(1))
 
 
+@pytest.mark.parametrize("name", ["docstring", "four real", "none real", "on a dyad"])
+def test_the_two_solutions_beyond_the_four_are_the_circular_points_at_infinity(name):
+    """Four bilinear equations in two planes have 6 solutions in the product of two projective
+    planes (the coefficient of a**2 b**2 in (a + b)**4); two are the circle and centre point
+    both at a circular point at infinity, (1, i, 0) or (1, -i, 0), where every bihomogenized
+    equation vanishes; the other four are affine, and none was excluded."""
+    w, big_w = sympy.symbols("w W")
+    equations, _ = system(FIVE_SETS[name])
+    homogeneous = [sympy.expand(_expr(e).subs({x: x / w, y: y / w, X: X / big_w, Y: Y / big_w}) * w * big_w)
+                   for e in equations]
+    for i in (sympy.I, -sympy.I):
+        at = {x: 1, y: i, w: 0, X: 1, Y: i, big_w: 0}
+        assert all(sympy.expand(h.subs(at)) == 0 for h in homogeneous)
+        mixed = {x: 1, y: i, w: 0, X: 1, Y: -i, big_w: 0}                    # the circle point at the other one
+        assert any(sympy.expand(h.subs(mixed)) != 0 for h in homogeneous)
+    five = burmester(FIVE_SETS[name])
+    assert five.complex_count == sympy.binomial(4, 2) - 2 and five.excluded == ()
+
+
 def test_no_solution_at_all_is_an_answer():
     translated = [_pose(px, py, 0, 1) for px, py in [(-4, 3), (1, 2), (4, -4), (-3, -2)]]
     five = burmester(translated + [_pose(0, -3, "4/5", "-3/5")])
