@@ -60,8 +60,8 @@ is the separating variable tried first, so pairs come in increasing ``X``."""
 @attrs.frozen
 class FourPoses:
     """Four poses and their curves: the centre points (``X, Y``, fixed frame) and the circle
-    points (``x, y``, moving frame) of every dyad reaching them, each a circular cubic with
-    integer coefficients, primitive."""
+    points (``x, y``, moving frame) of every dyad reaching them, each with integer
+    coefficients, primitive: a circular cubic, of lower degree where poses share an angle."""
 
     poses: tuple[Pose, ...]
     centre_curve: Polynomial
@@ -231,7 +231,7 @@ def _rows(equations: Sequence[flint.fmpq_mpoly], solve_for: tuple[str, str]) -> 
 def _curve(equations: Sequence[flint.fmpq_mpoly], *, solve_for: tuple[str, str], names: tuple[str, str]) -> Polynomial:
     (a, b, c), (d, e, f), (g, h, i) = _rows(equations, solve_for)
     determinant = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
-    if determinant.is_zero():  # not reached past _check_poses: the determinant's circular cubic part is not zero
+    if determinant.is_zero():  # every pose a turn about one point does it, refused by _check_poses; no other known
         raise ComputationError(f"the {'-'.join(names)} curve vanishes identically")
     home = flint.fmpq_mpoly_ctx.get(names, "lex")
     return Polynomial.of(_primitive(determinant).project_to_context(home))
