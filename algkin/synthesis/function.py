@@ -30,7 +30,10 @@ and, divided by ``2 a c``, Freudenstein's equation in the sign convention used h
   real ones in certified balls by ``modes``). Those two minors also vanish where pairs 1, 2, 3
   alone are of rank 2 (Cramer's rule on them fails): such factors of the eliminant are decided
   exactly (the other minors are not zero on them) and left out as extraneous (generic data: 3
-  of 6), leaving 3 complex solutions for five pairs.
+  of 6), leaving 3 complex solutions for five pairs. Where that system is not zero-dimensional
+  (special data: pairs sharing a crank angle), the minors holding the next three pairs.
+  Data with a minor a nonzero number have no solution; data with every minor zero, a family
+  (a UsageError: they determine no four-bar).
 
 A length found negative is the link pointing the other way: the length is made positive and
 its start turned by 180 degrees (the ratios then those of the turned starts). Every real
@@ -188,11 +191,11 @@ def system(pairs: Sequence[AnglePair], *, unknown_start: bool = False) -> tuple[
         return [r1 * row[0] + r2 * row[1] + r3 * row[2] - row[3] for row in _exact_rows(pairs)], ["R1", "R2", "R3"]
     problem = _Problem.of(pairs)
     if len(pairs) == 4:
-        return list(problem.equations), list(problem.unknowns)
+        return list(problem.equations()), list(problem.unknowns)
     ctx = flint.fmpq_mpoly_ctx.get(DOUBLE + ("w",), "lex")
     w = ctx.gens()[-1]
     saturation = w * problem.invariants[(0, 1, 2)].determinant.project_to_context(ctx) - 1
-    return [e.project_to_context(ctx) for e in problem.equations] + [saturation], list(problem.unknowns) + ["w"]
+    return [e.project_to_context(ctx) for e in problem.equations()] + [saturation], list(problem.unknowns) + ["w"]
 
 
 def _checked(pairs: Sequence[AnglePair], *, unknown_start: bool,
@@ -230,9 +233,9 @@ def _absolute(pairs: tuple[AnglePair, ...], *, ground: flint.fmpq, bits: int) ->
                          "(cos output, cos input) of the three pairs are on one line")
     ratios = matrix.solve(flint.fmpq_mat([[r[3]] for r in rows]))
     r1, r2, r3 = (ratios[k, 0] for k in range(3))
-    excluded = _infinite(r1 == 0, r2 == 0, 1, 1)
-    if excluded:
-        return FunctionSynthesis(pairs, False, ground, (), 1, 1, excluded)
+    infinite = _infinite(r1 == 0, r2 == 0, 1, 1)
+    if infinite is not None:
+        return FunctionSynthesis(pairs, False, ground, (), 1, 1, (infinite,))
     first = pairs[0]
     crank, rocker, r3 = ground / abs(r1), ground / abs(r2), r3 * _sign(r1) * _sign(r2)
     squared = crank**2 + rocker**2 + ground**2 - 2 * crank * rocker * r3   # positive: see the module's docstring
@@ -252,10 +255,12 @@ def _root(square: flint.fmpq, bits: int) -> Number:
         return flint.arb(square).sqrt()
 
 
-def _infinite(crank: bool, rocker: bool, count: int, real: int) -> tuple[Exclusion, ...]:
-    """Exclusions for a crank or rocker of infinite length (R1 or R2 zero)."""
-    return tuple(Exclusion(f"{why}: {link} would be infinitely long", count, real)
-                 for zero, why, link in ((crank, "R1 = 0", "the crank"), (rocker, "R2 = 0", "the rocker")) if zero)[:1]
+def _infinite(crank: bool, rocker: bool, count: int, real: int) -> Exclusion | None:
+    """The exclusion of ``count`` solutions (``real`` of them real) with an infinitely long
+    crank (R1 zero) or rocker (R2 zero); None where neither is."""
+    if crank:
+        return Exclusion("R1 = 0: the crank would be infinitely long", count, real)
+    return Exclusion("R2 = 0: the rocker would be infinitely long", count, real) if rocker else None
 
 
 def _sign(value: flint.fmpq) -> int:
@@ -284,31 +289,33 @@ class _Cramer:
 
 @attrs.frozen
 class _Problem:
-    """The pairs' rows over ``HALF``, the system over ``DOUBLE`` (``equations`` in ``unknowns``),
-    every 4-by-4 minor (``minors``) and Cramer's rule on every three pairs (``invariants``)."""
+    """The pairs' rows over ``HALF``; over ``DOUBLE``, every 4-by-4 minor (``minors``, by the
+    pairs they hold) and Cramer's rule on every three pairs (``invariants``)."""
 
     pairs: tuple[AnglePair, ...]
-    rows: tuple[tuple[flint.fmpq_mpoly, ...], ...]
-    equations: tuple[flint.fmpq_mpoly, ...]
-    unknowns: tuple[str, ...]
-    minors: tuple[flint.fmpq_mpoly, ...]
+    minors: dict[tuple[int, int, int, int], flint.fmpq_mpoly]
     invariants: dict[tuple[int, int, int], _Cramer]
 
     @classmethod
     def of(cls, pairs: tuple[AnglePair, ...]) -> _Problem:
         rows = _rows(pairs)
-        ctx = flint.fmpq_mpoly_ctx.get(DOUBLE, "lex")
-        ci, si, co, so = ctx.gens()
-        minors = tuple(_on_double(_det([rows[i] for i in chosen])) for chosen in itertools.combinations(range(len(rows)), 4))
-        equations: tuple[flint.fmpq_mpoly, ...]
-        unknowns: tuple[str, ...]
-        if len(pairs) == 4:
-            equations, unknowns = (minors[0], co**2 + so**2 - 1), ("Co", "So")
-        else:  # the minors of pairs 1, 2, 3, 4 and 1, 2, 3, 5: lexicographic order
-            equations, unknowns = (minors[0], minors[1], ci**2 + si**2 - 1, co**2 + so**2 - 1), DOUBLE
+        minors = {chosen: _on_double(_det([rows[i] for i in chosen]))
+                  for chosen in itertools.combinations(range(len(rows)), 4)}
         invariants = {chosen: _cramer([rows[i] for i in chosen], chosen)
                       for chosen in itertools.combinations(range(len(rows)), 3)}
-        return cls(pairs, tuple(rows), equations, unknowns, minors, invariants)
+        return cls(pairs, minors, invariants)
+
+    @property
+    def unknowns(self) -> tuple[str, ...]:
+        return ("Co", "So") if len(self.pairs) == 4 else DOUBLE
+
+    def equations(self, rows: tuple[int, int, int] = (0, 1, 2)) -> tuple[flint.fmpq_mpoly, ...]:
+        """The minors holding the three pairs ``rows`` (where they are of rank 3, Cramer's rule
+        on them and the other pairs' equations), and the circles."""
+        ctx = flint.fmpq_mpoly_ctx.get(DOUBLE, "lex")
+        ci, si, co, so = ctx.gens()
+        minors = tuple(m for chosen, m in self.minors.items() if set(rows) <= set(chosen))
+        return minors + ((co**2 + so**2 - 1,) if len(self.pairs) == 4 else (ci**2 + si**2 - 1, co**2 + so**2 - 1))
 
 
 def _rows(pairs: tuple[AnglePair, ...]) -> list[tuple[flint.fmpq_mpoly, ...]]:
@@ -384,30 +391,33 @@ def _even(cos: int, sin: int, twice_cos_squared: flint.fmpq_mpoly, twice_sin_squ
 
 @attrs.frozen
 class _Factor:
-    """An irreducible factor of the eliminant, with the invariants reduced modulo it (``residues``)."""
+    """An irreducible factor of the eliminant: ``residue`` reduces a polynomial in ``DOUBLE``
+    modulo it (its value at the factor's solutions); ``real``: how many real roots it has."""
 
     polynomial: flint.fmpq_poly
     residue: Callable[[flint.fmpq_mpoly], flint.fmpq_poly]
+    real: int
 
     @property
     def degree(self) -> int:
         return int(self.polynomial.degree())
 
-    @property
-    def real(self) -> int:
-        return len(real_roots(self.polynomial))
-
 
 def _unknown_start(pairs: tuple[AnglePair, ...], *, ground: flint.fmpq, bits: int) -> FunctionSynthesis:
     problem = _Problem.of(pairs)
-    group = solve_group(list(problem.equations), list(problem.unknowns))
+    if all(m.is_zero() for m in problem.minors.values()):
+        raise UsageError("pairs", f"{len(pairs)} pairs", "every start satisfies these pairs: they do not "
+                         "determine a four-bar")
+    if any(m.is_constant() and not m.is_zero() for m in problem.minors.values()):  # no start makes it vanish
+        return FunctionSynthesis(pairs, True, ground, (), 0, 0, ())
+    group, rows = _solved(problem)
     eliminant = univariate(group.eliminant.to_flint(), group.variable)
     excluded: list[Exclusion] = []
     kept: list[tuple[_Factor, _Cramer]] = []
     complex_count = real_count = 0
     for polynomial, _ in eliminant.factor()[1]:
-        factor = _Factor(polynomial, _reducer(group, polynomial))
-        verdict = _decided(problem, factor)
+        factor = _Factor(polynomial, _reducer(group, polynomial), len(real_roots(polynomial)))
+        verdict = _decided(problem, factor, rows)
         if not isinstance(verdict, Exclusion) or verdict.solutions:
             complex_count, real_count = complex_count + factor.degree, real_count + factor.real
         if isinstance(verdict, Exclusion):
@@ -428,12 +438,25 @@ def _unknown_start(pairs: tuple[AnglePair, ...], *, ground: flint.fmpq, bits: in
     return FunctionSynthesis(pairs, True, ground, tuple(solutions), complex_count, real_count, tuple(excluded), group)
 
 
-def _decided(problem: _Problem, factor: _Factor) -> _Cramer | Exclusion:
+def _solved(problem: _Problem) -> tuple[GroupSolution, tuple[int, int, int]]:
+    """The group of the minors holding pairs 1, 2, 3; where that system is not zero-dimensional
+    or has repeated solutions (special data), those holding the next three pairs, in order."""
+    failures = []
+    for rows in itertools.combinations(range(len(problem.pairs)), 3) if len(problem.pairs) == 5 else [(0, 1, 2)]:
+        try:
+            return solve_group(list(problem.equations(rows)), list(problem.unknowns)), rows
+        except ComputationError as error:
+            failures.append(f"pairs {', '.join(str(r + 1) for r in rows)}: {error}")
+    raise ComputationError("the pairs are special: no system of minors could be solved (" + "; ".join(failures[:2])
+                           + (f"; and {len(failures) - 2} more" if len(failures) > 2 else "") + ")")
+
+
+def _decided(problem: _Problem, factor: _Factor, rows: tuple[int, int, int]) -> _Cramer | Exclusion:
     """The factor's solutions decided exactly: extraneous (a minor not zero on them), degenerate
-    (R undetermined, or a length infinite or zero), or solutions, with the Cramer's rule that holds there."""
-    failing = [i + 1 for i, minor in enumerate(problem.minors) if not factor.residue(minor).is_zero()]
-    if failing:
-        return Exclusion("extraneous: pairs 1, 2, 3 leave R1, R2, R3 undetermined there, and the other pairs' "
+    (R undetermined, or a length infinite), or solutions, with the Cramer's rule that holds there."""
+    if any(not factor.residue(minor).is_zero() for minor in problem.minors.values()):
+        named = ", ".join(str(r + 1) for r in rows)
+        return Exclusion(f"extraneous: pairs {named} leave R1, R2, R3 undetermined there, and the other pairs' "
                          "equations fail", factor.degree, factor.real, solutions=False)
     cramer = next((c for c in problem.invariants.values() if not factor.residue(c.determinant).is_zero()), None)
     if cramer is None:
@@ -441,7 +464,7 @@ def _decided(problem: _Problem, factor: _Factor) -> _Cramer | Exclusion:
                          solutions=False)
     infinite = _infinite(factor.residue(cramer.crank).is_zero(), factor.residue(cramer.rocker).is_zero(),
                          factor.degree, factor.real)
-    return infinite[0] if infinite else cramer
+    return cramer if infinite is None else infinite
 
 
 def _reducer(group: GroupSolution, factor: flint.fmpq_poly) -> Callable[[flint.fmpq_mpoly], flint.fmpq_poly]:

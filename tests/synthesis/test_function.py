@@ -399,3 +399,18 @@ def test_random_five_pair_sets_close_the_loop():
         for solution in found.solutions:
             assert closes_the_loop(solution, pairs) < mpmath.mpf(10) ** -30
         assert found.complex_count <= 3
+
+
+def test_four_pairs_three_at_one_crank_angle_have_no_solution_an_answer_not_an_error():
+    """Pairs 1, 2, 4 put the crank at -90 degrees with three different rocker angles: a
+    four-bar has at most two rocker positions at one crank angle, so none passes."""
+    found = freudenstein([pair(*p) for p in [(-1, "1/2"), (-1, -1), (0, 3), (-1, 2)]], unknown_start=True)
+    assert (found.solutions, found.complex_count, found.real_count) == ((), 0, 0)
+
+
+def test_four_pairs_that_every_start_satisfies_are_a_usage_error():
+    """Three pairs with the crank at 0 degrees: R1 = 1 (the crank as long as the ground, its end
+    on the rocker's pivot) with R3 = R2 solves them at any rocker angle, so the four pairs leave
+    a family: they determine no four-bar."""
+    with pytest.raises(UsageError, match="every start satisfies these pairs"):
+        freudenstein([pair(*p) for p in [(0, 1), (0, "-1/3"), (0, 3), ("-1/3", 2)]], unknown_start=True)
