@@ -403,7 +403,7 @@ def summary(rows):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--repeat", type=int, default=3, help="calls timed per solver and set (the best counts)")
+    parser.add_argument("--repeat", type=int, default=5, help="calls timed per solver and set (the best counts)")
     args = parser.parse_args()
     try:
         from pylinkage import synthesis as pylinkage
