@@ -20,16 +20,21 @@ rotation) each row is quadratic in its ``t_j``, and rank 2 is ``det(rows 1, 2, 3
 ``det(rows 1, 2, 4) = 0`` for each dyad, four equations in ``t_1..t_4``. Their resultants in
 ``t_3`` and in ``t_4`` are of degree (8, 8) in ``(t_1, t_2)``, each ``(1 + t_1**2)(1 + t_2**2)``
 (the circle points) times a part of degree (6, 6); the resultant of those two parts in ``t_2``
-is the eliminant, of degree 72 in ``t_1``: for general data its factors are one of degree 36,
+is the eliminant, of degree 72 in ``t_1``. For general data its factors are one of degree 36,
 the solutions, and spurious ones, each excluded with its reason (``Excluded``): the circle
 points ``1 + t_1**2`` (to the 9th power), the two points where a dyad's rows 1 and 2 are
-dependent (to the 4th: its joint is undetermined there, every ``t_3, t_4`` satisfy its two
-equations), and one quadratic factor whose second angle would be infinite.
-Every factor's roots are lifted exactly, in ``QQ[t_1]/(factor)``: ``t_2``, ``t_3``, ``t_4`` as
-the common root of two polynomials (their gcd there, of degree 1), each ``z`` by Cramer's rule
-from two rows; a factor is a solution factor when the lifts satisfy the twelve equations of
-``system`` exactly modulo it, never otherwise. Its real roots, isolated in certified balls
-(``algkin.system.roots``), give every real four-bar, each value a certified ball.
+dependent (to the 4th: its joint is undetermined there, and every ``t_3, t_4`` satisfy its two
+equations), and a quadratic where ``t_3`` is at a circle point. On special data more (five
+points on a line: ``t_1 = 0``, where the crank's joint is undetermined).
+
+Each factor is decided by lifting its roots: ``t_2`` from a relation linear in it (the
+resultants' pseudo-remainder sequence), ``t_3`` and ``t_4`` each the common root of two
+quadratics, each ``z`` the kernel of its dyad's rows 1 and 2. Where none of the divisors on the
+way vanishes at the factor's roots, they are solutions (``_values`` says why); that is decided
+modulo a prime where it shows every divisor invertible (a proof), exactly over QQ otherwise,
+and the lifts are checked in the twelve equations of ``system``. The real roots of the
+solution factors, isolated in certified balls (``algkin.system.roots``), give every real
+four-bar, each value a certified ball computed by the same lift.
 
 >>> from flint import fmpq
 >>> points = [(fmpq(x), fmpq(y)) for x, y in [(3, -2), (7, 5), (-4, 9), (11, -6), (2, 13)]]
@@ -118,8 +123,8 @@ class PathSolution:
 @attrs.frozen
 class PathSynthesis:
     """Every four-bar through the five ``points`` with the given pivots: the real ones
-    (``solutions``, ascending in ``t1``), the number of complex ones (``complex_count``, each
-    once), the factors of the eliminant left out and why (``excluded``), the sizes (``size``)
+    (``solutions``, ascending in ``t1``; ``real_count`` of them), the number of complex ones
+    (``complex_count``, each once), the factors of the eliminant left out and why (``excluded``), the sizes (``size``)
     and the rotation the half-angle tangents are taken about (``offset``)."""
 
     points: tuple[Point, ...]
@@ -127,13 +132,10 @@ class PathSynthesis:
     rocker_pivot: Point
     solutions: tuple[PathSolution, ...]
     complex_count: int
+    real_count: int
     excluded: tuple[Excluded, ...]
     size: Size
     offset: Angle
-
-    @property
-    def real_count(self) -> int:
-        return len(self.solutions)
 
 
 def system(points: Sequence[Point], *, crank_pivot: Point, rocker_pivot: Point
@@ -205,7 +207,7 @@ def five_point_path(points: Sequence[Point], *, crank_pivot: Point, rocker_pivot
     solutions = [s for factor in best.factors
                  for s in _real_solutions(factor, best.chain, points, crank_pivot, rocker_pivot, bits=bits)]
     return PathSynthesis(points, crank_pivot, rocker_pivot, tuple(sorted(solutions, key=_order)), best.count,
-                         best.excluded, best.size, best.chain.offset)
+                         len(solutions), best.excluded, best.size, best.chain.offset)
 
 
 def _order(solution: PathSolution) -> flint.fmpq:
@@ -254,8 +256,9 @@ def _solve(points: tuple[Point, ...], crank_pivot: Point, rocker_pivot: Point, o
             _lift(modulus, chain, equations)
             lifted.append(modulus)
         except _NoLift as why:
-            known = [reason for test, reason in reasons if test(modulus)]
-            excluded.append(Excluded(modulus.degree(), int(multiplicity), str(_primitive(modulus)).replace("^", "**"),
+            known = [reason for test, reason in reasons if test(modulus)][:1]  # the first: the circle
+            # points' factor divides the dependent rows' polynomials too
+            excluded.append(Excluded(modulus.degree(), int(multiplicity), _written(modulus),
                                      "; ".join(known + [str(why)])))
     size = Size((int(third.degrees()[0]), int(third.degrees()[1])), int(eliminant.degrees()[0]), len(eliminant),
                 _bits(_univariate(eliminant)), sum(f.degree() for f in lifted))
@@ -328,6 +331,12 @@ def _primitive(poly: flint.fmpq_poly) -> flint.fmpz_poly:
         content = content.gcd(c)
     integer = flint.fmpz_poly([c // content for c in integer.coeffs()])
     return -integer if integer.coeffs()[-1] < 0 else integer
+
+
+def _written(poly: flint.fmpq_poly) -> str:
+    """``poly``, primitive, in ``t1`` and sympy's syntax."""
+    ctx = flint.fmpz_mpoly_ctx.get(("t1",), "lex")
+    return str(ctx.from_dict({(k,): c for k, c in enumerate(_primitive(poly).coeffs()) if c})).replace("^", "**")
 
 
 def _bits(poly: flint.fmpq_poly) -> int:

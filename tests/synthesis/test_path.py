@@ -127,7 +127,7 @@ def test_morgan_wampler_problem_7() -> None:
     for (c, s), angle in zip(solution.rotations, (1.44734213756, 0.928413708131, 0.751699211109, 0.387116282208)):
         assert abs(float(c.mid()) - mpmath.cos(angle)) < 1e-9 and abs(float(s.mid()) - mpmath.sin(angle)) < 1e-9
     # collinear data: theta_1 = 0 (t1 = 0) is a spurious root, said so
-    zero, = [e for e in result.excluded if e.factor == "x"]
+    zero, = [e for e in result.excluded if e.factor == "t1"]
     assert "joint is undetermined or at infinity" in zero.reason
 
 
