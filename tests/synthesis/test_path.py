@@ -20,7 +20,7 @@ import mpmath
 import pytest
 import sympy
 
-from algkin.errors import UsageError
+from algkin.errors import ComputationError, UsageError
 from algkin.synthesis.path import GENERIC_COUNT, PathSynthesis, five_point_path, system
 
 Q = flint.fmpq
@@ -141,7 +141,7 @@ class Known(NamedTuple):
     rocker2: sympy.Expr
 
 
-def _known_fourbar() -> Known:
+def _known_fourbar(*, held: bool = False) -> Known:
     """A four-bar with rational dimensions (crank 2 at (0, 0), coupler 5, rocker pivot (4, 0))
     at five configurations where every angle has rational cos and sin: from one configuration,
     the others by the two involutions of its configuration curve (the crank held, the coupler's
@@ -173,10 +173,13 @@ def _known_fourbar() -> Known:
 
     configurations = [start]
     a, b = start
-    while len(configurations) < 5:  # every other one: two with the crank or the coupler held alike
-        b = other(v, {u: a}, b)     # make the data special (a whole family of dyads through them)
+    while len(configurations) < 5:  # both involutions in turn (``held``: each configuration kept,
+        b = other(v, {u: a}, b)     # two in turn sharing the crank's angle or the coupler's)
+        if held:
+            configurations.append((a, b))
         a = other(u, {v: b}, a)
         configurations.append((a, b))
+    configurations = configurations[:5]
     points, turns = [], []
     for a, b in configurations:
         first, _ = joints(a, b)
@@ -221,6 +224,17 @@ def test_a_known_four_bar_is_among_the_solutions() -> None:
     assert result.offset.cos == 1
     cos, sin = known.turns[0]
     assert solution.root.exact() == _fmpq(sin / (1 + cos)) == Q(-11, 2)
+
+
+def test_points_of_a_four_bar_with_its_crank_held_are_special_and_said_so() -> None:
+    """Two of the points reached with the crank at one angle (the coupler's other assembly): the
+    first resultant has a factor in t1 alone (for that turn, every t2 has a t3), which the
+    elimination does not follow: a ComputationError, on one line."""
+    known = _known_fourbar(held=True)
+    points = [(_fmpq(x), _fmpq(y)) for x, y in known.points]
+    with pytest.raises(ComputationError) as error:
+        five_point_path(points, crank_pivot=(Q(0), Q(0)), rocker_pivot=(Q(4), Q(0)))
+    assert "in one angle alone: the data are special" in str(error.value) and "\n" not in str(error.value)
 
 
 @pytest.mark.parametrize("data", ["general", "problem 7"])
