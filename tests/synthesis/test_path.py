@@ -1,0 +1,268 @@
+"""Five-point path generation with both ground pivots given (Morgan and Wampler 1990).
+
+Expected values from independent sources: the general count 36 (Morgan and Wampler; the
+twelve equations' Groebner basis in Singular, where installed); the straight-line example,
+their Problem 7, with its count of solutions (33, 15 real) and one real four-bar as PHCpack's
+documentation reports them (phcpy's "design of a 4-bar mechanism", numerical continuation);
+a four-bar built by hand with rational dimensions, whose coupler point gives the five points;
+and every real solution put back into the original distance equations with mpmath at 50 digits.
+"""
+
+from __future__ import annotations
+
+import random
+import shutil
+import subprocess
+from typing import NamedTuple
+
+import flint
+import mpmath
+import pytest
+import sympy
+
+from algkin.errors import ComputationError, UsageError
+from algkin.synthesis.path import GENERIC_COUNT, PathSynthesis, five_point_path, system
+
+Q = flint.fmpq
+
+
+def _points(pairs: list[tuple[object, object]]) -> list[tuple[flint.fmpq, flint.fmpq]]:
+    return [(Q(str(x)), Q(str(y))) if not isinstance(x, flint.fmpq) else (x, y) for x, y in pairs]
+
+
+GENERIC = _points([(3, -2), (7, 5), (-4, 9), (11, -6), (2, 13)])
+GENERIC_PIVOTS = {"crank_pivot": (Q(-5), Q(1)), "rocker_pivot": (Q(8), Q(-3))}
+
+# Morgan and Wampler's Problem 7: five points on the line y = x + 0.56, pivots (0, 0) and (1, 0)
+# (as phcpy's documentation copies them).
+PROBLEM_7 = [(Q(50, 100), Q(106, 100)), (Q(-83, 100), Q(-27, 100)), (Q(-34, 100), Q(22, 100)),
+             (Q(-13, 100), Q(43, 100)), (Q(22, 100), Q(78, 100))]
+PROBLEM_7_PIVOTS = {"crank_pivot": (Q(0), Q(0)), "rocker_pivot": (Q(1), Q(0))}
+
+
+def _random_data(seed: int) -> tuple[list[tuple[flint.fmpq, flint.fmpq]], dict[str, tuple[flint.fmpq, flint.fmpq]]]:
+    rng = random.Random(seed)
+
+    def number() -> flint.fmpq:
+        return Q(rng.randint(-99, 99), rng.randint(1, 9))
+
+    points = [(number(), number()) for _ in range(5)]
+    return points, {"crank_pivot": (number(), number()), "rocker_pivot": (number(), number())}
+
+
+def _mp(ball: flint.arb) -> mpmath.mpf:
+    return mpmath.mpf(ball.mid().str(60, radius=False))
+
+
+def _distance_errors(result: PathSynthesis) -> list[mpmath.mpf]:
+    """For every real solution, each dyad's |P_j + R_j z - pivot| - |P_0 + z - pivot| (j = 1..4),
+    and cos**2 + sin**2 - 1, at 50 digits, from the solution's balls."""
+    errors = []
+    with mpmath.workdps(50):
+        points = [(mpmath.mpf(int(x.p)) / int(x.q), mpmath.mpf(int(y.p)) / int(y.q)) for x, y in result.points]
+        for solution in result.solutions:
+            turns = [(mpmath.mpf(1), mpmath.mpf(0))] + [(_mp(c), _mp(s)) for c, s in solution.rotations]
+            errors += [c * c + s * s - 1 for c, s in turns]
+            for joint, pivot in ((solution.crank_joint, result.crank_pivot),
+                                 (solution.rocker_joint, result.rocker_pivot)):
+                z = (_mp(joint[0]) - points[0][0], _mp(joint[1]) - points[0][1])
+                a = (mpmath.mpf(int(pivot[0].p)) / int(pivot[0].q), mpmath.mpf(int(pivot[1].p)) / int(pivot[1].q))
+                lengths = [mpmath.hypot(p[0] + c * z[0] - s * z[1] - a[0], p[1] + s * z[0] + c * z[1] - a[1])
+                           for p, (c, s) in zip(points, turns)]
+                errors += [length - lengths[0] for length in lengths[1:]]
+    return errors
+
+
+def test_general_data_have_36_solutions() -> None:
+    for seed in (1, 2):
+        points, pivots = _random_data(seed)
+        result = five_point_path(points, **pivots)
+        assert result.complex_count == GENERIC_COUNT == 36
+        assert result.size.resultant_degree == 72 and result.size.solution_degree == 36
+        # every factor of the eliminant is accounted for: the solutions' or excluded with a reason
+        assert result.size.solution_degree + sum(e.degree * e.multiplicity for e in result.excluded) == 72
+        assert all(e.reason for e in result.excluded)
+
+
+def test_general_data_spurious_factors_are_the_circle_points_and_dependent_rows() -> None:
+    result = five_point_path(GENERIC, **GENERIC_PIVOTS)
+    assert [(e.degree, e.multiplicity) for e in result.excluded] == [(2, 1), (2, 4), (2, 4), (2, 9)]
+    once, crank, rocker, circle = (e.reason for e in result.excluded)
+    assert "circle point (1 + t3**2 = 0)" in once
+    assert {"crank's rows at theta_1, theta_2 are dependent" in r for r in (crank, rocker)} == {True, False}
+    assert {"rocker's rows at theta_1, theta_2 are dependent" in r for r in (crank, rocker)} == {True, False}
+    assert circle.startswith("theta_1 at a circle point (1 + t1**2 = 0)")
+
+
+@pytest.mark.skipif(shutil.which("Singular") is None, reason="Singular is not installed")
+def test_count_agrees_with_singular() -> None:
+    """The twelve equations handed to Singular: a Groebner basis over a prime field, and the
+    dimension of its quotient ring (the complex solutions with multiplicity)."""
+    for points, pivots in ((GENERIC, GENERIC_PIVOTS), _random_data(1)):
+        equations, names = system(points, **pivots)
+        script = (f"ring r = 32003, ({','.join(names)}), dp;\n"
+                  f"ideal I = {', '.join(str(e) for e in equations)};\n"
+                  "ideal G = std(I); print(dim(G)); print(vdim(G)); quit;\n")
+        run = subprocess.run(["Singular", "-q"], input=script, capture_output=True, text=True, timeout=60)
+        dimension, count = run.stdout.split()
+        assert (dimension, count) == ("0", "36")
+        assert five_point_path(points, **pivots).complex_count == int(count)
+
+
+def test_morgan_wampler_problem_7() -> None:
+    """Five points on a line: 33 solutions, 15 real (phcpy's documentation of Problem 7), one of
+    them the straight-line four-bar it draws: z = (-0.0877960434509, -0.851386907516) for the
+    crank at (0, 0), (0.235837391307, -1.41899202704) for the rocker at (1, 0), turned by
+    1.44734213756, 0.928413708131, 0.751699211109, 0.387116282208 radians."""
+    result = five_point_path(PROBLEM_7, **PROBLEM_7_PIVOTS)
+    assert (result.complex_count, result.real_count) == (33, 15)
+    x0, y0 = 0.50, 1.06
+    drawn = [s for s in result.solutions
+             if abs(float(s.crank_joint[0].mid()) - (x0 - 0.0877960434509)) < 1e-9
+             and abs(float(s.crank_joint[1].mid()) - (y0 - 0.851386907516)) < 1e-9]
+    assert len(drawn) == 1
+    solution, = drawn
+    assert abs(float(solution.rocker_joint[0].mid()) - (x0 + 0.235837391307)) < 1e-9
+    assert abs(float(solution.rocker_joint[1].mid()) - (y0 - 1.41899202704)) < 1e-9
+    for (c, s), angle in zip(solution.rotations, (1.44734213756, 0.928413708131, 0.751699211109, 0.387116282208)):
+        assert abs(float(c.mid()) - mpmath.cos(angle)) < 1e-9 and abs(float(s.mid()) - mpmath.sin(angle)) < 1e-9
+    # collinear data: theta_1 = 0 (t1 = 0) is a spurious root, said so
+    zero, = [e for e in result.excluded if e.factor == "t1"]
+    assert "joint is undetermined or at infinity" in zero.reason
+
+
+class Known(NamedTuple):
+    points: list[tuple[sympy.Expr, sympy.Expr]]
+    turns: list[tuple[sympy.Expr, sympy.Expr]]
+    crank_joint: tuple[sympy.Expr, ...]
+    rocker_joint: tuple[sympy.Expr, ...]
+    crank_pivot: tuple[sympy.Expr, sympy.Expr]
+    rocker_pivot: tuple[sympy.Expr, sympy.Expr]
+    rocker2: sympy.Expr
+
+
+def _known_fourbar(*, held: bool = False) -> Known:
+    """A four-bar with rational dimensions (crank 2 at (0, 0), coupler 5, rocker pivot (4, 0))
+    at five configurations where every angle has rational cos and sin: from one configuration,
+    the others by the two involutions of its configuration curve (the crank held, the coupler's
+    other assembly; the coupler's direction held, the crank's other place), each the other root
+    of a quadratic with one rational root. Its coupler point: (1, 2) in the coupler's frame."""
+    u, v = sympy.symbols("u v")
+    crank_pivot, rocker_pivot = (sympy.Integer(0), sympy.Integer(0)), (sympy.Integer(4), sympy.Integer(0))
+    crank, coupler, w = sympy.Integer(2), sympy.Integer(5), (sympy.Integer(1), sympy.Integer(2))
+
+    def unit(t: sympy.Expr) -> tuple[sympy.Expr, sympy.Expr]:
+        return (1 - t**2) / (1 + t**2), 2 * t / (1 + t**2)
+
+    def joints(a: sympy.Expr, b: sympy.Expr) -> tuple[tuple[sympy.Expr, ...], tuple[sympy.Expr, ...]]:
+        first = tuple(p + crank * e for p, e in zip(crank_pivot, unit(a)))
+        return first, tuple(p + coupler * e for p, e in zip(first, unit(b)))
+
+    start = (sympy.Rational(1, 3), sympy.Rational(1, 2))
+    rocker2 = sum((j - p)**2 for j, p in zip(joints(*start)[1], rocker_pivot))
+    d = [q - p for p, q in zip(crank_pivot, rocker_pivot)]
+    ea, eb = (1 - u**2, 2 * u), (1 - v**2, 2 * v)
+    curve = sympy.expand(2 * crank * coupler * (ea[0] * eb[0] + ea[1] * eb[1])
+                         - 2 * crank * (ea[0] * d[0] + ea[1] * d[1]) * (1 + v**2)
+                         - 2 * coupler * (eb[0] * d[0] + eb[1] * d[1]) * (1 + u**2)
+                         + (crank**2 + coupler**2 + d[0]**2 + d[1]**2 - rocker2) * (1 + u**2) * (1 + v**2))
+
+    def other(var: sympy.Symbol, fixed: dict[sympy.Symbol, sympy.Expr], known: sympy.Expr) -> sympy.Expr:
+        quadratic = sympy.Poly(curve.subs(fixed), var).all_coeffs()
+        return -quadratic[1] / quadratic[0] - known
+
+    configurations = [start]
+    a, b = start
+    while len(configurations) < 5:  # both involutions in turn (``held``: each configuration kept,
+        b = other(v, {u: a}, b)     # two in turn sharing the crank's angle or the coupler's)
+        if held:
+            configurations.append((a, b))
+        a = other(u, {v: b}, a)
+        configurations.append((a, b))
+    configurations = configurations[:5]
+    points, turns = [], []
+    for a, b in configurations:
+        first, _ = joints(a, b)
+        c, s = unit(b)
+        points.append((first[0] + c * w[0] - s * w[1], first[1] + s * w[0] + c * w[1]))
+        c0, s0 = unit(configurations[0][1])
+        turns.append((c * c0 + s * s0, s * c0 - c * s0))  # turned from configuration 0
+    crank_joint, rocker_joint = joints(*configurations[0])
+    for a, b in configurations:  # the rocker keeps its length: a four-bar indeed
+        assert sum((j - p)**2 for j, p in zip(joints(a, b)[1], rocker_pivot)) == rocker2
+    return Known(points, turns[1:], crank_joint, rocker_joint, crank_pivot, rocker_pivot, rocker2)
+
+
+def _fmpq(value: sympy.Expr) -> flint.fmpq:
+    rational = sympy.Rational(value)
+    return Q(int(rational.p), int(rational.q))
+
+
+def test_a_known_four_bar_is_among_the_solutions() -> None:
+    known = _known_fourbar()
+    points = [(_fmpq(x), _fmpq(y)) for x, y in known.points]
+    result = five_point_path(points, crank_pivot=(_fmpq(known.crank_pivot[0]), _fmpq(known.crank_pivot[1])),
+                             rocker_pivot=(_fmpq(known.rocker_pivot[0]), _fmpq(known.rocker_pivot[1])))
+    assert 0 < result.complex_count <= GENERIC_COUNT
+
+    def holds(ball: flint.arb, value: sympy.Expr) -> bool:
+        with flint.ctx.workprec(300):
+            return (ball - flint.arb(_fmpq(value))).contains(0)
+
+    found = [s for s in result.solutions
+             if all(holds(b, x) for b, x in zip(s.crank_joint, known.crank_joint))
+             and all(holds(b, x) for b, x in zip(s.rocker_joint, known.rocker_joint))]
+    assert len(found) == 1
+    solution, = found
+    for (c, s), (cos, sin) in zip(solution.rotations, known.turns):
+        assert holds(c, cos) and holds(s, sin)
+    assert solution.crank.contains(2) and solution.coupler.contains(5)
+    with flint.ctx.workprec(300):
+        assert (solution.rocker**2 - flint.arb(_fmpq(known.rocker2))).contains(0)
+    # its turns have rational tangents: the solution is a rational root, known exactly: the
+    # half-angle tangent of theta_1, sin / (1 + cos)
+    assert result.offset.cos == 1
+    cos, sin = known.turns[0]
+    assert solution.root.exact() == _fmpq(sin / (1 + cos)) == Q(-11, 2)
+
+
+def test_points_of_a_four_bar_with_its_crank_held_are_special_and_said_so() -> None:
+    """Two of the points reached with the crank at one angle (the coupler's other assembly): the
+    first resultant has a factor in t1 alone (for that turn, every t2 has a t3), which the
+    elimination does not follow: a ComputationError, on one line."""
+    known = _known_fourbar(held=True)
+    points = [(_fmpq(x), _fmpq(y)) for x, y in known.points]
+    with pytest.raises(ComputationError) as error:
+        five_point_path(points, crank_pivot=(Q(0), Q(0)), rocker_pivot=(Q(4), Q(0)))
+    assert "in one angle alone: the data are special" in str(error.value) and "\n" not in str(error.value)
+
+
+@pytest.mark.parametrize("data", ["general", "problem 7"])
+def test_every_real_solution_holds_in_the_original_equations(data: str) -> None:
+    points, pivots = (GENERIC, GENERIC_PIVOTS) if data == "general" else (PROBLEM_7, PROBLEM_7_PIVOTS)
+    result = five_point_path(points, **pivots, bits=200)
+    assert result.solutions
+    errors = _distance_errors(result)
+    assert max(abs(e) for e in errors) < mpmath.mpf(10) ** -45
+    for solution in result.solutions:  # the lengths reported are the joints' distances
+        for ball in (solution.crank, solution.coupler, solution.rocker, *solution.crank_joint):
+            assert ball.rad() < mpmath.mpf(2) ** -150 * max(1, abs(float(ball.mid())))
+
+
+def test_solutions_are_told_by_their_exact_root() -> None:
+    first, second = (five_point_path(GENERIC, **GENERIC_PIVOTS, bits=bits) for bits in (64, 128))
+    assert first.solutions == second.solutions
+    assert len(set(first.solutions)) == first.real_count
+
+
+@pytest.mark.parametrize(("points", "pivots", "argument", "says"), [
+    (GENERIC[:4], GENERIC_PIVOTS, "points", "exactly five points"),
+    (GENERIC[:4] + GENERIC[1:2], GENERIC_PIVOTS, "points", "points 1 and 4 are equal"),
+    (GENERIC, {"crank_pivot": (Q(1), Q(2)), "rocker_pivot": (Q(1), Q(2))}, "rocker_pivot", "equal to the crank's"),
+])
+def test_bad_input_is_one_line(points: list[tuple[flint.fmpq, flint.fmpq]],
+                               pivots: dict[str, tuple[flint.fmpq, flint.fmpq]], argument: str, says: str) -> None:
+    for call in (five_point_path, system):
+        with pytest.raises(UsageError) as error:
+            call(points, **pivots)
+        assert error.value.argument == argument and says in str(error.value) and "\n" not in str(error.value)
