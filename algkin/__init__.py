@@ -35,6 +35,7 @@ __all__ = [
     "singular",
     "solve",
     "follow",
+    "synthesize",
     "catalog_names",
     "interact",
     "AlgkinError",
@@ -49,6 +50,7 @@ __all__ = [
     "Singularities",
     "Solution",
     "Followed",
+    "Synthesis",
     "Mechanism",
     "Quantity",
     # what bounds them
@@ -64,6 +66,7 @@ if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ 
     from .analyses.rates import Rates, rates
     from .analyses.singular import Singularities, singular
     from .analyses.solve import Solution, solve
+    from .synthesis import Synthesis, synthesize
     from .branches import Branch
     from .derivation.pipeline import curve, derive
     from .derivation.prepared import Prepared, prepare
@@ -89,6 +92,7 @@ _LAZY = {
     **dict.fromkeys(("rates", "Rates"), ".analyses.rates"),
     **dict.fromkeys(("singular", "Singularities"), ".analyses.singular"),
     **dict.fromkeys(("solve", "Solution"), ".analyses.solve"),
+    **dict.fromkeys(("synthesize", "Synthesis"), ".synthesis"),
     **dict.fromkeys(("follow", "Followed"), ".analyses.follow"),
     **dict.fromkeys(("load_quantities", "Mechanism", "Quantity"), ".analyses.quantities"),
     "interact": ".ui.widgets",

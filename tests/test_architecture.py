@@ -17,7 +17,7 @@ CONFIG = ROOT / ".importlinter"
 PUBLIC = ["load_quantities", "load_scene", "compile_scene", "derive", "curve", "extremum", "rates", "singular",
           "solve", "catalog_names", "interact", "AlgkinError", "SceneBuilder", "prepare", "Prepared",
           "Derivation", "CurveResult", "Verification", "Branch", "Extremum", "Rates", "Singularities", "Solution",
-          "Mechanism", "Quantity", "Budget", "follow", "Followed"]
+          "Mechanism", "Quantity", "Budget", "follow", "Followed", "synthesize", "Synthesis"]
 
 
 def test_the_import_contract_is_kept():

@@ -29,6 +29,7 @@ from ..runtime.budget import time_budget
 from . import specialise
 from .agree import PASSING, Agreement, Verdict, agreement, from_sympy, portable, rebuild
 from .kinematics import KINEMATICS, kinematics_rows
+from .synthesis import SYNTHESIS
 from .measure import measure
 from .problems import PROBLEMS, Problem, build, problem_names
 from .row import BenchRow
@@ -87,7 +88,8 @@ def bench(problems: Sequence[str] | None = None, methods: Sequence[str] | None =
     rows: list[BenchRow] = []
     with progress.counting(len(names) * (len(pairs) + 1 + (len(PEERS) if peers else 0)), "rows"):
         for name in names:
-            rows += kinematics_rows(name, budget, peers, rounds) if name in KINEMATICS else \
+            solved_together = KINEMATICS.get(name) or SYNTHESIS.get(name)
+            rows += kinematics_rows(solved_together(), budget, peers, rounds) if solved_together else \
                 _problem_rows(build(name), pairs, budget, peers, rounds)
     return BenchReport(rows, machine())
 

@@ -63,6 +63,7 @@ PEER_REFERENCES = ("msolve eliminate", "Singular eliminate")
 REAL_REFERENCES = ("msolve real solutions", "Singular real solutions")
 PARTIAL = ("PARI/GP real roots",)  # rows that give the separating unknown's values alone
 ALGKIN = "solve_group + modes"
+OWN = "algkin's own solver"
 END_TO_END = "default path, end to end"
 
 
@@ -79,6 +80,10 @@ class Kinematics:
     parameters: tuple[str, ...]
     sample: dict[str, flint.fmpq]
     end_to_end: Callable[[], object] | None = None
+    # a solver of algkin's own where solve_group is not the way (its complex count and real
+    # solutions in ``unknowns`` as decimal strings), and the unknown PARI/GP's roots are of
+    own: Callable[[], tuple[int, list[tuple[str, ...]]]] | None = None
+    variable: str | None = None
 
     @property
     def real(self) -> bool:
@@ -162,8 +167,16 @@ def _solved(problem: Kinematics) -> tuple[GroupSolution, tuple[Any, ...]]:
     return solution, modes(solution, problem.sample)
 
 
-def _summary(problem: Kinematics, result: tuple[GroupSolution, tuple[Any, ...]]) -> dict[str, Any]:
-    """The eliminant's figures and form, and the real solutions as 40-digit strings (they cross processes)."""
+def _algkin_run(problem: Kinematics) -> Callable[[], Any]:
+    return problem.own if problem.own is not None else functools.partial(_solved, problem)
+
+
+def _summary(problem: Kinematics, result: Any) -> dict[str, Any]:
+    """The eliminant's figures and form, and the real solutions as 40-digit strings (they cross
+    processes); a solver of algkin's own gives its count and solutions itself."""
+    if problem.own is not None:
+        count, solutions = result
+        return {"degree": count, "solutions": solutions}
     solution, found = result
     terms = [(m, p, q) for m, p, q in solution.eliminant.terms]
     return {"degree": solution.complex_count, "terms": len(terms), "form": (solution.eliminant.names, terms),
@@ -419,19 +432,20 @@ def matched(found: Sequence[Sequence[Any]], reference: Sequence[Sequence[Any]]) 
 
 # -- the rows ---------------------------------------------------------------------------------
 
-def kinematics_rows(name: str, budget: float, peers: bool, rounds: int) -> list[BenchRow]:
-    """Every row of the forward-kinematics problem ``name``, compared and with its ratio to algkin's."""
-    problem = KINEMATICS[name]()
-    progress.stage(f"{name}: algkin {ALGKIN}")
-    seconds, summary, note = measure(functools.partial(_solved, problem), functools.partial(_summary, problem), budget)
+def kinematics_rows(problem: Kinematics, budget: float, peers: bool, rounds: int) -> list[BenchRow]:
+    """Every row of a forward-kinematics (or synthesis) ``problem``, compared and with its ratio to algkin's."""
+    name = problem.name
+    method = ALGKIN if problem.own is None else OWN
+    progress.stage(f"{name}: algkin {method}")
+    seconds, summary, note = measure(_algkin_run(problem), functools.partial(_summary, problem), budget)
     progress.step()
-    ours = BenchRow(name, ALGKIN, "flint", seconds, note=note, **_fields(summary))
-    found: dict[str, tuple[BenchRow, list[tuple[str, ...]] | None]] = {ALGKIN: (ours, (summary or {}).get("solutions"))}
+    ours = BenchRow(name, method, "flint", seconds, note=note, **_fields(summary))
+    found: dict[str, tuple[BenchRow, list[tuple[str, ...]] | None]] = {method: (ours, (summary or {}).get("solutions"))}
     if problem.end_to_end is not None:
         seconds, summary, note = measure(problem.end_to_end, functools.partial(_end_summary, problem), budget)
         found[END_TO_END] = (BenchRow(name, END_TO_END, "flint", seconds, note=note, **_fields(summary)),
                              (summary or {}).get("solutions"))
-    variable = solve_group(problem.equations, problem.unknowns).variable
+    variable = problem.variable or solve_group(problem.equations, problem.unknowns).variable
     runs = _peer_runs(problem, variable) if peers else {}
     for engine, run in runs.items():
         progress.stage(f"{name}: {engine}")
@@ -496,7 +510,7 @@ def _again(problem: Kinematics, found: dict[str, tuple[BenchRow, Any]],
             if key in runs:
                 again = runs[key](budget)[0].seconds
             else:
-                run = problem.end_to_end if key == END_TO_END else functools.partial(_solved, problem)
+                run = problem.end_to_end if key == END_TO_END else _algkin_run(problem)
                 assert run is not None
                 again = measure(run, lambda result: None, budget)[0]
             row.seconds = min(filter(None, [row.seconds, again]))

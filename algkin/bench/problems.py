@@ -95,10 +95,12 @@ PROBLEMS: dict[str, tuple[str, Callable[[], EliminationTask], Callable[[], Calla
 
 
 def problem_names() -> list[str]:
-    """The elimination problems, then the forward-kinematics ones (``bench.kinematics``)."""
+    """The elimination problems, then the forward-kinematics ones (``bench.kinematics``), then
+    synthesis's (``bench.synthesis``)."""
     from .kinematics import KINEMATICS
+    from .synthesis import SYNTHESIS
 
-    return list(PROBLEMS) + list(KINEMATICS)
+    return list(PROBLEMS) + list(KINEMATICS) + list(SYNTHESIS)
 
 
 def build(name: str) -> Problem:

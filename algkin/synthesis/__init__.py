@@ -3,5 +3,10 @@
 Motion generation (Burmester: poses of a moving plane), function generation (Freudenstein:
 pairs of crank and rocker angles) and path generation (a coupler point through given points)
 are each a polynomial system over QQ, solved completely by elimination; each real solution is
-a four-bar, written as a scene and checked by algkin's own derivation.
+a four-bar, written as a scene and checked by algkin's own derivation (``check``).
 """
+
+from .files import Task, read_task, read_task_text
+from .run import SynthesizedMechanism, Synthesis, synthesize
+
+__all__ = ["synthesize", "Synthesis", "SynthesizedMechanism", "Task", "read_task", "read_task_text"]

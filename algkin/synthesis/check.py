@@ -20,13 +20,13 @@ A design is ``usable`` when it has none of them.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from decimal import Decimal
 from fractions import Fraction
 from typing import Any
 
 import attrs
 import flint
 
-from ..analyses.extremum import extremum
 from ..analyses.solve import solve
 from ..analyses.toggles import grashof, toggles
 from ..errors import ComputationError
@@ -34,12 +34,10 @@ from ..scene import Scene, compile_scene
 from ..scene.load import load_scene_text
 from .fourbar import BITS, DIGITS, FourBar, scene_text
 
-__all__ = ["Checked", "check_design", "MIN_TRANSMISSION", "TRANSMISSION"]
+__all__ = ["Checked", "check_design", "MIN_TRANSMISSION"]
 
 MIN_TRANSMISSION = 30
 """Degrees: a transmission angle below it (or above 180 minus it) is a defect, by default."""
-TRANSMISSION = "angle(A, B, D)"
-"""The transmission angle: at the coupler-rocker joint B, between the crank tip A and the rocker's pivot D."""
 TOLERANCE = flint.arb(10) ** -20
 """Largest relative distance from a wanted position: a scene to 40 digits misses by about 1e-38."""
 
@@ -96,7 +94,7 @@ def check_design(design: FourBar, *, min_transmission: float = MIN_TRANSMISSION,
         if toggle_why:
             defects.append(("branch", toggle_why))
         else:
-            span = _transmission(scene, angles, direction)
+            span = _transmission(design, angles, direction)
             if span[0] < min_transmission or span[1] > 180 - min_transmission:
                 defects.append(("transmission", f"the transmission angle ranges over [{span[0]:.4g}, {span[1]:.4g}] "
                                                 f"degrees, outside [{min_transmission:g}, {180 - min_transmission:g}]"))
@@ -107,14 +105,7 @@ def check_design(design: FourBar, *, min_transmission: float = MIN_TRANSMISSION,
 
 def _degrees(angle: flint.arb) -> Fraction:
     """An angle in [0, 360), to 40 digits, as the exact decimal ``solve`` takes."""
-    text = (angle if angle >= 0 else angle + 360).mid().str(40, radius=False)
-    return Fraction(*_ratio(text))
-
-
-def _ratio(text: str) -> tuple[int, int]:
-    from decimal import Decimal
-
-    return Decimal(text).as_integer_ratio()
+    return _fraction(angle) % 360
 
 
 def _deviation(design: FourBar, scene: Scene, index: int, *, angle: Fraction, mode: str | None) -> float:
@@ -166,16 +157,41 @@ def _toggle_between(scene: Scene, angles: Sequence[Fraction], direction: int) ->
     """Why the crank's way from the first position to the last crosses a dead centre (empty: it does not)."""
     last = (direction * (angles[-1] - angles[0])) % 360
     for toggle in toggles(scene, artefacts=False).toggles:
-        offset = (direction * (Fraction(*_ratio(toggle.enclosure.mid().str(40, radius=False))) - angles[0])) % 360
+        offset = (direction * (_fraction(toggle.enclosure) - angles[0])) % 360
         if 0 < offset < last:
             return f"a dead centre of B ({toggle.kind}) at crank angle {toggle.input_deg:.6g} degrees lies between " \
                    "the first and the last position"
     return ""
 
 
-def _transmission(scene: Scene, angles: Sequence[Fraction], direction: int) -> tuple[float, float]:
-    """The transmission angle's least and greatest value on the crank's way through the positions."""
+def _transmission(design: FourBar, angles: Sequence[Fraction], direction: int) -> tuple[float, float]:
+    """The transmission angle's least and greatest value on the crank's way through the positions.
+
+    It is the angle at B of the triangle A B D, so it grows with |AD|, and |AD|**2 =
+    a**2 + g**2 - 2 a g cos(theta - delta) (a the crank, g the ground, delta the ground's
+    direction): its extremes on the crank's arc are at the arc's ends and where the crank is in
+    line with the ground (theta - delta a multiple of 180 degrees) inside it."""
+    lengths = design.lengths()
+    crank, ground = lengths["crank"], lengths["ground"]
+    coupler, rocker = lengths["coupler"], lengths["rocker"]
     sweep = (direction * (angles[-1] - angles[0])) % 360
-    start = angles[0] if direction > 0 else angles[0] - sweep
-    found = extremum(scene, TRANSMISSION, angle_range=(float(start), float(start + sweep)))
-    return float(found.minimum.value), float(found.maximum.value)
+    with flint.ctx.workprec(BITS):
+        dx, dy = (design.rocker_pivot[k] - design.crank_pivot[k] for k in (0, 1))
+        delta = _fraction(flint.arb.atan2(dy, dx) * 180 / flint.arb.pi())
+        in_line = [(direction * (delta + 180 * k - angles[0])) % 360 for k in (0, 1)]
+        thetas = [angles[0], angles[-1], *(angles[0] + direction * o for o in in_line if o < sweep)]
+        values = []
+        for theta in thetas:
+            turn = _ball(theta - delta) * flint.arb.pi() / 180
+            reach2 = crank * crank + ground * ground - 2 * crank * ground * turn.cos()
+            cosine = (coupler * coupler + rocker * rocker - reach2) / (2 * coupler * rocker)
+            values.append(float((cosine.acos() * 180 / flint.arb.pi()).mid()))
+    return min(values), max(values)
+
+
+def _fraction(ball: flint.arb) -> Fraction:
+    return Fraction(*Decimal(ball.mid().str(40, radius=False)).as_integer_ratio())
+
+
+def _ball(value: Fraction) -> flint.arb:
+    return flint.arb(flint.fmpq(value.numerator, value.denominator))

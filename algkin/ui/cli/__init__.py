@@ -119,6 +119,7 @@ def _save(files: Sequence[File] = ()) -> None:
     from ...runtime.files import write_atomic
 
     for path, data in files:
+        path.parent.mkdir(parents=True, exist_ok=True)  # a directory asked for (``--out DIR``), checked writable
         write_atomic(path, data)
 
 

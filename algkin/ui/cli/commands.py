@@ -17,6 +17,7 @@ from ...errors import UsageError, renamed
 from ...runtime.validation import real
 from .groups import group_curve, group_derive, group_toggles, group_verify
 from .sweep import COMMANDS as SWEEP_COMMANDS
+from .synthesis import COMMANDS as SYNTHESIS_COMMANDS
 from .reports import (Document, Form, extremum_forms, latex_lines, render, report_accuracy, report_curve,
                       report_derive, report_extremum, report_follow, report_show, report_singular, report_solve, report_toggles, verification_line,
                       terminal_safe)
@@ -426,4 +427,5 @@ def _at(texts: Sequence[str], flag: str = "--at") -> dict[str, str]:
 COMMANDS: dict[str, Command] = {"list": _cmd_list, "show": _cmd_show, "derive": _cmd_derive, "curve": _cmd_curve,
             "verify": _cmd_verify, "extremum": _cmd_extremum, "plot": _cmd_plot,
             "toggles": _cmd_toggles, "singular": _cmd_singular, "accuracy": _cmd_accuracy, "bench": _cmd_bench,
-            "export": _cmd_export, "solve": _cmd_solve, "follow": _cmd_follow, **SWEEP_COMMANDS}
+            "export": _cmd_export, "solve": _cmd_solve, "follow": _cmd_follow, **SWEEP_COMMANDS,
+            **SYNTHESIS_COMMANDS}

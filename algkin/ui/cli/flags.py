@@ -51,6 +51,8 @@ FLAGS = {
     "start": "--from",  # follow's input and start value
     "stop": "--to",
     "max_step": "--max-step",
+    "bits": "--bits",  # synthesize's
+    "min_transmission": "--min-transmission",
 }
 
 

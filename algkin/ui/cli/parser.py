@@ -332,8 +332,11 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--out", help="directory for bench.json, bench.csv and bench.png")
     _json(bench)
     from .sweep import add_commands
+    from .synthesis import add_command as add_synthesis
 
     add_commands(commands, _command, _json)
+    add_synthesis(commands, _command, _json)
+    _budget_options(commands.choices["synthesize"], terms=False)
     for command in commands.choices.values():
         # after the command too; SUPPRESS: not given there, it leaves the value given before the command
         _quiet(command, default=argparse.SUPPRESS)

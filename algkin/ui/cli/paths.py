@@ -27,8 +27,9 @@ OUTPUTS = {
     "atlas": (("out", "--out", "file"),),
     "bench": (("out", "--out", "directory"),),
     "sweep": (("out", "--out", "directory"),),
+    "synthesize": (("out", "--out", "directory"), ("plot", "--plot", "file")),
 }
-INPUTS = ("scene", "dir")  # the attributes naming what a command reads (a catalog name is no file)
+INPUTS = ("scene", "dir", "file")  # the attributes naming what a command reads (a catalog name is no file)
 
 
 def check_paths(args: argparse.Namespace) -> None:

@@ -31,6 +31,9 @@ NOT_FROM_THE_COMMAND_LINE = {
     "equations": "eliminate.group's solve_group, from Python only: no command solves a group",
     "unknowns": "eliminate.group's solve_group, from Python only",
     "prefer": "eliminate.group's solve_group, from Python only",
+    **dict.fromkeys(("poses", "pairs", "points", "ground", "crank_pivot", "rocker_pivot"),
+                    "a synthesis file's data: algkin synthesize says it as the file's (FILE: poses: ...)"),
+    **dict.fromkeys(("centre", "circle"), "synthesis.motion's matched points, from Python only"),
 }
 
 # A name given as the first argument of UsageError, or of the helpers that pass it on to one.

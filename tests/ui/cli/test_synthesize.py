@@ -1,0 +1,106 @@
+"""``algkin synthesize``: the JSON keys of SPEC section 3, scene files and figures written whole,
+no real solution an answer (exit 0), and bad input one line, exit 2, nothing written."""
+
+import json
+import pathlib
+
+import pytest
+
+from algkin.scene import load_scene
+from algkin.ui.cli import main
+
+EXAMPLES = pathlib.Path(__file__).parents[3] / "examples" / "synthesis"
+THREE = str(EXAMPLES / "three-pairs.toml")
+# five poses with no real Burmester pair (four complex): the motion tests' NONE_REAL set
+NO_REAL = """kind = "motion"
+[[poses]]
+x = -1
+y = -3
+angle = { cos = 0, sin = -1 }
+[[poses]]
+x = -4
+y = -4
+angle = { cos = "5/13", sin = "12/13" }
+[[poses]]
+x = -4
+y = 2
+angle = { cos = "-3/5", sin = "4/5" }
+[[poses]]
+x = 2
+y = -4
+angle = { cos = 0, sin = 1 }
+[[poses]]
+x = "%s"
+y = "%s"
+angle = %s
+"""
+
+
+def run(capsys, *args):
+    code = main(list(args))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_function_json_and_the_scene_files(capsys, tmp_path):
+    out = tmp_path / "made"
+    code, text, _ = run(capsys, "synthesize", "function", THREE, "--json", "--out", str(out), "--quiet")
+    assert code == 0
+    document = json.loads(text)
+    assert document["complex_count"] == 1 and document["real_count"] == 1
+    (solution,) = document["solutions"]
+    assert {k: solution["lengths"][k] for k in ("ground", "crank", "rocker")} == {"ground": "6", "crank": "2", "rocker": "5"}
+    assert set(solution["start"]) == {"input", "output"}
+    (mechanism,) = document["mechanisms"]
+    assert {"scene", "grashof", "defects", "transmission_range", "usable", "reached"} <= set(mechanism)
+    assert mechanism["defects"] == [] and mechanism["usable"] and mechanism["grashof"] == "crank-rocker"
+    written = out / mechanism["scene"]
+    assert document["written"] == [str(written)]
+    assert list(load_scene(written).points) == ["O", "D", "A", "B", "P"]
+
+
+def test_motion_with_no_real_pair_is_an_answer(capsys, tmp_path):
+    path = tmp_path / "none.toml"
+    path.write_text(NO_REAL % (3, 3, '{ cos = 0, sin = 1 }'))
+    code, text, _ = run(capsys, "synthesize", "motion", str(path), "--json", "--quiet")
+    document = json.loads(text)
+    assert code == 0 and document["burmester"] == [] and document["mechanisms"] == []
+    assert document["complex_count"] == 4
+    code, text, _ = run(capsys, "synthesize", "motion", str(path), "--quiet")
+    assert code == 0 and "4 complex solutions, 0 real" in text and "no four-bar" in text
+
+
+def test_a_figure_is_drawn(capsys, tmp_path):
+    figure = tmp_path / "three.png"
+    code, _, _ = run(capsys, "synthesize", "function", THREE, "--plot", str(figure), "--quiet")
+    assert code == 0 and figure.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+@pytest.mark.parametrize(("argv", "said"), [
+    (["motion", THREE], "kind='motion': "),
+    (["function", "absent.toml"], "absent.toml: cannot read"),
+    (["function", THREE, "--plot", "x.gif"], "--plot='x.gif': unknown figure format"),
+    (["function", THREE, "--bits", "8"], "--bits=8: expected a whole number of bits"),
+    (["function", THREE, "--min-transmission", "120"], "--min-transmission=120.0: expected degrees"),
+    (["motoin", THREE], "did you mean 'motion'"),
+    (["wobble", THREE], "not a valid kind (valid: motion, function, path)"),
+])
+def test_bad_command_lines_are_one_line_exit_2(capsys, argv, said):
+    code, out, err = run(capsys, "synthesize", *argv)
+    assert code == 2 and out == "" and err.count("\n") == 1 and said in err
+
+
+def test_data_only_the_mathematics_refuses_is_said_as_the_files(capsys, tmp_path):
+    path = tmp_path / "twice.toml"
+    path.write_text(NO_REAL % (-1, -3, "{ cos = 0, sin = -1 }"))  # the fifth pose is the first again
+    code, _, err = run(capsys, "synthesize", "motion", str(path))
+    assert code == 2 and err.count("\n") == 1 and f"{path}: poses: " in err
+
+
+def test_nothing_is_written_when_the_command_fails(capsys, tmp_path):
+    figure = tmp_path / "kept.png"
+    figure.write_bytes(b"before")
+    path = tmp_path / "twice.toml"
+    path.write_text(NO_REAL % (-1, -3, "{ cos = 0, sin = -1 }"))
+    code, _, _ = run(capsys, "synthesize", "motion", str(path), "--plot", str(figure), "--out", str(tmp_path / "d"))
+    assert code == 2 and figure.read_bytes() == b"before" and not (tmp_path / "d").exists()
