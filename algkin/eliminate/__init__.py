@@ -182,7 +182,10 @@ def eliminate(equations: Sequence[sympy.Expr | flint.fmpq_mpoly], eliminate: Seq
     deadline.note(f"eliminating {', '.join(map(str, eliminate)) or 'nothing'} "
                   f"(keeping {', '.join(map(str, keep))}) by {method} on {backend}")
     request = EliminationRequest(tuple(eliminate), witnesses, tuple(parameters), deadline)
-    return deadline.run(functools.partial(_eliminate, engine, method, run, equations, tuple(keep), request))
+    try:
+        return deadline.run(functools.partial(_eliminate, engine, method, run, equations, tuple(keep), request))
+    finally:
+        engine.forget()  # the result holds the backend: not the intermediate polynomials with it
 
 
 def _eliminate(engine: Backend[P], method: str, run: Method, equations: Sequence[sympy.Expr | flint.fmpq_mpoly],

@@ -21,7 +21,8 @@ from ..system.convert import flint_context, to_flint, to_flint_integer, to_sympy
 
 __all__ = ["FlintBackend", "FlintMpolys", "SympyBackend", "BACKENDS"]
 
-M = TypeVar("M", flint.fmpq_mpoly, flint.nmod_mpoly)  # the polynomials of a python-flint backend
+M = TypeVar("M", flint.fmpq_mpoly, flint.nmod_mpoly)
+MEMO = 256  # polynomials whose degrees a backend keeps (``FlintMpolys.degrees``)  # the polynomials of a python-flint backend
 _M_co = TypeVar("_M_co", covariant=True)
 
 
@@ -44,9 +45,27 @@ class FlintMpolys(Generic[M]):
         self.names = tuple(names)
         self.index = {n: i for i, n in enumerate(self.names)}
         self.rational = flint_context(self.names)  # where ``from_flint`` projects to
+        self._degrees: dict[int, tuple[M, tuple[int, ...]]] = {}
+
+    def degrees(self, poly: M) -> tuple[int, ...]:
+        """``poly``'s degree in each variable, read once per polynomial: python-flint builds the
+        tuple anew at each call (1 us), and the methods ask dozens of times of the same few
+        polynomials (the lambda's coupler: 110 times of a dozen). Kept by identity, the
+        polynomial held with its degrees (python-flint's polynomials are never changed in
+        place), at most ``MEMO`` of them, until ``forget``."""
+        known = self._degrees.get(id(poly))
+        if known is None or known[0] is not poly:
+            if len(self._degrees) >= MEMO:
+                self._degrees.clear()
+            known = self._degrees[id(poly)] = (poly, tuple(poly.degrees()))
+        return known[1]
+
+    def forget(self) -> None:
+        """Let go of the polynomials ``degrees`` holds (an elimination is over)."""
+        self._degrees.clear()
 
     def variables(self, poly: M) -> set[str]:
-        return {n for n, d in zip(self.names, poly.degrees()) if d > 0}
+        return {n for n, d in zip(self.names, self.degrees(poly)) if d > 0}
 
     def from_flint(self, poly: flint.fmpq_mpoly) -> M:
         """``poly`` (over any names) in this backend's ring, its variables matched by name."""
@@ -64,11 +83,11 @@ class FlintMpolys(Generic[M]):
         return None
 
     def degree(self, poly: M, var: str) -> int:
-        return int(poly.degrees()[self.index[var]])
+        return int(self.degrees(poly)[self.index[var]])
 
     def is_constant(self, poly: M) -> bool:
         # flint's is_constant scans every term for the total degree; a constant has one term
-        return len(poly) <= 1 and not any(poly.degrees())
+        return len(poly) <= 1 and not any(self.degrees(poly))
 
     def total_degree(self, poly: M) -> int:
         return int(poly.total_degree())
@@ -209,7 +228,7 @@ class FlintBackend(FlintMpolys[flint.fmpq_mpoly]):
         lcm = math.lcm(*(int(c.q) for c in coeffs))
         gcd = math.gcd(*(int(c.p) for c in coeffs))
         scaled = poly * flint.fmpq(lcm, gcd)
-        return -scaled if scaled.coeffs()[0] < 0 else scaled
+        return -scaled if scaled.leading_coefficient() < 0 else scaled
 
     def groebner_lex(self, polys: Sequence[flint.fmpq_mpoly], order: Sequence[str]) -> list[flint.fmpq_mpoly]:
         """Reduced lex Gröbner basis with variables ordered as ``order`` (first is largest)."""
@@ -240,6 +259,9 @@ class SympyBackend:
 
     def to_sympy(self, poly: sympy.Poly) -> sympy.Expr:
         return poly.as_expr()
+
+    def forget(self) -> None:
+        """Nothing kept: sympy's ``Poly`` reads its degrees itself."""
 
     def variables(self, poly: sympy.Poly) -> set[str]:
         return {n for n, d in zip(self.names, poly.degree_list()) if d > 0}

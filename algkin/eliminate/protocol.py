@@ -57,6 +57,9 @@ class Backend(Protocol[P]):
     def variables(self, poly: P) -> set[str]:
         """The names ``poly`` holds (of degree above zero)."""
 
+    def forget(self) -> None:
+        """Let go of whatever the backend keeps of the polynomials it was given (an elimination is over)."""
+
     def degree(self, poly: P, var: str) -> int:
         """The degree of ``poly`` in ``var``."""
 

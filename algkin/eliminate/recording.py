@@ -55,6 +55,9 @@ class Recording(Generic[P]):
     def variables(self, poly: P) -> set[str]:
         return self.inner.variables(poly)
 
+    def forget(self) -> None:
+        self.inner.forget()
+
     def degree(self, poly: P, var: str) -> int:
         return self.inner.degree(poly, var)
 
