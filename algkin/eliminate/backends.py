@@ -6,6 +6,7 @@ names (``from_flint``: a compiled system's, ``System.polynomials``) or as sympy
 expressions, and leave as sympy expressions, through ``algkin.system.convert``.
 """
 
+import functools
 import math
 from collections.abc import Mapping, Sequence
 from typing import Generic, Protocol, TypeVar, cast
@@ -107,7 +108,7 @@ class FlintMpolys(Generic[M]):
         return f.gcd(g)
 
     def derivative(self, poly: M, var: str) -> M:
-        return poly.derivative(var)
+        return poly.derivative(self.index[var])  # by index: python-flint looks a name up in Python
 
     def scale(self, poly: M, numerator: int, denominator: int) -> M:
         """``poly * numerator / denominator``: what the coefficients' ring says (each backend's own)."""
@@ -115,15 +116,21 @@ class FlintMpolys(Generic[M]):
 
     def substitute(self, poly: M, var: str, value: M) -> M:
         """``poly`` with ``var`` replaced by the polynomial ``value``: one composition in C."""
-        gens = list(self.ctx.gens())
+        gens = list(self._constants[2])
         gens[self.index[var]] = value
         return poly.compose(*gens)
 
     def zero(self) -> M:
-        return self.ctx.from_dict({})
+        return self._constants[0]
 
     def one(self) -> M:
-        return self.ctx.from_dict({(0,) * len(self.names): 1})
+        return self._constants[1]
+
+    @functools.cached_property
+    def _constants(self) -> tuple[M, M, tuple[M, ...]]:
+        """Zero, one and the generators, made once (python-flint's polynomials are values; the
+        generators alone cost 2.6 us a call)."""
+        return self.ctx.from_dict({}), self.ctx.from_dict({(0,) * len(self.names): 1}), tuple(self.ctx.gens())
 
     def quotient(self, f: M, g: M) -> M | None:
         """``f / g`` if ``g`` divides ``f``, else None."""
@@ -136,21 +143,21 @@ class FlintMpolys(Generic[M]):
         the terms is ten times slower; modulo a prime above every degree ``k!`` is invertible)."""
         if not variables:
             return {(): poly}
-        name, factorial, top = variables[0], 1, self.degree(poly, variables[0])
+        index, factorial, top = self.index[variables[0]], 1, self.degree(poly, variables[0])
         parts: dict[tuple[int, ...], M] = {}
         for degree in range(top + 1):
-            part = poly.subs({name: 0}) if degree < top else poly
+            part = poly.subs({index: 0}) if degree < top else poly
             if not part.is_zero():
                 scaled = self.scale(part, 1, factorial) if factorial > 1 else part
                 for key, value in self.split(scaled, variables[1:]).items():
                     parts[(degree,) + key] = value
             if degree < top:
-                poly, factorial = poly.derivative(name), factorial * (degree + 1)
+                poly, factorial = poly.derivative(index), factorial * (degree + 1)
         return parts
 
     def join(self, parts: Mapping[tuple[int, ...], M], variables: Sequence[str]) -> M:
         """The inverse of ``split``."""
-        gens = self.ctx.gens()
+        gens = self._constants[2]
         where = [gens[self.index[v]] for v in variables]
         total = self.zero()
         for exponents, coefficient in parts.items():
