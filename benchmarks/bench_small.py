@@ -9,7 +9,10 @@ problems), it times
 - PARI/GP's ``polresultant`` chain (``algkin.bench.engines``), timed by its own clock inside its
   own loop, when ``gp`` is installed;
 - the python-flint floor: the same chain of ``resultant`` calls as PARI's (the same pivots), on
-  polynomials already in python-flint's ring, and nothing else.
+  polynomials already in python-flint's ring, and nothing else;
+- the batch path: the seed's two circles at ``POSITIONS`` rational crank positions, each
+  ``eliminate``'d alone, then all in one ``eliminate_each`` call (no witnesses for either: the
+  task's are at one position), per position.
 
 Every time is CPU time per call (PARI's ``getabstime`` is CPU time too, so a loaded machine
 slows both alike), the median of repeated blocks after a warm-up. Ratios are against PARI/GP's
@@ -23,15 +26,19 @@ import dataclasses
 import statistics
 import time
 
+from flint import fmpq
+
 from algkin.bench.engines import PEERS
 from algkin.bench.peers import PeerProblem
 from algkin.bench.problems import build
+from algkin.eliminate import eliminate, eliminate_each
 from algkin.eliminate.backends import FlintBackend
 from algkin.system.convert import flint_context, to_flint
 
 SMALL = ("two-circles", "arm-extremum", "slider-crank", "lambda-coupler")
 BLOCK_SECONDS = 0.05
 BLOCKS = 9
+POSITIONS = 50
 
 
 def per_call(function):
@@ -82,6 +89,22 @@ def row(name):
     return stage, peer.seconds_per_run, peer.note, floor
 
 
+def batch_rows():
+    """(seconds per position one call each, seconds per position in one ``eliminate_each`` call)."""
+    task = build("two-circles").task
+    half = [fmpq(1, k) for k in range(2, POSITIONS + 2)]  # tan of half the crank angle: rational cos and sin
+    at = [{"c_angle": (1 - t * t) / (1 + t * t), "s_angle": 2 * t / (1 + t * t)} for t in half]
+
+    def one_by_one():
+        for values in at:
+            eliminate([p.subs(values) for p in task.polynomials], task.eliminate, task.keep)
+
+    def in_one_call():
+        eliminate_each(task.polynomials, task.eliminate, task.keep, at=at)
+
+    return per_call(one_by_one) / POSITIONS, per_call(in_one_call) / POSITIONS
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--problem", nargs="*", default=SMALL, choices=SMALL)
@@ -96,6 +119,9 @@ def main():
         shown = f"{pari * 1e6:7.1f} us" if pari else "         -"
         print(f"{name:15} {stage * 1e6:9.1f} us {shown:>10} {ratio(stage):>7} {floor * 1e6:9.1f} us "
               f"{ratio(floor):>7}  {note}")
+    alone, batch = batch_rows()
+    print(f"two-circles at {POSITIONS} crank positions, per position: one eliminate call each {alone * 1e6:.1f} us, "
+          f"one eliminate_each call {batch * 1e6:.1f} us ({alone / batch:.2f}x)")
 
 
 if __name__ == "__main__":
