@@ -8,7 +8,7 @@ expressions, and leave as sympy expressions, through ``algkin.system.convert``.
 
 import functools
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping, Sequence, Set as AbstractSet
 from typing import Generic, Protocol, TypeVar, cast
 
 import flint
@@ -46,27 +46,32 @@ class FlintMpolys(Generic[M]):
         self.names = tuple(names)
         self.index = {n: i for i, n in enumerate(self.names)}
         self.rational = flint_context(self.names)  # where ``from_flint`` projects to
-        self._degrees: dict[int, tuple[M, tuple[int, ...]]] = {}
+        self._read: dict[int, tuple[M, tuple[int, ...], frozenset[str]]] = {}
 
     def degrees(self, poly: M) -> tuple[int, ...]:
         """``poly``'s degree in each variable, read once per polynomial: python-flint builds the
         tuple anew at each call (1 us), and the methods ask dozens of times of the same few
-        polynomials (the lambda's coupler: 110 times of a dozen). Kept by identity, the
-        polynomial held with its degrees (python-flint's polynomials are never changed in
-        place), at most ``MEMO`` of them, until ``forget``."""
-        known = self._degrees.get(id(poly))
+        polynomials (the lambda's coupler: 110 times of a dozen). Kept by identity with the
+        variables held, the polynomial held with them (python-flint's polynomials are never
+        changed in place), at most ``MEMO`` of them, until ``forget``."""
+        return self._reading(poly)[1]
+
+    def _reading(self, poly: M) -> tuple[M, tuple[int, ...], frozenset[str]]:
+        known = self._read.get(id(poly))
         if known is None or known[0] is not poly:
-            if len(self._degrees) >= MEMO:
-                self._degrees.clear()
-            known = self._degrees[id(poly)] = (poly, tuple(poly.degrees()))
-        return known[1]
+            if len(self._read) >= MEMO:
+                self._read.clear()
+            degrees = tuple(int(d) for d in poly.degrees())  # fmpz: Python ints compare faster
+            held = frozenset(n for n, d in zip(self.names, degrees) if d > 0)
+            known = self._read[id(poly)] = (poly, degrees, held)
+        return known
 
     def forget(self) -> None:
         """Let go of the polynomials ``degrees`` holds (an elimination is over)."""
-        self._degrees.clear()
+        self._read.clear()
 
-    def variables(self, poly: M) -> set[str]:
-        return {n for n, d in zip(self.names, self.degrees(poly)) if d > 0}
+    def variables(self, poly: M) -> AbstractSet[str]:
+        return self._reading(poly)[2]
 
     def from_flint(self, poly: flint.fmpq_mpoly) -> M:
         """``poly`` (over any names) in this backend's ring, its variables matched by name."""
@@ -84,7 +89,7 @@ class FlintMpolys(Generic[M]):
         return None
 
     def degree(self, poly: M, var: str) -> int:
-        return int(self.degrees(poly)[self.index[var]])
+        return self._reading(poly)[1][self.index[var]]
 
     def is_constant(self, poly: M) -> bool:
         # flint's is_constant scans every term for the total degree; a constant has one term
@@ -232,8 +237,8 @@ class FlintBackend(FlintMpolys[flint.fmpq_mpoly]):
         if poly.is_zero():
             return poly
         coeffs = poly.coeffs()
-        lcm = math.lcm(*(int(c.q) for c in coeffs))
-        gcd = math.gcd(*(int(c.p) for c in coeffs))
+        lcm = math.lcm(*(c.q for c in coeffs))  # python-flint's integers are indices: no int() each
+        gcd = math.gcd(*(c.p for c in coeffs))
         scaled = poly * flint.fmpq(lcm, gcd)
         return -scaled if scaled.leading_coefficient() < 0 else scaled
 
@@ -270,7 +275,7 @@ class SympyBackend:
     def forget(self) -> None:
         """Nothing kept: sympy's ``Poly`` reads its degrees itself."""
 
-    def variables(self, poly: sympy.Poly) -> set[str]:
+    def variables(self, poly: sympy.Poly) -> AbstractSet[str]:
         return {n for n, d in zip(self.names, poly.degree_list()) if d > 0}
 
     def degree(self, poly: sympy.Poly, var: str) -> int:

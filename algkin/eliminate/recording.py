@@ -14,7 +14,7 @@ every method runs on it unchanged.
 ['x + y', 'x - y']
 """
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping, Sequence, Set as AbstractSet
 from typing import TYPE_CHECKING, Generic
 
 import flint
@@ -52,7 +52,7 @@ class Recording(Generic[P]):
     def to_sympy(self, poly: P) -> sympy.Expr:
         return self.inner.to_sympy(poly)
 
-    def variables(self, poly: P) -> set[str]:
+    def variables(self, poly: P) -> AbstractSet[str]:
         return self.inner.variables(poly)
 
     def forget(self) -> None:
