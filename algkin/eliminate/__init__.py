@@ -216,6 +216,9 @@ def eliminate_each(equations: Sequence[sympy.Expr | flint.fmpq_mpoly], eliminate
     if witnesses and len(witnesses) != len(at):
         raise UsageError("witnesses", len(witnesses), f"expected one set of witness groups for each of the {len(at)} "
                                                       "specializations")
+    stray = sorted({name for values in at for name in values} - set(keep))
+    if stray:
+        raise UsageError("at", stray[0], f"not a kept variable (kept: {', '.join(keep)})")
     run = _lookup(METHODS, "method", method)
     engine = _lookup(BACKENDS, "backend", backend)(tuple(eliminate) + tuple(keep))
     deadline = started(budget)

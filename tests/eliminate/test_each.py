@@ -45,6 +45,12 @@ def test_each_result_is_what_eliminate_gives_on_the_specialized_equations():
         assert result.text == alone.text and result.log == alone.log and result.proof == alone.proof
 
 
+def test_only_kept_variables_are_specialized():
+    # x is eliminated: setting it would change the system, not specialize it
+    with pytest.raises(UsageError, match="at='x': not a kept variable \\(kept: y, c, s, r\\)"):
+        eliminate_each(CIRCLES, ["x"], ["y", "c", "s", "r"], at=[{"r": 1}, {"x": 2}])
+
+
 def test_witnesses_are_given_for_each_specialization_or_not_at_all():
     with pytest.raises(UsageError, match="witnesses=1: expected one set of witness groups for each of the 3"):
         eliminate_each(CIRCLES, ["x"], ["y", "c", "s", "r"], at=POINTS, witnesses=[()])
