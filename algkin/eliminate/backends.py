@@ -47,6 +47,7 @@ class FlintMpolys(Generic[M]):
         self.index = {n: i for i, n in enumerate(self.names)}
         self.rational = flint_context(self.names)  # where ``from_flint`` projects to
         self._read: dict[int, tuple[M, tuple[int, ...], frozenset[str]]] = {}
+        self._sources: dict[int, tuple[flint.fmpq_mpoly_ctx, tuple[flint.fmpq_mpoly, ...] | None]] = {}
 
     def degrees(self, poly: M) -> tuple[int, ...]:
         """``poly``'s degree in each variable, read once per polynomial: python-flint builds the
@@ -75,10 +76,27 @@ class FlintMpolys(Generic[M]):
 
     def from_flint(self, poly: flint.fmpq_mpoly) -> M:
         """``poly`` (over any names) in this backend's ring, its variables matched by name."""
-        if poly.context() is not self.rational:
-            _refuse_strays(self.names, poly)
-            poly = poly.project_to_context(self.rational)
+        source = poly.context()
+        if source is not self.rational:
+            images = self._images(source)
+            if images is None:  # the source ring has names this one lacks: refused if the polynomial holds one
+                _refuse_strays(self.names, poly)
+                poly = poly.project_to_context(self.rational)
+            else:
+                poly = poly.compose(*images, ctx=self.rational)
         return self.from_rational(poly)
+
+    def _images(self, source: flint.fmpq_mpoly_ctx) -> tuple[flint.fmpq_mpoly, ...] | None:
+        """The generators of this ring that ``source``'s go to, when all its names are here
+        (a compiled system's ring, for each of its equations: the names compared once, not the
+        degrees of every equation); None otherwise."""
+        known = self._sources.get(id(source))
+        if known is None or known[0] is not source:
+            names = source.names()
+            gens = self.rational.gens()
+            images = tuple(gens[self.index[n]] for n in names) if set(names) <= self.index.keys() else None
+            known = self._sources[id(source)] = (source, images)
+        return known[1]
 
     def from_rational(self, poly: flint.fmpq_mpoly) -> M:
         """An ``fmpq_mpoly`` over ``names`` as this backend's polynomial."""

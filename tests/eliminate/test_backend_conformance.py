@@ -71,6 +71,14 @@ def test_from_flint_matches_variables_by_name(backend):
     assert same(backend, backend.from_flint(w_**2 - x_ / 3), w**2 - x / 3)
 
 
+def test_from_flint_matches_a_ring_of_its_own_names_each_time(backend):
+    # every name of the system's ring is the backend's, in another order: two equations from it
+    ring = flint.fmpq_mpoly_ctx.get(("z", "x"), "lex")
+    z_, x_ = ring.gens()
+    assert same(backend, backend.from_flint(z_ * x_ + 2), z * x + 2)
+    assert same(backend, backend.from_flint(x_**2 - z_ / 5), x**2 - z / 5)
+
+
 def test_from_flint_refuses_a_variable_it_does_not_have(backend):
     ring = flint.fmpq_mpoly_ctx.get(("x", "stray"), "lex")
     with pytest.raises(ComputationError, match="stray, neither eliminated nor kept"):
