@@ -110,8 +110,9 @@ class FlintMpolys(Generic[M]):
         return self._reading(poly)[1][self.index[var]]
 
     def is_constant(self, poly: M) -> bool:
-        # flint's is_constant scans every term for the total degree; a constant has one term
-        return len(poly) <= 1 and not any(self.degrees(poly))
+        # flint's is_constant scans every term for the total degree; a constant has one term, of
+        # total degree 0 (the zero polynomial's is -1)
+        return len(poly) <= 1 and poly.total_degree() == 0
 
     def total_degree(self, poly: M) -> int:
         return int(poly.total_degree())
