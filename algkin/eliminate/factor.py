@@ -25,7 +25,7 @@ True
 """
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from typing import cast
 
@@ -105,8 +105,7 @@ def irreducibility_proof(poly: flint.fmpq_mpoly) -> IrreducibilityProof | None:
     held = [i for i, d in enumerate(degrees) if d > 0]
     if len(held) < 2:
         return None  # one variable: factoring it is the proof
-    total = poly.total_degree()
-    leading = [(i, int(d)) for d, i in sorted((degrees[i], i) for i in held) if _number_leads(poly, i, d, total)]
+    leading = _Leading(poly, sorted((int(degrees[i]), i) for i in held))
     # a specialization may factor where the polynomial does not (the seed's connector, in c at
     # integer B_y and s wherever 25/4 - (B_y - s)**2 is a square): the next variable at the same
     # values, then the next values
@@ -118,14 +117,34 @@ def irreducibility_proof(poly: flint.fmpq_mpoly) -> IrreducibilityProof | None:
     return None
 
 
-def _number_leads(poly: flint.fmpq_mpoly, i: int, degree: int, total: int) -> bool:
-    """Whether the leading coefficient of ``poly`` in its ``i``-th variable (of ``degree``
-    there, ``total`` in all) is a number: at once when the total degree is that degree (the
-    leading terms can then hold no other variable), else by reading the terms."""
-    if degree == total:
-        return True
-    top = [m for m in poly.monoms() if m[i] == degree]
-    return len(top) == 1 and sum(top[0]) == degree
+class _Leading:
+    """The variables (index, degree) in which ``poly``'s leading coefficient is a number, of
+    the ``candidates`` (degree, index) in order, found as they are asked for: most proofs need
+    the first alone, and reading the terms (when the total degree does not settle it) costs
+    as much as the proof on the symbolic four-bar's 239."""
+
+    def __init__(self, poly: flint.fmpq_mpoly, candidates: list[tuple[int, int]]) -> None:
+        self.poly, self.candidates = poly, iter(candidates)
+        self.total = int(poly.total_degree())
+        self.found: list[tuple[int, int]] = []
+        self.monomials: list[tuple[int, ...]] | None = None
+
+    def __iter__(self) -> Iterator[tuple[int, int]]:
+        yield from self.found
+        for degree, i in self.candidates:
+            if self._number_leads(i, degree):
+                self.found.append((i, degree))
+                yield i, degree
+
+    def _number_leads(self, i: int, degree: int) -> bool:
+        """At once when the total degree is the variable's (the leading terms can then hold no
+        other variable), else by reading the terms, once."""
+        if degree == self.total:
+            return True
+        if self.monomials is None:
+            self.monomials = self.poly.monoms()
+        top = [m for m in self.monomials if m[i] == degree]
+        return len(top) == 1 and sum(top[0]) == degree
 
 
 def _irreducible_at(poly: flint.fmpq_mpoly, i: int, degree: int, values: tuple[int, ...]) -> IrreducibilityProof | None:
