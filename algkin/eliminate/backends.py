@@ -62,7 +62,7 @@ class FlintMpolys(Generic[M]):
         if known is None or known[0] is not poly:
             if len(self._read) >= MEMO:
                 self._read.clear()
-            degrees = tuple(int(d) for d in poly.degrees())  # fmpz: Python ints compare faster
+            degrees = tuple(map(int, poly.degrees()))  # fmpz: Python ints compare faster
             held = frozenset(n for n, d in zip(self.names, degrees) if d > 0)
             known = self._read[id(poly)] = (poly, degrees, held)
         return known
