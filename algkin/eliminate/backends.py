@@ -23,7 +23,7 @@ from ..system.convert import flint_context, to_flint, to_flint_integer, to_sympy
 __all__ = ["FlintBackend", "FlintMpolys", "SympyBackend", "BACKENDS"]
 
 M = TypeVar("M", flint.fmpq_mpoly, flint.nmod_mpoly)
-MEMO = 256  # polynomials whose degrees a backend keeps (``FlintMpolys.degrees``)  # the polynomials of a python-flint backend
+MEMO = 256  # polynomials whose degrees a backend keeps (``FlintMpolys._reading``)  # the polynomials of a python-flint backend
 _M_co = TypeVar("_M_co", covariant=True)
 
 
@@ -49,15 +49,12 @@ class FlintMpolys(Generic[M]):
         self._read: dict[int, tuple[M, tuple[int, ...], frozenset[str]]] = {}
         self._sources: dict[int, tuple[flint.fmpq_mpoly_ctx, tuple[flint.fmpq_mpoly, ...] | None]] = {}
 
-    def degrees(self, poly: M) -> tuple[int, ...]:
-        """``poly``'s degree in each variable, read once per polynomial: python-flint builds the
-        tuple anew at each call (1 us), and the methods ask dozens of times of the same few
-        polynomials (the lambda's coupler: 110 times of a dozen). Kept by identity with the
-        variables held, the polynomial held with them (python-flint's polynomials are never
-        changed in place), at most ``MEMO`` of them, until ``forget``."""
-        return self._reading(poly)[1]
-
     def _reading(self, poly: M) -> tuple[M, tuple[int, ...], frozenset[str]]:
+        """``poly``, its degree in each variable and the variables it holds, read once per
+        polynomial: python-flint builds the tuple of degrees anew at each call (1 us), and the
+        methods ask dozens of times of the same few polynomials (the lambda's coupler: 110
+        times of a dozen). Kept by identity, the polynomial held with them (python-flint's
+        polynomials are never changed in place), at most ``MEMO`` of them, until ``forget``."""
         known = self._read.get(id(poly))
         if known is None or known[0] is not poly:
             if len(self._read) >= MEMO:
@@ -68,7 +65,7 @@ class FlintMpolys(Generic[M]):
         return known
 
     def forget(self) -> None:
-        """Let go of the polynomials ``degrees`` holds (an elimination is over)."""
+        """Let go of the polynomials ``_reading`` holds (an elimination is over)."""
         self._read.clear()
 
     def variables(self, poly: M) -> AbstractSet[str]:
