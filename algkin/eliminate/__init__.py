@@ -18,7 +18,7 @@ algkin.errors.BudgetExceeded: max_terms=5: the resultant in x has 11 terms, whil
 
 import functools
 import time
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Generic, TypeVar, cast
 
@@ -38,7 +38,7 @@ from .protocol import Backend, P
 from .request import EliminationRequest, LogEntry, Method
 from .select import Witness, WitnessGroups, select_factors, unreal_factors
 
-__all__ = ["eliminate", "Elimination", "Witness", "Budget", "Deadline", "METHODS", "DEFAULT_METHOD", "BACKENDS",
+__all__ = ["eliminate", "eliminate_each", "Elimination", "Witness", "Budget", "Deadline", "METHODS", "DEFAULT_METHOD", "BACKENDS",
            "method_names", "backend_names"]
 
 
@@ -182,13 +182,74 @@ def eliminate(equations: Sequence[sympy.Expr | flint.fmpq_mpoly], eliminate: Seq
     deadline.note(f"eliminating {', '.join(map(str, eliminate)) or 'nothing'} "
                   f"(keeping {', '.join(map(str, keep))}) by {method} on {backend}")
     request = EliminationRequest(tuple(eliminate), witnesses, tuple(parameters), deadline)
-    return deadline.run(functools.partial(_eliminate, engine, method, run, equations, tuple(keep), request))
+
+    def converted_and_eliminated() -> Elimination[Any]:
+        start = time.perf_counter()
+        return _eliminate(engine, method, run, _converted(engine, equations), tuple(keep), request, start=start)
+
+    try:
+        return deadline.run(converted_and_eliminated)
+    finally:
+        engine.forget()  # the result holds the backend: not the intermediate polynomials with it
 
 
-def _eliminate(engine: Backend[P], method: str, run: Method, equations: Sequence[sympy.Expr | flint.fmpq_mpoly],
-               keep: tuple[str, ...], request: EliminationRequest) -> Elimination[P]:
-    start = time.perf_counter()
-    polys = [engine.from_flint(e) if isinstance(e, flint.fmpq_mpoly) else engine.from_sympy(e) for e in equations]
+def eliminate_each(equations: Sequence[sympy.Expr | flint.fmpq_mpoly], eliminate: Sequence[str],
+                   keep: Sequence[str], *, at: Sequence[Mapping[str, flint.fmpq | int]],
+                   witnesses: Sequence[WitnessGroups] = (), method: str = DEFAULT_METHOD, backend: str = "flint",
+                   parameters: Sequence[str] = (), budget: Budget | Deadline | None = None
+                   ) -> list[Elimination[flint.fmpq_mpoly]] | list[Elimination[sympy.Poly]]:
+    """``eliminate`` at each specialization of one system, in one call: ``at`` gives each one's
+    values (name -> rational) of some of the ``keep`` variables (a scene's dimensions, for a
+    sweep or a property-based run), ``witnesses`` each one's witness groups (none by default).
+    The backend and the equations' conversion are shared, the rest is ``eliminate``'s, item by
+    item: each result is the one ``eliminate`` gives on the specialized equations. One budget
+    bounds the whole batch.
+
+    >>> import sympy
+    >>> x, y, r = sympy.symbols("x y r")
+    >>> circles = [x**2 + y**2 - r**2, (x - 1)**2 + y**2 - 1]  # the unit circle about (1, 0) and one of radius r
+    >>> [str(e.polynomial) for e in eliminate_each(circles, ["x"], ["y", "r"], at=[{"r": 1}, {"r": 2}])]
+    ['4*y**2 - 3', 'y']
+
+    (at ``r = 2`` the circles touch at (2, 0): ``y**2``, made squarefree.)
+    """
+    if witnesses and len(witnesses) != len(at):
+        raise UsageError("witnesses", len(witnesses), f"expected one set of witness groups for each of the {len(at)} "
+                                                      "specializations")
+    stray = sorted({name for values in at for name in values} - set(keep))
+    if stray:
+        raise UsageError("at", stray[0], f"not a kept variable (kept: {', '.join(keep)})")
+    run = _lookup(METHODS, "method", method)
+    engine = _lookup(BACKENDS, "backend", backend)(tuple(eliminate) + tuple(keep))
+    deadline = started(budget)
+    deadline.note(f"eliminating {', '.join(map(str, eliminate)) or 'nothing'} (keeping {', '.join(map(str, keep))}) "
+                  f"by {method} on {backend}, at {len(at)} specializations")
+    requests = [EliminationRequest(tuple(eliminate), witnesses[k] if witnesses else (), tuple(parameters), deadline)
+                for k in range(len(at))]
+
+    def each() -> list[Elimination[Any]]:
+        polys = _converted(engine, equations)
+        done = []
+        for values, request in zip(at, requests):
+            start = time.perf_counter()
+            exact = {name: flint.fmpq(value) for name, value in values.items()}
+            specialized = [engine.specialize(p, exact) for p in polys]
+            done.append(_eliminate(engine, method, run, specialized, tuple(keep), request, start=start))
+            engine.forget()
+        return done
+
+    try:
+        return deadline.run(each)
+    finally:
+        engine.forget()
+
+
+def _converted(engine: Backend[P], equations: Sequence[sympy.Expr | flint.fmpq_mpoly]) -> list[P]:
+    return [engine.from_flint(e) if isinstance(e, flint.fmpq_mpoly) else engine.from_sympy(e) for e in equations]
+
+
+def _eliminate(engine: Backend[P], method: str, run: Method, polys: list[P], keep: tuple[str, ...],
+               request: EliminationRequest, *, start: float) -> Elimination[P]:
     prepared = prepare(engine, polys, request.eliminate)
     outcome = prepared.then(run(engine, _consistent(engine, prepared.left), request))
     left = _consistent(engine, outcome.left)

@@ -6,8 +6,9 @@ names (``from_flint``: a compiled system's, ``System.polynomials``) or as sympy
 expressions, and leave as sympy expressions, through ``algkin.system.convert``.
 """
 
+import functools
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping, Sequence, Set as AbstractSet
 from typing import Generic, Protocol, TypeVar, cast
 
 import flint
@@ -21,7 +22,8 @@ from ..system.convert import flint_context, to_flint, to_flint_integer, to_sympy
 
 __all__ = ["FlintBackend", "FlintMpolys", "SympyBackend", "BACKENDS"]
 
-M = TypeVar("M", flint.fmpq_mpoly, flint.nmod_mpoly)  # the polynomials of a python-flint backend
+M = TypeVar("M", flint.fmpq_mpoly, flint.nmod_mpoly)
+MEMO = 256  # polynomials whose degrees a backend keeps (``FlintMpolys._reading``)  # the polynomials of a python-flint backend
 _M_co = TypeVar("_M_co", covariant=True)
 
 
@@ -44,16 +46,54 @@ class FlintMpolys(Generic[M]):
         self.names = tuple(names)
         self.index = {n: i for i, n in enumerate(self.names)}
         self.rational = flint_context(self.names)  # where ``from_flint`` projects to
+        self._read: dict[int, tuple[M, tuple[int, ...], frozenset[str]]] = {}
+        self._sources: dict[int, tuple[flint.fmpq_mpoly_ctx, tuple[flint.fmpq_mpoly, ...] | None]] = {}
 
-    def variables(self, poly: M) -> set[str]:
-        return {n for n, d in zip(self.names, poly.degrees()) if d > 0}
+    def _reading(self, poly: M) -> tuple[M, tuple[int, ...], frozenset[str]]:
+        """``poly``, its degree in each variable and the variables it holds, read once per
+        polynomial: python-flint builds the tuple of degrees anew at each call (1 us), and the
+        methods ask dozens of times of the same few polynomials (the lambda's coupler: 110
+        times of a dozen). Kept by identity, the polynomial held with them (python-flint's
+        polynomials are never changed in place), at most ``MEMO`` of them, until ``forget``."""
+        known = self._read.get(id(poly))
+        if known is None or known[0] is not poly:
+            if len(self._read) >= MEMO:
+                self._read.clear()
+            degrees = tuple(map(int, poly.degrees()))  # fmpz: Python ints compare faster
+            held = frozenset(n for n, d in zip(self.names, degrees) if d > 0)
+            known = self._read[id(poly)] = (poly, degrees, held)
+        return known
+
+    def forget(self) -> None:
+        """Let go of the polynomials ``_reading`` holds (an elimination is over)."""
+        self._read.clear()
+
+    def variables(self, poly: M) -> AbstractSet[str]:
+        return self._reading(poly)[2]
 
     def from_flint(self, poly: flint.fmpq_mpoly) -> M:
         """``poly`` (over any names) in this backend's ring, its variables matched by name."""
-        if poly.context() is not self.rational:
-            _refuse_strays(self.names, poly)
-            poly = poly.project_to_context(self.rational)
+        source = poly.context()
+        if source is not self.rational:
+            images = self._images(source)
+            if images is None:  # the source ring has names this one lacks: refused if the polynomial holds one
+                _refuse_strays(self.names, poly)
+                poly = poly.project_to_context(self.rational)
+            else:
+                poly = poly.compose(*images, ctx=self.rational)
         return self.from_rational(poly)
+
+    def _images(self, source: flint.fmpq_mpoly_ctx) -> tuple[flint.fmpq_mpoly, ...] | None:
+        """The generators of this ring that ``source``'s go to, when all its names are here
+        (a compiled system's ring, for each of its equations: the names compared once, not the
+        degrees of every equation); None otherwise."""
+        known = self._sources.get(id(source))
+        if known is None or known[0] is not source:
+            names = source.names()
+            gens = self.rational.gens()
+            images = tuple(gens[self.index[n]] for n in names) if set(names) <= self.index.keys() else None
+            known = self._sources[id(source)] = (source, images)
+        return known[1]
 
     def from_rational(self, poly: flint.fmpq_mpoly) -> M:
         """An ``fmpq_mpoly`` over ``names`` as this backend's polynomial."""
@@ -64,11 +104,12 @@ class FlintMpolys(Generic[M]):
         return None
 
     def degree(self, poly: M, var: str) -> int:
-        return int(poly.degrees()[self.index[var]])
+        return self._reading(poly)[1][self.index[var]]
 
     def is_constant(self, poly: M) -> bool:
-        # flint's is_constant scans every term for the total degree; a constant has one term
-        return len(poly) <= 1 and not any(poly.degrees())
+        # flint's is_constant scans every term for the total degree; a constant has one term, of
+        # total degree 0 (the zero polynomial's is -1)
+        return len(poly) <= 1 and poly.total_degree() == 0
 
     def total_degree(self, poly: M) -> int:
         return int(poly.total_degree())
@@ -88,7 +129,7 @@ class FlintMpolys(Generic[M]):
         return f.gcd(g)
 
     def derivative(self, poly: M, var: str) -> M:
-        return poly.derivative(var)
+        return poly.derivative(self.index[var])  # by index: python-flint looks a name up in Python
 
     def scale(self, poly: M, numerator: int, denominator: int) -> M:
         """``poly * numerator / denominator``: what the coefficients' ring says (each backend's own)."""
@@ -96,15 +137,21 @@ class FlintMpolys(Generic[M]):
 
     def substitute(self, poly: M, var: str, value: M) -> M:
         """``poly`` with ``var`` replaced by the polynomial ``value``: one composition in C."""
-        gens = list(self.ctx.gens())
+        gens = list(self._constants[2])
         gens[self.index[var]] = value
         return poly.compose(*gens)
 
     def zero(self) -> M:
-        return self.ctx.from_dict({})
+        return self._constants[0]
 
     def one(self) -> M:
-        return self.ctx.from_dict({(0,) * len(self.names): 1})
+        return self._constants[1]
+
+    @functools.cached_property
+    def _constants(self) -> tuple[M, M, tuple[M, ...]]:
+        """Zero, one and the generators, made once (python-flint's polynomials are values; the
+        generators alone cost 2.6 us a call)."""
+        return self.ctx.from_dict({}), self.ctx.from_dict({(0,) * len(self.names): 1}), tuple(self.ctx.gens())
 
     def quotient(self, f: M, g: M) -> M | None:
         """``f / g`` if ``g`` divides ``f``, else None."""
@@ -117,21 +164,21 @@ class FlintMpolys(Generic[M]):
         the terms is ten times slower; modulo a prime above every degree ``k!`` is invertible)."""
         if not variables:
             return {(): poly}
-        name, factorial, top = variables[0], 1, self.degree(poly, variables[0])
+        index, factorial, top = self.index[variables[0]], 1, self.degree(poly, variables[0])
         parts: dict[tuple[int, ...], M] = {}
         for degree in range(top + 1):
-            part = poly.subs({name: 0}) if degree < top else poly
+            part = poly.subs({index: 0}) if degree < top else poly
             if not part.is_zero():
                 scaled = self.scale(part, 1, factorial) if factorial > 1 else part
                 for key, value in self.split(scaled, variables[1:]).items():
                     parts[(degree,) + key] = value
             if degree < top:
-                poly, factorial = poly.derivative(name), factorial * (degree + 1)
+                poly, factorial = poly.derivative(index), factorial * (degree + 1)
         return parts
 
     def join(self, parts: Mapping[tuple[int, ...], M], variables: Sequence[str]) -> M:
         """The inverse of ``split``."""
-        gens = self.ctx.gens()
+        gens = self._constants[2]
         where = [gens[self.index[v]] for v in variables]
         total = self.zero()
         for exponents, coefficient in parts.items():
@@ -179,7 +226,10 @@ class FlintBackend(FlintMpolys[flint.fmpq_mpoly]):
 
     def irreducibility(self, poly: flint.fmpq_mpoly) -> IrreducibilityProof | None:
         # beyond three variables, specializing to one proves irreducibility faster than flint's
-        # multivariate factoring (benchmarks/bench_ideas.py); in up to three, flint is faster
+        # multivariate factoring (benchmarks/bench_ideas.py). In three, about as fast: an attempt
+        # (5 us to specialize, 10 us for flint's univariate factoring of a quartic) against 26 us
+        # for the seed's connector, where the first values tried factor. In two (a curve), 5
+        # against 40 us, but flint's factoring stays: its proof is what ``curve`` reports.
         return irreducibility_proof(poly) if len(self.variables(poly)) > 3 else None
 
     def specialize(self, poly: flint.fmpq_mpoly, values: Mapping[str, flint.fmpq]) -> flint.fmpq_mpoly:
@@ -203,10 +253,10 @@ class FlintBackend(FlintMpolys[flint.fmpq_mpoly]):
         if poly.is_zero():
             return poly
         coeffs = poly.coeffs()
-        lcm = math.lcm(*(int(c.q) for c in coeffs))
-        gcd = math.gcd(*(int(c.p) for c in coeffs))
+        lcm = math.lcm(*(c.q for c in coeffs))  # python-flint's integers are indices: no int() each
+        gcd = math.gcd(*(c.p for c in coeffs))
         scaled = poly * flint.fmpq(lcm, gcd)
-        return -scaled if scaled.coeffs()[0] < 0 else scaled
+        return -scaled if scaled.leading_coefficient() < 0 else scaled
 
     def groebner_lex(self, polys: Sequence[flint.fmpq_mpoly], order: Sequence[str]) -> list[flint.fmpq_mpoly]:
         """Reduced lex Gröbner basis with variables ordered as ``order`` (first is largest)."""
@@ -238,7 +288,10 @@ class SympyBackend:
     def to_sympy(self, poly: sympy.Poly) -> sympy.Expr:
         return poly.as_expr()
 
-    def variables(self, poly: sympy.Poly) -> set[str]:
+    def forget(self) -> None:
+        """Nothing kept: sympy's ``Poly`` reads its degrees itself."""
+
+    def variables(self, poly: sympy.Poly) -> AbstractSet[str]:
         return {n for n, d in zip(self.names, poly.degree_list()) if d > 0}
 
     def degree(self, poly: sympy.Poly, var: str) -> int:

@@ -24,14 +24,16 @@ irreducible over QQ: its leading coefficient in z is a number, and at x = 3, y =
 True
 """
 
-from collections.abc import Sequence
+import math
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
+from typing import cast
 
 import flint
 
 from .protocol import Backend, P
 
-__all__ = ["factor_with", "irreducibility_proof", "IrreducibilityProof", "FACTORED"]
+__all__ = ["factor_with", "irreducibility_proof", "univariate_irreducible", "IrreducibilityProof", "FACTORED"]
 
 SPECIALIZATIONS = ((3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47),
                    (-2, 9, -4, 6, -10, 15, -8, 21, -12, 25, -14, 27, -16, 33))
@@ -87,22 +89,62 @@ def factor_with(backend: Backend[P], poly: P, divisors: Sequence[P]) -> tuple[li
 
 def irreducibility_proof(poly: flint.fmpq_mpoly) -> IrreducibilityProof | None:
     """A proof that the ``fmpq_mpoly`` ``poly`` is irreducible over QQ, by specialization;
-    None means not proved (it may still be irreducible)."""
+    None means not proved (it may still be irreducible).
+
+    The argument (Hilbert's irreducibility, the easy direction): let the leading coefficient
+    of ``poly`` in ``x`` be a number ``c``. A factor free of ``x`` would divide ``c``, so every
+    non-trivial factorization ``poly = g*h`` has ``x`` in both ``g`` and ``h``, and their
+    leading coefficients in ``x`` are numbers too (their product is ``c``). Setting every other
+    variable to an integer keeps both degrees in ``x``: the univariate polynomial left factors
+    as well, with both factors of positive degree. So if it is irreducible of the same degree,
+    ``poly`` is. (With a leading coefficient that is not a number, a factor free of ``x`` could
+    vanish nowhere at the point and go unseen: such a variable is not used.) The univariate
+    polynomial is proved irreducible by ``univariate_irreducible``.
+    """
     degrees = poly.degrees()
     held = [i for i, d in enumerate(degrees) if d > 0]
     if len(held) < 2:
         return None  # one variable: factoring it is the proof
-    monomials = poly.monoms()
-    for degree, i in sorted((degrees[i], i) for i in held):
-        top = [m for m in monomials if m[i] == degree]
-        if len(top) != 1 or sum(top[0]) != degree:
-            continue  # the leading coefficient in this variable is not a number
-        for values in SPECIALIZATIONS:
-            proof = _irreducible_at(poly, i, int(degree), values)
+    leading = _Leading(poly, sorted((int(degrees[i]), i) for i in held))
+    # a specialization may factor where the polynomial does not (the seed's connector, in c at
+    # integer B_y and s wherever 25/4 - (B_y - s)**2 is a square): the next variable at the same
+    # values, then the next values
+    for values in SPECIALIZATIONS:
+        for i, degree in leading:
+            proof = _irreducible_at(poly, i, degree, values)
             if proof is not None:
                 return proof
-        return None
     return None
+
+
+class _Leading:
+    """The variables (index, degree) in which ``poly``'s leading coefficient is a number, of
+    the ``candidates`` (degree, index) in order, found as they are asked for: most proofs need
+    the first alone, and reading the terms (when the total degree does not settle it) costs
+    as much as the proof on the symbolic four-bar's 239."""
+
+    def __init__(self, poly: flint.fmpq_mpoly, candidates: list[tuple[int, int]]) -> None:
+        self.poly, self.candidates = poly, iter(candidates)
+        self.total = int(poly.total_degree())
+        self.found: list[tuple[int, int]] = []
+        self.monomials: list[tuple[int, ...]] | None = None
+
+    def __iter__(self) -> Iterator[tuple[int, int]]:
+        yield from self.found
+        for degree, i in self.candidates:
+            if self._number_leads(i, degree):
+                self.found.append((i, degree))
+                yield i, degree
+
+    def _number_leads(self, i: int, degree: int) -> bool:
+        """At once when the total degree is the variable's (the leading terms can then hold no
+        other variable), else by reading the terms, once."""
+        if degree == self.total:
+            return True
+        if self.monomials is None:
+            self.monomials = self.poly.monoms()
+        top = [m for m in self.monomials if m[i] == degree]
+        return len(top) == 1 and sum(top[0]) == degree
 
 
 def _irreducible_at(poly: flint.fmpq_mpoly, i: int, degree: int, values: tuple[int, ...]) -> IrreducibilityProof | None:
@@ -110,12 +152,42 @@ def _irreducible_at(poly: flint.fmpq_mpoly, i: int, degree: int, values: tuple[i
     irreducible (its degree in that variable cannot drop: the leading coefficient is a number)."""
     names = poly.context().names()
     held = [k for k, d in enumerate(poly.degrees()) if d > 0 and k != i]
-    fixed: dict[str | int, int] = {names[k]: values[n % len(values)] for n, k in enumerate(held)}
-    univariate = poly.subs(fixed)
-    coefficients: list[flint.fmpq | int] = [0] * (degree + 1)
-    for exponents, coefficient in zip(univariate.monoms(), univariate.coeffs()):
-        coefficients[exponents[i]] = coefficient
-    _, factors = flint.fmpq_poly(coefficients).factor()
-    if len(factors) != 1 or factors[0][1] != 1:
+    fixed = {k: values[n % len(values)] for n, k in enumerate(held)}
+    univariate = poly.subs(cast("dict[str | int, int]", fixed))
+    coefficients = univariate.coeffs()  # highest power first: one variable is left, in lex order
+    if len(coefficients) == degree + 1:
+        dense: list[flint.fmpq] = coefficients[::-1]
+    else:
+        dense = [flint.fmpq(0)] * (degree + 1)
+        for exponents, coefficient in zip(univariate.monoms(), coefficients):
+            dense[exponents[i]] = coefficient
+    if not univariate_irreducible(dense):
         return None
-    return IrreducibilityProof(names[i], tuple((str(name), value) for name, value in fixed.items()), degree)
+    return IrreducibilityProof(names[i], tuple((names[k], value) for k, value in fixed.items()), degree)
+
+
+def univariate_irreducible(coefficients: Sequence[flint.fmpq | int]) -> bool:
+    """Whether the polynomial of ``coefficients`` (lowest power first, the last non-zero) is
+    irreducible over QQ: a line always; a quadratic when its discriminant is not the square of
+    a rational (it factors exactly when it has a rational root, ``(-b +- sqrt(D)) / 2a``);
+    beyond, when python-flint's factorization over QQ has one factor, once.
+
+    >>> univariate_irreducible([-2, 0, 1]), univariate_irreducible([-4, 0, 1])  # x**2 - 2, x**2 - 4
+    (True, False)
+    >>> univariate_irreducible([1, 0, 0, 0, 1]), univariate_irreducible([4, 0, 0, 0, 1])  # x**4 + 4 factors
+    (True, False)
+    """
+    degree = len(coefficients) - 1
+    if degree == 1:
+        return True
+    if degree == 2:
+        c, b, a = (flint.fmpq(v) for v in coefficients)
+        return not _rational_square(b * b - 4 * a * c)
+    _, factors = flint.fmpq_poly(list(coefficients)).factor()
+    return len(factors) == 1 and factors[0][1] == 1
+
+
+def _rational_square(value: flint.fmpq) -> bool:
+    """Whether ``value`` is the square of a rational: numerator and denominator (coprime) squares."""
+    p, q = int(value.p), int(value.q)
+    return p >= 0 and math.isqrt(p) ** 2 == p and math.isqrt(q) ** 2 == q

@@ -47,6 +47,7 @@ def linear_elimination(backend: Backend[P], polys: list[P], request: Elimination
     original = polys
     remaining = list(request.eliminate)
     closing = False  # whether a multiplier held a kept variable
+    ahead: tuple[list[P], list[str], _Linear[P]] | None = None  # what the axes' check found, for the next turn
     while True:
         present: set[str] = set().union(*(backend.variables(p) for p in outcome.left))
         remaining = [v for v in remaining if v in present]  # substituted away already (prepare)
@@ -60,7 +61,8 @@ def linear_elimination(backend: Backend[P], polys: list[P], request: Elimination
             return outcome
         allowed = set(request.parameters) if len(remaining) > 2 else set(backend.names) - set(remaining)
         polys = [p for p in outcome.left if not backend.is_zero(p)]
-        found = _linear_unknown(backend, polys, remaining, allowed)
+        found = ahead[2] if ahead is not None and _same(ahead[0], polys) and ahead[1] == remaining else \
+            _linear_unknown(backend, polys, remaining, allowed)
         if found is not None:
             closing = closing or not backend.variables(found.coefficient) <= set(request.parameters)
             # after the last unknown, the multiplier's factors are left for factoring to divide out
@@ -71,13 +73,19 @@ def linear_elimination(backend: Backend[P], polys: list[P], request: Elimination
         # its factors, which trial division removes, where a resultant brings mismatched roots
         reduced = None if not closing and _one_resultant_left(backend, polys, remaining) else \
             _radical_axes(backend, polys, remaining, allowed)
-        if reduced is not None and _linear_unknown(backend, reduced.left, remaining, allowed) is not None:
-            outcome = outcome.then(reduced)
+        after = _linear_unknown(backend, reduced.left, remaining, allowed) if reduced is not None else None
+        if reduced is not None and after is not None:
+            outcome, ahead = outcome.then(reduced), (reduced.left, list(remaining), after)
             continue
         # an axis no unknown can be substituted from only reshuffles the resultants
         step, done = _by_resultants(backend, polys, remaining, request)
         outcome = outcome.then(step)
         remaining = [v for v in remaining if v not in done]
+
+
+def _same(these: Sequence[P], those: Sequence[P]) -> bool:
+    """Whether two lists hold the same polynomials (the same objects), in the same order."""
+    return len(these) == len(those) and all(a is b for a, b in zip(these, those))
 
 
 def _one_resultant_left(backend: Backend[P], polys: Sequence[P], remaining: Sequence[str]) -> bool:
@@ -102,7 +110,6 @@ class _Linear(Generic[P]):
     pivot: P
     var: str
     coefficient: P
-    rest: P
 
 
 def _linear_unknown(backend: Backend[P], polys: Sequence[P], remaining: Sequence[str], allowed: set[str]
@@ -125,7 +132,7 @@ def _linear_unknown(backend: Backend[P], polys: Sequence[P], remaining: Sequence
     if best is None:
         return None
     _, poly, var, coefficient = best
-    return _Linear(poly, var, coefficient, backend.split(poly, [var]).get((0,), backend.zero()))
+    return _Linear(poly, var, coefficient)
 
 
 def _substitution(backend: Backend[P], polys: list[P], found: _Linear[P], *, strip: bool,
@@ -146,9 +153,12 @@ def _substitution(backend: Backend[P], polys: list[P], found: _Linear[P], *, str
 def _substitute(backend: Backend[P], polys: Sequence[P], found: _Linear[P], *, strip: bool) -> tuple[list[P], bool]:
     """``a**k f(-rest/a)`` for every other equation ``f`` of degree ``k`` in ``var`` (``found``'s
     unknown, ``a`` its coefficient), with the factors it shares with ``a`` stripped (if ``strip``);
-    and whether any was."""
-    pivot, var, coefficient, rest = found.pivot, found.var, found.coefficient, found.rest
-    minus_rest, scales = [backend.one()], [backend.one()]  # powers of -rest and of a, as needed
+    and whether any was.
+
+    ``a**k f(-rest/a)`` is the resultant in ``var`` of the pivot ``a*var + rest`` and ``f`` (the
+    pivot's leading coefficient to the power ``k``, times ``f`` at its one root): one call in C,
+    where splitting ``f`` by powers of ``var`` and summing took a dozen."""
+    pivot, var, coefficient = found.pivot, found.var, found.coefficient
     pieces = backend.factors(coefficient) if strip and not backend.is_constant(coefficient) else []
     out: list[P] = []
     stripped = False
@@ -158,14 +168,7 @@ def _substitute(backend: Backend[P], polys: Sequence[P], found: _Linear[P], *, s
         if not backend.degree(poly, var):
             out.append(poly)
             continue
-        parts = backend.split(poly, [var])
-        degree = max(e for (e,) in parts)
-        while len(minus_rest) <= degree:
-            minus_rest.append(minus_rest[-1] * -rest)
-            scales.append(scales[-1] * coefficient)
-        total = backend.zero()
-        for (e,), part in parts.items():
-            total = total + part * minus_rest[e] * scales[degree - e]
+        total = backend.resultant(pivot, poly, var)
         out.append(_strip(backend, total, pieces))
         stripped = stripped or out[-1] is not total
     return out, stripped

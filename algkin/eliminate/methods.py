@@ -7,6 +7,8 @@ to eliminate) and the same factor selection at witnesses.
 
 from collections.abc import Sequence
 
+import flint
+
 from ..errors import ComputationError
 from .protocol import Backend, P
 from .request import EliminationRequest, LogEntry, MethodOutcome
@@ -23,7 +25,7 @@ def _linear_definition(backend: Backend[P], poly: P, var: str) -> P | None:
     if not backend.is_constant(slope):
         return None
     (_, numerator, denominator), = backend.terms(slope)
-    return backend.scale(backend.substitute(poly, var, backend.zero()), -denominator, numerator)
+    return backend.scale(backend.specialize(poly, {var: flint.fmpq(0)}), -denominator, numerator)
 
 
 def prepare(backend: Backend[P], polys: list[P], eliminate: Sequence[str]) -> MethodOutcome[P]:

@@ -10,7 +10,7 @@ between the backends (python-flint gives degree -1, sympy -oo), and the methods 
 ``is_zero`` first.
 """
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence, Set as AbstractSet
 from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 
 import flint
@@ -54,8 +54,11 @@ class Backend(Protocol[P]):
     def to_sympy(self, poly: P) -> sympy.Expr:
         """``poly`` as a sympy expression in algkin's (real) symbols."""
 
-    def variables(self, poly: P) -> set[str]:
+    def variables(self, poly: P) -> AbstractSet[str]:
         """The names ``poly`` holds (of degree above zero)."""
+
+    def forget(self) -> None:
+        """Let go of whatever the backend keeps of the polynomials it was given (an elimination is over)."""
 
     def degree(self, poly: P, var: str) -> int:
         """The degree of ``poly`` in ``var``."""

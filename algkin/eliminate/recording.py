@@ -14,7 +14,7 @@ every method runs on it unchanged.
 ['x + y', 'x - y']
 """
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping, Sequence, Set as AbstractSet
 from typing import TYPE_CHECKING, Generic
 
 import flint
@@ -52,8 +52,11 @@ class Recording(Generic[P]):
     def to_sympy(self, poly: P) -> sympy.Expr:
         return self.inner.to_sympy(poly)
 
-    def variables(self, poly: P) -> set[str]:
+    def variables(self, poly: P) -> AbstractSet[str]:
         return self.inner.variables(poly)
+
+    def forget(self) -> None:
+        self.inner.forget()
 
     def degree(self, poly: P, var: str) -> int:
         return self.inner.degree(poly, var)

@@ -71,6 +71,14 @@ def test_from_flint_matches_variables_by_name(backend):
     assert same(backend, backend.from_flint(w_**2 - x_ / 3), w**2 - x / 3)
 
 
+def test_from_flint_matches_a_ring_of_its_own_names_each_time(backend):
+    # every name of the system's ring is the backend's, in another order: two equations from it
+    ring = flint.fmpq_mpoly_ctx.get(("z", "x"), "lex")
+    z_, x_ = ring.gens()
+    assert same(backend, backend.from_flint(z_ * x_ + 2), z * x + 2)
+    assert same(backend, backend.from_flint(x_**2 - z_ / 5), x**2 - z / 5)
+
+
 def test_from_flint_refuses_a_variable_it_does_not_have(backend):
     ring = flint.fmpq_mpoly_ctx.get(("x", "stray"), "lex")
     with pytest.raises(ComputationError, match="stray, neither eliminated nor kept"):
@@ -92,6 +100,14 @@ def test_irreducibility_is_proved_only_of_what_is_irreducible(backend):
 def test_variables(backend):
     assert backend.variables(backend.from_sympy(x * z + 1)) == {"x", "z"}
     assert backend.variables(backend.from_sympy(sympy.Integer(7))) == set()
+
+
+def test_what_is_read_of_a_polynomial_stays_true_after_forgetting(backend):
+    poly = backend.from_sympy(x**2 * z + y)
+    assert backend.degree(poly, "x") == 2 and backend.variables(poly) == {"x", "y", "z"}
+    backend.forget()
+    assert backend.degree(poly, "x") == 2 and backend.variables(poly) == {"x", "y", "z"}
+    assert backend.degree(backend.from_sympy(y**3), "y") == 3
 
 
 def test_degree_total_degree_and_nterms(backend):
@@ -134,6 +150,7 @@ def test_resultant_of_two_circles(backend):
     (3 * (x - 1) ** 2 * (x + y), [x - 1, x + y]),  # content and multiplicity gone
     (x**3 + y * z * w * x + z**2 + w + 1, [x**3 + y * z * w * x + z**2 + w + 1]),  # irreducible, four variables
     ((x**2 + y * w) * (x + z), [x**2 + y * w, x + z]),  # reducible, four variables
+    (-5 * x**2 * z, [x, z]),  # a monomial: its variables (a multiplier's power)
 ])
 def test_factors_multiply_back_to_the_squarefree_input(backend, expr, expected):
     factors = backend.factors(backend.from_sympy(expr))
@@ -265,7 +282,7 @@ def test_every_operation_of_the_protocol_is_tested_here():
     called = {node.attr for node in ast.walk(tree)
               if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id == "backend"}
     operations = protocol_operations()
-    assert len(operations) == 29  # 27 operations, name and names: a sanity check on the listing
+    assert len(operations) == 30  # 28 operations, name and names: a sanity check on the listing
     assert operations <= called, f"untested: {sorted(operations - called)}"
 
 

@@ -1,10 +1,12 @@
 """Factoring with known divisors, and irreducibility proved by specialization."""
 
 import flint
+import sympy
 from hypothesis import event, given, settings, strategies as st
 
 from algkin.eliminate.backends import FlintBackend
-from algkin.eliminate.factor import FACTORED, factor_with, irreducibility_proof
+from algkin.eliminate.factor import FACTORED, factor_with, irreducibility_proof, univariate_irreducible
+from algkin.system.convert import to_flint
 
 NAMES = ("x", "y", "z", "w", "v")
 CTX = flint.fmpq_mpoly_ctx.get(NAMES, "lex")
@@ -89,3 +91,41 @@ def test_a_cofactor_found_irreducible_by_factoring_says_so():
     x, y = CTX.gens()[:2]
     found, proof = factor_with(engine, x * (x**2 + y**2 - 1), [x * y])
     assert [str(f) for f in found] == ["x", "x^2 + y^2 - 1"] and proof is FACTORED
+
+
+def test_a_quadratic_is_irreducible_exactly_when_its_discriminant_is_not_a_square():
+    # by hand: x**2 - 2 has roots +-sqrt(2); x**2 - 4 = (x - 2)(x + 2); 4x**2 - 9 = (2x - 3)(2x + 3);
+    # x**2 + x + 1 has discriminant -3; x**2/4 - 1/9 = (x/2 - 1/3)(x/2 + 1/3)
+    assert univariate_irreducible([-2, 0, 1]) and not univariate_irreducible([-4, 0, 1])
+    assert not univariate_irreducible([-9, 0, 4]) and univariate_irreducible([1, 1, 1])
+    assert not univariate_irreducible([flint.fmpq(-1, 9), 0, flint.fmpq(1, 4)])
+
+
+def test_beyond_a_quadratic_factoring_decides():
+    # x**3 - 2 is Eisenstein at 2; x**4 + 4 = (x**2 + 2x + 2)(x**2 - 2x + 2) though it has no
+    # rational root; (x**2 + 1)**2 is a square; a line is irreducible
+    assert univariate_irreducible([-2, 0, 0, 1]) and not univariate_irreducible([4, 0, 0, 0, 1])
+    assert not univariate_irreducible([1, 0, 2, 0, 1]) and univariate_irreducible([5, 3])
+
+
+def test_a_product_of_two_known_factors_is_not_proved_irreducible():
+    x, y, z = CTX.gens()[:3]
+    # each factor has a number as leading coefficient in x: every specialization factors too
+    assert irreducibility_proof((x**2 + y * z + 1) * (x + y - z)) is None
+    assert irreducibility_proof((x - y) * (x + y)) is None  # x**2 - y**2: a quadratic, its discriminant 4y**2
+    assert irreducibility_proof((x**2 + y**2 + z**2 + 1)**2) is None
+
+
+def test_the_seed_connector_is_proved_at_its_second_variable():
+    # the resultant of the seed's two circles factors in c at B_y = 3, s = 5 (there
+    # 25/4 - (B_y - s)**2 is a square): the proof moves to s at the same values. sympy, a second
+    # implementation, finds it irreducible
+    b, c, s = sympy.symbols("B_y c s")
+    bx = sympy.Symbol("B_x")
+    connector = sympy.resultant((bx - c)**2 + (b - s)**2 - sympy.Rational(25, 4),
+                                bx**2 - 4 * bx + b**2 - sympy.Rational(9, 4), bx)
+    _, factors = sympy.factor_list(connector)
+    assert len(factors) == 1 and factors[0][1] == 1
+    ctx = flint.fmpq_mpoly_ctx.get(("B_y", "c", "s"), "lex")
+    proof = irreducibility_proof(to_flint(connector, ctx))
+    assert (proof.variable, proof.values, proof.degree) == ("s", (("B_y", 3), ("c", 5)), 4)
