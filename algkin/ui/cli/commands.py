@@ -214,10 +214,9 @@ def _against(text: str) -> tuple[str, float, float]:
 
 
 def _cmd_list(args: argparse.Namespace) -> Outcome:
-    from ...scene import catalog_names, load_scene
+    from ...catalog import catalog_entries  # the files read, not loaded: no algebra imported
 
-    scenes = [load_scene(n) for n in catalog_names()]
-    document = {"scenes": [{"name": s.name, "description": s.description} for s in scenes]}
+    document = {"scenes": [{"name": name, "description": description} for name, description in catalog_entries()]}
     return render(args, document, lambda d: "\n".join(f"{s['name']:24} {s['description']}" for s in d["scenes"])), 0
 
 

@@ -101,6 +101,17 @@ def good_json(runs, key):
     return json.loads(result.stdout)  # the whole of stdout is one JSON document
 
 
+def test_list_imports_no_algebra(tmp_path):
+    # Issue 35: `algkin list` took 4.4 s on a loaded machine, loading every scene through sympy to
+    # print names and descriptions; it reads the catalog's files and imports no algebra.
+    code = ("import sys; from algkin.ui.cli import main; code = main(['list']);"
+            "print(sorted(m for m in ('sympy', 'flint', 'numpy', 'mpmath') if m in sys.modules), code)")
+    done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True, timeout=120,
+                          env=dict(os.environ, PYTHONPATH=str(ROOT)))
+    assert "chebyshev-lambda" in done.stdout, done.stderr
+    assert done.stdout.splitlines()[-1] == "[] 0", done.stdout[-300:]
+
+
 def test_list_json_has_both_catalog_scenes(runs):
     document = good_json(runs, "list")
     names = {scene["name"] for scene in document["scenes"]}
