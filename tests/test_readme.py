@@ -52,3 +52,27 @@ def test_make_lab_opens_jupyterlab_with_a_kernel_and_make_test_stays_without_it(
     assert "jupyter lab" in recipes["lab"]
     assert "'.[lab]'" in recipes["$(LAB_STAMP)"] and "lab" not in recipes["$(STAMP)"]
     assert "make lab" in README.read_text(encoding="utf-8")
+
+
+def test_every_readme_command_writes_into_the_scratch_directory_it_makes_and_git_ignores():
+    # Issue 35: the README's commands wrote curve.json, ab.png, ... into the repository's root,
+    # untracked files in `git status`. Each output flag (as the command line's own grammar reads it)
+    # names a path in scratch/, which the README makes first and .gitignore leaves out.
+    from algkin.ui.cli.parser import build_parser
+    from algkin.ui.cli.paths import OUTPUTS
+
+    from .test_readme_walk import COMMANDS, DIRECTORIES
+
+    assert DIRECTORIES == ["scratch"]
+    text = README.read_text(encoding="utf-8")
+    assert text.index("\nmkdir -p scratch\n") < text.index("\n.venv/bin/algkin ")  # made before any command
+    assert "/scratch/" in (README.parent / ".gitignore").read_text(encoding="utf-8").split()
+    written = []
+    for args, _ in COMMANDS:
+        parsed = build_parser().parse_args(args)
+        for name, _flag, _kind in OUTPUTS.get(parsed.command, ()):
+            path = getattr(parsed, name, None)
+            if path is not None:
+                written.append(path)
+                assert path.startswith("scratch/"), (args, path)
+    assert len(written) >= 10, written

@@ -1,7 +1,8 @@
 """The README walk: every ``.venv/bin/algkin ...`` command in README.md's code blocks runs as
-written, from a fresh empty directory (the files it writes land there), and ends as the README
-says: exit 0, or, where the next line is a ``# algkin: failed: ...`` comment, exit 1 with that
-line's opening on stderr."""
+written, from a fresh directory holding only what the README's ``mkdir -p`` lines make (the
+files it writes land in those, never beside them), and ends as the README says: exit 0, or,
+where the next line is a ``# algkin: failed: ...`` comment, exit 1 with that line's opening on
+stderr."""
 
 import os
 import re
@@ -47,7 +48,13 @@ def _quick(args):
     return [*args[:budget + 1], "2", *args[budget + 2:], "--rounds", "1"]
 
 
+def readme_directories():
+    """The directories the README's code blocks make (``mkdir -p scratch``) for its commands' files."""
+    return re.findall(r"^mkdir -p (\S+)$", README.read_text(encoding="utf-8"), re.M)
+
+
 COMMANDS = readme_commands()
+DIRECTORIES = readme_directories()
 
 
 def test_the_readme_shows_commands():
@@ -61,10 +68,12 @@ def walked(tmp_path_factory):
 
     def run(args):
         workdir = tmp_path_factory.mktemp("readme")
+        for directory in DIRECTORIES:
+            (workdir / directory).mkdir(parents=True)
         start = time.perf_counter()
         result = subprocess.run([sys.executable, "-m", "algkin", *args], cwd=workdir, capture_output=True,
                                 text=True, env=dict(os.environ, PYTHONPATH=str(ROOT)), timeout=300)
-        return result, time.perf_counter() - start
+        return result, time.perf_counter() - start, sorted(os.listdir(workdir))
 
     with ThreadPoolExecutor(max_workers=2) as pool:
         yield dict(zip(range(len(COMMANDS)), pool.map(run, [args for args, _ in COMMANDS])))
@@ -73,7 +82,8 @@ def walked(tmp_path_factory):
 @pytest.mark.parametrize("index", range(len(COMMANDS)), ids=[" ".join(a)[:60] for a, _ in COMMANDS])
 def test_readme_command_runs_as_shown(index, walked):
     args, expected = COMMANDS[index]
-    result, _seconds = walked[index]
+    result, _seconds, left = walked[index]
+    assert left == sorted(DIRECTORIES), (args, left)  # written into the README's scratch directory only
     if expected is None:
         assert result.returncode == 0, (args, result.stderr[-2000:])
     else:
