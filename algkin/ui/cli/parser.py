@@ -16,7 +16,12 @@ if TYPE_CHECKING:
 
     Subcommands = argparse._SubParsersAction["_Parser"]  # generic in typeshed only
 
-__all__ = ["build_parser", "usage", "Shown"]
+__all__ = ["build_parser", "usage", "Shown", "BENCH_BUDGET", "BENCH_FULL_BUDGET"]
+
+# ``algkin bench``'s seconds per row: by default a run of a few minutes (rows past 5 s are reported
+# over budget); ``--full`` lets the largest problems finish (a run of about half an hour).
+BENCH_BUDGET = 5.0
+BENCH_FULL_BUDGET = 60.0
 
 
 class Shown(Exception):  # noqa: N818 - not an error: the answer to --help or --version
@@ -325,7 +330,12 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--problems", nargs="+", help="problem names (default: the whole suite)")
     bench.add_argument("--methods", nargs="+", help="elimination methods (default: all)")
     bench.add_argument("--backends", nargs="+", help="polynomial backends (default: all)")
-    bench.add_argument("--budget", type=_seconds, default=60.0, help="seconds per row before it is stopped")
+    budgets = bench.add_mutually_exclusive_group()
+    budgets.add_argument("--budget", type=_seconds, default=BENCH_BUDGET,
+                         help="seconds per row before it is stopped (a run of a few minutes in all)")
+    budgets.add_argument("--full", dest="budget", action="store_const", const=BENCH_FULL_BUDGET,
+                         help=f"the long budgets, {BENCH_FULL_BUDGET:g} s per row (the largest problems finish; "
+                              "half an hour in all)")
     bench.add_argument("--no-peers", action="store_true", help="skip Singular, PARI/GP, Macaulay2, msolve")
     bench.add_argument("--rounds", type=int, default=3,
                        help="rows under 2 s are measured this many times in turn, each keeping its best")
