@@ -89,3 +89,21 @@ def test_readme_command_runs_as_shown(index, walked):
     else:
         assert result.returncode == 1, (args, result.returncode, result.stderr[-2000:])
         assert result.stderr.startswith(expected), (expected, result.stderr)
+
+
+def test_the_readmes_picture_is_what_its_command_draws_now(tmp_path):
+    # Issue 35: the committed picture had drifted from its command's drawing; `make images` (run
+    # by `make docs`) draws it again: committed after a change to the drawings, it matches.
+    from matplotlib.image import imread
+    import numpy as np
+
+    command, path = re.search(r"`\.venv/bin/algkin ([^`]*--out (docs/images/\S+\.png)[^`]*)`",
+                              README.read_text(encoding="utf-8")).groups()
+    args = [str(tmp_path / "drawn.png") if arg == path else arg for arg in shlex.split(command)]
+    done = subprocess.run([sys.executable, "-m", "algkin", *args], cwd=tmp_path, capture_output=True, text=True,
+                          env=dict(os.environ, PYTHONPATH=str(ROOT)), timeout=300)
+    assert done.returncode == 0, done.stderr
+    drawn, committed = imread(tmp_path / "drawn.png"), imread(ROOT / path)
+    assert drawn.shape == committed.shape, "run `make images` and commit the picture"
+    # the same drawing, whatever small antialiasing differences another matplotlib makes
+    assert np.mean(np.abs(drawn - committed).max(axis=2) > 0.25) < 0.002, "run `make images` and commit the picture"
