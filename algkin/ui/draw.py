@@ -68,8 +68,7 @@ class PoseArtists:
         self.bar_ends, self.string_ends, self.guide_lines = motion.bars, motion.strings, motion.guides
         self.motion, self.axes = motion, axes
         # A fixed point that only places a slider's line is no pivot: the rail is drawn instead.
-        ends = {p for pair in self.bar_ends + self.string_ends for p in pair}
-        self.rail_only = {through for _, through, _ in self.guide_lines} - ends
+        self.rail_only = set(motion.anchors)
         self.fixed = [p for p in motion.ground if p not in self.rail_only]
         style = dict(_BAR, color=color) if color else _BAR
         self.bars = [axes.plot([], [], **style)[0] for _ in self.bar_ends]

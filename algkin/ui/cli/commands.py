@@ -234,6 +234,7 @@ def _cmd_show(args: argparse.Namespace) -> Outcome:
     document = {
         "scene": scene.name,
         "description": scene.description,
+        "length_unit": scene.unit,  # the scene's ``unit`` of length, "" when it says none
         "points": {n: type(c).__name__.lower() for n, c in scene.points.items()},
         "outputs": {n: list(v) for n, v in compiled.outputs.items()},
         "inputs": inputs_json(compiled.system.inputs),
@@ -261,6 +262,7 @@ def _shown_groups(scene: Scene, args: argparse.Namespace) -> dict[str, object]:
     return {
         "scene": scene.name,
         "description": scene.description,
+        "length_unit": scene.unit,
         "points": {n: type(c).__name__.lower() for n, c in scene.points.items()},
         "outputs": {n: [o.text] for n, o in scene.outputs.items()},
         "inputs": inputs_json(compiled.inputs),

@@ -194,3 +194,14 @@ def test_an_error_quoting_a_newline_in_a_scene_key_stays_one_line(tmp_path):
     result = run_cli(["show", str(scene)], tmp_path)
     assert result.returncode == 2 and result.stdout == ""
     assert result.stderr.count("\n") == 1 and "B\\nalgkin: done" in result.stderr
+
+
+@pytest.mark.parametrize("scene, unit", [("arm-string", "mm"), ("fourbar", ""), ("3rpr", "")])
+def test_show_gives_the_scenes_unit_of_length(capsys, scene, unit):
+    # Issue 35: a scene's `unit = "mm"` reached the plots' axes but neither the JSON nor the page
+    from algkin.ui.cli import main
+
+    assert main(["show", scene, "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["length_unit"] == unit
+    assert main(["show", scene]) == 0
+    assert ("lengths in mm" in capsys.readouterr().out) == bool(unit)
