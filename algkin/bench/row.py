@@ -49,12 +49,13 @@ class BenchRow:
 
     @property
     def passes(self) -> bool:
-        """Whether ``algkin bench`` may exit 0 for this row: it agrees with its reference, is
-        it, or did not finish (a row that finished and was compared with nothing fails); a peer
-        that is not exact (``EXACT_PEERS``) always passes, whatever its verdict says."""
+        """Whether ``algkin bench`` may exit 0 for this row: unless it disagrees with its reference.
+        It agrees, is the reference, did not finish, or finished with no reference to compare it
+        with (``not compared``, said in its row: no verdict either way); a peer that is not exact
+        (``EXACT_PEERS``) always passes, whatever its verdict says."""
         if self.backend == "peer" and self.method not in EXACT_PEERS:
             return True
-        return self.agrees is None or self.agrees in PASSING
+        return self.agrees is None or self.agrees in PASSING or self.agrees is Agreement.NOT_COMPARED
 
     def to_json(self) -> dict[str, object]:
         """The row under the keys of the bench's JSON and CSV, its verdict as a string."""

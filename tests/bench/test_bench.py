@@ -180,3 +180,31 @@ def test_full_and_a_budget_together_are_refused(capsys):
     assert main(["bench", "--full", "--budget", "30"]) == 2
     err = capsys.readouterr().err
     assert "--full" in err and "--budget" in err and err.count("\n") == 1, err
+
+
+def test_a_specialisation_past_the_budget_overrules_no_agreement_with_the_reference(monkeypatch):
+    # Issue 35: on stephenson-iii the rows agreed with Singular's elimination ideal, but the fresh
+    # eliminations at random specialisations ran past the budget, and "not compared" overruled the
+    # agreement: every row failed the run. A check that did not finish now says so in the note.
+    from algkin.bench import BenchRow, _verdicts, specialise
+    from algkin.bench.agree import Verdict, portable
+    from algkin.bench.problems import build
+
+    task = build("two-circles").task
+    done = task.run("linear", "flint")
+    form = portable(done.engine, done.raw)
+    monkeypatch.setattr(specialise, "specialisations", lambda *args, **kwargs: [None])
+    monkeypatch.setattr(specialise, "fresh", lambda task, values, budget: values)
+    monkeypatch.setattr(specialise, "check", lambda poly, found: Verdict(Agreement.NOT_COMPARED, "over budget (5 s)"))
+    rows = [BenchRow("two-circles", "Singular eliminate", "peer", 1e-4, form=form),
+            BenchRow("two-circles", "linear", "flint", 1e-4, form=form)]
+    _verdicts(task, rows, [], 5)
+    assert [r.agrees for r in rows] == [Agreement.REFERENCE, Agreement.EQUAL]
+    assert all("over budget (5 s)" in r.note for r in rows) and all(r.passes for r in rows)
+
+
+def test_a_row_no_reference_could_check_reads_not_compared_and_fails_nothing():
+    from algkin.bench import BenchRow
+
+    row = BenchRow("stephenson-iii", "linear", "flint", 0.05, agrees=Agreement.NOT_COMPARED)
+    assert row.passes and row.to_json()["agrees"] == "not compared"

@@ -65,8 +65,8 @@ def _cmd_bench(args: argparse.Namespace) -> Outcome:
     else:
         text = "\n".join([table(report.rows), "machine: " + ", ".join(f"{k} {v}" for k, v in report.machine.items()),
                           *(f"wrote {path}" for path in written)]) + "\n"
-    # a finished row passes only when it agrees with its reference or is it (rows that did
-    # not finish have no verdict); "not compared" fails: nothing checked that eliminant
+    # exit 1 only where one of algkin's rows or a peer's exact elimination disagrees with its
+    # reference (``BenchRow.passes``); a resultant chain's extra factor is its row's verdict
     agree = all(row.passes for row in report.rows)
     return text, 0 if agree else 1
 
