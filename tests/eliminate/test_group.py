@@ -314,3 +314,21 @@ def test_the_eliminant_with_symbolic_legs_is_msolves_elimination_ideal(gosselin,
     ratio = sympy.cancel(sympy.parse_expr(generator.replace("^", "**"), local_dict=symbols)
                          / sympy.parse_expr(str(gosselin.eliminant), local_dict=symbols))
     assert ratio.is_number and ratio != 0
+
+
+def test_a_multiplier_common_to_the_eliminated_equations_is_no_relation():
+    """Four bilinear equations (a dyad reaching five poses): eliminating two unknowns by Cramer's
+    rule leaves the same linear multiplier in both remaining equations, and their remainder
+    sequence ended at it (the centre on a line): the eliminant's only factor then failed the
+    check, 'no solution'. The eliminant is sympy's lex Groebner basis's, up to a constant."""
+    ctx = flint.fmpq_mpoly_ctx.get(("X", "Y", "x", "y"), "lex")
+    X, Y, x, y = ctx.gens()
+    equations = [8*X*x + 24*X*y - 40*X - 24*Y*x + 8*Y*y - 20*Y + 44*x - 8*y + 25,
+                 64*X*x + 96*X*y - 208*X - 96*Y*x + 64*Y*y - 156*Y + 224*x - 132*y + 325,
+                 X*x + X*y - 3*X - Y*x + Y*y - Y + x - 3*y + 5,
+                 144*X*x + 96*X*y - 364*X - 96*Y*x + 144*Y*y + 104*Y - 236*x - 296*y + 689]
+    solution = solve_group(equations, ["X", "Y", "x", "y"])
+    symbols = sympy.symbols("x y Y X")
+    basis = sympy.groebner([sympy.sympify(str(e).replace("^", "**")) for e in equations], *symbols, order="lex")
+    ratio = sympy.cancel(sympy.sympify(str(solution.eliminant)) / basis.exprs[-1])
+    assert solution.complex_count == 4 and ratio.is_number

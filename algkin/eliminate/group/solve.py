@@ -240,11 +240,23 @@ def _lift(group: _Group, unknown: str, *, variable: str, home: flint.fmpq_mpoly_
         b, a = coefficients(holders[0], unknown)
         return _Relation(unknown, a.project_to_context(home), b.project_to_context(home), holders[-1])
     for first, second in itertools.combinations(holders, 2):  # the lowest degrees first
+        first, second = _apart(first, second, index)
         relation = linear_relation(first, second, unknown)
         if relation is not None:
             return _Relation(unknown, relation[0].project_to_context(home), relation[1].project_to_context(home),
                              holders[0])
     raise _NotSeparating(f"no relation linear in {unknown} over {variable}")
+
+
+def _apart(first: flint.fmpq_mpoly, second: flint.fmpq_mpoly, index: int) -> tuple[flint.fmpq_mpoly, flint.fmpq_mpoly]:
+    """``first`` and ``second`` without their common factor in the unknown at ``index``: a
+    multiplier elimination left in both (a Cramer step's), whose zeros are a curve, not the
+    group's finitely many solutions; their remainder sequence would end at it, a relation
+    false at every solution (five poses' Burmester equations: the centre on a line)."""
+    common = first.gcd(second)
+    if common.degrees()[index] == 0:
+        return first, second
+    return first / common, second / common
 
 
 def _through(group: _Group, unknown: str, *, base: _Relation, variable: str, home: flint.fmpq_mpoly_ctx,
