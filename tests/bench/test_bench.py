@@ -122,7 +122,7 @@ def _reported(monkeypatch, *rows):
     given = {}
 
     def fake(problems, methods, backends, budget, peers, rounds):
-        given["budget"] = budget
+        given["budget"], given["rounds"] = budget, rounds
         return BenchReport(list(rows), {"cores": 2})
 
     monkeypatch.setattr("algkin.bench.bench", fake)
@@ -167,13 +167,14 @@ def test_every_exact_peer_the_bench_compares_with_is_held_to_agree():
     assert exact == EXACT_PEERS and exact <= {*PEERS, *kinematics.REAL_REFERENCES}
 
 
-@pytest.mark.parametrize("argv,budget", [([], 5.0), (["--full"], 60.0), (["--budget", "30"], 30.0)])
-def test_the_default_run_is_short_and_the_long_budgets_are_behind_full(monkeypatch, capsys, argv, budget):
-    # Issue 35: with its defaults (60 s a row) `algkin bench` took over 25 minutes: 5 s a row by
-    # default (rows past it are reported over budget), --full for the long budgets.
+@pytest.mark.parametrize("argv,budget,rounds", [([], 5.0, 1), (["--full"], 60.0, 3), (["--budget", "30"], 30.0, 1),
+                                                 (["--full", "--rounds", "2"], 60.0, 2)])
+def test_the_default_run_is_short_and_the_long_budgets_are_behind_full(monkeypatch, capsys, argv, budget, rounds):
+    # Issue 35: with its defaults (60 s a row, 3 rounds) `algkin bench` took over 25 minutes: 5 s a
+    # row and one round by default (rows past it are reported over budget), --full for the long run.
     given = _reported(monkeypatch, *AGREEING_ALGKIN_ROWS)
     assert main(["bench", *argv]) == 0
-    assert given["budget"] == budget
+    assert (given["budget"], given["rounds"]) == (budget, rounds)
 
 
 def test_full_and_a_budget_together_are_refused(capsys):

@@ -49,6 +49,7 @@ def _cmd_bench(args: argparse.Namespace) -> Outcome:
     from ...bench import bench, problem_names
     from ...bench.report import table, write
     from ...eliminate import backend_names, method_names
+    from .parser import BENCH_FULL, BENCH_QUICK
 
     for option, given, valid in (("--problems", args.problems, problem_names()),
                                  ("--methods", args.methods, method_names()),
@@ -56,9 +57,12 @@ def _cmd_bench(args: argparse.Namespace) -> Outcome:
         for name in given or ():
             if name not in valid:
                 raise UsageError(option, name, "unknown" + suggest.known(name, valid, plural="valid"))
-    if args.rounds < 1:
-        raise UsageError("--rounds", args.rounds, "must be at least 1")
-    report = bench(args.problems, args.methods, args.backends, args.budget, not args.no_peers, args.rounds)
+    budget, rounds = BENCH_FULL if args.full else BENCH_QUICK
+    budget = budget if args.budget is None else args.budget
+    rounds = rounds if args.rounds is None else args.rounds
+    if rounds < 1:
+        raise UsageError("--rounds", rounds, "must be at least 1")
+    report = bench(args.problems, args.methods, args.backends, budget, not args.no_peers, rounds)
     written = write(report, args.out, plot=_bench_plot()) if args.out else []
     if args.json:
         text = json.dumps(report.to_json(), indent=2) + "\n"
