@@ -1,5 +1,6 @@
 """The README's examples run as written."""
 
+import posixpath
 import re
 from pathlib import Path
 
@@ -52,3 +53,52 @@ def test_make_lab_opens_jupyterlab_with_a_kernel_and_make_test_stays_without_it(
     assert "jupyter lab" in recipes["lab"]
     assert "'.[lab]'" in recipes["$(LAB_STAMP)"] and "lab" not in recipes["$(STAMP)"]
     assert "make lab" in README.read_text(encoding="utf-8")
+
+
+def test_every_readme_command_writes_into_the_scratch_directory_it_makes_and_git_ignores():
+    # Issue 35: the README's commands wrote curve.json, ab.png, ... into the repository's root,
+    # untracked files in `git status`. Each output flag (as the command line's own grammar reads it)
+    # names a path in scratch/, which the README makes first and .gitignore leaves out.
+    from algkin.ui.cli.parser import build_parser
+    from algkin.ui.cli.paths import OUTPUTS
+
+    from .test_readme_walk import COMMANDS, DIRECTORIES
+
+    assert DIRECTORIES == ["scratch"]
+    text = README.read_text(encoding="utf-8")
+    assert text.index("\nmkdir -p scratch\n") < text.index("\n.venv/bin/algkin ")  # made before any command
+    assert "/scratch/" in (README.parent / ".gitignore").read_text(encoding="utf-8").split()
+    written = []
+    for args, _ in COMMANDS:
+        parsed = build_parser().parse_args(args)
+        for name, _flag, _kind in OUTPUTS.get(parsed.command, ()):
+            path = getattr(parsed, name, None)
+            if path is not None:
+                written.append(path)
+                assert path.startswith("scratch/"), (args, path)
+    assert len(written) >= 10, written
+
+
+def _recipes():
+    makefile = (README.parent / "Makefile").read_text(encoding="utf-8")
+    return makefile, dict(re.findall(r"^(\S+):[^=\n]*\n((?:\t.*\n)+)", makefile, re.M))
+
+
+def test_the_pictures_shown_are_drawn_by_the_docs_build_with_the_readmes_commands():
+    # Issue 35: the README's picture was not what its own command drew any more. `make docs` draws
+    # it again first (`make images`), with the command the README shows under it, character for character.
+    text = README.read_text(encoding="utf-8")
+    shown = re.findall(r"`(\.venv/bin/algkin [^`]*--out (docs/images/\S+\.png)[^`]*)`", text)
+    assert shown, "the README shows no command drawing its picture"
+    makefile, recipes = _recipes()
+    built = [line.strip().replace("$(BIN)/", ".venv/bin/") for line in recipes["images"].splitlines()]
+    assert sorted(command for command, _ in shown) == sorted(built)
+    (prerequisites,) = re.findall(r"^docs:(.*)$", makefile, re.M)
+    assert "images" in prerequisites.split()
+    # every picture the README or the site shows is one of those, or the bench's measured plot
+    pictures = {path for _, path in shown}
+    for page in [README, *(README.parent / "docs").rglob("*.md")]:
+        base = "" if page == README else page.parent.relative_to(README.parent).as_posix() + "/"
+        for link in re.findall(r"!\[[^]]*\]\(([^)]+\.png)\)", page.read_text(encoding="utf-8")):
+            path = posixpath.normpath(base + link)
+            assert path in pictures | {"docs/images/bench.png"}, (page, link)

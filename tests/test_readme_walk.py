@@ -1,7 +1,8 @@
 """The README walk: every ``.venv/bin/algkin ...`` command in README.md's code blocks runs as
-written, from a fresh empty directory (the files it writes land there), and ends as the README
-says: exit 0, or, where the next line is a ``# algkin: failed: ...`` comment, exit 1 with that
-line's opening on stderr."""
+written, from a fresh directory holding only what the README's ``mkdir -p`` lines make (the
+files it writes land in those, never beside them), and ends as the README says: exit 0, or,
+where the next line is a ``# algkin: failed: ...`` comment, exit 1 with that line's opening on
+stderr."""
 
 import os
 import re
@@ -47,7 +48,13 @@ def _quick(args):
     return [*args[:budget + 1], "2", *args[budget + 2:], "--rounds", "1"]
 
 
+def readme_directories():
+    """The directories the README's code blocks make (``mkdir -p scratch``) for its commands' files."""
+    return re.findall(r"^mkdir -p (\S+)$", README.read_text(encoding="utf-8"), re.M)
+
+
 COMMANDS = readme_commands()
+DIRECTORIES = readme_directories()
 
 
 def test_the_readme_shows_commands():
@@ -61,10 +68,12 @@ def walked(tmp_path_factory):
 
     def run(args):
         workdir = tmp_path_factory.mktemp("readme")
+        for directory in DIRECTORIES:
+            (workdir / directory).mkdir(parents=True)
         start = time.perf_counter()
         result = subprocess.run([sys.executable, "-m", "algkin", *args], cwd=workdir, capture_output=True,
                                 text=True, env=dict(os.environ, PYTHONPATH=str(ROOT)), timeout=300)
-        return result, time.perf_counter() - start
+        return result, time.perf_counter() - start, sorted(os.listdir(workdir))
 
     with ThreadPoolExecutor(max_workers=2) as pool:
         yield dict(zip(range(len(COMMANDS)), pool.map(run, [args for args, _ in COMMANDS])))
@@ -73,9 +82,28 @@ def walked(tmp_path_factory):
 @pytest.mark.parametrize("index", range(len(COMMANDS)), ids=[" ".join(a)[:60] for a, _ in COMMANDS])
 def test_readme_command_runs_as_shown(index, walked):
     args, expected = COMMANDS[index]
-    result, _seconds = walked[index]
+    result, _seconds, left = walked[index]
+    assert left == sorted(DIRECTORIES), (args, left)  # written into the README's scratch directory only
     if expected is None:
         assert result.returncode == 0, (args, result.stderr[-2000:])
     else:
         assert result.returncode == 1, (args, result.returncode, result.stderr[-2000:])
         assert result.stderr.startswith(expected), (expected, result.stderr)
+
+
+def test_the_readmes_picture_is_what_its_command_draws_now(tmp_path):
+    # Issue 35: the committed picture had drifted from its command's drawing; `make images` (run
+    # by `make docs`) draws it again: committed after a change to the drawings, it matches.
+    from matplotlib.image import imread
+    import numpy as np
+
+    command, path = re.search(r"`\.venv/bin/algkin ([^`]*--out (docs/images/\S+\.png)[^`]*)`",
+                              README.read_text(encoding="utf-8")).groups()
+    args = [str(tmp_path / "drawn.png") if arg == path else arg for arg in shlex.split(command)]
+    done = subprocess.run([sys.executable, "-m", "algkin", *args], cwd=tmp_path, capture_output=True, text=True,
+                          env=dict(os.environ, PYTHONPATH=str(ROOT)), timeout=300)
+    assert done.returncode == 0, done.stderr
+    drawn, committed = imread(tmp_path / "drawn.png"), imread(ROOT / path)
+    assert drawn.shape == committed.shape, "run `make images` and commit the picture"
+    # the same drawing, whatever small antialiasing differences another matplotlib makes
+    assert np.mean(np.abs(drawn - committed).max(axis=2) > 0.25) < 0.002, "run `make images` and commit the picture"

@@ -163,6 +163,18 @@ class Motion:
                 for n, c in self.scene.points.items() if isinstance(c, Slider) and c.direction is not None]
 
     @property
+    def anchors(self) -> list[str]:
+        """Fixed points that only place a slider's line (no bar or string ends there): drawn as
+        the slider's rail, not as a ground pivot.
+
+        >>> Motion("slider-crank").anchors, Motion("slider-crank").ground
+        (['L'], ['O', 'L'])
+        """
+        ends = {p for pair in self.bars + self.strings for p in pair}
+        through = {t for _, t, _ in self.guides}
+        return [n for n in self.ground if n in through and n not in ends]
+
+    @property
     def _default_subs(self) -> dict[sympy.Symbol, sympy.Expr]:
         return {symbol(n): v for n, v in self.compiled.parameter_values.items()}
 

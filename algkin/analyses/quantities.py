@@ -21,13 +21,14 @@ from collections.abc import Callable, Sequence
 from functools import cached_property
 from typing import TYPE_CHECKING, Any
 
+import attrs
 import mpmath
 import numpy as np
 import sympy
 
 from ..errors import UsageError
 from ..evaluate import MPMATH, evaluate
-from ..runtime import validation
+from ..runtime import suggest, validation
 from ..scene import Scene
 from ..scene.implicit.base import FloatArray
 from ..scene.load import SceneLike, Values, as_scene
@@ -64,31 +65,52 @@ class Mechanism:
         """Every dimension with its default (symbolic ones too)."""
         return dict(self.scene.parameters)
 
-    def dist(self, p: str, q: str) -> Quantity:
-        """The distance from ``p`` to ``q`` as a ``Quantity``."""
-        return Quantity(self, f"dist({p}, {q})")
+    # Each quantity is on the scene's chosen assembly mode, or on ``mode``: a label as ``derive``,
+    # ``solve`` and ``follow --mode`` give it (``left``/``right`` of a dyad's directed base line,
+    # ``ahead``/``behind`` along a slider's line; ``B:left F:right`` where several points have
+    # modes), among the quantity's ``modes``.
 
-    def x(self, point: str) -> Quantity:
-        """The x coordinate of ``point`` on the scene's chosen branch, as a ``Quantity``.
+    def dist(self, p: str, q: str, *, mode: str | None = None) -> Quantity:
+        """The distance from ``p`` to ``q`` as a ``Quantity`` (on ``mode``, by default the scene's)."""
+        return Quantity(self, f"dist({p}, {q})", mode=mode)
 
-        >>> B = load_quantities("chebyshev-lambda").x("B")
-        >>> round(B.at(angle=0), 12)   # the crank along the ground: B above (2 - 1/2, 0)
+    def x(self, point: str, *, mode: str | None = None) -> Quantity:
+        """The x coordinate of ``point`` as a ``Quantity``, on the assembly mode ``mode`` (a label
+        among the quantity's ``modes``), by default the scene's chosen one.
+
+        >>> lam = load_quantities("chebyshev-lambda")
+        >>> round(lam.x("B").at(angle=0), 12)   # the crank along the ground: B above (2 - 1/2, 0)
         1.5
+        >>> lam.x("B").modes
+        ['left', 'right']
         """
-        return Quantity(self, f"{point}.x")
+        return Quantity(self, f"{point}.x", mode=mode)
 
-    def y(self, point: str) -> Quantity:
-        """The y coordinate of ``point`` on the scene's chosen branch, as a ``Quantity``."""
-        return Quantity(self, f"{point}.y")
+    def y(self, point: str, *, mode: str | None = None) -> Quantity:
+        """The y coordinate of ``point`` as a ``Quantity``, on the assembly mode ``mode`` (a label
+        among the quantity's ``modes``), by default the scene's chosen one.
 
-    def angle(self, p: str, q: str, r: str | None = None) -> Quantity:
+        With the crank along the ground, B is on the perpendicular bisector of AD, ``sqrt(5/2**2 -
+        (1/2)**2) = sqrt(6)`` above it on the left of A -> D, below it on the right:
+
+        >>> lam = load_quantities("chebyshev-lambda")
+        >>> round(lam.y("B").at(angle=0), 12), round(lam.y("B", mode="right").at(angle=0), 12)
+        (2.449489742783, -2.449489742783)
+        >>> lam.y("B", mode="rigth").expr
+        Traceback (most recent call last):
+        ...
+        algkin.errors.UsageError: mode='rigth': not a mode of B.y in chebyshev-lambda (modes: left, right); did you mean 'right'?
+        """
+        return Quantity(self, f"{point}.y", mode=mode)
+
+    def angle(self, p: str, q: str, r: str | None = None, *, mode: str | None = None) -> Quantity:
         """The direction of ``p`` -> ``q``, or with ``r`` the angle at ``q`` between ``qp`` and ``qr``
-        (in [0, 180]), as a ``Quantity`` in degrees."""
-        return Quantity(self, f"angle({p}, {q})" if r is None else f"angle({p}, {q}, {r})")
+        (in [0, 180]), as a ``Quantity`` in degrees (on ``mode``, by default the scene's)."""
+        return Quantity(self, f"angle({p}, {q})" if r is None else f"angle({p}, {q}, {r})", mode=mode)
 
-    def output(self, name: str) -> Quantity:
-        """A named output of the scene file (or any output text, e.g. ``"dist(A, B)"``)."""
-        return Quantity(self, name)
+    def output(self, name: str, *, mode: str | None = None) -> Quantity:
+        """A named output of the scene file (or any output text, e.g. ``"dist(A, B)"``), on ``mode``."""
+        return Quantity(self, name, mode=mode)
 
     def __repr__(self) -> str:
         return f"Mechanism({self.scene.name!r}, params={list(self.params)})"
@@ -97,9 +119,10 @@ class Mechanism:
 class Quantity:
     """A scalar on the motion: closed form in the input angle, its relation, its extremum."""
 
-    def __init__(self, mechanism: Mechanism, text: str) -> None:
+    def __init__(self, mechanism: Mechanism, text: str, *, mode: str | None = None) -> None:
         self.mechanism = mechanism
         self.text = text
+        self.mode = mode  # the assembly mode's label; None: the scene's chosen one
 
     @cached_property
     def prepared(self) -> Prepared:
@@ -110,9 +133,24 @@ class Quantity:
 
     @cached_property
     def derivation(self) -> Derivation:
+        """The quantity's derivation, its ``mode`` the branch it calls selected."""
         from ..derivation.pipeline import derive
 
-        return derive(self.prepared, samples=0)
+        derived = derive(self.prepared, samples=0)
+        if self.mode is None:
+            return derived
+        labels = [b.label for b in derived.branches]
+        if self.mode not in labels:
+            raise UsageError("mode", self.mode, f"not a mode of {self.text} in {self.mechanism.scene.name}"
+                             + suggest.known(self.mode, labels, plural="modes"))
+        # what reads the derivation (the closed form, the extremum) takes the selected branch
+        return attrs.evolve(derived, branches=[attrs.evolve(b, selected=b.label == self.mode)
+                                               for b in derived.branches])
+
+    @property
+    def modes(self) -> list[str]:
+        """The labels of the quantity's assembly modes, as ``mode=`` takes them."""
+        return [b.label for b in self.derivation.branches]
 
     @cached_property
     def _problem(self) -> Problem:
@@ -140,9 +178,10 @@ class Quantity:
 
     @property
     def expr(self) -> sympy.Expr:
-        """The closed form on the scene's chosen branch, in the input angle (``cos(theta)``,
-        ``sin(theta)``) and symbolic dimensions; an angle in degrees (``acos``/``atan`` of the
-        closed form of the scalar standing for it, see ``algkin.analyses.extremum.angles``).
+        """The closed form on the quantity's ``mode`` (by default the scene's chosen one), in the
+        input angle (``cos(theta)``, ``sin(theta)``) and symbolic dimensions; an angle in degrees
+        (``acos``/``atan`` of the closed form of the scalar standing for it, see
+        ``algkin.analyses.extremum.angles``).
 
         The input angle here is in **radians**, as sympy's ``cos`` takes it, while ``at`` takes
         degrees, as the scene's range and every command do:
@@ -229,7 +268,7 @@ class Quantity:
             from ..scene import compile_scene
 
             compiled = compile_scene(with_values(self.mechanism.scene, settings or None), [self.text])
-            chosen = next(b for b in closed_forms(compiled) if b.selected)
+            chosen = next(b for b in closed_forms(compiled) if b.label == self.mode or self.mode is None and b.selected)
             stable = StableBranch(compiled, chosen)
             # floats say nothing where the branch's label is not certified (a toggle's neighbourhood)
             kernels[key] = (stable.kernel(output_forms(stable, [self.text])[1]), certify_labels(compiled, [chosen])[0])
@@ -251,4 +290,5 @@ class Quantity:
         return extremum_of(self.derivation, self.text, range, largest, witnesses=self.prepared.witnesses)
 
     def __repr__(self) -> str:
-        return f"Quantity({self.text!r} of {self.mechanism.scene.name})"
+        mode = "" if self.mode is None else f", mode={self.mode!r}"
+        return f"Quantity({self.text!r} of {self.mechanism.scene.name}{mode})"

@@ -141,7 +141,9 @@ def _verdicts(task: EliminationTask, rows: list[BenchRow], side: Sequence[sympy.
                     agreement(poly, target, flint_side, task.parameters)] if target is not None else []
         specialised = [specialise.check(poly, found)] if found else []
         verdicts = compared + specialised or [Verdict(Agreement.NOT_COMPARED, "no reference finished")]
-        verdict = next((v for v in verdicts if v.kind not in PASSING), verdicts[0])
+        # a check that did not finish (a specialisation past the budget) overrules none that did
+        checked = [v for v in verdicts if v.kind is not Agreement.NOT_COMPARED] or verdicts
+        verdict = next((v for v in checked if v.kind not in PASSING), checked[0])
         said = [v.detail for v in verdicts if v is verdict or v in specialised]
         row.agrees = verdict.kind
         row.note = "; ".join(filter(None, [row.note, f"vs {name}" if name else None, *said]))

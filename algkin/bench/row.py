@@ -6,7 +6,11 @@
 (True, 'equal')
 >>> BenchRow("two-circles", "resultant", "sympy", None, note="over budget").passes  # nothing to compare
 True
->>> BenchRow("two-circles", "Giac eliminate", "peer", 1e-3, agrees=Agreement.EXTRA_FACTOR).passes
+>>> BenchRow("lambda-coupler", "resultant", "flint", 1e-3, agrees=Agreement.EXTRA_FACTOR).passes  # algkin's: wrong
+False
+>>> BenchRow("lambda-coupler", "PARI/GP resultant", "peer", 1e-4, agrees=Agreement.EXTRA_FACTOR).passes  # a verdict
+True
+>>> BenchRow("lambda-coupler", "Singular eliminate", "peer", 1e-4, agrees=Agreement.MISSING_FACTOR).passes
 False
 """
 
@@ -16,8 +20,13 @@ from dataclasses import dataclass, field
 
 from .agree import PASSING, Agreement, PortableForm
 
-__all__ = ["BenchRow", "COLUMNS"]
+__all__ = ["BenchRow", "COLUMNS", "EXACT_PEERS"]
 
+# The peers whose answer is exact (an elimination ideal, or every real solution of a zero-dimensional
+# system): they and algkin must agree. The others (resultant chains, the roots of one) carry
+# extraneous factors or roots by nature: their verdict is shown in their row, never a failure.
+EXACT_PEERS = frozenset({"Singular eliminate", "Macaulay2 eliminate", "msolve eliminate", "msolve real solutions",
+                         "Singular real solutions"})
 COLUMNS = ("problem", "method", "backend", "seconds", "ratio", "degree", "terms", "bits", "agrees", "note")
 
 
@@ -40,9 +49,13 @@ class BenchRow:
 
     @property
     def passes(self) -> bool:
-        """Whether ``algkin bench`` may exit 0 for this row: it agrees with its reference, is
-        it, or did not finish (a row that finished and was compared with nothing fails)."""
-        return self.agrees is None or self.agrees in PASSING
+        """Whether ``algkin bench`` may exit 0 for this row: unless it disagrees with its reference.
+        It agrees, is the reference, did not finish, or finished with no reference to compare it
+        with (``not compared``, said in its row: no verdict either way); a peer that is not exact
+        (``EXACT_PEERS``) always passes, whatever its verdict says."""
+        if self.backend == "peer" and self.method not in EXACT_PEERS:
+            return True
+        return self.agrees is None or self.agrees in PASSING or self.agrees is Agreement.NOT_COMPARED
 
     def to_json(self) -> dict[str, object]:
         """The row under the keys of the bench's JSON and CSV, its verdict as a string."""

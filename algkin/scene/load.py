@@ -25,6 +25,7 @@ else:  # Python 3.10
 
 import sympy
 
+from ..catalog import CATALOG as _CATALOG, catalog_names, catalog_path
 from ..runtime import suggest
 from ..errors import SceneError, UsageError
 from .constraints import Constraint, parse_constraint
@@ -39,7 +40,6 @@ __all__ = ["load_scene", "load_scene_text", "as_scene", "catalog_names", "MAX_SC
 
 MAX_SCENE_BYTES = 256 * 1024
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
-_CATALOG = os.path.join(os.path.dirname(os.path.dirname(__file__)), "catalog")
 _TOP_KEYS = {"name", "description", "unit", "parameters", "inputs", "points", "constraints", "outputs"}
 Table = dict[str, Any]
 SceneLike = Union[str, "os.PathLike[str]", Scene]  # what the public functions take for a scene
@@ -63,17 +63,12 @@ class _FloatText(str):
     """A TOML float kept as the text it spells, so that 0.1 stays 1/10."""
 
 
-def catalog_names() -> list[str]:
-    """Names of the scenes shipped in the catalog."""
-    return sorted(f[:-5] for f in os.listdir(_CATALOG) if f.endswith(".toml"))
-
-
 def load_scene(name_or_path: str | os.PathLike[str]) -> Scene:
     """Load a catalog scene by name, or a scene file by path."""
     path = str(name_or_path)
     if not os.path.exists(path):
         if path in catalog_names():
-            path = os.path.join(_CATALOG, path + ".toml")
+            path = catalog_path(path)
         else:
             names = catalog_names()
             raise SceneError(path, "", "no such file and no catalog scene of that name"

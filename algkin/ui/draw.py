@@ -68,8 +68,7 @@ class PoseArtists:
         self.bar_ends, self.string_ends, self.guide_lines = motion.bars, motion.strings, motion.guides
         self.motion, self.axes = motion, axes
         # A fixed point that only places a slider's line is no pivot: the rail is drawn instead.
-        ends = {p for pair in self.bar_ends + self.string_ends for p in pair}
-        self.rail_only = {through for _, through, _ in self.guide_lines} - ends
+        self.rail_only = set(motion.anchors)
         self.fixed = [p for p in motion.ground if p not in self.rail_only]
         style = dict(_BAR, color=color) if color else _BAR
         self.bars = [axes.plot([], [], **style)[0] for _ in self.bar_ends]
@@ -191,12 +190,15 @@ def draw_pose(axes: Axes, motion: Motion, pose: Pose, color: str | None = None) 
     return artists
 
 
-# One colour per traced point, none of them the bars' blue or the joints' black and grey.
-_TRACES = ("tab:orange", "tab:purple", "tab:red", "tab:green", "tab:brown", "tab:pink", "tab:olive", "tab:cyan")
+# One colour per traced point, none of them the bars' blue, the joints' black and grey, nor the
+# implicit curves' green: a dashed green line is always the eliminant's zero set, drawn over the
+# trajectory it must cover (the tutorials say "the trajectory (orange) and F (dashed green)").
+_TRACES = ("tab:orange", "tab:purple", "tab:red", "tab:brown", "tab:pink", "tab:olive", "tab:cyan")
+IMPLICIT_COLOR = "tab:green"
 
 
 def trace_color(motion: Motion, name: str) -> str:
-    """The colour of traced point ``name``: its trajectory and its implicit curve share it."""
+    """The colour of traced point ``name``'s trajectory (never ``IMPLICIT_COLOR``)."""
     return _TRACES[motion.traced.index(name) % len(_TRACES)]
 
 
@@ -232,7 +234,7 @@ def _bounds(motion: Motion, parameters: Mapping[str, float] | None,
 
 
 def draw_curve(axes: Axes, result: CurveResult, bounds: Bounds, grid: int = 500,
-               color: str = "tab:green") -> QuadContourSet:
+               color: str = IMPLICIT_COLOR) -> QuadContourSet:
     """The zero set of ``result.elimination.polynomial`` (a ``CurveResult``) over ``bounds``, dashed."""
     poly = result.elimination.polynomial
     # A slider's curve may lack one coordinate (B_y = e is a line): a stand-in symbol keeps
@@ -364,8 +366,7 @@ def mechanism_figure(motion: Motion, inputs: Mapping[str, float] | None = None,
         from ..derivation.pipeline import curve as derive_curve
 
         for name in motion.traced:
-            draw_curve(live.axes, derive_curve(motion.scene, name, samples=0), live.bounds,
-                       color=trace_color(motion, name))
+            draw_curve(live.axes, derive_curve(motion.scene, name, samples=0), live.bounds)
     # Below the axes: inside, it would cover a curve on one scene or another.
     live.figure.legend(loc="outside lower center", ncols=2, fontsize="small")
     return live.figure

@@ -10,7 +10,7 @@ import sympy
 
 import algkin
 
-from ..hand_linkages import fourbar
+from ..hand_linkages import CHEBYSHEV, fourbar
 from .extremum.arm_by_hand import hand_minimum
 
 theta, b = sympy.Symbol("theta", real=True), sympy.Symbol("b", real=True)
@@ -75,3 +75,35 @@ def test_an_array_of_inputs_is_nan_where_the_label_is_not_certified_never_a_bran
     assert np.all(np.isnan(found[:4]))
     hand = [fourbar(theta, a=2, d=5, l=3, m=mpmath.mpf(7) / 2, p=0, q=0)["B"][0] for theta in inside]
     assert np.allclose(found[4:], hand, rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("mode", ["left", "right"])
+def test_a_coordinate_on_either_assembly_mode_is_the_hand_geometrys(mode):
+    # Issue 35: m.x("B") could not choose the assembly mode; mode= takes the labels derive gives.
+    lam = algkin.load_quantities("chebyshev-lambda")
+    Bx, By = lam.x("B", mode=mode), lam.y("B", mode=mode)
+    assert Bx.modes == By.modes == ["left", "right"]
+    for angle in (30, 63, 200):
+        expected = fourbar(angle, **CHEBYSHEV, branch=mode)["B"]
+        assert (Bx.at(angle=angle), By.at(angle=angle)) == pytest.approx(expected, abs=1e-12)
+        assert float(By.expr.subs(By.input, sympy.rad(angle))) == pytest.approx(expected[1], abs=1e-12)
+    swept = By.at(angle=np.array([30.0, 63.0, 200.0]))  # the stabilised kernel: on the same mode
+    hand = [fourbar(a, **CHEBYSHEV, branch=mode)["B"][1] for a in (30, 63, 200)]
+    assert swept == pytest.approx(hand, abs=1e-12)
+
+
+def test_the_default_mode_is_the_scenes_and_an_unknown_one_is_refused_with_the_labels():
+    lam = algkin.load_quantities("chebyshev-lambda")  # the scene asks for left
+    assert lam.y("B").at(angle=63) == lam.y("B", mode="left").at(angle=63) != lam.y("B", mode="right").at(angle=63)
+    with pytest.raises(algkin.AlgkinError, match=r"^mode='up': not a mode of B\.y in chebyshev-lambda \(modes: left, right\)"):
+        lam.y("B", mode="up").at(angle=63)
+
+
+def test_the_extremum_of_a_mode_is_that_modes():
+    # B's height over the turn, its least and greatest on each mode against a dense sweep of the hand geometry
+    lam = algkin.load_quantities("chebyshev-lambda")
+    for mode in ("left", "right"):
+        found = lam.y("B", mode=mode).extremum()
+        dense = [fourbar(a, **CHEBYSHEV, branch=mode)["B"][1] for a in np.linspace(0, 360, 3601)]
+        assert float(found.maximum.value) == pytest.approx(max(dense), abs=1e-5)
+        assert float(found.minimum.value) == pytest.approx(min(dense), abs=1e-5)

@@ -4,6 +4,7 @@ from pathlib import Path
 
 import pytest
 
+from algkin.catalog import catalog_entries
 from algkin.scene import catalog_names, compile_scene, load_scene
 from algkin.scene.groups import compile_groups
 
@@ -20,6 +21,11 @@ def test_list_shows_at_least_ten_scenes():
             "hoekens-straight-line", "chebyshev-straight-line", "watt-i", "stephenson-iii",
             "five-bar", "arm-string", "chebyshev-lambda", "whitworth-quick-return", "inverted-slider-crank"} <= set(names)
     assert all(s["description"] for s in listed)
+
+
+def test_the_listed_names_and_descriptions_are_those_of_the_loaded_scenes():
+    # `algkin list` reads them from the files without loading the scenes (no algebra imported)
+    assert catalog_entries() == [(s.name, s.description) for s in map(load_scene, catalog_names())]
 
 
 @pytest.mark.parametrize("name", catalog_names())

@@ -16,7 +16,13 @@ if TYPE_CHECKING:
 
     Subcommands = argparse._SubParsersAction["_Parser"]  # generic in typeshed only
 
-__all__ = ["build_parser", "usage", "Shown"]
+__all__ = ["build_parser", "usage", "Shown", "BENCH_QUICK", "BENCH_FULL"]
+
+# ``algkin bench``'s (seconds per row, rounds): by default a run of a few minutes (rows past 5 s are
+# reported over budget, each measured once); ``--full`` lets the largest problems finish, and measures
+# the quick rows in three rounds (a run of about half an hour).
+BENCH_QUICK = (5.0, 1)
+BENCH_FULL = (60.0, 3)
 
 
 class Shown(Exception):  # noqa: N818 - not an error: the answer to --help or --version
@@ -325,10 +331,17 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--problems", nargs="+", help="problem names (default: the whole suite)")
     bench.add_argument("--methods", nargs="+", help="elimination methods (default: all)")
     bench.add_argument("--backends", nargs="+", help="polynomial backends (default: all)")
-    bench.add_argument("--budget", type=_seconds, default=60.0, help="seconds per row before it is stopped")
+    budgets = bench.add_mutually_exclusive_group()
+    budgets.add_argument("--budget", type=_seconds,
+                         help=f"seconds per row before it is stopped (default {BENCH_QUICK[0]:g}: a run of a few "
+                              "minutes in all)")
+    budgets.add_argument("--full", action="store_true",
+                         help=f"the long run: {BENCH_FULL[0]:g} s per row (the largest problems finish) and "
+                              f"{BENCH_FULL[1]} rounds (about half an hour in all)")
     bench.add_argument("--no-peers", action="store_true", help="skip Singular, PARI/GP, Macaulay2, msolve")
-    bench.add_argument("--rounds", type=int, default=3,
-                       help="rows under 2 s are measured this many times in turn, each keeping its best")
+    bench.add_argument("--rounds", type=int,
+                       help=f"rows under 2 s are measured this many times in turn, each keeping its best "
+                            f"(default {BENCH_QUICK[1]}, {BENCH_FULL[1]} with --full)")
     bench.add_argument("--out", help="directory for bench.json, bench.csv and bench.png")
     _json(bench)
     from .sweep import add_commands

@@ -119,7 +119,9 @@ def model(motion: Motion, inputs: Mapping[str, float] | None = None, branch: str
         "bars": [[names.index(p), names.index(q)] for p, q in motion.bars],
         "strings": [[names.index(p), names.index(q)] for p, q in motion.strings],
         "guides": [[names.index(p), names.index(t), dx, dy] for p, t, (dx, dy) in motion.guides],
-        "ground": [names.index(g) for g in motion.ground],
+        "ground": [names.index(g) for g in motion.ground if g not in motion.anchors],
+        "anchors": [names.index(g) for g in motion.anchors],  # a slider's line placed: its rail drawn, no pivot
+        "length_unit": motion.scene.unit,  # the scene's ``unit`` of length ("" when not said)
         "traced": [names.index(t) for t in motion.traced],
         # where a dyad cannot assemble its two circles are drawn: its point, its bases, its radii as written
         "dyads": [[names.index(n), names.index(c.bases[0]), names.index(c.bases[1]), *map(str, c.lengths)]

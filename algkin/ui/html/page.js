@@ -137,12 +137,29 @@ function draw(points, poses, unmet) {
   for (const [p, q] of MODEL.strings.filter(([p, q]) => at(p) && at(q))) {
     element("line", {...thin, class: "string", x1: points[p][0], y1: -points[p][1], x2: points[q][0], y2: -points[q][1]});
   }
-  for (const [p, t, dx, dy] of MODEL.guides.filter(([p, t]) => at(t))) {
+  // A slider's rail, the slot's two edges parallel to its line, and its block between them at the
+  // slider point (over the bars), sized from the drawing's width as algkin's matplotlib drawing does.
+  const half = 0.015 * size;
+  const rails = MODEL.guides.map(([p, t, dx, dy]) => {
+    const n = Math.hypot(dx, dy);
+    return [p, t, dx / n, dy / n];  // along the line; across it: (-dy, dx)
+  });
+  for (const [p, t, ax, ay] of rails.filter(([p, t]) => at(t))) {
     const [x, y] = points[t];
-    element("line", {...thin, class: "guide", x1: x - 3 * size * dx, y1: -(y - 3 * size * dy), x2: x + 3 * size * dx, y2: -(y + 3 * size * dy)});
+    for (const side of [1, -1]) {
+      const [ex, ey] = [x - side * half * ay, y + side * half * ax];
+      element("line", {...thin, class: "guide", x1: ex - 3 * size * ax, y1: -(ey - 3 * size * ay),
+                       x2: ex + 3 * size * ax, y2: -(ey + 3 * size * ay)});
+    }
   }
   for (const [p, q] of MODEL.bars.filter(([p, q]) => at(p) && at(q))) {
     element("line", {...thin, class: "bar", "stroke-width": 4, x1: points[p][0], y1: -points[p][1], x2: points[q][0], y2: -points[q][1]});
+  }
+  for (const [p, t, ax, ay] of rails.filter(([p]) => at(p))) {
+    const [x, y] = points[p];
+    const corners = [[-1, -1], [1, -1], [1, 1], [-1, 1]].map(([a, b]) =>
+      `${x + 2 * a * half * ax - b * half * ay},${-(y + 2 * a * half * ay + b * half * ax)}`);
+    element("polygon", {...thin, class: "block", points: corners.join(" "), "data-slider": MODEL.points[p]});
   }
   for (const g of MODEL.ground.filter(at)) {
     const [x, y] = points[g];
@@ -150,7 +167,7 @@ function draw(points, poses, unmet) {
     element("polygon", {class: "ground", points: `${x},${-y} ${x - s},${-y + 1.7 * s} ${x + s},${-y + 1.7 * s}`});
   }
   MODEL.points.forEach((name, i) => {
-    if (!at(i)) return;
+    if (!at(i) || MODEL.anchors.includes(i)) return;  // a rail's anchor is drawn as the rail
     const [x, y] = points[i];
     element("circle", {...thin, class: "joint", "stroke-width": 1.5, r: 5 * unit, cx: x, cy: -y, "data-point": name});
     element("text", {class: "label", x: x + 7 * unit, y: -y - 7 * unit, "font-size": 14 * unit}, name);
@@ -178,7 +195,9 @@ function update() {
   stateOut.dataset.positions = JSON.stringify(positions);
 }
 
-MODEL.inputs.forEach(spec => addSlider(spec, spec.angle ? "°" : ""));
+const lengths = MODEL.length_unit ? " " + MODEL.length_unit : "";
+MODEL.inputs.forEach(spec => addSlider(spec, spec.angle ? "°" : lengths));
+document.getElementById("unit").textContent = MODEL.length_unit ? `lengths in ${MODEL.length_unit}` : "";
 MODEL.params.forEach(spec => addSlider(spec, ""));
 if (MODEL.branches.length > 1) addBranchChoice();
 update();

@@ -101,6 +101,17 @@ def good_json(runs, key):
     return json.loads(result.stdout)  # the whole of stdout is one JSON document
 
 
+def test_list_imports_no_algebra(tmp_path):
+    # Issue 35: `algkin list` took 4.4 s on a loaded machine, loading every scene through sympy to
+    # print names and descriptions; it reads the catalog's files and imports no algebra.
+    code = ("import sys; from algkin.ui.cli import main; code = main(['list']);"
+            "print(sorted(m for m in ('sympy', 'flint', 'numpy', 'mpmath') if m in sys.modules), code)")
+    done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True, timeout=120,
+                          env=dict(os.environ, PYTHONPATH=str(ROOT)))
+    assert "chebyshev-lambda" in done.stdout, done.stderr
+    assert done.stdout.splitlines()[-1] == "[] 0", done.stdout[-300:]
+
+
 def test_list_json_has_both_catalog_scenes(runs):
     document = good_json(runs, "list")
     names = {scene["name"] for scene in document["scenes"]}
@@ -183,3 +194,14 @@ def test_an_error_quoting_a_newline_in_a_scene_key_stays_one_line(tmp_path):
     result = run_cli(["show", str(scene)], tmp_path)
     assert result.returncode == 2 and result.stdout == ""
     assert result.stderr.count("\n") == 1 and "B\\nalgkin: done" in result.stderr
+
+
+@pytest.mark.parametrize("scene, unit", [("arm-string", "mm"), ("fourbar", ""), ("3rpr", "")])
+def test_show_gives_the_scenes_unit_of_length(capsys, scene, unit):
+    # Issue 35: a scene's `unit = "mm"` reached the plots' axes but neither the JSON nor the page
+    from algkin.ui.cli import main
+
+    assert main(["show", scene, "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["length_unit"] == unit
+    assert main(["show", scene]) == 0
+    assert ("lengths in mm" in capsys.readouterr().out) == bool(unit)

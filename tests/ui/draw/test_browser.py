@@ -89,12 +89,13 @@ def test_generated_javascript_agrees_with_python(tmp_path, scene, query, values)
     assert {k: state["values"][k] for k in values} == values
     pose = motion.at(values, parameters, state["branch"])
     assert state["assembles"] == str(pose.assembles).lower() and state["blocked"] == " ".join(pose.blocked)
+    joints = lambda points: {p: xy for p, xy in points.items() if p not in motion.anchors}  # noqa: E731 - rails
     if pose.assembles:
         close(state["positions"], pose.points)
-        close(circles, pose.points)
+        close(circles, joints(pose.points))
     else:  # what is built is drawn, as the matplotlib drawing draws it
         assert state["positions"] == {}
-        close(circles, built(motion, pose))
+        close(circles, joints(built(motion, pose)))
 
 
 def test_a_length_slider_moves_the_boom_as_the_law_of_cosines_does(tmp_path):
@@ -106,3 +107,42 @@ def test_a_length_slider_moves_the_boom_as_the_law_of_cosines_does(tmp_path):
     hand = {"O": (0, 0), "C": (1.5, -0.5), "A": (math.cos(boom), math.sin(boom)),
             "T": (3 * math.cos(boom), 3 * math.sin(boom))}
     close(state["positions"], hand)
+
+
+def _numbers(text):
+    return [float(v) for v in re.split(r"[ ,]+", text.strip())]
+
+
+def test_a_slider_is_a_block_between_its_rails_edges_and_its_lines_point_no_pivot(tmp_path):
+    # Issue 35: the page drew the slider's line as one guide, no block, and its point L = (0, e)
+    # as a ground pivot. As the matplotlib drawing (and a textbook): the rail's two edges parallel
+    # to y = e, a block centred at B between them, L drawn as neither pivot nor joint.
+    dom = dump_dom(write(Motion("slider-crank"), tmp_path / "slider.html"), "?theta=60")
+    # B by hand: A = (cos 60, sin 60); B on y = 1/2 at 3 from A, ahead (x greater than A's)
+    ax, ay = math.cos(math.radians(60)), math.sin(math.radians(60))
+    bx = ax + math.sqrt(9 - (0.5 - ay) ** 2)
+    (block,) = re.findall(r'<polygon[^>]*class="block"[^>]*>', dom)
+    assert 'data-slider="B"' in block
+    xs, ys = (lambda v: (v[0::2], [-y for y in v[1::2]]))(_numbers(re.search(r' points="([^"]+)"', block).group(1)))
+    assert abs(sum(xs) / 4 - bx) < 1e-9 and abs(sum(ys) / 4 - 0.5) < 1e-9
+    width, height = max(xs) - min(xs), max(ys) - min(ys)
+    assert abs(width - 2 * height) < 1e-9 and height > 0  # along the rail, twice as long as it is high
+    edges = [(float(re.search(r' y1="([^"]+)"', e).group(1)), float(re.search(r' y2="([^"]+)"', e).group(1)))
+             for e in re.findall(r'<line[^>]*class="guide"[^>]*>', dom)]
+    assert sorted(-y for y, _ in edges) == pytest.approx([0.5 - height / 2, 0.5 + height / 2], abs=1e-9)
+    assert all(y1 == y2 for y1, y2 in edges)  # parallel to the line y = e
+    grounds = re.findall(r'<polygon[^>]*class="ground"[^>]*>', dom)
+    assert len(grounds) == 1 and 'data-point="L"' not in dom and ">L</text>" not in dom  # O only
+
+
+def test_the_scenes_unit_of_length_is_on_the_page():
+    # Issue 35: chebyshev-lambda says unit = "mm": the page says its lengths are in mm
+    from algkin.ui.html import model
+
+    assert model(Motion("chebyshev-lambda"))["length_unit"] == "mm" and model(Motion("fourbar"))["length_unit"] == ""
+
+
+def test_the_page_says_the_unit_of_its_lengths(pages):
+    dom = dump_dom(pages / "chebyshev-lambda.html", "?angle=30")
+    assert re.search(r'<p id="unit">lengths in mm</p>', dom)
+    assert re.search(r'<p id="unit"></p>', dump_dom(pages / "fourbar.html", "?theta=30"))

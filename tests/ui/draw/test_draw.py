@@ -7,6 +7,7 @@ import pathlib
 import shutil
 import subprocess
 import sys
+import types
 
 import attrs
 import numpy as np
@@ -70,6 +71,32 @@ def test_trajectory_and_implicit_curve_coincide():
     step = (axes.dataLim.width + axes.dataLim.height) / 500
     nearest = np.min(np.hypot(*(vertices[:, None, :] - traced[None, ::5, :]).transpose(2, 0, 1)), axis=1)
     assert np.max(nearest) < step
+
+
+def test_the_implicit_curve_is_dashed_green_over_the_orange_trajectory():
+    # Issue 35: the Chebyshev tutorial says "the trajectory (orange) and the zero set of F (dashed
+    # green)" while both were drawn orange, so the overlay could not be seen.
+    from matplotlib.colors import to_hex
+
+    axes = mechanism_figure(Motion("chebyshev-lambda"), {"angle": 63}).axes[0]
+    (trajectory,) = [line for line in axes.lines if line.get_label().startswith("trajectory")]
+    (contour,) = axes.collections
+    assert to_hex(trajectory.get_color()) == to_hex("tab:orange") and trajectory.get_linestyle() == "-"
+    assert {to_hex(c) for c in contour.get_edgecolor()} == {to_hex("tab:green")}
+    assert all(tuple(dashes) for _, dashes in contour.get_linestyle())  # dashed, not solid
+    legend = {text.get_text(): handle for text, handle in zip(axes.figure.legends[0].get_texts(),
+                                                              axes.figure.legends[0].legend_handles)}
+    shown = legend["implicit curve of P (every assembly mode)"]
+    assert to_hex(shown.get_color()) == to_hex("tab:green") and shown.get_linestyle() == "--"
+    tutorial = (pathlib.Path(__file__).parents[3] / "docs" / "tutorials" / "chebyshev-lambda.md").read_text()
+    assert "trajectory from the closed forms (orange) and the zero set of F (dashed green)" in tutorial
+
+
+def test_no_trajectory_is_drawn_in_the_implicit_curves_green():
+    from algkin.ui.draw import IMPLICIT_COLOR, trace_color
+
+    many = types.SimpleNamespace(traced=list("PQRSTUVWXYZ"))  # more traced points than colours
+    assert IMPLICIT_COLOR not in {trace_color(many, name) for name in many.traced}
 
 
 def test_both_assembly_modes_side_by_side():
