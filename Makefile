@@ -52,7 +52,9 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_ideas.py && \
 	$(BIN)/python benchmarks/bench_widget.py && \
 	$(BIN)/python benchmarks/bench_floor.py && \
+	$(BIN)/python benchmarks/bench_small.py && \
 	$(BIN)/python benchmarks/bench_singular.py && \
+	$(BIN)/python benchmarks/bench_pylinkage_synthesis.py && \
 	$(BIN)/python benchmarks/bench_sweep.py && exit $$status
 
 # Optional peer engines for `algkin bench` only; algkin itself needs none of them.

@@ -46,9 +46,10 @@ from ..scene.expr import exact_number
 from ..scene.load import MAX_SCENE_BYTES
 from .data import Angle, AnglePair, Point, Pose
 
-__all__ = ["Task", "read_task", "read_task_text", "KINDS"]
+__all__ = ["Task", "read_task", "read_task_text", "example_names", "KINDS"]
 
 KINDS = ("motion", "function", "path")
+_EXAMPLES = os.path.join(os.path.dirname(__file__), "examples")
 _KEYS = {"motion": {"poses"}, "function": {"pairs", "unknown_start", "ground"}, "path": {"pivots", "points"}}
 _COMMON = {"kind", "name", "description"}
 Table = dict[str, Any]
@@ -75,9 +76,17 @@ class Task:
         return any(a.approximate for a in angles)
 
 
+def example_names() -> list[str]:
+    """The synthesis files shipped with algkin, by name (``read_task`` takes a name as a path)."""
+    return sorted(f[:-5] for f in os.listdir(_EXAMPLES) if f.endswith(".toml"))
+
+
 def read_task(path: str | os.PathLike[str]) -> Task:
-    """The task of the synthesis file at ``path`` (a regular file of at most MAX_SCENE_BYTES)."""
+    """The task of the synthesis file at ``path`` (a regular file of at most MAX_SCENE_BYTES), or
+    of the example of that name (``example_names``) where no such file exists."""
     path = str(path)
+    if not os.path.exists(path) and path in example_names():
+        path = os.path.join(_EXAMPLES, path + ".toml")
     try:
         status = os.stat(path)
         if not stat.S_ISREG(status.st_mode):
@@ -87,12 +96,13 @@ def read_task(path: str | os.PathLike[str]) -> Task:
         with open(path, "rb") as handle:
             data = handle.read(MAX_SCENE_BYTES + 1)
     except OSError as err:
-        raise SceneError(path, "", f"cannot read: {err.strerror or err}") from None
+        raise SceneError(path, "", f"cannot read: {err.strerror or err}"
+                         + suggest.known(os.path.basename(path), example_names(), plural="examples")) from None
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as err:
         raise SceneError(path, "", f"not UTF-8 text ({err.reason} at byte {err.start})") from None
-    return read_task_text(text, path)
+    return read_task_text(text, os.path.basename(path) if path.startswith(_EXAMPLES) else path)
 
 
 def read_task_text(text: str, source: str = "<synthesis>") -> Task:

@@ -1,6 +1,6 @@
 """``synthesize``: each task solved completely, its four-bars written, re-derived and judged.
 
-The example files are built from known four-bars (examples/synthesis/*.toml: the catalog four-bar
+The example files are built from known four-bars (algkin/synthesis/examples/*.toml: the catalog four-bar
 with crank 1, coupler 3, rocker 7/2, ground 4, computed independently in mpmath, and a four-bar
 worked by hand): synthesis must find those mechanisms among its answers, and algkin's own solve
 of each written scene must reach every position.
@@ -12,10 +12,12 @@ import pathlib
 import flint
 import pytest
 
+import algkin.synthesis
+
 from algkin.scene import load_scene_text
 from algkin.synthesis import synthesize
 
-EXAMPLES = pathlib.Path(__file__).parents[2] / "examples" / "synthesis"
+EXAMPLES = pathlib.Path(algkin.synthesis.__file__).parent / "examples"
 
 
 def _near(ball, value, tolerance):

@@ -6,10 +6,12 @@ import pathlib
 
 import pytest
 
+import algkin.synthesis
+
 from algkin.scene import load_scene
 from algkin.ui.cli import main
 
-EXAMPLES = pathlib.Path(__file__).parents[3] / "examples" / "synthesis"
+EXAMPLES = pathlib.Path(algkin.synthesis.__file__).parent / "examples"
 THREE = str(EXAMPLES / "three-pairs.toml")
 # five poses with no real Burmester pair (four complex): the motion tests' NONE_REAL set
 NO_REAL = """kind = "motion"
@@ -104,3 +106,11 @@ def test_nothing_is_written_when_the_command_fails(capsys, tmp_path):
     path.write_text(NO_REAL % (-1, -3, "{ cos = 0, sin = -1 }"))
     code, _, _ = run(capsys, "synthesize", "motion", str(path), "--plot", str(figure), "--out", str(tmp_path / "d"))
     assert code == 2 and figure.read_bytes() == b"before" and not (tmp_path / "d").exists()
+
+
+def test_an_example_is_taken_by_name_and_a_near_miss_is_suggested(capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # no file of that name here: the example shipped with algkin
+    code, text, _ = run(capsys, "synthesize", "function", "three-pairs", "--quiet")
+    assert code == 0 and text.startswith("three-pairs: function synthesis")
+    code, _, err = run(capsys, "synthesize", "function", "three-pair")
+    assert code == 2 and "did you mean 'three-pairs'?" in err and err.count("\n") == 1
