@@ -129,6 +129,10 @@ def _curves_figure(poses: Sequence[Pose], centre: Polynomial, circle: Polynomial
                  linestyles="dashed")
     for pose in poses:
         _pose(axes, pose, size=0.15 * span)
+    for centre, circle in _matched(poses, centre, np.linspace(lo_x, hi_x, 9)[1:-1], (lo_y, hi_y)):
+        axes.plot([centre[0], circle[0]], [centre[1], circle[1]], "-", color="#999999", lw=0.8)
+        axes.plot([centre[0]], [centre[1]], "^", color=_COLOURS[0], ms=5)
+        axes.plot([circle[0]], [circle[1]], "o", color=_COLOURS[1], ms=4)
     axes.plot([], [], color=_COLOURS[0], label="centre-point curve")
     axes.plot([], [], color=_COLOURS[1], ls="--", label="circle-point curve (first pose)")
     axes.legend(loc="upper right", fontsize=8)
@@ -137,6 +141,51 @@ def _curves_figure(poses: Sequence[Pose], centre: Polynomial, circle: Polynomial
     axes.set_aspect("equal")
     axes.set_title("four poses: centre-point and circle-point curves")
     return figure
+
+
+def _matched(poses: Sequence[Pose], centre: Polynomial, xs: np.ndarray, span: tuple[float, float]
+             ) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+    """Centre points on the curve (at the abscissas ``xs``, within ``span``) with their circle
+    points, placed in the first pose: the dyad each makes. The circle point ``c`` keeps one
+    distance from the centre ``C`` in every pose: ``2 (R_i^T (p_i - C) - R_1^T (p_1 - C)) . c =
+    |p_1 - C|**2 - |p_i - C|**2`` for i = 2, 3, 4, solved in least squares (floats: drawn only)."""
+    found = []
+    for x in xs:
+        for y in _roots_in_y(centre, float(x)):
+            if not span[0] <= y <= span[1]:
+                continue
+            point = np.array([float(x), y])
+            rows, right = [], []
+            first = _turned_back(poses[0], point)
+            for pose in poses[1:]:
+                rows.append(2 * (_turned_back(pose, point) - first))
+                right.append(_squared(poses[0], point) - _squared(pose, point))
+            circle, *_ = np.linalg.lstsq(np.array(rows), np.array(right), rcond=None)
+            c, s = float(poses[0].angle.cos), float(poses[0].angle.sin)
+            placed = (float(poses[0].x) + c * circle[0] - s * circle[1], float(poses[0].y) + s * circle[0] + c * circle[1])
+            found.append(((float(x), y), placed))
+    return found
+
+
+def _roots_in_y(poly: Polynomial, x: float) -> list[float]:
+    """The real roots in Y of the curve at X = ``x`` (floats)."""
+    coefficients = np.zeros(poly.degree("Y") + 1)
+    scale = max((abs(Fraction(p, q)) for _, p, q in poly.terms), default=Fraction(1)) or Fraction(1)
+    for exponents, p, q in poly.terms:
+        coefficients[exponents[1]] += float(Fraction(p, q) / scale) * x ** exponents[0]
+    roots = np.roots(coefficients[::-1]) if np.any(coefficients[1:]) else np.array([])
+    return [float(r.real) for r in roots if abs(r.imag) < 1e-9 * (1 + abs(r))]
+
+
+def _turned_back(pose: Pose, point: np.ndarray) -> np.ndarray:
+    """``R^T (p - C)``: the pose's origin seen from ``point``, in the moving frame's axes."""
+    c, s = float(pose.angle.cos), float(pose.angle.sin)
+    d = np.array([float(pose.x), float(pose.y)]) - point
+    return np.array([c * d[0] + s * d[1], -s * d[0] + c * d[1]])
+
+
+def _squared(pose: Pose, point: np.ndarray) -> float:
+    return float(np.sum((np.array([float(pose.x), float(pose.y)]) - point) ** 2))
 
 
 def _values(poly: Polynomial, x: np.ndarray, y: np.ndarray) -> np.ndarray:

@@ -114,3 +114,55 @@ def test_an_example_is_taken_by_name_and_a_near_miss_is_suggested(capsys, tmp_pa
     assert code == 0 and text.startswith("three-pairs: function synthesis")
     code, _, err = run(capsys, "synthesize", "function", "three-pair")
     assert code == 2 and "did you mean 'three-pairs'?" in err and err.count("\n") == 1
+
+
+FOUR = """kind = "motion"
+[[poses]]
+x = 0
+y = 0
+angle = 0
+[[poses]]
+x = 1
+y = "1/2"
+angle = { cos = "4/5", sin = "3/5" }
+[[poses]]
+x = 2
+y = "3/2"
+angle = { cos = "5/13", sin = "12/13" }
+[[poses]]
+x = 3
+y = 1
+angle = 90
+"""
+
+
+def test_four_poses_give_the_two_curves_and_their_drawing(capsys, tmp_path):
+    import sympy
+
+    path, figure = tmp_path / "four.toml", tmp_path / "four.svg"
+    path.write_text(FOUR)
+    code, text, _ = run(capsys, "synthesize", "motion", str(path), "--json", "--plot", str(figure), "--quiet")
+    document = json.loads(text)
+    assert code == 0 and document["mechanisms"] == [] and figure.read_text().startswith("<?xml")
+    X, Y, x, y = sympy.symbols("X Y x y")
+    centre, circle = sympy.parse_expr(document["centre_curve"]), sympy.parse_expr(document["circle_curve"])
+    assert sympy.Poly(centre, X, Y).total_degree() == 3 and sympy.Poly(circle, x, y).total_degree() == 3
+    # the first pose is the identity, so its pole with the second, the fixed point of that
+    # displacement (worked by hand: (1 - 4/5) P - 3/5 rot90(P) = (1, 1/2) gives P = (-1/4, 7/4)), is on the centre curve
+    assert centre.subs({X: sympy.Rational(-1, 4), Y: sympy.Rational(7, 4)}) == 0
+
+
+def test_the_drawn_matches_lie_on_the_circle_curve():
+    from algkin.synthesis.files import read_task_text
+    from algkin.synthesis.motion import curves
+    from algkin.ui.synthesisdraw import _matched
+
+    task = read_task_text(FOUR, "four.toml")
+    found = curves(task.poses)
+    matches = _matched(task.poses, found.centre_curve, [-3.0, -1.0, 1.0, 4.0], (-20.0, 20.0))
+    assert len(matches) >= 4
+    circle = found.circle_curve.to_flint()
+    scale = max(abs(float(c)) for c in circle.coeffs())
+    for _, (cx, cy) in matches:  # the first pose is the identity: placed is the moving frame's point
+        value = sum(float(c) * cx ** int(m[0]) * cy ** int(m[1]) for m, c in zip(circle.monoms(), circle.coeffs()))
+        assert abs(value) < 1e-6 * scale * (1 + cx * cx + cy * cy) ** 1.5
