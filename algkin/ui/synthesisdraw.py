@@ -129,10 +129,10 @@ def _curves_figure(poses: Sequence[Pose], centre: Polynomial, circle: Polynomial
                  linestyles="dashed")
     for pose in poses:
         _pose(axes, pose, size=0.15 * span)
-    for centre, circle in _matched(poses, centre, np.linspace(lo_x, hi_x, 9)[1:-1], (lo_y, hi_y)):
-        axes.plot([centre[0], circle[0]], [centre[1], circle[1]], "-", color="#999999", lw=0.8)
-        axes.plot([centre[0]], [centre[1]], "^", color=_COLOURS[0], ms=5)
-        axes.plot([circle[0]], [circle[1]], "o", color=_COLOURS[1], ms=4)
+    for fixed, moving in _matched(poses, centre, np.linspace(lo_x, hi_x, 9)[1:-1], (lo_y, hi_y)):
+        axes.plot([fixed[0], moving[0]], [fixed[1], moving[1]], "-", color="#999999", lw=0.8)
+        axes.plot([fixed[0]], [fixed[1]], "^", color=_COLOURS[0], ms=5)
+        axes.plot([moving[0]], [moving[1]], "o", color=_COLOURS[1], ms=4)
     axes.plot([], [], color=_COLOURS[0], label="centre-point curve")
     axes.plot([], [], color=_COLOURS[1], ls="--", label="circle-point curve (first pose)")
     axes.legend(loc="upper right", fontsize=8)
