@@ -18,6 +18,7 @@ import attrs
 import flint
 
 from ..errors import UsageError
+from ..runtime.budget import Budget, Deadline, started
 from ..runtime.frozen import FrozenDict, frozen
 from .check import MIN_TRANSMISSION, Checked, check_design
 from .data import Angle, Point, Pose
@@ -79,10 +80,11 @@ class Synthesis:
 
 
 def synthesize(task: Task | str | os.PathLike[str], *, bits: int = 128, digits: int = DIGITS,
-               min_transmission: float = MIN_TRANSMISSION) -> Synthesis:
-    """Solve ``task`` (a Task, or a synthesis file's path) completely: its real solutions in balls
-    of ``bits`` bits, shown to ``digits`` digits, each four-bar made of them checked, defects
-    judged with transmission angles kept within [``min_transmission``, 180 - it]."""
+               min_transmission: float = MIN_TRANSMISSION, budget: Budget | Deadline | None = None) -> Synthesis:
+    """Solve ``task`` (a Task, or a synthesis file's path or example's name) completely: its real
+    solutions in balls of ``bits`` bits, shown to ``digits`` digits, each four-bar made of them
+    checked, defects judged with transmission angles kept within [``min_transmission``, 180 -
+    it]. A ``Budget`` (or the ``Deadline`` of one running) bounds the time."""
     if isinstance(bits, bool) or not isinstance(bits, int) or not 64 <= bits <= 4096:
         raise UsageError("bits", bits, "expected a whole number of bits in [64, 4096]")
     if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= bits * 3 // 10:
@@ -90,22 +92,27 @@ def synthesize(task: Task | str | os.PathLike[str], *, bits: int = 128, digits: 
                                            f"(at most what {bits} bits hold)")
     if not 0 <= min_transmission < 90:
         raise UsageError("min_transmission", min_transmission, "expected degrees in [0, 90)")
+    deadline = started(budget)
     task = task if isinstance(task, Task) else read_task(task)
-    started = time.perf_counter()
+    start = time.perf_counter()
+    deadline.note(f"solving {task.name}'s {task.kind} synthesis equations")
     result = _solve(task, bits)
     solved = time.perf_counter()
     designs = _designs(task, result)
-    mechanisms = tuple(SynthesizedMechanism(indexes, design, check_design(design, min_transmission=min_transmission))
-                       for indexes, design in designs)
-    timings = {"solve": solved - started, "check": time.perf_counter() - solved}
-    return Synthesis(task, result, mechanisms, timings, digits)
+    mechanisms = []
+    for number, (indexes, design) in enumerate(designs, 1):
+        deadline.note(f"checking four-bar {number} of {len(designs)} ({design.name})")
+        mechanisms.append(SynthesizedMechanism(indexes, design, check_design(design, min_transmission=min_transmission)))
+    timings = {"solve": solved - start, "check": time.perf_counter() - solved}
+    return Synthesis(task, result, tuple(mechanisms), timings, digits)
 
 
 def _solve(task: Task, bits: int) -> Result:
     if task.kind == "motion":
-        if len(task.poses) == 4:
-            return curves(task.poses)
-        return burmester(task.poses, bits=bits)
+        if len(task.poses) not in (4, 5):
+            raise UsageError("poses", len(task.poses), "motion synthesis takes 4 poses (the centre-point and "
+                             f"circle-point curves) or 5 (the Burmester pairs), not {len(task.poses)}")
+        return curves(task.poses) if len(task.poses) == 4 else burmester(task.poses, bits=bits)
     if task.kind == "function":
         return freudenstein(task.pairs, unknown_start=task.unknown_start, ground=task.ground, bits=bits)
     assert task.pivots is not None, "a path task has its pivots (files)"

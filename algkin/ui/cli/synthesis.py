@@ -53,7 +53,8 @@ def _cmd_synthesize(args: argparse.Namespace) -> Outcome:
     if task.kind != args.kind:
         raise UsageError("kind", args.kind, f"{args.file} asks for {task.kind} synthesis (kind = \"{task.kind}\")")
     try:
-        found = synthesize(task, bits=args.bits, digits=args.digits, min_transmission=args.min_transmission)
+        found = synthesize(task, bits=args.bits, digits=args.digits, min_transmission=args.min_transmission,
+                           budget=args.deadline)
     except UsageError as err:
         if err.argument in _DATA:
             raise SceneError(args.file, _DATA[err.argument], err.message) from None
@@ -94,7 +95,8 @@ def report_synthesis(d: Document) -> str:
     if d.get("approximate_angles"):
         lines.append("  (angles given in degrees taken to 60 digits: solutions are of those angles)")
     if "centre_curve" in d:
-        lines += [f"  centre-point curve: {d['centre_curve']} = 0", f"  circle-point curve: {d['circle_curve']} = 0",
+        lines += [f"  centre-point curve: {_shown(d['centre_curve'])} = 0",
+                  f"  circle-point curve: {_shown(d['circle_curve'])} = 0",
                   "four poses: a one-parameter family of dyads (five poses give the Burmester pairs)"]
         return "\n".join(lines)
     for k, pair in enumerate(d.get("burmester", []), 1):
@@ -118,6 +120,12 @@ def report_synthesis(d: Document) -> str:
     if d.get("plot"):
         lines.append(f"wrote {d['plot']}")
     return "\n".join(lines)
+
+
+def _shown(polynomial: str, room: int = 160) -> str:
+    """A polynomial as the report shows it: whole when short, else its start and its length
+    (``--json`` has it whole)."""
+    return polynomial if len(polynomial) <= room else f"{polynomial[:room]} ... ({len(polynomial)} characters; --json: whole)"
 
 
 def _counts(d: Document) -> str:
