@@ -4,11 +4,12 @@
 thread each) on this machine, or connects to the scheduler at an address (a cluster started
 with ``dask scheduler`` and ``dask worker``, on other machines); either way each chunk is one
 task, and its rows come back here, where they are written (``done``): the workers write no
-file. Each worker checks that its algkin is this process's version, and a chunk that fails on a
-worker (not a design: a design's failure is its row) stops the run in one line. The cluster
-this module started is closed however the run ends (an error, Ctrl-C as the command line's
-exception): its worker processes are stopped and joined. dask and distributed (the ``sweep``
-extra) are imported only here, only for a Dask run.
+file. The scheduler and the workers unpickle each chunk's job (the scene, the analyses), so
+they need algkin too; each worker checks that its algkin is this process's version, and a
+chunk that fails on the cluster (not a design: a design's failure is its row) stops the run
+in one line. The cluster this module started is closed however the run ends (an error,
+Ctrl-C as the command line's exception): its worker processes are stopped and joined. dask
+and distributed (the ``sweep`` extra) are imported only here, only for a Dask run.
 """
 
 from __future__ import annotations
@@ -53,8 +54,8 @@ def run_chunks(job: Job, chunks: Sequence[tuple[int, list]], done: Callable[[int
                 rows = future.result()
             except AlgkinError:
                 raise  # ours, said in one line (a worker's algkin of another version)
-            except Exception as err:  # noqa: BLE001 - a worker's failure, said in one line, not its traceback
-                raise ComputationError(f"chunk {futures[future]} failed on a Dask worker: "
+            except Exception as err:  # noqa: BLE001 - the cluster's failure, said in one line, not its traceback
+                raise ComputationError(f"chunk {futures[future]} failed on the Dask cluster: "
                                        f"{type(err).__name__}: {' '.join(str(err).split())}") from None
             done(*rows)
 

@@ -155,3 +155,24 @@ def test_a_worker_with_another_algkin_fails_the_command_in_one_line(cluster, tmp
     assert err.startswith("algkin: failed: ") and err.count("\n") == 1, err
     assert f"has algkin {installed}, this command 0.0.1-other" in err, err
     assert not (tmp_path / "designs.parquet").exists()
+
+
+def test_an_analysis_the_workers_cannot_import_fails_the_command_in_one_line(cluster, tmp_path, monkeypatch,
+                                                                              capsys):
+    # A module on this process's path alone: its function travels by name, and neither the scheduler
+    # (which unpickles the tasks) nor a worker finds it.
+    (tmp_path / "mine").mkdir()
+    (tmp_path / "mine" / "only_here.py").write_text("def crank(design):\n    return {'crank_length': '1'}\n")
+    monkeypatch.syspath_prepend(str(tmp_path / "mine"))
+    from only_here import crank
+
+    register(Analysis("crank", {"crank_length": "string"}, crank))
+    try:
+        code = main(["sweep", "fourbar", "--grid", "a=1/2:3/2:3", "--analyses", "crank", "--out", str(tmp_path / "out"),
+                     "--scheduler", cluster.address])
+    finally:
+        del ANALYSES["crank"]
+    err = capsys.readouterr().err
+    assert code == 1 and err.count("\n") == 1, err
+    assert err.startswith("algkin: failed: chunk 0 failed on the Dask cluster: RuntimeError: "), err
+    assert "different environments" in err, err  # Dask's words
