@@ -7,13 +7,18 @@ import pytest
 from algkin.synthesis.check import check_design
 from algkin.synthesis.fourbar import FourBar, Position
 
-mpmath.mp.dps = 60
+DIGITS = 60  # scoped (mpmath.workdps): another test may have set mpmath's global precision
 
 
 def _position(theta: float, *, crank: float, coupler: float, rocker: float, ground: float, left: bool) -> Position:
     """The crank tip at theta degrees about (0, 0); B where the circles about A (coupler) and
     D = (ground, 0) (rocker) meet, left of the line from A to D when ``left``."""
-    t = mpmath.radians(mpmath.mpf(theta))
+    with mpmath.workdps(DIGITS):
+        return _position_at(mpmath.radians(mpmath.mpf(theta)), crank=crank, coupler=coupler, rocker=rocker,
+                            ground=ground, left=left)
+
+
+def _position_at(t, *, crank, coupler, rocker, ground, left):
     ax, ay = crank * mpmath.cos(t), crank * mpmath.sin(t)
     dx, dy = ground - ax, -ay
     dist = mpmath.sqrt(dx**2 + dy**2)
@@ -35,6 +40,11 @@ def _design(thetas, lefts, *, crank=1, coupler=3, rocker=mpmath.mpf(7) / 2, grou
 
 def _transmission_by_sampling(thetas, *, crank=1, coupler=3, rocker=mpmath.mpf(7) / 2, ground=4):
     """The angle at B between A and D, sampled every 0.01 degree between the first and last theta."""
+    with mpmath.workdps(DIGITS):
+        return _sampled(thetas, crank=crank, coupler=coupler, rocker=rocker, ground=ground)
+
+
+def _sampled(thetas, *, crank, coupler, rocker, ground):
     values = []
     for k in range(int((thetas[-1] - thetas[0]) * 100) + 1):
         t = mpmath.radians(thetas[0] + mpmath.mpf(k) / 100)
