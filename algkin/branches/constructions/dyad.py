@@ -29,6 +29,7 @@ import attrs
 import numpy as np
 import sympy
 
+from ...evaluate.lambdified import numpy_function
 from ...scene.implicit import DyadSpec
 from ...scene.implicit.algebra import Circles
 from ...scene.implicit.base import FloatArray, Point
@@ -78,12 +79,12 @@ class _Stable:
         (px, py), (qx, qy) = dyad.base_p, dyad.base_q
         base = [fix(e) for e in ((px + qx) / 2, (py + qy) / 2, qx - px, qy - py)]  # midpoint, exactly
         self.unknowns = dyad.unknowns
-        self.base = sympy.lambdify(arguments, base, "numpy", cse=True)
+        self.base = numpy_function(arguments, base, cse=True)
         l1, l2 = (fix(v) for v in dyad.lengths)
         self.sigma = sigma
         # a length input (an actuator, a string) moves a length: evaluated per sample then
         self.moving = None if l1.is_number and l2.is_number else \
-            sympy.lambdify(arguments, [l1, l2, l1**2 - l2**2], "numpy")
+            numpy_function(arguments, [l1, l2, l1**2 - l2**2])
         self.l1, self.l2, self.lengths_term = (float(v) if v.is_number else 0.0 for v in (l1, l2, l1**2 - l2**2))
         self.factored = _factored_span(fix(base[2] ** 2 + base[3] ** 2), l1, l2, half_angles) \
             if self.moving is None else None

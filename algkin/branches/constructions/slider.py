@@ -29,6 +29,7 @@ import attrs
 import numpy as np
 import sympy
 
+from ...evaluate.lambdified import numpy_function
 from ...scene.implicit import SliderSpec
 from ...scene.implicit.algebra import Circles
 from ...scene.implicit.base import FloatArray, Point
@@ -88,7 +89,7 @@ class _Stable:
         self.fixed = dx.is_number and dy.is_number
         base = [fix(e) for e in (px, py, qx - px, qy - py)] + ([] if self.fixed else [dx, dy])
         self.unknowns = slider.unknowns
-        self.base = sympy.lambdify(arguments, base, "numpy", cse=True)
+        self.base = numpy_function(arguments, base, cse=True)
         length, norm2 = fix(slider.length), fix(dx**2 + dy**2)
         self.sigma, self.length, self.length2 = sigma, float(length), float(length**2)
         self.dx, self.dy = (float(dx), float(dy)) if self.fixed else (0.0, 0.0)
