@@ -10,12 +10,17 @@ flint, numpy"`` (the floor issue 34 measures against: a command should take at m
 it), of ``import algkin`` and of ``import sympy``. Last, ``python -X importtime -m algkin derive
 chebyshev-lambda --outputs B``: the ten imports with the largest cumulative time.
 
-Run: ``python benchmarks/bench_cold.py [--repeats N] [--quick]`` (``--quick`` drops the
-six-bar derive).
+Each command runs as ``python -m algkin`` from this checkout; ``--against DIR`` runs it from
+another checkout's sources too (``git archive <commit> | tar -x -C DIR``), in the same rounds, and
+prints that table first: a change's before and after from one run.
+
+Run: ``python benchmarks/bench_cold.py [--repeats N] [--quick] [--against DIR]`` (``--quick``
+drops the six-bar derive).
 """
 
 import argparse
 import json
+import os
 import statistics
 import subprocess
 import sys
@@ -31,19 +36,16 @@ SIX_BAR_DERIVE = "derive stephenson-iii --outputs P"
 IMPORTS = ["flint, numpy", "algkin", "sympy"]
 FLOOR = IMPORTS[0]
 IMPORTTIME_COMMAND = COMMANDS[0]
+ROOT = Path(__file__).resolve().parents[1]  # this checkout: its algkin is the one measured
 
 
-def algkin_argv():
-    """The ``algkin`` script beside this interpreter (as installed), else ``python -m algkin``."""
-    script = Path(sys.executable).with_name("algkin")
-    return [str(script)] if script.exists() else [sys.executable, "-m", "algkin"]
-
-
-def run_command(command):
-    """One fresh run of ``algkin <command> --json``: its stage timings and its process wall time."""
+def run_command(command, root):
+    """One fresh run of ``python -m algkin <command> --json`` from the sources in ``root``: its stage
+    timings and its process wall time."""
+    environment = dict(os.environ, PYTHONPATH=str(root))  # and run from root: its algkin first on sys.path
     start = time.perf_counter()
-    completed = subprocess.run([*algkin_argv(), *command.split(), "--json"],
-                               capture_output=True, text=True, check=True)
+    completed = subprocess.run([sys.executable, "-m", "algkin", *command.split(), "--json"],
+                               capture_output=True, text=True, check=True, env=environment, cwd=root)
     wall = time.perf_counter() - start
     return json.loads(completed.stdout)["timings"], wall
 
@@ -55,15 +57,16 @@ def run_import(modules):
     return time.perf_counter() - start
 
 
-def measure(commands, repeats):
-    """Per command, the list of (timings, wall) of its runs; per import, its walls, taken in turn."""
-    runs = {command: [] for command in commands}
+def measure(commands, roots, repeats):
+    """Per root, per command, the list of (timings, wall) of its runs; per import, its walls; taken in turn."""
+    runs = {root: {command: [] for command in commands} for root in roots}
     imports = {modules: [] for modules in IMPORTS}
     for _ in range(repeats):
         for modules in IMPORTS:
             imports[modules].append(run_import(modules))
         for command in commands:
-            runs[command].append(run_command(command))
+            for root in roots:
+                runs[root][command].append(run_command(command, root))
     return runs, imports
 
 
@@ -128,13 +131,17 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=5, help="fresh runs of each command and import (default 5)")
     parser.add_argument("--quick", action="store_true", help=f"leave out `{SIX_BAR_DERIVE}`")
+    parser.add_argument("--against", type=Path, help="another checkout's sources, run in the same rounds (before)")
     arguments = parser.parse_args()
     commands = COMMANDS if arguments.quick else [*COMMANDS, SIX_BAR_DERIVE]
-    runs, imports = measure(commands, arguments.repeats)
+    roots = [ROOT] if arguments.against is None else [arguments.against.resolve(), ROOT]
+    runs, imports = measure(commands, roots, arguments.repeats)
     floor = statistics.median(imports[FLOOR])
     print(f"{arguments.repeats} fresh processes each; ms as median (min-max); "
-          f"floor = python -c \"import {FLOOR}\" = {floor * 1e3:.0f} ms\n")
-    print_commands(runs, floor)
+          f"floor = python -c \"import {FLOOR}\" = {floor * 1e3:.0f} ms")
+    for root in roots:
+        print(f"\nalgkin from {'this checkout' if root == ROOT else root}:")
+        print_commands(runs[root], floor)
     print_imports(imports)
     print_importtime(IMPORTTIME_COMMAND)
     return 0

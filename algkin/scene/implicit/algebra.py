@@ -42,6 +42,6 @@ def reduce_exact_on_circles(poly: flint.fmpq_mpoly, inputs: Circles) -> flint.fm
         by_half: dict[int, dict[tuple[int, ...], flint.fmpq]] = {}  # k // 2 -> the terms with s**(k % 2)
         for exponents, coefficient in poly.to_dict().items():
             half, rest = divmod(exponents[at], 2)
-            by_half.setdefault(half, {})[(*exponents[:at], rest, *exponents[at + 1:])] = coefficient
+            by_half.setdefault(half, {})[exponents[:at] + (rest,) + exponents[at + 1:]] = coefficient
         poly = sum((ring.from_dict(terms) * one_minus_c2**half for half, terms in by_half.items()), ring.from_dict({}))
     return poly
