@@ -34,7 +34,7 @@ from ...scene.implicit import DyadSpec
 from ...scene.implicit.algebra import Circles
 from ...scene.implicit.base import FloatArray, Point
 from ..algebra import reducer, tidy_product, tidy_ratio
-from .base import BranchAlgebra, Fix, HalfAngle, StableEvaluator, Substitution
+from .base import BranchAlgebra, Fix, HalfAngle, Mode, StableEvaluator, Substitution
 from .floats import heron_area, stable_quadratic
 
 __all__ = ["DyadAlgebra"]
@@ -48,7 +48,7 @@ class DyadAlgebra(BranchAlgebra):
 
     spec: DyadSpec
 
-    def closed_form(self, substitution: Substitution, *, sigma: int, inputs: Circles) -> tuple[Point, sympy.Expr]:
+    def modes(self, substitution: Substitution, *, inputs: Circles) -> Mode:
         reduce = reducer(substitution, inputs)
         px, py = (reduce(v) for v in self.spec.base_p)
         qx, qy = (reduce(v) for v in self.spec.base_q)
@@ -57,8 +57,12 @@ class DyadAlgebra(BranchAlgebra):
         l1, l2 = self.spec.lengths
         along = tidy_ratio((l1**2 - l2**2 + dist2) / (2 * dist2))
         disc = tidy_product(reduce((l1 + l2) ** 2 - dist2), reduce(dist2 - (l1 - l2) ** 2))
-        across = sigma * (sympy.sqrt(disc) / 2) / tidy_product(dist2)
-        return (px + along * dx - across * dy, py + along * dy + across * dx), disc
+        spread = tidy_product(dist2)
+
+        def mode(sigma: int) -> tuple[Point, sympy.Expr]:
+            across = sigma * (sympy.sqrt(disc) / 2) / spread
+            return (px + along * dx - across * dy, py + along * dy + across * dx), disc
+        return mode
 
     def toggle_conditions(self) -> dict[str, sympy.Expr]:
         (px, py), (qx, qy) = self.spec.base_p, self.spec.base_q

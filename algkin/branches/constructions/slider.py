@@ -34,7 +34,7 @@ from ...scene.implicit import SliderSpec
 from ...scene.implicit.algebra import Circles
 from ...scene.implicit.base import FloatArray, Point
 from ..algebra import reducer, tidy_product, tidy_sqrt
-from .base import BranchAlgebra, Fix, HalfAngle, StableEvaluator, Substitution
+from .base import BranchAlgebra, Fix, HalfAngle, Mode, StableEvaluator, Substitution
 
 __all__ = ["SliderAlgebra"]
 
@@ -45,7 +45,7 @@ class SliderAlgebra(BranchAlgebra):
 
     spec: SliderSpec
 
-    def closed_form(self, substitution: Substitution, *, sigma: int, inputs: Circles) -> tuple[Point, sympy.Expr]:
+    def modes(self, substitution: Substitution, *, inputs: Circles) -> Mode:
         reduce = reducer(substitution, inputs)
         px, py = (reduce(v) for v in self.spec.through)
         qx, qy = (reduce(v) for v in self.spec.center)
@@ -60,8 +60,12 @@ class SliderAlgebra(BranchAlgebra):
             disc = tidy_product(reduce(self.spec.length * norm - cross), reduce(self.spec.length * norm + cross))
         else:
             disc = tidy_product(reduce(self.spec.length**2 * norm2 - cross**2))
-        along = (dot + sigma * tidy_sqrt(disc)) / norm2
-        return (px + along * dx, py + along * dy), disc
+        root = tidy_sqrt(disc)
+
+        def mode(sigma: int) -> tuple[Point, sympy.Expr]:
+            along = (dot + sigma * root) / norm2
+            return (px + along * dx, py + along * dy), disc
+        return mode
 
     def toggle_conditions(self) -> dict[str, sympy.Expr]:
         (px, py), (qx, qy), (dx, dy) = self.spec.through, self.spec.center, self.spec.direction
