@@ -23,14 +23,14 @@ from __future__ import annotations
 import contextvars
 import time
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 from ..errors import BudgetExceeded, SceneError
 from ..runtime import progress
 from ..scene import Scene, load_scene
-from .analyses import ANALYSES, Design
+from .analyses import ANALYSES, Analysis, Design
 
 if TYPE_CHECKING:
     from ..runtime.budget import Deadline
@@ -44,12 +44,19 @@ REASON_CHARS = 400  # a failure's reason is one line, at most this long
 
 @dataclass(frozen=True)
 class Job:
-    """What every design of a sweep shares: the scene, the analyses by name, the traced point, the budget."""
+    """What every design of a sweep shares: the scene, the analyses by name, the traced point, the budget.
+
+    The analyses themselves (``table``) are looked up where the job is made and travel with it: a
+    Dask worker process has the built-in table only, not what ``register`` added in this one."""
 
     scene: Scene
     analyses: tuple[str, ...]
     point: str
     budget: float | None = None  # seconds per design
+    table: Mapping[str, Analysis] = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "table", {name: ANALYSES[name] for name in self.analyses})
 
 
 def columns(job: Job, names: Sequence[str]) -> dict[str, str]:
@@ -59,7 +66,7 @@ def columns(job: Job, names: Sequence[str]) -> dict[str, str]:
         found.update({f"param_{name}": "string", f"param_{name}_float": "float64"})
     found.update({"status": "string", "reason": "string"})
     for name in job.analyses:
-        found.update(ANALYSES[name].columns)
+        found.update(job.table[name].columns)
     found.update({f"{TIMING_PREFIX}{stage}": "float64" for stage in ("assembly", *job.analyses, "total")})
     return found
 
@@ -117,7 +124,7 @@ def _analyse(job: Job, values: Mapping[str, Fraction], deadline: Deadline | None
             deadline.note(f"running the {name} analysis")
         begun = time.perf_counter()
         try:
-            found.update(ANALYSES[name](design))
+            found.update(job.table[name](design))
         except Exception as err:  # noqa: BLE001 - the other analyses still run; the first failure is said
             if found["status"] == "ok":
                 found.update(status="failed", reason=_one_line(f"{name}: {type(err).__name__}: {err}"))

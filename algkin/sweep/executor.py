@@ -1,27 +1,33 @@
 """Where a sweep's chunks are evaluated: in this process, or on Dask distributed.
 
 ``serial`` runs each chunk here. ``dask`` starts a ``LocalCluster`` of worker processes (one
-thread each) on this machine, or connects to the scheduler at an address; either way each
-chunk is one task, and its rows come back here, where they are written (``done``). The
-cluster this module started is closed however the run ends (an error, Ctrl-C as the
-command line's exception): its worker processes are stopped and joined. dask and
-distributed (the ``sweep`` extra) are imported only here, only for a Dask run.
+thread each) on this machine, or connects to the scheduler at an address (a cluster started
+with ``dask scheduler`` and ``dask worker``, on other machines); either way each chunk is one
+task, and its rows come back here, where they are written (``done``): the workers write no
+file. The scheduler and the workers unpickle each chunk's job (the scene, the analyses), so
+they need algkin too; each worker checks that its algkin is this process's version, and a
+chunk that fails on the cluster (not a design: a design's failure is its row) stops the run
+in one line. The cluster this module started is closed however the run ends (an error,
+Ctrl-C as the command line's exception): its worker processes are stopped and joined. dask
+and distributed (the ``sweep`` extra) are imported only here, only for a Dask run.
 """
 
 from __future__ import annotations
 
 import contextlib
 import logging
+import multiprocessing
 import signal
+import sys
 import threading
 import warnings
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
-from ..errors import UsageError
+from ..errors import AlgkinError, ComputationError, UsageError
 from .design import Job, evaluate_chunk
 
-__all__ = ["EXECUTORS", "run_chunks", "dask_modules", "dask_setup"]
+__all__ = ["EXECUTORS", "run_chunks", "on_worker", "dask_modules", "dask_setup"]
 
 EXECUTORS = ("dask", "serial")
 CONNECT_SECONDS = 10  # how long to wait for the scheduler at --scheduler ADDRESS
@@ -31,17 +37,53 @@ def run_chunks(job: Job, chunks: Sequence[tuple[int, list]], done: Callable[[int
                executor: str = "dask", workers: int | None = None, scheduler: str | None = None,
                ready: Callable[[], None] = lambda: None) -> None:
     """Evaluate every ``(index, designs)`` chunk and hand each one's rows to ``done(index, rows)`` as it ends;
-    ``ready()`` first, once the executor is (a scheduler that cannot be reached: nothing written)."""
+    ``ready()`` first, once the executor is (a scheduler that cannot be reached: nothing written).
+    On Dask, each worker's algkin must be this process's version."""
     if executor == "serial":
         ready()
         for index, designs in chunks:
             done(*evaluate_chunk(job, index, designs))
         return
+    version = _version()
     with _client(workers, scheduler) as (client, as_completed):
         ready()
-        futures = [client.submit(evaluate_chunk, job, index, designs, pure=False) for index, designs in chunks]
+        futures = {client.submit(on_worker, version, job, index, designs, pure=False): index
+                   for index, designs in chunks}
         for future in as_completed(futures):
-            done(*future.result())
+            try:
+                rows = future.result()
+            except AlgkinError:
+                raise  # ours, said in one line (a worker's algkin of another version)
+            except Exception as err:  # noqa: BLE001 - the cluster's failure, said in one line, not its traceback
+                raise ComputationError(f"chunk {futures[future]} failed on the Dask cluster: "
+                                       f"{type(err).__name__}: {' '.join(str(err).split())}") from None
+            done(*rows)
+
+
+def on_worker(version: str, job: Job, index: int, designs: Sequence[tuple[int, Any]]) -> tuple[int, list]:
+    """A chunk evaluated by a Dask worker (``evaluate_chunk``), once this process's algkin is found to be
+    ``version`` (ComputationError if not) and allowed children.
+
+    ``dask worker`` starts daemonic worker processes, which multiprocessing refuses children lest
+    they outlive them; the child a design's budget runs in (and an interpolation's second prime)
+    cannot: the kernel ends it with its parent (``algkin.runtime.child.bind_to_parent``), and the
+    parent kills and joins it however the design ends."""
+    found = _version()
+    if found != version:
+        from distributed import get_worker
+
+        raise ComputationError(f"the Dask worker at {get_worker().address} has algkin {found}, this command "
+                               f"{version}: every worker needs the same version")
+    process = multiprocessing.current_process()
+    if process.daemon:
+        process.daemon = False
+    return evaluate_chunk(job, index, designs)
+
+
+def _version() -> str:
+    # the package's version from the facade, loaded before any of its subpackages (importing it
+    # here would be an import of the facade's lazy names, the layers above, for the linter)
+    return str(sys.modules["algkin"].__version__)
 
 
 def dask_modules() -> tuple[Any, Any]:
@@ -59,9 +101,8 @@ def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, A
     """A Dask client on a LocalCluster of ``workers`` processes, or on the scheduler at ``scheduler``;
     everything it started closed when the block ends."""
     dask, distributed = dask_modules()
-    # Workers that may fork (a per-design budget runs in a forked child): not daemonic. Each runs
-    # this module's dask_setup as it starts.
-    settings = {"distributed.worker.daemon": False, "distributed.admin.tick.limit": "1h",
+    # Each worker of our LocalCluster runs this module's dask_setup as it starts.
+    settings = {"distributed.admin.tick.limit": "1h",
                 "logging.distributed": "critical", "distributed.worker.preload": [__name__]}
     with dask.config.set(settings), _quiet_logs(), warnings.catch_warnings(), contextlib.ExitStack() as stack:
         warnings.simplefilter("ignore")  # dask's warnings are no line of ours on stderr either
