@@ -27,4 +27,5 @@ def numpy_function(arguments: Iterable[sympy.Symbol],
     >>> numpy_function([x], [sympy.sqrt(x) / 3, x**2])(np.array([4.0, 9.0]))
     [array([0.66666667, 1.        ]), array([16., 81.])]
     """
-    return sympy.lambdify(arguments, expr, _NUMPY, cse=cse)
+    function: Callable[..., Any] = sympy.lambdify(arguments, expr, _NUMPY, cse=cse)
+    return function
