@@ -46,6 +46,7 @@ test-slow: $(STAMP) browser
 bench: $(STAMP)
 	@status=0; $(BIN)/algkin bench --full --out bench-results || status=$$?; \
 	$(BIN)/python benchmarks/bench_verify.py || status=$$?; \
+	$(BIN)/python benchmarks/bench_cold.py && \
 	$(BIN)/python benchmarks/bench_evaluation.py && \
 	$(BIN)/python benchmarks/bench_compiled.py && \
 	$(BIN)/python benchmarks/bench_reference.py && \

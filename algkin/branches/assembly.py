@@ -6,6 +6,7 @@ import numpy as np
 import sympy
 
 from ..errors import SceneError
+from ..evaluate.lambdified import numpy_function
 from ..scene import Compiled
 from ..scene.implicit.base import FloatArray
 from ..system import input_values, symbol
@@ -60,5 +61,5 @@ def _on_grid(args: list[sympy.Symbol], expression: sympy.Expr, angles: dict[symp
         # float's range (1/10**357 is 0.0): expanded, each coefficient is one exact rational again
         expression = sympy.expand(expression)
     with np.errstate(all="ignore"):  # a pole (an input where a base meets a base) or a nan is no real value
-        values = sympy.lambdify(args, expression, "numpy")(*angles.values())
+        values = numpy_function(args, expression)(*angles.values())
         return np.nan_to_num(np.broadcast_to(np.asarray(values, dtype=np.float64), (GRID,)), nan=-np.inf)

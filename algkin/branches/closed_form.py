@@ -22,7 +22,7 @@ from ..scene import Compiled
 from ..scene.implicit.algebra import Circles, reduce_on_circles
 from ..system import symbol
 from .algebra import readable, tidy_ratio
-from .constructions import algebra_of
+from .constructions import Mode, algebra_of
 
 __all__ = ["Branch", "closed_forms"]
 
@@ -76,20 +76,25 @@ def closed_forms(compiled: Compiled) -> list[Branch]:
     """Every branch (all label combinations of the dyads and sliders) of ``compiled``; a point
     without modes of its own (an inversor's second intersection) follows the others."""
     moded = [spec for spec in compiled.implicit if spec.labels]
-    return [_branch(compiled, dict(zip((spec.point for spec in moded), labels)))
+    built: dict[tuple[int, tuple[str, ...]], Mode] = {}  # branches sharing the labels before a point share its algebra
+    return [_branch(compiled, dict(zip((spec.point for spec in moded), labels)), built)
             for labels in itertools.product(*(spec.labels for spec in moded))]
 
 
-def _branch(compiled: Compiled, chosen: dict[str, str]) -> Branch:
-    """The branch with the label ``chosen[point]`` for each point with modes, each built on the ones before it."""
+def _branch(compiled: Compiled, chosen: dict[str, str], built: dict[tuple[int, tuple[str, ...]], Mode]) -> Branch:
+    """The branch with the label ``chosen[point]`` for each point with modes, each built on the ones before
+    it; ``built`` holds each point's modes by the labels before it, for the other branches."""
     inputs, specs = compiled.circles, compiled.implicit
     substitution: dict[sympy.Symbol, sympy.Expr] = {}
     discriminants: dict[str, sympy.Expr] = {}
     squares: set[str] = set()
-    for spec in specs:
+    for index, spec in enumerate(specs):
         sigma = spec.sign(chosen[spec.point]) if spec.labels else 1
         algebra = algebra_of(spec)
-        (x, y), discriminants[spec.point] = algebra.closed_form(substitution, sigma=sigma, inputs=inputs)
+        before = (index, tuple(chosen[s.point] for s in specs[:index] if s.labels))
+        if before not in built:
+            built[before] = algebra.modes(substitution, inputs=inputs)
+        (x, y), discriminants[spec.point] = built[before](sigma)
         if algebra.square:
             squares.add(spec.point)
         substitution.update({symbol(spec.unknowns[0]): x, symbol(spec.unknowns[1]): y})

@@ -81,3 +81,18 @@ def test_closed_forms_keep_integer_coefficients_inside_their_factors(scene):
                 numbers = [term.as_coeff_Mul()[0] for term in add.args]
                 assert all(n.is_Integer for n in numbers), (scene, add)
         assert "/" not in branch.valid_when and not branch.valid_when.startswith("(4*")
+
+
+def test_branches_share_the_algebra_before_their_labels_differ(monkeypatch):
+    """A six-bar's two dyads on four branches: the first dyad's algebra once, the second's once per
+    label of the first (3 reductions of a dyad's base, not 8), the modes built from them."""
+    from algkin.branches.constructions import dyad
+
+    reductions = []
+    reducer = dyad.reducer
+    monkeypatch.setattr(dyad, "reducer", lambda *args: reductions.append(1) or reducer(*args))
+    branches = closed_forms(compile_scene(load_scene("stephenson-iii"), ["P"]))
+    assert [b.label for b in branches] == ["B:left F:left", "B:left F:right", "B:right F:left", "B:right F:right"]
+    assert len(reductions) == 3
+    left, right = branches[0].values, branches[1].values
+    assert left["B_x"] == right["B_x"] and left["F_x"] != right["F_x"]

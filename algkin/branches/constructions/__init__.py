@@ -12,14 +12,14 @@ construction is one more spec in the scene layer and one more case here.
 """
 
 from ...scene.implicit import DyadSpec, ImplicitSpec, MeetSpec, MirrorSpec, SliderSpec
-from .base import BranchAlgebra, Fix, HalfAngle, StableEvaluator, Substitution
+from .base import BranchAlgebra, Fix, HalfAngle, Mode, StableEvaluator, Substitution
 from .dyad import DyadAlgebra
 from .meet import MeetAlgebra
 from .mirror import MirrorAlgebra
 from .slider import SliderAlgebra
 
 __all__ = ["algebra_of", "BranchAlgebra", "DyadAlgebra", "MeetAlgebra", "MirrorAlgebra", "SliderAlgebra", "StableEvaluator",
-           "Substitution", "Fix", "HalfAngle"]
+           "Substitution", "Mode", "Fix", "HalfAngle"]
 
 
 def algebra_of(spec: ImplicitSpec) -> BranchAlgebra:

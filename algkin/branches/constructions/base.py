@@ -13,9 +13,10 @@ import sympy
 from ...scene.implicit.algebra import Circles
 from ...scene.implicit.base import FloatArray, Point
 
-__all__ = ["BranchAlgebra", "StableEvaluator", "Substitution", "Fix", "HalfAngle"]
+__all__ = ["BranchAlgebra", "StableEvaluator", "Substitution", "Mode", "Fix", "HalfAngle"]
 
 Substitution = Mapping[sympy.Symbol, sympy.Expr]  # earlier points' unknowns -> their closed forms
+Mode = Callable[[int], tuple[Point, sympy.Expr]]  # sigma -> ((x, y), discriminant) on that mode
 Fix = Callable[[sympy.Expr], sympy.Expr]  # dimensions at their defaults, reduced on the circles
 HalfAngle = tuple[FloatArray, FloatArray]  # an input's t = tan(theta/2) and w = 1/(1 + t**2)
 
@@ -38,13 +39,17 @@ class BranchAlgebra(ABC):
     # point exists where ``f != 0`` (a meet's determinant), which ``valid_when`` says
     square: ClassVar[bool] = False
 
-    @abstractmethod
     def closed_form(self, substitution: Substitution, *, sigma: int, inputs: Circles) -> tuple[Point, sympy.Expr]:
         """``((x, y), discriminant)`` on the mode ``sigma``, real where the discriminant is >= 0.
 
         Earlier points' unknowns are replaced by ``substitution`` (their closed forms), and
         polynomials are reduced on the ``inputs``' circles.
         """
+        return self.modes(substitution, inputs=inputs)(sigma)
+
+    @abstractmethod
+    def modes(self, substitution: Substitution, *, inputs: Circles) -> Mode:
+        """``closed_form`` of each mode ``sigma``: the algebra the two modes share done once."""
 
     @abstractmethod
     def toggle_conditions(self) -> dict[str, sympy.Expr]:

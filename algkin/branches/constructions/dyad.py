@@ -29,11 +29,12 @@ import attrs
 import numpy as np
 import sympy
 
+from ...evaluate.lambdified import numpy_function
 from ...scene.implicit import DyadSpec
 from ...scene.implicit.algebra import Circles
 from ...scene.implicit.base import FloatArray, Point
 from ..algebra import reducer, tidy_product, tidy_ratio
-from .base import BranchAlgebra, Fix, HalfAngle, StableEvaluator, Substitution
+from .base import BranchAlgebra, Fix, HalfAngle, Mode, StableEvaluator, Substitution
 from .floats import heron_area, stable_quadratic
 
 __all__ = ["DyadAlgebra"]
@@ -47,7 +48,7 @@ class DyadAlgebra(BranchAlgebra):
 
     spec: DyadSpec
 
-    def closed_form(self, substitution: Substitution, *, sigma: int, inputs: Circles) -> tuple[Point, sympy.Expr]:
+    def modes(self, substitution: Substitution, *, inputs: Circles) -> Mode:
         reduce = reducer(substitution, inputs)
         px, py = (reduce(v) for v in self.spec.base_p)
         qx, qy = (reduce(v) for v in self.spec.base_q)
@@ -56,8 +57,12 @@ class DyadAlgebra(BranchAlgebra):
         l1, l2 = self.spec.lengths
         along = tidy_ratio((l1**2 - l2**2 + dist2) / (2 * dist2))
         disc = tidy_product(reduce((l1 + l2) ** 2 - dist2), reduce(dist2 - (l1 - l2) ** 2))
-        across = sigma * (sympy.sqrt(disc) / 2) / tidy_product(dist2)
-        return (px + along * dx - across * dy, py + along * dy + across * dx), disc
+        spread = tidy_product(dist2)
+
+        def mode(sigma: int) -> tuple[Point, sympy.Expr]:
+            across = sigma * (sympy.sqrt(disc) / 2) / spread
+            return (px + along * dx - across * dy, py + along * dy + across * dx), disc
+        return mode
 
     def toggle_conditions(self) -> dict[str, sympy.Expr]:
         (px, py), (qx, qy) = self.spec.base_p, self.spec.base_q
@@ -78,12 +83,12 @@ class _Stable:
         (px, py), (qx, qy) = dyad.base_p, dyad.base_q
         base = [fix(e) for e in ((px + qx) / 2, (py + qy) / 2, qx - px, qy - py)]  # midpoint, exactly
         self.unknowns = dyad.unknowns
-        self.base = sympy.lambdify(arguments, base, "numpy", cse=True)
+        self.base = numpy_function(arguments, base, cse=True)
         l1, l2 = (fix(v) for v in dyad.lengths)
         self.sigma = sigma
         # a length input (an actuator, a string) moves a length: evaluated per sample then
         self.moving = None if l1.is_number and l2.is_number else \
-            sympy.lambdify(arguments, [l1, l2, l1**2 - l2**2], "numpy")
+            numpy_function(arguments, [l1, l2, l1**2 - l2**2])
         self.l1, self.l2, self.lengths_term = (float(v) if v.is_number else 0.0 for v in (l1, l2, l1**2 - l2**2))
         self.factored = _factored_span(fix(base[2] ** 2 + base[3] ** 2), l1, l2, half_angles) \
             if self.moving is None else None

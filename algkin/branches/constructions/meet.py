@@ -24,11 +24,12 @@ import attrs
 import numpy as np
 import sympy
 
+from ...evaluate.lambdified import numpy_function
 from ...scene.implicit import MeetSpec
 from ...scene.implicit.algebra import Circles, reduce_on_circles
-from ...scene.implicit.base import FloatArray, Point
+from ...scene.implicit.base import FloatArray
 from ..algebra import reducer, tidy_ratio
-from .base import BranchAlgebra, Fix, HalfAngle, StableEvaluator, Substitution
+from .base import BranchAlgebra, Fix, HalfAngle, Mode, StableEvaluator, Substitution
 
 __all__ = ["MeetAlgebra"]
 
@@ -40,14 +41,15 @@ class MeetAlgebra(BranchAlgebra):
     spec: MeetSpec
     square = True  # its discriminant is a square: the point exists where its base is not zero
 
-    def closed_form(self, substitution: Substitution, *, sigma: int, inputs: Circles) -> tuple[Point, sympy.Expr]:
+    def modes(self, substitution: Substitution, *, inputs: Circles) -> Mode:
         reduce = reducer(substitution, inputs)
         (a, b), (c, d) = ([[reduce(v) for v in point] for point in line] for line in (self.spec.first, self.spec.second))
         ux, uy, vx, vy = reduce(b[0] - a[0]), reduce(b[1] - a[1]), reduce(d[0] - c[0]), reduce(d[1] - c[1])
         determinant = reduce(vx * uy - vy * ux)
         along = reduce(vx * (c[1] - a[1]) - vy * (c[0] - a[0])) / determinant
         square = sympy.Pow(_numerator(determinant, inputs), 2, evaluate=False)
-        return (tidy_ratio(a[0] + along * ux), tidy_ratio(a[1] + along * uy)), square
+        point = (tidy_ratio(a[0] + along * ux), tidy_ratio(a[1] + along * uy))
+        return lambda sigma: (point, square)  # one point: no mode of its own
 
     def toggle_conditions(self) -> dict[str, sympy.Expr]:
         return {}  # parallel lines send the point to infinity: no two modes meet there
@@ -76,7 +78,7 @@ class _Stable:
         (a, b), (c, d) = meet.first, meet.second
         parts = (*a, b[0] - a[0], b[1] - a[1], d[0] - c[0], d[1] - c[1], c[0] - a[0], c[1] - a[1])
         self.unknowns = meet.unknowns
-        self.formula = sympy.lambdify(arguments, [fix(e) for e in parts], "numpy", cse=True)
+        self.formula = numpy_function(arguments, [fix(e) for e in parts], cse=True)
 
     def __call__(self, values: Sequence[FloatArray], half: Sequence[HalfAngle]) -> tuple[FloatArray, FloatArray]:
         ax, ay, ux, uy, vx, vy, wx, wy = self.formula(*values)

@@ -17,12 +17,13 @@ from collections.abc import Sequence
 import attrs
 import sympy
 
+from ...evaluate.lambdified import numpy_function
 from ...scene.implicit import MirrorSpec
 from ...scene.implicit.algebra import Circles
-from ...scene.implicit.base import FloatArray, Point
+from ...scene.implicit.base import FloatArray
 from ...scene.implicit.mirror import mirror_parts
 from ..algebra import reducer, tidy_ratio
-from .base import BranchAlgebra, Fix, HalfAngle, StableEvaluator, Substitution
+from .base import BranchAlgebra, Fix, HalfAngle, Mode, StableEvaluator, Substitution
 
 __all__ = ["MirrorAlgebra"]
 
@@ -33,7 +34,7 @@ class MirrorAlgebra(BranchAlgebra):
 
     spec: MirrorSpec
 
-    def closed_form(self, substitution: Substitution, *, sigma: int, inputs: Circles) -> tuple[Point, sympy.Expr]:
+    def modes(self, substitution: Substitution, *, inputs: Circles) -> Mode:
         reduce = reducer(substitution, inputs)
         (px, py), (qx, qy) = [[reduce(v) for v in point] for point in (self.spec.base_p, self.spec.base_q)]
         ox, oy = (reduce(v) for v in self.spec.other_at)
@@ -41,7 +42,8 @@ class MirrorAlgebra(BranchAlgebra):
         span = reduce(dx**2 + dy**2)
         l1, l2 = self.spec.lengths
         along = tidy_ratio((l1**2 - l2**2 + span) / span)  # twice the foot's fraction along d
-        return (px + along * dx - ox + px, py + along * dy - oy + py), span
+        point = (px + along * dx - ox + px, py + along * dy - oy + py)
+        return lambda sigma: (point, span)  # no mode of its own
 
     def toggle_conditions(self) -> dict[str, sympy.Expr]:
         return {}  # it meets ``other`` only where their circles touch: a toggle of the points they are built on
@@ -57,7 +59,7 @@ class _Stable:
 
     def __init__(self, mirror: MirrorSpec, *, fix: Fix, arguments: Sequence[sympy.Symbol]) -> None:
         self.unknowns = mirror.unknowns
-        self.formula = sympy.lambdify(arguments, [fix(e) for e in mirror_parts(mirror)], "numpy", cse=True)
+        self.formula = numpy_function(arguments, [fix(e) for e in mirror_parts(mirror)], cse=True)
 
     def __call__(self, values: Sequence[FloatArray], half: Sequence[HalfAngle]) -> tuple[FloatArray, FloatArray]:
         bx, by, dx, dy, along = self.formula(*values)

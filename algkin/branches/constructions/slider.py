@@ -29,11 +29,12 @@ import attrs
 import numpy as np
 import sympy
 
+from ...evaluate.lambdified import numpy_function
 from ...scene.implicit import SliderSpec
 from ...scene.implicit.algebra import Circles
 from ...scene.implicit.base import FloatArray, Point
 from ..algebra import reducer, tidy_product, tidy_sqrt
-from .base import BranchAlgebra, Fix, HalfAngle, StableEvaluator, Substitution
+from .base import BranchAlgebra, Fix, HalfAngle, Mode, StableEvaluator, Substitution
 
 __all__ = ["SliderAlgebra"]
 
@@ -44,7 +45,7 @@ class SliderAlgebra(BranchAlgebra):
 
     spec: SliderSpec
 
-    def closed_form(self, substitution: Substitution, *, sigma: int, inputs: Circles) -> tuple[Point, sympy.Expr]:
+    def modes(self, substitution: Substitution, *, inputs: Circles) -> Mode:
         reduce = reducer(substitution, inputs)
         px, py = (reduce(v) for v in self.spec.through)
         qx, qy = (reduce(v) for v in self.spec.center)
@@ -59,8 +60,12 @@ class SliderAlgebra(BranchAlgebra):
             disc = tidy_product(reduce(self.spec.length * norm - cross), reduce(self.spec.length * norm + cross))
         else:
             disc = tidy_product(reduce(self.spec.length**2 * norm2 - cross**2))
-        along = (dot + sigma * tidy_sqrt(disc)) / norm2
-        return (px + along * dx, py + along * dy), disc
+        root = tidy_sqrt(disc)
+
+        def mode(sigma: int) -> tuple[Point, sympy.Expr]:
+            along = (dot + sigma * root) / norm2
+            return (px + along * dx, py + along * dy), disc
+        return mode
 
     def toggle_conditions(self) -> dict[str, sympy.Expr]:
         (px, py), (qx, qy), (dx, dy) = self.spec.through, self.spec.center, self.spec.direction
@@ -88,7 +93,7 @@ class _Stable:
         self.fixed = dx.is_number and dy.is_number
         base = [fix(e) for e in (px, py, qx - px, qy - py)] + ([] if self.fixed else [dx, dy])
         self.unknowns = slider.unknowns
-        self.base = sympy.lambdify(arguments, base, "numpy", cse=True)
+        self.base = numpy_function(arguments, base, cse=True)
         length, norm2 = fix(slider.length), fix(dx**2 + dy**2)
         self.sigma, self.length, self.length2 = sigma, float(length), float(length**2)
         self.dx, self.dy = (float(dx), float(dy)) if self.fixed else (0.0, 0.0)

@@ -2,9 +2,10 @@
 
 from collections.abc import Sequence
 
+import flint
 import sympy
 
-__all__ = ["Circles", "reduce_on_circles"]
+__all__ = ["Circles", "reduce_on_circles", "reduce_exact_on_circles"]
 
 Circles = Sequence[tuple[sympy.Symbol, sympy.Symbol]]  # each input's (cos, sin) symbols
 
@@ -17,3 +18,30 @@ def reduce_on_circles(expr: sympy.Expr, inputs: Circles) -> sympy.Expr:
     for c, s in inputs:
         expr = sympy.expand(sympy.rem(expr, s**2 + c**2 - 1, s)) if expr.has(s) else expr
     return expr
+
+
+def reduce_exact_on_circles(poly: flint.fmpq_mpoly, inputs: Circles) -> flint.fmpq_mpoly | None:
+    """``reduce_on_circles`` on a python-flint polynomial, in its own ring: each ``s**k`` as
+    ``s**(k % 2) * (1 - c**2)**(k // 2)``, the remainder by ``s**2 + c**2 - 1`` in ``s``. None
+    where an input's sine is in the ring but not its cosine (sympy's reduction then).
+
+    >>> ring = flint.fmpq_mpoly_ctx.get(("c", "s", "x"), "lex")
+    >>> c, s, x = ring.gens()
+    >>> reduce_exact_on_circles(s**3 * x + c * s**2 - 1, [sympy.symbols("c s")])
+    -c^3 - c^2*s*x + c + s*x - 1
+    """
+    ring = poly.context()
+    names = [str(n) for n in ring.names()]
+    for c, s in inputs:
+        if str(s) not in names:
+            continue
+        if str(c) not in names:
+            return None
+        at = names.index(str(s))
+        one_minus_c2 = 1 - ring.gens()[names.index(str(c))] ** 2
+        by_half: dict[int, dict[tuple[int, ...], flint.fmpq]] = {}  # k // 2 -> the terms with s**(k % 2)
+        for exponents, coefficient in poly.to_dict().items():
+            half, rest = divmod(exponents[at], 2)
+            by_half.setdefault(half, {})[exponents[:at] + (rest,) + exponents[at + 1:]] = coefficient
+        poly = sum((ring.from_dict(terms) * one_minus_c2**half for half, terms in by_half.items()), ring.from_dict({}))
+    return poly

@@ -279,7 +279,6 @@ def _shown_groups(scene: Scene, args: argparse.Namespace) -> dict[str, object]:
 
 
 def _cmd_derive(args: argparse.Namespace) -> Outcome:
-    from ...branches import readable
     from ...derivation.pipeline import derive
 
     out = _full_forms_target(args)
@@ -287,14 +286,22 @@ def _cmd_derive(args: argparse.Namespace) -> Outcome:
     if together is not None:
         return _finish(args, out, *group_derive(args, together))
     result = derive(_scene_of(args), args.outputs, **_engine(args))
-    forms = [(f"eliminant of {u}, reduced on c^2 + s^2 = 1", p, "= 0") for u, p in result.eliminants_reduced.items()]
-    forms += [(f"{u}, branch {b.label}", readable(v), "") for b in result.branches for u, v in b.values.items()]
+    # the sympy forms only for LaTeX: reduced again and made readable, they cost seconds on a six-bar
+    forms = _derive_forms(result) if args.latex else []
     document: Document = result.to_json()
     code = _verdict(result.verification)
     if args.rates:
         document, rate_forms, rate_code = _rates(result, document, args)
         forms, code = forms + rate_forms, max(code, rate_code)
     return _finish(args, out, document, report_derive, forms, code)
+
+
+def _derive_forms(result: Derivation) -> list[Form]:
+    """derive's LaTeX forms: each eliminant reduced on the circles, each branch's closed forms."""
+    from ...branches import readable
+
+    forms = [(f"eliminant of {u}, reduced on c^2 + s^2 = 1", p, "= 0") for u, p in result.eliminants_reduced.items()]
+    return forms + [(f"{u}, branch {b.label}", readable(v), "") for b in result.branches for u, v in b.values.items()]
 
 
 def _rates(result: Derivation, document: Document, args: argparse.Namespace) -> tuple[Document, list[Form], int]:

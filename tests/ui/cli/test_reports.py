@@ -67,6 +67,21 @@ def test_latex_of_derive_curve_and_extremum(tmp_path):
     assert "\\sqrt{b^{2} + 160000} - 350" in minimum.stdout
 
 
+def test_derive_reduces_its_eliminants_once_without_latex(monkeypatch, capsys):
+    """The LaTeX forms (the eliminants reduced again, the closed forms made readable) only for --latex:
+    on a six-bar they were seconds of every derive."""
+    from algkin.derivation.results import Derivation
+    from algkin.ui.cli import main
+
+    reductions = []
+    reduced = Derivation.eliminants_reduced.fget
+    monkeypatch.setattr(Derivation, "eliminants_reduced",
+                        property(lambda result: reductions.append(1) or reduced(result)))
+    assert main(["derive", "chebyshev-lambda", "--outputs", "B", "--samples", "0", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["eliminants_reduced"]
+    assert len(reductions) == 1  # the JSON's
+
+
 def test_latex_with_json_is_refused(tmp_path):
     for args in (["derive", "chebyshev-lambda"], ["curve", "chebyshev-lambda", "--point", "P"],
                  ["extremum", "arm-string", "--of", "AB"]):

@@ -1,0 +1,32 @@
+"""reduce_exact_on_circles: python-flint's reduction on the inputs' circles, the same as sympy's remainder."""
+
+import flint
+
+from algkin.scene.implicit.algebra import reduce_exact_on_circles, reduce_on_circles
+from algkin.system import symbol
+from algkin.system.convert import to_sympy
+
+RING = flint.fmpq_mpoly_ctx.get(("c_a", "s_a", "c_b", "s_b", "x"), "lex")
+CIRCLES = [(symbol("c_a"), symbol("s_a")), (symbol("c_b"), symbol("s_b"))]  # the symbols to_sympy gives
+
+
+def test_by_hand():
+    # s**4 = (1 - c**2)**2 and s**3 = s (1 - c**2) where c**2 + s**2 = 1
+    ca, sa, _, _, x = RING.gens()
+    reduced = reduce_exact_on_circles(sa**4 + 3 * sa**3 * x - flint.fmpq(1, 2), CIRCLES)
+    assert reduced == (1 - ca**2) ** 2 + 3 * sa * (1 - ca**2) * x - flint.fmpq(1, 2)
+
+
+def test_as_sympys_remainder_on_two_circles():
+    ca, sa, cb, sb, x = RING.gens()
+    poly = (sa**3 * cb - 2 * sb**2 * x + flint.fmpq(3, 7) * ca * sa**2) ** 3 + sb**5 * sa**4 - 11
+    expected = reduce_on_circles(to_sympy(poly, RING), CIRCLES)
+    assert to_sympy(reduce_exact_on_circles(poly, CIRCLES), RING) == expected
+
+
+def test_a_sine_without_its_cosine_is_left_to_sympy():
+    ring = flint.fmpq_mpoly_ctx.get(("s_a", "x"), "lex")
+    s, x = ring.gens()
+    assert reduce_exact_on_circles(s**2 + x, CIRCLES) is None
+    x = flint.fmpq_mpoly_ctx.get(("c_a", "x"), "lex").gens()[1]
+    assert reduce_exact_on_circles(x**2, CIRCLES) == x**2  # no sine: nothing to reduce
