@@ -217,7 +217,8 @@ def _four_json(result: FourPoses, digits: int) -> dict[str, Any]:
 def _five_json(result: FivePoses, digits: int) -> dict[str, Any]:
     return {"poses": _poses(result.poses), "complex_count": result.complex_count,
             "burmester": [{"centre": _pair(p.centre, digits), "circle": _pair(p.circle, digits)}
-                          for p in result.pairs]}
+                          for p in result.pairs],
+            "excluded": [{"factor": factor, "reason": reason} for factor, reason in result.excluded]}
 
 
 def _function_json(result: FunctionSynthesis, digits: int) -> dict[str, Any]:
@@ -227,6 +228,8 @@ def _function_json(result: FunctionSynthesis, digits: int) -> dict[str, Any]:
         return {"cos": _text(angle[0], digits), "sin": _text(angle[1], digits), "degrees": float(degrees.mid())}
 
     return {"complex_count": result.complex_count, "real_count": result.real_count,
+            "excluded": [{"reason": e.reason, "complex_count": e.complex_count, "real_count": e.real_count,
+                          "counted": e.solutions} for e in result.excluded],
             "solutions": [{"lengths": {k: _text(getattr(s, k), digits)
                                        for k in ("ground", "crank", "coupler", "rocker")},
                            "start": {"input": start(s.start_input), "output": start(s.start_output)}}
@@ -235,6 +238,8 @@ def _function_json(result: FunctionSynthesis, digits: int) -> dict[str, Any]:
 
 def _path_json(result: PathSynthesis, digits: int) -> dict[str, Any]:
     return {"complex_count": result.complex_count, "real_count": result.real_count,
+            "excluded": [{"factor": e.factor, "degree": e.degree, "multiplicity": e.multiplicity, "reason": e.reason}
+                         for e in result.excluded],
             "solutions": [{"crank_joint": _pair(s.crank_joint, digits), "rocker_joint": _pair(s.rocker_joint, digits),
                            "lengths": {"crank": _text(s.crank, digits), "coupler": _text(s.coupler, digits),
                                        "rocker": _text(s.rocker, digits)}}

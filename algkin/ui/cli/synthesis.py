@@ -34,7 +34,8 @@ def add_command(commands: Subcommands, command: Callable[[Subcommands, str, str]
     synthesize = command(commands, "synthesize", "four-bars from wanted poses (motion), angle pairs (function) or "
                                                  "path points (path): every solution, certified; scene files written")
     synthesize.add_argument("kind", choices=KINDS, help="what the file asks for")
-    synthesize.add_argument("file", help="the synthesis file (.toml): poses, pairs or points, exact")
+    synthesize.add_argument("file", help="the synthesis file (.toml): poses, pairs or points, exact; or an example's "
+                                         "name (fourbar-poses, fourbar-pairs, three-pairs, straight-line-path)")
     synthesize.add_argument("--out", metavar="DIR", help="write each mechanism's scene file into DIR")
     synthesize.add_argument("--plot", metavar="FILE",
                             help="draw the solutions with the poses or points (.png/.svg/.pdf)")
@@ -116,6 +117,10 @@ def report_synthesis(d: Document) -> str:
         span = m["transmission_range"]
         lines.append(f"  {m['scene']}: {m['grashof'] or 'not a four-bar class'}"
                      + (f", transmission {span[0]:.1f}-{span[1]:.1f} deg" if span else "") + f"; {verdict}")
+    for left in d.get("excluded", []):
+        what = f"the roots of {left['factor']}" if "factor" in left else \
+            f"{left['complex_count']} solution(s), {left['real_count']} real"
+        lines.append(f"  left out: {what}: {left['reason']}")
     lines += [f"wrote {path}" for path in d.get("written", [])]
     if d.get("plot"):
         lines.append(f"wrote {d['plot']}")

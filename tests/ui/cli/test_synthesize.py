@@ -166,3 +166,15 @@ def test_the_drawn_matches_lie_on_the_circle_curve():
     for _, (cx, cy) in matches:  # the first pose is the identity: placed is the moving frame's point
         value = sum(float(c) * cx ** int(m[0]) * cy ** int(m[1]) for m, c in zip(circle.monoms(), circle.coeffs()))
         assert abs(value) < 1e-6 * scale * (1 + cx * cx + cy * cy) ** 1.5
+
+
+def test_problem_7_says_every_factor_it_left_out(capsys):
+    # Morgan and Wampler's Problem 7: 33 solutions, 15 real (PHCpack's documentation); the eliminant in
+    # t1 has degree 72 (the resultant of two polynomials of degree (6, 6) in t1, t2 after the circle
+    # points (1 + t1**2)(1 + t2**2) are divided out of each (8, 8): 2 * 6 * 6), so what is left out
+    # accounts for 72 - 33 = 39 of it
+    code, text, _ = run(capsys, "synthesize", "path", "straight-line-path", "--json", "--quiet")
+    document = json.loads(text)
+    assert code == 0 and (document["complex_count"], document["real_count"]) == (33, 15)
+    assert sum(e["degree"] * e["multiplicity"] for e in document["excluded"]) == 72 - 33
+    assert all(e["reason"] for e in document["excluded"])
