@@ -44,7 +44,7 @@ import sympy
 
 from ..eliminate.group import GroupSolution, Polynomial, modes, solve_group
 from ..eliminate.group.records import Values
-from ..eliminate.group.algebra import coefficients
+from ..eliminate.group.algebra import coefficients, primitive
 from ..errors import ComputationError, UsageError
 from ..system.roots import RealRoot
 from .data import Angle, Point, Pose
@@ -201,20 +201,7 @@ def _equations(poses: Sequence[Pose]) -> list[flint.fmpq_mpoly]:
         return (px - big_x)**2 + (py - big_y)**2
 
     first = squared(poses[0])
-    return [_primitive(squared(pose) - first) for pose in poses[1:]]
-
-
-def _primitive(poly: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
-    """``poly`` times the rational that makes its coefficients coprime integers, the lex-leading one positive."""
-    coeffs = poly.coeffs()
-    denominators = flint.fmpz(1)
-    for c in coeffs:
-        denominators = denominators.lcm(c.q)
-    numerators = flint.fmpz(0)
-    for c in coeffs:
-        numerators = numerators.gcd(c.p * (denominators // c.q))
-    scale = flint.fmpq(denominators) / numerators
-    return poly * (-scale if coeffs[0] < 0 else scale)
+    return [primitive(squared(pose) - first) for pose in poses[1:]]
 
 
 def _rows(equations: Sequence[flint.fmpq_mpoly], solve_for: tuple[str, str]) -> list[list[flint.fmpq_mpoly]]:
@@ -234,7 +221,7 @@ def _curve(equations: Sequence[flint.fmpq_mpoly], *, solve_for: tuple[str, str],
     if determinant.is_zero():  # every pose a turn about one point does it, refused by _check_poses; no other known
         raise ComputationError(f"the {'-'.join(names)} curve vanishes identically")
     home = flint.fmpq_mpoly_ctx.get(names, "lex")
-    return Polynomial.of(_primitive(determinant).project_to_context(home))
+    return Polynomial.of(primitive(determinant).project_to_context(home))
 
 
 def _matched(poses: Sequence[Pose], point: Point, *, known: tuple[str, str], unknown: tuple[str, str],

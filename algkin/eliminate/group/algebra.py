@@ -17,7 +17,8 @@ of degree 1: ``a*x + b`` with ``a``, ``b`` free of ``x``, so ``x = -b/a`` on the
 
 import flint
 
-__all__ = ["coefficients", "from_coefficients", "pseudo_remainder", "linear_relation", "univariate"]
+__all__ = ["coefficients", "from_coefficients", "pseudo_remainder", "linear_relation", "univariate", "primitive",
+           "primitive_scale"]
 
 
 def coefficients(poly: flint.fmpq_mpoly, var: str) -> list[flint.fmpq_mpoly]:
@@ -122,3 +123,27 @@ def univariate(poly: flint.fmpq_mpoly, var: str) -> flint.fmpq_poly:
     x^2 + (-2)
     """
     return flint.fmpq_poly([c.coeffs()[0] if not c.is_zero() else 0 for c in coefficients(poly, var)])
+
+
+def primitive_scale(poly: flint.fmpq_mpoly) -> flint.fmpq:
+    """The number that makes ``poly`` primitive: integer coefficients, gcd 1, the lex-leading one positive."""
+    coeffs = poly.coeffs()
+    denominators = flint.fmpz(1)
+    for c in coeffs:
+        denominators = denominators.lcm(c.q)
+    numerators = flint.fmpz(0)
+    for c in coeffs:
+        numerators = numerators.gcd(c.p * (denominators // c.q))
+    scale = flint.fmpq(denominators) / numerators
+    return -scale if coeffs[0] < 0 else scale
+
+
+def primitive(poly: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
+    """``poly`` made primitive (``primitive_scale``).
+
+    >>> ctx = flint.fmpq_mpoly_ctx.get(("x", "y"), "lex")
+    >>> x, y = ctx.gens()
+    >>> str(primitive(-x / 2 + y / 3))
+    '3*x - 2*y'
+    """
+    return poly * primitive_scale(poly)

@@ -47,7 +47,7 @@ from ..backends import FlintBackend
 from ..linear import linear_elimination
 from ..methods import prepare
 from ..request import EliminationRequest
-from .algebra import coefficients, linear_relation, pseudo_remainder, univariate
+from .algebra import coefficients, linear_relation, primitive, primitive_scale, pseudo_remainder, univariate
 from .records import GroupSolution, Lift, Polynomial, Values
 
 __all__ = ["solve_group", "FORMS", "POINTS"]
@@ -163,8 +163,8 @@ def _solve_by(group: _Group, variable: str, rng: random.Random) -> GroupSolution
         product *= factor
     lifts = tuple(_reduced(x, relations[x], eliminant=product, variable=variable) for x in others)
     dropped = [f for f, _ in factors if not any(f is g for g in genuine)] + conditions
-    return GroupSolution(group.unknowns, group.parameters, variable, Polynomial.of(_primitive(product)), lifts,
-                         dropped=tuple(Polynomial.of(_primitive(f)) for f in dropped))
+    return GroupSolution(group.unknowns, group.parameters, variable, Polynomial.of(primitive(product)), lifts,
+                         dropped=tuple(Polynomial.of(primitive(f)) for f in dropped))
 
 
 def _eliminated(group: _Group, keep: tuple[str, ...]) -> list[flint.fmpq_mpoly]:
@@ -470,23 +470,5 @@ def _reduced(unknown: str, relation: tuple[flint.fmpq_mpoly, flint.fmpq_mpoly], 
     common = numerator.gcd(denominator)
     if not common.is_constant():
         numerator, denominator = numerator / common, denominator / common
-    scale = _primitive_scale(denominator)
+    scale = primitive_scale(denominator)
     return Lift(unknown, Polynomial.of(numerator * scale), Polynomial.of(denominator * scale))
-
-
-def _primitive_scale(poly: flint.fmpq_mpoly) -> flint.fmpq:
-    """The number that makes ``poly`` primitive: integer coefficients, gcd 1, the lex-leading one positive."""
-    coeffs = poly.coeffs()
-    scale = flint.fmpq(1)
-    denominators = flint.fmpz(1)
-    for c in coeffs:
-        denominators = denominators.lcm(c.q)
-    numerators = flint.fmpz(0)
-    for c in coeffs:
-        numerators = numerators.gcd(c.p * (denominators // c.q))
-    scale = flint.fmpq(denominators) / numerators
-    return -scale if coeffs[0] < 0 else scale
-
-
-def _primitive(poly: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
-    return poly * _primitive_scale(poly)
