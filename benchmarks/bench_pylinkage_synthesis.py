@@ -36,7 +36,7 @@ import flint
 import mpmath
 import numpy as np
 
-from algkin.synthesis.data import Angle, AnglePair, Pose
+from algkin.synthesis.data import Angle, AnglePair, Pose, dyad_poses
 from algkin.synthesis.function import freudenstein
 from algkin.synthesis.motion import burmester
 
@@ -110,16 +110,11 @@ def _pose(x, y, cos, sin):
 
 
 def _on_dyad(crank_halves, coupler_halves, *, circle, centre, radius):
-    """Poses the dyad (``circle``, ``centre``) reaches: the circle point on the circle of
-    ``radius`` about the centre at the crank's angles, the plane turned by the coupler's (both
-    by half-angle tangents), so the set has at least that real pair, rational."""
-    poses = []
-    for crank, coupler in zip(crank_halves, coupler_halves):
-        turn, angle = Angle.of_tan_half(q(crank)), Angle.of_tan_half(q(coupler))
-        point = (q(centre[0]) + radius * turn.cos, q(centre[1]) + radius * turn.sin)
-        moved = angle.rotate(q(circle[0]), q(circle[1]))
-        poses.append(Pose(point[0] - moved[0], point[1] - moved[1], angle))
-    return poses
+    """Poses the dyad (``circle``, ``centre``) reaches, the crank's and the plane's angles by
+    half-angle tangents: the set has at least that real pair, rational."""
+    half = lambda t: Angle.of_tan_half(q(t))  # noqa: E731
+    return dyad_poses([half(t) for t in crank_halves], [half(t) for t in coupler_halves],
+                      circle=(q(circle[0]), q(circle[1])), centre=(q(centre[0]), q(centre[1])), radius=q(radius))
 
 
 FOUR_POSES = [_pose(0, 0, 1, 0), _pose(1, "1/2", "4/5", "3/5"), _pose(2, "3/2", "5/13", "12/13"), _pose(3, 1, 0, 1)]

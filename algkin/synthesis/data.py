@@ -21,6 +21,7 @@ ValueError: cos**2 + sin**2 is 1/2, not 1
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from decimal import Decimal, localcontext
 from typing import TypeVar
 
@@ -28,7 +29,7 @@ import attrs
 import flint
 import mpmath
 
-__all__ = ["Angle", "Pose", "AnglePair", "Point", "DIGITS"]
+__all__ = ["Angle", "Pose", "AnglePair", "Point", "DIGITS", "dyad_poses"]
 
 DIGITS = 60
 """Digits of an angle given in degrees (its half-angle tangent's)."""
@@ -107,6 +108,26 @@ class AnglePair:
 
     input: Angle
     output: Angle
+
+
+def dyad_poses(crank: Sequence[Angle], plane: Sequence[Angle], *, circle: Point, centre: Point,
+               radius: flint.fmpq) -> list[Pose]:
+    """Poses that the dyad (``circle`` in the moving plane, ``centre`` fixed, ``radius`` apart)
+    reaches, exactly: its circle point on the circle about the centre at each ``crank`` angle, the
+    plane turned by the matching ``plane`` angle (test data with a known answer).
+
+    >>> half = lambda t: Angle.of_tan_half(flint.fmpq(t))
+    >>> pose, = dyad_poses([half(0)], [half(1)], circle=(flint.fmpq(1), flint.fmpq(0)),
+    ...                    centre=(flint.fmpq(0), flint.fmpq(0)), radius=flint.fmpq(2))
+    >>> [str(c) for c in pose.place(flint.fmpq(1), flint.fmpq(0))]      # at (2, 0), 2 from the centre
+    ['2', '0']
+    """
+    poses = []
+    for turn, angle in zip(crank, plane):
+        point = (centre[0] + radius * turn.cos, centre[1] + radius * turn.sin)
+        moved = angle.rotate(circle[0], circle[1])
+        poses.append(Pose(point[0] - moved[0], point[1] - moved[1], angle))
+    return poses
 
 
 def _decimal(text: str) -> flint.fmpq:

@@ -7,7 +7,7 @@ import flint
 from hypothesis import assume, given, settings, strategies as st
 
 from algkin.errors import ComputationError, UsageError
-from algkin.synthesis.data import Angle, Pose
+from algkin.synthesis.data import Angle, dyad_poses
 from algkin.synthesis.motion import burmester
 
 SMALL = st.integers(-6, 6)
@@ -15,16 +15,12 @@ HALVES = st.lists(st.fractions(-3, 3, max_denominator=4), min_size=5, max_size=5
 
 
 def _built(crank_halves, coupler_halves, *, circle, centre, radius):
-    """The poses of a plane carrying ``circle`` (moving frame) on the circle of ``radius`` about
-    ``centre``: the crank at half-angle tangents ``crank_halves``, the plane at ``coupler_halves``."""
-    poses = []
-    for crank, coupler in zip(crank_halves, coupler_halves):
-        turn = Angle.of_tan_half(flint.fmpq(crank.numerator, crank.denominator))
-        angle = Angle.of_tan_half(flint.fmpq(coupler.numerator, coupler.denominator))
-        point = (centre[0] + radius * turn.cos, centre[1] + radius * turn.sin)
-        moved = angle.rotate(flint.fmpq(circle[0]), flint.fmpq(circle[1]))
-        poses.append(Pose(point[0] - moved[0], point[1] - moved[1], angle))
-    return poses
+    """The poses of a plane carrying ``circle`` on the circle of ``radius`` about ``centre``, the
+    crank's and the plane's angles by half-angle tangents (Fractions)."""
+    half = lambda t: Angle.of_tan_half(flint.fmpq(t.numerator, t.denominator))  # noqa: E731
+    return dyad_poses([half(t) for t in crank_halves], [half(t) for t in coupler_halves],
+                      circle=(flint.fmpq(circle[0]), flint.fmpq(circle[1])),
+                      centre=(flint.fmpq(centre[0]), flint.fmpq(centre[1])), radius=flint.fmpq(radius))
 
 
 def _squared(pose, circle, centre):

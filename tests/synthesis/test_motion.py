@@ -21,7 +21,7 @@ import pytest
 import sympy
 
 from algkin.errors import UsageError
-from algkin.synthesis.data import Angle, Pose
+from algkin.synthesis.data import Angle, Pose, dyad_poses
 from algkin.synthesis.motion import burmester, centre_point, circle_point, curves, system
 
 q = flint.fmpq
@@ -37,16 +37,10 @@ def _poses(rows):
 
 
 def _built(crank_halves, coupler_halves, *, circle, centre, radius):
-    """Poses that the dyad (``circle``, ``centre``) reaches: the circle point at the centre plus
-    ``radius`` turned by the crank's angle (half-angle tangents ``crank_halves``), the plane
-    turned by ``coupler_halves``."""
-    poses = []
-    for crank, coupler in zip(crank_halves, coupler_halves):
-        turn, angle = Angle.of_tan_half(q(crank)), Angle.of_tan_half(q(coupler))
-        point = (q(centre[0]) + radius * turn.cos, q(centre[1]) + radius * turn.sin)
-        moved = angle.rotate(q(circle[0]), q(circle[1]))
-        poses.append(Pose(point[0] - moved[0], point[1] - moved[1], angle))
-    return poses
+    """Poses that the dyad (``circle``, ``centre``) reaches, the crank's and the plane's angles by half-angle tangents."""
+    half = lambda t: Angle.of_tan_half(q(t))  # noqa: E731
+    return dyad_poses([half(t) for t in crank_halves], [half(t) for t in coupler_halves],
+                      circle=(q(circle[0]), q(circle[1])), centre=(q(centre[0]), q(centre[1])), radius=q(radius))
 
 
 FOUR = _poses([(0, 0, 1, 0), (1, "1/2", "4/5", "3/5"), (2, "3/2", "5/13", "12/13"), (3, 1, 0, 1)])
