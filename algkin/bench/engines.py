@@ -108,12 +108,7 @@ singular_resultant = peer("Singular resultant", "Singular", _singular_resultant_
 
 # -- PARI/GP --------------------------------------------------------------------------------
 
-_PARI_SCRIPT = """
-default(debugmem, 0);
-default(parisizemax, 4*10^9);
-V = [{names}];
-F = [{polys}];
-chain(F) = {{
+PARI_CHAIN = """chain(F) = {{
   my(P = F);
   for (k = 1, {k},
     my(v = V[k], H = [p | p <- P, poldegree(p, v) > 0], R = [p | p <- P, poldegree(p, v) == 0]);
@@ -127,7 +122,16 @@ chain(F) = {{
     P = R);
   P
 }};
-G = chain(F);
+"""
+"""PARI/GP's resultant chain (a format template in ``k``, the unknowns eliminated): each unknown
+``V[k]`` in turn, the resultants of the polynomials holding it with the one of least degree in it."""
+
+_PARI_SCRIPT = """
+default(debugmem, 0);
+default(parisizemax, 4*10^9);
+V = [{names}];
+F = [{polys}];
+""" + PARI_CHAIN + """G = chain(F);
 {{
   n = 0; t = 0; t0 = getabstime();
   while (1,

@@ -51,6 +51,7 @@ from ..eliminate.group.records import Values
 from ..runtime import progress
 from ..system.convert import flint_context, to_flint
 from .agree import PASSING, Agreement, Verdict, agreement, rebuild
+from .engines import PARI_CHAIN
 from .measure import MIN_REPEATS, MIN_SECONDS, measure
 from .row import BenchRow
 
@@ -306,21 +307,7 @@ _PARI = """
 default(debugmem, 0);
 V = [{names}];
 F = [{polys}];
-chain(F) = {{
-  my(P = F);
-  for (k = 1, {k},
-    my(v = V[k], H = [p | p <- P, poldegree(p, v) > 0], R = [p | p <- P, poldegree(p, v) == 0]);
-    if (#H >= 2,
-      my(j = 1);
-      for (i = 2, #H, if (poldegree(H[i], v) < poldegree(H[j], v), j = i));
-      for (i = 1, #H,
-        if (i != j,
-          my(r = polresultant(H[j], H[i], v));
-          if (r, R = concat(R, [r / content(r)])))));
-    P = R);
-  P
-}};
-roots(F) = my(G = chain(F), g = G[1]); for (i = 2, #G, g = gcd(g, G[i])); polrootsreal(g / content(g));
+""" + PARI_CHAIN + """roots(F) = my(G = chain(F), g = G[1]); for (i = 2, #G, g = gcd(g, G[i])); polrootsreal(g / content(g));
 S = roots(F);
 {{
   n = 0; t = 0; t0 = getabstime();
