@@ -45,6 +45,7 @@ from ..runtime import suggest
 from ..scene.expr import exact_number
 from ..scene.load import MAX_SCENE_BYTES
 from .data import Angle, AnglePair, Point, Pose
+from .fourbar import safe_name
 
 __all__ = ["Task", "read_task", "read_task_text", "example_names", "KINDS"]
 
@@ -134,9 +135,9 @@ class _Reader:
         for key in data:
             if key not in allowed:
                 self.fail(key, f"not a key of a {kind} file" + suggest.known(key, sorted(allowed), plural="valid"))
-        name = data.get("name", os.path.splitext(os.path.basename(self.source))[0])
-        if not isinstance(name, str) or not name:
-            self.fail("name", f"expected a non-empty string, got {name!r}")
+        name = data.get("name", safe_name(os.path.splitext(os.path.basename(self.source))[0]))
+        if not isinstance(name, str) or not name or name != safe_name(name):
+            self.fail("name", f"expected letters, digits, '-' and '_' (it names the scene files written), got {name!r}")
         if not isinstance(data.get("description", ""), str):
             self.fail("description", "expected a string")
         task = Task(self.source, kind, name)

@@ -26,7 +26,7 @@ import re
 import attrs
 import flint
 
-__all__ = ["FourBar", "Position", "scene_text", "DIGITS", "BITS"]
+__all__ = ["FourBar", "Position", "scene_text", "safe_name", "DIGITS", "BITS"]
 
 Ball2 = tuple[flint.arb, flint.arb]
 DIGITS = 40
@@ -100,7 +100,7 @@ def scene_text(design: FourBar, *, branch: str, digits: int = DIGITS) -> str:
         return _decimal(ball, digits)
 
     return "\n".join([
-        f'name = "{_safe_name(design.name)}"',
+        f'name = "{safe_name(design.name)}"',
         'description = "A four-bar synthesized by algkin: crank OA, coupler AB, rocker DB, coupler point P."',
         "",
         f"# Numbers to {digits} significant digits of the certified solution.",
@@ -127,8 +127,13 @@ def scene_text(design: FourBar, *, branch: str, digits: int = DIGITS) -> str:
         ""])
 
 
-def _safe_name(name: str) -> str:
-    """A scene name from user text: letters, digits, ``-`` and ``_`` only (it is written into TOML)."""
+def safe_name(name: str) -> str:
+    """A name from user text, as scene names and files are written: letters, digits, ``-`` and
+    ``_`` only, at most 80 (it goes into TOML and into file names: no quote, no ``/``, no ``..``).
+
+    >>> safe_name("../../etc/x y"), safe_name("fourbar-poses"), safe_name("/")
+    ('etc-x-y', 'fourbar-poses', 'synthesized')
+    """
     return re.sub(r"[^A-Za-z0-9_-]+", "-", name).strip("-")[:80] or "synthesized"
 
 

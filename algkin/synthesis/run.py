@@ -23,7 +23,7 @@ from ..runtime.frozen import FrozenDict, frozen
 from .check import MIN_TRANSMISSION, Checked, check_design
 from .data import Angle, Point, Pose
 from .files import Task, read_task
-from .fourbar import BITS, FourBar, Position
+from .fourbar import BITS, FourBar, Position, safe_name
 from .function import FreudensteinSolution, FunctionSynthesis, freudenstein
 from .motion import BurmesterPair, FivePoses, FourPoses, burmester, curves
 from .path import PathSolution, PathSynthesis, five_point_path
@@ -131,7 +131,8 @@ def _designs(task: Task, result: Result) -> list[tuple[tuple[int, ...], FourBar]
         made = [((j,), _path_design(task, s)) for j, s in enumerate(result.solutions)]
     else:
         return []
-    return [(indexes, attrs.evolve(design, name=f"{task.name}-{n + 1}")) for n, (indexes, design) in enumerate(made)]
+    return [(indexes, attrs.evolve(design, name=f"{safe_name(task.name)}-{n + 1}"))
+            for n, (indexes, design) in enumerate(made)]
 
 
 def _motion_design(poses: Sequence[Pose], crank: BurmesterPair, rocker: BurmesterPair) -> FourBar:

@@ -178,3 +178,23 @@ def test_problem_7_says_every_factor_it_left_out(capsys):
     assert code == 0 and (document["complex_count"], document["real_count"]) == (33, 15)
     assert sum(e["degree"] * e["multiplicity"] for e in document["excluded"]) == 72 - 33
     assert all(e["reason"] for e in document["excluded"])
+
+
+def test_a_hostile_name_is_refused_and_never_a_path(capsys, tmp_path):
+    # the file's name names the scene files written into --out: "../x" would write beside it
+    text = (EXAMPLES / "three-pairs.toml").read_text()
+    for hostile in ("../../escaped", "a/b", 'q"uote'):
+        path = tmp_path / "hostile.toml"
+        path.write_text(text.replace('name = "three-pairs"', f"name = {json.dumps(hostile)}"))
+        code, _, err = run(capsys, "synthesize", "function", str(path), "--out", str(tmp_path / "out"))
+        assert code == 2 and "hostile.toml: name: expected letters, digits" in err and err.count("\n") == 1
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["hostile.toml"]
+
+
+def test_from_python_a_task_of_any_name_writes_scene_files_of_a_safe_name():
+    import attrs
+
+    from algkin.synthesis import read_task, synthesize
+
+    found = synthesize(attrs.evolve(read_task("three-pairs"), name="../../escaped"))
+    assert list(found.scenes()) == ["escaped-1.toml"]
