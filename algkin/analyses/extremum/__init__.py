@@ -212,9 +212,15 @@ def _exact(problem: Problem, stationary: Sequence[sympy.Expr], defaults: Mapping
     with mpmath.workdps(DIGITS):
         found = describe(fixed, factors, value_factors(fixed, deadline=deadline), {}, best,
                          meeting_factors(fixed, deadline=deadline))
-        if found.value is None or not _equal(found.value, best.value):
-            return None, None
-        return problem.scale.expr(found.value), found.value
+        return exact_pair(problem.scale, found.value, best)
+
+
+def exact_pair(scale: AngleScale, value: sympy.Expr | None, best: CriticalPoint) -> Exact:
+    """``(degrees, via)`` of an angle's extremum ``best`` from its via's exact ``value``;
+    ``(None, None)`` where there is none or it is not ``best``'s (to 1e-12)."""
+    if value is None or not _equal(value, best.value):
+        return None, None
+    return scale.expr(value), value
 
 
 def _equal(expr: sympy.Expr, value: mpmath.mpf) -> bool:
