@@ -158,6 +158,8 @@ def end_degrees(problem: Problem, best: CriticalPoint) -> sympy.Rational | None:
 def value_at_angle(problem: Problem, degrees: sympy.Rational, values: Values) -> sympy.Expr:
     """The closed form at an exact angle, tidied (denested when that is shorter and equal)."""
     raw = problem.closed.xreplace(problem.line.exact_at(degrees))
+    if raw.is_Rational:
+        return raw  # every tidier form of a rational is itself
     target = _numeric(raw, values)
     forms = [f for f in (raw, sympy.sqrtdenest(raw), sympy.radsimp(raw), sympy.factor(raw))
              if abs(_numeric(f, values) - target) <= MATCH * (1 + abs(target))]

@@ -106,6 +106,7 @@ class ExtremumFamily:
         self._denominator = _polynomial_or_none(sympy.denom(sympy.together(problem.closed)), self._ring)
         self._closed: CompiledProgram[mpmath.mpf] = compile_program(
             [problem.closed], [v.name for v in line.variables] + list(self.defaults), MPMATH)
+        self._ratio = _ratio(problem.closed, self._ring)
         self._u_degree = self._eliminant.degrees()[2]
 
     def at(self, values: Mapping[str, Value]) -> Extremum:
@@ -172,7 +173,8 @@ class ExtremumFamily:
         fixed = _DesignProblem(to_sympy(eliminant, self._ring), problem.closed.xreplace(
             {p: sympy.Rational(int(values[p.name].p), int(values[p.name].q)) for p in problem.parameters}),
             problem.u, problem.line, (), problem.scale,
-            tuple(to_sympy(d, self._ring) for d in valid), program=self._closed, numbers=numbers, exact_valid=valid)
+            tuple(to_sympy(d, self._ring) for d in valid), program=self._closed, numbers=numbers, exact_valid=valid,
+            terms=self._terms(specialised))
         names = (problem.u.name, problem.t.name)
         numerator, derivative = (_half_angle(p, names) for p in (eliminant, along))
         try:
@@ -181,6 +183,27 @@ class ExtremumFamily:
         except ComputationError:
             return None  # ``extremum`` says why
         return _Design(fixed, stationary, numerator, derivative, valid, names)
+
+    def _terms(self, values: Mapping[str | int, int | flint.fmpz | flint.fmpq]
+               ) -> tuple[tuple[int, int, mpmath.mpf], ...] | None:
+        """The closed form's terms in the input's variables at the design, where it is a polynomial in them."""
+        if self._ratio is None:
+            return None
+        numerator, denominator = (p.subs(values) for p in self._ratio)
+        scale = 1 / flint.fmpq(denominator.leading_coefficient())
+        with mpmath.workdps(DIGITS):
+            return tuple((int(m[0]), int(m[1]), mpmath.mpf(int((c * scale).p)) / int((c * scale).q))
+                         for m, c in numerator.to_dict().items())
+
+
+def _ratio(closed: sympy.Expr, ring: flint.fmpq_mpoly_ctx) -> tuple[flint.fmpq_mpoly, flint.fmpq_mpoly] | None:
+    """A closed form polynomial in the input's variables over the dimensions' fractions, as its
+    numerator and its denominator (in the dimensions alone); None otherwise (a square root)."""
+    numerator, denominator = sympy.fraction(sympy.together(closed))
+    pair = _polynomial_or_none(numerator, ring), _polynomial_or_none(denominator, ring)
+    if pair[0] is None or pair[1] is None or any(d for d in pair[1].degrees()[:3]):
+        return None
+    return pair[0], pair[1]
 
 
 @dataclass(frozen=True)
@@ -191,10 +214,14 @@ class _DesignProblem(Problem):
     program: CompiledProgram[mpmath.mpf] | None = field(default=None, compare=False)
     numbers: tuple[mpmath.mpf, ...] = ()  # the dimensions, in the program's order
     exact_valid: Sequence[flint.fmpq_mpoly] = field(default=(), compare=False)
+    # a closed form polynomial in the input's variables: its terms (c, s exponents -> coefficient)
+    terms: tuple[tuple[int, int, mpmath.mpf], ...] | None = None
 
     def closed_at(self, at: Mapping[str, mpmath.mpf]) -> mpmath.mpf | mpmath.mpc:
         assert self.program is not None, "a design's problem is compiled"
         c, s = (at[v.name] for v in self.line.variables)
+        if self.terms is not None:
+            return mpmath.fsum(coefficient * c**i * s**j for i, j, coefficient in self.terms)
         try:
             (result,) = self.program(c, s, *self.numbers)
         except ZeroDivisionError:
