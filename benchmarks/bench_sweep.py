@@ -1,77 +1,108 @@
-"""A sweep of 1,000 four-bars, serial against a 2-worker Dask LocalCluster on this machine.
+"""Sweeps of four-bars: designs a second, the shared path against each design alone, 1 and 2 workers, an atlas.
 
-The grid: the catalog ``fourbar``'s crank ``a``, coupler ``l`` and rocker ``m`` over 10 exact
-values each (the ground ``d`` and the coupler point at their defaults), with the analyses
-``curve`` (the coupler curve, eliminated and verified), ``grashof`` and ``transmission`` (the
-transmission angle's extremes). Both runs write their own directory; the two datasets are
-asserted equal apart from the timing columns (byte for byte once those are dropped), and the
-wall times and their ratio are printed. The LocalCluster's start-up (worker processes,
-algkin imported in each) is inside the timed run, as a user would pay it.
+Three measurements, each from this one run:
 
-Beside the wall times: the designs' own seconds summed (the ``seconds_total`` column) over
-the wall time, how many designs were being computed at once on average (1 at most serially,
-2 at most on two workers, less by the cluster's start-up and idle ends), and the machine's
-load average before and after: on a machine shared with other work the two workers get less
-than two cores (Linux shares the CPU between sessions first), and the speed-up with them.
+1. **Shared against alone.** 1,000 designs of the catalog ``fourbar`` (crank ``a``, coupler
+   ``l`` and rocker ``m`` over 10 exact values each) with the analyses ``curve``, ``grashof``
+   and ``transmission``, serially: once as a sweep runs by default (the scene compiled once
+   with the swept dimensions symbolic, the generic curve specialised: ``algkin.sweep.family``)
+   and once with each design computed alone (``share=False``, the path before it). The two
+   datasets are asserted equal apart from their timing columns, and the designs a second of
+   each and their ratio printed.
+2. **Workers.** The same sweep on a Dask LocalCluster of 1 worker and of 2, each cluster
+   started and algkin imported in each worker before its clock starts (each worker still works
+   out the family itself, as on a cluster): designs a second and the ratio of 2 workers to 1.
+   Both datasets equal the serial one.
+3. **An atlas** (``--atlas N``, 10,000 by default; 0 skips it): coupler curves with their real
+   singular points (``curve,singular,grashof``) over ``a``, ``l``, ``m`` and the coupler point
+   ``p``, ``q``, on 2 workers: its wall time and designs a second.
 
-Run: ``python benchmarks/bench_sweep.py [--count-per-axis N] [--workers W] [--analyses A,B]``.
+The machine's load average is printed before and after: on a machine shared with other work
+two workers get less than two cores (Linux shares the CPU between sessions first), and the
+speed-up with them.
+
+Run: ``python benchmarks/bench_sweep.py [--count-per-axis N] [--atlas N]``.
 """
 
 import argparse
-import io
+import importlib
+import math
 import os
 import tempfile
 import time
 
-import pyarrow.parquet as pq
+import distributed
 
 from algkin.sweep import read_dataset, sweep, without_timings
 
+FOURBARS = "curve,grashof,transmission"
+ATLAS = "curve,singular,grashof"
+
 
 def canonical(folder):
-    """The dataset without its timing columns, as Parquet bytes."""
-    buffer = io.BytesIO()
-    pq.write_table(without_timings(read_dataset(folder)), buffer)
-    return buffer.getvalue()
+    """The dataset without its timing columns."""
+    return without_timings(read_dataset(folder))
 
 
-def timed(folder, grid, analyses, **executor):
+def timed(folder, grid, analyses, **how):
     begun = time.perf_counter()
-    done = sweep("fourbar", folder, grid=grid, analyses=analyses, **executor)
+    done = sweep("fourbar", folder, grid=grid, analyses=analyses.split(","), yes=True, **how)
     return time.perf_counter() - begun, done
 
 
-def busy(folder, wall):
-    """The designs' own seconds summed, over the wall time: designs computed at once, on average."""
-    return sum(read_dataset(folder).column("seconds_total").to_pylist()) / wall
+def on_cluster(folder, grid, analyses, workers, name=None):
+    """The sweep on a LocalCluster of ``workers`` started, algkin imported in each, before the clock."""
+    with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                  dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+        client.run(importlib.import_module, "algkin.sweep.family")
+        return timed(os.path.join(folder, name or f"dask{workers}"), grid, analyses, scheduler=cluster.scheduler_address)
+
+
+def atlas_grid(count):
+    """Axes over a, l, m, p, q whose product is about ``count`` designs."""
+    side = max(2, round(count ** (1 / 5)))
+    return [f"a=1/2:2:{side}", f"l=2:5:{side}", f"m=2:5:{side}", f"p=-1:2:{side}", f"q=-1:1:{side}"]
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--count-per-axis", type=int, default=10, help="values per axis (designs: its cube)")
-    parser.add_argument("--workers", type=int, default=2)
-    parser.add_argument("--analyses", default="curve,grashof,transmission")
+    parser.add_argument("--atlas", type=int, default=10_000, help="designs of the atlas, about (0: none)")
     args = parser.parse_args()
     n = args.count_per_axis
     grid = [f"a=1/2:2:{n}", f"l=2:5:{n}", f"m=2:5:{n}"]
-    analyses = args.analyses.split(",")
     load = os.getloadavg()[0]
     with tempfile.TemporaryDirectory() as scratch:
-        serial_dir, dask_dir = os.path.join(scratch, "serial"), os.path.join(scratch, "dask")
-        serial_s, serial = timed(serial_dir, grid, analyses, executor="serial")
-        dask_s, distributed = timed(dask_dir, grid, analyses, executor="dask", workers=args.workers)
-        assert serial.counts == distributed.counts, (serial.counts, distributed.counts)
-        assert canonical(serial_dir) == canonical(dask_dir), "the two datasets differ beyond their timings"
-        assert serial.designs == n ** 3 and serial.computed == distributed.computed == n ** 3
-        at_once = busy(serial_dir, serial_s), busy(dask_dir, dask_s)
-    print(f"sweep of {n ** 3} four-bars (fourbar: {', '.join(grid)}; analyses {', '.join(analyses)}), "
-          f"{os.cpu_count()} cores, load average {load:.1f} before, {os.getloadavg()[0]:.1f} after")
-    print(f"designs by status: {serial.counts}")
-    print(f"serial                        {serial_s:8.1f} s  ({1000 * serial_s / n ** 3:.0f} ms/design, "
-          f"{at_once[0]:.2f} designs at once)")
-    print(f"dask LocalCluster, {args.workers} workers   {dask_s:8.1f} s  (start-up included, "
-          f"{at_once[1]:.2f} designs at once)")
-    print(f"speed-up                      {serial_s / dask_s:8.2f}x   same dataset apart from timings: yes")
+        folder = lambda name: os.path.join(scratch, name)  # noqa: E731
+        shared_s, shared = timed(folder("shared"), grid, FOURBARS, executor="serial")
+        alone_s, alone = timed(folder("alone"), grid, FOURBARS, executor="serial", share=False)
+        assert shared.counts == alone.counts, (shared.counts, alone.counts)
+        assert canonical(folder("shared")).equals(canonical(folder("alone"))), "shared and alone rows differ"
+        one_s, _ = on_cluster(scratch, grid, FOURBARS, 1)
+        two_s, _ = on_cluster(scratch, grid, FOURBARS, 2)
+        for workers in (1, 2):
+            assert canonical(folder(f"dask{workers}")).equals(canonical(folder("shared"))), f"{workers} workers differ"
+        atlas = None
+        if args.atlas:
+            axes = atlas_grid(args.atlas)
+            atlas_s, atlas_done = on_cluster(scratch, axes, ATLAS, 2, name="atlas")
+            atlas = (axes, atlas_s, atlas_done)
+    designs = n ** 3
+    print(f"sweeps of four-bars (fourbar: {', '.join(grid)}), {os.cpu_count()} cores, "
+          f"load average {load:.1f} before, {os.getloadavg()[0]:.1f} after")
+    print(f"{designs} designs, {FOURBARS}; by status: {shared.counts}")
+    rate = lambda seconds, count=designs: count / seconds  # noqa: E731
+    print(f"  serial, each design alone      {alone_s:7.1f} s  {rate(alone_s):7.1f} designs/s")
+    print(f"  serial, shared (the default)   {shared_s:7.1f} s  {rate(shared_s):7.1f} designs/s  "
+          f"{alone_s / shared_s:5.2f}x   same rows apart from timings: yes")
+    print(f"  dask, 1 worker (started)       {one_s:7.1f} s  {rate(one_s):7.1f} designs/s")
+    print(f"  dask, 2 workers (started)      {two_s:7.1f} s  {rate(two_s):7.1f} designs/s  "
+          f"{one_s / two_s:5.2f}x 1 worker   same rows: yes")
+    if atlas:
+        axes, seconds, done = atlas
+        count = math.prod(int(a.rsplit(":", 1)[1]) for a in axes)
+        print(f"atlas: {count} designs ({', '.join(axes)}), {ATLAS}, 2 workers: {seconds:.1f} s "
+              f"({seconds / 60:.1f} min, {rate(seconds, count):.1f} designs/s); by status: {done.counts}")
 
 
 if __name__ == "__main__":

@@ -79,8 +79,9 @@ class Plan:
 
 def plan(scene: SceneLike, *, grid: Iterable[str] = (), random: int | None = None, seed: int = 0,
          analyses: Iterable[str] = ("curve",), point: str | None = None, budget: float | None = None,
-         chunk: int = CHUNK) -> Plan:
-    """The sweep's job, designs and manifest, every argument checked (UsageError, SceneError)."""
+         chunk: int = CHUNK, share: bool = True) -> Plan:
+    """The sweep's job, designs and manifest, every argument checked (UsageError, SceneError);
+    ``share``: the work every design shares done once (False: each design computed alone)."""
     from ..scene.dump import dump_scene
     from ..scene.groups import compile_groups
     from ..scene.load import as_scene
@@ -119,22 +120,24 @@ def plan(scene: SceneLike, *, grid: Iterable[str] = (), random: int | None = Non
                                                  "sha256": hashlib.sha256(toml.encode()).hexdigest()},
                 "designs": space, "analyses": list(chosen), "point": point, "budget": budget, "chunk": chunk,
                 "count": len(designs)}
-    job = Job(scene, chosen, point, budget)
+    job = Job(scene, chosen, point, budget, share=share)
     return Plan(job, designs, manifest, columns(job, list(designs[0])), chunk)
 
 
 def sweep(scene: SceneLike, out: str | pathlib.Path, *, grid: Iterable[str] = (), random: int | None = None, seed: int = 0,
           analyses: Iterable[str] = ("curve",), point: str | None = None, executor: str = "dask",
           workers: int | None = None, scheduler: str | None = None, budget: float | None = None,
-          chunk: int = CHUNK, yes: bool = False) -> Sweep:
+          chunk: int = CHUNK, yes: bool = False, share: bool = True) -> Sweep:
     """Run (or resume) the sweep into the directory ``out``; its merged dataset is ``out/designs.parquet``.
 
     A run projected to take longer than ``DAY`` (``projected_seconds``) is refused before it starts,
-    unless ``yes``."""
+    unless ``yes``. The designs share what they can, worked out once (``algkin.sweep.family``: the
+    scene compiled with the swept dimensions symbolic, the generic curve specialised); with ``share``
+    False each is computed alone, as a check: the dataset is the same, its timings aside."""
     from ..runtime import progress
 
     planned = plan(scene, grid=grid, random=random, seed=seed, analyses=analyses, point=point, budget=budget,
-                   chunk=chunk)
+                   chunk=chunk, share=share)
     _check_executor(executor, workers, scheduler)
     open_directory(out, planned.manifest, check_only=True)
     done = done_chunks(out)

@@ -46,6 +46,7 @@ if TYPE_CHECKING:
     from ..derivation.pipeline import CurveResult
     from ..scene import Scene
     from ..scene.compile import Compiled
+    from .family import Family, SharedCurve, SharedDesign
 
 __all__ = ["Analysis", "Design", "ANALYSES", "register", "analyses_named", "applicable", "GRASHOF_CLASSES"]
 
@@ -58,13 +59,16 @@ GRASHOF_CLASSES = {"crank-rocker": "crank-rocker", "double crank": "double-crank
 @dataclass
 class Design:
     """One design: its scene (exact dimensions), compiled with its implicit points, and the traced point;
-    a scene with points solved together has its ``groups`` solved instead (and no ``compiled``)."""
+    a scene with points solved together has its ``groups`` solved instead (and no ``compiled``).
+    A design of a ``family`` (``shared``) has the family's compiled scene, its values the dimensions'."""
 
     scene: Scene
     compiled: Compiled | None
     point: str
     found: dict[str, Any] = field(default_factory=dict)  # what one analysis computed that another reuses
     groups: GroupScene | None = None
+    family: Family | None = None
+    shared: SharedDesign | None = None
 
 
 def _verified_curve(design: Design) -> CurveResult:
@@ -96,7 +100,22 @@ class Analysis:
         return run(design)
 
 
+def _shared_curve(design: Design) -> SharedCurve | None:
+    """The design's curve from its family's generic one, when the family answers for it."""
+    if design.family is None or design.shared is None:
+        return None
+    if "shared curve" not in design.found:
+        design.found["shared curve"] = design.family.curve(design.shared)
+    found: SharedCurve | None = design.found["shared curve"]
+    return found
+
+
 def _curve(design: Design) -> dict[str, Any]:
+    shared = _shared_curve(design)
+    if shared is not None:
+        return {"curve_point": design.point, "curve_degree": shared.degree, "curve_circularity": shared.circularity,
+                "curve_irreducible": shared.irreducible, "curve_polynomial": shared.text,
+                "curve_verification": shared.verification}
     found = _verified_curve(design)
     return {"curve_point": design.point, "curve_degree": found.degree, "curve_circularity": found.circularity,
             "curve_irreducible": bool(found.irreducible), "curve_polynomial": str(found.elimination.polynomial),
@@ -199,7 +218,9 @@ def _transmission(design: Design) -> dict[str, Any]:
 def _singular(design: Design) -> dict[str, Any]:
     from ..analyses.singular import singular_points
 
-    found = singular_points(_verified_curve(design))
+    shared = _shared_curve(design)
+    found = singular_points(_verified_curve(design)) if shared is None else \
+        singular_points(shared.polynomial, shared.variables)
     counts = found.counts
     return {"singular_count": len(found.points), **{f"singular_{kind}s": counts.get(kind, 0) for kind in _KINDS},
             "singular_complex": counts["complex"],

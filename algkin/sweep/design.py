@@ -29,8 +29,10 @@ from typing import TYPE_CHECKING, Any
 
 from ..errors import BudgetExceeded, SceneError
 from ..runtime import progress
+from ..runtime.cache import BoundedCache
 from ..scene import Scene, load_scene
 from .analyses import ANALYSES, Analysis, Design
+from .family import Family
 
 if TYPE_CHECKING:
     from ..runtime.budget import Deadline
@@ -53,6 +55,9 @@ class Job:
     analyses: tuple[str, ...]
     point: str
     budget: float | None = None  # seconds per design
+    # the designs' shared work done once (``algkin.sweep.family``); False: each design computed alone,
+    # the reference the shared path is checked against (the same rows, timings aside)
+    share: bool = True
     table: Mapping[str, Analysis] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -71,33 +76,48 @@ def columns(job: Job, names: Sequence[str]) -> dict[str, str]:
     return found
 
 
-def evaluate_chunk(job: Job, index: int, designs: Sequence[tuple[int, Mapping[str, Fraction]]]) -> tuple[int, list]:
+def evaluate_chunk(job: Job, index: int, designs: Sequence[tuple[int, Mapping[str, Fraction]]],
+                   families: BoundedCache[Family | None] | None = None) -> tuple[int, list]:
     """``(index, rows)`` of the designs ``(id, values)`` of one chunk (what a worker runs).
 
-    The analyses' own progress (stages, counts of samples) is shown nowhere: in this process it
-    would replace the sweep's count of designs."""
+    ``families`` keeps, across the chunks this process evaluates, the work every design of the
+    job shares (``algkin.sweep.family``); without it each design is computed alone. The analyses'
+    own progress (stages, counts of samples) is shown nowhere: in this process it would replace
+    the sweep's count of designs."""
     def quietly() -> tuple[int, list]:
         progress.hand_over(None)
-        return index, [evaluate_design(job, design, values) for design, values in designs]
+        family = _family(job, designs, families)
+        return index, [evaluate_design(job, design, values, family=family) for design, values in designs]
 
     return contextvars.copy_context().run(quietly)
 
 
-def evaluate_design(job: Job, design: int, values: Mapping[str, Fraction]) -> dict[str, Any]:
-    """The row of one design: its values, status, each analysis's columns and the timings."""
+def _family(job: Job, designs: Sequence[tuple[int, Mapping[str, Fraction]]],
+            families: BoundedCache[Family | None] | None) -> Family | None:
+    """The job's family in the dimensions the designs set, from ``families`` (made there the first time)."""
+    if families is None or not designs or not job.share:
+        return None
+    names = tuple(designs[0][1])
+    return families.get((job, names), lambda: Family.of(job.scene, names, job.point, analyses=job.analyses))
+
+
+def evaluate_design(job: Job, design: int, values: Mapping[str, Fraction], *,
+                    family: Family | None = None) -> dict[str, Any]:
+    """The row of one design: its values, status, each analysis's columns and the timings; the
+    same row with the ``family`` of the job's designs (what they share worked out once) or without."""
     row: dict[str, Any] = dict.fromkeys(columns(job, list(values)))
     row["design"] = design
     for name, value in values.items():
         row[f"param_{name}"], row[f"param_{name}_float"] = _exact_text(value), float(value)
     begun = time.perf_counter()
     if job.budget is None:
-        found = _analyse(job, values)
+        found = _analyse(job, values, family=family)
     else:
         from ..runtime.budget import Budget
 
         deadline = Budget(seconds=job.budget).start()
         try:
-            found = deadline.run(lambda: _analyse(job, values, deadline))
+            found = deadline.run(lambda: _analyse(job, values, deadline, family=family))
         except BudgetExceeded as err:
             found = {"status": "failed", "reason": _one_line(f"budget: {err}")}
     row.update(found)
@@ -105,12 +125,13 @@ def evaluate_design(job: Job, design: int, values: Mapping[str, Fraction]) -> di
     return row
 
 
-def _analyse(job: Job, values: Mapping[str, Fraction], deadline: Deadline | None = None) -> dict[str, Any]:
+def _analyse(job: Job, values: Mapping[str, Fraction], deadline: Deadline | None = None, *,
+             family: Family | None = None) -> dict[str, Any]:
     """The status, reason, analyses' columns and timings of one design (no design id, no values);
     each analysis noted on ``deadline``, if any, for the message if its time runs out."""
     begun = time.perf_counter()
     try:
-        design = _assembled(job, values)
+        design = _assembled(job, values, family)
         found: dict[str, Any] = {"status": "ok"}
     except SceneError as err:
         found = {"status": _status_of(err), "reason": _one_line(str(err))}
@@ -141,13 +162,18 @@ def _status_of(err: SceneError) -> str:
     return "structure" if STRUCTURE in str(err) else "failed"
 
 
-def _assembled(job: Job, values: Mapping[str, Fraction]) -> Design:
+def _assembled(job: Job, values: Mapping[str, Fraction], family: Family | None = None) -> Design:
     """The design's scene, compiled with its dyads and sliders (SceneError if its branch never
-    assembles), or with its groups of points solved together solved."""
+    assembles), or with its groups of points solved together solved; from the ``family``'s
+    compiled scene where it answers for the design."""
     from ..branches import check_assembly, closed_forms
     from ..derivation.assembles import where_assembled
     from ..scene import compile_scene
     from ..scene.settings import with_values
+
+    shared = family.design(values) if family is not None else None
+    if shared is not None:
+        return Design(shared.scene, shared.compiled, job.point, family=family, shared=shared)
 
     scene = with_values(job.scene if not isinstance(job.scene, str) else load_scene(job.scene), dict(values))
     if scene.unknown_points:  # its groups solved once, for every analysis

@@ -25,12 +25,15 @@ from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
 from ..errors import AlgkinError, ComputationError, UsageError
+from ..runtime.cache import BoundedCache
 from .design import Job, evaluate_chunk
+from .family import Family
 
 __all__ = ["EXECUTORS", "run_chunks", "on_worker", "dask_modules", "dask_setup"]
 
 EXECUTORS = ("dask", "serial")
 CONNECT_SECONDS = 10  # how long to wait for the scheduler at --scheduler ADDRESS
+FAMILIES = 2  # jobs' families a process keeps at once
 
 
 def run_chunks(job: Job, chunks: Sequence[tuple[int, list]], done: Callable[[int, list], None],
@@ -41,8 +44,9 @@ def run_chunks(job: Job, chunks: Sequence[tuple[int, list]], done: Callable[[int
     On Dask, each worker's algkin must be this process's version."""
     if executor == "serial":
         ready()
+        families = _families()
         for index, designs in chunks:
-            done(*evaluate_chunk(job, index, designs))
+            done(*evaluate_chunk(job, index, designs, families))
         return
     version = _version()
     with _client(workers, scheduler) as (client, as_completed):
@@ -77,7 +81,20 @@ def on_worker(version: str, job: Job, index: int, designs: Sequence[tuple[int, A
     process = multiprocessing.current_process()
     if process.daemon:
         process.daemon = False
-    return evaluate_chunk(job, index, designs)
+    from distributed import get_worker
+
+    # the worker keeps, for the chunks it runs after this one, what the job's designs share
+    worker = get_worker()
+    families = getattr(worker, "algkin_families", None)
+    if families is None:
+        families = _families()
+        setattr(worker, "algkin_families", families)  # noqa: B010 - an attribute of ours on dask's Worker
+    return evaluate_chunk(job, index, designs, families)
+
+
+def _families() -> BoundedCache[Family | None]:
+    """Where a process keeps the families of the jobs it runs (a sweep runs one)."""
+    return BoundedCache(FAMILIES)
 
 
 def _version() -> str:

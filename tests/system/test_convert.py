@@ -2,11 +2,12 @@
 
 import re
 
+import flint
 import pytest
 from hypothesis import given, strategies as st
 import sympy
 
-from algkin.system.convert import flint_context, to_flint, to_sympy
+from algkin.system.convert import flint_context, sympy_text, to_flint, to_sympy
 
 NAMES = ["x", "y", "z"]
 GENS = [sympy.Symbol(n, real=True) for n in NAMES]
@@ -42,3 +43,24 @@ def test_a_root_or_an_absolute_value_is_no_polynomial():
     for expr, shown in ((sympy.sqrt(x), "sqrt("), (sympy.Abs(x - 1), "Abs(")):
         with pytest.raises(TypeError, match=rf"not a polynomial: {re.escape(shown)}"):
             to_flint(expr, ctx)
+
+
+# names whose sympy order is not their order in the context, nor their order as written
+TEXT_NAMES = ["P_y", "P_x", "x10", "x2", "B_x", "c_theta", "Z"]
+coefficients = st.one_of(st.sampled_from([1, -1, 2, -3]), st.integers(-10**40, 10**40).filter(bool),
+                         st.fractions(max_denominator=7).filter(bool))
+
+
+@given(st.lists(st.sampled_from(TEXT_NAMES), min_size=1, max_size=4, unique=True),
+       st.lists(st.tuples(coefficients, st.lists(st.integers(0, 4), min_size=4, max_size=4)), max_size=10))
+def test_sympy_text_is_how_sympy_writes_the_polynomial(names, term_list):
+    ctx = flint_context(names)
+    poly = ctx.from_dict({tuple(exps[:len(names)]): flint.fmpq(c.numerator, c.denominator) for c, exps in term_list})
+    assert sympy_text(poly, ctx) == str(to_sympy(poly, ctx))
+
+
+def test_sympy_text_keeps_sympys_exception_for_a_number_and_a_negative_multiple():
+    ctx = flint_context(["x", "y"])
+    x, y = ctx.gens()
+    assert [sympy_text(p, ctx) for p in (1 - 2 * x, 1 - x * y, 2 - y**2, -x - 1)] == \
+        ["1 - 2*x", "-x*y + 1", "2 - y**2", "-x - 1"]

@@ -1,0 +1,270 @@
+"""What every design of a sweep shares, worked out once: the scene with the swept dimensions symbolic.
+
+A sweep's designs differ in a few dimensions only. A ``Family`` compiles the scene once with
+those dimensions symbolic, finds its branches and, when an analysis first asks, the generic
+coupler curve (the eliminant with the dimensions symbolic). A design then takes its values:
+
+- it assembles where the float grid of its discriminants, evaluated with the dimensions as
+  numbers, is clear of zero (the test ``check_assembly`` and ``where_assembled`` make, with
+  the same grid), and its scene loads with the values (a value that breaks it, as a file would);
+- its curve is the generic eliminant specialised, taken only when it keeps the generic degree,
+  is irreducible and passes the design's own verification (sampled on its motion, the
+  dimensions as numbers in the same compiled checks every design shares).
+
+Anything else, a discriminant near zero somewhere on the grid (a design at a change point, or
+one that may not assemble), a point placed by side, a curve that drops degree or splits, is
+left to the design's own path (``None``): the answer is then the one each design computed
+alone gives, by construction, and where the family answers it gives that answer too.
+
+>>> from fractions import Fraction
+>>> from algkin.scene import load_scene
+>>> family = Family.of(load_scene("fourbar"), ("a",), "P", analyses=("curve",))
+>>> design = family.design({"a": Fraction(1, 2)})
+>>> curve = family.curve(design)
+>>> curve.degree, curve.circularity, curve.irreducible, curve.verification
+(6, 3, True, 'passed')
+>>> family.design({"a": Fraction(5, 6), "d": Fraction(22, 3)}) is None   # assembles at theta = 0 only
+True
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import TYPE_CHECKING, Any
+
+import attrs
+import flint
+import numpy as np
+import sympy
+
+from ..errors import AlgkinError
+from ..runtime.budget import Budget
+
+if TYPE_CHECKING:
+    from ..derivation.prepared import Prepared
+    from ..scene import Compiled, Scene
+    from ..verify import CheckSetup
+
+__all__ = ["Family", "SharedDesign", "SharedCurve", "CLEARANCE"]
+
+# a discriminant within this part of its largest magnitude on the grid is "near zero": the float
+# arithmetic of the design's own path (its numbers folded in) may then see another sign
+CLEARANCE = 1e-9
+MAX_EXPONENT = 300  # a dimension whose float is past 2**±this is decided by the design's own path
+# the generic curve's intermediate eliminants at most this many terms: a family that would swell
+# past it (many dimensions symbolic in a big scene) is left to each design's own elimination
+GENERIC_TERMS = 20_000
+
+
+@dataclass
+class SharedDesign:
+    """One design of a family: its values, its scene (loaded with them) and the family's compiled
+    scene and branches with the values as the dimensions'."""
+
+    values: Mapping[str, Fraction]
+    scene: Scene
+    compiled: Compiled
+    where: Mapping[str, Any] | None = None  # where_assembled's answer: None, the whole range
+
+
+@dataclass(frozen=True)
+class SharedCurve:
+    """A design's coupler curve from the generic one: what the sweep's ``curve`` columns hold."""
+
+    exact: flint.fmpq_mpoly
+    variables: tuple[str, str]  # the point's coordinates
+    degree: int
+    circularity: int
+    irreducible: bool
+    verification: str
+
+    @property
+    def text(self) -> str:
+        """The polynomial as sympy writes it (what the design's own path gives)."""
+        from ..system.convert import sympy_text
+
+        return sympy_text(self.exact, self.exact.context())
+
+    @property
+    def polynomial(self) -> sympy.Expr:
+        from ..system.convert import to_sympy
+
+        return to_sympy(self.exact, self.exact.context())
+
+
+@dataclass
+class Family:
+    """The scene compiled once with the dimensions ``names`` symbolic, for the point ``point``."""
+
+    scene: Scene
+    names: tuple[str, ...]
+    point: str
+    _prepared: Prepared | None = field(default=None, repr=False)
+    _generic: Any = field(default=None, repr=False)  # the generic curve's Eliminant, once asked for
+    _grid: Any = field(default=None, repr=False)
+
+    @classmethod
+    def of(cls, scene: Scene, names: tuple[str, ...], point: str, *, analyses: tuple[str, ...]) -> Family | None:
+        """The family of ``scene`` in the dimensions ``names``, its shared work done now for ``analyses``
+        (in this process: a design run in a child under its budget inherits it); None where there is
+        none to share (points solved together, more than one input) or it cannot be worked out
+        within ``GENERIC_TERMS`` (each design then takes its own path)."""
+        from ..derivation.prepared import prepare
+
+        if scene.unknown_points or not names:
+            return None
+        try:
+            prepared = prepare(scene, outputs=[point], params=list(names))
+            if len(prepared.compiled.system.inputs) != 1:
+                return None
+            family = cls(scene, names, point, prepared)
+            if {"curve", "singular"} & set(analyses):
+                family._generic_curve()
+            family._grid_programs()
+        except AlgkinError:
+            return None
+        return family
+
+    @property
+    def prepared(self) -> Prepared:
+        """The scene compiled for ``point`` with ``names`` symbolic, its branches found."""
+        assert self._prepared is not None, "made by Family.of"
+        return self._prepared
+
+    def design(self, values: Mapping[str, Fraction]) -> SharedDesign | None:
+        """The design with ``values`` when the family can answer for it, else None (its own path decides).
+
+        A SceneError (the values break the scene) is raised as the design's own path raises it."""
+        from ..scene.settings import with_values
+
+        scene = with_values(self.scene, dict(values))
+        if set(values) != set(self.names) or not all(_float_safe(v) for v in values.values()):
+            return None
+        prepared = self.prepared
+        if any(spec.side() is not None for spec in prepared.compiled.implicit):
+            return None
+        defaults = dict(prepared.compiled.parameter_values)
+        defaults.update({n: sympy.Rational(v.numerator, v.denominator) for n, v in values.items()})
+        compiled = attrs.evolve(prepared.compiled, parameter_values=defaults)
+        if not self._clearly_assembles(values):
+            return None
+        return SharedDesign(values, scene, compiled)
+
+    def _clearly_assembles(self, values: Mapping[str, Fraction]) -> bool:
+        """Whether every discriminant of the chosen branch is clearly positive somewhere on the grid,
+        every branch's wide enough (no narrowing, no structure), and no grid value near zero."""
+        from ..derivation.assembles import NARROW
+
+        grid = self._grid_programs()
+        numbers = [float(values[n]) for n in self.names]
+        found = []
+        for program in grid.programs:
+            with np.errstate(all="ignore"):
+                values_on_grid = [np.broadcast_to(np.asarray(v, dtype=np.float64), grid.size)
+                                  for v in program(*grid.inputs, *numbers)]
+            found.append(np.array(values_on_grid) if values_on_grid else np.ones((1, grid.size)))
+        for rows in found:
+            if not np.all(np.isfinite(rows)):
+                return False
+            scale = np.max(np.abs(rows), axis=1, keepdims=True)
+            if np.any(np.abs(rows) <= CLEARANCE * scale):
+                return False
+        real = [np.all(rows > 0, axis=0) for rows in found]
+        chosen = next(k for k, b in enumerate(self.prepared.branches) if b.selected)
+        return bool(real[chosen].mean() >= NARROW and np.any(real, axis=0).mean() >= NARROW)
+
+    def _grid_programs(self) -> _Grid:
+        if self._grid is None:
+            self._grid = _Grid.of(self.prepared, self.names)
+        grid: _Grid = self._grid
+        return grid
+
+    def curve(self, design: SharedDesign, *, samples: int = 40, seed: int = 0) -> SharedCurve | None:
+        """The design's curve: the generic eliminant specialised, when it keeps the generic degree, is
+        irreducible and passes the design's verification; None otherwise (the design's own path)."""
+        from ..derivation.curves import curve_figures
+        from ..verify import verify_branches
+
+        generic = self._generic_curve()
+        exact, (x, y) = generic.exact[0], generic.variables[:2]
+        variables = (x, y)
+        special = exact.subs({n: flint.fmpq(v.numerator, v.denominator) for n, v in design.values.items()})
+        if special.is_zero() or _degree(special, variables) != _degree(exact, variables):
+            return None
+        _, factors = special.factor()
+        if len(factors) != 1 or factors[0][1] != 1:
+            return None
+        special = generic.engine.primitive(special)  # the normal form the design's own eliminant has
+        checked = verify_branches(self._check_setup(design), samples=samples, seed=seed,
+                                  polynomials={"curve": special}, factors={"curve": [special]}, where=design.where)
+        if not checked.passed:
+            return None
+        degree, circularity = curve_figures(special, variables)
+        return SharedCurve(special, variables, degree, circularity, True, checked.status.value)
+
+    def _generic_curve(self) -> Any:
+        if self._generic is None:
+            from ..derivation.pipeline import curve
+
+            self._generic = curve(self.prepared, self.point, samples=0, budget=Budget(terms=GENERIC_TERMS)).elimination
+        return self._generic
+
+    def _check_setup(self, design: SharedDesign) -> CheckSetup:
+        """The verification's setup with the dimensions kept symbolic, valued by the design: its
+        compiled programs are the same for every design (and compiled once)."""
+        from ..runtime.frozen import frozen
+        from ..verify import CheckSetup
+
+        compiled = design.compiled
+        system = compiled.system
+        inputs = {n: (float(i.to_radians(i.lo)), float(i.to_radians(i.hi)))
+                  for n, i in compiled.scene.inputs.items() if n in system.inputs}
+        return CheckSetup(system=system, indicators=[(i.point, i.expr, i.positive, i.negative)
+                                                     for i in compiled.indicators],
+                          branches=tuple((b.labels, b.values, b.discriminants) for b in self.prepared.branches),
+                          inputs=frozen(inputs), parameters=compiled.parameter_values)
+
+
+@dataclass(frozen=True)
+class _Grid:
+    """Every branch's discriminants compiled once with the dimensions as arguments, and the grid of
+    inputs ``check_assembly`` and ``where_assembled`` use (its values in the input's variables)."""
+
+    programs: tuple[Any, ...]
+    inputs: tuple[np.ndarray, ...]
+    size: int
+
+    @classmethod
+    def of(cls, prepared: Prepared, names: tuple[str, ...]) -> _Grid:
+        from ..derivation.assembles import GRID
+        from ..evaluate import NUMPY
+        from ..evaluate.program import compile_program
+        from ..system import input_values
+
+        compiled = prepared.compiled
+        (name, variables), = compiled.system.inputs.items()
+        spec = compiled.scene.inputs[name]
+        lo, hi = spec.span
+        grid = np.linspace(float(lo), float(hi), GRID)
+        floats = input_values(variables, np.radians(grid) if spec.is_angle else grid)
+        programs = tuple(compile_program(list(b.discriminants.values()), [*variables, *names], NUMPY)
+                         for b in prepared.branches)
+        return cls(programs, tuple(floats[v] for v in variables), GRID)
+
+
+def _degree(poly: flint.fmpq_mpoly, variables: tuple[str, ...]) -> int:
+    names = [str(n) for n in poly.context().names()]
+    index = [names.index(v) for v in variables]
+    return max((sum(int(m[i]) for i in index) for m in poly.monoms()), default=-1)
+
+
+def _float_safe(value: Fraction) -> bool:
+    """Whether ``value`` is a float without overflow or underflow (its numerator and denominator too)."""
+    if value == 0:
+        return True
+    return all(abs(math.log2(abs(x))) < MAX_EXPONENT for x in (value.numerator, value.denominator) if x != 1) \
+        and abs(math.log2(abs(value))) < MAX_EXPONENT
+

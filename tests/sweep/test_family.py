@@ -1,0 +1,95 @@
+"""A family (algkin.sweep.family): what the designs share, worked out once, gives each design the
+row it gets computed alone, and leaves to each design's own path what it cannot answer for."""
+
+from fractions import Fraction
+
+import pytest
+from hypothesis import HealthCheck, given, settings, strategies as st
+
+from algkin.scene import load_scene
+from algkin.sweep import sweep, without_timings, read_dataset
+from algkin.sweep.design import Job, evaluate_design
+from algkin.sweep.family import Family
+
+FOURBAR = load_scene("fourbar")
+ANALYSES = ("curve", "grashof")
+
+
+def without_seconds(row):
+    return {k: v for k, v in row.items() if not k.startswith("seconds_")}
+
+
+def rows(values, *, names=("a", "l", "m", "d"), analyses=ANALYSES):
+    """The row of one design with the family, and alone."""
+    job = Job(FOURBAR, analyses, "P")
+    family = Family.of(FOURBAR, names, "P", analyses=analyses)
+    return (without_seconds(evaluate_design(job, 0, values, family=family)),
+            without_seconds(evaluate_design(job, 0, values)))
+
+
+small = st.fractions(min_value=Fraction(1, 4), max_value=6, max_denominator=4)
+
+
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(a=small, l=small, m=small, d=small)
+def test_a_design_of_the_family_has_the_row_it_has_alone(a, l, m, d):
+    shared, alone = rows({"a": a, "l": l, "m": m, "d": d})
+    assert shared == alone
+
+
+@pytest.mark.parametrize("values, status", [
+    ({"a": Fraction(5, 6), "d": Fraction(22, 3)}, "structure"),          # |DA| = l + m at theta = 0 only
+    ({"a": Fraction(1), "d": Fraction(10)}, "does-not-assemble"),        # |DA| >= 9 > l + m
+    ({"a": Fraction(1, 2), "d": Fraction(6)}, "ok"),                     # a + d = l + m: a dead centre at 180
+    ({"a": Fraction(2), "d": Fraction(5)}, "ok"),                        # non-Grashof: part of the turn
+])
+def test_the_hard_designs_get_their_own_rows(values, status):
+    shared, alone = rows(values, names=("a", "d"))
+    assert shared == alone and shared["status"] == status
+
+
+def test_the_designs_near_zero_or_off_the_grid_are_left_to_their_own_path():
+    family = Family.of(FOURBAR, ("a", "d"), "P", analyses=ANALYSES)
+    assert family.design({"a": Fraction(5, 6), "d": Fraction(22, 3)}) is None   # a structure
+    assert family.design({"a": Fraction(1, 2), "d": Fraction(6)}) is None        # touches zero at 180 degrees
+    # the same touch, 3e-13 from zero in floats: within rounding of zero, not clear of it
+    assert family.design({"a": Fraction(2, 3), "d": Fraction(35, 6)}) is None
+    assert family.design({"a": Fraction(1), "d": Fraction(10)}) is None          # never assembles
+    assert family.design({"a": Fraction(1)}) is None                             # not the family's dimensions
+    assert family.design({"a": Fraction(1, 2), "d": Fraction(4)}) is not None
+
+
+def test_a_curve_of_lower_degree_than_the_familys_is_its_own():
+    """With the coupler point on the crank tip (p = q = 0), P = A runs on the crank's circle x^2 + y^2 = a^2:
+    the generic sextic drops degree there, so the design's own elimination answers."""
+    family = Family.of(FOURBAR, ("a", "p", "q"), "P", analyses=("curve",))
+    values = {"a": Fraction(1), "p": Fraction(0), "q": Fraction(0)}
+    assert family.curve(family.design(values)) is None
+    shared, alone = rows(values, names=("a", "p", "q"), analyses=("curve",))
+    assert shared == alone
+    assert (shared["curve_polynomial"], shared["curve_degree"]) == ("P_x**2 + P_y**2 - 1", 2)
+
+
+def test_a_parallelogram_whose_curve_splits_is_its_own():
+    """Crank = rocker and coupler = ground (a = m = 1, l = d = 4): the four-bar folds into a kite as
+    well as moving as a parallelogram, and its coupler curve has more than one factor."""
+    family = Family.of(FOURBAR, ("a", "l", "m"), "P", analyses=("curve",))
+    values = {"a": Fraction(1), "l": Fraction(4), "m": Fraction(1)}
+    design = family.design(values)
+    assert design is None or family.curve(design) is None
+    shared, alone = rows(values, names=("a", "l", "m"), analyses=("curve",))
+    assert shared == alone
+
+
+def test_a_scene_with_nothing_to_share_has_no_family():
+    assert Family.of(FOURBAR, (), "P", analyses=ANALYSES) is None
+    assert Family.of(load_scene("3rpr"), ("r2",), "P", analyses=("modes",)) is None
+
+
+def test_a_shared_sweep_writes_the_dataset_of_each_design_alone(tmp_path):
+    grid = ["a=1/2:3/2:3", "l=2:4:3", "d=4:10:3"]   # 27 four-bars: ok, never assembling and structures among them
+    shared = sweep("fourbar", tmp_path / "shared", grid=grid, analyses=["curve", "grashof"], executor="serial")
+    alone = sweep("fourbar", tmp_path / "alone", grid=grid, analyses=["curve", "grashof"], executor="serial",
+                  share=False)
+    assert shared.counts == alone.counts and len(shared.counts) > 1
+    assert without_timings(read_dataset(tmp_path / "shared")).equals(without_timings(read_dataset(tmp_path / "alone")))
