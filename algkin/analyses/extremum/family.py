@@ -50,7 +50,7 @@ from ...scene.model import Scene
 from ...scene.settings import with_values
 from ...system import symbol
 from ...system.convert import flint_context, to_flint, to_sympy
-from . import Extremum, _span, exact_pair, extremum, in_degrees, problem_for
+from . import Extremum, exact_pair, extremum, in_degrees, input_span, problem_for
 from .closed import describe, end_degrees, value_at_angle
 from .critical import DIGITS, CriticalPoint, Problem, extreme, points_in
 
@@ -76,7 +76,7 @@ def extremum_family(scene: SceneLike, output: str, params: Sequence[str], *,
     if len(inputs) != 1:
         raise UsageError("scene", loaded.name, "an extremum needs exactly one input")
     (name,) = inputs
-    lo, hi = _span(derived.compiled.scene.inputs[name], angle_range)
+    lo, hi = input_span(derived.compiled.scene.inputs[name], angle_range)
     problem = problem_for(derived, output, (lo, hi), witnesses=prepared.witnesses, deadline=deadline)
     defaults = {p.name: sympy.Rational(str(derived.compiled.parameter_values[p.name])) for p in problem.parameters}
     return ExtremumFamily(loaded, output, name, (lo, hi), problem, defaults, angle_range, backend, budget)
