@@ -188,9 +188,14 @@ def _limits(design: Design) -> dict[str, Any]:
 
 def transmission_output(design: Design) -> str:
     """``angle(A, B, D)``: at the coupler-rocker joint B, between the crank tip A and the ground pivot D."""
+    return transmission_of(design.scene)
+
+
+def transmission_of(scene: Scene) -> str:
+    """``transmission_output`` of a scene: its four-bar's ``angle(A, B, D)``."""
     from ..scene.constructions import Crank, Dyad, Fixed
 
-    points = design.scene.points
+    points = scene.points
     for name, point in points.items():
         if isinstance(point, Dyad):
             tip, pivot = point.bases
@@ -205,7 +210,8 @@ def _transmission(design: Design) -> dict[str, Any]:
     from ..analyses.extremum import extremum
 
     output = transmission_output(design)
-    found = extremum(design.scene, output)
+    shared = design.family.extremum(output) if design.family is not None and design.shared is not None else None
+    found = extremum(design.scene, output) if shared is None else shared.at(design.shared.values)
     exact: Mapping[str, Any] = found.exact or {}
     row: dict[str, Any] = {"transmission_of": output}
     for key, point in (("min", found.minimum), ("max", found.maximum)):

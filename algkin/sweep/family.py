@@ -44,6 +44,7 @@ from ..errors import AlgkinError
 from ..runtime.budget import Budget
 
 if TYPE_CHECKING:
+    from ..analyses.extremum.family import ExtremumFamily
     from ..derivation.prepared import Prepared
     from ..scene import Compiled, Scene
     from ..verify import CheckSetup
@@ -105,6 +106,8 @@ class Family:
     _prepared: Prepared | None = field(default=None, repr=False)
     _generic: Any = field(default=None, repr=False)  # the generic curve's Eliminant, once asked for
     _grid: Any = field(default=None, repr=False)
+    # output -> its extremum for the family (``algkin.analyses.extremum.family``), or None where there is none
+    _extrema: dict[str, Any] = field(default_factory=dict, repr=False)
 
     @classmethod
     def of(cls, scene: Scene, names: tuple[str, ...], point: str, *, analyses: tuple[str, ...]) -> Family | None:
@@ -124,6 +127,8 @@ class Family:
             if {"curve", "singular"} & set(analyses):
                 family._generic_curve()
             family._grid_programs()
+            if "transmission" in analyses:
+                family._transmission()
         except AlgkinError:
             return None
         return family
@@ -204,6 +209,30 @@ class Family:
             return None
         degree, circularity = curve_figures(special, variables)
         return SharedCurve(special, variables, degree, circularity, True, checked.status.value)
+
+    def extremum(self, output: str) -> ExtremumFamily | None:
+        """The extremum of ``output`` for the family (derived once with the dimensions symbolic), or
+        None where it cannot be (each design then computes its own)."""
+        if output not in self._extrema:
+            from ..analyses.extremum.family import extremum_family
+
+            try:
+                self._extrema[output] = extremum_family(self.scene, output, list(self.names),
+                                                        budget=Budget(terms=GENERIC_TERMS))
+            except AlgkinError:
+                self._extrema[output] = None
+        found: ExtremumFamily | None = self._extrema[output]
+        return found
+
+    def _transmission(self) -> None:
+        """The transmission angle's extremum for the family, if the scene has one (``extremum``)."""
+        from .analyses import transmission_of
+
+        try:
+            output = transmission_of(self.scene)
+        except AlgkinError:
+            return  # each design says it has none
+        self.extremum(output)
 
     def _generic_curve(self) -> Any:
         if self._generic is None:
