@@ -210,8 +210,9 @@ def _transmission(design: Design) -> dict[str, Any]:
     from ..analyses.extremum import extremum
 
     output = transmission_output(design)
-    shared = design.family.extremum(output) if design.family is not None and design.shared is not None else None
-    found = extremum(design.scene, output) if shared is None else shared.at(design.shared.values)
+    family = design.family.extremum(output) if design.family is not None else None
+    found = extremum(design.scene, output) if family is None or design.shared is None \
+        else family.at(design.shared.values)
     exact: Mapping[str, Any] = found.exact or {}
     row: dict[str, Any] = {"transmission_of": output}
     for key, point in (("min", found.minimum), ("max", found.maximum)):
