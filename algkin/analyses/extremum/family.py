@@ -277,7 +277,8 @@ def _exactly_zero(point: CriticalPoint) -> bool:
     if point.enclosure is None:
         return False
     ball = flint.arb(point.enclosure)
-    return bool(ball.rad() == 0 and ball.mid().is_integer() and int(ball.mid().unique_fmpz()) % 360 == 0)
+    whole = ball.unique_fmpz() if ball.rad() == 0 else None
+    return whole is not None and int(whole) % 360 == 0
 
 
 def _meeting(numerator: flint.fmpq_mpoly, valid: Sequence[flint.fmpq_mpoly], names: tuple[str, str]
