@@ -55,6 +55,7 @@ __all__ = ["Family", "SharedDesign", "SharedCurve", "CLEARANCE"]
 # arithmetic of the design's own path (its numbers folded in) may then see another sign
 CLEARANCE = 1e-9
 MAX_EXPONENT = 300  # a dimension whose float is past 2**±this is decided by the design's own path
+MARGIN = 1e-9  # a value the design's compilation checks, in floats: within this of zero, its own path decides
 # the generic curve's intermediate eliminants at most this many terms: a family that would swell
 # past it (many dimensions symbolic in a big scene) is left to each design's own elimination
 GENERIC_TERMS = 20_000
@@ -108,6 +109,7 @@ class Family:
     _grid: Any = field(default=None, repr=False)
     # output -> its extremum for the family (``algkin.analyses.extremum.family``), or None where there is none
     _extrema: dict[str, Any] = field(default_factory=dict, repr=False)
+    _checks: _Checks | None = field(default=None, repr=False)
 
     @classmethod
     def of(cls, scene: Scene, names: tuple[str, ...], point: str, *, analyses: tuple[str, ...]) -> Family | None:
@@ -126,7 +128,10 @@ class Family:
             # a design assembles when every dyad and slider of the scene does, not only the point's
             if not set(_implicit(scene)) <= set(prepared.compiled.coordinates):
                 return None
-            family = cls(scene, names, point, prepared)
+            checks = _Checks.of(scene, names, _implicit(scene) or [point])
+            if checks is None:
+                return None
+            family = cls(scene, names, point, prepared, _checks=checks)
             if {"curve", "singular"} & set(analyses):
                 family._generic_curve()
             family._grid_programs()
@@ -149,15 +154,11 @@ class Family:
         them (a length that is not positive...) leaves the design to its own path, which says it."""
         from ..scene.settings import with_values
 
-        from ..scene import compile_scene
-
         scene = with_values(self.scene, dict(values))
         if set(values) != set(self.names) or not all(_float_safe(v) for v in values.values()):
             return None
-        try:  # the checks of the design's own scene (a length that is not positive...), as its own path makes them
-            compile_scene(scene, _implicit(scene) or [self.point])
-        except AlgkinError:
-            return None
+        if self._checks is None or not self._checks.clear(values):
+            return None  # its own compilation may refuse it (a length that is not positive...): it says how
         prepared = self.prepared
         if any(spec.side() is not None for spec in prepared.compiled.implicit):
             return None
@@ -294,6 +295,73 @@ class _Grid:
         programs = tuple(compile_program(list(b.discriminants.values()), [*variables, *names], NUMPY)
                          for b in prepared.branches)
         return cls(programs, tuple(floats[v] for v in variables), GRID)
+
+
+@dataclass(frozen=True)
+class _Checks:
+    """What the design's own compilation checks of its values (``dimension_checks``), made without
+    compiling: a value that is a swept dimension itself exactly, any other in floats with a margin
+    (clear of zero, of the magnitudes' bounds); a design not clear of them takes its own path."""
+
+    names: tuple[str, ...]
+    lengths: tuple[sympy.Expr, ...]
+    numbers: tuple[sympy.Expr, ...]
+    directions: tuple[tuple[sympy.Expr, sympy.Expr], ...]
+    floats: Any  # every one of them as a float program of the swept dimensions
+
+    @classmethod
+    def of(cls, scene: Scene, names: tuple[str, ...], outputs: list[str]) -> _Checks | None:
+        """The checks of the design's own compilation for ``outputs``; None where they cannot be made
+        without compiling (a crank's phase given by a swept dimension, values that could reach too many bits)."""
+        from ..evaluate import FLOAT
+        from ..evaluate.program import compile_program
+        from ..scene.compile import dimension_checks
+        from ..scene.expr import MAX_VALUE_BITS
+
+        checks = dimension_checks(scene, outputs, names)
+        if checks.phases or checks.reach(dict.fromkeys(names, MAX_EXPONENT + 1)) > MAX_VALUE_BITS:
+            return None
+        every = [*checks.lengths, *checks.numbers, *(v for pair in checks.directions for v in pair)]
+        return cls(names, checks.lengths, checks.numbers, checks.directions, compile_program(every, names, FLOAT))
+
+    def clear(self, values: Mapping[str, Fraction]) -> bool:
+        with np.errstate(all="ignore"):
+            try:
+                numbers = iter(self.floats(*(float(values[n]) for n in self.names)))
+            except (ArithmeticError, ValueError):
+                return False
+        lengths = [(e, next(numbers)) for e in self.lengths]
+        others = [(e, next(numbers)) for e in self.numbers]
+        directions = [((x, next(numbers)), (y, next(numbers))) for x, y in self.directions]
+        return all(_positive(e, v, values) for e, v in lengths) and all(_in_range(e, v, values) for e, v in others) \
+            and all(not (_near_zero(*x, values) and _near_zero(*y, values)) for x, y in directions)
+
+
+def _exact(expr: sympy.Expr, values: Mapping[str, Fraction]) -> Fraction | None:
+    """``expr``'s exact value where it is a number or a dimension itself, else None."""
+    if expr.is_Rational:
+        return Fraction(int(expr.p), int(expr.q))
+    return values.get(expr.name) if expr.is_Symbol else None
+
+
+def _positive(expr: sympy.Expr, value: float, values: Mapping[str, Fraction]) -> bool:
+    exact = _exact(expr, values)
+    return exact > 0 if exact is not None else bool(math.isfinite(value) and value > MARGIN * (1 + abs(value)))
+
+
+def _in_range(expr: sympy.Expr, value: float, values: Mapping[str, Fraction]) -> bool:
+    """Zero or within ``MAGNITUDES`` (exactly for a dimension, with a margin in floats otherwise)."""
+    from ..scene.compile import MAGNITUDES
+
+    exact = _exact(expr, values)
+    if exact is not None:
+        return exact == 0 or Fraction(str(MAGNITUDES[0])) <= abs(exact) <= Fraction(str(MAGNITUDES[1]))
+    return bool(math.isfinite(value) and 10.0 ** -90 <= abs(value) <= 10.0 ** 90)
+
+
+def _near_zero(expr: sympy.Expr, value: float, values: Mapping[str, Fraction]) -> bool:
+    exact = _exact(expr, values)
+    return exact == 0 if exact is not None else not (math.isfinite(value) and abs(value) > MARGIN)
 
 
 def _implicit(scene: Scene) -> list[str]:
