@@ -123,6 +123,9 @@ class Family:
             prepared = prepare(scene, outputs=[point], params=list(names))
             if len(prepared.compiled.system.inputs) != 1:
                 return None
+            # a design assembles when every dyad and slider of the scene does, not only the point's
+            if not set(_implicit(scene)) <= set(prepared.compiled.coordinates):
+                return None
             family = cls(scene, names, point, prepared)
             if {"curve", "singular"} & set(analyses):
                 family._generic_curve()
@@ -142,11 +145,18 @@ class Family:
     def design(self, values: Mapping[str, Fraction]) -> SharedDesign | None:
         """The design with ``values`` when the family can answer for it, else None (its own path decides).
 
-        A SceneError (the values break the scene) is raised as the design's own path raises it."""
+        A SceneError of loading the values is raised as the design's own path raises it; one of compiling
+        them (a length that is not positive...) leaves the design to its own path, which says it."""
         from ..scene.settings import with_values
+
+        from ..scene import compile_scene
 
         scene = with_values(self.scene, dict(values))
         if set(values) != set(self.names) or not all(_float_safe(v) for v in values.values()):
+            return None
+        try:  # the checks of the design's own scene (a length that is not positive...), as its own path makes them
+            compile_scene(scene, _implicit(scene) or [self.point])
+        except AlgkinError:
             return None
         prepared = self.prepared
         if any(spec.side() is not None for spec in prepared.compiled.implicit):
@@ -196,7 +206,9 @@ class Family:
         generic = self._generic_curve()
         exact, (x, y) = generic.exact[0], generic.variables[:2]
         variables = (x, y)
-        special = exact.subs({n: flint.fmpq(v.numerator, v.denominator) for n, v in design.values.items()})
+        present = {str(n) for n in exact.context().names()}  # a dimension the point's curve is free of is not in it
+        special = exact.subs({n: flint.fmpq(v.numerator, v.denominator) for n, v in design.values.items()
+                              if n in present})
         if special.is_zero() or _degree(special, variables) != _degree(exact, variables):
             return None
         _, factors = special.factor()
@@ -282,6 +294,11 @@ class _Grid:
         programs = tuple(compile_program(list(b.discriminants.values()), [*variables, *names], NUMPY)
                          for b in prepared.branches)
         return cls(programs, tuple(floats[v] for v in variables), GRID)
+
+
+def _implicit(scene: Scene) -> list[str]:
+    """The scene's dyads and sliders: the points the design's own path checks the assembly of."""
+    return [n for n, p in scene.points.items() if p.labels]
 
 
 def _degree(poly: flint.fmpq_mpoly, variables: tuple[str, ...]) -> int:

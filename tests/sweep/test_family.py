@@ -93,3 +93,44 @@ def test_a_shared_sweep_writes_the_dataset_of_each_design_alone(tmp_path):
                   share=False)
     assert shared.counts == alone.counts and len(shared.counts) > 1
     assert without_timings(read_dataset(tmp_path / "shared")).equals(without_timings(read_dataset(tmp_path / "alone")))
+
+
+def shared_and_alone(scene, values, *, point, analyses):
+    """The row of one design of ``scene`` with the family of its dimensions, and alone."""
+    job = Job(scene, analyses, point)
+    family = Family.of(scene, tuple(values), point, analyses=analyses)
+    return (without_seconds(evaluate_design(job, 0, values, family=family)),
+            without_seconds(evaluate_design(job, 0, values)))
+
+
+@pytest.mark.parametrize("scene, values, point, element", [
+    (FOURBAR, {"a": Fraction(0)}, "P", "points.A"),                          # a crank of length 0
+    (FOURBAR, {"a": Fraction(-1)}, "P", "points.A"),
+    (FOURBAR, {"l": Fraction(-3), "m": Fraction(7, 2)}, "P", "points.B"),     # a dyad's negative length
+    (load_scene("inverted-slider-crank"), {"k": Fraction(-1)}, "H", "points.H"),  # a slider's distance
+])
+def test_a_zero_or_negative_length_fails_as_it_does_alone(scene, values, point, element):
+    """A length that is not positive breaks the scene (as a file with it would): the row says so,
+    with no curve, whatever the family's grid of discriminants says."""
+    shared, alone = shared_and_alone(scene, values, point=point, analyses=("curve",))
+    assert shared == alone
+    assert shared["status"] == "failed" and f"{element}: length must be positive" in shared["reason"]
+    assert shared["curve_polynomial"] is None
+
+
+def test_a_curve_free_of_a_swept_dimension_is_specialised():
+    """arm-string's G, at g = 120 along the arm, runs on the circle x^2 + y^2 = 120^2 whatever the
+    string's anchor B = (a, -b): the generic curve has no a or b in it."""
+    scene = load_scene("arm-string")
+    shared, alone = shared_and_alone(scene, {"a": Fraction(300), "b": Fraction(50)}, point="G", analyses=("curve",))
+    assert shared == alone
+    assert (shared["status"], shared["curve_polynomial"]) == ("ok", "G_x**2 + G_y**2 - 14400")
+
+
+def test_a_point_before_the_dyads_assembles_with_them():
+    """Tracing the crank tip A of a four-bar whose dyad B never meets (|DA| >= 9 > l + m): the design
+    does not assemble, as derive says of the scene, though A alone would turn."""
+    shared, alone = shared_and_alone(FOURBAR, {"d": Fraction(10)}, point="A", analyses=("curve",))
+    assert shared == alone and shared["status"] == "does-not-assemble"
+    shared, alone = shared_and_alone(FOURBAR, {"d": Fraction(4)}, point="A", analyses=("curve",))
+    assert shared == alone and shared["curve_polynomial"] == "A_x**2 + A_y**2 - 1"

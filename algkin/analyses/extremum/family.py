@@ -251,8 +251,14 @@ class _Design:
         assert problem.scale is not None, "an angle output's"
         degrees = end_degrees(problem, best)
         with mpmath.workdps(DIGITS):
+            at_zero = value_at_angle(problem, sympy.Integer(0), {}) if degrees is None and _exactly_zero(best) \
+                else None
             if degrees is not None:
                 value = value_at_angle(problem, degrees, {})
+            elif at_zero is not None and at_zero.is_Rational:
+                # a stationary input at exactly 0 degrees with a rational value: that rational is the
+                # root of the linear value factor ``describe`` would find it by
+                value = at_zero
             else:
                 meeting = [m for _, m in self._meeting]
                 value = describe(problem, self.stationary, self._value_factors(), {}, best, meeting).value
@@ -264,6 +270,15 @@ class _Design:
         u, t = self._names
         factors = eliminate([self._numerator, self._derivative], [t], [u], method="resultant").factors
         return [f for f in factors if f.has(self.problem.u)]
+
+
+def _exactly_zero(point: CriticalPoint) -> bool:
+    """Whether ``point``'s input is exactly a whole turn (its enclosure a point, from the root ``t = 0``)."""
+    if point.enclosure is None:
+        return False
+    ball = flint.arb(point.enclosure)
+    whole = ball.unique_fmpz() if ball.rad() == 0 else None
+    return whole is not None and int(whole) % 360 == 0
 
 
 def _meeting(numerator: flint.fmpq_mpoly, valid: Sequence[flint.fmpq_mpoly], names: tuple[str, str]
