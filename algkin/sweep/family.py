@@ -59,6 +59,9 @@ MARGIN = 1e-9  # a value the design's compilation checks, in floats: within this
 # the generic curve's intermediate eliminants at most this many terms: a family that would swell
 # past it (many dimensions symbolic in a big scene) is left to each design's own elimination
 GENERIC_TERMS = 20_000
+# ... nor longer than this many seconds (in a child process, stopped there): a family whose generic
+# curve costs more than many designs' own would is not worth it for a sweep of a few
+GENERIC_SECONDS = 10.0
 
 
 @dataclass
@@ -115,8 +118,8 @@ class Family:
     def of(cls, scene: Scene, names: tuple[str, ...], point: str, *, analyses: tuple[str, ...]) -> Family | None:
         """The family of ``scene`` in the dimensions ``names``, its shared work done now for ``analyses``
         (in this process: a design run in a child under its budget inherits it); None where there is
-        none to share (points solved together, more than one input) or it cannot be worked out
-        within ``GENERIC_TERMS`` (each design then takes its own path)."""
+        none to share (points solved together, more than one input). Its generic curve is given
+        ``GENERIC_SECONDS`` and ``GENERIC_TERMS``: past them each design eliminates its own."""
         from ..derivation.prepared import prepare
 
         if scene.unknown_points or not names:
@@ -204,7 +207,11 @@ class Family:
         from ..derivation.curves import curve_figures
         from ..verify import verify_branches
 
+        from ..eliminate.backends import FlintBackend
+
         generic = self._generic_curve()
+        if generic is None:
+            return None
         exact, (x, y) = generic.exact[0], generic.variables[:2]
         variables = (x, y)
         present = {str(n) for n in exact.context().names()}  # a dimension the point's curve is free of is not in it
@@ -215,7 +222,7 @@ class Family:
         _, factors = special.factor()
         if len(factors) != 1 or factors[0][1] != 1:
             return None
-        special = generic.engine.primitive(special)  # the normal form the design's own eliminant has
+        special = FlintBackend(sorted(present)).primitive(special)  # the normal form the design's own eliminant has
         checked = verify_branches(self._check_setup(design), samples=samples, seed=seed,
                                   polynomials={"curve": special}, factors={"curve": [special]}, where=design.where)
         if not checked.passed:
@@ -248,11 +255,16 @@ class Family:
         self.extremum(output)
 
     def _generic_curve(self) -> Any:
+        """The curve's eliminant with the dimensions symbolic (None where it could not be had in budget)."""
         if self._generic is None:
             from ..derivation.pipeline import curve
 
-            self._generic = curve(self.prepared, self.point, samples=0, budget=Budget(terms=GENERIC_TERMS)).elimination
-        return self._generic
+            try:
+                self._generic = curve(self.prepared, self.point, samples=0,
+                                      budget=Budget(seconds=GENERIC_SECONDS, terms=GENERIC_TERMS)).elimination
+            except AlgkinError:
+                self._generic = False
+        return self._generic or None
 
     def _check_setup(self, design: SharedDesign) -> CheckSetup:
         """The verification's setup with the dimensions kept symbolic, valued by the design: its
