@@ -134,3 +134,14 @@ def test_a_point_before_the_dyads_assembles_with_them():
     assert shared == alone and shared["status"] == "does-not-assemble"
     shared, alone = shared_and_alone(FOURBAR, {"d": Fraction(4)}, point="A", analyses=("curve",))
     assert shared == alone and shared["curve_polynomial"] == "A_x**2 + A_y**2 - 1"
+
+
+def test_a_generic_curve_past_its_time_leaves_each_design_its_own(monkeypatch):
+    """A family's generic curve that takes longer than GENERIC_SECONDS (here a microsecond: the
+    child it runs in is stopped before it starts) is dropped; the rest is still shared."""
+    monkeypatch.setattr("algkin.sweep.family.GENERIC_SECONDS", 1e-6)
+    family = Family.of(FOURBAR, ("a", "l"), "P", analyses=ANALYSES)
+    design = family.design({"a": Fraction(1, 2), "l": Fraction(3)})
+    assert design is not None and family.curve(design) is None
+    shared, alone = rows({"a": Fraction(1, 2), "l": Fraction(3)}, names=("a", "l"))
+    assert shared == alone
