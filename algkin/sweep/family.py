@@ -12,7 +12,8 @@ coupler curve (the eliminant with the dimensions symbolic). A design then takes 
   dimensions as numbers in the same compiled checks every design shares).
 
 Anything else, a discriminant near zero somewhere on the grid (a design at a change point, or
-one that may not assemble), a point placed by side, a curve that drops degree or splits, is
+one that may not assemble), a point placed by side or a mode named by a configuration, values
+its scene's checks refuse (a length not positive), a curve that drops degree or splits, is
 left to the design's own path (``None``): the answer is then the one each design computed
 alone gives, by construction, and where the family answers it gives that answer too.
 
@@ -122,7 +123,10 @@ class Family:
         ``GENERIC_SECONDS`` and ``GENERIC_TERMS``: past them each design eliminates its own."""
         from ..derivation.prepared import prepare
 
-        if scene.unknown_points or not names:
+        from ..derivation.modes import moded_points
+
+        # a mode named by a configuration is named with each design's values (its own path)
+        if scene.unknown_points or not names or moded_points(scene):
             return None
         try:
             prepared = prepare(scene, outputs=[point], params=list(names))

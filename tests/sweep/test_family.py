@@ -2,16 +2,18 @@
 row it gets computed alone, and leaves to each design's own path what it cannot answer for."""
 
 from fractions import Fraction
+from importlib import resources
 
 import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
-from algkin.scene import load_scene
+from algkin.scene import load_scene, load_scene_text
 from algkin.sweep import sweep, without_timings, read_dataset
 from algkin.sweep.design import Job, evaluate_design
 from algkin.sweep.family import Family
 
 FOURBAR = load_scene("fourbar")
+FOURBAR_TEXT = resources.files("algkin.catalog").joinpath("fourbar.toml").read_text()
 ANALYSES = ("curve", "grashof")
 
 
@@ -145,3 +147,14 @@ def test_a_generic_curve_past_its_time_leaves_each_design_its_own(monkeypatch):
     assert design is not None and family.curve(design) is None
     shared, alone = rows({"a": Fraction(1, 2), "l": Fraction(3)}, names=("a", "l"))
     assert shared == alone
+
+
+def test_a_mode_named_by_a_configuration_is_named_with_each_designs_values():
+    """B's mode named near (2, 3) at theta = 0: with a = 1/2, d = 4, m = 5 its configurations there
+    are (-1/28, +-3.0), 2 from (2, 3), further than a quarter of the 6 between them: no mode is named,
+    as the design's own path says, though the defaults' mode is."""
+    scene = load_scene_text(FOURBAR_TEXT.replace('branch = "left"', 'mode = { at = 0, near = [2, 3] }'))
+    values = {"a": Fraction(1, 2), "d": Fraction(4), "m": Fraction(5)}
+    shared, alone = shared_and_alone(scene, values, point="P", analyses=("curve",))
+    assert shared == alone
+    assert shared["status"] == "failed" and "mode.near: [2, 3] is not close to a configuration" in shared["reason"]
