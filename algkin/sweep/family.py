@@ -7,9 +7,12 @@ coupler curve (the eliminant with the dimensions symbolic). A design then takes 
 - it assembles where the float grid of its discriminants, evaluated with the dimensions as
   numbers, is clear of zero (the test ``check_assembly`` and ``where_assembled`` make, with
   the same grid), and its scene loads with the values (a value that breaks it, as a file would);
+- the values its own compilation checks (lengths positive...) are checked without compiling;
 - its curve is the generic eliminant specialised, taken only when it keeps the generic degree,
   is irreducible and passes the design's own verification (sampled on its motion, the
-  dimensions as numbers in the same compiled checks every design shares).
+  dimensions as numbers in the same compiled checks every design shares);
+- its transmission angle's extremes come from the extremum derived once for the family
+  (``algkin.analyses.extremum.family``).
 
 Anything else, a discriminant near zero somewhere on the grid (a design at a change point, or
 one that may not assemble), a point placed by side or a mode named by a configuration, values
@@ -22,8 +25,8 @@ alone gives, by construction, and where the family answers it gives that answer 
 >>> family = Family.of(load_scene("fourbar"), ("a",), "P", analyses=("curve",))
 >>> design = family.design({"a": Fraction(1, 2)})
 >>> curve = family.curve(design)
->>> curve.degree, curve.circularity, curve.irreducible, curve.verification
-(6, 3, True, 'passed')
+>>> curve.degree, curve.circularity, curve.verification
+(6, 3, 'passed')
 >>> family.design({"a": Fraction(5, 6), "d": Fraction(22, 3)}) is None   # assembles at theta = 0 only
 True
 """
@@ -72,19 +75,17 @@ class SharedDesign:
 
     values: Mapping[str, Fraction]
     scene: Scene
-    compiled: Compiled
-    where: Mapping[str, Any] | None = None  # where_assembled's answer: None, the whole range
+    compiled: Compiled  # assembling on the whole range (where_assembled's None): its checks sample all of it
 
 
 @dataclass(frozen=True)
 class SharedCurve:
     """A design's coupler curve from the generic one: what the sweep's ``curve`` columns hold."""
 
-    exact: flint.fmpq_mpoly
+    exact: flint.fmpq_mpoly  # irreducible: a curve that splits is the design's own
     variables: tuple[str, str]  # the point's coordinates
     degree: int
     circularity: int
-    irreducible: bool
     verification: str
 
     @property
@@ -228,11 +229,11 @@ class Family:
             return None
         special = FlintBackend(sorted(present)).primitive(special)  # the normal form the design's own eliminant has
         checked = verify_branches(self._check_setup(design), samples=samples, seed=seed,
-                                  polynomials={"curve": special}, factors={"curve": [special]}, where=design.where)
+                                  polynomials={"curve": special}, factors={"curve": [special]})
         if not checked.passed:
             return None
         degree, circularity = curve_figures(special, variables)
-        return SharedCurve(special, variables, degree, circularity, True, checked.status.value)
+        return SharedCurve(special, variables, degree, circularity, checked.status.value)
 
     def extremum(self, output: str) -> ExtremumFamily | None:
         """The extremum of ``output`` for the family (derived once with the dimensions symbolic), or
