@@ -58,6 +58,9 @@ MAX_EXPONENT = 300  # a dimension whose float is past 2**±this is decided by th
 # the generic curve's intermediate eliminants at most this many terms: a family that would swell
 # past it (many dimensions symbolic in a big scene) is left to each design's own elimination
 GENERIC_TERMS = 20_000
+# ... and found within this many seconds: past them (an elimination that a design alone finishes in
+# a second may take minutes with its dimensions symbolic), each design is faster on its own path
+GENERIC_SECONDS = 20.0
 
 
 @dataclass
@@ -104,18 +107,18 @@ class Family:
     names: tuple[str, ...]
     point: str
     _prepared: Prepared | None = field(default=None, repr=False)
-    _generic: Any = field(default=None, repr=False)  # the generic curve's Eliminant, once asked for
+    _generic: Any = field(default=None, repr=False)  # the generic curve (eliminant, variables), once asked for
     _grid: Any = field(default=None, repr=False)
 
     @classmethod
-    def of(cls, scene: Scene, names: tuple[str, ...], point: str, *, analyses: tuple[str, ...]) -> Family | None:
+    def of(cls, scene: Scene, names: tuple[str, ...], point: str, *, analyses: tuple[str, ...],
+           budget: Budget = Budget(seconds=GENERIC_SECONDS, terms=GENERIC_TERMS)) -> Family | None:
         """The family of ``scene`` in the dimensions ``names``, its shared work done now for ``analyses``
         (in this process: a design run in a child under its budget inherits it); None where there is
-        none to share (points solved together, more than one input) or it cannot be worked out
-        within ``GENERIC_TERMS`` (each design then takes its own path)."""
-        from ..derivation.prepared import prepare
-
+        none to share (points solved together, more than one input) or its generic curve cannot be
+        worked out within ``budget`` (each design then takes its own path)."""
         from ..derivation.modes import moded_points
+        from ..derivation.prepared import prepare
 
         # a mode named by a configuration is named with each design's values (its own path)
         if scene.unknown_points or not names or moded_points(scene):
@@ -129,7 +132,7 @@ class Family:
                 return None
             family = cls(scene, names, point, prepared)
             if {"curve", "singular"} & set(analyses):
-                family._generic_curve()
+                family._generic_curve(budget)
             family._grid_programs()
         except AlgkinError:
             return None
@@ -200,20 +203,20 @@ class Family:
         """The design's curve: the generic eliminant specialised, when it keeps the generic degree, is
         irreducible and passes the design's verification; None otherwise (the design's own path)."""
         from ..derivation.curves import curve_figures
+        from ..eliminate.group.algebra import primitive
         from ..verify import verify_branches
 
-        generic = self._generic_curve()
-        exact, (x, y) = generic.exact[0], generic.variables[:2]
-        variables = (x, y)
-        present = {str(n) for n in exact.context().names()}  # a dimension the point's curve is free of is not in it
+        exact, names = self._generic_curve()
+        variables = (names[0], names[1])
+        # a dimension the point's curve is free of is not among the eliminant's variables
         special = exact.subs({n: flint.fmpq(v.numerator, v.denominator) for n, v in design.values.items()
-                              if n in present})
+                              if n in names})
         if special.is_zero() or _degree(special, variables) != _degree(exact, variables):
             return None
         _, factors = special.factor()
         if len(factors) != 1 or factors[0][1] != 1:
             return None
-        special = generic.engine.primitive(special)  # the normal form the design's own eliminant has
+        special = primitive(special)  # the normal form the design's own eliminant has (lex, x before y)
         checked = verify_branches(self._check_setup(design), samples=samples, seed=seed,
                                   polynomials={"curve": special}, factors={"curve": [special]}, where=design.where)
         if not checked.passed:
@@ -221,12 +224,19 @@ class Family:
         degree, circularity = curve_figures(special, variables)
         return SharedCurve(special, variables, degree, circularity, True, checked.status.value)
 
-    def _generic_curve(self) -> Any:
+    def _generic_curve(self, budget: Budget = Budget(seconds=GENERIC_SECONDS, terms=GENERIC_TERMS)) \
+            -> tuple[flint.fmpq_mpoly, tuple[str, ...]]:
+        """The generic eliminant and its variables (the point's x and y first, then the dimensions),
+        worked out within ``budget``: in a child process, whence it comes back as sympy."""
         if self._generic is None:
             from ..derivation.pipeline import curve
+            from ..system.convert import flint_context, to_flint
 
-            self._generic = curve(self.prepared, self.point, samples=0, budget=Budget(terms=GENERIC_TERMS)).elimination
-        return self._generic
+            elimination = curve(self.prepared, self.point, samples=0, budget=budget).elimination
+            names = tuple(elimination.variables)
+            self._generic = to_flint(elimination.polynomial, flint_context(names)), names
+        found: tuple[flint.fmpq_mpoly, tuple[str, ...]] = self._generic
+        return found
 
     def _check_setup(self, design: SharedDesign) -> CheckSetup:
         """The verification's setup with the dimensions kept symbolic, valued by the design: its

@@ -124,7 +124,10 @@ def test_a_curve_free_of_a_swept_dimension_is_specialised():
     """arm-string's G, at g = 120 along the arm, runs on the circle x^2 + y^2 = 120^2 whatever the
     string's anchor B = (a, -b): the generic curve has no a or b in it."""
     scene = load_scene("arm-string")
-    shared, alone = shared_and_alone(scene, {"a": Fraction(300), "b": Fraction(50)}, point="G", analyses=("curve",))
+    values = {"a": Fraction(300), "b": Fraction(50)}
+    family = Family.of(scene, tuple(values), "G", analyses=("curve",))
+    assert family.curve(family.design(values)) is not None   # the family answers for it
+    shared, alone = shared_and_alone(scene, values, point="G", analyses=("curve",))
     assert shared == alone
     assert (shared["status"], shared["curve_polynomial"]) == ("ok", "G_x**2 + G_y**2 - 14400")
 
@@ -147,3 +150,29 @@ def test_a_mode_named_by_a_configuration_is_named_with_each_designs_values():
     shared, alone = shared_and_alone(scene, values, point="P", analyses=("curve",))
     assert shared == alone
     assert shared["status"] == "failed" and "mode.near: [2, 3] is not close to a configuration" in shared["reason"]
+
+
+def test_a_generic_curve_past_its_time_leaves_each_design_to_its_own_path():
+    """stephenson-iii-family with u alone symbolic: its generic curve took minutes where one design takes
+    a second; past the family's time (a clock that reads 0 when it starts, 10.5 ever after) there is
+    no family, and each design has the row it has alone."""
+    from algkin.runtime.budget import Budget
+
+    readings = iter([0.0])
+    late = Budget(seconds=10, clock=lambda: next(readings, 10.5))
+    scene = load_scene("stephenson-iii-family")
+    assert Family.of(scene, ("u",), "P", analyses=("curve",), budget=late) is None
+    family = Family.of(FOURBAR, ("a",), "P", analyses=("curve",), budget=Budget(seconds=10, clock=lambda: 0.0))
+    assert family is not None and family.curve(family.design({"a": Fraction(1, 2)})).degree == 6
+
+
+def test_a_curve_free_of_a_coordinate_is_specialised():
+    """whitworth-quick-return's ram D runs along its guide y = h = 6, whatever the crank and lever:
+    the generic curve has no D_x (nor r or c) in it."""
+    scene = load_scene("whitworth-quick-return")
+    values = {"r": Fraction(3), "c": Fraction(5)}
+    family = Family.of(scene, tuple(values), "D", analyses=("curve",))
+    assert family.curve(family.design(values)) is not None   # the family answers for it
+    shared, alone = shared_and_alone(scene, values, point="D", analyses=("curve",))
+    assert shared == alone
+    assert (shared["status"], shared["curve_polynomial"]) == ("ok", "D_y - 6")
