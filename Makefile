@@ -56,6 +56,7 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_small.py && \
 	$(BIN)/python benchmarks/bench_singular.py && \
 	$(BIN)/python benchmarks/bench_pylinkage_synthesis.py && \
+	$(BIN)/python benchmarks/bench_extremum_family.py && \
 	$(BIN)/python benchmarks/bench_sweep.py && exit $$status
 
 # Optional peer engines for `algkin bench` only; algkin itself needs none of them.

@@ -13,7 +13,7 @@ Three measurements, each from this one run:
    started and algkin imported in each worker before its clock starts (each worker still works
    out the family itself, as on a cluster): designs a second and the ratio of 2 workers to 1.
    Both datasets equal the serial one.
-3. **An atlas** (``--atlas N``, 10,000 by default; 0 skips it): coupler curves with their real
+3. **An atlas** of 10,000 four-bars (``--no-atlas`` skips it): coupler curves with their real
    singular points (``curve,singular,grashof``) over ``a``, ``l``, ``m`` and the coupler point
    ``p``, ``q``, on 2 workers: its wall time and designs a second.
 
@@ -21,7 +21,7 @@ The machine's load average is printed before and after: on a machine shared with
 two workers get less than two cores (Linux shares the CPU between sessions first), and the
 speed-up with them.
 
-Run: ``python benchmarks/bench_sweep.py [--count-per-axis N] [--atlas N]``.
+Run: ``python benchmarks/bench_sweep.py [--count-per-axis N] [--no-atlas]``.
 """
 
 import argparse
@@ -58,16 +58,14 @@ def on_cluster(folder, grid, analyses, workers, name=None):
         return timed(os.path.join(folder, name or f"dask{workers}"), grid, analyses, scheduler=cluster.scheduler_address)
 
 
-def atlas_grid(count):
-    """Axes over a, l, m, p, q whose product is about ``count`` designs."""
-    side = max(2, round(count ** (1 / 5)))
-    return [f"a=1/2:2:{side}", f"l=2:5:{side}", f"m=2:5:{side}", f"p=-1:2:{side}", f"q=-1:1:{side}"]
+# 4 x 5 x 5 x 10 x 10 = 10,000 four-bars: crank, coupler, rocker, and the coupler point over a grid
+ATLAS_GRID = ["a=1/2:2:4", "l=2:5:5", "m=2:5:5", "p=-1:2:10", "q=-1:1:10"]
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--count-per-axis", type=int, default=10, help="values per axis (designs: its cube)")
-    parser.add_argument("--atlas", type=int, default=10_000, help="designs of the atlas, about (0: none)")
+    parser.add_argument("--no-atlas", action="store_true", help="skip the 10,000-design atlas")
     args = parser.parse_args()
     n = args.count_per_axis
     grid = [f"a=1/2:2:{n}", f"l=2:5:{n}", f"m=2:5:{n}"]
@@ -83,10 +81,9 @@ def main():
         for workers in (1, 2):
             assert canonical(folder(f"dask{workers}")).equals(canonical(folder("shared"))), f"{workers} workers differ"
         atlas = None
-        if args.atlas:
-            axes = atlas_grid(args.atlas)
-            atlas_s, atlas_done = on_cluster(scratch, axes, ATLAS, 2, name="atlas")
-            atlas = (axes, atlas_s, atlas_done)
+        if not args.no_atlas:
+            atlas_s, atlas_done = on_cluster(scratch, ATLAS_GRID, ATLAS, 2, name="atlas")
+            atlas = (ATLAS_GRID, atlas_s, atlas_done)
     designs = n ** 3
     print(f"sweeps of four-bars (fourbar: {', '.join(grid)}), {os.cpu_count()} cores, "
           f"load average {load:.1f} before, {os.getloadavg()[0]:.1f} after")

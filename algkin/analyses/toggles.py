@@ -272,7 +272,9 @@ def _classify(compiled: Compiled, lengths: Sequence[sympy.Expr], crank: Crank, g
             "coupler": exact(lengths[0]), "rocker": exact(lengths[1])}
     ordered = sorted(bars.values(), key=lambda v: float(v))
     shortest, longest = ordered[0], ordered[-1]
-    margin = sympy.simplify(ordered[1] + ordered[2] - shortest - longest)  # a ground of sqrt(...) too
+    margin = ordered[1] + ordered[2] - shortest - longest
+    if not margin.is_Rational:  # a ground of sqrt(...): simplified (a rational is already its simplest)
+        margin = sympy.simplify(margin)
     if margin < 0:
         kind = "non-grashof (triple rocker)"
     elif margin == 0:

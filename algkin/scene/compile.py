@@ -30,7 +30,8 @@ from .load import parse_output
 from .model import Output, Scene
 from .names import angle_unknowns, check_names, check_output_unknowns, check_symbol_name
 
-__all__ = ["Compiled", "DyadSpec", "SliderSpec", "AngleOutput", "compile_scene", "resolve_outputs", "refuse_solved_together"]
+__all__ = ["Compiled", "DyadSpec", "SliderSpec", "AngleOutput", "compile_scene", "resolve_outputs", "refuse_solved_together",
+           "DimensionChecks", "dimension_checks"]
 
 Substitution = Mapping[sympy.Symbol, sympy.Expr]
 
@@ -277,6 +278,47 @@ def _used_inputs(scene: Scene, points: Sequence[str]) -> dict[str, tuple[sympy.S
                 if isinstance(item, sympy.Basic):
                     used.update(str(s) for s in item.free_symbols)
     return {n: i.symbols for n, i in scene.inputs.items() if n in used}
+
+
+@attrs.frozen
+class DimensionChecks:
+    """What ``compile_scene`` checks of the values of the constructions it builds, in the dimensions it
+    was asked to keep symbolic: a caller that compiles once with them symbolic and gives them many
+    values (a sweep's family) checks these at each, as compiling with the values would.
+
+    ``lengths`` must be positive, every value in ``numbers`` finite and zero or within
+    ``MAGNITUDES``, each pair in ``directions`` not both zero, each pair in ``phases`` on the unit
+    circle; ``reach`` bounds the bits of any of them, the dimensions at ``bits`` bits each."""
+
+    lengths: tuple[sympy.Expr, ...]
+    numbers: tuple[sympy.Expr, ...]
+    directions: tuple[tuple[sympy.Expr, sympy.Expr], ...]
+    phases: tuple[tuple[sympy.Expr, sympy.Expr], ...]
+
+    def reach(self, bits: Mapping[str, int]) -> int:
+        return max((bits_bound(v, bits) for v in (*self.lengths, *self.numbers)), default=0)
+
+
+def dimension_checks(scene: Scene, outputs: Sequence[str] | None, params: Iterable[str]) -> DimensionChecks:
+    """The values ``compile_scene(scene, outputs, params)`` checks, of the constructions it builds,
+    the dimensions ``params`` symbolic and the others at their defaults.
+
+    >>> from algkin.scene import load_scene
+    >>> checks = dimension_checks(load_scene("fourbar"), ["P"], ["a", "l"])
+    >>> checks.lengths, checks.directions
+    ((a, l, 7/2), ())
+    """
+    _, substitution, _ = _parameter_values(scene, tuple(params))
+    constructions = [_substituted(scene.points[name], substitution)
+                     for name in _needed_points(scene, resolve_outputs(scene, outputs))]
+    numbers = tuple(item for c in constructions for value in vars(c).values()
+                    for item in (value if isinstance(value, tuple) else (value,))
+                    if isinstance(item, sympy.Expr) and not item.is_number)
+    return DimensionChecks(
+        lengths=tuple(length for c in constructions for length in _lengths(c)),
+        numbers=numbers,
+        directions=tuple(getattr(c, "direction") for c in constructions if getattr(c, "direction", None) is not None),
+        phases=tuple(c.phase for c in constructions if isinstance(c, Crank) and not all(v.is_number for v in c.phase)))
 
 
 def _substituted(construction: Construction, substitution: Substitution) -> Construction:

@@ -48,7 +48,7 @@ __all__ = ["sweep", "Sweep", "plan", "ANALYSES", "Analysis", "register", "read_d
 
 CHUNK = 8  # designs per part file (and per Dask task), by default
 DAY = 86400.0  # a run projected to take longer (seconds) starts only with --yes
-ASSEMBLY_SECONDS = 0.02  # assembling one design at least (a four-bar's, as the analyses' ``seconds``)
+ASSEMBLY_SECONDS = 0.001  # assembling one design at least (a four-bar's, as the analyses' ``seconds``)
 
 
 @dataclass
@@ -166,8 +166,8 @@ def projected_seconds(analyses: Iterable[str], designs: int, budget: float | Non
     """How long ``designs`` designs take at least: each its assembly and analyses' ``seconds`` (no more than
     its ``budget``), ``parallel`` at once.
 
-    >>> projected_seconds(["curve", "limits"], 10**6, parallel=2) / DAY   # (0.02 + 0.05 + 0.2) s each
-    1.5625
+    >>> projected_seconds(["curve", "limits"], 10**6, parallel=2) / DAY   # (0.001 + 0.005 + 0.2) s each
+    1.1921296296296298
     >>> projected_seconds(["curve", "limits"], 10**6, budget=0.1, parallel=2) / DAY
     0.5787037037037037
     """

@@ -7,7 +7,8 @@ cannot answer raises; the sweep records the design as failed with that one line.
 
 ``register`` adds one (a new name, its columns prefixed by it). Each says how long it takes on
 one design at least (``seconds``): the median on a catalog four-bar on the project's 2-core
-machine, rounded down, as measured for the 12 designs of ``a=1/2:3/2:4, d=7/2:9/2:3``; a sweep
+machine, rounded down, as measured for the 12 designs of ``a=1/2:3/2:4, d=7/2:9/2:3`` (with
+what the designs share worked out once: ``algkin.sweep.family``); a sweep
 refuses to start a run projected from them past a day without ``--yes``. ``singular`` gives the real
 singular points of the coupler curve, exactly (``algkin.analyses.singular``): their count by
 kind (``singular_count``, all real ones, is what the atlas filters on) and the points.
@@ -188,9 +189,14 @@ def _limits(design: Design) -> dict[str, Any]:
 
 def transmission_output(design: Design) -> str:
     """``angle(A, B, D)``: at the coupler-rocker joint B, between the crank tip A and the ground pivot D."""
+    return transmission_of(design.scene)
+
+
+def transmission_of(scene: Scene) -> str:
+    """``transmission_output`` of a scene: its four-bar's ``angle(A, B, D)``."""
     from ..scene.constructions import Crank, Dyad, Fixed
 
-    points = design.scene.points
+    points = scene.points
     for name, point in points.items():
         if isinstance(point, Dyad):
             tip, pivot = point.bases
@@ -205,7 +211,9 @@ def _transmission(design: Design) -> dict[str, Any]:
     from ..analyses.extremum import extremum
 
     output = transmission_output(design)
-    found = extremum(design.scene, output)
+    family = design.family.extremum(output) if design.family is not None else None
+    found = extremum(design.scene, output) if family is None or design.shared is None \
+        else family.at(design.shared.values)
     exact: Mapping[str, Any] = found.exact or {}
     row: dict[str, Any] = {"transmission_of": output}
     for key, point in (("min", found.minimum), ("max", found.maximum)):
@@ -252,9 +260,9 @@ def register(analysis: Analysis) -> Analysis:
 
 register(Analysis("curve", {"curve_point": "string", "curve_degree": "int64", "curve_circularity": "int64",
                             "curve_irreducible": "bool", "curve_polynomial": "string",
-                            "curve_verification": "string"}, _curve, seconds=0.05))
+                            "curve_verification": "string"}, _curve, seconds=0.005))
 register(Analysis("grashof", {"grashof_class": "string", "grashof_margin": "string",
-                              "grashof_margin_float": "float64"}, _grashof, seconds=0.001))
+                              "grashof_margin_float": "float64"}, _grashof, seconds=0.0005))
 register(Analysis("toggles", {"toggles_count": "int64", "toggles_deg": "list<float64>",
                               "toggles_exact": "string"}, _toggles, seconds=0.003, groups=_group_toggles))
 register(Analysis("limits", {"limits_count": "int64", "limits_deg": "list<float64>", "limits_exact": "string",
@@ -264,7 +272,7 @@ register(Analysis("limits", {"limits_count": "int64", "limits_deg": "list<float6
 register(Analysis("transmission", {"transmission_of": "string",
                                    **{f"transmission_{k}_{f}": t for k in ("min", "max")
                                       for f, t in (("deg", "float64"), ("at_deg", "float64"), ("exact", "string"))}},
-                  _transmission, seconds=0.05))
+                  _transmission, seconds=0.004))
 register(Analysis("singular", {"singular_count": "int64", **{f"singular_{kind}s": "int64" for kind in _KINDS},
                                "singular_complex": "int64", "singular_points": "string"}, _singular, seconds=0.01))
 

@@ -45,6 +45,7 @@ from ..errors import AlgkinError
 from ..runtime.budget import Budget
 
 if TYPE_CHECKING:
+    from ..analyses.extremum.family import ExtremumFamily
     from ..derivation.prepared import Prepared
     from ..scene import Compiled, Scene
     from ..verify import CheckSetup
@@ -55,12 +56,13 @@ __all__ = ["Family", "SharedDesign", "SharedCurve", "CLEARANCE"]
 # arithmetic of the design's own path (its numbers folded in) may then see another sign
 CLEARANCE = 1e-9
 MAX_EXPONENT = 300  # a dimension whose float is past 2**±this is decided by the design's own path
+MARGIN = 1e-9  # a value the design's compilation checks, in floats: within this of zero, its own path decides
 # the generic curve's intermediate eliminants at most this many terms: a family that would swell
 # past it (many dimensions symbolic in a big scene) is left to each design's own elimination
 GENERIC_TERMS = 20_000
-# ... and found within this many seconds: past them (an elimination that a design alone finishes in
-# a second may take minutes with its dimensions symbolic), each design is faster on its own path
-GENERIC_SECONDS = 20.0
+# ... nor longer than this many seconds (in a child process, stopped there): a family whose generic
+# curve costs more than many designs' own would is not worth it for a sweep of a few
+GENERIC_SECONDS = 10.0
 
 
 @dataclass
@@ -109,16 +111,19 @@ class Family:
     _prepared: Prepared | None = field(default=None, repr=False)
     _generic: Any = field(default=None, repr=False)  # the generic curve (eliminant, variables), once asked for
     _grid: Any = field(default=None, repr=False)
+    # output -> its extremum for the family (``algkin.analyses.extremum.family``), or None where there is none
+    _extrema: dict[str, Any] = field(default_factory=dict, repr=False)
+    _checks: _Checks | None = field(default=None, repr=False)
 
     @classmethod
-    def of(cls, scene: Scene, names: tuple[str, ...], point: str, *, analyses: tuple[str, ...],
-           budget: Budget = Budget(seconds=GENERIC_SECONDS, terms=GENERIC_TERMS)) -> Family | None:
+    def of(cls, scene: Scene, names: tuple[str, ...], point: str, *, analyses: tuple[str, ...]) -> Family | None:
         """The family of ``scene`` in the dimensions ``names``, its shared work done now for ``analyses``
         (in this process: a design run in a child under its budget inherits it); None where there is
-        none to share (points solved together, more than one input) or its generic curve cannot be
-        worked out within ``budget`` (each design then takes its own path)."""
-        from ..derivation.modes import moded_points
+        none to share (points solved together, more than one input). Its generic curve is given
+        ``GENERIC_SECONDS`` and ``GENERIC_TERMS``: past them each design eliminates its own."""
         from ..derivation.prepared import prepare
+
+        from ..derivation.modes import moded_points
 
         # a mode named by a configuration is named with each design's values (its own path)
         if scene.unknown_points or not names or moded_points(scene):
@@ -130,10 +135,15 @@ class Family:
             # a design assembles when every dyad and slider of the scene does, not only the point's
             if not set(_implicit(scene)) <= set(prepared.compiled.coordinates):
                 return None
-            family = cls(scene, names, point, prepared)
+            checks = _Checks.of(scene, names, _implicit(scene) or [point])
+            if checks is None:
+                return None
+            family = cls(scene, names, point, prepared, _checks=checks)
             if {"curve", "singular"} & set(analyses):
-                family._generic_curve(budget)
+                family._generic_curve()
             family._grid_programs()
+            if "transmission" in analyses:
+                family._transmission()
         except AlgkinError:
             return None
         return family
@@ -151,15 +161,11 @@ class Family:
         them (a length that is not positive...) leaves the design to its own path, which says it."""
         from ..scene.settings import with_values
 
-        from ..scene import compile_scene
-
         scene = with_values(self.scene, dict(values))
         if set(values) != set(self.names) or not all(_float_safe(v) for v in values.values()):
             return None
-        try:  # the checks of the design's own scene (a length that is not positive...), as its own path makes them
-            compile_scene(scene, _implicit(scene) or [self.point])
-        except AlgkinError:
-            return None
+        if self._checks is None or not self._checks.clear(values):
+            return None  # its own compilation may refuse it (a length that is not positive...): it says how
         prepared = self.prepared
         if any(spec.side() is not None for spec in prepared.compiled.implicit):
             return None
@@ -203,20 +209,24 @@ class Family:
         """The design's curve: the generic eliminant specialised, when it keeps the generic degree, is
         irreducible and passes the design's verification; None otherwise (the design's own path)."""
         from ..derivation.curves import curve_figures
-        from ..eliminate.group.algebra import primitive
         from ..verify import verify_branches
 
-        exact, names = self._generic_curve()
+        from ..eliminate.backends import FlintBackend
+
+        generic = self._generic_curve()
+        if generic is None:
+            return None
+        exact, names = generic
         variables = (names[0], names[1])
-        # a dimension the point's curve is free of is not among the eliminant's variables
+        present = {str(n) for n in exact.context().names()}  # a dimension the point's curve is free of is not in it
         special = exact.subs({n: flint.fmpq(v.numerator, v.denominator) for n, v in design.values.items()
-                              if n in names})
+                              if n in present})
         if special.is_zero() or _degree(special, variables) != _degree(exact, variables):
             return None
         _, factors = special.factor()
         if len(factors) != 1 or factors[0][1] != 1:
             return None
-        special = primitive(special)  # the normal form the design's own eliminant has (lex, x before y)
+        special = FlintBackend(sorted(present)).primitive(special)  # the normal form the design's own eliminant has
         checked = verify_branches(self._check_setup(design), samples=samples, seed=seed,
                                   polynomials={"curve": special}, factors={"curve": [special]}, where=design.where)
         if not checked.passed:
@@ -224,18 +234,46 @@ class Family:
         degree, circularity = curve_figures(special, variables)
         return SharedCurve(special, variables, degree, circularity, True, checked.status.value)
 
-    def _generic_curve(self, budget: Budget = Budget(seconds=GENERIC_SECONDS, terms=GENERIC_TERMS)) \
-            -> tuple[flint.fmpq_mpoly, tuple[str, ...]]:
-        """The generic eliminant and its variables (the point's x and y first, then the dimensions),
-        worked out within ``budget``: in a child process, whence it comes back as sympy."""
+    def extremum(self, output: str) -> ExtremumFamily | None:
+        """The extremum of ``output`` for the family (derived once with the dimensions symbolic), or
+        None where it cannot be (each design then computes its own)."""
+        if output not in self._extrema:
+            from ..analyses.extremum.family import extremum_family
+
+            try:
+                self._extrema[output] = extremum_family(self.scene, output, list(self.names),
+                                                        budget=Budget(terms=GENERIC_TERMS))
+            except AlgkinError:
+                self._extrema[output] = None
+        found: ExtremumFamily | None = self._extrema[output]
+        return found
+
+    def _transmission(self) -> None:
+        """The transmission angle's extremum for the family, if the scene has one (``extremum``)."""
+        from .analyses import transmission_of
+
+        try:
+            output = transmission_of(self.scene)
+        except AlgkinError:
+            return  # each design says it has none
+        self.extremum(output)
+
+    def _generic_curve(self) -> tuple[flint.fmpq_mpoly, tuple[str, ...]] | None:
+        """The curve's eliminant with the dimensions symbolic and its variables, the point's x and y
+        first (None where it could not be had in budget). It comes back from its child process as
+        sympy: made flint again over all its variables, those it is free of too (a ram's curve y = 6)."""
         if self._generic is None:
             from ..derivation.pipeline import curve
             from ..system.convert import flint_context, to_flint
 
-            elimination = curve(self.prepared, self.point, samples=0, budget=budget).elimination
-            names = tuple(elimination.variables)
-            self._generic = to_flint(elimination.polynomial, flint_context(names)), names
-        found: tuple[flint.fmpq_mpoly, tuple[str, ...]] = self._generic
+            try:
+                elimination = curve(self.prepared, self.point, samples=0,
+                                    budget=Budget(seconds=GENERIC_SECONDS, terms=GENERIC_TERMS)).elimination
+                names = tuple(elimination.variables)
+                self._generic = to_flint(elimination.polynomial, flint_context(names)), names
+            except AlgkinError:
+                self._generic = False
+        found: tuple[flint.fmpq_mpoly, tuple[str, ...]] | None = self._generic or None
         return found
 
     def _check_setup(self, design: SharedDesign) -> CheckSetup:
@@ -279,6 +317,73 @@ class _Grid:
         programs = tuple(compile_program(list(b.discriminants.values()), [*variables, *names], NUMPY)
                          for b in prepared.branches)
         return cls(programs, tuple(floats[v] for v in variables), GRID)
+
+
+@dataclass(frozen=True)
+class _Checks:
+    """What the design's own compilation checks of its values (``dimension_checks``), made without
+    compiling: a value that is a swept dimension itself exactly, any other in floats with a margin
+    (clear of zero, of the magnitudes' bounds); a design not clear of them takes its own path."""
+
+    names: tuple[str, ...]
+    lengths: tuple[sympy.Expr, ...]
+    numbers: tuple[sympy.Expr, ...]
+    directions: tuple[tuple[sympy.Expr, sympy.Expr], ...]
+    floats: Any  # every one of them as a float program of the swept dimensions
+
+    @classmethod
+    def of(cls, scene: Scene, names: tuple[str, ...], outputs: list[str]) -> _Checks | None:
+        """The checks of the design's own compilation for ``outputs``; None where they cannot be made
+        without compiling (a crank's phase given by a swept dimension, values that could reach too many bits)."""
+        from ..evaluate import FLOAT
+        from ..evaluate.program import compile_program
+        from ..scene.compile import dimension_checks
+        from ..scene.expr import MAX_VALUE_BITS
+
+        checks = dimension_checks(scene, outputs, names)
+        if checks.phases or checks.reach(dict.fromkeys(names, MAX_EXPONENT + 1)) > MAX_VALUE_BITS:
+            return None
+        every = [*checks.lengths, *checks.numbers, *(v for pair in checks.directions for v in pair)]
+        return cls(names, checks.lengths, checks.numbers, checks.directions, compile_program(every, names, FLOAT))
+
+    def clear(self, values: Mapping[str, Fraction]) -> bool:
+        with np.errstate(all="ignore"):
+            try:
+                numbers = iter(self.floats(*(float(values[n]) for n in self.names)))
+            except (ArithmeticError, ValueError):
+                return False
+        lengths = [(e, next(numbers)) for e in self.lengths]
+        others = [(e, next(numbers)) for e in self.numbers]
+        directions = [((x, next(numbers)), (y, next(numbers))) for x, y in self.directions]
+        return all(_positive(e, v, values) for e, v in lengths) and all(_in_range(e, v, values) for e, v in others) \
+            and all(not (_near_zero(*x, values) and _near_zero(*y, values)) for x, y in directions)
+
+
+def _exact(expr: sympy.Expr, values: Mapping[str, Fraction]) -> Fraction | None:
+    """``expr``'s exact value where it is a number or a dimension itself, else None."""
+    if expr.is_Rational:
+        return Fraction(int(expr.p), int(expr.q))
+    return values.get(expr.name) if expr.is_Symbol else None
+
+
+def _positive(expr: sympy.Expr, value: float, values: Mapping[str, Fraction]) -> bool:
+    exact = _exact(expr, values)
+    return exact > 0 if exact is not None else bool(math.isfinite(value) and value > MARGIN * (1 + abs(value)))
+
+
+def _in_range(expr: sympy.Expr, value: float, values: Mapping[str, Fraction]) -> bool:
+    """Zero or within ``MAGNITUDES`` (exactly for a dimension, with a margin in floats otherwise)."""
+    from ..scene.compile import MAGNITUDES
+
+    exact = _exact(expr, values)
+    if exact is not None:
+        return exact == 0 or Fraction(str(MAGNITUDES[0])) <= abs(exact) <= Fraction(str(MAGNITUDES[1]))
+    return bool(math.isfinite(value) and 10.0 ** -90 <= abs(value) <= 10.0 ** 90)
+
+
+def _near_zero(expr: sympy.Expr, value: float, values: Mapping[str, Fraction]) -> bool:
+    exact = _exact(expr, values)
+    return exact == 0 if exact is not None else not (math.isfinite(value) and abs(value) > MARGIN)
 
 
 def _implicit(scene: Scene) -> list[str]:

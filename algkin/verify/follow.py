@@ -39,7 +39,7 @@ reported with its input interval and ``det J`` over it (a ball holding 0), never
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from fractions import Fraction
 from typing import Any
 
@@ -226,19 +226,7 @@ class _Track:
     def newton(self, x: Floats, t: Fraction) -> Floats | None:
         """The float solution at ``t`` next to ``x``, or None when Newton's method does not settle
         (near a fold, rounding keeps the last moves at ``J``'s condition times 1e-16: the balls decide)."""
-        move = np.array([np.inf])
-        for _ in range(NEWTON):
-            residual, jacobian, _ = self.float_parts(x, float(t))
-            try:
-                move = np.linalg.solve(jacobian, residual)
-            except np.linalg.LinAlgError:
-                return None
-            x = x - move
-            if not np.all(np.isfinite(x)):
-                return None
-            if np.max(np.abs(move)) <= 1e-14 * (1 + np.max(np.abs(x))):
-                return x
-        return x if np.max(np.abs(move)) <= SETTLED * (1 + np.max(np.abs(x))) else None
+        return _newton(lambda y: self.float_parts(y, float(t))[:2], x, NEWTON, settled=SETTLED)
 
     def tangent(self, x: Floats, t: Fraction) -> Floats | None:
         _, jacobian, rate = self.float_parts(x, float(t))
@@ -388,20 +376,39 @@ class Fold:
 
     def _newton(self, guess: Floats, parameters: list[float]) -> Floats | None:
         size = len(guess)
-        for _ in range(4 * NEWTON):
-            arguments = [*map(float, guess), *parameters]
-            residual = np.array(self.residual(*arguments), dtype=float)
-            jacobian = np.array(self.jacobian(*arguments), dtype=float).reshape(size, size)
-            try:
-                move = np.linalg.solve(jacobian, residual)
-            except np.linalg.LinAlgError:
-                return None
-            guess = guess - move
-            if not np.all(np.isfinite(guess)):
-                return None
-            if np.max(np.abs(move)) <= 1e-14 * (1 + np.max(np.abs(guess))):
-                return guess
-        return None
+
+        def parts(x: Floats) -> tuple[Floats, Floats]:
+            arguments = [*map(float, x), *parameters]
+            return (np.array(self.residual(*arguments), dtype=float),
+                    np.array(self.jacobian(*arguments), dtype=float).reshape(size, size))
+
+        return _newton(parts, guess, 4 * NEWTON)
+
+
+def _newton(parts: Callable[[Floats], tuple[Floats, Floats]], x: Floats, iterations: int, *,
+            settled: float = 0.0) -> Floats | None:
+    """Newton's method from ``x`` on the system ``parts`` gives (``x`` -> residual, Jacobian): the
+    solution once a move is below 1e-14 (relative to ``x``), or after ``iterations`` the last ``x``
+    when its move was below ``settled``; None when not settled, ``J`` singular or ``x`` not finite.
+
+    >>> _newton(lambda x: (x**2 - 2, np.diag(2 * x)), np.array([1.0]), 8)
+    array([1.41421356])
+    >>> _newton(lambda x: (x**2 + 1, np.diag(2 * x)), np.array([1.0]), 8) is None   # no real root
+    True
+    """
+    move = np.array([np.inf])
+    for _ in range(iterations):
+        residual, jacobian = parts(x)
+        try:
+            move = np.linalg.solve(jacobian, residual)
+        except np.linalg.LinAlgError:
+            return None
+        x = x - move
+        if not np.all(np.isfinite(x)):
+            return None
+        if np.max(np.abs(move)) <= 1e-14 * (1 + np.max(np.abs(x))):
+            return x
+    return x if np.max(np.abs(move)) <= settled * (1 + np.max(np.abs(x))) else None
 
 
 def _ball(t: Fraction, radius: Fraction = Fraction(0)) -> arb:

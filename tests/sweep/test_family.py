@@ -141,6 +141,17 @@ def test_a_point_before_the_dyads_assembles_with_them():
     assert shared == alone and shared["curve_polynomial"] == "A_x**2 + A_y**2 - 1"
 
 
+def test_a_generic_curve_past_its_time_leaves_each_design_its_own(monkeypatch):
+    """A family's generic curve that takes longer than GENERIC_SECONDS (here a microsecond: the
+    child it runs in is stopped before it starts) is dropped; the rest is still shared."""
+    monkeypatch.setattr("algkin.sweep.family.GENERIC_SECONDS", 1e-6)
+    family = Family.of(FOURBAR, ("a", "l"), "P", analyses=ANALYSES)
+    design = family.design({"a": Fraction(1, 2), "l": Fraction(3)})
+    assert design is not None and family.curve(design) is None
+    shared, alone = rows({"a": Fraction(1, 2), "l": Fraction(3)}, names=("a", "l"))
+    assert shared == alone
+
+
 def test_a_mode_named_by_a_configuration_is_named_with_each_designs_values():
     """B's mode named near (2, 3) at theta = 0: with a = 1/2, d = 4, m = 5 its configurations there
     are (-1/28, +-3.0), 2 from (2, 3), further than a quarter of the 6 between them: no mode is named,
@@ -150,20 +161,6 @@ def test_a_mode_named_by_a_configuration_is_named_with_each_designs_values():
     shared, alone = shared_and_alone(scene, values, point="P", analyses=("curve",))
     assert shared == alone
     assert shared["status"] == "failed" and "mode.near: [2, 3] is not close to a configuration" in shared["reason"]
-
-
-def test_a_generic_curve_past_its_time_leaves_each_design_to_its_own_path():
-    """stephenson-iii-family with u alone symbolic: its generic curve took minutes where one design takes
-    a second; past the family's time (a clock that reads 0 when it starts, 10.5 ever after) there is
-    no family, and each design has the row it has alone."""
-    from algkin.runtime.budget import Budget
-
-    readings = iter([0.0])
-    late = Budget(seconds=10, clock=lambda: next(readings, 10.5))
-    scene = load_scene("stephenson-iii-family")
-    assert Family.of(scene, ("u",), "P", analyses=("curve",), budget=late) is None
-    family = Family.of(FOURBAR, ("a",), "P", analyses=("curve",), budget=Budget(seconds=10, clock=lambda: 0.0))
-    assert family is not None and family.curve(family.design({"a": Fraction(1, 2)})).degree == 6
 
 
 def test_a_curve_free_of_a_coordinate_is_specialised():

@@ -128,7 +128,9 @@ def problem_for(derived: Derivation, output: str, degrees: tuple[sympy.Expr, sym
                    symbol(unknowns[0]), line, parameters, scale, tuple(chosen.discriminants.values()))
 
 
-def _span(spec: Input, angle_range: tuple[float | str, float | str] | None) -> tuple[sympy.Expr, sympy.Expr]:
+def input_span(spec: Input, angle_range: tuple[float | str, float | str] | None) -> tuple[sympy.Expr, sympy.Expr]:
+    """The range ``extremum`` searches, exactly, in degrees (a length input's own unit):
+    ``angle_range`` in the input's unit, else its declared range; refused in one line if not finite."""
     lo, hi = angle_range if angle_range is not None else (spec.lo, spec.hi)
     to_degrees = lambda v: sympy.Rational(str(v)) * (1 if spec.unit != "rad" else 180 / sympy.pi)  # noqa: E731
     try:
@@ -181,7 +183,7 @@ def extremum_of(derived: Derivation, output: str, angle_range: tuple[float | str
     if len(inputs) != 1:
         raise UsageError("scene", derived.compiled.scene.name, "an extremum needs exactly one input")
     (name,) = inputs
-    lo, hi = _span(derived.compiled.scene.inputs[name], angle_range)
+    lo, hi = input_span(derived.compiled.scene.inputs[name], angle_range)
     problem = problem_for(derived, output, (lo, hi), witnesses=witnesses, deadline=deadline)
     scale = problem.scale
     flip = scale is not None and scale.decreasing
@@ -212,9 +214,15 @@ def _exact(problem: Problem, stationary: Sequence[sympy.Expr], defaults: Mapping
     with mpmath.workdps(DIGITS):
         found = describe(fixed, factors, value_factors(fixed, deadline=deadline), {}, best,
                          meeting_factors(fixed, deadline=deadline))
-        if found.value is None or not _equal(found.value, best.value):
-            return None, None
-        return problem.scale.expr(found.value), found.value
+        return exact_pair(problem.scale, found.value, best)
+
+
+def exact_pair(scale: AngleScale, value: sympy.Expr | None, best: CriticalPoint) -> Exact:
+    """``(degrees, via)`` of an angle's extremum ``best`` from its via's exact ``value``;
+    ``(None, None)`` where there is none or it is not ``best``'s (to 1e-12)."""
+    if value is None or not _equal(value, best.value):
+        return None, None
+    return scale.expr(value), value
 
 
 def _equal(expr: sympy.Expr, value: mpmath.mpf) -> bool:

@@ -38,7 +38,7 @@ from ...system.roots import real_roots
 from ..frozen import frozen_rows, thawed
 from .critical import DIGITS, ROOT_BITS, CriticalPoint, Number, Problem, extreme, meeting_factors, points_at
 
-__all__ = ["ClosedForm", "closed_form", "value_factors", "Region"]
+__all__ = ["ClosedForm", "closed_form", "value_factors", "Region", "describe", "end_degrees", "value_at_angle"]
 
 Values = Mapping[sympy.Symbol, sympy.Expr]  # the dimensions at a point: symbol -> rational
 Found = tuple[CriticalPoint, "Description"]  # the certified extremum at a point, and its closed form
@@ -145,9 +145,21 @@ def _exact_degrees(value: mpmath.mpf) -> sympy.Rational:
     return sympy.Rational(mpmath.nstr(value, 15))
 
 
-def _at_angle(problem: Problem, degrees: sympy.Rational, values: Values) -> sympy.Expr:
+def end_degrees(problem: Problem, best: CriticalPoint) -> sympy.Rational | None:
+    """The exact input of ``best`` where it is a range end or an angle's ``t`` at infinity (a
+    half turn), where its closed form is the closed form's at that input; None elsewhere."""
+    line = problem.line
+    turn = 360 * mpmath.floor((best.input_deg + 180) / 360) if line.is_angle else 0
+    if best.kind == "endpoint" or (line.is_angle and abs(best.input_deg - turn + 180) < MATCH):
+        return _exact_degrees(best.input_deg)
+    return None
+
+
+def value_at_angle(problem: Problem, degrees: sympy.Rational, values: Values) -> sympy.Expr:
     """The closed form at an exact angle, tidied (denested when that is shorter and equal)."""
     raw = problem.closed.xreplace(problem.line.exact_at(degrees))
+    if raw.is_Rational:
+        return raw  # every tidier form of a rational is itself
     target = _numeric(raw, values)
     forms = [f for f in (raw, sympy.sqrtdenest(raw), sympy.radsimp(raw), sympy.factor(raw))
              if abs(_numeric(f, values) - target) <= MATCH * (1 + abs(target))]
@@ -171,11 +183,11 @@ def describe(problem: Problem, stationary: Sequence[sympy.Expr], values_factors:
     at a dead centre its input is a root of one of the ``meeting`` factors, not a stationary one."""
     line = problem.line
     turn = 360 * mpmath.floor((best.input_deg + 180) / 360) if line.is_angle else 0
-    if best.kind == "endpoint" or (line.is_angle and abs(best.input_deg - turn + 180) < MATCH):  # t at infinity
-        degrees = _exact_degrees(best.input_deg)
+    degrees = end_degrees(problem, best)
+    if degrees is not None:
         end_value = line.at_end(degrees)(problem.numerator_in_t(problem.eliminant))
         return Description("endpoint" if best.kind == "endpoint" else "stationary", degrees,
-                           _at_angle(problem, degrees, values), None, end_value)
+                           value_at_angle(problem, degrees, values), None, end_value)
     t_star = line.t_of(best.input_deg)
     at = "dead centre" if best.kind == "dead centre" else "stationary"
     factor = _matching_factor(meeting if at == "dead centre" else stationary, problem.t, t_star, values)

@@ -24,13 +24,13 @@ from ...errors import ComputationError, UsageError
 from ...evaluate import MPMATH, evaluate
 from ...system.angles import Parametrisation
 from ...system.convert import univariate
-from ...system.roots import real_roots
+from ...system.roots import Polynomial, real_roots
 
 if TYPE_CHECKING:
     from ...runtime.budget import Deadline
     from .angles import AngleScale
 
-__all__ = ["Problem", "CriticalPoint", "critical_points", "points_at", "extreme",
+__all__ = ["Problem", "CriticalPoint", "critical_points", "points_in", "points_at", "extreme",
            "stationary_factors", "meeting_factors", "ROOT_BITS"]
 
 ROOT_BITS = 128
@@ -76,10 +76,19 @@ class Problem:
         real or the branch does not assemble (a closed form may be real past that: a
         transmission angle's cosine)."""
         at = self.line.numbers_at(degrees)
-        result = _evaluated(self.closed, at)
-        if not isinstance(result, mpmath.mpf) or any(evaluate(d, at, MPMATH) < 0 for d in self.valid):
+        result = self.closed_at(at)
+        if not isinstance(result, mpmath.mpf) or not self.assembles(at):
             return mpmath.nan
         return result
+
+    def closed_at(self, at: Mapping[str, mpmath.mpf]) -> mpmath.mpf | mpmath.mpc:
+        """The closed form at the input's variables ``at`` (mpmath), complex where it is not
+        real, nan where it divides by zero."""
+        return _evaluated(self.closed, at)
+
+    def assembles(self, at: Mapping[str, mpmath.mpf]) -> bool:
+        """Whether the chosen branch assembles at the input's variables ``at``: no discriminant negative."""
+        return not any(evaluate(d, at, MPMATH) < 0 for d in self.valid)
 
 
 def _evaluated(expr: sympy.Expr, values: Mapping[str, object]) -> mpmath.mpf | mpmath.mpc:
@@ -155,13 +164,20 @@ def critical_points(problem: Problem, factors: Sequence[sympy.Expr] | None, lo: 
     ``meeting_factors`` with the parameters fixed as in ``problem``; either is recomputed
     if fixing the parameters made one of its factors vanish identically.
     """
-    polys = _fixed_or_anew(factors, stationary_factors, problem)
-    meeting = _fixed_or_anew(meeting, meeting_factors, problem)
+    t = problem.t
+    polys = [univariate(p, t) for p in _fixed_or_anew(factors, stationary_factors, problem) if p.has(t)]
+    meeting = [univariate(f, t) for f in _fixed_or_anew(meeting, meeting_factors, problem) if f.has(t)]
+    return points_in(problem, polys, meeting, lo, hi)
+
+
+def points_in(problem: Problem, stationary: Sequence[Polynomial], meeting: Sequence[Polynomial], lo: Number,
+              hi: Number) -> list[CriticalPoint]:
+    """``critical_points`` from the ``stationary`` and ``meeting`` factors at fixed dimensions,
+    as univariate polynomials in ``t`` (python-flint): no sympy on the way."""
     found: list[CriticalPoint] = []
     with flint.ctx.workprec(ROOT_BITS), mpmath.workdps(DIGITS):
         lo, hi = _mp(lo), _mp(hi)
-        balls = [problem.line.shown(r.ball) for p in polys if p.has(problem.t)
-                 for r in real_roots(univariate(p, problem.t))]
+        balls = [problem.line.shown(r.ball) for p in stationary if p.degree() >= 1 for r in real_roots(p)]
         if problem.line.is_angle:
             balls.append(flint.arb(180))  # t = infinity
         for ball in balls:
@@ -185,7 +201,7 @@ def _fixed_or_anew(factors: Sequence[sympy.Expr] | None, compute: Callable[[Prob
     return list(factors)
 
 
-def _dead_centres(problem: Problem, meeting: Sequence[sympy.Expr], lo: mpmath.mpf, hi: mpmath.mpf,
+def _dead_centres(problem: Problem, meeting: Sequence[Polynomial], lo: mpmath.mpf, hi: mpmath.mpf,
                   found: list[CriticalPoint]) -> list[CriticalPoint]:
     """Where the branch stops being real, inside the range: the ends of its real intervals.
 
@@ -195,8 +211,7 @@ def _dead_centres(problem: Problem, meeting: Sequence[sympy.Expr], lo: mpmath.mp
     where the branch is real on one side only; at the others two branches merely share a value.
     """
     points: list[CriticalPoint] = []
-    for ball in (problem.line.shown(r.ball) for f in meeting if f.has(problem.t)
-                 for r in real_roots(univariate(f, problem.t))):
+    for ball in (problem.line.shown(r.ball) for f in meeting if f.degree() >= 1 for r in real_roots(f)):
         middle = mpmath.mpf(ball.mid().str(DIGITS, radius=False))
         for degrees in (middle + turn for turn in problem.line.turns):
             value = _value_at_meeting(problem, degrees)
@@ -216,7 +231,7 @@ def _ends_here(problem: Problem, degrees: mpmath.mpf) -> bool:
 def _value_at_meeting(problem: Problem, degrees: mpmath.mpf) -> mpmath.mpf:
     """The branch's value where its square root's argument is zero up to rounding (the
     imaginary part then tiny), nan where the branch is not real."""
-    result = _evaluated(problem.closed, problem.line.numbers_at(degrees))
+    result = problem.closed_at(problem.line.numbers_at(degrees))
     if isinstance(result, mpmath.mpc):
         tiny = mpmath.mpf(10) ** (-DIGITS // 3) * (1 + abs(result))
         return result.real if abs(result.imag) <= tiny else mpmath.nan

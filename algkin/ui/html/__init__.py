@@ -40,6 +40,7 @@ from typing import TYPE_CHECKING, TypedDict, TypeVar, Union
 import sympy
 
 from ...runtime.files import write_atomic
+from ...scene import Scene
 from ...scene.constructions import Dyad
 from ...system import symbol
 from .jscode import branch_function
@@ -50,7 +51,7 @@ if TYPE_CHECKING:
 _PathT = TypeVar("_PathT", bound=Union[str, "os.PathLike[str]"])  # a path given back as it came
 Ranges = Mapping[str, tuple[float, float]]  # a dimension's slider bounds, by name
 
-__all__ = ["page", "model", "slider_range", "parameter_range", "parameter_slider", "write", "fill", "script_json",
+__all__ = ["page", "document", "model", "slider_range", "parameter_range", "parameter_slider", "write", "fill", "script_json",
            "Slider"]
 
 _SLOT = re.compile(r"\{\{(\w+)\}\}")
@@ -150,15 +151,21 @@ def _functions(motion: Motion) -> list[str]:
 def page(motion: Motion, inputs: Mapping[str, float] | None = None, branch: str | None = None,
          ranges: Ranges | None = None) -> str:
     """The HTML text of the interactive page for ``motion`` (a ``Motion``)."""
-    folder = resources.files(__name__)
     data = script_json(model(motion, inputs, branch, ranges))
-    script = (f"const MODEL = {data};\nconst BRANCHES = [\n" + ",\n".join(_functions(motion)) + "];\n"
-              + folder.joinpath("page.js").read_text(encoding="utf-8"))
+    return document(motion.scene, f"const MODEL = {data};\nconst BRANCHES = [\n" + ",\n".join(_functions(motion))
+                    + "];\n", "page.js")
+
+
+def document(scene: Scene, data: str, script: str) -> str:
+    """The HTML text of an interactive page of ``scene``: ``data`` (its JavaScript constants), the
+    JavaScript every page shares (``draw.js``), then the page's own, ``script`` (a file beside it)."""
+    folder = resources.files(__name__)
+    code = data + "".join(folder.joinpath(name).read_text(encoding="utf-8") for name in ("draw.js", script))
     return fill(folder.joinpath("page.html").read_text(encoding="utf-8"), {
-        "title": html.escape(f"algkin: {motion.scene.name}", quote=True),
-        "description": html.escape(motion.scene.description, quote=True),
+        "title": html.escape(f"algkin: {scene.name}", quote=True),
+        "description": html.escape(scene.description, quote=True),
         "style": folder.joinpath("page.css").read_text(encoding="utf-8"),
-        "script": script,
+        "script": code,
     })
 
 

@@ -16,16 +16,14 @@ inputs where it meets another mode (marked on its path, which ends there).
 
 from __future__ import annotations
 
-import html
 import os
-from importlib import resources
 from typing import TYPE_CHECKING, TypeVar, Union
 
 import sympy
 
 from ...errors import UsageError
 from ...runtime.files import write_atomic
-from . import fill, script_json
+from . import document, script_json
 from .jscode import branch_function
 
 if TYPE_CHECKING:
@@ -80,15 +78,8 @@ def group_page(motion: GroupMotion, value: float | None = None) -> str:
         lo, hi = motion.input.span
         raise UsageError("scene", motion.scene.name, f"no mode assembles at any start tried over {motion.input.name} "
                          f"in [{lo:g}, {hi:g}]: nothing to move")
-    folder = resources.files(__package__)
-    script = (f"const MODEL = {script_json(group_model(motion, value))};\nconst BUILT = {_built_function(motion)};\n"
-              + folder.joinpath("groups.js").read_text(encoding="utf-8"))
-    return fill(folder.joinpath("page.html").read_text(encoding="utf-8"), {
-        "title": html.escape(f"algkin: {motion.scene.name}", quote=True),
-        "description": html.escape(motion.scene.description, quote=True),
-        "style": folder.joinpath("page.css").read_text(encoding="utf-8"),
-        "script": script,
-    })
+    data = f"const MODEL = {script_json(group_model(motion, value))};\nconst BUILT = {_built_function(motion)};\n"
+    return document(motion.scene, data, "groups.js")
 
 
 def write_groups(motion: GroupMotion, out: _PathT, value: float | None = None) -> _PathT:

@@ -35,6 +35,7 @@ NOT_FROM_THE_COMMAND_LINE = {
                     "a synthesis file's data: algkin synthesize says it as the file's (FILE: poses: ...)"),
     **dict.fromkeys(("centre", "circle"), "synthesis.motion's matched points, from Python only"),
     "witnesses": "eliminate.eliminate_each's witness list, from Python only (a batch path no command takes)",
+    "values": "extremum.family's design values, from Python only (the sweep passes the grid's, checked as --grid)",
 }
 
 # A name given as the first argument of UsageError, or of the helpers that pass it on to one.

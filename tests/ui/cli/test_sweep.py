@@ -54,14 +54,14 @@ def test_a_name_twice_and_absurd_draws_are_refused(tmp_path, capsys, extra, says
 
 
 def test_a_run_longer_than_a_day_asks_for_yes(tmp_path, capsys):
-    # 10^6 designs, each at least 0.02 s to assemble and 0.2 s of limits (the table's floors, not this
-    # machine's speed), one at a time: 220000 s, 2.55 days
+    # 10^6 designs, each at least 0.001 s to assemble and 0.2 s of limits (the table's floors, not this
+    # machine's speed), one at a time: 201000 s, 2.33 days
     argv = ["sweep", "fourbar", "--grid", "a=1:2:1000", "--grid", "d=1:2:1000", "--analyses", "limits",
             "--executor", "serial", "--out", str(tmp_path / "out")]
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and not (tmp_path / "out").exists()
-    assert ("--grid='a=1:2:1000 d=1:2:1000': 1000000 designs would take at least 2.55 days (0.22 s each, "
+    assert ("--grid='a=1:2:1000 d=1:2:1000': 1000000 designs would take at least 2.33 days (0.2 s each, "
             "1 at once); confirm with yes to start anyway") in err
 
 
