@@ -173,3 +173,15 @@ def test_a_curve_free_of_a_coordinate_is_specialised():
     shared, alone = shared_and_alone(scene, values, point="D", analyses=("curve",))
     assert shared == alone
     assert (shared["status"], shared["curve_polynomial"]) == ("ok", "D_y - 6")
+
+
+def test_a_transmission_free_of_a_swept_dimension_is_the_designs():
+    """The transmission angle at B, between BA and BD, is the same wherever the coupler point (p, q)
+    is: by the law of cosines cos = (l^2 + m^2 - |AD|^2) / (2 l m), least at theta = 0 (|AD| = d - a
+    = 7/2: 3/7), greatest at 180 (|AD| = d + a = 9/2: 1/21), for a = 1/2, l = 3, m = 7/2, d = 4."""
+    values = {"a": Fraction(1, 2), "p": Fraction(0), "q": Fraction(1)}
+    shared, alone = shared_and_alone(FOURBAR, values, point="P", analyses=("transmission",))
+    assert shared == alone
+    assert (shared["status"], shared["transmission_min_exact"], shared["transmission_max_exact"]) == \
+        ("ok", "180*acos(3/7)/pi", "180*acos(1/21)/pi")
+    assert (shared["transmission_min_at_deg"], shared["transmission_max_at_deg"]) == (0.0, 180.0)
