@@ -334,7 +334,8 @@ class _Checks:
     @classmethod
     def of(cls, scene: Scene, names: tuple[str, ...], outputs: list[str]) -> _Checks | None:
         """The checks of the design's own compilation for ``outputs``; None where they cannot be made
-        without compiling (a crank's phase given by a swept dimension, values that could reach too many bits)."""
+        without compiling (a crank's phase given by a swept dimension, values that could reach too many bits,
+        a value that moves with a length input)."""
         from ..evaluate import FLOAT
         from ..evaluate.program import compile_program
         from ..scene.compile import dimension_checks
@@ -344,6 +345,8 @@ class _Checks:
         if checks.phases or checks.reach(dict.fromkeys(names, MAX_EXPONENT + 1)) > MAX_VALUE_BITS:
             return None
         every = [*checks.lengths, *checks.numbers, *(v for pair in checks.directions for v in pair)]
+        if any(not {str(v) for v in e.free_symbols} <= set(names) for e in every):
+            return None  # a check that moves with an input (a frame at a length input's value): compiled alone
         return cls(names, checks.lengths, checks.numbers, checks.directions, compile_program(every, names, FLOAT))
 
     def clear(self, values: Mapping[str, Fraction]) -> bool:

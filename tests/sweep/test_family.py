@@ -185,3 +185,17 @@ def test_a_transmission_free_of_a_swept_dimension_is_the_designs():
     assert (shared["status"], shared["transmission_min_exact"], shared["transmission_max_exact"]) == \
         ("ok", "180*acos(3/7)/pi", "180*acos(1/21)/pi")
     assert (shared["transmission_min_at_deg"], shared["transmission_max_at_deg"]) == (0.0, 180.0)
+
+
+def test_a_scene_driven_by_a_length_sweeps_as_each_design_alone(tmp_path):
+    """piston-driven-crank's piston B = (x, 0) is placed at its input's value x, in 2..4: a check of
+    B's coordinates moves with the input, so no family checks it without compiling; the sweep runs
+    (it stopped on a TypeError) and writes what each design alone gives: with r = 1 and l = 3,
+    |OB| = x runs from l - r to l + r, the crank turning through its two dead centres."""
+    grid = ["r=1:2:2", "l=3:4:2"]
+    shared = sweep("piston-driven-crank", tmp_path / "shared", grid=grid, analyses=["curve"], executor="serial")
+    alone = sweep("piston-driven-crank", tmp_path / "alone", grid=grid, analyses=["curve"], executor="serial",
+                  share=False)
+    assert shared.counts == alone.counts
+    assert without_timings(read_dataset(tmp_path / "shared")).equals(without_timings(read_dataset(tmp_path / "alone")))
+    assert read_dataset(tmp_path / "shared").column("status").to_pylist()[0] == "ok"
