@@ -212,8 +212,10 @@ def _transmission(design: Design) -> dict[str, Any]:
 
     output = transmission_output(design)
     family = design.family.extremum(output) if design.family is not None else None
-    found = extremum(design.scene, output) if family is None or design.shared is None \
-        else family.at(design.shared.values)
+    if family is None or design.shared is None:
+        found = extremum(design.scene, output)
+    else:  # the dimensions the output is free of (a coupler point's, for the angle at B) are not the family's
+        found = family.at({n: v for n, v in design.shared.values.items() if n in family.defaults})
     exact: Mapping[str, Any] = found.exact or {}
     row: dict[str, Any] = {"transmission_of": output}
     for key, point in (("min", found.minimum), ("max", found.maximum)):

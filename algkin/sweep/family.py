@@ -110,7 +110,7 @@ class Family:
     names: tuple[str, ...]
     point: str
     _prepared: Prepared | None = field(default=None, repr=False)
-    _generic: Any = field(default=None, repr=False)  # the generic curve's Eliminant, once asked for
+    _generic: Any = field(default=None, repr=False)  # the generic curve (eliminant, variables), once asked for
     _grid: Any = field(default=None, repr=False)
     # output -> its extremum for the family (``algkin.analyses.extremum.family``), or None where there is none
     _extrema: dict[str, Any] = field(default_factory=dict, repr=False)
@@ -217,8 +217,8 @@ class Family:
         generic = self._generic_curve()
         if generic is None:
             return None
-        exact, (x, y) = generic.exact[0], generic.variables[:2]
-        variables = (x, y)
+        exact, names = generic
+        variables = (names[0], names[1])
         present = {str(n) for n in exact.context().names()}  # a dimension the point's curve is free of is not in it
         special = exact.subs({n: flint.fmpq(v.numerator, v.denominator) for n, v in design.values.items()
                               if n in present})
@@ -259,17 +259,23 @@ class Family:
             return  # each design says it has none
         self.extremum(output)
 
-    def _generic_curve(self) -> Any:
-        """The curve's eliminant with the dimensions symbolic (None where it could not be had in budget)."""
+    def _generic_curve(self) -> tuple[flint.fmpq_mpoly, tuple[str, ...]] | None:
+        """The curve's eliminant with the dimensions symbolic and its variables, the point's x and y
+        first (None where it could not be had in budget). It comes back from its child process as
+        sympy: made flint again over all its variables, those it is free of too (a ram's curve y = 6)."""
         if self._generic is None:
             from ..derivation.pipeline import curve
+            from ..system.convert import flint_context, to_flint
 
             try:
-                self._generic = curve(self.prepared, self.point, samples=0,
-                                      budget=Budget(seconds=GENERIC_SECONDS, terms=GENERIC_TERMS)).elimination
+                elimination = curve(self.prepared, self.point, samples=0,
+                                    budget=Budget(seconds=GENERIC_SECONDS, terms=GENERIC_TERMS)).elimination
+                names = tuple(elimination.variables)
+                self._generic = to_flint(elimination.polynomial, flint_context(names)), names
             except AlgkinError:
                 self._generic = False
-        return self._generic or None
+        found: tuple[flint.fmpq_mpoly, tuple[str, ...]] | None = self._generic or None
+        return found
 
     def _check_setup(self, design: SharedDesign) -> CheckSetup:
         """The verification's setup with the dimensions kept symbolic, valued by the design: its
@@ -329,7 +335,8 @@ class _Checks:
     @classmethod
     def of(cls, scene: Scene, names: tuple[str, ...], outputs: list[str]) -> _Checks | None:
         """The checks of the design's own compilation for ``outputs``; None where they cannot be made
-        without compiling (a crank's phase given by a swept dimension, values that could reach too many bits)."""
+        without compiling (a crank's phase given by a swept dimension, values that could reach too many bits,
+        a value that moves with a length input)."""
         from ..evaluate import FLOAT
         from ..evaluate.program import compile_program
         from ..scene.compile import dimension_checks
@@ -339,6 +346,8 @@ class _Checks:
         if checks.phases or checks.reach(dict.fromkeys(names, MAX_EXPONENT + 1)) > MAX_VALUE_BITS:
             return None
         every = [*checks.lengths, *checks.numbers, *(v for pair in checks.directions for v in pair)]
+        if any(not {str(v) for v in e.free_symbols} <= set(names) for e in every):
+            return None  # a check that moves with an input (a frame at a length input's value): compiled alone
         return cls(names, checks.lengths, checks.numbers, checks.directions, compile_program(every, names, FLOAT))
 
     def clear(self, values: Mapping[str, Fraction]) -> bool:

@@ -124,7 +124,10 @@ def test_a_curve_free_of_a_swept_dimension_is_specialised():
     """arm-string's G, at g = 120 along the arm, runs on the circle x^2 + y^2 = 120^2 whatever the
     string's anchor B = (a, -b): the generic curve has no a or b in it."""
     scene = load_scene("arm-string")
-    shared, alone = shared_and_alone(scene, {"a": Fraction(300), "b": Fraction(50)}, point="G", analyses=("curve",))
+    values = {"a": Fraction(300), "b": Fraction(50)}
+    family = Family.of(scene, tuple(values), "G", analyses=("curve",))
+    assert family.curve(family.design(values)) is not None   # the family answers for it
+    shared, alone = shared_and_alone(scene, values, point="G", analyses=("curve",))
     assert shared == alone
     assert (shared["status"], shared["curve_polynomial"]) == ("ok", "G_x**2 + G_y**2 - 14400")
 
@@ -158,3 +161,41 @@ def test_a_mode_named_by_a_configuration_is_named_with_each_designs_values():
     shared, alone = shared_and_alone(scene, values, point="P", analyses=("curve",))
     assert shared == alone
     assert shared["status"] == "failed" and "mode.near: [2, 3] is not close to a configuration" in shared["reason"]
+
+
+def test_a_curve_free_of_a_coordinate_is_specialised():
+    """whitworth-quick-return's ram D runs along its guide y = h = 6, whatever the crank and lever:
+    the generic curve has no D_x (nor r or c) in it."""
+    scene = load_scene("whitworth-quick-return")
+    values = {"r": Fraction(3), "c": Fraction(5)}
+    family = Family.of(scene, tuple(values), "D", analyses=("curve",))
+    assert family.curve(family.design(values)) is not None   # the family answers for it
+    shared, alone = shared_and_alone(scene, values, point="D", analyses=("curve",))
+    assert shared == alone
+    assert (shared["status"], shared["curve_polynomial"]) == ("ok", "D_y - 6")
+
+
+def test_a_transmission_free_of_a_swept_dimension_is_the_designs():
+    """The transmission angle at B, between BA and BD, is the same wherever the coupler point (p, q)
+    is: by the law of cosines cos = (l^2 + m^2 - |AD|^2) / (2 l m), least at theta = 0 (|AD| = d - a
+    = 7/2: 3/7), greatest at 180 (|AD| = d + a = 9/2: 1/21), for a = 1/2, l = 3, m = 7/2, d = 4."""
+    values = {"a": Fraction(1, 2), "p": Fraction(0), "q": Fraction(1)}
+    shared, alone = shared_and_alone(FOURBAR, values, point="P", analyses=("transmission",))
+    assert shared == alone
+    assert (shared["status"], shared["transmission_min_exact"], shared["transmission_max_exact"]) == \
+        ("ok", "180*acos(3/7)/pi", "180*acos(1/21)/pi")
+    assert (shared["transmission_min_at_deg"], shared["transmission_max_at_deg"]) == (0.0, 180.0)
+
+
+def test_a_scene_driven_by_a_length_sweeps_as_each_design_alone(tmp_path):
+    """piston-driven-crank's piston B = (x, 0) is placed at its input's value x, in 2..4: a check of
+    B's coordinates moves with the input, so no family checks it without compiling; the sweep runs
+    (it stopped on a TypeError) and writes what each design alone gives: with r = 1 and l = 3,
+    |OB| = x runs from l - r to l + r, the crank turning through its two dead centres."""
+    grid = ["r=1:2:2", "l=3:4:2"]
+    shared = sweep("piston-driven-crank", tmp_path / "shared", grid=grid, analyses=["curve"], executor="serial")
+    alone = sweep("piston-driven-crank", tmp_path / "alone", grid=grid, analyses=["curve"], executor="serial",
+                  share=False)
+    assert shared.counts == alone.counts
+    assert without_timings(read_dataset(tmp_path / "shared")).equals(without_timings(read_dataset(tmp_path / "alone")))
+    assert read_dataset(tmp_path / "shared").column("status").to_pylist()[0] == "ok"
