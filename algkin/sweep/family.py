@@ -178,27 +178,29 @@ class Family:
         return SharedDesign(values, scene, compiled)
 
     def _clearly_assembles(self, values: Mapping[str, Fraction]) -> bool:
-        """Whether every discriminant of the chosen branch is clearly positive somewhere on the grid,
-        every branch's wide enough (no narrowing, no structure), and no grid value near zero."""
+        """Whether the design's own path decides that it assembles on the whole range, whatever the
+        rounding of the grid values near zero (within ``CLEARANCE``): every discriminant of the chosen
+        branch clearly positive somewhere (``check_assembly``), and the chosen branch and the branches
+        together real on at least ``NARROW`` of the grid counting only clearly positive values
+        (``where_assembled``: no narrowing, no structure). A dead centre at a grid input (a change
+        point) is decided so; a design whose decision rests on values near zero is not."""
         from ..derivation.assembles import NARROW
 
         grid = self._grid_programs()
         numbers = [float(values[n]) for n in self.names]
-        found = []
-        for program in grid.programs:
+        surely_real, chosen = [], next(k for k, b in enumerate(self.prepared.branches) if b.selected)
+        for k, program in enumerate(grid.programs):
             with np.errstate(all="ignore"):
                 values_on_grid = [np.broadcast_to(np.asarray(v, dtype=np.float64), grid.size)
                                   for v in program(*grid.inputs, *numbers)]
-            found.append(np.array(values_on_grid) if values_on_grid else np.ones((1, grid.size)))
-        for rows in found:
+            rows = np.array(values_on_grid) if values_on_grid else np.ones((1, grid.size))
             if not np.all(np.isfinite(rows)):
                 return False
-            scale = np.max(np.abs(rows), axis=1, keepdims=True)
-            if np.any(np.abs(rows) <= CLEARANCE * scale):
+            positive = rows > CLEARANCE * np.max(np.abs(rows), axis=1, keepdims=True)
+            if k == chosen and not np.all(np.any(positive, axis=1)):
                 return False
-        real = [np.all(rows > 0, axis=0) for rows in found]
-        chosen = next(k for k, b in enumerate(self.prepared.branches) if b.selected)
-        return bool(real[chosen].mean() >= NARROW and np.any(real, axis=0).mean() >= NARROW)
+            surely_real.append(np.all(positive, axis=0))
+        return bool(surely_real[chosen].mean() >= NARROW and np.any(surely_real, axis=0).mean() >= NARROW)
 
     def _grid_programs(self) -> _Grid:
         if self._grid is None:

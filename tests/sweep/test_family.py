@@ -50,15 +50,26 @@ def test_the_hard_designs_get_their_own_rows(values, status):
     assert shared == alone and shared["status"] == status
 
 
-def test_the_designs_near_zero_or_off_the_grid_are_left_to_their_own_path():
+def test_the_designs_the_grid_does_not_decide_are_left_to_their_own_path():
     family = Family.of(FOURBAR, ("a", "d"), "P", analyses=ANALYSES)
     assert family.design({"a": Fraction(5, 6), "d": Fraction(22, 3)}) is None   # a structure
-    assert family.design({"a": Fraction(1, 2), "d": Fraction(6)}) is None        # touches zero at 180 degrees
-    # the same touch, 3e-13 from zero in floats: within rounding of zero, not clear of it
-    assert family.design({"a": Fraction(2, 3), "d": Fraction(35, 6)}) is None
     assert family.design({"a": Fraction(1), "d": Fraction(10)}) is None          # never assembles
     assert family.design({"a": Fraction(1)}) is None                             # not the family's dimensions
     assert family.design({"a": Fraction(1, 2), "d": Fraction(4)}) is not None
+
+
+@pytest.mark.parametrize("values", [
+    {"a": Fraction(1, 2), "d": Fraction(6)},     # a + d = l + m: the discriminant 0.0 at 180 degrees in floats
+    {"a": Fraction(2, 3), "d": Fraction(35, 6)},  # the same touch, 3e-13 from zero in floats
+])
+def test_a_dead_centre_at_a_grid_input_is_decided_whatever_its_rounding(values):
+    """A change point's dead centre falls on the grid (180 degrees): the value there is within
+    rounding of zero, but the design's own path decides the same (it assembles on the whole range)
+    whichever sign rounding gives it, so the family answers for it, with the row it has alone."""
+    family = Family.of(FOURBAR, ("a", "d"), "P", analyses=ANALYSES)
+    assert family.design(values) is not None
+    shared, alone = rows(values, names=("a", "d"), analyses=("curve", "grashof", "transmission"))
+    assert shared == alone and shared["status"] == "ok" and shared["grashof_class"] == "change-point"
 
 
 def test_a_curve_of_lower_degree_than_the_familys_is_its_own():
