@@ -210,3 +210,15 @@ def test_a_scene_driven_by_a_length_sweeps_as_each_design_alone(tmp_path):
     assert shared.counts == alone.counts
     assert without_timings(read_dataset(tmp_path / "shared")).equals(without_timings(read_dataset(tmp_path / "alone")))
     assert read_dataset(tmp_path / "shared").column("status").to_pylist()[0] == "ok"
+
+
+def test_a_family_that_cannot_be_made_leaves_each_design_its_own(monkeypatch, tmp_path):
+    """Whatever stops a family being made (here an error of ours injected into its grid), the sweep
+    computes each design alone: the family is a shortcut, never a reason for a sweep to stop."""
+    def broken(*args, **kwargs):
+        raise TypeError("injected")
+
+    monkeypatch.setattr("algkin.sweep.family._Grid.of", broken)
+    assert Family.of(FOURBAR, ("a",), "P", analyses=ANALYSES) is None
+    done = sweep("fourbar", tmp_path / "out", grid=["a=1/2:1:2"], analyses=["curve"], executor="serial")
+    assert done.counts == {"ok": 2}
