@@ -122,12 +122,11 @@ class Family:
         (in this process: a design run in a child under its budget inherits it); None where there is
         none to share (points solved together, more than one input). Its generic curve is given
         ``GENERIC_SECONDS`` and ``GENERIC_TERMS``: past them each design eliminates its own."""
+        from ..derivation.modes import moded_points
         from ..derivation.prepared import prepare
 
-        from ..derivation.modes import moded_points
-
         # a mode named by a configuration is named with each design's values (its own path)
-        if scene.unknown_points or not names or moded_points(scene):
+        if scene.unknown_points or not names or moded_points(scene) or _follows(scene, names):
             return None
         try:
             prepared = prepare(scene, outputs=[point], params=list(names))
@@ -390,6 +389,19 @@ def _in_range(expr: sympy.Expr, value: float, values: Mapping[str, Fraction]) ->
 def _near_zero(expr: sympy.Expr, value: float, values: Mapping[str, Fraction]) -> bool:
     exact = _exact(expr, values)
     return exact == 0 if exact is not None else not (math.isfinite(value) and abs(value) > MARGIN)
+
+
+def _follows(scene: Scene, names: tuple[str, ...]) -> bool:
+    """Whether a dimension not swept is given by one that is (``m = "a + 5/2"``): compiled with the
+    swept ones symbolic it would keep its default's value, where each design's own scene moves it."""
+    swept, moved = set(names), True
+    while moved:  # a dimension given by one given by a swept one follows too
+        moved = False
+        for name, value in scene.parameters.items():
+            if name not in swept and {str(s) for s in getattr(value, "free_symbols", ())} & swept:
+                swept.add(name)
+                moved = True
+    return swept != set(names)
 
 
 def _implicit(scene: Scene) -> list[str]:

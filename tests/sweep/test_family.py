@@ -222,3 +222,12 @@ def test_a_family_that_cannot_be_made_leaves_each_design_its_own(monkeypatch, tm
     assert Family.of(FOURBAR, ("a",), "P", analyses=ANALYSES) is None
     done = sweep("fourbar", tmp_path / "out", grid=["a=1/2:1:2"], analyses=["curve"], executor="serial")
     assert done.counts == {"ok": 2}
+
+
+def test_a_dimension_given_by_a_swept_one_moves_with_it():
+    """The rocker given by the crank (m = a + 5/2): each design's own scene moves m with a; a family
+    compiled with a symbolic would keep m at its default's 3 (found: every row's curve differed)."""
+    scene = load_scene_text(FOURBAR_TEXT.replace('m = "7/2"', 'm = "a + 5/2"'))
+    assert Family.of(scene, ("a",), "P", analyses=("curve",)) is None
+    shared, alone = shared_and_alone(scene, {"a": Fraction(1)}, point="P", analyses=("curve", "grashof"))
+    assert shared == alone and shared["grashof_margin"] == "3/2"   # s + L = 1 + 4, p + q = 3 + 7/2
