@@ -30,15 +30,19 @@ from .prepared import Prepared
 __all__ = ["check_setup", "verify_prepared"]
 
 
-def check_setup(compiled: Compiled, branches: Iterable[Branch]) -> CheckSetup:
+def check_setup(compiled: Compiled, branches: Iterable[Branch], *, keep_dimensions: bool = False) -> CheckSetup:
     """What an independent check of ``branches`` starts from, the dimensions at their defaults
     (the system, its indicators, per branch ``(labels, values, discriminants)``, each input's
-    range in radians or its units, and the dimensions' values)."""
+    range in radians or its units, and the dimensions' values).
+
+    With ``keep_dimensions`` the symbolic dimensions stay symbols, valued by ``parameter_values``
+    as the check runs: the check's compiled programs are then the same whatever the values (a
+    sweep's designs of one family share them)."""
     system = compiled.system
-    defaults = {symbol(n): compiled.parameter_values[n] for n in system.parameters}
-    fixed = type(system)(system.unknowns, (), system.inputs,
-                         tuple(sympy.expand(e.xreplace(defaults)) for e in system.equations),
-                         system.nonnegative)
+    defaults = {} if keep_dimensions else {symbol(n): compiled.parameter_values[n] for n in system.parameters}
+    fixed = system if keep_dimensions else type(system)(
+        system.unknowns, (), system.inputs, tuple(sympy.expand(e.xreplace(defaults)) for e in system.equations),
+        system.nonnegative)
     inputs = {n: (float(i.to_radians(i.lo)), float(i.to_radians(i.hi)))
               for n, i in compiled.scene.inputs.items() if n in system.inputs}
     indicators: list[Indicator] = [(i.point, i.expr.xreplace(defaults), i.positive, i.negative)

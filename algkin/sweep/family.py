@@ -51,7 +51,6 @@ if TYPE_CHECKING:
     from ..analyses.extremum.family import ExtremumFamily
     from ..derivation.prepared import Prepared
     from ..scene import Compiled, Scene
-    from ..verify import CheckSetup
 
 __all__ = ["Family", "SharedDesign", "SharedCurve", "CLEARANCE"]
 
@@ -135,6 +134,8 @@ class Family:
             # a design assembles when every dyad and slider of the scene does, not only the point's
             if not set(_implicit(scene)) <= set(prepared.compiled.coordinates):
                 return None
+            if any(spec.side() is not None for spec in prepared.compiled.implicit):
+                return None  # a point placed by side: its own path checks the side on each design's motion
             checks = _Checks.of(scene, names, _implicit(scene) or [point])
             if checks is None:
                 return None
@@ -166,15 +167,11 @@ class Family:
             return None
         if self._checks is None or not self._checks.clear(values):
             return None  # its own compilation may refuse it (a length that is not positive...): it says how
-        prepared = self.prepared
-        if any(spec.side() is not None for spec in prepared.compiled.implicit):
-            return None
-        defaults = dict(prepared.compiled.parameter_values)
-        defaults.update({n: sympy.Rational(v.numerator, v.denominator) for n, v in values.items()})
-        compiled = attrs.evolve(prepared.compiled, parameter_values=defaults)
         if not self._clearly_assembles(values):
             return None
-        return SharedDesign(values, scene, compiled)
+        defaults = dict(self.prepared.compiled.parameter_values)
+        defaults.update({n: sympy.Rational(v.numerator, v.denominator) for n, v in values.items()})
+        return SharedDesign(values, scene, attrs.evolve(self.prepared.compiled, parameter_values=defaults))
 
     def _clearly_assembles(self, values: Mapping[str, Fraction]) -> bool:
         """Whether the design's own path decides that it assembles on the whole range, whatever the
@@ -210,10 +207,10 @@ class Family:
     def curve(self, design: SharedDesign, *, samples: int = 40, seed: int = 0) -> SharedCurve | None:
         """The design's curve: the generic eliminant specialised, when it keeps the generic degree, is
         irreducible and passes the design's verification; None otherwise (the design's own path)."""
+        from ..derivation.checking import check_setup
         from ..derivation.curves import curve_figures
-        from ..verify import verify_branches
-
         from ..eliminate.backends import FlintBackend
+        from ..verify import verify_branches
 
         generic = self._generic_curve()
         if generic is None:
@@ -229,7 +226,9 @@ class Family:
         if len(factors) != 1 or factors[0][1] != 1:
             return None
         special = FlintBackend(sorted(present)).primitive(special)  # the normal form the design's own eliminant has
-        checked = verify_branches(self._check_setup(design), samples=samples, seed=seed,
+        # the dimensions kept symbolic, valued by the design: the check's programs are every design's
+        setup = check_setup(design.compiled, self.prepared.branches, keep_dimensions=True)
+        checked = verify_branches(setup, samples=samples, seed=seed,
                                   polynomials={"curve": special}, factors={"curve": [special]})
         if not checked.passed:
             return None
@@ -277,21 +276,6 @@ class Family:
                 self._generic = False
         found: tuple[flint.fmpq_mpoly, tuple[str, ...]] | None = self._generic or None
         return found
-
-    def _check_setup(self, design: SharedDesign) -> CheckSetup:
-        """The verification's setup with the dimensions kept symbolic, valued by the design: its
-        compiled programs are the same for every design (and compiled once)."""
-        from ..runtime.frozen import frozen
-        from ..verify import CheckSetup
-
-        compiled = design.compiled
-        system = compiled.system
-        inputs = {n: (float(i.to_radians(i.lo)), float(i.to_radians(i.hi)))
-                  for n, i in compiled.scene.inputs.items() if n in system.inputs}
-        return CheckSetup(system=system, indicators=[(i.point, i.expr, i.positive, i.negative)
-                                                     for i in compiled.indicators],
-                          branches=tuple((b.labels, b.values, b.discriminants) for b in self.prepared.branches),
-                          inputs=frozen(inputs), parameters=compiled.parameter_values)
 
 
 @dataclass(frozen=True)

@@ -21,10 +21,10 @@ def without_seconds(row):
     return {k: v for k, v in row.items() if not k.startswith("seconds_")}
 
 
-def rows(values, *, names=("a", "l", "m", "d"), analyses=ANALYSES):
-    """The row of one design with the family, and alone."""
-    job = Job(FOURBAR, analyses, "P")
-    family = Family.of(FOURBAR, names, "P", analyses=analyses)
+def shared_and_alone(scene, values, *, point="P", analyses=ANALYSES):
+    """The row of one design of ``scene`` with the family of its dimensions, and alone."""
+    job = Job(scene, analyses, point)
+    family = Family.of(scene, tuple(values), point, analyses=analyses)
     return (without_seconds(evaluate_design(job, 0, values, family=family)),
             without_seconds(evaluate_design(job, 0, values)))
 
@@ -35,7 +35,7 @@ small = st.fractions(min_value=Fraction(1, 4), max_value=6, max_denominator=4)
 @settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(a=small, l=small, m=small, d=small)
 def test_a_design_of_the_family_has_the_row_it_has_alone(a, l, m, d):
-    shared, alone = rows({"a": a, "l": l, "m": m, "d": d})
+    shared, alone = shared_and_alone(FOURBAR, {"a": a, "l": l, "m": m, "d": d})
     assert shared == alone
 
 
@@ -46,7 +46,7 @@ def test_a_design_of_the_family_has_the_row_it_has_alone(a, l, m, d):
     ({"a": Fraction(2), "d": Fraction(5)}, "ok"),                        # non-Grashof: part of the turn
 ])
 def test_the_hard_designs_get_their_own_rows(values, status):
-    shared, alone = rows(values, names=("a", "d"))
+    shared, alone = shared_and_alone(FOURBAR, values)
     assert shared == alone and shared["status"] == status
 
 
@@ -68,7 +68,7 @@ def test_a_dead_centre_at_a_grid_input_is_decided_whatever_its_rounding(values):
     whichever sign rounding gives it, so the family answers for it, with the row it has alone."""
     family = Family.of(FOURBAR, ("a", "d"), "P", analyses=ANALYSES)
     assert family.design(values) is not None
-    shared, alone = rows(values, names=("a", "d"), analyses=("curve", "grashof", "transmission"))
+    shared, alone = shared_and_alone(FOURBAR, values, analyses=("curve", "grashof", "transmission"))
     assert shared == alone and shared["status"] == "ok" and shared["grashof_class"] == "change-point"
 
 
@@ -78,7 +78,7 @@ def test_a_curve_of_lower_degree_than_the_familys_is_its_own():
     family = Family.of(FOURBAR, ("a", "p", "q"), "P", analyses=("curve",))
     values = {"a": Fraction(1), "p": Fraction(0), "q": Fraction(0)}
     assert family.curve(family.design(values)) is None
-    shared, alone = rows(values, names=("a", "p", "q"), analyses=("curve",))
+    shared, alone = shared_and_alone(FOURBAR, values, analyses=("curve",))
     assert shared == alone
     assert (shared["curve_polynomial"], shared["curve_degree"]) == ("P_x**2 + P_y**2 - 1", 2)
 
@@ -90,7 +90,7 @@ def test_a_parallelogram_whose_curve_splits_is_its_own():
     values = {"a": Fraction(1), "l": Fraction(4), "m": Fraction(1)}
     design = family.design(values)
     assert design is None or family.curve(design) is None
-    shared, alone = rows(values, names=("a", "l", "m"), analyses=("curve",))
+    shared, alone = shared_and_alone(FOURBAR, values, analyses=("curve",))
     assert shared == alone
 
 
@@ -108,14 +108,6 @@ def test_a_shared_sweep_writes_the_dataset_of_each_design_alone(tmp_path):
     assert without_timings(read_dataset(tmp_path / "shared")).equals(without_timings(read_dataset(tmp_path / "alone")))
 
 
-def shared_and_alone(scene, values, *, point, analyses):
-    """The row of one design of ``scene`` with the family of its dimensions, and alone."""
-    job = Job(scene, analyses, point)
-    family = Family.of(scene, tuple(values), point, analyses=analyses)
-    return (without_seconds(evaluate_design(job, 0, values, family=family)),
-            without_seconds(evaluate_design(job, 0, values)))
-
-
 @pytest.mark.parametrize("scene, values, point, element", [
     (FOURBAR, {"a": Fraction(0)}, "P", "points.A"),                          # a crank of length 0
     (FOURBAR, {"a": Fraction(-1)}, "P", "points.A"),
@@ -131,16 +123,21 @@ def test_a_zero_or_negative_length_fails_as_it_does_alone(scene, values, point, 
     assert shared["curve_polynomial"] is None
 
 
-def test_a_curve_free_of_a_swept_dimension_is_specialised():
-    """arm-string's G, at g = 120 along the arm, runs on the circle x^2 + y^2 = 120^2 whatever the
-    string's anchor B = (a, -b): the generic curve has no a or b in it."""
-    scene = load_scene("arm-string")
-    values = {"a": Fraction(300), "b": Fraction(50)}
-    family = Family.of(scene, tuple(values), "G", analyses=("curve",))
+@pytest.mark.parametrize("name, values, point, curve", [
+    # arm-string's G, at g = 120 along the arm, runs on x^2 + y^2 = 120^2 wherever the string's
+    # anchor B = (a, -b) is: the generic curve has no a or b in it
+    ("arm-string", {"a": Fraction(300), "b": Fraction(50)}, "G", "G_x**2 + G_y**2 - 14400"),
+    # whitworth-quick-return's ram D runs along its guide y = h = 6, whatever the crank and lever:
+    # the generic curve has no D_x (nor r or c) in it
+    ("whitworth-quick-return", {"r": Fraction(3), "c": Fraction(5)}, "D", "D_y - 6"),
+])
+def test_a_curve_free_of_a_swept_dimension_or_a_coordinate_is_specialised(name, values, point, curve):
+    scene = load_scene(name)
+    family = Family.of(scene, tuple(values), point, analyses=("curve",))
     assert family.curve(family.design(values)) is not None   # the family answers for it
-    shared, alone = shared_and_alone(scene, values, point="G", analyses=("curve",))
+    shared, alone = shared_and_alone(scene, values, point=point, analyses=("curve",))
     assert shared == alone
-    assert (shared["status"], shared["curve_polynomial"]) == ("ok", "G_x**2 + G_y**2 - 14400")
+    assert (shared["status"], shared["curve_polynomial"]) == ("ok", curve)
 
 
 def test_a_point_before_the_dyads_assembles_with_them():
@@ -159,7 +156,7 @@ def test_a_generic_curve_past_its_time_leaves_each_design_its_own(monkeypatch):
     family = Family.of(FOURBAR, ("a", "l"), "P", analyses=ANALYSES)
     design = family.design({"a": Fraction(1, 2), "l": Fraction(3)})
     assert design is not None and family.curve(design) is None
-    shared, alone = rows({"a": Fraction(1, 2), "l": Fraction(3)}, names=("a", "l"))
+    shared, alone = shared_and_alone(FOURBAR, {"a": Fraction(1, 2), "l": Fraction(3)})
     assert shared == alone
 
 
@@ -172,18 +169,6 @@ def test_a_mode_named_by_a_configuration_is_named_with_each_designs_values():
     shared, alone = shared_and_alone(scene, values, point="P", analyses=("curve",))
     assert shared == alone
     assert shared["status"] == "failed" and "mode.near: [2, 3] is not close to a configuration" in shared["reason"]
-
-
-def test_a_curve_free_of_a_coordinate_is_specialised():
-    """whitworth-quick-return's ram D runs along its guide y = h = 6, whatever the crank and lever:
-    the generic curve has no D_x (nor r or c) in it."""
-    scene = load_scene("whitworth-quick-return")
-    values = {"r": Fraction(3), "c": Fraction(5)}
-    family = Family.of(scene, tuple(values), "D", analyses=("curve",))
-    assert family.curve(family.design(values)) is not None   # the family answers for it
-    shared, alone = shared_and_alone(scene, values, point="D", analyses=("curve",))
-    assert shared == alone
-    assert (shared["status"], shared["curve_polynomial"]) == ("ok", "D_y - 6")
 
 
 def test_a_transmission_free_of_a_swept_dimension_is_the_designs():
@@ -231,3 +216,10 @@ def test_a_dimension_given_by_a_swept_one_moves_with_it():
     assert Family.of(scene, ("a",), "P", analyses=("curve",)) is None
     shared, alone = shared_and_alone(scene, {"a": Fraction(1)}, point="P", analyses=("curve", "grashof"))
     assert shared == alone and shared["grashof_margin"] == "3/2"   # s + L = 1 + 4, p + q = 3 + 7/2
+
+
+def test_a_scene_with_points_placed_by_side_has_no_family():
+    """Peaucellier-Lipkin's inversor places its points by side: the design's own path checks the side
+    on each design's motion, so every design takes it."""
+    scene = load_scene("peaucellier-lipkin")
+    assert Family.of(scene, ("s",), "P", analyses=("curve",)) is None
