@@ -26,7 +26,7 @@ from .files import Task, read_task
 from .fourbar import BITS, FourBar, Position, safe_name
 from .function import FreudensteinSolution, FunctionSynthesis, freudenstein
 from .motion import BurmesterPair, FivePoses, FourPoses, burmester, curves
-from .path import PathSolution, PathSynthesis, five_point_path
+from .path import PathSolution, PathSynthesis, path_synthesis
 
 __all__ = ["synthesize", "Synthesis", "SynthesizedMechanism", "DIGITS"]
 
@@ -116,7 +116,7 @@ def _solve(task: Task, bits: int) -> Result:
     if task.kind == "function":
         return freudenstein(task.pairs, unknown_start=task.unknown_start, ground=task.ground, bits=bits)
     assert task.pivots is not None, "a path task has its pivots (files)"
-    return five_point_path(task.points, crank_pivot=task.pivots[0], rocker_pivot=task.pivots[1], bits=bits)
+    return path_synthesis(task.points, crank_pivot=task.pivots[0], rocker_pivot=task.pivots[1], bits=bits)
 
 
 def _designs(task: Task, result: Result) -> list[tuple[tuple[int, ...], FourBar]]:
