@@ -63,7 +63,7 @@ import flint
 
 from ..eliminate.group.algebra import coefficients, linear_relation
 from ..errors import ComputationError, UsageError
-from ..system.roots import RealRoot, real_roots
+from ..system.roots import RealRoot, real_roots, refined_together
 from .data import Angle, Point
 
 __all__ = ["five_point_path", "path_synthesis", "system", "PathSynthesis", "PathSolution", "Excluded", "Size", "UNKNOWNS",
@@ -660,9 +660,8 @@ def _constant(value: flint.fmpq) -> flint.nmod_poly:
 def _real_solutions(modulus: flint.fmpq_poly, chain: _Chain, points: tuple[Point, ...], crank_pivot: Point,
                     rocker_pivot: Point, *, bits: int) -> list[PathSolution]:
     found = []
-    for root in real_roots(modulus, bits=bits):
-        root, v = _balls(chain, root, bits, lambda values: _further_turns(
-            values, points, (crank_pivot, rocker_pivot), flint.arb, lambda b: not b.contains(0)))
+    for root, v in _balls(chain, real_roots(modulus, bits=bits), bits, lambda values: _further_turns(
+            values, points, (crank_pivot, rocker_pivot), flint.arb, lambda b: not b.contains(0))):
         with flint.ctx.workprec(root.bits):
             x0, y0 = (flint.arb(c) for c in points[0])
             crank_joint = (x0 + v["xa"], y0 + v["ya"])
@@ -674,26 +673,33 @@ def _real_solutions(modulus: flint.fmpq_poly, chain: _Chain, points: tuple[Point
     return found
 
 
-def _balls(chain: _Chain, root: RealRoot, bits: int,
-           further: Callable[[dict[str, flint.arb]], dict[str, flint.arb]]) -> tuple[RealRoot, dict[str, flint.arb]]:
-    """Every unknown at ``root`` and the ``further`` values made from them (the turns past the
-    fifth point), each ball's radius within ``2**-bits`` of its size: the root refined as needed
-    (the relation's coefficients are large), with the root it was computed at."""
-    precision = bits
-    while True:
-        root = root.refined(precision)
-        with flint.ctx.workprec(precision):
-            try:
-                values = _values(chain, root.ball, flint.arb, lambda b: not b.contains(0))
-                values.update(further(values))
-            except _NoLift:
-                values = {}
-            if values and all(v.rad() <= flint.arb(2) ** (-bits) * max(abs(v.mid()), flint.arb(1))
-                              for v in values.values()):
-                return root, values
-        if precision >= 256 * bits:
+def _balls(chain: _Chain, roots: Sequence[RealRoot], bits: int,
+           further: Callable[[dict[str, flint.arb]], dict[str, flint.arb]]
+           ) -> list[tuple[RealRoot, dict[str, flint.arb]]]:
+    """Every unknown at each of ``roots`` (of one factor) and the ``further`` values made from them
+    (the turns past the fifth point), each ball's radius within ``2**-bits`` of its size: the roots
+    refined as needed (the relation's coefficients are large), together, each with the root it
+    was computed at."""
+    done: dict[int, tuple[RealRoot, dict[str, flint.arb]]] = {}
+    pending, precision = list(roots), bits
+    while pending:
+        waiting = []
+        for root in refined_together(pending, precision):
+            with flint.ctx.workprec(precision):
+                try:
+                    values = _values(chain, root.ball, flint.arb, lambda b: not b.contains(0))
+                    values.update(further(values))
+                except _NoLift:
+                    values = {}
+                if values and all(v.rad() <= flint.arb(2) ** (-bits) * max(abs(v.mid()), flint.arb(1))
+                                  for v in values.values()):
+                    done[root.index] = (root, values)
+                else:
+                    waiting.append(root)
+        if waiting and precision >= 256 * bits:
             raise ComputationError(f"a solution's values stayed wider than 2**-{bits} at {precision} bits")
-        precision *= 2
+        pending, precision = waiting, 2 * precision
+    return [done[root.index] for root in roots]
 
 
 def _distance(p: Ball2, q: Ball2 | Point) -> flint.arb:
