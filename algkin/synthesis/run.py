@@ -238,7 +238,14 @@ def _function_json(result: FunctionSynthesis, digits: int) -> dict[str, Any]:
 
 
 def _path_json(result: PathSynthesis, digits: int) -> dict[str, Any]:
+    size, turns = result.size, len(result.points) - 1
     return {"complex_count": result.complex_count, "real_count": result.real_count,
+            # the system (per further point a turn's cos and sin, its circle and one row per dyad; both
+            # joints' z) and the five points' elimination: its sizes, and how many solutions it has
+            "size": {"points": len(result.points), "equations": 3 * turns, "unknowns": 2 * turns + 4,
+                     "intermediate_degrees": list(size.intermediate), "eliminant_degree": size.resultant_degree,
+                     "eliminant_terms": size.resultant_terms, "eliminant_bits": size.resultant_bits,
+                     "five_point_solutions": size.solution_degree},
             "excluded": [{"factor": e.factor, "degree": e.degree, "multiplicity": e.multiplicity, "reason": e.reason}
                          for e in result.excluded],
             "solutions": [{"crank_joint": _pair(s.crank_joint, digits), "rocker_joint": _pair(s.rocker_joint, digits),

@@ -93,6 +93,10 @@ def test_seven_points_give_the_four_bar_they_came_from_alone():
     turns = [(angle - math.degrees(2 * math.atan(t)) + 180) % 360 - 180 for angle, t in zip(checked.crank_angles, half)]
     assert len(turns) == 7 and max(map(abs, turns)) < 1e-12  # 0 degrees may be given as 360
     assert [kind for kind, _ in checked.defects] == ["transmission"]
+    # seven points: six turns, each a cos and sin on their circle and one row per dyad, and the two
+    # joints' z: 6 + 12 equations in 12 + 4 unknowns; the first five points general (Morgan and Wampler's 36)
+    size = found.to_json()["size"]
+    assert (size["points"], size["equations"], size["unknowns"], size["five_point_solutions"]) == (7, 18, 16, 36)
 
 
 def test_arguments_are_checked():

@@ -100,6 +100,12 @@ def report_synthesis(d: Document) -> str:
                   f"  circle-point curve: {_shown(d['circle_curve'])} = 0",
                   "four poses: a one-parameter family of dyads (five poses give the Burmester pairs)"]
         return "\n".join(lines)
+    if "size" in d:
+        size = d["size"]
+        lines.append(f"  system: {size['equations']} equations in {size['unknowns']} unknowns ({size['points']} points); "
+                     f"the first five points' eliminant: degree {size['eliminant_degree']} in t1, "
+                     f"{size['eliminant_terms']} terms, {size['eliminant_bits']}-bit coefficients, "
+                     f"{size['five_point_solutions']} solutions")
     for k, pair in enumerate(d.get("burmester", []), 1):
         lines.append(f"  Burmester pair {k}: centre ({', '.join(pair['centre'])}), "
                      f"circle point ({', '.join(pair['circle'])})")
