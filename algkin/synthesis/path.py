@@ -221,6 +221,8 @@ def path_synthesis(points: Sequence[Point], *, crank_pivot: Point, rocker_pivot:
     """
     points, crank_pivot, rocker_pivot = _exact(points, crank_pivot, rocker_pivot)
     _validate(points, crank_pivot, rocker_pivot, more=True)
+    if len(points) == 5:
+        return five_point_path(points, crank_pivot=crank_pivot, rocker_pivot=rocker_pivot, bits=bits)
     best = _best(points[:5], crank_pivot, rocker_pivot)
     kept, excluded = [], list(best.excluded)
     for factor, multiplicity in zip(best.factors, best.multiplicities):

@@ -265,6 +265,10 @@ def test_more_points_of_a_known_four_bar_give_it_alone(count: int) -> None:
     assert sum(e.degree for e in missed) == five_point_path(points[:5], **KNOWN_PIVOTS).complex_count - 1
 
 
+def test_five_points_are_the_five_point_problem() -> None:
+    assert path_synthesis(GENERIC, **GENERIC_PIVOTS) == five_point_path(GENERIC, **GENERIC_PIVOTS)
+
+
 def _geometric_miss(solution: PathSolution, result: PathSynthesis, point: tuple[flint.fmpq, flint.fmpq]
                     ) -> mpmath.mpf:
     """How far the four-bar of ``solution`` is from putting its coupler point at ``point``, by
