@@ -29,7 +29,7 @@ from ..errors import UsageError
 from .expr import MAX_NUMBER_BITS, irrational, parse
 from .model import Scene
 
-__all__ = ["with_values", "parse_settings"]
+__all__ = ["with_values", "valued", "parse_settings"]
 
 SHOWN = 80  # characters of a value an error line repeats
 _SPACE = " \t\n\r\f\v"
@@ -60,6 +60,22 @@ def with_values(scene: Scene, values: Mapping[str, object] | None, params: Itera
     """
     if not values:
         return scene
+    from .load import as_scene
+
+    return as_scene(valued(scene, values, params))
+
+
+def valued(scene: Scene, values: Mapping[str, object], params: Iterable[str] | None = ()) -> Scene:
+    """``scene`` with the parameters in ``values`` given those values, checked as ``with_values``
+    checks them, without going through the loader again: for a scene the loader made, the same
+    scene (the loader reads a parameter's value only to parse it, as ``_exact`` does, and to refuse
+    an irrational one; nothing else it checks depends on the values). A sweep's designs take it.
+
+    >>> from algkin.scene import load_scene
+    >>> scene = load_scene("arm-string")
+    >>> valued(scene, {"b": "1/10"}) == with_values(scene, {"b": "1/10"})
+    True
+    """
     if not isinstance(values, dict):
         raise UsageError("set", values, "expected a mapping of parameter names to values")
     defaults = dict(scene.parameters)
@@ -70,9 +86,7 @@ def with_values(scene: Scene, values: Mapping[str, object] | None, params: Itera
         if name in (params or ()):
             raise UsageError("set", _given(name, value), f"{name} is also kept symbolic; give a value or keep it symbolic, not both")
         defaults[name] = _exact(name, value)
-    from .load import as_scene
-
-    return as_scene(attrs.evolve(scene, parameters=defaults))
+    return attrs.evolve(scene, parameters=defaults)
 
 
 def _exact(name: str, value: object) -> sympy.Expr:

@@ -158,11 +158,12 @@ class Family:
     def design(self, values: Mapping[str, Fraction]) -> SharedDesign | None:
         """The design with ``values`` when the family can answer for it, else None (its own path decides).
 
-        A SceneError of loading the values is raised as the design's own path raises it; one of compiling
-        them (a length that is not positive...) leaves the design to its own path, which says it."""
-        from ..scene.settings import with_values
+        An error of the values is raised as the design's own path raises it (``valued``: its scene is the one
+        ``with_values`` loads, without the loading); one of compiling them (a length that is not
+        positive...) leaves the design to its own path, which says it."""
+        from ..scene.settings import valued
 
-        scene = with_values(self.scene, dict(values))
+        scene = valued(self.scene, dict(values))
         if set(values) != set(self.names) or not all(_float_safe(v) for v in values.values()):
             return None
         if self._checks is None or not self._checks.clear(values):

@@ -36,6 +36,13 @@ and the lifts are checked in the twelve equations of ``system``. The real roots 
 solution factors, isolated in certified balls (``algkin.system.roots``), give every real
 four-bar, each value a certified ball computed by the same lift.
 
+Beyond five points (``path_synthesis``): with both pivots given the problem is overdetermined,
+and its solutions are those of the first five points' that reach every further point. Each
+solution factor is decided whole, exactly: at a further point ``P_j`` both dyads' rows are linear
+in ``cos, sin`` of ``theta_j``, so they give ``theta_j`` in the factor's number field ``Q[t1]/(f)``,
+and the factor's roots reach ``P_j`` exactly when ``cos**2 + sin**2 - 1`` is zero there (a
+field: for all its roots or for none). General data then have no solution, which is an answer.
+
 >>> from flint import fmpq
 >>> points = [(fmpq(x), fmpq(y)) for x, y in [(3, -2), (7, 5), (-4, 9), (11, -6), (2, 13)]]
 >>> result = five_point_path(points, crank_pivot=(fmpq(-5), fmpq(1)), rocker_pivot=(fmpq(8), fmpq(-3)))
@@ -56,10 +63,10 @@ import flint
 
 from ..eliminate.group.algebra import coefficients, linear_relation
 from ..errors import ComputationError, UsageError
-from ..system.roots import RealRoot, real_roots
+from ..system.roots import RealRoot, real_roots, refined_together
 from .data import Angle, Point
 
-__all__ = ["five_point_path", "system", "PathSynthesis", "PathSolution", "Excluded", "Size", "UNKNOWNS",
+__all__ = ["five_point_path", "path_synthesis", "system", "PathSynthesis", "PathSolution", "Excluded", "Size", "UNKNOWNS",
            "GENERIC_COUNT", "OFFSETS"]
 
 GENERIC_COUNT = 36
@@ -108,7 +115,7 @@ class Size:
 class PathSolution:
     """One real four-bar. ``root``: its identity, exactly: ``t1``, the half-angle tangent of
     ``theta_1`` about the synthesis' ``offset`` (its irreducible factor and rank among its real
-    roots). In certified balls: ``rotations``, ``(cos, sin)`` of ``theta_1..theta_4``; the moving
+    roots). In certified balls: ``rotations``, ``(cos, sin)`` of ``theta_1`` to the last point's; the moving
     pivots when the coupler point is at ``P_0`` (fixed frame); the link lengths."""
 
     root: RealRoot
@@ -122,7 +129,7 @@ class PathSolution:
 
 @attrs.frozen
 class PathSynthesis:
-    """Every four-bar through the five ``points`` with the given pivots: the real ones
+    """Every four-bar through the ``points`` (five or more) with the given pivots: the real ones
     (``solutions``, ascending in ``t1``; ``real_count`` of them), the number of complex ones
     (``complex_count``, each once), the factors of the eliminant left out and why (``excluded``), the sizes (``size``)
     and the rotation the half-angle tangents are taken about (``offset``)."""
@@ -170,10 +177,11 @@ def _minus(p: Point, q: Point) -> Point:
     return p[0] - q[0], p[1] - q[1]
 
 
-def _validate(points: Sequence[Point], crank_pivot: Point, rocker_pivot: Point) -> None:
-    """A UsageError unless there are five distinct points and two distinct pivots."""
-    if len(points) != 5:
-        raise UsageError("points", len(points), "the five-point problem needs exactly five points")
+def _validate(points: Sequence[Point], crank_pivot: Point, rocker_pivot: Point, *, more: bool = False) -> None:
+    """A UsageError unless there are five distinct points (five or more with ``more``) and two distinct pivots."""
+    if len(points) < 5 or (len(points) > 5 and not more):
+        raise UsageError("points", len(points), "path synthesis with both pivots given needs at least five points"
+                         if more else "the five-point problem needs exactly five points")
     for (i, p), (k, q) in itertools.combinations(enumerate(points), 2):
         if p == q:
             raise UsageError("points", _text(p), f"points {i} and {k} are equal")
@@ -192,10 +200,52 @@ def five_point_path(points: Sequence[Point], *, crank_pivot: Point, rocker_pivot
     ``bits``. The tangents are taken about each of ``OFFSETS`` in turn until one gives
     ``GENERIC_COUNT`` solutions (then all: special data have at most as many isolated solutions
     as general data); otherwise (special data) the first offset that gives the most."""
-    points = tuple((flint.fmpq(x), flint.fmpq(y)) for x, y in points)
-    crank_pivot = (flint.fmpq(crank_pivot[0]), flint.fmpq(crank_pivot[1]))
-    rocker_pivot = (flint.fmpq(rocker_pivot[0]), flint.fmpq(rocker_pivot[1]))
+    points, crank_pivot, rocker_pivot = _exact(points, crank_pivot, rocker_pivot)
     _validate(points, crank_pivot, rocker_pivot)
+    best = _best(points, crank_pivot, rocker_pivot)
+    return _synthesis(points, crank_pivot, rocker_pivot, best, best.factors, best.excluded, bits=bits)
+
+
+def path_synthesis(points: Sequence[Point], *, crank_pivot: Point, rocker_pivot: Point,
+                   bits: int = 128) -> PathSynthesis:
+    """Every four-bar with ground pivots ``crank_pivot`` and ``rocker_pivot`` whose coupler point
+    passes through the ``points`` (five or more, exact): five as ``five_point_path``; more, those
+    of the first five's solutions whose factors reach every further point (each factor left out
+    says the first point it misses). General data past five points have none: an answer.
+
+    >>> from flint import fmpq
+    >>> points = [(fmpq(x), fmpq(y)) for x, y in [(3, -2), (7, 5), (-4, 9), (11, -6), (2, 13), (1, 1)]]
+    >>> result = path_synthesis(points, crank_pivot=(fmpq(-5), fmpq(1)), rocker_pivot=(fmpq(8), fmpq(-3)))
+    >>> result.complex_count, result.real_count, [e.reason for e in result.excluded][-1]
+    (0, 0, 'the solutions through the first five points miss point 5')
+    """
+    points, crank_pivot, rocker_pivot = _exact(points, crank_pivot, rocker_pivot)
+    _validate(points, crank_pivot, rocker_pivot, more=True)
+    if len(points) == 5:
+        return five_point_path(points, crank_pivot=crank_pivot, rocker_pivot=rocker_pivot, bits=bits)
+    best = _best(points[:5], crank_pivot, rocker_pivot)
+    kept, excluded = [], list(best.excluded)
+    for factor, multiplicity in zip(best.factors, best.multiplicities):
+        missed = _first_missed(factor, best.chain, points, (crank_pivot, rocker_pivot))
+        if missed is None:
+            kept.append(factor)
+        else:
+            excluded.append(Excluded(factor.degree(), multiplicity, _written(factor),
+                                     f"the solutions through the first five points miss point {missed}"))
+    return _synthesis(points, crank_pivot, rocker_pivot, best, tuple(kept),
+                      tuple(sorted(excluded, key=lambda e: (e.degree, e.multiplicity))), bits=bits)
+
+
+def _exact(points: Sequence[Point], crank_pivot: Point, rocker_pivot: Point
+           ) -> tuple[tuple[Point, ...], Point, Point]:
+    return (tuple((flint.fmpq(x), flint.fmpq(y)) for x, y in points),
+            (flint.fmpq(crank_pivot[0]), flint.fmpq(crank_pivot[1])),
+            (flint.fmpq(rocker_pivot[0]), flint.fmpq(rocker_pivot[1])))
+
+
+def _best(points: tuple[Point, ...], crank_pivot: Point, rocker_pivot: Point) -> _Solved:
+    """The five points' elimination about each of ``OFFSETS`` in turn until one gives
+    ``GENERIC_COUNT`` solutions; otherwise (special data) the first that gives the most."""
     best: _Solved | None = None
     for offset in OFFSETS:
         solved = _solve(points, crank_pivot, rocker_pivot, offset)
@@ -204,10 +254,16 @@ def five_point_path(points: Sequence[Point], *, crank_pivot: Point, rocker_pivot
         if solved.count == GENERIC_COUNT:  # no data have more isolated solutions than general ones
             break
     assert best is not None
-    solutions = [s for factor in best.factors
+    return best
+
+
+def _synthesis(points: tuple[Point, ...], crank_pivot: Point, rocker_pivot: Point, best: _Solved,
+               factors: tuple[flint.fmpq_poly, ...], excluded: tuple[Excluded, ...], *, bits: int) -> PathSynthesis:
+    """The result with the solutions of ``factors``, the real ones in balls."""
+    solutions = [s for factor in factors
                  for s in _real_solutions(factor, best.chain, points, crank_pivot, rocker_pivot, bits=bits)]
-    return PathSynthesis(points, crank_pivot, rocker_pivot, tuple(sorted(solutions, key=_order)), best.count,
-                         len(solutions), best.excluded, best.size, best.chain.offset)
+    return PathSynthesis(points, crank_pivot, rocker_pivot, tuple(sorted(solutions, key=_order)),
+                         sum(f.degree() for f in factors), len(solutions), excluded, best.size, best.chain.offset)
 
 
 def _order(solution: PathSolution) -> flint.fmpq:
@@ -221,6 +277,7 @@ class _Solved:
 
     chain: _Chain
     factors: tuple[flint.fmpq_poly, ...]
+    multiplicities: tuple[int, ...]  # each factor's in the eliminant
     excluded: tuple[Excluded, ...]
     size: Size
 
@@ -249,12 +306,13 @@ def _solve(points: tuple[Point, ...], crank_pivot: Point, rocker_pivot: Point, o
     leads = (_univariate(coefficients(third, "t2")[-1]), _univariate(coefficients(fourth, "t2")[-1]))
     chain = _Chain(offset, {"crank": crank, "rocker": rocker}, dets, _relation(third, fourth), leads)
     equations, _ = system(points, crank_pivot=crank_pivot, rocker_pivot=rocker_pivot)
-    lifted, excluded = [], []
+    lifted, multiplicities, excluded = [], [], []
     for factor, multiplicity in eliminant.factor()[1]:
         modulus = _univariate(factor)
         try:
             _lift(modulus, chain, equations)
             lifted.append(modulus)
+            multiplicities.append(int(multiplicity))
         except _NoLift as why:
             known = [reason for test, reason in reasons if test(modulus)][:1]  # the first: the circle
             # points' factor divides the dependent rows' polynomials too
@@ -262,7 +320,8 @@ def _solve(points: tuple[Point, ...], crank_pivot: Point, rocker_pivot: Point, o
                                      "; ".join(known + [str(why)])))
     size = Size((int(third.degrees()[0]), int(third.degrees()[1])), int(eliminant.degrees()[0]), len(eliminant),
                 _bits(_univariate(eliminant)), sum(f.degree() for f in lifted))
-    return _Solved(chain, tuple(lifted), tuple(sorted(excluded, key=lambda e: (e.degree, e.multiplicity))), size)
+    return _Solved(chain, tuple(lifted), tuple(multiplicities),
+                   tuple(sorted(excluded, key=lambda e: (e.degree, e.multiplicity))), size)
 
 
 def _tangent_row(points: Sequence[Point], j: int, pivot: Point, t: flint.fmpq_mpoly, offset: Angle) -> Row:
@@ -517,6 +576,62 @@ def _lift(modulus: flint.fmpq_poly, chain: _Chain, equations: list[flint.fmpq_mp
 R = TypeVar("R", _Residue[flint.nmod_poly], _Residue[flint.fmpq_poly])
 
 
+def _further_turns(values: dict[str, E], points: Sequence[Point], pivots: tuple[Point, Point],
+                   number: Callable[[flint.fmpq], E], invertible: Callable[[E], bool]) -> dict[str, E]:
+    """``cos, sin`` of ``theta_j`` for each point past the fifth (``c5, s5``, ...), given the lift's
+    ``values``: each dyad's row at ``P_j`` is ``alpha cos + beta sin + gamma = 0`` (``_row``, its
+    ``z`` known), two rows solved by Cramer's rule. A _NoLift where their determinant is not
+    shown invertible (the two rows dependent at that point)."""
+    found: dict[str, E] = {}
+    for j in range(5, len(points)):
+        rows = []
+        for pivot, name in zip(pivots, "ab"):
+            (dx, dy), (ex, ey) = _minus(points[j], pivot), _minus(points[0], pivot)
+            x, y = values[f"x{name}"], values[f"y{name}"]
+            rows.append((number(dx) * x + number(dy) * y, number(dy) * x - number(dx) * y,
+                         number((dx * dx + dy * dy - ex * ex - ey * ey) / 2) - number(ex) * x - number(ey) * y))
+        (alpha, beta, gamma), (alpha2, beta2, gamma2) = rows
+        determinant = alpha * beta2 - alpha2 * beta
+        if not invertible(determinant):
+            raise _NoLift(f"the two dyads' conditions at point {j} are dependent")
+        found[f"c{j}"] = (beta * gamma2 - beta2 * gamma) / determinant
+        found[f"s{j}"] = (alpha2 * gamma - alpha * gamma2) / determinant
+    return found
+
+
+def _first_missed(modulus: flint.fmpq_poly, chain: _Chain, points: Sequence[Point],
+                  pivots: tuple[Point, Point]) -> int | None:
+    """The first point past the fifth that the roots of the solution factor ``modulus`` miss, None
+    where they reach every one: ``cos**2 + sin**2 - 1`` of each further turn, zero or not in the
+    factor's field. A residue nonzero modulo ``PRIME`` is nonzero over QQ (a proof of a miss);
+    a zero there proves nothing, and is decided exactly over QQ."""
+    image = _image(modulus)
+    if image is not None:
+        try:
+            missed = _misses(chain, points, pivots, _Residue(flint.nmod_poly([0, 1], PRIME) % image, image),
+                             lambda c: _Residue(_constant(c), image))
+            if missed:
+                return missed[0]
+        except _NoLift:
+            pass  # the prime may see a zero that QQ does not: decided exactly
+    try:
+        missed = _misses(chain, points, pivots, _Residue(flint.fmpq_poly([0, 1]) % modulus, modulus),
+                         lambda c: _Residue(flint.fmpq_poly([c]), modulus))
+    except _NoLift as why:  # a field: what is not invertible is zero
+        raise ComputationError(f"{why} for a solution through the first five points: the data are special") from None
+    return missed[0] if missed else None
+
+
+def _misses(chain: _Chain, points: Sequence[Point], pivots: tuple[Point, Point], t1: R,
+            number: Callable[[flint.fmpq], R]) -> list[int]:
+    """The points past the fifth not reached at ``t1`` (a residue), in order."""
+    values = _values(chain, t1, number, lambda r: r.invertible())
+    turns = _further_turns(values, points, pivots, number, lambda r: r.invertible())
+    one = number(flint.fmpq(1))
+    return [j for j in range(5, len(points))
+            if not (turns[f"c{j}"] * turns[f"c{j}"] + turns[f"s{j}"] * turns[f"s{j}"] - one).value.is_zero()]
+
+
 def _check(chain: _Chain, equations: list[flint.fmpq_mpoly], t1: R, number: Callable[[flint.fmpq], R]) -> None:
     """The lift at ``t1`` (a residue modulo the factor), checked in ``equations``: a
     ComputationError if they fail (the lift's argument would be wrong)."""
@@ -547,36 +662,46 @@ def _constant(value: flint.fmpq) -> flint.nmod_poly:
 def _real_solutions(modulus: flint.fmpq_poly, chain: _Chain, points: tuple[Point, ...], crank_pivot: Point,
                     rocker_pivot: Point, *, bits: int) -> list[PathSolution]:
     found = []
-    for root in real_roots(modulus, bits=bits):
-        root, v = _balls(chain, root, bits)
+    for root, v in _balls(chain, real_roots(modulus, bits=bits), bits, lambda values: _further_turns(
+            values, points, (crank_pivot, rocker_pivot), flint.arb, lambda b: not b.contains(0))):
         with flint.ctx.workprec(root.bits):
             x0, y0 = (flint.arb(c) for c in points[0])
             crank_joint = (x0 + v["xa"], y0 + v["ya"])
             rocker_joint = (x0 + v["xb"], y0 + v["yb"])
             found.append(PathSolution(
-                root, tuple((v[f"c{j}"], v[f"s{j}"]) for j in range(1, 5)), crank_joint, rocker_joint,
+                root, tuple((v[f"c{j}"], v[f"s{j}"]) for j in range(1, len(points))), crank_joint, rocker_joint,
                 _distance(crank_joint, crank_pivot), _distance(crank_joint, rocker_joint),
                 _distance(rocker_joint, rocker_pivot)))
     return found
 
 
-def _balls(chain: _Chain, root: RealRoot, bits: int) -> tuple[RealRoot, dict[str, flint.arb]]:
-    """Every unknown at ``root``, each ball's radius within ``2**-bits`` of its size: the root
-    refined as needed (the relation's coefficients are large), with the root it was computed at."""
-    precision = bits
-    while True:
-        root = root.refined(precision)
-        with flint.ctx.workprec(precision):
-            try:
-                values = _values(chain, root.ball, flint.arb, lambda b: not b.contains(0))
-            except _NoLift:
-                values = {}
-            if values and all(v.rad() <= flint.arb(2) ** (-bits) * max(abs(v.mid()), flint.arb(1))
-                              for v in values.values()):
-                return root, values
-        if precision >= 256 * bits:
+def _balls(chain: _Chain, roots: Sequence[RealRoot], bits: int,
+           further: Callable[[dict[str, flint.arb]], dict[str, flint.arb]]
+           ) -> list[tuple[RealRoot, dict[str, flint.arb]]]:
+    """Every unknown at each of ``roots`` (of one factor) and the ``further`` values made from them
+    (the turns past the fifth point), each ball's radius within ``2**-bits`` of its size: the roots
+    refined as needed (the relation's coefficients are large), together, each with the root it
+    was computed at."""
+    done: dict[int, tuple[RealRoot, dict[str, flint.arb]]] = {}
+    pending, precision = list(roots), bits
+    while pending:
+        waiting = []
+        for root in refined_together(pending, precision):
+            with flint.ctx.workprec(precision):
+                try:
+                    values = _values(chain, root.ball, flint.arb, lambda b: not b.contains(0))
+                    values.update(further(values))
+                except _NoLift:
+                    values = {}
+                if values and all(v.rad() <= flint.arb(2) ** (-bits) * max(abs(v.mid()), flint.arb(1))
+                                  for v in values.values()):
+                    done[root.index] = (root, values)
+                else:
+                    waiting.append(root)
+        if waiting and precision >= 256 * bits:
             raise ComputationError(f"a solution's values stayed wider than 2**-{bits} at {precision} bits")
-        precision *= 2
+        pending, precision = waiting, 2 * precision
+    return [done[root.index] for root in roots]
 
 
 def _distance(p: Ball2, q: Ball2 | Point) -> flint.arb:

@@ -26,7 +26,7 @@ from .files import Task, read_task
 from .fourbar import BITS, FourBar, Position, safe_name
 from .function import FreudensteinSolution, FunctionSynthesis, freudenstein
 from .motion import BurmesterPair, FivePoses, FourPoses, burmester, curves
-from .path import PathSolution, PathSynthesis, five_point_path
+from .path import PathSolution, PathSynthesis, path_synthesis
 
 __all__ = ["synthesize", "Synthesis", "SynthesizedMechanism", "DIGITS"]
 
@@ -116,7 +116,7 @@ def _solve(task: Task, bits: int) -> Result:
     if task.kind == "function":
         return freudenstein(task.pairs, unknown_start=task.unknown_start, ground=task.ground, bits=bits)
     assert task.pivots is not None, "a path task has its pivots (files)"
-    return five_point_path(task.points, crank_pivot=task.pivots[0], rocker_pivot=task.pivots[1], bits=bits)
+    return path_synthesis(task.points, crank_pivot=task.pivots[0], rocker_pivot=task.pivots[1], bits=bits)
 
 
 def _designs(task: Task, result: Result) -> list[tuple[tuple[int, ...], FourBar]]:
@@ -238,7 +238,14 @@ def _function_json(result: FunctionSynthesis, digits: int) -> dict[str, Any]:
 
 
 def _path_json(result: PathSynthesis, digits: int) -> dict[str, Any]:
+    size, turns = result.size, len(result.points) - 1
     return {"complex_count": result.complex_count, "real_count": result.real_count,
+            # the system (per further point a turn's cos and sin, its circle and one row per dyad; both
+            # joints' z) and the five points' elimination: its sizes, and how many solutions it has
+            "size": {"points": len(result.points), "equations": 3 * turns, "unknowns": 2 * turns + 4,
+                     "intermediate_degrees": list(size.intermediate), "eliminant_degree": size.resultant_degree,
+                     "eliminant_terms": size.resultant_terms, "eliminant_bits": size.resultant_bits,
+                     "five_point_solutions": size.solution_degree},
             "excluded": [{"factor": e.factor, "degree": e.degree, "multiplicity": e.multiplicity, "reason": e.reason}
                          for e in result.excluded],
             "solutions": [{"crank_joint": _pair(s.crank_joint, digits), "rocker_joint": _pair(s.rocker_joint, digits),

@@ -30,7 +30,7 @@ import flint
 
 from ..errors import ComputationError, UsageError
 
-__all__ = ["RealRoot", "real_roots", "isolates", "quadratic_roots", "Polynomial", "Rational", "MAX_BITS"]
+__all__ = ["RealRoot", "real_roots", "refined_together", "isolates", "quadratic_roots", "Polynomial", "Rational", "MAX_BITS"]
 
 Polynomial = Union[flint.fmpz_poly, flint.fmpq_poly]
 Rational = Union[int, flint.fmpz, flint.fmpq]
@@ -89,7 +89,10 @@ class RealRoot:
         ball it had, so it still isolates the root); itself where its ball is that fine already."""
         if bits <= self.bits:
             return self
-        ball = _real_balls(self.factor, bits)[self.index]
+        return self._at(_real_balls(self.factor, bits)[self.index], bits)
+
+    def _at(self, ball: flint.arb, bits: int) -> RealRoot:
+        """The root with ``ball``, its factor's root of its rank computed at ``bits``."""
         if not self.ball.contains(ball):
             with flint.ctx.workprec(bits):
                 ball = ball.intersection(self.ball)
@@ -148,6 +151,30 @@ def real_roots(poly: Polynomial, *, within: tuple[Rational, Rational] | None = N
             raise UsageError("within", within, "is no interval: its lower end is above its upper end")
         roots = [r for r in roots if _inside(r, lo, hi)]
     return tuple(roots)
+
+
+def refined_together(roots: Sequence[RealRoot], bits: int) -> list[RealRoot]:
+    """``[root.refined(bits) for root in roots]``, the same balls, each factor's roots computed
+    once (a factor's roots are found all at once: refining its real roots one by one would find
+    them all again for each).
+
+    >>> roots = real_roots(flint.fmpz_poly([-1, 0, 0, 0, 0, 3]) * flint.fmpz_poly([2, -7, 0, 1]))
+    >>> together, alone = refined_together(roots, 300), [r.refined(300) for r in roots]
+    >>> [(a.ball.mid() == b.ball.mid(), a.ball.rad() == b.ball.rad(), a.bits) for a, b in zip(together, alone)][0]
+    (True, True, 300)
+    >>> all(a.ball.mid() == b.ball.mid() and a.ball.rad() == b.ball.rad() for a, b in zip(together, alone))
+    True
+    """
+    found: dict[tuple[int, ...], list[flint.arb]] = {}
+    refined = []
+    for root in roots:
+        if bits <= root.bits:
+            refined.append(root)
+            continue
+        if root.coefficients not in found:
+            found[root.coefficients] = _real_balls(root.factor, bits)
+        refined.append(root._at(found[root.coefficients][root.index], bits))
+    return refined
 
 
 def isolates(poly: Polynomial, lo: Rational, hi: Rational) -> bool:

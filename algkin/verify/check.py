@@ -161,6 +161,7 @@ class _Plan:
             (block, certifier_of(block), certify_parameters(block)) for block in self.blocks.blocks]
         self.known = [v for v in system.variables if v not in system.unknowns]
         self.parameters = {n: Fraction(str(v)) for n, v in parameters.items()}
+        self._balls_made: tuple[int | None, dict[str, flint.arb]] = (None, {})
         # a polynomial may keep the dimensions symbolic: they take their exact values in it
         dimensions = {n: v for n, v in self.parameters.items() if n not in system.variables}
         names = list(system.unknowns) + self.known
@@ -185,10 +186,18 @@ class _Plan:
 
     def balls(self, angles: Mapping[str, Floats], k: int) -> list[flint.arb]:
         """The known variables of sample ``k`` as balls, in ``self.known`` order."""
-        values = {n: ARB.number(v.numerator, v.denominator) for n, v in self.parameters.items()}
+        values = dict(self._parameter_balls())
         for name, angle in angles.items():
             values.update(input_values(self.system.inputs[name], flint.arb(float(angle[k]))))
         return [values[n] for n in self.known]
+
+    def _parameter_balls(self) -> dict[str, flint.arb]:
+        """The parameters' exact values as balls at the working precision, made once per precision."""
+        precision = flint.ctx.prec
+        if self._balls_made[0] != precision:
+            self._balls_made = (precision, {n: ARB.number(v.numerator, v.denominator)
+                                            for n, v in self.parameters.items()})
+        return self._balls_made[1]
 
     def any_real(self, floats: Mapping[str, Floats]) -> NDArray[np.bool_]:
         """Per sample, whether some branch's discriminants are all positive (where to sample)."""

@@ -47,9 +47,11 @@ class Pencil:
         self.known = known
         self.first: ArrayProgram = compile_program(first, known, NUMPY)
         self.line: ArrayProgram = compile_program(line, known, NUMPY)
-        # balls: one program for all nine coefficients; the two roots of the last sample remembered
+        # balls: one program for all nine coefficients; the two roots of the last sample remembered,
+        # with their midpoints in floats (each of the sample's candidates is measured against them)
         self.coefficients: BallProgram = compile_program(list(first) + list(line), known, ARB)
-        self._last: tuple[tuple[arb, ...] | None, list[Enclosure] | None] = (None, None)
+        self._last: tuple[tuple[arb, ...] | None, list[Enclosure] | None, list[list[float]] | None] = \
+            (None, None, None)
 
     @classmethod
     def of(cls, equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol], known: list[str]) -> Pencil | None:
@@ -104,13 +106,14 @@ class Pencil:
         root) or the candidate is near neither.
 
         Both roots are enclosed at once (a sample's candidates share their ``known`` balls)."""
-        last_known, roots = self._last
+        last_known, roots, middles = self._last
         if last_known is None or len(last_known) != len(known) or any(a is not b for a, b in zip(last_known, known)):
             roots = self._roots([arb(c) for c in self.coefficients(*known)])
-            self._last = (tuple(known), roots)
-        if roots is None:
+            middles = None if roots is None else [[float(b.mid()) for b in root] for root in roots]
+            self._last = (tuple(known), roots, middles)
+        if roots is None or middles is None:
             return None
-        gaps = [max(abs(float(b.mid()) - c) for b, c in zip(root, candidate)) for root in roots]
+        gaps = [max(abs(m - c) for m, c in zip(middle, candidate)) for middle in middles]
         gap, root = min(zip(gaps, roots), key=lambda pair: pair[0])
         # a candidate far from both roots is no float solution: nothing is proved next to it
         return root if gap <= NEAR * max(1.0, *(abs(c) for c in candidate)) else None

@@ -3,9 +3,14 @@
 import attrs
 import pytest
 import sympy
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
+from algkin.catalog import catalog_names
+from algkin.errors import AlgkinError
 from algkin.runtime.frozen import FrozenDict
 from algkin.scene import compile_scene, load_scene, with_values
+from algkin.scene.settings import valued
 
 
 def test_a_loaded_scene_cannot_be_changed_and_a_later_load_is_the_file():
@@ -44,3 +49,23 @@ def test_a_frozen_mapping_keeps_order_and_hashes_as_it_compares():
     assert list(first) == ["a", "b"] and list(second) == ["b", "a"]
     assert first == second and hash(first) == hash(second)
     assert first == {"a": 1, "b": 2} and first != {"a": 1}
+
+
+@settings(max_examples=80, deadline=None)
+@given(st.sampled_from(catalog_names()), st.data())
+def test_valued_is_with_values_without_the_reload(name, data):
+    """A loaded scene given exact values for some of its numeric parameters (zero and negative
+    ones too): the same scene as through the loader again, or the same one-line error."""
+    scene = load_scene(name)
+    numeric = sorted(n for n, v in scene.parameters.items() if v.is_Rational)
+    assume(numeric)
+    chosen = data.draw(st.lists(st.sampled_from(numeric), min_size=1, unique=True))
+    values = {n: data.draw(st.fractions(min_value=-50, max_value=50, max_denominator=1000)) for n in chosen}
+    try:
+        expected = with_values(scene, values)
+    except AlgkinError as err:
+        with pytest.raises(type(err)) as raised:
+            valued(scene, values)
+        assert str(raised.value) == str(err)
+        return
+    assert valued(scene, values) == expected

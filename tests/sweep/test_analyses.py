@@ -8,8 +8,11 @@ from fractions import Fraction
 
 import pytest
 import sympy
+from hypothesis import given
+from hypothesis import strategies as st
 
 from algkin.scene import load_scene
+from algkin.sweep.analyses import _float_of
 from algkin.sweep.design import Job, evaluate_design
 
 from ..hand_linkages import fourbar
@@ -38,6 +41,19 @@ def test_grashof_classes_by_hand(a, d, l, m):
     assert found["grashof_class"] == expected
     s = sorted(Fraction(v) for v in (a, d, l, m))
     assert Fraction(found["grashof_margin"]) == s[1] + s[2] - s[0] - s[3]
+    assert found["grashof_margin_float"] == float(s[1] + s[2] - s[0] - s[3])
+
+
+@given(st.fractions(max_denominator=2**70) | st.integers(-2**1100, 2**1100).map(Fraction))
+def test_margin_float_is_sympys_float_of_its_text(margin):
+    """A margin's float read from its text as the rational it is: sympy's own float, past a float's range too."""
+    text = str(sympy.Rational(margin.numerator, margin.denominator))
+    assert _float_of(text) == float(sympy.sympify(text))
+
+
+def test_irrational_margin_float():
+    """A ground of sqrt(...) makes the margin a radical: its float still comes from its text."""
+    assert _float_of("-3 + 2*sqrt(5)") == pytest.approx(-3 + 2 * math.sqrt(5), rel=1e-15)
 
 
 def test_toggles_of_a_double_rocker_by_the_law_of_cosines():

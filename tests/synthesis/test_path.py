@@ -21,7 +21,7 @@ import pytest
 import sympy
 
 from algkin.errors import ComputationError, UsageError
-from algkin.synthesis.path import GENERIC_COUNT, PathSynthesis, five_point_path, system
+from algkin.synthesis.path import GENERIC_COUNT, PathSolution, PathSynthesis, five_point_path, path_synthesis, system
 
 Q = flint.fmpq
 
@@ -141,9 +141,9 @@ class Known(NamedTuple):
     rocker2: sympy.Expr
 
 
-def _known_fourbar(*, held: bool = False) -> Known:
+def _known_fourbar(*, held: bool = False, count: int = 5) -> Known:
     """A four-bar with rational dimensions (crank 2 at (0, 0), coupler 5, rocker pivot (4, 0))
-    at five configurations where every angle has rational cos and sin: from one configuration,
+    at ``count`` configurations where every angle has rational cos and sin: from one configuration,
     the others by the two involutions of its configuration curve (the crank held, the coupler's
     other assembly; the coupler's direction held, the crank's other place), each the other root
     of a quadratic with one rational root. Its coupler point: (1, 2) in the coupler's frame."""
@@ -173,13 +173,13 @@ def _known_fourbar(*, held: bool = False) -> Known:
 
     configurations = [start]
     a, b = start
-    while len(configurations) < 5:  # both involutions in turn (``held``: each configuration kept,
+    while len(configurations) < count:  # both involutions in turn (``held``: each configuration kept,
         b = other(v, {u: a}, b)     # two in turn sharing the crank's angle or the coupler's)
         if held:
             configurations.append((a, b))
         a = other(u, {v: b}, a)
         configurations.append((a, b))
-    configurations = configurations[:5]
+    configurations = configurations[:count]
     points, turns = [], []
     for a, b in configurations:
         first, _ = joints(a, b)
@@ -235,6 +235,101 @@ def test_points_of_a_four_bar_with_its_crank_held_are_special_and_said_so() -> N
     with pytest.raises(ComputationError) as error:
         five_point_path(points, crank_pivot=(Q(0), Q(0)), rocker_pivot=(Q(4), Q(0)))
     assert "in one angle alone: the data are special" in str(error.value) and "\n" not in str(error.value)
+
+
+KNOWN_PIVOTS = {"crank_pivot": (Q(0), Q(0)), "rocker_pivot": (Q(4), Q(0))}
+
+
+def _holds(ball: flint.arb, value: sympy.Expr) -> bool:
+    with flint.ctx.workprec(300):
+        return (ball - flint.arb(_fmpq(value))).contains(0)
+
+
+@pytest.mark.parametrize("count", [6, 7])
+def test_more_points_of_a_known_four_bar_give_it_alone(count: int) -> None:
+    """Past five points the problem is overdetermined: the four-bar the points came from is its
+    one solution, complex ones counted, with the construction's turn at every point."""
+    known = _known_fourbar(count=count)
+    points = [(_fmpq(x), _fmpq(y)) for x, y in known.points]
+    assert len(set(points)) == count
+    result = path_synthesis(points, **KNOWN_PIVOTS)
+    assert (result.complex_count, result.real_count) == (1, 1)
+    solution, = result.solutions
+    assert all(_holds(b, x) for b, x in zip(solution.crank_joint + solution.rocker_joint,
+                                            known.crank_joint + known.rocker_joint))
+    assert len(solution.rotations) == count - 1
+    assert all(_holds(c, cos) and _holds(s, sin) for (c, s), (cos, sin) in zip(solution.rotations, known.turns))
+    assert solution.crank.contains(2) and solution.coupler.contains(5)
+    # the first five points' other solutions are all left out, each factor with the point it misses
+    missed = [e for e in result.excluded if "miss point" in e.reason]
+    assert sum(e.degree for e in missed) == five_point_path(points[:5], **KNOWN_PIVOTS).complex_count - 1
+
+
+def test_five_points_are_the_five_point_problem() -> None:
+    assert path_synthesis(GENERIC, **GENERIC_PIVOTS) == five_point_path(GENERIC, **GENERIC_PIVOTS)
+
+
+def _geometric_miss(solution: PathSolution, result: PathSynthesis, point: tuple[flint.fmpq, flint.fmpq]
+                    ) -> mpmath.mpf:
+    """How far the four-bar of ``solution`` is from putting its coupler point at ``point``, by
+    geometry alone (50 digits): its joints there lie on their pivots' circles and on circles about
+    the point of the coupler's own radii; of those, the pairs of the coupler's orientation are
+    compared with the coupler's length. Infinity where no such pair exists."""
+    def number(q: flint.fmpq) -> mpmath.mpf:
+        return mpmath.mpf(int(q.p)) / int(q.q)
+
+    def meeting(c1: tuple[mpmath.mpf, mpmath.mpf], r1: mpmath.mpf, c2: tuple[mpmath.mpf, mpmath.mpf],
+                r2: mpmath.mpf) -> list[tuple[mpmath.mpf, mpmath.mpf]]:
+        d = mpmath.hypot(c2[0] - c1[0], c2[1] - c1[1])
+        along = (r1 * r1 - r2 * r2 + d * d) / (2 * d)
+        if r1 * r1 < along * along:
+            return []
+        h = mpmath.sqrt(r1 * r1 - along * along)
+        ux, uy = (c2[0] - c1[0]) / d, (c2[1] - c1[1]) / d
+        base = (c1[0] + along * ux, c1[1] + along * uy)
+        return [(base[0] - sign * h * uy, base[1] + sign * h * ux) for sign in (1, -1)]
+
+    def cross(o: tuple[mpmath.mpf, ...], a: tuple[mpmath.mpf, ...], b: tuple[mpmath.mpf, ...]) -> mpmath.mpf:
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+    with mpmath.workdps(50):
+        p0, p = (tuple(number(v) for v in q) for q in (result.points[0], point))
+        a, b = (tuple(number(v) for v in q) for q in (result.crank_pivot, result.rocker_pivot))
+        ja, jb = (tuple(_mp(v) for v in joint) for joint in (solution.crank_joint, solution.rocker_joint))
+        reach = {name: mpmath.hypot(j[0] - p0[0], j[1] - p0[1]) for name, j in (("a", ja), ("b", jb))}
+        coupler, turning = mpmath.hypot(ja[0] - jb[0], ja[1] - jb[1]), cross(p0, ja, jb)
+        crank, rocker = mpmath.hypot(ja[0] - a[0], ja[1] - a[1]), mpmath.hypot(jb[0] - b[0], jb[1] - b[1])
+        gaps = [abs(mpmath.hypot(x[0] - y[0], x[1] - y[1]) - coupler)
+                for x in meeting(a, crank, p, reach["a"]) for y in meeting(b, rocker, p, reach["b"])
+                if cross(p, x, y) * turning > 0]
+        return min(gaps, default=mpmath.inf)
+
+
+def test_a_sixth_point_off_the_curve_is_reached_by_no_four_bar() -> None:
+    """The known four-bar's sixth point moved by 1/1000: no four-bar through all six (complex ones
+    counted: none), exit-0 answer; the five points' real four-bars each miss the moved point by
+    geometry, while the known four-bar reaches the true one."""
+    known = _known_fourbar(count=6)
+    points = [(_fmpq(x), _fmpq(y)) for x, y in known.points]
+    moved = points[:5] + [(points[5][0] + Q(1, 1000), points[5][1])]
+    result = path_synthesis(moved, **KNOWN_PIVOTS)
+    assert (result.complex_count, result.real_count, result.solutions) == (0, 0, ())
+    five = five_point_path(points[:5], **KNOWN_PIVOTS)
+    assert sum(e.degree for e in result.excluded if "miss point 5" in e.reason) == five.complex_count
+    misses = [_geometric_miss(s, five, moved[5]) for s in five.solutions]
+    assert len(misses) == five.real_count and min(misses) > 1e-6
+    reached = [_geometric_miss(s, five, points[5]) for s in five.solutions]
+    assert sorted(reached)[0] < 1e-40 < sorted(reached)[1]
+
+
+@pytest.mark.parametrize(("points", "says"), [
+    (GENERIC[:4], "at least five points"),
+    (GENERIC + [GENERIC[2]], "points 2 and 5 are equal"),
+])
+def test_path_synthesis_bad_input_is_one_line(points: list[tuple[flint.fmpq, flint.fmpq]], says: str) -> None:
+    with pytest.raises(UsageError) as error:
+        path_synthesis(points, **GENERIC_PIVOTS)
+    assert error.value.argument == "points" and says in str(error.value) and "\n" not in str(error.value)
 
 
 @pytest.mark.parametrize("data", ["general", "problem 7"])

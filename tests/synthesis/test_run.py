@@ -76,6 +76,29 @@ def test_five_pairs_with_unknown_starts_find_the_four_bar_they_came_from():
     assert all(m.checked.reached for m in found.mechanisms)
 
 
+def test_seven_points_give_the_four_bar_they_came_from_alone():
+    """The example's seven points, built from a four-bar (crank 2 about (0, 0), rocker 5 about (3, -1),
+    joints (0, -3) and (4, -2) from the coupler point in the coupler's frame): it alone, reached
+    at all seven, its coupler sqrt(17); only its transmission angle (14 to 68 degrees) is a defect."""
+    found = synthesize(EXAMPLES / "seven-points-path.toml")
+    assert (found.result.complex_count, found.result.real_count) == (1, 1)
+    (mechanism,) = found.mechanisms
+    lengths = {k: float(v.mid()) for k, v in mechanism.design.lengths().items()}
+    assert lengths == pytest.approx({"crank": 2, "coupler": math.sqrt(17), "rocker": 5, "ground": math.sqrt(10)},
+                                    abs=1e-30)
+    checked = mechanism.checked
+    assert checked.reached and checked.deviation < 1e-30
+    # the construction's crank angles: twice the angle of the half-angle tangents 0, 1/2, 13/11, 3, -3, -1, -1/3
+    half = [0, 1 / 2, 13 / 11, 3, -3, -1, -1 / 3]
+    turns = [(angle - math.degrees(2 * math.atan(t)) + 180) % 360 - 180 for angle, t in zip(checked.crank_angles, half)]
+    assert len(turns) == 7 and max(map(abs, turns)) < 1e-12  # 0 degrees may be given as 360
+    assert [kind for kind, _ in checked.defects] == ["transmission"]
+    # seven points: six turns, each a cos and sin on their circle and one row per dyad, and the two
+    # joints' z: 6 + 12 equations in 12 + 4 unknowns; the first five points general (Morgan and Wampler's 36)
+    size = found.to_json()["size"]
+    assert (size["points"], size["equations"], size["unknowns"], size["five_point_solutions"]) == (7, 18, 16, 36)
+
+
 def test_arguments_are_checked():
     from algkin.errors import UsageError
 

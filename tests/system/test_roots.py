@@ -10,7 +10,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from algkin.errors import ComputationError, UsageError
-from algkin.system.roots import RealRoot, isolates, quadratic_roots, real_roots
+from algkin.system.roots import RealRoot, isolates, quadratic_roots, real_roots, refined_together
 
 X = flint.fmpz_poly([0, 1])
 
@@ -204,3 +204,20 @@ def test_square_roots_of_non_squares(numbers):
     expected = sorted([s * flint.arb(n).sqrt() for n in numbers for s in (-1, 1)], key=lambda b: float(b.mid()))
     assert len(roots) == len(expected)
     assert all(r.ball.overlaps(e) for r, e in zip(roots, expected))
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.lists(st.integers(-30, 30), min_size=2, max_size=7), min_size=1, max_size=3),
+       st.sampled_from([128, 300, 1000]))
+def test_refined_together_gives_each_roots_own_refinement(factors, bits):
+    """Roots of several factors refined together: the very balls each root's own ``refined`` gives,
+    each holding the root arb's ``complex_roots`` finds at four times the precision."""
+    poly = prod((flint.fmpz_poly(c) for c in factors if any(c[1:])), start=flint.fmpz_poly([1]))
+    roots = real_roots(poly, bits=64)
+    together = refined_together(roots, bits)
+    for root, mine in zip(roots, together):
+        alone = root.refined(bits)
+        assert (mine.ball.mid(), mine.ball.rad(), mine.bits) == (alone.ball.mid(), alone.ball.rad(), alone.bits)
+        with flint.ctx.workprec(4 * bits):
+            fine = [r.real for r, _ in root.factor.complex_roots() if r.imag.is_zero()]
+        assert mine.ball.contains(sorted(fine, key=lambda b: b.mid())[root.index])

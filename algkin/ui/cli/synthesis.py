@@ -35,7 +35,7 @@ def add_command(commands: Subcommands, command: Callable[[Subcommands, str, str]
                                                  "path points (path): every solution, certified; scene files written")
     synthesize.add_argument("kind", choices=KINDS, help="what the file asks for")
     synthesize.add_argument("file", help="the synthesis file (.toml): poses, pairs or points, exact; or an example's "
-                                         "name (fourbar-poses, fourbar-pairs, three-pairs, straight-line-path)")
+                                         "name (fourbar-poses, fourbar-pairs, three-pairs, straight-line-path, seven-points-path)")
     synthesize.add_argument("--out", metavar="DIR", help="write each mechanism's scene file into DIR")
     synthesize.add_argument("--plot", metavar="FILE",
                             help="draw the solutions with the poses or points (.png/.svg/.pdf)")
@@ -100,6 +100,12 @@ def report_synthesis(d: Document) -> str:
                   f"  circle-point curve: {_shown(d['circle_curve'])} = 0",
                   "four poses: a one-parameter family of dyads (five poses give the Burmester pairs)"]
         return "\n".join(lines)
+    if "size" in d:
+        size = d["size"]
+        lines.append(f"  system: {size['equations']} equations in {size['unknowns']} unknowns ({size['points']} points); "
+                     f"the first five points' eliminant: degree {size['eliminant_degree']} in t1, "
+                     f"{size['eliminant_terms']} terms, {size['eliminant_bits']}-bit coefficients, "
+                     f"{size['five_point_solutions']} solutions")
     for k, pair in enumerate(d.get("burmester", []), 1):
         lines.append(f"  Burmester pair {k}: centre ({', '.join(pair['centre'])}), "
                      f"circle point ({', '.join(pair['circle'])})")
@@ -118,7 +124,7 @@ def report_synthesis(d: Document) -> str:
         lines.append(f"  {m['scene']}: {m['grashof'] or 'not a four-bar class'}"
                      + (f", transmission {span[0]:.1f}-{span[1]:.1f} deg" if span else "") + f"; {verdict}")
     for left in d.get("excluded", []):
-        what = f"the roots of {left['factor']}" if "factor" in left else \
+        what = f"the roots of {_shown(left['factor'])}" if "factor" in left else \
             f"{left['complex_count']} solution(s), {left['real_count']} real"
         lines.append(f"  left out: {what}: {left['reason']}")
     lines += [f"wrote {path}" for path in d.get("written", [])]
@@ -137,7 +143,7 @@ def _counts(d: Document) -> str:
     if "complex_count" not in d:
         return ""
     real = d.get("real_count", len(d.get("burmester", d.get("solutions", []))))
-    return f", {d['complex_count']} complex solutions, {real} real"
+    return f", {d['complex_count']} complex solution{'s' * (d['complex_count'] != 1)}, {real} real"
 
 
 COMMANDS: dict[str, Command] = {"synthesize": _cmd_synthesize}
