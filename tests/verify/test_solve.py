@@ -1,10 +1,16 @@
-"""algkin.verify.solve: a block's Jacobian is the one sympy's matrices give, expression for expression."""
+"""algkin.verify.solve: a block's Jacobian is the one sympy's matrices give, expression for expression; a
+block in one unknown solved without numpy.ma."""
+
+import subprocess
+import sys
 
 import sympy
 from hypothesis import given, settings, strategies as st
 
 from algkin.system import symbol
 from algkin.verify.solve import derivative, jacobian
+
+from ..processes import ENV
 
 x, y, c = symbol("x"), symbol("y"), symbol("c")
 LEAVES = st.sampled_from([x, y, c, sympy.Symbol("x")]) | st.fractions(-7, 7, max_denominator=5).map(sympy.Rational)
@@ -32,3 +38,15 @@ def test_a_jacobian_is_the_matrix_jacobian_row_by_row(equations):
     unknowns = [x, y][:len(equations)] or [x]
     assert [sympy.srepr(e) for e in jacobian(equations, unknowns)] == \
         [sympy.srepr(e) for e in sympy.Matrix(equations).jacobian(unknowns)]
+
+
+def test_a_block_in_one_unknown_is_solved_without_loading_numpy_ma():
+    # np.unique loads numpy.ma on first use: 10 ms of a cold curve's verification
+    code = ("import sys; import numpy as np; from algkin.system import System, symbol;"
+            "from algkin.verify.solve import blocks_of, solve_floats; x, c = symbol('x'), symbol('c');"
+            "system = System(('x',), (), {'t': ('c', 's')}, (x**2 - c - 2,));"
+            "found = solve_floats(blocks_of(system), {'c': np.array([0.0, 2.0]), 's': np.array([1.0, 0.0])},"
+            " np.random.default_rng(0));"
+            "print(sorted(found.values['x'].round(12).tolist()), 'numpy.ma' in sys.modules)")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120, env=ENV)
+    assert done.stdout.splitlines()[-1] == "[-2.0, -1.414213562373, 1.414213562373, 2.0] False", done.stderr[-300:]
