@@ -226,7 +226,8 @@ def exact_pair(scale: AngleScale, value: sympy.Expr | None, best: CriticalPoint)
 
 
 def _equal(expr: sympy.Expr, value: mpmath.mpf) -> bool:
-    number = complex(sympy.N(expr, DIGITS))
+    # a rational's float directly (most extremes of a design are at a turn's end: rational)
+    number = complex(float(expr)) if expr.is_Rational else complex(sympy.N(expr, DIGITS))
     return abs(number.imag) < 1e-20 and abs(number.real - float(value)) <= 1e-12 * (1 + abs(float(value)))
 
 

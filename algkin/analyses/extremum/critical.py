@@ -184,9 +184,11 @@ def points_in(problem: Problem, stationary: Sequence[Polynomial], meeting: Seque
             middle = mpmath.mpf(ball.mid().str(DIGITS, radius=False))
             for turn in problem.line.turns:
                 degrees = middle + turn
-                if lo <= degrees <= hi and _is_stationary(problem, degrees) and not _seen(found, degrees):
-                    found.append(CriticalPoint(degrees, problem.value(degrees), _kind(problem, degrees),
-                                               ball + turn))
+                if not lo <= degrees <= hi or _seen(found, degrees):
+                    continue
+                here = problem.value(degrees)
+                if _is_stationary(problem, degrees, here):
+                    found.append(CriticalPoint(degrees, here, _kind(problem, degrees, here), ball + turn))
         found += _dead_centres(problem, meeting, lo, hi, found)
         ends = [CriticalPoint(mpmath.mpf(x), problem.value(mpmath.mpf(x)), "endpoint") for x in (lo, hi)]
     return sorted(found, key=lambda p: p.input_deg) + ends
@@ -259,15 +261,16 @@ def _seen(found: Sequence[CriticalPoint], degrees: mpmath.mpf) -> bool:
     return any(abs(p.input_deg - degrees) < mpmath.mpf(10) ** (-DIGITS // 2) for p in found)
 
 
-def _is_stationary(problem: Problem, degrees: mpmath.mpf) -> bool:
+def _is_stationary(problem: Problem, degrees: mpmath.mpf, here: mpmath.mpf) -> bool:
+    """Whether the output's slope at ``degrees`` (its value there ``here``) is zero to rounding."""
     step = mpmath.mpf(10) ** -12
     slope = (problem.value(degrees + step) - problem.value(degrees - step)) / (2 * step)
-    return abs(slope) <= mpmath.mpf(10) ** -9 * (1 + abs(problem.value(degrees)))
+    return abs(slope) <= mpmath.mpf(10) ** -9 * (1 + abs(here))
 
 
-def _kind(problem: Problem, degrees: mpmath.mpf) -> str:
+def _kind(problem: Problem, degrees: mpmath.mpf, here: mpmath.mpf) -> str:
     step = mpmath.mpf(10) ** -4
-    here, left, right = (problem.value(degrees + d) for d in (0, -step, step))
+    left, right = (problem.value(degrees + d) for d in (-step, step))
     if left > here and right > here:
         return "minimum"
     if left < here and right < here:
