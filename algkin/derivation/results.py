@@ -16,7 +16,7 @@ from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled
 from ..scene.implicit.algebra import Circles, reduce_exact_on_circles, reduce_on_circles
 from ..system import inputs_json
-from ..system.convert import to_sympy
+from ..system.convert import sympy_text, to_sympy
 from ..verify import Verification
 from .modes import Followed
 from .tasks import Eliminant
@@ -89,14 +89,33 @@ class Derivation:
             "inputs": inputs_json(system.inputs),
             "system": system.to_json(),
             "outputs": {n: list(v) for n, v in self.compiled.outputs.items()},
-            "eliminants": {u: str(e.polynomial) for u, e in self.eliminations.items()},
-            "eliminants_reduced": {u: str(p) for u, p in self.eliminants_reduced.items()},  # on c**2 + s**2 = 1
+            "eliminants": {u: _text(e) for u, e in self.eliminations.items()},
+            "eliminants_reduced": {u: _reduced_text(e, self.compiled.circles)  # on c**2 + s**2 = 1
+                                   for u, e in self.eliminations.items()},
             "eliminant_figures": {u: _figures(e) for u, e in self.eliminations.items()},
             "branches": [dict(b.to_json(), certified=None if c is None else [dict(i) for i in c])
                          for b, c in zip(self.branches, self.certified)],
             "verification": self.verification.to_json(),
             "timings": dict(self.timings),
         }
+
+
+def _text(elimination: Eliminant) -> str:
+    """``str(elimination.polynomial)``, written from python-flint on the flint backend
+    (``sympy_text``): no sympy expression built and printed (milliseconds of a cold command)."""
+    if elimination.backend != "flint":
+        return str(elimination.polynomial)
+    exact = elimination.exact[0]
+    return sympy_text(exact, exact.context())
+
+
+def _reduced_text(elimination: Eliminant, circles: Circles) -> str:
+    """``str(_reduced(elimination, circles))``, written from python-flint where it reduced there."""
+    exact = elimination.exact[0]
+    reduced = reduce_exact_on_circles(exact, circles)
+    if reduced is None:
+        return str(reduce_on_circles(elimination.polynomial, circles))
+    return sympy_text(reduced, exact.context())
 
 
 def _reduced(elimination: Eliminant, circles: Circles) -> sympy.Expr:

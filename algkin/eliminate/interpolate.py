@@ -58,7 +58,6 @@ from typing import Any, TypeVar, cast
 import flint
 
 from ..errors import ComputationError
-from ..runtime.child import can_fork, forked
 from .backends import FlintBackend
 from .linear import linear_elimination
 from .methods import prepare
@@ -313,6 +312,8 @@ def _both(work: Callable[..., _T], here: tuple[Any, ...], there: tuple[Any, ...]
     """``(work(*here), work(*there))``, the second in a forked child while the first runs here;
     both here where this process cannot fork (a daemonic one, such as a bench measurement's
     or a budget's). The child's error is raised here; the child is always reaped."""
+    from ..runtime.child import can_fork, forked  # here: multiprocessing's imports are no small command's
+
     if not can_fork():
         return work(*here), work(*there)
     with forked(lambda tell: work(*there)) as child:

@@ -56,7 +56,8 @@ def compile_program(exprs: Iterable[sympy.Expr], names: Iterable[str], kind: Num
     """A function of the values of ``names`` (in order) returning ``exprs``' values, as a list.
 
     Compiled once per ``(exprs, names, kind)`` and cached: a second verification of the same
-    scene reuses it.
+    scene reuses it. Compiled when it is first called: a program kept for a case that does not
+    come (a block's Newton iteration where its pencil solves it) costs no ``cse``.
     """
     # lru_cache's wrapper of a generic function returns Any: the type said here
     program: _Program[N] = _cached(tuple(sympy.sympify(e) for e in exprs), tuple(names), kind)
@@ -64,6 +65,23 @@ def compile_program(exprs: Iterable[sympy.Expr], names: Iterable[str], kind: Num
 
 
 class _Program(Generic[N]):
+    """A program compiled on its first call (``_Code`` writes it)."""
+
+    def __init__(self, exprs: tuple[sympy.Expr, ...], names: tuple[str, ...], kind: NumberKind[N]) -> None:
+        self.source = (exprs, names, kind)
+
+    def __call__(self, *values: N) -> list[N | int]:
+        return self.program(*values)
+
+    @functools.cached_property
+    def program(self) -> CompiledProgram[N]:
+        # written whole before it is kept: two threads calling first each write one, alike
+        return _Code(*self.source).program
+
+
+class _Code(Generic[N]):
+    """The straight-line Python of ``exprs`` in ``names``, and the rationals it makes in ``kind``."""
+
     def __init__(self, exprs: tuple[sympy.Expr, ...], names: tuple[str, ...], kind: NumberKind[N]) -> None:
         self.kind = kind
         self.rationals: list[tuple[int, int]] = []
@@ -83,9 +101,6 @@ class _Program(Generic[N]):
         exec(compile("\n".join(lines), "<algkin program>", "exec"), scope)  # noqa: S102 - our own code, from a sympy tree
         self.program: CompiledProgram[N] = scope["program"]  # exec's namespace holds what the code defined
         self._made: tuple[int | None, list[N]] = (None, [])
-
-    def __call__(self, *values: N) -> list[N | int]:
-        return self.program(*values)
 
     def _constants(self) -> list[N]:
         """The rationals in the kind, remade when the working precision changed (balls' precision;

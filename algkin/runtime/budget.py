@@ -43,15 +43,17 @@ algkin.errors.UsageError: max_seconds=10000000000.0: must be a positive number o
 
 import time
 from collections.abc import Callable
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import attrs
 
 from ..errors import BudgetExceeded, UsageError
 from . import progress
-from .child import Tell, TimeUp, bind_to_parent, forked
 
-__all__ = ["Budget", "Deadline", "started", "bind_to_parent", "time_budget", "MAX_SECONDS"]
+if TYPE_CHECKING:  # the child (multiprocessing: milliseconds of imports) is loaded by a timed run only
+    from .child import Tell
+
+__all__ = ["Budget", "Deadline", "started", "time_budget", "MAX_SECONDS"]
 
 MAX_SECONDS = 7 * 24 * 3600  # a week
 
@@ -126,7 +128,7 @@ class Deadline:
     budget: Budget = attrs.field(on_setattr=attrs.setters.frozen)
     begun: float = attrs.field(on_setattr=attrs.setters.frozen)
     doing: str = "computing"
-    _tell: Tell | None = attrs.field(default=None, init=False)  # in its child process: to the parent
+    _tell: "Tell | None" = attrs.field(default=None, init=False)  # in its child process: to the parent
 
     def left(self) -> float | None:
         """The seconds left before the deadline (None: no time budget); zero or less once it has passed."""
@@ -153,6 +155,8 @@ class Deadline:
         seconds, clock = self.budget.seconds, self.budget.clock
         if seconds is None or self._tell is not None:
             return function()
+        from .child import TimeUp, forked
+
         with forked(lambda tell: self._within(function, tell), shows_progress=True) as child:
             try:
                 return child.answer(left=lambda: self.begun + seconds - clock(), heard=self._heard)
@@ -161,7 +165,7 @@ class Deadline:
                 raise BudgetExceeded(f"max_seconds={seconds:g}: stopped after {elapsed:.2f} s "
                                      f"while {self.doing}") from None
 
-    def _within(self, function: Callable[[], T], tell: Tell) -> T:
+    def _within(self, function: Callable[[], T], tell: "Tell") -> T:
         """In the child: ``function()``, this deadline's notes told to the parent."""
         self._tell = tell
         return function()

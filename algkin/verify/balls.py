@@ -39,6 +39,7 @@ from ..evaluate import ARB
 from ..evaluate.program import BallProgram, compile_program
 from ..system import symbol
 from .pencil import Pencil
+from .solve import jacobian
 
 __all__ = ["BlockCertifier", "certifier_of", "certify_parameters"]
 
@@ -66,8 +67,7 @@ class BlockCertifier:
         self.n = len(names)
         self.linear = all(sympy.Poly(eq, *unknowns).total_degree() <= 1 for eq in equations)
         self.residual: BallProgram = compile_program(list(equations), arguments, ARB)
-        jacobian = list(sympy.Matrix(list(equations)).jacobian(unknowns))
-        self.jacobian: BallProgram = compile_program(jacobian, arguments, ARB)
+        self.jacobian: BallProgram = compile_program(jacobian(list(equations), unknowns), arguments, ARB)
         self.identity = arb_mat([[int(i == j) for j in range(self.n)] for i in range(self.n)])
         self.explicit = _explicit(equations, unknowns, parameters)
         self.pencil = Pencil.of(equations, unknowns, list(parameters))

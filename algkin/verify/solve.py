@@ -94,10 +94,45 @@ class _Block:
             self.coefficients: ArrayProgram | None = compile_program(coefficients, arguments, NUMPY)
         else:
             self.coefficients = None
-            jacobian = sympy.Matrix(equations).jacobian(unknowns)
             self.residual: ArrayProgram = compile_program(equations, arguments, NUMPY)
-            self.jacobian: ArrayProgram = compile_program(list(jacobian), arguments, NUMPY)
+            self.jacobian: ArrayProgram = compile_program(jacobian(equations, unknowns), arguments, NUMPY)
             self.pencil = Pencil.of(equations, unknowns, [a for a in arguments if a not in names])
+
+
+def jacobian(equations: list[sympy.Expr], unknowns: list[sympy.Symbol]) -> list[sympy.Expr]:
+    """The Jacobian of ``equations`` in ``unknowns``, row by row: the expressions of
+    ``list(sympy.Matrix(equations).jacobian(unknowns))``, each ``derivative``'s.
+
+    >>> from algkin.system import symbol
+    >>> x, y = symbol("x"), symbol("y")
+    >>> jacobian([x**2 + y**2 - 4, x - 3*y], [x, y])
+    [2*x, 2*y, 1, -3]
+    """
+    return [derivative(eq, u) for eq in equations for u in unknowns]
+
+
+def derivative(expr: sympy.Expr, u: sympy.Symbol) -> sympy.Expr:
+    """``expr.diff(u)``, the same expression, built by the rules sympy's ``diff`` applies to sums,
+    products and integer powers, without its ``Derivative`` at every node (most of a cold
+    process's Jacobians: its assumptions are asked of every subexpression).
+
+    >>> from algkin.system import symbol
+    >>> x, c = symbol("x"), symbol("c")
+    >>> derivative((x - c)**2 + 3*c*x**3 - 1, x)
+    9*c*x**2 - 2*c + 2*x
+    """
+    if u not in expr.free_symbols:
+        return sympy.S.Zero
+    if expr == u:
+        return sympy.S.One
+    if expr.is_Add:
+        return sympy.Add(*[derivative(a, u) for a in expr.args])
+    if expr.is_Mul:  # sympy's Leibniz rule: one factor differentiated in each term
+        factors = expr.args
+        return sympy.Add(*[sympy.Mul(*factors[:k], derivative(f, u), *factors[k + 1:]) for k, f in enumerate(factors)])
+    if expr.is_Pow and expr.exp.is_Integer:  # sympy's b**e * (b' * e / b): its log(b) term is zero
+        return expr * (derivative(expr.base, u) * expr.exp / expr.base)
+    return expr.diff(u)
 
 
 @functools.lru_cache(maxsize=64)
@@ -186,7 +221,7 @@ def _univariate(block: _Block, values: Mapping[str, Floats]) -> tuple[Rows, dict
     nonzero = np.abs(coeffs) > 1e-14 * largest[:, None]
     lead = np.where(nonzero.any(axis=1), nonzero.argmax(axis=1), coeffs.shape[1])
     parents, roots = [], []
-    for first in np.unique(lead):
+    for first in sorted(set(lead.tolist())):  # np.unique's: it would load numpy.ma, 10 ms of a cold command
         rows = np.flatnonzero(lead == first)
         degree = coeffs.shape[1] - 1 - first
         if degree < 1:

@@ -62,3 +62,19 @@ def test_derive_text_shows_the_reduced_eliminant_and_says_so(tmp_path):
                           capture_output=True, text=True, check=True, cwd=tmp_path).stdout
     assert "reduced on each input's circle c**2 + s**2 = 1" in text
     assert "AB: AB**2 + 56000*c_theta + 280000*s_theta - 288900\n" in text
+
+
+@pytest.mark.parametrize("options", [{"backend": "sympy"}, {"params": ["a", "d"]}, {"set": {"l": "7/3"}}])
+def test_the_documents_eliminants_are_the_sympy_forms_written_whatever_the_backend_or_dimensions(options):
+    # written from python-flint on the flint backend (no sympy form built): the text sympy writes
+    result = algkin.derive("fourbar", samples=0, **options)
+    document = result.to_json()
+    assert document["eliminants"] == {u: str(e.polynomial) for u, e in result.eliminations.items()}
+    assert document["eliminants_reduced"] == {u: str(p) for u, p in result.eliminants_reduced.items()}
+
+
+def test_the_document_of_a_flint_derivation_builds_no_sympy_eliminant():
+    # printing the sympy forms was milliseconds of a cold command: the text comes from python-flint
+    result = algkin.derive("chebyshev-lambda", outputs=["B"])
+    result.to_json()
+    assert all("polynomial" not in vars(e) for e in result.eliminations.values())

@@ -38,3 +38,16 @@ def test_balls_enclose_the_exact_value_at_the_callers_precision():
 def test_an_even_power_of_a_ball_around_zero_stays_finite():
     value = compile_program([x**2 + 4], ["x"], ARB)(flint.arb(0, 1e-30))[0]
     assert value.is_finite() and value.contains(4)
+
+
+def test_a_program_is_compiled_at_its_first_call_and_once(monkeypatch):
+    # a program kept for a case that never comes (a block's Newton iteration where its pencil
+    # solves it) costs a cold command no cse
+    written = []
+    cse = sympy.cse
+    monkeypatch.setattr(sympy, "cse", lambda *args, **options: written.append(args) or cse(*args, **options))
+    z = sympy.Symbol("z_first_call", real=True)  # an expression no other test compiled (the cache)
+    program = compile_program([(z + 1)**2 / 4, sympy.sqrt(z + 1)], ["z_first_call"], FLOAT)
+    assert written == []
+    assert program(3.0) == [4.0, 2.0] and program(8.0) == [20.25, 3.0]
+    assert len(written) == 1

@@ -20,9 +20,11 @@ from __future__ import annotations
 
 import argparse
 import functools
+import gc
+import importlib
 import json
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING
 
 from ...errors import AlgkinError, BudgetExceeded, SceneError, UsageError
@@ -35,6 +37,10 @@ if TYPE_CHECKING:  # loaded when a command runs, after the signal handlers
 __all__ = ["main", "usage", "build_parser", "terminal_safe"]
 
 _ERROR_KINDS = ((UsageError, "usage"), (SceneError, "scene"), (BudgetExceeded, "budget"))
+# Most of a computing command's imports, loaded before it runs (``_with_algebra``); ``list`` needs none.
+# numpy loads numpy.random on first use: there, it was 9 ms of the first verification's stage.
+ALGEBRA = ("sympy", "numpy", "numpy.random", "flint")
+NO_ALGEBRA = frozenset({"list"})
 
 
 def __getattr__(name: str) -> object:
@@ -111,7 +117,27 @@ def _run(args: argparse.Namespace) -> Outcome:
 
     args.deadline = Budget(seconds=getattr(args, "max_seconds", None), terms=getattr(args, "max_terms", None)).start()
     args.deadline.note(f"starting {args.command}")  # until the command says more (its imports come first)
-    return args.deadline.run(functools.partial(COMMANDS[args.command], args))
+    work = functools.partial(COMMANDS[args.command], args)
+    return args.deadline.run(work if args.command in NO_ALGEBRA else functools.partial(_with_algebra, work))
+
+
+def _with_algebra(work: Callable[[], Outcome]) -> Outcome:
+    """``work()`` once the algebra it computes with (``ALGEBRA``) is imported, with the cyclic garbage
+    collector paused meanwhile and what was loaded then frozen out of its later collections
+    (``gc.freeze``): walking sympy's hundreds of thousands of objects again and again took about a
+    tenth of a cold command's wall time. Nothing to do where they are loaded already (in-process)."""
+    if all(name in sys.modules for name in ALGEBRA):
+        return work()
+    collecting = gc.isenabled()
+    gc.disable()
+    try:
+        for name in ALGEBRA:
+            importlib.import_module(name)
+        gc.freeze()
+    finally:
+        if collecting:
+            gc.enable()
+    return work()
 
 
 def _save(files: Sequence[File] = ()) -> None:

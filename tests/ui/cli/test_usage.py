@@ -112,6 +112,27 @@ def test_list_imports_no_algebra(tmp_path):
     assert done.stdout.splitlines()[-1] == "[] 0", done.stdout[-300:]
 
 
+def test_a_computing_command_loads_the_algebra_first_and_freezes_it_out_of_the_collections(tmp_path):
+    # walking sympy's objects in every collection of the garbage collector was a tenth of a cold
+    # command: they are loaded with the collector paused, then frozen (and the collector is back on)
+    code = ("import gc, io, contextlib; from algkin.ui.cli import main; before = gc.get_freeze_count()\n"
+            "with contextlib.redirect_stdout(io.StringIO()):\n"
+            "    code = main(['derive', 'chebyshev-lambda', '--outputs', 'B'])\n"
+            "print(before, gc.get_freeze_count() > 10**4, gc.isenabled(), code)")
+    done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True, timeout=120,
+                          env=dict(os.environ, PYTHONPATH=str(ROOT)))
+    assert done.stdout.splitlines()[-1] == "0 True True 0", done.stderr[-300:]
+
+
+def test_the_random_samples_module_is_loaded_with_the_algebra_not_in_the_verification(tmp_path):
+    # numpy loads numpy.random on first use: 9 ms of the first verification's stage, timed as its work
+    code = ("import sys; from algkin.ui.cli import _with_algebra;"
+            "print(_with_algebra(lambda: 'numpy.random' in sys.modules))")
+    done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True, timeout=120,
+                          env=dict(os.environ, PYTHONPATH=str(ROOT)))
+    assert done.stdout.splitlines()[-1] == "True", done.stderr[-300:]
+
+
 def test_list_json_has_both_catalog_scenes(runs):
     document = good_json(runs, "list")
     names = {scene["name"] for scene in document["scenes"]}
