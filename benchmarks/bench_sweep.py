@@ -10,8 +10,9 @@ Three measurements, each from this one run:
    datasets are asserted equal apart from their timing columns, and the designs a second of
    each and their ratio printed.
 2. **Workers.** The same sweep on a Dask LocalCluster of 1 worker and of 2, each cluster
-   started and algkin imported in each worker before its clock starts (each worker still works
-   out the family itself, as on a cluster): designs a second and the ratio of 2 workers to 1.
+   started and algkin imported in each worker before its clock starts (as in this process before
+   the serial runs; each worker still works out the family itself, as on a cluster): designs a
+   second and the ratio of 2 workers to 1.
    Both datasets equal the serial one.
 3. **An atlas** of 10,000 four-bars (``--no-atlas`` skips it): coupler curves with their real
    singular points (``curve,singular,grashof``) over ``a``, ``l``, ``m`` and the coupler point
@@ -70,6 +71,7 @@ def main():
     n = args.count_per_axis
     grid = [f"a=1/2:2:{n}", f"l=2:5:{n}", f"m=2:5:{n}"]
     load = os.getloadavg()[0]
+    importlib.import_module("algkin.sweep.family")  # here as in each worker: imported before any clock starts
     with tempfile.TemporaryDirectory() as scratch:
         folder = lambda name: os.path.join(scratch, name)  # noqa: E731
         shared_s, shared = timed(folder("shared"), grid, FOURBARS, executor="serial")
