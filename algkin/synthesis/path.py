@@ -223,7 +223,11 @@ def path_synthesis(points: Sequence[Point], *, crank_pivot: Point, rocker_pivot:
     _validate(points, crank_pivot, rocker_pivot, more=True)
     if len(points) == 5:
         return five_point_path(points, crank_pivot=crank_pivot, rocker_pivot=rocker_pivot, bits=bits)
-    best = _best(points[:5], crank_pivot, rocker_pivot)
+    try:
+        best = _best(points[:5], crank_pivot, rocker_pivot)
+    except ComputationError as err:  # the first five alone are special: other five first may not be
+        raise ComputationError(f"the first five points: {err}; give the points in another order "
+                               "(the first five are solved, the others decided)") from None
     kept, excluded = [], list(best.excluded)
     for factor, multiplicity in zip(best.factors, best.multiplicities):
         missed = _first_missed(factor, best.chain, points, (crank_pivot, rocker_pivot))

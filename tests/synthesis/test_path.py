@@ -368,6 +368,18 @@ def test_a_sixth_point_where_the_dyads_conditions_are_dependent_is_decided(sixth
             assert abs(arm - link) > 1e-6
 
 
+def test_special_first_five_points_say_that_another_order_may_do() -> None:
+    """Two of the first five points at one distance from a pivot (its dyad's row between them
+    vanishes at one turn: every arm satisfies it) make the five-point problem special; past five
+    points the user can put others first, and is told so on the one line."""
+    known = _known_fourbar(count=6)
+    points = [(_fmpq(x), _fmpq(y)) for x, y in known.points]
+    mirrored = (points[0][0], -points[0][1])  # as far from both pivots, on the x axis, as the first point
+    with pytest.raises(ComputationError) as error:
+        path_synthesis([points[0], mirrored] + points[1:], **KNOWN_PIVOTS)
+    assert "give the points in another order" in str(error.value) and "\n" not in str(error.value)
+
+
 @pytest.mark.parametrize(("points", "says"), [
     (GENERIC[:4], "at least five points"),
     (GENERIC + [GENERIC[2]], "points 2 and 5 are equal"),
