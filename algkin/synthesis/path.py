@@ -223,7 +223,11 @@ def path_synthesis(points: Sequence[Point], *, crank_pivot: Point, rocker_pivot:
     _validate(points, crank_pivot, rocker_pivot, more=True)
     if len(points) == 5:
         return five_point_path(points, crank_pivot=crank_pivot, rocker_pivot=rocker_pivot, bits=bits)
-    best = _best(points[:5], crank_pivot, rocker_pivot)
+    try:
+        best = _best(points[:5], crank_pivot, rocker_pivot)
+    except ComputationError as err:  # the first five alone are special: other five first may not be
+        raise ComputationError(f"the first five points: {err}; give the points in another order "
+                               "(the first five are solved, the others decided)") from None
     kept, excluded = [], list(best.excluded)
     for factor, multiplicity in zip(best.factors, best.multiplicities):
         missed = _first_missed(factor, best.chain, points, (crank_pivot, rocker_pivot))
@@ -576,21 +580,27 @@ def _lift(modulus: flint.fmpq_poly, chain: _Chain, equations: list[flint.fmpq_mp
 R = TypeVar("R", _Residue[flint.nmod_poly], _Residue[flint.fmpq_poly])
 
 
+def _conditions(values: dict[str, E], point: Point, first: Point, pivots: tuple[Point, Point],
+                number: Callable[[flint.fmpq], E]) -> list[tuple[E, E, E]]:
+    """Each dyad's condition that the coupler point is at ``point``: its row (``_row``, its ``z``
+    known from the lift's ``values``) as ``alpha cos + beta sin + gamma = 0`` in that turn."""
+    rows = []
+    for pivot, name in zip(pivots, "ab"):
+        (dx, dy), (ex, ey) = _minus(point, pivot), _minus(first, pivot)
+        x, y = values[f"x{name}"], values[f"y{name}"]
+        rows.append((number(dx) * x + number(dy) * y, number(dy) * x - number(dx) * y,
+                     number((dx * dx + dy * dy - ex * ex - ey * ey) / 2) - number(ex) * x - number(ey) * y))
+    return rows
+
+
 def _further_turns(values: dict[str, E], points: Sequence[Point], pivots: tuple[Point, Point],
                    number: Callable[[flint.fmpq], E], invertible: Callable[[E], bool]) -> dict[str, E]:
     """``cos, sin`` of ``theta_j`` for each point past the fifth (``c5, s5``, ...), given the lift's
-    ``values``: each dyad's row at ``P_j`` is ``alpha cos + beta sin + gamma = 0`` (``_row``, its
-    ``z`` known), two rows solved by Cramer's rule. A _NoLift where their determinant is not
-    shown invertible (the two rows dependent at that point)."""
+    ``values``: the two dyads' ``_conditions`` solved by Cramer's rule. A _NoLift where their
+    determinant is not shown invertible (the two rows dependent at that point)."""
     found: dict[str, E] = {}
     for j in range(5, len(points)):
-        rows = []
-        for pivot, name in zip(pivots, "ab"):
-            (dx, dy), (ex, ey) = _minus(points[j], pivot), _minus(points[0], pivot)
-            x, y = values[f"x{name}"], values[f"y{name}"]
-            rows.append((number(dx) * x + number(dy) * y, number(dy) * x - number(dx) * y,
-                         number((dx * dx + dy * dy - ex * ex - ey * ey) / 2) - number(ex) * x - number(ey) * y))
-        (alpha, beta, gamma), (alpha2, beta2, gamma2) = rows
+        (alpha, beta, gamma), (alpha2, beta2, gamma2) = _conditions(values, points[j], points[0], pivots, number)
         determinant = alpha * beta2 - alpha2 * beta
         if not invertible(determinant):
             raise _NoLift(f"the two dyads' conditions at point {j} are dependent")
@@ -602,9 +612,9 @@ def _further_turns(values: dict[str, E], points: Sequence[Point], pivots: tuple[
 def _first_missed(modulus: flint.fmpq_poly, chain: _Chain, points: Sequence[Point],
                   pivots: tuple[Point, Point]) -> int | None:
     """The first point past the fifth that the roots of the solution factor ``modulus`` miss, None
-    where they reach every one: ``cos**2 + sin**2 - 1`` of each further turn, zero or not in the
-    factor's field. A residue nonzero modulo ``PRIME`` is nonzero over QQ (a proof of a miss);
-    a zero there proves nothing, and is decided exactly over QQ."""
+    where they reach every one (``_misses``), decided in the factor's field. A residue nonzero
+    modulo ``PRIME`` is nonzero over QQ (a proof of a miss); a zero there proves nothing, and is
+    decided exactly over QQ."""
     image = _image(modulus)
     if image is not None:
         try:
@@ -616,20 +626,33 @@ def _first_missed(modulus: flint.fmpq_poly, chain: _Chain, points: Sequence[Poin
             pass  # the prime may see a zero that QQ does not: decided exactly
     try:
         missed = _misses(chain, points, pivots, _Residue(flint.fmpq_poly([0, 1]) % modulus, modulus),
-                         lambda c: _Residue(flint.fmpq_poly([c]), modulus))
+                         lambda c: _Residue(flint.fmpq_poly([c]), modulus), exact=True)
     except _NoLift as why:  # a field: what is not invertible is zero
         raise ComputationError(f"{why} for a solution through the first five points: the data are special") from None
     return missed[0] if missed else None
 
 
 def _misses(chain: _Chain, points: Sequence[Point], pivots: tuple[Point, Point], t1: R,
-            number: Callable[[flint.fmpq], R]) -> list[int]:
-    """The points past the fifth not reached at ``t1`` (a residue), in order."""
+            number: Callable[[flint.fmpq], R], *, exact: bool = False) -> list[int]:
+    """The points past the fifth not reached at ``t1`` (a residue), in order. The two dyads'
+    ``_conditions`` are lines in ``(cos, sin)`` meeting at ``(x/w, y/w)`` (their cross product; ``w``
+    zero where they are parallel): the point is reached where that is on the circle,
+    ``x**2 + y**2 - w**2 = 0``, a residue nonzero modulo a prime being nonzero over QQ. With ``w``
+    zero (``exact``: in a field) it is missed where ``(x, y)`` is not zero (the lines apart: a pivot
+    among such points), and a _NoLift where the lines are one (every turn on it reaches the point)."""
     values = _values(chain, t1, number, lambda r: r.invertible())
-    turns = _further_turns(values, points, pivots, number, lambda r: r.invertible())
-    one = number(flint.fmpq(1))
-    return [j for j in range(5, len(points))
-            if not (turns[f"c{j}"] * turns[f"c{j}"] + turns[f"s{j}"] * turns[f"s{j}"] - one).value.is_zero()]
+    missed = []
+    for j in range(5, len(points)):
+        (alpha, beta, gamma), (alpha2, beta2, gamma2) = _conditions(values, points[j], points[0], pivots, number)
+        x, y, w = beta * gamma2 - gamma * beta2, gamma * alpha2 - alpha * gamma2, alpha * beta2 - beta * alpha2
+        if not (x * x + y * y - w * w).value.is_zero():
+            missed.append(j)
+        elif exact and not w.invertible():
+            if not (x.invertible() or y.invertible()):
+                raise _NoLift(f"the two dyads' conditions at point {j} are one (the point is reached at two turns "
+                              "or more: a double point of the coupler curve)")
+            missed.append(j)
+    return missed
 
 
 def _check(chain: _Chain, equations: list[flint.fmpq_mpoly], t1: R, number: Callable[[flint.fmpq], R]) -> None:

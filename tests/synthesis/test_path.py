@@ -322,6 +322,64 @@ def test_a_sixth_point_off_the_curve_is_reached_by_no_four_bar() -> None:
     assert sorted(reached)[0] < 1e-40 < sorted(reached)[1]
 
 
+def _parallel_conditions_point(known: Known) -> tuple[sympy.Expr, sympy.Expr]:
+    """A point P (not a pivot) where the known four-bar's two dyads say the same of the coupler's
+    turn up to a constant: the angle from ``P - pivot`` to the dyad's arm (joint minus coupler
+    point) is the same for both, modulo 180 degrees (their dot and cross products proportional).
+    Those points are a conic through both pivots: its second point on the diagonal through the
+    crank's pivot (the rocker's is on the horizontal, the vertical is tangent to it)."""
+    t = sympy.Symbol("t")
+    p0 = known.points[0]
+    arms = [tuple(j - q for j, q in zip(joint, p0)) for joint in (known.crank_joint, known.rocker_joint)]
+    point = (known.crank_pivot[0] + t, known.crank_pivot[1] + t)
+    d = [tuple(c - q for c, q in zip(point, pivot)) for pivot in (known.crank_pivot, known.rocker_pivot)]
+    dot = [e[0] * a[0] + e[1] * a[1] for e, a in zip(d, arms)]
+    cross = [e[0] * a[1] - e[1] * a[0] for e, a in zip(d, arms)]
+    roots = [r for r in sympy.solve(sympy.factor(dot[0] * cross[1] - dot[1] * cross[0]), t) if r != 0]
+    assert len(roots) == 1 and roots[0].is_rational
+    return point[0].subs(t, roots[0]), point[1].subs(t, roots[0])
+
+
+@pytest.mark.parametrize("sixth", ["crank pivot", "rocker pivot", "parallel conditions"])
+def test_a_sixth_point_where_the_dyads_conditions_are_dependent_is_decided(sixth: str) -> None:
+    """A sixth point where the known four-bar's two dyads' conditions on the coupler's turn are
+    dependent (a pivot; a point where they are parallel lines in (cos, sin)) but contradict each
+    other: a miss, exit-0 answer (was a ComputationError, "the data are special"). By geometry: the
+    coupler point reaches a pivot only where that dyad's arm is as long as its link; otherwise
+    ``_geometric_miss``."""
+    known = _known_fourbar(count=6)
+    points = [(_fmpq(x), _fmpq(y)) for x, y in known.points[:5]]
+    target = {"crank pivot": known.crank_pivot, "rocker pivot": known.rocker_pivot,
+              "parallel conditions": _parallel_conditions_point(known)}[sixth]
+    result = path_synthesis(points + [(_fmpq(target[0]), _fmpq(target[1]))], **KNOWN_PIVOTS)
+    assert (result.complex_count, result.real_count, result.solutions) == (0, 0, ())
+    five = five_point_path(points, **KNOWN_PIVOTS)
+    assert sum(e.degree for e in result.excluded if "miss point 5" in e.reason) == five.complex_count
+    with mpmath.workdps(50):
+        for solution in five.solutions:
+            if sixth == "parallel conditions":
+                assert _geometric_miss(solution, five, (_fmpq(target[0]), _fmpq(target[1]))) > 1e-6
+                continue
+            joint, pivot = ((solution.crank_joint, five.crank_pivot) if sixth == "crank pivot"
+                            else (solution.rocker_joint, five.rocker_pivot))
+            arm = mpmath.hypot(_mp(joint[0]) - int(points[0][0].p) / mpmath.mpf(int(points[0][0].q)),
+                               _mp(joint[1]) - int(points[0][1].p) / mpmath.mpf(int(points[0][1].q)))
+            link = mpmath.hypot(_mp(joint[0]) - int(pivot[0].p), _mp(joint[1]) - int(pivot[1].p))
+            assert abs(arm - link) > 1e-6
+
+
+def test_special_first_five_points_say_that_another_order_may_do() -> None:
+    """Two of the first five points at one distance from a pivot (its dyad's row between them
+    vanishes at one turn: every arm satisfies it) make the five-point problem special; past five
+    points the user can put others first, and is told so on the one line."""
+    known = _known_fourbar(count=6)
+    points = [(_fmpq(x), _fmpq(y)) for x, y in known.points]
+    mirrored = (points[0][0], -points[0][1])  # as far from both pivots, on the x axis, as the first point
+    with pytest.raises(ComputationError) as error:
+        path_synthesis([points[0], mirrored] + points[1:], **KNOWN_PIVOTS)
+    assert "give the points in another order" in str(error.value) and "\n" not in str(error.value)
+
+
 @pytest.mark.parametrize(("points", "says"), [
     (GENERIC[:4], "at least five points"),
     (GENERIC + [GENERIC[2]], "points 2 and 5 are equal"),
