@@ -580,32 +580,33 @@ def _lift(modulus: flint.fmpq_poly, chain: _Chain, equations: list[flint.fmpq_mp
 R = TypeVar("R", _Residue[flint.nmod_poly], _Residue[flint.fmpq_poly])
 
 
-def _conditions(values: dict[str, E], point: Point, first: Point, pivots: tuple[Point, Point],
-                number: Callable[[flint.fmpq], E]) -> list[tuple[E, E, E]]:
-    """Each dyad's condition that the coupler point is at ``point``: its row (``_row``, its ``z``
-    known from the lift's ``values``) as ``alpha cos + beta sin + gamma = 0`` in that turn."""
-    rows = []
+def _meeting(values: dict[str, E], point: Point, first: Point, pivots: tuple[Point, Point],
+             number: Callable[[flint.fmpq], E]) -> tuple[E, E, E]:
+    """Where the coupler's turn must be for its point to be at ``point``: each dyad's row there
+    (``_row``, its ``z`` known from the lift's ``values``) is a line ``alpha cos + beta sin + gamma = 0``
+    in that turn's cos and sin, and the two lines meet at ``(x/w, y/w)``, ``(x, y, w)`` their cross
+    product (``w`` zero where they are parallel)."""
+    lines = []
     for pivot, name in zip(pivots, "ab"):
         (dx, dy), (ex, ey) = _minus(point, pivot), _minus(first, pivot)
         x, y = values[f"x{name}"], values[f"y{name}"]
-        rows.append((number(dx) * x + number(dy) * y, number(dy) * x - number(dx) * y,
-                     number((dx * dx + dy * dy - ex * ex - ey * ey) / 2) - number(ex) * x - number(ey) * y))
-    return rows
+        lines.append((number(dx) * x + number(dy) * y, number(dy) * x - number(dx) * y,
+                      number((dx * dx + dy * dy - ex * ex - ey * ey) / 2) - number(ex) * x - number(ey) * y))
+    (alpha, beta, gamma), (alpha2, beta2, gamma2) = lines
+    return beta * gamma2 - gamma * beta2, gamma * alpha2 - alpha * gamma2, alpha * beta2 - beta * alpha2
 
 
 def _further_turns(values: dict[str, E], points: Sequence[Point], pivots: tuple[Point, Point],
                    number: Callable[[flint.fmpq], E], invertible: Callable[[E], bool]) -> dict[str, E]:
     """``cos, sin`` of ``theta_j`` for each point past the fifth (``c5, s5``, ...), given the lift's
-    ``values``: the two dyads' ``_conditions`` solved by Cramer's rule. A _NoLift where their
-    determinant is not shown invertible (the two rows dependent at that point)."""
+    ``values``: where the two dyads' lines meet (``_meeting``). A _NoLift where ``w`` is not shown
+    invertible (the two lines parallel at that point)."""
     found: dict[str, E] = {}
     for j in range(5, len(points)):
-        (alpha, beta, gamma), (alpha2, beta2, gamma2) = _conditions(values, points[j], points[0], pivots, number)
-        determinant = alpha * beta2 - alpha2 * beta
-        if not invertible(determinant):
+        x, y, w = _meeting(values, points[j], points[0], pivots, number)
+        if not invertible(w):
             raise _NoLift(f"the two dyads' conditions at point {j} are dependent")
-        found[f"c{j}"] = (beta * gamma2 - beta2 * gamma) / determinant
-        found[f"s{j}"] = (alpha2 * gamma - alpha * gamma2) / determinant
+        found[f"c{j}"], found[f"s{j}"] = x / w, y / w
     return found
 
 
@@ -634,17 +635,15 @@ def _first_missed(modulus: flint.fmpq_poly, chain: _Chain, points: Sequence[Poin
 
 def _misses(chain: _Chain, points: Sequence[Point], pivots: tuple[Point, Point], t1: R,
             number: Callable[[flint.fmpq], R], *, exact: bool = False) -> list[int]:
-    """The points past the fifth not reached at ``t1`` (a residue), in order. The two dyads'
-    ``_conditions`` are lines in ``(cos, sin)`` meeting at ``(x/w, y/w)`` (their cross product; ``w``
-    zero where they are parallel): the point is reached where that is on the circle,
+    """The points past the fifth not reached at ``t1`` (a residue), in order. The two dyads' lines in
+    ``(cos, sin)`` meet at ``(x/w, y/w)`` (``_meeting``): the point is reached where that is on the circle,
     ``x**2 + y**2 - w**2 = 0``, a residue nonzero modulo a prime being nonzero over QQ. With ``w``
     zero (``exact``: in a field) it is missed where ``(x, y)`` is not zero (the lines apart: a pivot
     among such points), and a _NoLift where the lines are one (every turn on it reaches the point)."""
     values = _values(chain, t1, number, lambda r: r.invertible())
     missed = []
     for j in range(5, len(points)):
-        (alpha, beta, gamma), (alpha2, beta2, gamma2) = _conditions(values, points[j], points[0], pivots, number)
-        x, y, w = beta * gamma2 - gamma * beta2, gamma * alpha2 - alpha * gamma2, alpha * beta2 - beta * alpha2
+        x, y, w = _meeting(values, points[j], points[0], pivots, number)
         if not (x * x + y * y - w * w).value.is_zero():
             missed.append(j)
         elif exact and not w.invertible():
