@@ -93,7 +93,7 @@ def measure(roots, chosen, *, repeats, scratch):
             for index, root in enumerate(roots):
                 spent, counts[root, name] = timed(root, folder(scratch, index, name, round_), sweep)
                 seconds[root, name].append(spent)
-    return {key: statistics.median(values) for key, values in seconds.items()}, counts
+    return seconds, counts
 
 
 def folder(scratch, index, name, round_=0):
@@ -129,13 +129,22 @@ def print_table(seconds, counts, designs):
 
 
 def print_against(before, after, *, same_rows):
-    """This checkout's designs a second against the other's (the ratio of their seconds), and its rows compared."""
-    print("  (designs a second: this checkout's over the other's)")
+    """This checkout's designs a second over the other's, per sweep (the ratio of the median seconds; with
+    several rounds, the range of each round's ratio beside it), and its rows compared."""
+    print("  (designs a second: this checkout's over the other's" +
+          (", the range of each round's ratio beside it)" if len(after["shared"]) > 1 else ")"))
     for name in before:
+        ratios = [earlier / later for earlier, later in zip(before[name], after[name])]
+        spread = f" ({min(ratios):.2f}-{max(ratios):.2f})" if len(ratios) > 1 else ""
         note = f"   same rows apart from timings: {'yes' if same_rows else 'NO'}" if name == "shared" else ""
-        print(f"  {LABELS[name]:30} {before[name] / after[name]:5.2f}x{note}")
-    speedups = [seconds["dask1"] / seconds["dask2"] for seconds in (before, after)]
+        print(f"  {LABELS[name]:30} {median(before, name) / median(after, name):5.2f}x{spread}{note}")
+    speedups = [median(runs, "dask1") / median(runs, "dask2") for runs in (before, after)]
     print(f"  {'2 workers over 1':30} {speedups[0]:.2f}x before, {speedups[1]:.2f}x after")
+
+
+def median(runs, name):
+    """The median seconds of the sweep ``name``'s runs."""
+    return statistics.median(runs[name])
 
 
 def parse(argv=None):
@@ -168,7 +177,7 @@ def main(argv=None):
     for root, (root_seconds, root_counts) in zip(roots, tables):
         if arguments.against:
             print(f"\nalgkin from {describe(root)}:")
-        print_table(root_seconds, root_counts, n ** 3)
+        print_table({name: median(root_seconds, name) for name in chosen}, root_counts, n ** 3)
     if arguments.against:
         print(f"\nthis checkout against {arguments.against}:")
         print_against(tables[0][0], tables[1][0], same_rows=same_rows)

@@ -1,8 +1,9 @@
 """One sweep of the catalog ``fourbar``, timed: what bench_sweep.py runs, in a fresh process, from each checkout it measures.
 
 Started with the checkout's sources first on ``sys.path`` (``checkouts.run_python``), it drives
-algkin only through its public ``algkin.sweep.sweep`` (the same call in every checkout since the
-sweeps shared their work), so that an older checkout runs it as well as this one. The family's
+algkin only through its public ``algkin.sweep.sweep`` (with ``share=False`` only for each design
+alone: ``--alone``), so that an older checkout runs it as well as this one, down to one whose
+designs shared nothing. The family's
 modules are imported before the clock starts, here and, on a Dask LocalCluster started before the
 clock too, in each worker (each worker still works out the family itself, as on a cluster). It
 prints one JSON line: the seconds, the designs by status, and the files algkin was imported from
@@ -19,8 +20,12 @@ import time
 
 
 def family_imported():
-    """The file of the algkin the family's modules were imported from (in this process or a worker)."""
-    return importlib.import_module("algkin.sweep.family").__file__
+    """The file of the algkin the family's modules were imported from (in this process or a worker); a
+    checkout older than the family, where each design is computed alone, has its design's module instead."""
+    try:
+        return importlib.import_module("algkin.sweep.family").__file__
+    except ModuleNotFoundError:
+        return importlib.import_module("algkin.sweep.design").__file__
 
 
 def timed(out, *, grid, analyses, **how):
