@@ -20,12 +20,12 @@ drops the six-bar derive).
 
 import argparse
 import json
-import os
 import statistics
 import subprocess
 import sys
 import time
-from pathlib import Path
+
+from checkouts import ROOT, add_against, describe, measured, run_python
 
 COMMANDS = [
     "derive chebyshev-lambda --outputs B",
@@ -36,16 +36,13 @@ SIX_BAR_DERIVE = "derive stephenson-iii --outputs P"
 IMPORTS = ["flint, numpy", "algkin", "sympy"]
 FLOOR = IMPORTS[0]
 IMPORTTIME_COMMAND = COMMANDS[0]
-ROOT = Path(__file__).resolve().parents[1]  # this checkout: its algkin is the one measured
 
 
 def run_command(command, root):
     """One fresh run of ``python -m algkin <command> --json`` from the sources in ``root``: its stage
     timings and its process wall time."""
-    environment = dict(os.environ, PYTHONPATH=str(root))  # and run from root: its algkin first on sys.path
     start = time.perf_counter()
-    completed = subprocess.run([sys.executable, "-m", "algkin", *command.split(), "--json"],
-                               capture_output=True, text=True, check=True, env=environment, cwd=root)
+    completed = run_python(root, ["-m", "algkin", *command.split(), "--json"])
     wall = time.perf_counter() - start
     return json.loads(completed.stdout)["timings"], wall
 
@@ -110,8 +107,7 @@ def print_imports(imports):
 
 def importtime_top(command, count=10):
     """The ``count`` imports with the largest cumulative time (us) under ``python -X importtime``."""
-    completed = subprocess.run([sys.executable, "-X", "importtime", "-m", "algkin", *command.split()],
-                               capture_output=True, text=True, check=True)
+    completed = run_python(ROOT, ["-X", "importtime", "-m", "algkin", *command.split()])
     cumulative: dict[str, int] = {}  # a module may be listed twice (a package, then again under a child)
     for line in completed.stderr.splitlines():
         if not line.startswith("import time:") or "cumulative" in line:
@@ -131,16 +127,16 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=5, help="fresh runs of each command and import (default 5)")
     parser.add_argument("--quick", action="store_true", help=f"leave out `{SIX_BAR_DERIVE}`")
-    parser.add_argument("--against", type=Path, help="another checkout's sources, run in the same rounds (before)")
+    add_against(parser)
     arguments = parser.parse_args()
     commands = COMMANDS if arguments.quick else [*COMMANDS, SIX_BAR_DERIVE]
-    roots = [ROOT] if arguments.against is None else [arguments.against.resolve(), ROOT]
+    roots = measured(arguments.against)
     runs, imports = measure(commands, roots, arguments.repeats)
     floor = statistics.median(imports[FLOOR])
     print(f"{arguments.repeats} fresh processes each; ms as median (min-max); "
           f"floor = python -c \"import {FLOOR}\" = {floor * 1e3:.0f} ms")
     for root in roots:
-        print(f"\nalgkin from {'this checkout' if root == ROOT else root}:")
+        print(f"\nalgkin from {describe(root)}:")
         print_commands(runs[root], floor)
     print_imports(imports)
     print_importtime(IMPORTTIME_COMMAND)
