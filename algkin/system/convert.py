@@ -13,16 +13,17 @@ x**4 - 2*x**2*y/3 + y**2/9
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping, Sequence
 from typing import NoReturn
 
 import flint
 import sympy
+from flint.utils.flint_exceptions import DomainError
 
 from ..evaluate import NumberKind, evaluate
 from .core import symbol
 
-__all__ = ["flint_context", "to_flint", "to_sympy", "sympy_text", "to_flint_integer", "fmpq_to_rational", "univariate"]
+__all__ = ["flint_context", "to_flint", "coefficients", "from_terms", "to_sympy", "sympy_text", "to_flint_integer", "fmpq_to_rational", "univariate"]
 
 
 def flint_context(names: Iterable[str], ordering: str = "lex") -> flint.fmpq_mpoly_ctx:
@@ -31,17 +32,58 @@ def flint_context(names: Iterable[str], ordering: str = "lex") -> flint.fmpq_mpo
 
 
 def to_flint(expr: sympy.Expr | sympy.Poly, ctx: flint.fmpq_mpoly_ctx) -> flint.fmpq_mpoly:
-    """A sympy polynomial (expression or Poly) as an ``fmpq_mpoly`` in ``ctx``.
+    """A sympy polynomial (expression or Poly) as an ``fmpq_mpoly`` in ``ctx``; TypeError where
+    ``expr`` is none (a root, an absolute value, a quotient by a polynomial).
 
     The expression tree is evaluated with flint's own arithmetic (``evaluate``): building a
     sympy ``Poly`` first costs milliseconds on a dozen generators, more than most
     eliminations.
+
+    >>> x = sympy.Symbol("x")
+    >>> to_flint(1 / x, flint_context(["x"]))
+    Traceback (most recent call last):
+    ...
+    TypeError: not a polynomial: 1/x
     """
     zero = ctx.from_dict({})
     kind = NumberKind("flint polynomial", number=lambda p, q: zero + flint.fmpq(p, q),
                       sqrt=lambda v: _not_polynomial(f"sqrt({v})"), absolute=lambda v: _not_polynomial(f"Abs({v})"))
     expr = expr.as_expr() if isinstance(expr, sympy.Poly) else expr
-    return evaluate(expr, dict(zip((str(n) for n in ctx.names()), ctx.gens())), kind)
+    try:
+        return evaluate(expr, dict(zip((str(n) for n in ctx.names()), ctx.gens())), kind)
+    except DomainError:  # python-flint's quotient that is not exact
+        _not_polynomial(str(expr))
+
+
+def coefficients(expr: sympy.Expr, gens: Sequence[sympy.Symbol]) -> dict[tuple[int, ...], sympy.Expr]:
+    """``expr`` as a polynomial in ``gens``, its coefficients polynomials with rational coefficients
+    in its other symbols: {exponents of ``gens``: coefficient}, the terms of ``sympy.Poly(expr,
+    *gens)`` (the same expressions) through python-flint, without sympy's domain construction.
+    TypeError where ``expr`` is none, or has two symbols of one name.
+
+    >>> x, y, a = sympy.symbols("x y a")
+    >>> coefficients((a * x + y) ** 2 - x / 2, [x, y])
+    {(2, 0): a**2, (1, 1): 2*a, (1, 0): -1/2, (0, 2): 1}
+    """
+    others = sorted(expr.free_symbols - set(gens), key=lambda v: v.name)
+    names = [v.name for v in [*gens, *others]]
+    if len(set(names)) != len(names):
+        raise TypeError(f"two symbols of one name in {expr}")
+    split: dict[tuple[int, ...], dict[tuple[int, ...], flint.fmpq]] = {}
+    for exponents, coefficient in to_flint(expr, flint_context(names)).to_dict().items():
+        split.setdefault(exponents[:len(gens)], {})[exponents[len(gens):]] = coefficient
+    return {exponents: from_terms(terms, others) for exponents, terms in split.items()}
+
+
+def from_terms(terms: Mapping[tuple[int, ...], flint.fmpq | flint.fmpz | int], gens: Sequence[sympy.Symbol]) -> sympy.Expr:
+    """The sum of ``terms`` ({exponents of ``gens``: rational coefficient}) as a sympy expression:
+    what ``sympy.Poly.from_dict(terms, *gens).as_expr()`` gives (the same expression), without a Poly.
+
+    >>> x, y = sympy.symbols("x y")
+    >>> from_terms({(2, 0): flint.fmpq(1, 2), (0, 1): -3}, [x, y])
+    x**2/2 - 3*y
+    """
+    return sympy.Add(*[sympy.Mul(fmpq_to_rational(c), *[g**e for g, e in zip(gens, m) if e]) for m, c in terms.items()])
 
 
 def _not_polynomial(value: str) -> NoReturn:
@@ -66,11 +108,7 @@ def fmpq_to_rational(value: flint.fmpq | flint.fmpz | int) -> sympy.Rational:
 def to_sympy(poly: flint.fmpq_mpoly | flint.fmpz_mpoly,
              ctx: flint.fmpq_mpoly_ctx | flint.fmpz_mpoly_ctx) -> sympy.Expr:
     """An ``fmpq_mpoly`` or ``fmpz_mpoly`` of ``ctx`` as a sympy expression."""
-    gens = [symbol(str(n)) for n in ctx.names()]
-    terms = {m: fmpq_to_rational(c) for m, c in poly.to_dict().items()}
-    if not terms:
-        return sympy.Integer(0)
-    return sympy.Poly.from_dict(terms, *gens, domain=sympy.QQ).as_expr()
+    return from_terms(poly.to_dict(), [symbol(str(n)) for n in ctx.names()])
 
 
 def sympy_text(poly: flint.fmpq_mpoly | flint.fmpz_mpoly, ctx: flint.fmpq_mpoly_ctx | flint.fmpz_mpoly_ctx) -> str:

@@ -38,6 +38,7 @@ from numpy.typing import NDArray
 from ..evaluate import ARB
 from ..evaluate.program import BallProgram, compile_program
 from ..system import symbol
+from ..system.convert import coefficients
 from .pencil import Pencil
 from .solve import jacobian
 
@@ -65,7 +66,7 @@ class BlockCertifier:
         unknowns = [symbol(n) for n in names]
         arguments = list(names) + list(parameters)
         self.n = len(names)
-        self.linear = all(sympy.Poly(eq, *unknowns).total_degree() <= 1 for eq in equations)
+        self.linear = all(sum(m) <= 1 for eq in equations for m in coefficients(eq, unknowns))
         self.residual: BallProgram = compile_program(list(equations), arguments, ARB)
         self.jacobian: BallProgram = compile_program(jacobian(list(equations), unknowns), arguments, ARB)
         self.identity = arb_mat([[int(i == j) for j in range(self.n)] for i in range(self.n)])
@@ -157,10 +158,11 @@ def _explicit(equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol],
     compiled, else ``None``."""
     if len(unknowns) != 1:
         return None
-    poly = sympy.Poly(equations[0], unknowns[0])
-    if poly.degree() != 1 or not poly.LC().is_number:
+    terms = coefficients(equations[0], unknowns[:1])
+    lead = terms.get((1,))
+    if max(terms) != (1,) or lead is None or not lead.is_number:
         return None
-    return compile_program([-poly.nth(0) / poly.LC()], parameters, ARB)
+    return compile_program([-terms.get((0,), sympy.Integer(0)) / lead], parameters, ARB)
 
 
 @functools.lru_cache(maxsize=256)

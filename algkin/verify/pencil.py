@@ -29,6 +29,7 @@ from numpy.typing import NDArray
 
 from ..evaluate import ARB, NUMPY
 from ..evaluate.program import ArrayProgram, BallProgram, Floats, columns, compile_program
+from ..system.convert import coefficients
 from ..system.roots import quadratic_roots
 
 __all__ = ["Pencil"]
@@ -58,10 +59,10 @@ class Pencil:
         """The pencil of a block of ``equations`` in ``unknowns``, or ``None`` where it is not one."""
         if len(equations) != 2:
             return None
-        polys = [sympy.Poly(eq, *unknowns) for eq in equations]
-        if any(p.total_degree() > 2 for p in polys):
+        polys = [coefficients(eq, unknowns) for eq in equations]
+        if any(sum(m) > 2 for p in polys for m in p):
             return None
-        quadratic = [[p.coeff_monomial(m) for m in MONOMIALS[:3]] for p in polys]
+        quadratic = [[p.get(m, sympy.Integer(0)) for m in MONOMIALS[:3]] for p in polys]
         # the combination q2 * first - q1 * second must cancel every quadratic term, with numbers
         pivot = next((k for k in range(3) if quadratic[0][k] != 0), None)
         if pivot is None or any(not sympy.sympify(q).is_number for row in quadratic for q in row):
@@ -69,9 +70,9 @@ class Pencil:
         q1, q2 = quadratic[0][pivot], quadratic[1][pivot]
         if any(sympy.simplify(q2 * a - q1 * b) != 0 for a, b in zip(*quadratic)):
             return None
-        line = sympy.Poly(sympy.expand(q2 * equations[0] - q1 * equations[1]), *unknowns)
-        return cls([polys[0].coeff_monomial(m) for m in MONOMIALS],
-                   [line.coeff_monomial(m) for m in MONOMIALS[3:]], known)
+        line = coefficients(q2 * equations[0] - q1 * equations[1], unknowns)
+        return cls([polys[0].get(m, sympy.Integer(0)) for m in MONOMIALS],
+                   [line.get(m, sympy.Integer(0)) for m in MONOMIALS[3:]], known)
 
     def solve(self, values: Mapping[str, Floats], count: int) -> tuple[NDArray[np.intp], Floats, Floats]:
         """``(parent rows, u, v)`` in floats: the real solutions of every row (a double root counts twice)."""

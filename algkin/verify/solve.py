@@ -31,6 +31,7 @@ from numpy.typing import NDArray
 from ..evaluate import NUMPY
 from ..evaluate.program import ArrayProgram, Floats, columns, compile_program
 from ..system import System, symbol
+from ..system.convert import coefficients
 from .pencil import Pencil
 
 __all__ = ["Blocks", "Candidates", "blocks_of", "solve_floats", "STARTS"]
@@ -56,7 +57,7 @@ class Blocks:
         # Coordinates are about as large as the lengths, whose squares are coefficients: Newton's
         # starts must spread over that size too, not only over the known values (cos, sin).
         self.size = max((abs(float(c)) ** 0.5 for eq in pending
-                         for c in sympy.Poly(eq, *eq.free_symbols).coeffs()), default=0.0)
+                         for c in coefficients(eq, sorted(eq.free_symbols, key=str)).values()), default=0.0)
         solved: set[str] = set()
         self.blocks: list[_Block] = []
         self.equations: list[sympy.Expr] = []
@@ -88,10 +89,12 @@ class _Block:
         arguments = self.arguments = [v for v in variables if v in used or v in names]
         unknowns = [symbol(n) for n in names]
         # Newton solves a linear block in one step from anywhere: one start is enough
-        self.linear = all(sympy.Poly(eq, *unknowns).total_degree() <= 1 for eq in equations)
+        terms = [coefficients(eq, unknowns) for eq in equations]
+        self.linear = all(sum(m) <= 1 for t in terms for m in t)
         if len(names) == 1:
-            coefficients = sympy.Poly(equations[0], unknowns[0]).all_coeffs()
-            self.coefficients: ArrayProgram | None = compile_program(coefficients, arguments, NUMPY)
+            degree = max(m[0] for m in terms[0])
+            highest_first = [terms[0].get((d,), sympy.Integer(0)) for d in range(degree, -1, -1)]
+            self.coefficients: ArrayProgram | None = compile_program(highest_first, arguments, NUMPY)
         else:
             self.coefficients = None
             self.residual: ArrayProgram = compile_program(equations, arguments, NUMPY)

@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given, strategies as st
 import sympy
 
-from algkin.system.convert import flint_context, sympy_text, to_flint, to_sympy
+from algkin.system.convert import coefficients as coefficients_of, flint_context, from_terms, sympy_text, to_flint, to_sympy
 
 NAMES = ["x", "y", "z"]
 GENS = [sympy.Symbol(n, real=True) for n in NAMES]
@@ -40,7 +40,7 @@ def test_product_matches_sympy(a, b):
 def test_a_root_or_an_absolute_value_is_no_polynomial():
     ctx = flint_context(NAMES)
     x = GENS[0]
-    for expr, shown in ((sympy.sqrt(x), "sqrt("), (sympy.Abs(x - 1), "Abs(")):
+    for expr, shown in ((sympy.sqrt(x), "sqrt("), (sympy.Abs(x - 1), "Abs("), (1 / (x + 1), "1/(x + 1)")):
         with pytest.raises(TypeError, match=rf"not a polynomial: {re.escape(shown)}"):
             to_flint(expr, ctx)
 
@@ -64,3 +64,26 @@ def test_sympy_text_keeps_sympys_exception_for_a_number_and_a_negative_multiple(
     x, y = ctx.gens()
     assert [sympy_text(p, ctx) for p in (1 - 2 * x, 1 - x * y, 2 - y**2, -x - 1)] == \
         ["1 - 2*x", "-x*y + 1", "2 - y**2", "-x - 1"]
+
+
+@given(terms)
+def test_from_terms_is_the_expression_of_sympys_poly(term_list):
+    as_dict = {exps: flint.fmpq(q.numerator, q.denominator) for q, exps in term_list}
+    as_dict = {exps: q for exps, q in as_dict.items() if q}
+    expected = sympy.Poly.from_dict({e: sympy.Rational(int(q.p), int(q.q)) for e, q in as_dict.items()}, *GENS,
+                                    domain=sympy.QQ).as_expr() if as_dict else sympy.Integer(0)
+    assert from_terms(as_dict, GENS) == expected  # the same tree, not only the same value
+
+
+@given(terms, st.integers(1, 2))
+def test_coefficients_are_sympys_polys_terms(term_list, power):
+    # a polynomial in x, y over the polynomials in z, raised to a power: unexpanded, as closed forms hold them
+    expr = sum((sympy.Rational(q.numerator, q.denominator) * sympy.Mul(*[g**e for g, e in zip(GENS, exps)])
+                for q, exps in term_list), sympy.Integer(0)) ** power
+    expected = sympy.Poly(expr, *GENS[:2]).as_dict() if expr != 0 else {}
+    assert coefficients_of(expr, GENS[:2]) == {e: sympy.sympify(c) for e, c in expected.items()}
+
+
+def test_coefficients_refuse_two_symbols_of_one_name():
+    with pytest.raises(TypeError, match="two symbols of one name"):
+        coefficients_of(GENS[0] + sympy.Symbol("x"), GENS[:1])

@@ -4,9 +4,8 @@ from collections.abc import Sequence
 
 import flint
 import sympy
-from flint.utils.flint_exceptions import DomainError
 
-from ...system.convert import to_flint
+from ...system.convert import from_terms, to_flint
 
 __all__ = ["Circles", "reduce_on_circles", "reduce_exact_on_circles"]
 
@@ -49,14 +48,12 @@ def _reduced_in_flint(expr: sympy.Expr, inputs: Circles) -> sympy.Expr | None:
     ring = flint.fmpq_mpoly_ctx.get(tuple(names), "lex")
     try:
         poly = to_flint(expr, ring)
-    except (TypeError, DomainError):  # sqrt, Abs, a function; a quotient that is not exact
+    except TypeError:  # a root, an absolute value, a quotient that is not exact
         return None
     reduced = reduce_exact_on_circles(poly, inputs)
     if reduced is None:
         return None
-    gens = [symbols[n] for n in names]
-    return sympy.Add(*[sympy.Mul(sympy.Rational(int(c.p), int(c.q)), *[g**e for g, e in zip(gens, m) if e])
-                       for m, c in reduced.to_dict().items()])
+    return from_terms(reduced.to_dict(), [symbols[n] for n in names])
 
 
 def reduce_exact_on_circles(poly: flint.fmpq_mpoly, inputs: Circles) -> flint.fmpq_mpoly | None:
