@@ -16,7 +16,7 @@ import sympy
 
 from ..errors import ComputationError
 from ..system import symbol
-from .factor import IrreducibilityProof, irreducibility_proof
+from .factor import IrreducibilityProof, irreducibility_proof, quadratic_proof
 from .protocol import BackendFactory, Term
 from ..system.convert import flint_context, to_flint, to_flint_integer, to_sympy
 
@@ -226,16 +226,21 @@ class FlintBackend(FlintMpolys[flint.fmpq_mpoly]):
 
     def irreducibility(self, poly: flint.fmpq_mpoly) -> IrreducibilityProof | None:
         # beyond three variables, specializing to one proves irreducibility faster than flint's
-        # multivariate factoring (benchmarks/bench_ideas.py). In three, about as fast: an attempt
-        # (5 us to specialize, 10 us for flint's univariate factoring of a quartic) against 26 us
-        # for the seed's connector, where the first values tried factor. In two (a curve), 5
+        # multivariate factoring (benchmarks/bench_ideas.py). In three, about as fast (an attempt:
+        # 5 us to specialize, 10 us for flint's univariate factoring of a quartic, against 26 us
+        # for the seed's connector, where the first values tried factor); but a variable of degree
+        # 2 decides by its discriminant in 10 us (the connector's B_y). In two (a curve), 5
         # against 40 us, but flint's factoring stays: its proof is what ``curve`` reports.
-        return irreducibility_proof(poly) if len(self.variables(poly)) > 3 else None
+        held = len(self.variables(poly))
+        if held > 3:
+            return irreducibility_proof(poly)
+        return quadratic_proof(poly) if held == 3 else None
 
     def specialize(self, poly: flint.fmpq_mpoly, values: Mapping[str, flint.fmpq]) -> flint.fmpq_mpoly:
         """``poly`` with the variables of ``values`` (name -> fmpq) replaced by them."""
-        # python-flint's stub takes names or indices, in a Mapping invariant in its keys
-        return poly.subs(cast("Mapping[str | int, flint.fmpq]", values))
+        # by index: python-flint looks a name up in Python (3.7 against 2.3 us for two values); its
+        # stub takes names or indices, in a Mapping invariant in its keys
+        return poly.subs(cast("Mapping[str | int, flint.fmpq]", {self.index[n]: v for n, v in values.items()}))
 
     def scale(self, poly: flint.fmpq_mpoly, numerator: int, denominator: int) -> flint.fmpq_mpoly:
         return poly * flint.fmpq(numerator, denominator)
