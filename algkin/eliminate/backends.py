@@ -7,7 +7,6 @@ expressions, and leave as sympy expressions, through ``algkin.system.convert``.
 """
 
 import functools
-import math
 from collections.abc import Mapping, Sequence, Set as AbstractSet
 from typing import Generic, Protocol, TypeVar, cast
 
@@ -257,10 +256,11 @@ class FlintBackend(FlintMpolys[flint.fmpq_mpoly]):
         """Integer coefficients with gcd 1, positive leading coefficient (lex)."""
         if poly.is_zero():
             return poly
-        coeffs = poly.coeffs()
-        lcm = math.lcm(*(c.q for c in coeffs))  # python-flint's integers are indices: no int() each
-        gcd = math.gcd(*(c.p for c in coeffs))
-        scaled = poly * flint.fmpq(lcm, gcd)
+        # the coefficients as one univariate polynomial: FLINT keeps it as an integer polynomial over
+        # their common denominator, whose content is the numerators' gcd (3 against 5.6 us for 17
+        # terms by Python's lcm and gcd of each coefficient's numerator and denominator)
+        coefficients = flint.fmpq_poly(poly.coeffs())
+        scaled = poly * flint.fmpq(coefficients.denom(), coefficients.numer().content())
         return -scaled if scaled.leading_coefficient() < 0 else scaled
 
     def groebner_lex(self, polys: Sequence[flint.fmpq_mpoly], order: Sequence[str]) -> list[flint.fmpq_mpoly]:

@@ -29,7 +29,7 @@ from ..errors import ComputationError
 from ..system.roots import real_roots
 from .protocol import Backend, P, Term
 
-__all__ = ["Witness", "Point", "WitnessGroups", "Evaluator", "select_factors", "unreal_factors", "unreal"]
+__all__ = ["Witness", "Point", "WitnessGroups", "Evaluator", "Horner", "select_factors", "unreal_factors", "unreal"]
 
 MARGIN_BITS = 64
 
@@ -67,14 +67,7 @@ class Evaluator:
     Compiled once into a straight-line program: coefficients made balls, and every product of
     powers shared by terms with the same leading exponents (in the terms' lexicographic
     order) computed once: on the Stephenson III curve, 180 products instead of the 324 of a
-    term-by-term loop. In one variable (a factor its witness's exact values left univariate),
-    Horner's rule in C instead (python-flint's ``arb_poly``): one call, where the program takes a
-    Python step a term.
-
-    >>> point = {"x": flint.arb(2).sqrt(), "y": flint.arb(3)}
-    >>> line = Evaluator([((1, 0), 1, 1), ((0, 0), -1, 1)], ("x", "y"), 128)  # x - 1, by Horner's rule
-    >>> line.horner is not None, (line(point) - point["x"] + 1).contains(0)
-    (True, True)
+    term-by-term loop.
     """
 
     def __init__(self, terms: Sequence[Term], names: Sequence[str], base_bits: int, magnitude_bits: int = 1) -> None:
@@ -107,21 +100,11 @@ class Evaluator:
             first[i], slot = slot - 1, slot + top
         self.steps = [(node, parent, first[i] + e) for node, parent, i, e in steps]
         self.size = len(nodes) + 1
-        self.horner: tuple[str, flint.arb_poly] | None = None
         with flint.ctx.workprec(self.bits):
             self.coefficients = [flint.arb(p) / q if q != 1 else flint.arb(p) for _, p, q in terms]
-            if len(self.used) == 1:
-                (i, top), = self.used
-                dense = [flint.arb(0)] * (top + 1)
-                for (exponents, _, _), coefficient in zip(terms, self.coefficients):
-                    dense[exponents[i]] = coefficient
-                self.horner = (names[i], flint.arb_poly(dense))
 
     def __call__(self, point: Point) -> flint.arb:
         with flint.ctx.workprec(self.bits):
-            if self.horner is not None:
-                name, poly = self.horner
-                return poly(point[name])
             powers = []
             for i, top in self.used:
                 value = power = point[self.names[i]]
@@ -136,6 +119,34 @@ class Evaluator:
             for coefficient, end in zip(self.coefficients, self.ends):
                 total += coefficient if end == 0 else coefficient * products[end]
             return total
+
+
+class Horner:
+    """The ball value of a polynomial in the one variable ``names[variable]`` (a factor its
+    witness's exact values left univariate), given by its ``terms`` as for ``Evaluator``, at the
+    precision ``Evaluator`` would take: by Horner's rule in C (python-flint's ``arb_poly``), one
+    call where the ``Evaluator``'s program takes a Python step a term, and no program to compile.
+
+    >>> point = {"x": flint.arb(2).sqrt(), "y": flint.arb(3)}
+    >>> line = Horner([((1, 0), 1, 1), ((0, 0), -1, 1)], ("x", "y"), 128, variable=0)  # x - 1
+    >>> line.bits, (line(point) - point["x"] + 1).contains(0)
+    (131, True)
+    """
+
+    def __init__(self, terms: Sequence[Term], names: Sequence[str], base_bits: int, magnitude_bits: int = 1, *,
+                 variable: int) -> None:
+        degree = max(exponents[variable] for exponents, _, _ in terms)
+        self.bits = base_bits + max(p.bit_length() + q.bit_length() for _, p, q in terms) + degree * magnitude_bits
+        self.name = names[variable]
+        dense = [flint.fmpq(0)] * (degree + 1)
+        for exponents, p, q in terms:
+            dense[exponents[variable]] = flint.fmpq(p, q)
+        with flint.ctx.workprec(self.bits):
+            self.poly = flint.arb_poly(dense)  # each coefficient rounded to a ball that holds it
+
+    def __call__(self, point: Point) -> flint.arb:
+        with flint.ctx.workprec(self.bits):
+            return self.poly(point[self.name])
 
 
 def unreal_factors(backend: Backend[P], factors: Sequence[P], parameters: Collection[str]
@@ -217,14 +228,17 @@ def _values(backend: Backend[P], factors: Sequence[P], groups: WitnessGroups, ba
         if exact not in assignments:  # compared, not hashed: fmpq hashes in Python
             assignments.append(exact)
         which[id(point)] = assignments.index(exact)
-    evaluators = {}
+    evaluators: dict[tuple[int, int | None], Evaluator | Horner] = {}
 
     def value(i: int, point: Point) -> flint.arb:
         fixed = {n: v for n, v in assignments[which[id(point)]].items() if n in held[i]}
         key = (i, which[id(point)] if fixed else None)
         if key not in evaluators:
             poly = backend.specialize(factors[i], fixed) if fixed else factors[i]
-            evaluators[key] = Evaluator(backend.terms(poly), backend.names, base_bits, magnitude_bits)
+            free = held[i] - fixed.keys()
+            evaluators[key] = Horner(backend.terms(poly), backend.names, base_bits, magnitude_bits,
+                                     variable=backend.names.index(next(iter(free)))) if len(free) == 1 else \
+                Evaluator(backend.terms(poly), backend.names, base_bits, magnitude_bits)
         return evaluators[key](point)
 
     return value
