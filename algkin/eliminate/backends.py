@@ -68,7 +68,8 @@ class FlintMpolys(Generic[M]):
         self._read.clear()
 
     def variables(self, poly: M) -> AbstractSet[str]:
-        return self._reading(poly)[2]
+        known = self._read.get(id(poly))  # ``_reading``'s memo first: a call less where it holds (most asks)
+        return (known if known is not None and known[0] is poly else self._reading(poly))[2]
 
     def from_flint(self, poly: flint.fmpq_mpoly) -> M:
         """``poly`` (over any names) in this backend's ring, its variables matched by name."""
@@ -103,7 +104,8 @@ class FlintMpolys(Generic[M]):
         return None
 
     def degree(self, poly: M, var: str) -> int:
-        return self._reading(poly)[1][self.index[var]]
+        known = self._read.get(id(poly))  # as ``variables``
+        return (known if known is not None and known[0] is poly else self._reading(poly))[1][self.index[var]]
 
     def is_constant(self, poly: M) -> bool:
         # flint's is_constant scans every term for the total degree; a constant has one term, of
