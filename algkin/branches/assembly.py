@@ -6,7 +6,7 @@ import numpy as np
 import sympy
 
 from ..errors import SceneError
-from ..evaluate.lambdified import numpy_function
+from ..evaluate.program import numpy_function
 from ..scene import Compiled
 from ..scene.implicit.base import FloatArray
 from ..system import input_values, symbol

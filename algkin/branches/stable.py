@@ -7,7 +7,7 @@ cannot cancel), from exact expressions with the dimensions at their defaults.
 Every input enters through one transcendental, ``t = tan(theta/2)`` (numpy's is
 vectorised and correctly rounded to within an ulp), with ``c = (1 - t**2) w``,
 ``s = 2 t w``, ``w = 1 / (1 + t**2)``; an evaluator may use ``t`` and ``w`` themselves.
-The base coordinates are compiled once (``numpy_function``, sympy's lambdify, with common subexpressions
+The base coordinates are compiled once (``numpy_function``, with common subexpressions
 shared) and the samples are run in cache-sized chunks. A length input enters as it is.
 
 >>> import numpy as np
@@ -27,7 +27,7 @@ import numpy.typing as npt
 import sympy
 
 from ..evaluate.fused import Kernel
-from ..evaluate.lambdified import numpy_function
+from ..evaluate.program import numpy_function
 from ..evaluate.trace import trace
 from ..scene import Compiled
 from ..scene.compile import resolve_outputs

@@ -4,7 +4,7 @@
 forms, discriminants and equations at thousands of points. ``compile_program`` turns a
 list of expressions (closed-form vocabulary only: sums, products, integer and half-integer
 powers, ``Abs``, rationals, named variables) into one Python function, shared
-subexpressions computed once (``sympy.cse``), for one ``NumberKind``:
+subexpressions computed once, for one ``NumberKind``:
 
 - rationals are made by the kind when the function is called, so balls get the caller's
   precision (``flint.ctx.workprec``), never a float's;
@@ -35,7 +35,7 @@ import sympy
 from .tree import ARB, FLOAT, MPMATH, NUMPY  # noqa: F401 - the kinds a program is compiled for
 from .tree import Floats, N, NumberKind, integer_power
 
-__all__ = ["compile_program", "columns", "Floats", "CompiledProgram", "ArrayProgram", "BallProgram"]
+__all__ = ["compile_program", "numpy_function", "columns", "Floats", "CompiledProgram", "ArrayProgram", "BallProgram"]
 
 # A compiled program: the values of its names in, one value out per expression (an integer
 # where the expression is one)
@@ -64,6 +64,26 @@ def compile_program(exprs: Iterable[sympy.Expr], names: Iterable[str], kind: Num
     return program
 
 
+def numpy_function(arguments: Iterable[sympy.Symbol], exprs: sympy.Expr | Iterable[sympy.Expr]) -> Callable[..., Any]:
+    """``exprs`` (one expression, or several) as a function of float arrays, one per symbol of
+    ``arguments`` in order: ``compile_program`` for ``NUMPY``, one value for one expression.
+
+    It replaced sympy's ``lambdify``, whose printing and ``cse`` were milliseconds of each cold
+    command, and which loads numpy's lazy submodules by ``from numpy import *``.
+
+    >>> x = sympy.Symbol("x")
+    >>> numpy_function([x], [sympy.sqrt(x) / 3, x**2])(np.array([4.0, 9.0]))
+    [array([0.66666667, 1.        ]), array([16., 81.])]
+    >>> numpy_function([x], 1 / x)(np.array([4.0]))
+    array([0.25])
+    """
+    names = [str(a) for a in arguments]
+    if isinstance(exprs, sympy.Basic):
+        program = compile_program([exprs], names, NUMPY)
+        return lambda *values: program(*values)[0]
+    return compile_program(exprs, names, NUMPY)
+
+
 class _Program(Generic[N]):
     """A program compiled on its first call (``_Code`` writes it)."""
 
@@ -87,13 +107,11 @@ class _Code(Generic[N]):
         self.rationals: list[tuple[int, int]] = []
         arguments = {sympy.Symbol(n, real=True): f"a{k}" for k, n in enumerate(names)}
         arguments.update({sympy.Symbol(n): f"a{k}" for k, n in enumerate(names)})
-        self.arguments = arguments
-        shared, reduced = sympy.cse(list(exprs), symbols=sympy.numbered_symbols("_t"), optimizations=None)
-        lines = []
-        for name, expr in shared:
-            self.arguments[name] = str(name)
-            lines.append(f"    {name} = {self._code(expr)}")
-        lines.append(f"    return [{', '.join(self._code(e) for e in reduced)}]")
+        self.arguments: dict[sympy.Expr, str] = arguments
+        self.shared = _repeated(exprs)
+        self.lines: list[str] = []
+        results = [self._code(e) for e in exprs]
+        lines = self.lines + [f"    return [{', '.join(results)}]"]
         # the rationals, made in the kind at call time, only where there are any
         lines[:0] = [f"def program({', '.join(f'a{k}' for k in range(len(names)))}):"] + \
             (["    q = constants()"] if self.rationals else [])
@@ -111,8 +129,18 @@ class _Code(Generic[N]):
         return self._made[1]
 
     def _code(self, node: sympy.Expr) -> str:
+        """``node``'s value: its text, or the name of the line that computed it once where it is shared."""
         if node in self.arguments:
             return self.arguments[node]
+        text = self._text(node)
+        if node not in self.shared:
+            return text
+        name = f"_t{len(self.lines)}"
+        self.lines.append(f"    {name} = {text}")
+        self.arguments[node] = name
+        return name
+
+    def _text(self, node: sympy.Expr) -> str:
         if node.is_Integer:
             return f"({int(node)})"
         if node.is_Rational:
@@ -147,6 +175,31 @@ class _Code(Generic[N]):
         else:
             raised = f"power({base}, {abs(n)})" if abs(n) > 1 else base
         return raised if n > 0 else f"(1 / {raised})"
+
+
+def _repeated(exprs: Iterable[sympy.Expr]) -> set[sympy.Expr]:
+    """The subexpressions met more than once in ``exprs`` (atoms aside): each is computed once.
+
+    Only whole subtrees are shared, each sum and product evaluated in its own terms' order; sympy's
+    ``cse`` also regroups terms that sums have in common, at several times the cost.
+
+    >>> x, y = sympy.symbols("x y")
+    >>> sorted(map(str, _repeated([sympy.sqrt(x + y) * x, (x + y) ** 2])))
+    ['x + y']
+    """
+    seen: set[sympy.Expr] = set()
+    repeated: set[sympy.Expr] = set()
+    pending = list(exprs)
+    while pending:
+        node = pending.pop()
+        if node.is_Atom:
+            continue
+        if node in seen:
+            repeated.add(node)
+            continue
+        seen.add(node)
+        pending.extend(node.args)
+    return repeated
 
 
 def columns(outputs: Sequence[Floats | float], count: int) -> Floats:

@@ -6,6 +6,10 @@ the answers. Timings are left out (they are the only part that differs between r
 alter an answer rewrites the reference (``python -m tests.derivation.test_catalog_unchanged``) in the
 same commit, where the diff shows what changed (since: Hart's named crossed mode, each irreducible
 curve's reason, and the scenes added to the catalog).
+
+The verification's measured errors (``ROUNDING``: residuals and errors of 1e-40 and less, at 200 bits)
+are rounding, not answers: evaluating a closed form's sums in another grouping moves them by tens of
+percent. They are compared within a factor of ``ROUNDING_FACTOR``, every other value exactly.
 """
 
 from __future__ import annotations
@@ -23,6 +27,8 @@ from algkin.scene import catalog_names
 from algkin.scene.constructions import Fixed
 
 REFERENCE = Path(__file__).with_name("catalog_before.json.gz")
+ROUNDING = frozenset({"max_abs_error", "max_rel_error", "max_polynomial_residual", "smallest_factor_residual"})
+ROUNDING_FACTOR = 4
 # the scenes derive and curve take (points solved together: algkin solve only, for now)
 DERIVED = [name for name in catalog_names() if not algkin.load_scene(name).unknown_points]
 
@@ -38,6 +44,18 @@ def _without_timings(document: Any) -> Any:
 def _plain(document: Any) -> Any:
     """As the JSON text would read it back (tuples as lists, numbers as written)."""
     return json.loads(json.dumps(document, sort_keys=True, default=str))
+
+
+def same(now: Any, before: Any, *, rounding: bool = False) -> bool:
+    """``now`` is ``before``, the errors under a ``ROUNDING`` key within ``ROUNDING_FACTOR`` of each other."""
+    if isinstance(now, dict) and isinstance(before, dict):
+        return now.keys() == before.keys() and all(
+            same(now[key], before[key], rounding=rounding or key in ROUNDING) for key in now)
+    if isinstance(now, list) and isinstance(before, list):
+        return len(now) == len(before) and all(same(a, b, rounding=rounding) for a, b in zip(now, before))
+    if rounding and isinstance(now, float) and isinstance(before, float) and now * before > 0:
+        return max(now, before) <= ROUNDING_FACTOR * min(now, before)
+    return bool(now == before)
 
 
 def snapshot(name: str) -> dict[str, Any]:
@@ -59,6 +77,15 @@ def reference() -> dict[str, Any]:
         return json.load(text)
 
 
+def test_only_rounding_is_compared_loosely():
+    assert same({"max_abs_error": 3e-56, "compared": 80}, {"max_abs_error": 2e-56, "compared": 80})
+    assert same({"smallest_factor_residual": {"B_x": [1e-57]}}, {"smallest_factor_residual": {"B_x": [3e-57]}})
+    assert not same({"max_abs_error": 1e-50}, {"max_abs_error": 2e-56})
+    assert not same({"max_abs_error": 0.0}, {"max_abs_error": 2e-56})
+    assert not same({"compared": 79.0}, {"compared": 80.0})
+    assert not same({"failures": []}, {"failures": [], "passed": True})
+
+
 def test_the_reference_covers_the_catalog(reference):
     # every scene of the reference is still derived; a scene added since has no answer before it
     assert set(reference) <= set(DERIVED)
@@ -71,10 +98,10 @@ def test_derive_and_curve_answer_as_before(name, reference):
     if name not in reference:
         pytest.skip(f"{name} was added to the catalog after the reference was written")
     now = snapshot(name)
-    assert now["derive"] == reference[name]["derive"]
+    assert same(now["derive"], reference[name]["derive"]), (now["derive"], reference[name]["derive"])
     assert sorted(now["curve"]) == sorted(reference[name]["curve"])
     for point, document in now["curve"].items():
-        assert document == reference[name]["curve"][point], point
+        assert same(document, reference[name]["curve"][point]), (point, document, reference[name]["curve"][point])
 
 
 def main() -> None:

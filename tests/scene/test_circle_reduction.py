@@ -1,8 +1,11 @@
-"""reduce_exact_on_circles: python-flint's reduction on the inputs' circles, the same as sympy's remainder."""
+"""reduce_exact_on_circles and reduce_on_circles: python-flint's reduction on the inputs' circles, the same
+as sympy's remainder."""
 
 import flint
+import sympy
+from hypothesis import given, settings, strategies as st
 
-from algkin.scene.implicit.algebra import reduce_exact_on_circles, reduce_on_circles
+from algkin.scene.implicit.algebra import _reduced_in_sympy, reduce_exact_on_circles, reduce_on_circles
 from algkin.system import symbol
 from algkin.system.convert import to_sympy
 
@@ -30,3 +33,32 @@ def test_a_sine_without_its_cosine_is_left_to_sympy():
     assert reduce_exact_on_circles(s**2 + x, CIRCLES) is None
     x = flint.fmpq_mpoly_ctx.get(("c_a", "x"), "lex").gens()[1]
     assert reduce_exact_on_circles(x**2, CIRCLES) == x**2  # no sine: nothing to reduce
+
+
+_TERMS = st.sampled_from([*(v for circle in CIRCLES for v in circle), symbol("x"), sympy.Symbol("y"),
+                          sympy.Dummy("root")])  # a closed form's stand-in for a root (str: _root)
+
+
+@st.composite
+def _unexpanded(draw, depth=3):
+    """A sympy expression as closed forms hold one: sums and products of powers, unexpanded."""
+    if depth == 0 or draw(st.booleans()):
+        return draw(_TERMS) if draw(st.booleans()) else sympy.Rational(draw(st.integers(-9, 9)), draw(st.integers(1, 5)))
+    parts = draw(st.lists(_unexpanded(depth - 1), min_size=2, max_size=3))
+    combined = sympy.Add(*parts) if draw(st.booleans()) else sympy.Mul(*parts)
+    return combined ** draw(st.integers(1, 3))
+
+
+@settings(max_examples=150, deadline=None)
+@given(_unexpanded(), st.sampled_from([sympy.Integer(1), sympy.sqrt(2), 1 / symbol("x"), sympy.sqrt(symbol("c_a"))]))
+def test_in_flint_the_very_expression_sympys_remainder_gives(polynomial, times):
+    # the other factor makes some draws no polynomial (a root, a quotient), left to sympy as before
+    expr = polynomial * times
+    assert reduce_on_circles(expr, CIRCLES) == _reduced_in_sympy(expr, CIRCLES)
+
+
+def test_two_symbols_of_one_name_are_left_to_sympy():
+    for one, other in [(sympy.Symbol("x"), symbol("x")), (sympy.Dummy("x"), symbol("x"))]:
+        assert one != other
+        expr = (one + other + CIRCLES[0][1]) ** 2
+        assert reduce_on_circles(expr, CIRCLES) == _reduced_in_sympy(expr, CIRCLES)

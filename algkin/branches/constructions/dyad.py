@@ -29,7 +29,7 @@ import attrs
 import numpy as np
 import sympy
 
-from ...evaluate.lambdified import numpy_function
+from ...evaluate.program import numpy_function
 from ...scene.implicit import DyadSpec
 from ...scene.implicit.algebra import Circles
 from ...scene.implicit.base import FloatArray, Point
@@ -83,7 +83,7 @@ class _Stable:
         (px, py), (qx, qy) = dyad.base_p, dyad.base_q
         base = [fix(e) for e in ((px + qx) / 2, (py + qy) / 2, qx - px, qy - py)]  # midpoint, exactly
         self.unknowns = dyad.unknowns
-        self.base = numpy_function(arguments, base, cse=True)
+        self.base = numpy_function(arguments, base)
         l1, l2 = (fix(v) for v in dyad.lengths)
         self.sigma = sigma
         # a length input (an actuator, a string) moves a length: evaluated per sample then

@@ -24,7 +24,7 @@ import attrs
 import numpy as np
 import sympy
 
-from ...evaluate.lambdified import numpy_function
+from ...evaluate.program import numpy_function
 from ...scene.implicit import MeetSpec
 from ...scene.implicit.algebra import Circles, reduce_on_circles
 from ...scene.implicit.base import FloatArray
@@ -78,7 +78,7 @@ class _Stable:
         (a, b), (c, d) = meet.first, meet.second
         parts = (*a, b[0] - a[0], b[1] - a[1], d[0] - c[0], d[1] - c[1], c[0] - a[0], c[1] - a[1])
         self.unknowns = meet.unknowns
-        self.formula = numpy_function(arguments, [fix(e) for e in parts], cse=True)
+        self.formula = numpy_function(arguments, [fix(e) for e in parts])
 
     def __call__(self, values: Sequence[FloatArray], half: Sequence[HalfAngle]) -> tuple[FloatArray, FloatArray]:
         ax, ay, ux, uy, vx, vy, wx, wy = self.formula(*values)

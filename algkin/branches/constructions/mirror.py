@@ -17,7 +17,7 @@ from collections.abc import Sequence
 import attrs
 import sympy
 
-from ...evaluate.lambdified import numpy_function
+from ...evaluate.program import numpy_function
 from ...scene.implicit import MirrorSpec
 from ...scene.implicit.algebra import Circles
 from ...scene.implicit.base import FloatArray
@@ -59,7 +59,7 @@ class _Stable:
 
     def __init__(self, mirror: MirrorSpec, *, fix: Fix, arguments: Sequence[sympy.Symbol]) -> None:
         self.unknowns = mirror.unknowns
-        self.formula = numpy_function(arguments, [fix(e) for e in mirror_parts(mirror)], cse=True)
+        self.formula = numpy_function(arguments, [fix(e) for e in mirror_parts(mirror)])
 
     def __call__(self, values: Sequence[FloatArray], half: Sequence[HalfAngle]) -> tuple[FloatArray, FloatArray]:
         bx, by, dx, dy, along = self.formula(*values)

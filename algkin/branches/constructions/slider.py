@@ -29,7 +29,7 @@ import attrs
 import numpy as np
 import sympy
 
-from ...evaluate.lambdified import numpy_function
+from ...evaluate.program import numpy_function
 from ...scene.implicit import SliderSpec
 from ...scene.implicit.algebra import Circles
 from ...scene.implicit.base import FloatArray, Point
@@ -93,7 +93,7 @@ class _Stable:
         self.fixed = dx.is_number and dy.is_number
         base = [fix(e) for e in (px, py, qx - px, qy - py)] + ([] if self.fixed else [dx, dy])
         self.unknowns = slider.unknowns
-        self.base = numpy_function(arguments, base, cse=True)
+        self.base = numpy_function(arguments, base)
         length, norm2 = fix(slider.length), fix(dx**2 + dy**2)
         self.sigma, self.length, self.length2 = sigma, float(length), float(length**2)
         self.dx, self.dy = (float(dx), float(dy)) if self.fixed else (0.0, 0.0)

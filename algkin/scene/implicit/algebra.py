@@ -4,6 +4,9 @@ from collections.abc import Sequence
 
 import flint
 import sympy
+from flint.utils.flint_exceptions import DomainError
+
+from ...system.convert import to_flint
 
 __all__ = ["Circles", "reduce_on_circles", "reduce_exact_on_circles"]
 
@@ -11,13 +14,49 @@ Circles = Sequence[tuple[sympy.Symbol, sympy.Symbol]]  # each input's (cos, sin)
 
 
 def reduce_on_circles(expr: sympy.Expr, inputs: Circles) -> sympy.Expr:
-    """Normal form of a polynomial modulo ``c**2 + s**2 - 1`` for each input (s**2 -> 1 - c**2)."""
+    """Normal form of a polynomial modulo ``c**2 + s**2 - 1`` for each input (s**2 -> 1 - c**2);
+    anything else expanded.
+
+    A polynomial is reduced in python-flint (``reduce_exact_on_circles``): sympy's ``rem`` builds a
+    ``Poly`` per input, most of a dyad's closed form. The result is sympy's, the same expression.
+
+    >>> c, s, x = sympy.symbols("c s x")
+    >>> reduce_on_circles((s * x + c) ** 2, [(c, s)]), reduce_on_circles(s / x, [(c, s)])
+    (-c**2*x**2 + c**2 + 2*c*s*x + x**2, s/x)
+    """
+    reduced = _reduced_in_flint(expr, inputs)
+    return reduced if reduced is not None else _reduced_in_sympy(expr, inputs)
+
+
+def _reduced_in_sympy(expr: sympy.Expr, inputs: Circles) -> sympy.Expr:
     expr = sympy.expand(expr)
     if not expr.is_polynomial():
         return expr
     for c, s in inputs:
         expr = sympy.expand(sympy.rem(expr, s**2 + c**2 - 1, s)) if expr.has(s) else expr
     return expr
+
+
+def _reduced_in_flint(expr: sympy.Expr, inputs: Circles) -> sympy.Expr | None:
+    """``reduce_on_circles`` of a polynomial with rational coefficients, through python-flint; None
+    for anything else (a root, a quotient by a polynomial, two symbols of one name: a ``Dummy`` and a
+    ``Symbol``, or a real symbol and a plain one)."""
+    every = expr.free_symbols | {v for circle in inputs for v in circle}
+    symbols = {v.name: v for v in every}  # the names python-flint's ring and ``to_flint`` know them by
+    if len(symbols) != len(every):
+        return None
+    names = sorted(symbols)
+    ring = flint.fmpq_mpoly_ctx.get(tuple(names), "lex")
+    try:
+        poly = to_flint(expr, ring)
+    except (TypeError, DomainError):  # sqrt, Abs, a function; a quotient that is not exact
+        return None
+    reduced = reduce_exact_on_circles(poly, inputs)
+    if reduced is None:
+        return None
+    gens = [symbols[n] for n in names]
+    return sympy.Add(*[sympy.Mul(sympy.Rational(int(c.p), int(c.q)), *[g**e for g, e in zip(gens, m) if e])
+                       for m, c in reduced.to_dict().items()])
 
 
 def reduce_exact_on_circles(poly: flint.fmpq_mpoly, inputs: Circles) -> flint.fmpq_mpoly | None:
