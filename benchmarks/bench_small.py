@@ -132,7 +132,10 @@ class There:
     def _ask(self, request):
         self.child.stdin.write(json.dumps(request) + "\n")
         self.child.stdin.flush()
-        return json.loads(self.child.stdout.readline())
+        line = self.child.stdout.readline()
+        if not line:  # its traceback is on stderr, above
+            raise SystemExit(f"--against {self.root}: the child stopped at {request}")
+        return json.loads(line)
 
     def start(self, name):
         return tuple(self._ask(["start", name]))
