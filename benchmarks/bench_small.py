@@ -29,13 +29,13 @@ Run: ``python benchmarks/bench_small.py [--problem NAME ...] [--against DIR]``.
 import argparse
 import dataclasses
 import json
-import os
 import statistics
 import subprocess
 import sys
 import time
 from pathlib import Path
 
+from checkouts import add_against, environment
 from flint import fmpq
 
 from algkin.bench.engines import PEERS
@@ -121,10 +121,10 @@ class There:
     (``serve``) that imports them."""
 
     def __init__(self, root):
-        self.root = root.resolve()
-        environment = dict(os.environ, PYTHONPATH=str(self.root))  # its algkin first on sys.path
+        self.root = root
         self.child = subprocess.Popen([sys.executable, str(Path(__file__).resolve()), "--serve"], cwd=self.root,
-                                      env=environment, stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+                                      env=environment(self.root), stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                      text=True)
         where = self._ask("where")
         if not Path(where).resolve().is_relative_to(self.root):
             raise SystemExit(f"--against {root}: the child imported algkin from {where}")
@@ -203,7 +203,7 @@ def batch_rows():
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--problem", nargs="*", default=SMALL, choices=SMALL)
-    parser.add_argument("--against", type=Path, help="another checkout's sources, timed in the same run (before)")
+    add_against(parser)
     parser.add_argument("--serve", action="store_true", help=argparse.SUPPRESS)  # the child of --against
     args = parser.parse_args()
     if args.serve:
