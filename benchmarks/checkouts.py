@@ -46,10 +46,15 @@ def describe(root):
     return "this checkout" if root == ROOT else str(root)
 
 
+def environment(root):
+    """The environment of a python run from ``root``'s sources: that checkout first on ``sys.path``."""
+    return dict(os.environ, PYTHONPATH=str(root))
+
+
 def run_python(root, arguments):
     """``python <arguments>`` from ``root``'s sources, its output captured; its stderr raised with the failure."""
     completed = subprocess.run([sys.executable, *map(str, arguments)], capture_output=True, text=True,
-                               env=dict(os.environ, PYTHONPATH=str(root)), cwd=root)
+                               env=environment(root), cwd=root)
     if completed.returncode:
         raise RuntimeError(f"python {' '.join(map(str, arguments))} from {root} exited "
                            f"{completed.returncode}:\n{completed.stderr}")

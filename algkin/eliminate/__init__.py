@@ -36,7 +36,7 @@ from .methods import groebner_basis, prepare, resultant_chain
 from .factor import IrreducibilityProof, factor_with
 from .protocol import Backend, P
 from .request import EliminationRequest, LogEntry, Method
-from .select import Witness, WitnessGroups, select_factors, unreal_factors
+from .select import NOT_THE_MOTION, Witness, WitnessGroups, select_factors, unreal_factors, vanishes_at
 
 __all__ = ["eliminate", "eliminate_each", "Elimination", "Witness", "Budget", "Deadline", "METHODS", "DEFAULT_METHOD", "BACKENDS",
            "method_names", "backend_names"]
@@ -306,7 +306,8 @@ def _choose(engine: Backend[P], factors: list[P], *, proof: IrreducibilityProof 
         if not others_kept:
             # the proof says the motion lies on it; one witness a branch still checks the
             # witnesses against it (all of them: the verification's sampled configurations)
-            select_factors(engine, [last], [group[:1] for group in request.witnesses if group])
+            if not vanishes_at(engine, last, [group[0] for group in request.witnesses if group]):
+                raise ComputationError(NOT_THE_MOTION)
             return [last], unreal + others_lost, proof
     kept, lost = select_factors(engine, real, request.witnesses)
     return kept, unreal + lost, None

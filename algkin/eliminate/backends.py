@@ -7,7 +7,6 @@ expressions, and leave as sympy expressions, through ``algkin.system.convert``.
 """
 
 import functools
-import math
 from collections.abc import Mapping, Sequence, Set as AbstractSet
 from typing import Generic, Protocol, TypeVar, cast
 
@@ -16,7 +15,7 @@ import sympy
 
 from ..errors import ComputationError
 from ..system import symbol
-from .factor import IrreducibilityProof, irreducibility_proof
+from .factor import IrreducibilityProof, irreducibility_proof, quadratic_proof
 from .protocol import BackendFactory, Term
 from ..system.convert import flint_context, to_flint, to_flint_integer, to_sympy
 
@@ -69,7 +68,8 @@ class FlintMpolys(Generic[M]):
         self._read.clear()
 
     def variables(self, poly: M) -> AbstractSet[str]:
-        return self._reading(poly)[2]
+        known = self._read.get(id(poly))  # ``_reading``'s memo first: a call less where it holds (most asks)
+        return (known if known is not None and known[0] is poly else self._reading(poly))[2]
 
     def from_flint(self, poly: flint.fmpq_mpoly) -> M:
         """``poly`` (over any names) in this backend's ring, its variables matched by name."""
@@ -104,7 +104,8 @@ class FlintMpolys(Generic[M]):
         return None
 
     def degree(self, poly: M, var: str) -> int:
-        return self._reading(poly)[1][self.index[var]]
+        known = self._read.get(id(poly))  # as ``variables``
+        return (known if known is not None and known[0] is poly else self._reading(poly))[1][self.index[var]]
 
     def is_constant(self, poly: M) -> bool:
         # flint's is_constant scans every term for the total degree; a constant has one term, of
@@ -226,16 +227,21 @@ class FlintBackend(FlintMpolys[flint.fmpq_mpoly]):
 
     def irreducibility(self, poly: flint.fmpq_mpoly) -> IrreducibilityProof | None:
         # beyond three variables, specializing to one proves irreducibility faster than flint's
-        # multivariate factoring (benchmarks/bench_ideas.py). In three, about as fast: an attempt
-        # (5 us to specialize, 10 us for flint's univariate factoring of a quartic) against 26 us
-        # for the seed's connector, where the first values tried factor. In two (a curve), 5
+        # multivariate factoring (benchmarks/bench_ideas.py). In three, about as fast (an attempt:
+        # 5 us to specialize, 10 us for flint's univariate factoring of a quartic, against 26 us
+        # for the seed's connector, where the first values tried factor); but a variable of degree
+        # 2 decides by its discriminant in 10 us (the connector's B_y). In two (a curve), 5
         # against 40 us, but flint's factoring stays: its proof is what ``curve`` reports.
-        return irreducibility_proof(poly) if len(self.variables(poly)) > 3 else None
+        held = len(self.variables(poly))
+        if held > 3:
+            return irreducibility_proof(poly)
+        return quadratic_proof(poly) if held == 3 else None
 
     def specialize(self, poly: flint.fmpq_mpoly, values: Mapping[str, flint.fmpq]) -> flint.fmpq_mpoly:
         """``poly`` with the variables of ``values`` (name -> fmpq) replaced by them."""
-        # python-flint's stub takes names or indices, in a Mapping invariant in its keys
-        return poly.subs(cast("Mapping[str | int, flint.fmpq]", values))
+        # by index: python-flint looks a name up in Python (3.7 against 2.3 us for two values); its
+        # stub takes names or indices, in a Mapping invariant in its keys
+        return poly.subs(cast("Mapping[str | int, flint.fmpq]", {self.index[n]: v for n, v in values.items()}))
 
     def scale(self, poly: flint.fmpq_mpoly, numerator: int, denominator: int) -> flint.fmpq_mpoly:
         return poly * flint.fmpq(numerator, denominator)
@@ -252,10 +258,11 @@ class FlintBackend(FlintMpolys[flint.fmpq_mpoly]):
         """Integer coefficients with gcd 1, positive leading coefficient (lex)."""
         if poly.is_zero():
             return poly
-        coeffs = poly.coeffs()
-        lcm = math.lcm(*(c.q for c in coeffs))  # python-flint's integers are indices: no int() each
-        gcd = math.gcd(*(c.p for c in coeffs))
-        scaled = poly * flint.fmpq(lcm, gcd)
+        # the coefficients as one univariate polynomial: FLINT keeps it as an integer polynomial over
+        # their common denominator, whose content is the numerators' gcd (3 against 5.6 us for 17
+        # terms by Python's lcm and gcd of each coefficient's numerator and denominator)
+        coefficients = flint.fmpq_poly(poly.coeffs())
+        scaled = poly * flint.fmpq(coefficients.denom(), coefficients.numer().content())
         return -scaled if scaled.leading_coefficient() < 0 else scaled
 
     def groebner_lex(self, polys: Sequence[flint.fmpq_mpoly], order: Sequence[str]) -> list[flint.fmpq_mpoly]:

@@ -22,6 +22,13 @@ factor, full factoring decides.
 irreducible over QQ: its leading coefficient in z is a number, and at x = 3, y = 5 it is irreducible of degree 2 in z
 >>> irreducibility_proof((x**2 + y)*(x + z)) is None
 True
+
+Where a variable is of degree 2, ``quadratic_proof`` decides at once, by the discriminant in it:
+
+>>> print(quadratic_proof(x**2*y + x*z + y + z))
+irreducible over QQ: of degree 2 in x, its coefficients in x coprime and its discriminant in x not a square
+>>> quadratic_proof((x*y + z)*(x + y)) is None
+True
 """
 
 import math
@@ -30,10 +37,12 @@ from dataclasses import dataclass
 from typing import cast
 
 import flint
+from flint.utils.flint_exceptions import DomainError
 
 from .protocol import Backend, P
 
-__all__ = ["factor_with", "irreducibility_proof", "univariate_irreducible", "IrreducibilityProof", "FACTORED"]
+__all__ = ["factor_with", "irreducibility_proof", "quadratic_proof", "univariate_irreducible", "IrreducibilityProof",
+           "FACTORED"]
 
 SPECIALIZATIONS = ((3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47),
                    (-2, 9, -4, 6, -10, 15, -8, 21, -12, 25, -14, 27, -16, 33))
@@ -43,16 +52,21 @@ SPECIALIZATIONS = ((3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47),
 class IrreducibilityProof:
     """Why a polynomial is irreducible over QQ: its leading coefficient in ``variable`` is a
     number, and with the other variables set to ``values`` it is an irreducible univariate
-    polynomial of the same ``degree`` in ``variable``; or, with no ``variable``, its full
-    factorization has one factor."""
+    polynomial of the same ``degree`` in ``variable``; or, ``by_discriminant``, it is of degree
+    2 in ``variable`` with coprime coefficients and a discriminant that is not a square
+    (``quadratic_proof``); or, with no ``variable``, its full factorization has one factor."""
 
     variable: str | None = None
     values: tuple[tuple[str, int], ...] = ()
     degree: int = 0
+    by_discriminant: bool = False
 
     def __str__(self) -> str:
         if self.variable is None:
             return "irreducible over QQ: factored, one factor"
+        if self.by_discriminant:
+            return (f"irreducible over QQ: of degree 2 in {self.variable}, its coefficients in {self.variable} "
+                    f"coprime and its discriminant in {self.variable} not a square")
         at = ", ".join(f"{name} = {value}" for name, value in self.values)
         return (f"irreducible over QQ: its leading coefficient in {self.variable} is a number, and at {at} "
                 f"it is irreducible of degree {self.degree} in {self.variable}")
@@ -114,6 +128,36 @@ def irreducibility_proof(poly: flint.fmpq_mpoly) -> IrreducibilityProof | None:
             proof = _irreducible_at(poly, i, degree, values)
             if proof is not None:
                 return proof
+    return None
+
+
+def quadratic_proof(poly: flint.fmpq_mpoly) -> IrreducibilityProof | None:
+    """A proof that the ``fmpq_mpoly`` ``poly`` is irreducible over QQ, by its first variable of
+    degree 2; None when it has none, or is reducible.
+
+    Write ``poly = a*x**2 + b*x + c`` with ``a``, ``b``, ``c`` free of ``x``. A factor free of
+    ``x`` divides all three; a factor of degree 1 in ``x`` is ``x`` less a root, and the roots
+    ``(-b +- sqrt(b**2 - 4*a*c)) / 2a`` are rational functions exactly when the discriminant
+    ``b**2 - 4*a*c`` is the square of a polynomial over QQ (QQ[...] is a unique factorization
+    domain). So ``poly`` is irreducible exactly when ``a``, ``b``, ``c`` are coprime and the
+    discriminant is not a square: a decision, at the cost of two gcds and a square root, where
+    factoring costs two or three times as much (the seed's connector: about 10 against 25 us).
+    """
+    degrees = poly.degrees()
+    if 2 not in degrees:
+        return None
+    i = degrees.index(2)
+    c = poly.subs({i: 0})
+    slope = poly.derivative(i)  # 2*a*x + b
+    b, twice_a = slope.subs({i: 0}), slope.derivative(i)
+    if not twice_a.is_constant():
+        common = twice_a.gcd(c)
+        if not common.is_constant() and not common.gcd(b).is_constant():
+            return None  # a factor free of x
+    try:
+        (b * b - 2 * twice_a * c).sqrt()
+    except DomainError:  # not a square: no factor of degree 1 in x
+        return IrreducibilityProof(poly.context().names()[i], (), 2, by_discriminant=True)
     return None
 
 

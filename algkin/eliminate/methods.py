@@ -24,8 +24,8 @@ def _linear_definition(backend: Backend[P], poly: P, var: str) -> P | None:
     slope = backend.derivative(poly, var)
     if not backend.is_constant(slope):
         return None
-    (_, numerator, denominator), = backend.terms(slope)
-    return backend.scale(backend.specialize(poly, {var: flint.fmpq(0)}), -denominator, numerator)
+    # divided by the number k in C, not scaled by its numerator and denominator read off its terms
+    return -backend.divide(backend.specialize(poly, {var: flint.fmpq(0)}), slope)
 
 
 def prepare(backend: Backend[P], polys: list[P], eliminate: Sequence[str]) -> MethodOutcome[P]:
@@ -71,6 +71,9 @@ def _squarefree_kept(backend: Backend[P], poly: P, witnesses: WitnessGroups) -> 
 
 def cheapest(backend: Backend[P], polys: Sequence[P], remaining: Sequence[str]) -> str:
     """The unknown held by the fewest equations, then of the least degree in them."""
+    if len(remaining) == 1:
+        return remaining[0]
+
     def cost(var: str) -> tuple[int, int]:
         holders = [p for p in polys if backend.degree(p, var)]
         return (len(holders), min((backend.degree(p, var) for p in holders), default=0))
@@ -83,11 +86,13 @@ def resultant_step(backend: Backend[P], polys: list[P], var: str, *, request: El
     """``polys`` with ``var`` eliminated: resultants of its holders against the one of least
     degree in it, each factored and cut to the factors the witnesses satisfy, unless it is the
     ``last`` step: the eliminant is factored and cut once, at the end, not twice."""
-    holders = [p for p in polys if backend.degree(p, var)]
-    others = [p for p in polys if not backend.degree(p, var)]
+    degrees = [backend.degree(p, var) for p in polys]
+    holders = [p for p, degree in zip(polys, degrees) if degree]
+    others = [p for p, degree in zip(polys, degrees) if not degree]
     if len(holders) <= 1:
         return MethodOutcome(others)
-    pivot = min(holders, key=lambda p: (backend.degree(p, var), backend.nterms(p)))
+    # the least degree, then the fewest terms, then the first
+    pivot = polys[min((d, backend.nterms(p), k) for k, (p, d) in enumerate(zip(polys, degrees)) if d)[2]]
     dropped: list[P] = []
     for poly in holders:
         if poly is pivot:

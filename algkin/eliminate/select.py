@@ -29,9 +29,11 @@ from ..errors import ComputationError
 from ..system.roots import real_roots
 from .protocol import Backend, P, Term
 
-__all__ = ["Witness", "Point", "WitnessGroups", "Evaluator", "select_factors", "unreal_factors", "unreal"]
+__all__ = ["Witness", "Point", "WitnessGroups", "Evaluator", "Horner", "select_factors", "vanishes_at", "unreal_factors", "unreal",
+           "NOT_THE_MOTION"]
 
 MARGIN_BITS = 64
+NOT_THE_MOTION = "no kept factor vanishes at a witness configuration: the eliminant does not describe the motion"
 
 Point = Mapping[str, flint.arb]
 """A configuration: every variable's value as a ball (a ``Witness``, or a plain dict)."""
@@ -121,6 +123,34 @@ class Evaluator:
             return total
 
 
+class Horner:
+    """The ball value of a polynomial in the one variable ``names[variable]`` (a factor its
+    witness's exact values left univariate), given by its ``terms`` as for ``Evaluator``, at the
+    precision ``Evaluator`` would take: by Horner's rule in C (python-flint's ``arb_poly``), one
+    call where the ``Evaluator``'s program takes a Python step a term, and no program to compile.
+
+    >>> point = {"x": flint.arb(2).sqrt(), "y": flint.arb(3)}
+    >>> line = Horner([((1, 0), 1, 1), ((0, 0), -1, 1)], ("x", "y"), 128, variable=0)  # x - 1
+    >>> line.bits, (line(point) - point["x"] + 1).contains(0)
+    (131, True)
+    """
+
+    def __init__(self, terms: Sequence[Term], names: Sequence[str], base_bits: int, magnitude_bits: int = 1, *,
+                 variable: int) -> None:
+        degree = max(exponents[variable] for exponents, _, _ in terms)
+        self.bits = base_bits + max(p.bit_length() + q.bit_length() for _, p, q in terms) + degree * magnitude_bits
+        self.name = names[variable]
+        dense = [flint.fmpq(0)] * (degree + 1)
+        for exponents, p, q in terms:
+            dense[exponents[variable]] = flint.fmpq(p, q)
+        with flint.ctx.workprec(self.bits):
+            self.poly = flint.arb_poly(dense)  # each coefficient rounded to a ball that holds it
+
+    def __call__(self, point: Point) -> flint.arb:
+        with flint.ctx.workprec(self.bits):
+            return self.poly(point[self.name])
+
+
 def unreal_factors(backend: Backend[P], factors: Sequence[P], parameters: Collection[str]
                    ) -> tuple[list[P], list[P]]:
     """Split ``factors`` into (kept, dropped): dropped, those in the ``parameters`` alone
@@ -179,12 +209,35 @@ def select_factors(backend: Backend[P], factors: Sequence[P], witness_groups: Wi
     groups = [g for g in witness_groups if g]
     if not groups or not factors:
         return list(factors), []
+    return _select(factors, groups, _values(backend, factors, groups, *_precision(groups)), check)
+
+
+def vanishes_at(backend: Backend[P], factor: P, points: Sequence[Point]) -> bool:
+    """Whether ``factor``'s ball contains zero at every one of ``points``, evaluated as
+    ``select_factors`` evaluates: its one factor kept at every point, without its bookkeeping
+    of groups and factors.
+
+    >>> import flint
+    >>> from algkin.eliminate.backends import FlintBackend
+    >>> engine = FlintBackend(("x", "y"))
+    >>> x, y = engine.ctx.gens()
+    >>> points = [{"x": flint.arb(2).sqrt(), "y": flint.arb(2)}, {"x": -flint.arb(2).sqrt(), "y": flint.arb(2)}]
+    >>> vanishes_at(engine, x**2 - y, points), vanishes_at(engine, x - y + 2, points)
+    (True, False)
+    """
+    if not points:
+        return True
+    value = _values(backend, [factor], [points], *_precision([points]))
+    return all(value(0, point).contains(0) for point in points)
+
+
+def _precision(groups: WitnessGroups) -> tuple[int, int]:
+    """``(base bits, magnitude bits)`` of the witnesses: enough for a factor's own coefficients
+    and powers on top of the witnesses' precision (``Evaluator``)."""
     scales = [point.scale if isinstance(point, Witness) else _scale(point) for group in groups for point in group]
     witness_bits = max(bits for bits, _ in scales)
     magnitude_bits = max(1, math.ceil(math.log2(1 + max(magnitude for _, magnitude in scales))))
-    # enough for the factor's own coefficients and powers on top of the witnesses' precision
-    return _select(factors, groups, _values(backend, factors, groups, MARGIN_BITS + witness_bits, magnitude_bits),
-                   check)
+    return MARGIN_BITS + witness_bits, magnitude_bits
 
 
 def _values(backend: Backend[P], factors: Sequence[P], groups: WitnessGroups, base_bits: int, magnitude_bits: int
@@ -200,14 +253,17 @@ def _values(backend: Backend[P], factors: Sequence[P], groups: WitnessGroups, ba
         if exact not in assignments:  # compared, not hashed: fmpq hashes in Python
             assignments.append(exact)
         which[id(point)] = assignments.index(exact)
-    evaluators = {}
+    evaluators: dict[tuple[int, int | None], Evaluator | Horner] = {}
 
     def value(i: int, point: Point) -> flint.arb:
         fixed = {n: v for n, v in assignments[which[id(point)]].items() if n in held[i]}
         key = (i, which[id(point)] if fixed else None)
         if key not in evaluators:
             poly = backend.specialize(factors[i], fixed) if fixed else factors[i]
-            evaluators[key] = Evaluator(backend.terms(poly), backend.names, base_bits, magnitude_bits)
+            free = held[i] - fixed.keys()
+            evaluators[key] = Horner(backend.terms(poly), backend.names, base_bits, magnitude_bits,
+                                     variable=backend.names.index(next(iter(free)))) if len(free) == 1 else \
+                Evaluator(backend.terms(poly), backend.names, base_bits, magnitude_bits)
         return evaluators[key](point)
 
     return value
@@ -242,6 +298,5 @@ def _select(factors: Sequence[P], groups: WitnessGroups, value: Callable[[int, P
     for g, group in enumerate(groups) if check else ():
         for w in range(len(group)):
             if not any(vanishes(i, g, w) for i in kept):
-                raise ComputationError("no kept factor vanishes at a witness configuration: "
-                                       "the eliminant does not describe the motion")
+                raise ComputationError(NOT_THE_MOTION)
     return [factors[i] for i in kept], dropped

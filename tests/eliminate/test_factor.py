@@ -1,11 +1,12 @@
-"""Factoring with known divisors, and irreducibility proved by specialization."""
+"""Factoring with known divisors, and irreducibility proved by specialization or by a discriminant."""
 
 import flint
 import sympy
 from hypothesis import event, given, settings, strategies as st
 
 from algkin.eliminate.backends import FlintBackend
-from algkin.eliminate.factor import FACTORED, factor_with, irreducibility_proof, univariate_irreducible
+from algkin.eliminate.factor import (FACTORED, factor_with, irreducibility_proof, quadratic_proof,
+                                     univariate_irreducible)
 from algkin.system.convert import to_flint
 
 NAMES = ("x", "y", "z", "w", "v")
@@ -129,3 +130,51 @@ def test_the_seed_connector_is_proved_at_its_second_variable():
     ctx = flint.fmpq_mpoly_ctx.get(("B_y", "c", "s"), "lex")
     proof = irreducibility_proof(to_flint(connector, ctx))
     assert (proof.variable, proof.values, proof.degree) == ("s", (("B_y", 3), ("c", 5)), 4)
+
+
+def test_a_quadratic_in_a_variable_is_decided_by_its_discriminant_there():
+    x, y, z = CTX.gens()[:3]
+    # by hand: a sphere's x**2 + (y**2 + z**2 + 1) has discriminant -4(y**2 + z**2 + 1), no square;
+    # 2x**2 - y**2 has 8y**2, a square only over QQ(sqrt 2); x**2 - y**2*z**2 = (x - yz)(x + yz);
+    # (xy + z)(x + y) has discriminant (y**2 - z)**2; y*(x**2 + z) has the factor y free of x
+    assert quadratic_proof(x**2 + y**2 + z**2 + 1).variable == "x"
+    assert quadratic_proof(2 * x**2 - y**2).variable == "x"
+    assert quadratic_proof(x**2 - y**2 * z**2) is None
+    assert quadratic_proof((x * y + z) * (x + y)) is None
+    assert quadratic_proof(y * (x**2 + z)) is None
+    assert quadratic_proof(x**3 + y + z) is None  # no variable of degree 2: nothing decided
+
+
+@st.composite
+def quadratics(draw):
+    """A polynomial of degree 2 in some variable, mostly: one of ``polynomials`` (every exponent at
+    most 2) plus a number (no monomial divides it: mostly irreducible), or, one in two, a product of
+    two of degree at most 1 in each variable (reducible, mostly)."""
+    if draw(st.booleans()):
+        return draw(polynomials()) + draw(st.integers(-5, 5).filter(bool))
+    linear = st.dictionaries(st.tuples(*[st.integers(0, 1)] * len(NAMES)), st.integers(-5, 5).filter(bool),
+                             min_size=2, max_size=4)
+    return CTX.from_dict(draw(linear)) * CTX.from_dict(draw(linear))
+
+
+@settings(max_examples=200, deadline=None)
+@given(quadratics())
+def test_the_discriminant_decides_as_flint_factoring_does(poly):
+    # where a variable is of degree 2, the proof is found exactly when flint's factoring finds
+    # one factor, once (the content a number)
+    proof = quadratic_proof(poly)
+    quadratic = 2 in poly.degrees()
+    event("irreducible" if proof else "reducible" if quadratic else "no variable of degree 2")
+    _, factors = poly.factor()
+    irreducible = len(factors) == 1 and factors[0][1] == 1
+    assert (proof is not None) == (quadratic and irreducible)
+    if proof is not None:
+        assert poly.degrees()[NAMES.index(proof.variable)] == 2 and proof.by_discriminant
+
+
+def test_three_variables_are_decided_by_a_discriminant_and_two_by_factoring():
+    # a curve's proof is what ``curve`` reports, flint's factorization: two variables give none here
+    engine = FlintBackend(NAMES)
+    x, y, z = CTX.gens()[:3]
+    assert engine.irreducibility(x**2 + y**2 + z) == quadratic_proof(x**2 + y**2 + z)
+    assert engine.irreducibility(x**2 + y**2 - 1) is None

@@ -14,7 +14,7 @@ from algkin.bench.problems import build
 from algkin.derivation.pipeline import curve
 from algkin.eliminate import Witness, eliminate
 from algkin.errors import ComputationError
-from algkin.eliminate.factor import FACTORED
+from algkin.eliminate.factor import FACTORED, IrreducibilityProof
 from algkin.system import System, symbol
 
 
@@ -29,7 +29,9 @@ def test_the_seed_connector_is_proved_irreducible_and_is_sympys_resultant():
     bx = symbol("B_x")
     expected = sympy.resultant(*task.equations, bx)
     assert proportional(result.polynomial, expected)
-    assert result.proof == FACTORED and ("proved-irreducible", "factored") in result.log
+    # quadratic in B_y, decided by its discriminant; sympy's factoring agrees it is irreducible
+    assert result.proof == IrreducibilityProof("B_y", (), 2, by_discriminant=True)
+    assert ("proved-irreducible", "B_y") in result.log and sympy.Poly(expected).is_irreducible
     assert result.dropped == []
 
 

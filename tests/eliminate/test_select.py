@@ -2,9 +2,10 @@
 
 import flint
 import sympy
+from hypothesis import given, settings, strategies as st
 
 from algkin.eliminate.backends import BACKENDS
-from algkin.eliminate.select import select_factors
+from algkin.eliminate.select import Evaluator, Horner, select_factors
 from algkin.system import symbol
 
 
@@ -65,3 +66,19 @@ def test_witnesses_with_and_without_exact_coordinates_agree_on_the_symbolic_four
     exact = task.run("linear", "flint")
     balls = type(task)(task.equations, task.eliminate, task.keep, task.parameters, plain).run("linear", "flint")
     assert exact.raw == balls.raw and exact.raw_dropped == balls.raw_dropped
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.fractions(max_denominator=50).filter(lambda f: abs(f) < 1000), min_size=1, max_size=12),
+       st.fractions(max_denominator=50).filter(lambda f: abs(f) < 10))
+def test_horners_rule_and_the_evaluator_enclose_the_exact_value(coefficients, at):
+    # the value computed exactly over QQ (python-flint's fmpq_poly) lies in both balls, and both are narrow
+    terms = [((k, 0), c.numerator, c.denominator) for k, c in enumerate(coefficients) if c][::-1] or [((0, 0), 0, 1)]
+    x = flint.fmpq(at.numerator, at.denominator)
+    exact = flint.fmpq_poly([flint.fmpq(c.numerator, c.denominator) for c in coefficients])(x)
+    with flint.ctx.workprec(200):
+        point = {"x": flint.arb(x), "y": flint.arb(7)}
+    for evaluate in (Horner(terms, ("x", "y"), 128, 4, variable=0), Evaluator(terms, ("x", "y"), 128, 4)):
+        value = evaluate(point)
+        with flint.ctx.workprec(400):  # the exact value as a ball far narrower than either
+            assert (value - flint.arb(exact)).contains(0) and value.rad() < flint.arb(2) ** -100
