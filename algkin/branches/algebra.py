@@ -29,8 +29,9 @@ def tidy_ratio(expr: sympy.Expr) -> sympy.Expr:
 
 
 def tidy_product(*factors: sympy.Expr) -> sympy.Expr:
-    """The product of ``factors`` with every numeric content gathered in front."""
-    parts = [_primitive(sympy.expand(f)) for f in factors]
+    """The product of ``factors``, each expanded already (reduced on the circles), with every numeric
+    content gathered in front."""
+    parts = [_primitive(f) for f in factors]
     return sympy.Mul(*[c for c, _ in parts], *[sympy.factor_terms(p) for _, p in parts])
 
 

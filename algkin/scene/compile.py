@@ -20,6 +20,7 @@ from ..runtime import suggest
 from ..errors import SceneError, UsageError
 from ..runtime.frozen import FrozenDict, frozen
 from ..system import System, symbol
+from ..system.convert import rational_polynomial
 from .constructions import Builder, Construction, Crank, Dyad, Indicator, Unbuildable
 from .driven import driven_angles, root_of
 from .expr import MAX_VALUE_BITS, bits_bound, irrational
@@ -388,6 +389,8 @@ def _check_rational(scene: Scene, name: str, expressions: Sequence[sympy.Expr]) 
     """The point's coordinates and equations are over the rationals: an irrational number such as
     ``sqrt(2)`` in them (a fixed point's coordinate, a crank's length) is a scene error, named."""
     for expr in expressions:
+        if rational_polynomial(expr):  # the common case, decided in python-flint; else sympy finds the number
+            continue
         numbers = [p for p in sympy.expand(expr).atoms(sympy.Pow) if p.is_number and not p.is_Rational]
         if numbers:
             raise SceneError(scene.source, f"points.{name}", f"{numbers[0]} makes its coordinates irrational: "

@@ -23,7 +23,7 @@ from flint.utils.flint_exceptions import DomainError
 from ..evaluate import NumberKind, evaluate
 from .core import symbol
 
-__all__ = ["flint_context", "to_flint", "coefficients", "from_terms", "to_sympy", "sympy_text", "to_flint_integer", "fmpq_to_rational", "univariate"]
+__all__ = ["flint_context", "to_flint", "rational_polynomial", "coefficients", "from_terms", "to_sympy", "sympy_text", "to_flint_integer", "fmpq_to_rational", "univariate"]
 
 
 def flint_context(names: Iterable[str], ordering: str = "lex") -> flint.fmpq_mpoly_ctx:
@@ -53,6 +53,21 @@ def to_flint(expr: sympy.Expr | sympy.Poly, ctx: flint.fmpq_mpoly_ctx) -> flint.
         return evaluate(expr, dict(zip((str(n) for n in ctx.names()), ctx.gens())), kind)
     except DomainError:  # python-flint's quotient that is not exact
         _not_polynomial(str(expr))
+
+
+def rational_polynomial(expr: sympy.Expr) -> bool:
+    """Whether ``expr``, as written, is a polynomial with rational coefficients (python-flint takes
+    it: no ``sympy.Poly`` and its domain built to ask).
+
+    >>> x = symbol("x")
+    >>> rational_polynomial(x**2 / 3 - 1), rational_polynomial(sympy.sqrt(2) * x), rational_polynomial(x / 2.5)
+    (True, False, False)
+    """
+    try:
+        to_flint(expr, flint_context(sorted({v.name for v in expr.free_symbols}) or ["_"]))
+    except TypeError:  # a root, a float, a quotient, an unknown function
+        return False
+    return True
 
 
 def coefficients(expr: sympy.Expr, gens: Sequence[sympy.Symbol]) -> dict[tuple[int, ...], sympy.Expr]:

@@ -85,13 +85,14 @@ class System:
     nonnegative: tuple[str, ...] = ()
 
     def __attrs_post_init__(self) -> None:
+        from .convert import rational_polynomial  # convert builds on this module
+
         known = set(self.variables)
         for eq in self.equations:
             stray = set(variables_of(eq)) - known
             if stray:
                 raise ComputationError(f"equation {eq} uses undeclared variables {sorted(stray)}")
-            gens = sorted(eq.free_symbols, key=str) or [symbol("_")]
-            if sympy.Poly(eq, *gens).domain not in (sympy.ZZ, sympy.QQ):
+            if not rational_polynomial(eq):
                 raise ComputationError(f"equation {eq} has coefficients outside the rationals")
 
     @property
