@@ -5,6 +5,7 @@ import flint
 import sympy
 from hypothesis import given, settings, strategies as st
 
+from algkin.scene.implicit import algebra
 from algkin.scene.implicit.algebra import _reduced_in_sympy, reduce_exact_on_circles, reduce_on_circles
 from algkin.system import symbol
 from algkin.system.convert import to_sympy
@@ -62,3 +63,15 @@ def test_two_symbols_of_one_name_are_left_to_sympy():
         assert one != other
         expr = (one + other + CIRCLES[0][1]) ** 2
         assert reduce_on_circles(expr, CIRCLES) == _reduced_in_sympy(expr, CIRCLES)
+
+
+def test_a_root_goes_to_sympy_without_python_flint_reading_the_rest(monkeypatch):
+    # a later dyad's closed form holds an earlier one's root: python-flint would refuse it only after
+    # evaluating everything else (tens of milliseconds on a six-bar)
+    def unexpected(expr, ring):
+        raise AssertionError(f"python-flint asked to read {expr}")
+
+    monkeypatch.setattr(algebra, "to_flint", unexpected)
+    c, s = CIRCLES[0]
+    expr = (s * sympy.sqrt(5 - 4 * c) + c) ** 2 / (8 * c - 17)
+    assert reduce_on_circles(expr, CIRCLES) == sympy.expand(expr)

@@ -40,6 +40,8 @@ def _reduced_in_flint(expr: sympy.Expr, inputs: Circles) -> sympy.Expr | None:
     """``reduce_on_circles`` of a polynomial with rational coefficients, through python-flint; None
     for anything else (a root, a quotient by a polynomial, two symbols of one name: a ``Dummy`` and a
     ``Symbol``, or a real symbol and a plain one)."""
+    if any(not p.exp.is_Integer for p in expr.atoms(sympy.Pow)):  # a root: ``to_flint`` would refuse it, after
+        return None  # evaluating the rest (most of a later dyad's closed form, in vain)
     every = expr.free_symbols | {v for circle in inputs for v in circle}
     symbols = {v.name: v for v in every}  # the names python-flint's ring and ``to_flint`` know them by
     if len(symbols) != len(every):
