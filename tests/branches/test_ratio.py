@@ -26,6 +26,7 @@ def test_a_later_dyads_ratio_in_flint():
 def test_what_the_argument_does_not_cover_is_left_to_sympy():
     root = sympy.sqrt(5 - 4 * C)
     assert cancelled(C / (S * root + 1) + 1) is None  # a root in a denominator of a sum's term
+    assert cancelled(X / (root + 1) + 1 / (root - 1) + C) is None  # sympy's common denominator matters
     assert cancelled(X / sympy.sqrt(C + 1)) is None  # a root's inverse
     assert cancelled(sympy.sqrt(2) * X / (X + 1)) is None  # a number's root
     assert cancelled(sympy.sqrt(2 * C + 2) * X / (X + 1)) is None  # a radicand sympy's preparation rewrites
@@ -57,21 +58,22 @@ def _closed_form(draw, depth=2):
     return combined ** draw(st.sampled_from([1, 1, 2, -1] if depth < 2 else [1, -1]))
 
 
+ROOTS = [-1024 * C**2 - 1088 * C + 6767, 5 - 4 * C, C * X + S - 3, 2 * C + 2]  # the last: rewritten by sympy
+ROOTED = [sympy.sqrt(5 - 4 * C) + 1, sympy.sqrt(5 - 4 * C) - 1]  # roots in a term's denominator: sympy's path
+
+
 @st.composite
 def _terms_over_polynomials(draw):
     """A sum as reduce_on_circles leaves a later dyad's coordinate: each term a number times a monomial,
-    maybe a root, maybe over a polynomial without one; maybe squared, unexpanded."""
+    maybe a root, maybe over a polynomial (one with a root: sympy's path); maybe squared, unexpanded."""
     terms = []
     for _ in range(draw(st.integers(1, 4))):
         monomial = sympy.Mul(*draw(st.lists(st.sampled_from(SYMBOLS), max_size=2)))
         root = sympy.sqrt(draw(st.sampled_from(ROOTS))) if draw(st.booleans()) else 1
-        over = draw(st.sampled_from([1, 1, 8 * C - 17, 128 * C - 272, X + 1, C**2 - 2 * X + 3]))
+        over = draw(st.sampled_from([1, 1, 8 * C - 17, 128 * C - 272, X + 1, C**2 - 2 * X + 3, *ROOTED]))
         terms.append(sympy.Rational(draw(st.integers(-20, 20)), draw(st.integers(1, 4))) * monomial * root / over)
     total = sympy.Add(*terms)
     return total ** draw(st.sampled_from([1, 1, 2]))
-
-
-ROOTS = [-1024 * C**2 - 1088 * C + 6767, 5 - 4 * C, C * X + S - 3, 2 * C + 2]  # the last: rewritten by sympy
 
 
 @pytest.mark.slow  # about 30 s: sympy's cancel on each draw
