@@ -6,6 +6,7 @@ import sympy
 from sympy.core.mul import _keep_coeff
 
 from ..scene.implicit.algebra import Circles, reduce_on_circles
+from .ratio import cancelled
 
 __all__ = ["reducer", "tidy_ratio", "tidy_product", "tidy_sqrt", "readable"]
 
@@ -22,7 +23,21 @@ def _primitive(expr: sympy.Expr) -> tuple[sympy.Expr, sympy.Expr]:
 
 
 def tidy_ratio(expr: sympy.Expr) -> sympy.Expr:
-    """A ratio of polynomials as ``k * p / q`` with ``p``, ``q`` primitive: ``(80*c - 103)/(8*(20*c - 29))``."""
+    """A ratio of polynomials as ``k * p / q`` with ``p``, ``q`` primitive: ``(80*c - 103)/(8*(20*c - 29))``;
+    cancelled in python-flint where that gives sympy's expression for sure (``cancelled``).
+
+    >>> c = sympy.Symbol("c")
+    >>> tidy_ratio((sympy.Rational(55, 4) - 8*c) / (34 - 16*c))
+    (32*c - 55)/(8*(8*c - 17))
+    """
+    fast = cancelled(expr)
+    if fast is not None:
+        k, p, q = fast
+        return sympy.Mul(k, p, 1 / q)
+    return _tidy_ratio_in_sympy(expr)
+
+
+def _tidy_ratio_in_sympy(expr: sympy.Expr) -> sympy.Expr:
     numerator, denominator = sympy.fraction(sympy.cancel(expr))
     (cn, pn), (cd, pd) = _primitive(numerator), _primitive(denominator)
     return sympy.Mul(cn / cd, pn, 1 / pd)  # one Mul: a product by a number would spread it back in

@@ -12,6 +12,7 @@ in the closed forms of the points it is built on; a branch is one label per poin
 c_angle/2 + s_angle*sqrt((5 - 4*c_angle)*(c_angle + 5))/(5 - 4*c_angle) + 1
 """
 
+import functools
 import itertools
 
 import attrs
@@ -92,8 +93,8 @@ def _branch(compiled: Compiled, chosen: dict[str, str], built: dict[tuple[int, t
         sigma = spec.sign(chosen[spec.point]) if spec.labels else 1
         algebra = algebra_of(spec)
         before = (index, tuple(chosen[s.point] for s in specs[:index] if s.labels))
-        if before not in built:
-            built[before] = algebra.modes(substitution, inputs=inputs)
+        if before not in built:  # each mode built once, for every branch it is in
+            built[before] = functools.cache(algebra.modes(substitution, inputs=inputs))
         (x, y), discriminants[spec.point] = built[before](sigma)
         if algebra.square:
             squares.add(spec.point)

@@ -96,3 +96,14 @@ def test_branches_share_the_algebra_before_their_labels_differ(monkeypatch):
     assert len(reductions) == 3
     left, right = branches[0].values, branches[1].values
     assert left["B_x"] == right["B_x"] and left["F_x"] != right["F_x"]
+
+
+def test_each_dyads_modes_built_once_for_the_branches_they_are_in(monkeypatch):
+    # Stephenson III: B's two modes on the crank, F's on each of B's: three square roots taken,
+    # one per dyad algebra (B once, F once per label of B), not one per branch and point (eight)
+    from algkin.branches.constructions import dyad
+
+    roots = []
+    monkeypatch.setattr(dyad.sympy, "sqrt", lambda expr: roots.append(expr) or sympy.Pow(expr, sympy.S.Half))
+    branches = closed_forms(compile_scene(load_scene("stephenson-iii"), ["P"]))
+    assert len(branches) == 4 and len(roots) == 3

@@ -5,6 +5,7 @@ import flint
 import sympy
 from hypothesis import given, settings, strategies as st
 
+from algkin.scene.implicit import algebra
 from algkin.scene.implicit.algebra import _reduced_in_sympy, reduce_exact_on_circles, reduce_on_circles
 from algkin.system import symbol
 from algkin.system.convert import to_sympy
@@ -62,3 +63,43 @@ def test_two_symbols_of_one_name_are_left_to_sympy():
         assert one != other
         expr = (one + other + CIRCLES[0][1]) ** 2
         assert reduce_on_circles(expr, CIRCLES) == _reduced_in_sympy(expr, CIRCLES)
+
+
+def test_a_root_goes_to_sympy_without_python_flint_reading_the_rest(monkeypatch):
+    # a later dyad's closed form holds an earlier one's root: python-flint would refuse it only after
+    # evaluating everything else (tens of milliseconds on a six-bar)
+    def unexpected(expr, ring):
+        raise AssertionError(f"python-flint asked to read {expr}")
+
+    monkeypatch.setattr(algebra, "to_flint", unexpected)
+    c, s = CIRCLES[0]
+    expr = (s * sympy.sqrt(5 - 4 * c) + c) ** 2 / (8 * c - 17)
+    assert reduce_on_circles(expr, CIRCLES) == sympy.expand(expr)
+
+
+_MONOMIAL_SUMS = [5 - 4 * CIRCLES[0][0], 128 * CIRCLES[0][0] - 272, CIRCLES[0][0] * symbol("x") + CIRCLES[0][1] / 3 - 1,
+                  16384 * CIRCLES[0][0] ** 2 - 69632 * CIRCLES[0][0] + 73984]
+
+
+@st.composite
+def _shifted_closed_form(draw):
+    """A later dyad's coordinate as reduce_on_circles meets it: terms with roots and reciprocals of sums,
+    expanded by sympy or not, then maybe negated and shifted by a number."""
+    terms = []
+    for _ in range(draw(st.integers(1, 5))):
+        factors = draw(st.lists(st.sampled_from([*(v for circle in CIRCLES for v in circle), symbol("x")]), max_size=3))
+        factors += [sympy.sqrt(b) for b in draw(st.lists(st.sampled_from(_MONOMIAL_SUMS), max_size=2))]
+        factors += [1 / b for b in draw(st.lists(st.sampled_from(_MONOMIAL_SUMS), max_size=2))]
+        k = sympy.Rational(draw(st.integers(-40, 40)), draw(st.sampled_from([1, 1, 2, 3])))
+        terms.append(sympy.Mul(k, *factors))
+    total = sympy.Add(*terms)
+    total = sympy.expand(total) if draw(st.booleans()) else total
+    return draw(st.sampled_from([1, -1])) * total + sympy.Rational(draw(st.integers(-9, 9)), draw(st.integers(1, 4)))
+
+
+@settings(max_examples=200, deadline=None)
+@given(_shifted_closed_form())
+def test_what_is_expanded_already_is_given_back_as_sympy_would(expr):
+    assert reduce_on_circles(expr, CIRCLES) == _reduced_in_sympy(expr, CIRCLES)
+    if algebra._expanded_already(expr):
+        assert sympy.expand(expr) == expr

@@ -58,9 +58,10 @@ class DyadAlgebra(BranchAlgebra):
         along = tidy_ratio((l1**2 - l2**2 + dist2) / (2 * dist2))
         disc = tidy_product(reduce((l1 + l2) ** 2 - dist2), reduce(dist2 - (l1 - l2) ** 2))
         spread = tidy_product(dist2)
+        half_root = sympy.sqrt(disc) / 2  # both modes' (the root of a product: sympy asks each factor's sign)
 
         def mode(sigma: int) -> tuple[Point, sympy.Expr]:
-            across = sigma * (sympy.sqrt(disc) / 2) / spread
+            across = sigma * half_root / spread
             return (px + along * dx - across * dy, py + along * dy + across * dx), disc
         return mode
 

@@ -9,6 +9,8 @@ from ...system.convert import from_terms, to_flint
 
 __all__ = ["Circles", "reduce_on_circles", "reduce_exact_on_circles"]
 
+HALF = sympy.Rational(1, 2)
+
 Circles = Sequence[tuple[sympy.Symbol, sympy.Symbol]]  # each input's (cos, sin) symbols
 
 
@@ -23,8 +25,51 @@ def reduce_on_circles(expr: sympy.Expr, inputs: Circles) -> sympy.Expr:
     >>> reduce_on_circles((s * x + c) ** 2, [(c, s)]), reduce_on_circles(s / x, [(c, s)])
     (-c**2*x**2 + c**2 + 2*c*s*x + x**2, s/x)
     """
+    if _expanded_already(expr):  # no polynomial, and what ``sympy.expand`` gives back as it is
+        return expr
     reduced = _reduced_in_flint(expr, inputs)
     return reduced if reduced is not None else _reduced_in_sympy(expr, inputs)
+
+
+def _expanded_already(expr: sympy.Expr) -> bool:
+    """Whether ``expr`` is a sum that is no polynomial and that ``sympy.expand`` leaves as it is (a
+    later dyad's closed form, reduced once, then shifted by a number): each term a number times
+    powers of symbols, roots of sums of such monomials, and at most one reciprocal of one such sum,
+    the number then an integer (``expand`` would move its denominator into the sum's).
+
+    >>> c, s = sympy.symbols("c s")
+    >>> root = sympy.sqrt(5 - 4 * c)
+    >>> _expanded_already(3 * c**2 / (8 * c - 17) + s * root / 2 - 1)
+    True
+    >>> half = c / 2 / (8 * c - 17)
+    >>> _expanded_already(half + s), sympy.expand(half + s)
+    (False, c/(16*c - 34) + s)
+    """
+    if not expr.is_Add:
+        return False
+    polynomial = True
+    for term in expr.args:
+        coefficient, factors = term.as_coeff_mul()
+        roots = [f for f in factors if f.is_Pow and f.exp == HALF and _monomial_sum(f.base)]
+        reciprocals = [f for f in factors if f.is_Pow and f.exp == -1 and _monomial_sum(f.base)]
+        if len(roots) + len(reciprocals) + sum(1 for f in factors if _monomial(f)) != len(factors):
+            return False
+        if not coefficient.is_Rational or len(reciprocals) > 1 or (reciprocals and not coefficient.is_Integer):
+            return False
+        polynomial = polynomial and not roots and not reciprocals
+    return not polynomial
+
+
+def _monomial(factor: sympy.Expr) -> bool:
+    """A symbol or its positive integer power."""
+    return bool(factor.is_Symbol or (factor.is_Pow and factor.base.is_Symbol and factor.exp.is_Integer
+                                     and factor.exp > 0))
+
+
+def _monomial_sum(expr: sympy.Expr) -> bool:
+    """A sum of rational multiples of products of ``_monomial`` factors (what ``expand`` gives back)."""
+    return bool(expr.is_Add) and all(
+        k.is_Rational and all(_monomial(f) for f in rest) for k, rest in (t.as_coeff_mul() for t in expr.args))
 
 
 def _reduced_in_sympy(expr: sympy.Expr, inputs: Circles) -> sympy.Expr:
@@ -40,6 +85,8 @@ def _reduced_in_flint(expr: sympy.Expr, inputs: Circles) -> sympy.Expr | None:
     """``reduce_on_circles`` of a polynomial with rational coefficients, through python-flint; None
     for anything else (a root, a quotient by a polynomial, two symbols of one name: a ``Dummy`` and a
     ``Symbol``, or a real symbol and a plain one)."""
+    if any(not p.exp.is_Integer for p in expr.atoms(sympy.Pow)):  # a root: ``to_flint`` would refuse it, after
+        return None  # evaluating the rest (most of a later dyad's closed form, in vain)
     every = expr.free_symbols | {v for circle in inputs for v in circle}
     symbols = {v.name: v for v in every}  # the names python-flint's ring and ``to_flint`` know them by
     if len(symbols) != len(every):
