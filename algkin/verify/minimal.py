@@ -40,12 +40,16 @@ class FactorCheck:
         self.factors = {name: [(f, polynomial(f)) for f in fs] for name, fs in (factors or {}).items()}
         self.smallest = {name: [math.inf] * len(fs) for name, fs in self.factors.items()}
 
-    def see(self, residual_of: Callable[[Polynomial], float]) -> None:
-        """Take one certified root into account; ``residual_of(polynomial)`` is its residual there."""
+    def polynomials(self) -> list[Polynomial]:
+        """The kept factors' ``Polynomial``s, each factor's, in order (the same one may come twice)."""
+        return [polynomial for pairs in self.factors.values() for _, polynomial in pairs]
+
+    def see(self, residual_of: Mapping[int, float]) -> None:
+        """Take one certified root into account; ``residual_of[id(polynomial)]`` is its residual there."""
         for name, pairs in self.factors.items():
             best = self.smallest[name]
             for k, (_, polynomial) in enumerate(pairs):
-                best[k] = min(best[k], residual_of(polynomial))
+                best[k] = min(best[k], residual_of[id(polynomial)])
 
     def failures(self, tolerance: float, evaluated: int) -> list[str]:
         """One message per kept factor that vanished on no certified root."""

@@ -99,36 +99,50 @@ class Polynomial:
         self.inner = max(range(len(keep)), key=lambda k: max(m[k] for m in terms)) if keep else None
         self.groups = _groups(terms, self.inner)
         self.outer = [n for k, n in enumerate(self.names) if k != self.inner]
+        # where each variable sits among ``names``, for ``at``: the inner one, then the outer ones
+        self.slots = [list(names).index(n) for n in
+                      ([] if self.inner is None else [self.names[self.inner]]) + self.outer]
+        # each outer variable's highest power, and each group's outer powers that are not 0
+        self.tops = [max(m[k] for m in self.groups) for k in range(len(self.outer))]
+        self.raised = {m: [(k, e) for k, e in enumerate(m) if e] for m in self.groups}
         self.exponents = np.array(list(terms) or [()], dtype=float).reshape(len(terms) or 1, len(keep))
         self.sizes = np.array([abs(float(c)) for c in terms.values()] or [0.0])
         # (precision, the groups as arb_poly at it): made on first use, remade when the precision changes
-        self.made: tuple[int | None, dict[tuple[int, ...], flint.arb_poly]] = (None, {})
+        self.made: tuple[int | None, tuple[list[tuple[flint.arb_poly, list[tuple[int, int]]]],
+                                           list[flint.arb_poly | None]]] = (None, ([], []))
 
     def balls(self, values: Mapping[str, flint.arb]) -> flint.arb:
         """``p / scale`` at ``values`` (name -> ball), a ball."""
-        polys = self._polys()
         if self.inner is None:
-            return sum((p(0) for p in polys.values()), flint.arb(0))
-        x = values[self.names[self.inner]]
-        if len(self.outer) == 1:  # a curve: Horner in the other coordinate, no table of powers
-            return self._horner(polys, x, values[self.outer[0]])
-        outer = [values[n] for n in self.outer]
-        powers = [_powers(v, max(m[k] for m in polys)) for k, v in enumerate(outer)]
-        total = flint.arb(0)
-        for monomial, poly in polys.items():
-            term = poly(x)
-            for k, e in enumerate(monomial):
-                if e:
-                    term = term * powers[k][e]
-            total += term
-        return total
+            return self._value(None, [])
+        return self._value(values[self.names[self.inner]], [values[n] for n in self.outer])
 
-    def _horner(self, polys: dict[tuple[int, ...], flint.arb_poly], x: flint.arb, y: flint.arb) -> flint.arb:
-        top = max(m[0] for m in polys)
-        total = polys[(top,)](x)
-        for e in range(top - 1, -1, -1):
-            poly = polys.get((e,))
-            total = total * y if poly is None else total * y + poly(x)
+    def at(self, values: Sequence[flint.arb]) -> flint.arb:
+        """``p / scale`` at ``values``, one ball per name of the ``names`` it was made with, in
+        their order: ``balls`` without a mapping (the same ball)."""
+        if self.inner is None:
+            return self._value(None, [])
+        slots = self.slots
+        return self._value(values[slots[0]], [values[k] for k in slots[1:]])
+
+    def _value(self, x: flint.arb | None, outer: list[flint.arb]) -> flint.arb:
+        """``p / scale`` with its inner variable at ``x`` and its outer ones at ``outer``."""
+        groups, horner = self._polys()
+        if x is None:
+            return sum((p(0) for p, _ in groups), flint.arb(0))
+        if len(outer) == 1:  # a curve: Horner in the other coordinate, no table of powers
+            y = outer[0]
+            total = horner[0](x)  # type: ignore[misc]  # the highest power's group is never missing
+            for poly in horner[1:]:
+                total = total * y if poly is None else total * y + poly(x)
+            return total
+        powers = [_powers(v, top) for v, top in zip(outer, self.tops)]
+        total = flint.arb(0)
+        for poly, raised in groups:
+            term = poly(x)
+            for k, e in raised:
+                term = term * powers[k][e]
+            total += term
         return total
 
     def magnitude(self, values: Mapping[str, NDArray[np.float64]]) -> NDArray[np.float64]:
@@ -138,11 +152,14 @@ class Polynomial:
         points = np.abs(np.stack([np.asarray(values[n], dtype=float) for n in self.names], axis=-1))
         return np.asarray(np.prod(points[:, None, :] ** self.exponents[None], axis=-1) @ self.sizes, dtype=np.float64)
 
-    def _polys(self) -> dict[tuple[int, ...], flint.arb_poly]:
-        """The groups as ``arb_poly``, remade when the working precision changed."""
+    def _polys(self) -> tuple[list[tuple[flint.arb_poly, list[tuple[int, int]]]], list[flint.arb_poly | None]]:
+        """The groups as ``arb_poly`` with their outer powers, and (one outer variable) the groups
+        by outer power from the highest down for Horner: remade when the working precision changed."""
         precision = flint.ctx.prec
         if self.made[0] != precision:
-            self.made = (precision, {m: _arb_poly(terms) for m, terms in self.groups.items()})
+            polys = {m: _arb_poly(terms) for m, terms in self.groups.items()}
+            horner = [polys.get((e,)) for e in range(self.tops[0], -1, -1)] if len(self.outer) == 1 else []
+            self.made = (precision, ([(p, self.raised[m]) for m, p in polys.items()], horner))
         return self.made[1]
 
 
