@@ -19,6 +19,7 @@ in floats for all samples at once (``Pencil.solve``) and in balls for one sample
 
 from __future__ import annotations
 
+import operator
 from collections.abc import Mapping, Sequence
 from typing import TypeAlias
 
@@ -108,16 +109,18 @@ class Pencil:
 
         Both roots are enclosed at once (a sample's candidates share their ``known`` balls)."""
         last_known, roots, middles = self._last
-        if last_known is None or len(last_known) != len(known) or any(a is not b for a, b in zip(last_known, known)):
-            roots = self._roots([arb(c) for c in self.coefficients(*known)])
-            middles = None if roots is None else [[float(b.mid()) for b in root] for root in roots]
+        if last_known is None or len(last_known) != len(known) or not all(map(operator.is_, last_known, known)):
+            roots = self._roots([c if type(c) is arb else arb(c) for c in self.coefficients(*known)])
+            middles = None if roots is None else [[float(b) for b in root] for root in roots]
             self._last = (tuple(known), roots, middles)
         if roots is None or middles is None:
             return None
-        gaps = [max(abs(m - c) for m, c in zip(middle, candidate)) for middle in middles]
-        gap, root = min(zip(gaps, roots), key=lambda pair: pair[0])
+        u, v = candidate
+        (u0, v0), (u1, v1) = middles
+        near, far = max(abs(u0 - u), abs(v0 - v)), max(abs(u1 - u), abs(v1 - v))
+        gap, root = (far, roots[1]) if far < near else (near, roots[0])  # the nearer root, the first if both are
         # a candidate far from both roots is no float solution: nothing is proved next to it
-        return root if gap <= NEAR * max(1.0, *(abs(c) for c in candidate)) else None
+        return root if gap <= NEAR * max(1.0, abs(u), abs(v)) else None
 
     @staticmethod
     def _roots(coefficients: list[arb]) -> list[Enclosure] | None:

@@ -171,14 +171,14 @@ def solve_floats(blocks: Blocks, known: Mapping[str, Floats], rng: np.random.Gen
     values = {n: np.broadcast_to(np.asarray(v, dtype=float), (count,)) for n, v in known.items()}
     parents, inverses = [], []
     for block in blocks.blocks:
-        scale = _scale(values, blocks.size, len(owner))
         if block.coefficients is not None:
             parent, found = _univariate(block, values)
         elif block.pencil is not None and starts <= STARTS:  # a retry searches by Newton, more widely
             parent, first, second = block.pencil.solve(values, len(owner))
             found = dict(zip(block.names, (first, second)))
         else:
-            parent, found = _newton(block, values, scale=scale, rng=rng, starts=starts)
+            parent, found = _newton(block, values, scale=_scale(values, blocks.size, len(owner)), rng=rng,
+                                    starts=starts)
         parents.append(parent)
         owner = owner[parent]
         values = {n: v[parent] for n, v in values.items()}
@@ -230,6 +230,10 @@ def _univariate(block: _Block, values: Mapping[str, Floats]) -> tuple[Rows, dict
         if degree < 1:
             continue
         monic = coeffs[rows, first + 1:] / coeffs[rows, first][:, None]
+        if degree == 1 and _plain(monic):  # the 1 x 1 companion's eigenvalue, as LAPACK gives it
+            parents.append(rows)
+            roots.append(-monic[:, 0])
+            continue
         companion = np.zeros((len(rows), degree, degree))
         companion[:, 0, :] = -monic
         companion[:, np.arange(1, degree), np.arange(degree - 1)] = 1
@@ -239,6 +243,17 @@ def _univariate(block: _Block, values: Mapping[str, Floats]) -> tuple[Rows, dict
         roots.append(eig.real[real])
     parent = np.concatenate(parents) if parents else np.zeros(0, dtype=int)
     return parent, {block.names[0]: np.concatenate(roots) if roots else np.zeros(0)}
+
+
+def _plain(values: Floats) -> bool:
+    """Whether every value is 0 or within 1e-130 and 1e130 in size: where LAPACK's eigenvalue of a
+    1 x 1 matrix is its entry, exactly (it rescales a matrix near the floats' ends, and refuses nan).
+
+    >>> _plain(np.array([[0.0], [-2.5e100]])), _plain(np.array([[1e200]])), _plain(np.array([[np.nan]]))
+    (True, False, False)
+    """
+    size = np.abs(values)
+    return bool(np.all((size == 0) | ((size > 1e-130) & (size < 1e130))))
 
 
 def _newton(block: _Block, values: Mapping[str, Floats], *, scale: Floats, rng: np.random.Generator,
