@@ -63,12 +63,11 @@ class BlockCertifier:
     """Proves float candidates of one block: ``equations`` in ``names``, given ``parameters``."""
 
     def __init__(self, names: Sequence[str], equations: Sequence[sympy.Expr], parameters: Sequence[str]) -> None:
-        unknowns = [symbol(n) for n in names]
-        arguments = list(names) + list(parameters)
+        unknowns = self.unknowns = [symbol(n) for n in names]
+        self.equations, self.arguments = list(equations), list(names) + list(parameters)
         self.n = len(names)
         self.linear = all(sum(m) <= 1 for eq in equations for m in coefficients(eq, unknowns))
-        self.residual: BallProgram = compile_program(list(equations), arguments, ARB)
-        self.jacobian: BallProgram = compile_program(jacobian(list(equations), unknowns), arguments, ARB)
+        self.residual: BallProgram = compile_program(self.equations, self.arguments, ARB)
         self.identity = arb_mat([[int(i == j) for j in range(self.n)] for i in range(self.n)])
         self.explicit = _explicit(equations, unknowns, parameters)
         self.pencil = Pencil.of(equations, unknowns, list(parameters))
@@ -103,6 +102,12 @@ class BlockCertifier:
             if root is not None:
                 return root
         return None
+
+    @functools.cached_property
+    def jacobian(self) -> BallProgram:
+        """The Jacobian as a program, differentiated when first needed: a block its pencil or its
+        formula proves never needs it."""
+        return compile_program(jacobian(self.equations, self.unknowns), self.arguments, ARB)
 
     def _linear(self, x: list[arb], known: Sequence[arb]) -> list[arb] | None:
         """``x - J^-1 F(x)`` in balls: exactly the root, for every parameter in its ball."""

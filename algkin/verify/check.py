@@ -17,7 +17,6 @@ from __future__ import annotations
 import enum
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
-from fractions import Fraction
 from typing import Any, TypeAlias
 
 import attrs
@@ -33,7 +32,7 @@ from ..runtime.frozen import FrozenDict, frozen
 from ..system import System, input_values
 from .balls import Block, BlockCertifier, certifier_of, certify_parameters
 from .minimal import FactorCheck, structure_failures
-from .residual import ExactValue, Polynomial, PolynomialLike, polynomial_of
+from .residual import ExactValue, Polynomial, PolynomialLike, fraction, polynomial_of
 from .solve import STARTS, blocks_of, solve_floats
 from .tally import Tally
 
@@ -161,7 +160,7 @@ class _Plan:
         self.certifiers: list[tuple[Block, BlockCertifier, list[str]]] = [
             (block, certifier_of(block), certify_parameters(block)) for block in self.blocks.blocks]
         self.known = [v for v in system.variables if v not in system.unknowns]
-        self.parameters = {n: Fraction(str(v)) for n, v in parameters.items()}
+        self.parameters = {n: fraction(v) for n, v in parameters.items()}
         self._balls_made: tuple[int | None, dict[str, flint.arb]] = (None, {})
         # a polynomial may keep the dimensions symbolic: they take their exact values in it
         dimensions = {n: v for n, v in self.parameters.items() if n not in system.variables}
@@ -188,8 +187,8 @@ class _Plan:
         # every polynomial evaluated on a root, once however many names it has (a kept factor may be
         # the polynomial itself)
         self.evaluated = list({id(p): p for p in [*self.polynomials.values(), *self.factors.polynomials()]}.values())
-        place = {id(p): k for k, p in enumerate(self.evaluated)}
-        self.worst = [(n, place[id(p)]) for n, p in self.polynomials.items()]
+        self.ids = [id(p) for p in self.evaluated]
+        self.worst = [(n, self.ids.index(id(p))) for n, p in self.polynomials.items()]
 
     def floats(self, angles: Mapping[str, Floats]) -> dict[str, Floats]:
         """The known variables as float arrays over the samples (``angles``: input -> radians, or lengths)."""
@@ -232,6 +231,7 @@ class _Branch:
                  discriminants: Mapping[str, sympy.Expr], known: list[str], *, unknowns: Sequence[str]) -> None:
         self.key = tuple(sorted(labels.items()))
         self.said = f"branch {dict(self.key)}"  # how its failures name it
+        self.off = f"{self.said}: its closed form is"
         self.unknowns = list(values)
         self.slots = [list(unknowns).index(u) for u in self.unknowns]  # where each value's unknown is in a root
         self.values, self.discriminants = list(values.values()), list(discriminants.values())
@@ -461,7 +461,7 @@ def _check_sample(report: Tally, plan: _Plan, sample: _Sample, *, magnitudes: li
         residuals = _residuals(plan.evaluated, root + sample.known, sizes)
         for name, k in plan.worst:
             worst[name] = max(worst[name], residuals[k])
-        plan.factors.see(dict(zip(map(id, plan.evaluated), residuals)))
+        plan.factors.see(dict(zip(plan.ids, residuals)))
     report.evaluated += len(sample.roots) if plan.polynomials else 0
     if sample.doubtful or None in sample.labels or None in sample.real:
         report.near_degenerate += 1
@@ -494,7 +494,7 @@ def _compare(report: Tally, plan: _Plan, sample: _Sample) -> None:
         # the detail is only read past the tolerance: written only there
         detail = "" if error <= MAX_ERROR * size else \
             f"{error:.3g} from the root of its label (relative {error / size:.3g})"
-        report.error(error, scale=size, tolerance=MAX_ERROR, said=f"{branch.said}: its closed form is", detail=detail)
+        report.error(error, scale=size, tolerance=MAX_ERROR, said=branch.off, detail=detail)
         report.compared += 1
     for key in by_label:
         # every label is decided here (_check_sample compares no sample with an undecided one)

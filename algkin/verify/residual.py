@@ -40,7 +40,7 @@ from numpy.typing import NDArray
 from ..evaluate import ARB
 from ..system.convert import flint_context, to_flint
 
-__all__ = ["Polynomial", "exact", "polynomial_of"]
+__all__ = ["Polynomial", "exact", "fraction", "polynomial_of"]
 
 # An eliminant as the elimination hands it over, or as a caller writes it
 PolynomialLike: TypeAlias = flint.fmpq_mpoly | flint.fmpz_mpoly | sympy.Expr
@@ -66,6 +66,22 @@ def polynomial_of(polynomial: PolynomialLike, names: Sequence[str],
 _BUILT: dict[tuple[tuple[str, ...], str, tuple[str, ...], tuple[tuple[str, str], ...]], Polynomial] = {}
 
 
+def fraction(value: ExactValue) -> Fraction:
+    """``value`` exactly as it is printed, ``Fraction(str(value))`` (a float as it is written, not
+    its binary value), without printing and parsing a rational.
+
+    >>> fraction(0.1), fraction(sympy.Rational(-3, 4)), fraction(Fraction(5, 2)), fraction(7)
+    (Fraction(1, 10), Fraction(-3, 4), Fraction(5, 2), Fraction(7, 1))
+    """
+    if isinstance(value, Fraction):
+        return value
+    if isinstance(value, sympy.Rational):
+        return Fraction(int(value.p), int(value.q))
+    if type(value) is int:
+        return Fraction(value)
+    return Fraction(str(value))
+
+
 def exact(polynomial: PolynomialLike) -> flint.fmpq_mpoly | flint.fmpz_mpoly:
     """``polynomial`` as an ``fmpq_mpoly`` (a sympy expression is converted, a flint one kept)."""
     if isinstance(polynomial, (flint.fmpq_mpoly, flint.fmpz_mpoly)):
@@ -83,7 +99,7 @@ class Polynomial:
         self.exact = poly = exact(polynomial)
         variables = [str(n) for n in poly.context().names()]
         degrees = poly.degrees()
-        known = {n: Fraction(str(v)) for n, v in (fixed or {}).items()}
+        known = {n: fraction(v) for n, v in (fixed or {}).items()}
         unknown = {v for v, d in zip(variables, degrees) if d} - set(names) - set(known)
         if unknown:
             raise ValueError(f"the polynomial {poly} has variables {sorted(unknown)} with no value")
@@ -91,12 +107,14 @@ class Polynomial:
                                               for n, v in known.items() if n in variables}
         # an fmpz_mpoly takes integer values only; the polynomials given values are fmpq_mpoly
         poly = poly.subs(given) if given else poly  # type: ignore[arg-type]
-        keep = [k for k, (n, d) in enumerate(zip(variables, poly.degrees())) if d and n not in given]
+        degrees = poly.degrees()
+        keep = [k for k, (n, d) in enumerate(zip(variables, degrees)) if d and n not in given]
         self.names = [variables[k] for k in keep]
-        terms = {tuple(int(m[k]) for k in keep): c for m, c in poly.to_dict().items()}
-        self.scale = _scale(terms.values())
-        terms = {m: flint.fmpq(c) / self.scale for m, c in terms.items()}
-        self.inner = max(range(len(keep)), key=lambda k: max(m[k] for m in terms)) if keep else None
+        raw = poly.to_dict()
+        self.scale = _scale(raw.values())
+        terms = {tuple([int(m[k]) for k in keep]): flint.fmpq(c) / self.scale for m, c in raw.items()}
+        # the variable of highest degree (the first of them) is the inner one
+        self.inner = max(range(len(keep)), key=lambda k: degrees[keep[k]]) if keep else None
         self.groups = _groups(terms, self.inner)
         self.outer = [n for k, n in enumerate(self.names) if k != self.inner]
         # where each variable sits among ``names``, for ``at``: the inner one, then the outer ones
@@ -170,7 +188,7 @@ def _scale(coefficients: Iterable[flint.fmpq | flint.fmpz]) -> flint.fmpq:
     >>> _scale([flint.fmpq(3, 4), flint.fmpz(-10) ** 400]) == flint.fmpq(2) ** 1328
     True
     """
-    bits = [int(c.p).bit_length() - int(c.q).bit_length() for c in map(flint.fmpq, coefficients) if c]
+    bits = [c.p.bit_length() - c.q.bit_length() for c in map(flint.fmpq, coefficients) if c]
     return flint.fmpq(2) ** max(bits) if bits else flint.fmpq(1)
 
 
