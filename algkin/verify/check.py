@@ -504,15 +504,15 @@ def _compare(report: Tally, plan: _Plan, sample: _Sample) -> None:
 
 def _size(root: Root) -> float:
     """The configuration's size: its largest coordinate (1 where all are 0)."""
-    return max(abs(float(v)) for v in root) or 1.0
+    return max(map(abs, map(float, root))) or 1.0
 
 
 def _error(branch: _Branch, values: list[flint.arb | int], root: Root) -> float:
     """The largest distance between the closed form and the root it must equal (an upper bound)."""
     error = 0.0
     for k, value in zip(branch.slots, values):
-        gap = abs(value - root[k])
-        error = max(error, float(gap.upper()) if gap.is_finite() else float("inf"))
+        gap = value - root[k]
+        error = max(error, float(gap.abs_upper()) if gap.is_finite() else float("inf"))  # the upper bound of |gap|
     return error
 
 
