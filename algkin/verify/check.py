@@ -15,7 +15,8 @@ of their label is solved again with more starts before the check says so.
 from __future__ import annotations
 
 import enum
-from collections.abc import Iterable, Mapping, Sequence
+import operator
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, TypeAlias
 
@@ -181,7 +182,7 @@ class _Plan:
         # A sample's balls are one list, ``names`` in order (its root, then its known values): each
         # block certified reads its parameters from it by position and writes its unknowns into it.
         slot = {n: k for k, n in enumerate(names)}
-        self.steps = [(certify, [slot[n] for n in parameters], [slot[n] for n in block.names])
+        self.steps = [(certify, _picker([slot[n] for n in parameters]), [slot[n] for n in block.names])
                       for block, certify, parameters in self.certifiers]
         self.nonnegative = [self.index[n] for n in system.nonnegative]
         # every polynomial evaluated on a root, once however many names it has (a kept factor may be
@@ -224,6 +225,17 @@ class _Plan:
         for branch in self.branches:
             real |= branch.real_floats(floats, self.known)
         return real
+
+
+def _picker(slots: list[int]) -> Callable[[list[flint.arb]], Sequence[flint.arb]]:
+    """The values at ``slots`` of a list, in their order: ``operator.itemgetter``, a tuple always.
+
+    >>> _picker([2, 0])("abc"), _picker([1])("abc"), _picker([])("abc")
+    (('c', 'a'), ('b',), ())
+    """
+    if len(slots) > 1:
+        return operator.itemgetter(*slots)
+    return (lambda values: (values[slots[0]],)) if slots else (lambda values: ())
 
 
 class _Branch:
@@ -384,8 +396,7 @@ def _certified(plan: _Plan, floats: Mapping[str, Floats], samples: list[_Sample]
             if key in proved:
                 enclosure = proved[key]
             else:
-                enclosure = proved[key] = certify(rows[b][row], [balls[i] for i in parameters],
-                                                  candidates.inverses[b][key[1]])
+                enclosure = proved[key] = certify(rows[b][row], parameters(balls), candidates.inverses[b][key[1]])
             if enclosure is None:
                 break
             for i, ball in zip(slots, enclosure):
@@ -395,7 +406,10 @@ def _certified(plan: _Plan, floats: Mapping[str, Floats], samples: list[_Sample]
             found[k] = roots, True
         else:
             root = balls[:len(unset)]
-            if not any(all(a.overlaps(c) for a, c in zip(root, r)) for r in roots):
+            for other in roots:
+                if all(map(flint.arb.overlaps, root, other)):
+                    break  # a root found already
+            else:
                 roots.append(root)
     for sample, (roots, doubtful) in zip(samples, found):
         sample.roots, sample.doubtful = _nonnegative(plan, roots, doubtful)

@@ -142,8 +142,7 @@ class Pencil:
         roots = []
         for t in both:
             dependent = p * t + r
-            pair = [t, dependent] if swap else [dependent, t]
-            if not all(x.is_finite() for x in pair):
+            if not (t.is_finite() and dependent.is_finite()):
                 return None
-            roots.append(pair)
+            roots.append([t, dependent] if swap else [dependent, t])
         return roots
