@@ -27,7 +27,7 @@ cannot be proved is reported as such, never used.
 from __future__ import annotations
 
 import functools
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Protocol
 
 import numpy as np
@@ -73,11 +73,12 @@ class BlockCertifier:
         self.pencil = Pencil.of(equations, unknowns, list(parameters))
 
     def __call__(self, candidate: Sequence[float], known: Sequence[arb],
-                 inverse: NDArray[np.float64] | None = None) -> list[arb] | None:
+                 inverse: NDArray[np.float64] | Callable[[], NDArray[np.float64]] | None = None) -> list[arb] | None:
         """The root's enclosure (one ball per unknown) next to ``candidate``, or ``None``.
 
         ``known`` lists the balls of the parameters, in order; ``inverse``, the Jacobian's
-        inverse in floats at the candidate, saves the first step its own inversion.
+        inverse in floats at the candidate (or a function making it, called only where it is
+        used), saves the first step its own inversion.
         """
         if self.explicit is not None:  # u = formula: its value in balls is the root's enclosure
             value = arb(self.explicit(*known)[0])  # a constant formula comes back as a Python integer
@@ -89,6 +90,8 @@ class BlockCertifier:
         x = [arb(float(v)) for v in candidate]
         if self.linear:
             return self._linear(x, known)
+        if callable(inverse):
+            inverse = inverse()
         if inverse is not None and not np.isnan(inverse[0, 0]):
             root = self._from_inverse(x, known, arb_mat(inverse.tolist()))
             if root is not None:

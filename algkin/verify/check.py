@@ -15,6 +15,7 @@ of their label is solved again with more starts before the check says so.
 from __future__ import annotations
 
 import enum
+import functools
 import operator
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -396,7 +397,9 @@ def _certified(plan: _Plan, floats: Mapping[str, Floats], samples: list[_Sample]
             if key in proved:
                 enclosure = proved[key]
             else:
-                enclosure = proved[key] = certify(rows[b][row], parameters(balls), candidates.inverses[b][key[1]])
+                # the Jacobian's inverse made only if the proof comes to it
+                enclosure = proved[key] = certify(rows[b][row], parameters(balls),
+                                                  functools.partial(candidates.inverses.at, *key))
             if enclosure is None:
                 break
             for i, ball in zip(slots, enclosure):

@@ -159,7 +159,33 @@ class Candidates:
     owner: Rows
     values: dict[str, Floats]
     lineage: list[Rows]
-    inverses: list[Floats]
+    inverses: Inverses
+
+
+class Inverses:
+    """Per block ``b``, ``inverses[b]``: its Jacobian's float inverse at each of its partial solutions
+    (``_inverses``), computed when first asked: a block its pencil or its formula proves needs none.
+    ``at(b, r)`` is ``inverses[b][r]``."""
+
+    def __init__(self) -> None:
+        self._blocks: list[tuple[_Block, Mapping[str, Floats], int]] = []
+        self._made: dict[int, Floats] = {}
+
+    def add(self, block: _Block, values: Mapping[str, Floats], count: int) -> None:
+        """The next block, solved: ``values`` over its ``count`` partial solutions (never changed after)."""
+        self._blocks.append((block, values, count))
+
+    def __getitem__(self, b: int) -> Floats:
+        if b not in self._made:
+            self._made[b] = _inverses(*self._blocks[b])
+        return self._made[b]
+
+    def __len__(self) -> int:
+        return len(self._blocks)
+
+    def at(self, b: int, r: int) -> Floats:
+        inverse: Floats = self[b][r]
+        return inverse
 
 
 def solve_floats(blocks: Blocks, known: Mapping[str, Floats], rng: np.random.Generator,
@@ -169,7 +195,7 @@ def solve_floats(blocks: Blocks, known: Mapping[str, Floats], rng: np.random.Gen
     count = len(next(iter(known.values()))) if known else 1
     owner = np.arange(count)
     values = {n: np.broadcast_to(np.asarray(v, dtype=float), (count,)) for n, v in known.items()}
-    parents, inverses = [], []
+    parents, inverses = [], Inverses()
     for block in blocks.blocks:
         if block.coefficients is not None:
             parent, found = _univariate(block, values)
@@ -183,7 +209,7 @@ def solve_floats(blocks: Blocks, known: Mapping[str, Floats], rng: np.random.Gen
         owner = owner[parent]
         values = {n: v[parent] for n, v in values.items()}
         values.update(found)
-        inverses.append(_inverses(block, values, len(owner)))
+        inverses.add(block, values, len(owner))
     lineage = [np.arange(len(owner))]
     for parent in reversed(parents[1:]):
         lineage.insert(0, parent[lineage[0]])
