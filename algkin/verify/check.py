@@ -190,6 +190,7 @@ class _Plan:
         # the polynomial itself)
         self.evaluated = list({id(p): p for p in [*self.polynomials.values(), *self.factors.polynomials()]}.values())
         self.ids = [id(p) for p in self.evaluated]
+        self.used = {n for p in self.evaluated for n in p.names}  # the variables their magnitudes read
         self.worst = [(n, self.ids.index(id(p))) for n, p in self.polynomials.items()]
 
     def floats(self, angles: Mapping[str, Floats]) -> dict[str, Floats]:
@@ -458,10 +459,11 @@ def _magnitudes(plan: _Plan, floats: Mapping[str, Floats], samples: list[_Sample
     owners = [k for k, sample in enumerate(samples) for _ in sample.roots]
     if not owners or not plan.polynomials:
         return [[[] for _ in sample.roots] for sample in samples]
-    floats = {n: v[owners] for n, v in floats.items()}
+    floats = {n: v[owners] for n, v in floats.items() if n in plan.used}
     flat = [root for sample in samples for root in sample.roots]
     for u, k in plan.index.items():
-        floats[u] = np.array([float(root[k]) for root in flat])
+        if u in plan.used:
+            floats[u] = np.array([float(root[k]) for root in flat])
     sizes = np.stack([np.broadcast_to(p.magnitude(floats), (len(flat),)) for p in plan.evaluated], axis=1).tolist()
     rows, start = [], 0
     for sample in samples:
