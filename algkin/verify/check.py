@@ -245,7 +245,7 @@ class _Branch:
                  discriminants: Mapping[str, sympy.Expr], known: list[str], *, unknowns: Sequence[str]) -> None:
         self.key = tuple(sorted(labels.items()))
         self.said = f"branch {dict(self.key)}"  # how its failures name it
-        self.off = f"{self.said}: its closed form is"
+        self.said_off = f"{self.said}: its closed form is"  # how an error past its tolerance is said
         self.unknowns = list(values)
         self.slots = [list(unknowns).index(u) for u in self.unknowns]  # where each value's unknown is in a root
         self.values, self.discriminants = list(values.values()), list(discriminants.values())
@@ -513,7 +513,7 @@ def _compare(report: Tally, plan: _Plan, sample: _Sample) -> None:
         # the detail is only read past the tolerance: written only there
         detail = "" if error <= MAX_ERROR * size else \
             f"{error:.3g} from the root of its label (relative {error / size:.3g})"
-        report.error(error, scale=size, tolerance=MAX_ERROR, said=branch.off, detail=detail)
+        report.error(error, scale=size, tolerance=MAX_ERROR, said=branch.said_off, detail=detail)
         report.compared += 1
     for key in by_label:
         # every label is decided here (_check_sample compares no sample with an undecided one)
