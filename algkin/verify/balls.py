@@ -27,7 +27,7 @@ cannot be proved is reported as such, never used.
 from __future__ import annotations
 
 import functools
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Protocol
 
 import numpy as np
@@ -63,22 +63,22 @@ class BlockCertifier:
     """Proves float candidates of one block: ``equations`` in ``names``, given ``parameters``."""
 
     def __init__(self, names: Sequence[str], equations: Sequence[sympy.Expr], parameters: Sequence[str]) -> None:
-        unknowns = [symbol(n) for n in names]
-        arguments = list(names) + list(parameters)
+        unknowns = self.unknowns = [symbol(n) for n in names]
+        self.equations, self.arguments = list(equations), list(names) + list(parameters)
         self.n = len(names)
         self.linear = all(sum(m) <= 1 for eq in equations for m in coefficients(eq, unknowns))
-        self.residual: BallProgram = compile_program(list(equations), arguments, ARB)
-        self.jacobian: BallProgram = compile_program(jacobian(list(equations), unknowns), arguments, ARB)
+        self.residual: BallProgram = compile_program(self.equations, self.arguments, ARB)
         self.identity = arb_mat([[int(i == j) for j in range(self.n)] for i in range(self.n)])
         self.explicit = _explicit(equations, unknowns, parameters)
         self.pencil = Pencil.of(equations, unknowns, list(parameters))
 
     def __call__(self, candidate: Sequence[float], known: Sequence[arb],
-                 inverse: NDArray[np.float64] | None = None) -> list[arb] | None:
+                 inverse: NDArray[np.float64] | Callable[[], NDArray[np.float64]] | None = None) -> list[arb] | None:
         """The root's enclosure (one ball per unknown) next to ``candidate``, or ``None``.
 
         ``known`` lists the balls of the parameters, in order; ``inverse``, the Jacobian's
-        inverse in floats at the candidate, saves the first step its own inversion.
+        inverse in floats at the candidate (or a function making it, called only where it is
+        used), saves the first step its own inversion.
         """
         if self.explicit is not None:  # u = formula: its value in balls is the root's enclosure
             value = arb(self.explicit(*known)[0])  # a constant formula comes back as a Python integer
@@ -90,6 +90,8 @@ class BlockCertifier:
         x = [arb(float(v)) for v in candidate]
         if self.linear:
             return self._linear(x, known)
+        if callable(inverse):
+            inverse = inverse()
         if inverse is not None and not np.isnan(inverse[0, 0]):
             root = self._from_inverse(x, known, arb_mat(inverse.tolist()))
             if root is not None:
@@ -103,6 +105,12 @@ class BlockCertifier:
             if root is not None:
                 return root
         return None
+
+    @functools.cached_property
+    def jacobian(self) -> BallProgram:
+        """The Jacobian as a program, differentiated when first needed: a block its pencil or its
+        formula proves never needs it."""
+        return compile_program(jacobian(self.equations, self.unknowns), self.arguments, ARB)
 
     def _linear(self, x: list[arb], known: Sequence[arb]) -> list[arb] | None:
         """``x - J^-1 F(x)`` in balls: exactly the root, for every parameter in its ball."""

@@ -15,9 +15,10 @@ of their label is solved again with more starts before the check says so.
 from __future__ import annotations
 
 import enum
+import functools
+import operator
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
-from fractions import Fraction
 from typing import Any, TypeAlias
 
 import attrs
@@ -33,7 +34,7 @@ from ..runtime.frozen import FrozenDict, frozen
 from ..system import System, input_values
 from .balls import Block, BlockCertifier, certifier_of, certify_parameters
 from .minimal import FactorCheck, structure_failures
-from .residual import ExactValue, Polynomial, PolynomialLike, polynomial_of
+from .residual import ExactValue, Polynomial, PolynomialLike, fraction, polynomial_of
 from .solve import STARTS, blocks_of, solve_floats
 from .tally import Tally
 
@@ -52,6 +53,7 @@ Indicator: TypeAlias = tuple[str, sympy.Expr, str, str]
 BranchForms: TypeAlias = tuple[Mapping[str, str], Mapping[str, sympy.Expr], Mapping[str, sympy.Expr]]
 Label: TypeAlias = tuple[tuple[str, str], ...]  # (point, label) pairs, sorted by point
 Root: TypeAlias = list[flint.arb]  # the unknowns' enclosures, in the system's order
+_UNSET = flint.arb("nan")  # an unknown's ball before its block is proved
 
 
 def _indicators(indicators: Iterable[Indicator]) -> tuple[Indicator, ...]:
@@ -160,21 +162,36 @@ class _Plan:
         self.certifiers: list[tuple[Block, BlockCertifier, list[str]]] = [
             (block, certifier_of(block), certify_parameters(block)) for block in self.blocks.blocks]
         self.known = [v for v in system.variables if v not in system.unknowns]
-        self.parameters = {n: Fraction(str(v)) for n, v in parameters.items()}
+        self.parameters = {n: fraction(v) for n, v in parameters.items()}
         self._balls_made: tuple[int | None, dict[str, flint.arb]] = (None, {})
         # a polynomial may keep the dimensions symbolic: they take their exact values in it
         dimensions = {n: v for n, v in self.parameters.items() if n not in system.variables}
         names = list(system.unknowns) + self.known
         self.labels = [(point, positive, negative) for point, _, positive, negative in indicators]
         self.indicators: BallProgram = compile_program([expr for _, expr, _, _ in indicators], names, ARB)
-        self.branches = [_Branch(labels, values, discriminants, self.known)
+        self.branches = [_Branch(labels, values, discriminants, self.known, unknowns=system.unknowns)
                          for labels, values, discriminants in branches]
         # every branch's discriminants and closed forms in one program: they share subexpressions
         self.closed: BallProgram = compile_program([e for b in self.branches for e in b.discriminants + b.values],
                                                    self.known, ARB)
+        # where each branch's discriminants start, its closed forms start and end in ``closed``'s values
+        ends = np.cumsum([0] + [len(b.discriminants) + len(b.values) for b in self.branches]).tolist()
+        self.spans = [(start, start + len(b.discriminants), end) for b, start, end in zip(self.branches, ends, ends[1:])]
         self.polynomials = {n: polynomial_of(p, names, dimensions) for n, p in (polynomials or {}).items()}
         self.factors = FactorCheck(factors, lambda f: polynomial_of(f, names, dimensions), self.polynomials.values())
         self.index = {u: k for k, u in enumerate(system.unknowns)}
+        # A sample's balls are one list, ``names`` in order (its root, then its known values): each
+        # block certified reads its parameters from it by position and writes its unknowns into it.
+        slot = {n: k for k, n in enumerate(names)}
+        self.steps = [(certify, _picker([slot[n] for n in parameters]), [slot[n] for n in block.names])
+                      for block, certify, parameters in self.certifiers]
+        self.nonnegative = [self.index[n] for n in system.nonnegative]
+        # every polynomial evaluated on a root, once however many names it has (a kept factor may be
+        # the polynomial itself)
+        self.evaluated = list({id(p): p for p in [*self.polynomials.values(), *self.factors.polynomials()]}.values())
+        self.ids = [id(p) for p in self.evaluated]
+        self.used = {n for p in self.evaluated for n in p.names}  # the variables their magnitudes read
+        self.worst = [(n, self.ids.index(id(p))) for n, p in self.polynomials.items()]
 
     def floats(self, angles: Mapping[str, Floats]) -> dict[str, Floats]:
         """The known variables as float arrays over the samples (``angles``: input -> radians, or lengths)."""
@@ -184,12 +201,17 @@ class _Plan:
             values.update(input_values(self.system.inputs[name], angle))
         return values
 
-    def balls(self, angles: Mapping[str, Floats], k: int) -> list[flint.arb]:
-        """The known variables of sample ``k`` as balls, in ``self.known`` order."""
-        values = dict(self._parameter_balls())
-        for name, angle in angles.items():
-            values.update(input_values(self.system.inputs[name], flint.arb(float(angle[k]))))
-        return [values[n] for n in self.known]
+    def balls(self, angles: Mapping[str, Floats], count: int) -> list[list[flint.arb]]:
+        """The known variables of each of the ``count`` samples as balls, in ``self.known`` order."""
+        parameters = self._parameter_balls()
+        inputs = [(self.system.inputs[name], angle.tolist()) for name, angle in angles.items()]
+        samples = []
+        for k in range(count):
+            values = dict(parameters)
+            for variables, angle in inputs:
+                values.update(input_values(variables, flint.arb(angle[k])))
+            samples.append([values[n] for n in self.known])
+        return samples
 
     def _parameter_balls(self) -> dict[str, flint.arb]:
         """The parameters' exact values as balls at the working precision, made once per precision."""
@@ -207,11 +229,25 @@ class _Plan:
         return real
 
 
+def _picker(slots: list[int]) -> Callable[[list[flint.arb]], Sequence[flint.arb]]:
+    """The values at ``slots`` of a list, in their order: ``operator.itemgetter``, a tuple always.
+
+    >>> _picker([2, 0])("abc"), _picker([1])("abc"), _picker([])("abc")
+    (('c', 'a'), ('b',), ())
+    """
+    if len(slots) > 1:
+        return operator.itemgetter(*slots)
+    return (lambda values: (values[slots[0]],)) if slots else (lambda values: ())
+
+
 class _Branch:
     def __init__(self, labels: Mapping[str, str], values: Mapping[str, sympy.Expr],
-                 discriminants: Mapping[str, sympy.Expr], known: list[str]) -> None:
+                 discriminants: Mapping[str, sympy.Expr], known: list[str], *, unknowns: Sequence[str]) -> None:
         self.key = tuple(sorted(labels.items()))
+        self.said = f"branch {dict(self.key)}"  # how its failures name it
+        self.said_off = f"{self.said}: its closed form is"  # how an error past its tolerance is said
         self.unknowns = list(values)
+        self.slots = [list(unknowns).index(u) for u in self.unknowns]  # where each value's unknown is in a root
         self.values, self.discriminants = list(values.values()), list(discriminants.values())
         self.discriminant_floats: ArrayProgram = compile_program(self.discriminants, known, NUMPY)
 
@@ -300,7 +336,7 @@ def _check_batch(report: Tally, plan: _Plan, angles: Mapping[str, Floats], *, rn
                  worst: dict[str, float]) -> int:
     """Solve, prove and compare every sample of the batch; how many compared something."""
     count = len(next(iter(angles.values()), [None]))
-    samples = [_Sample(plan.balls(angles, k)) for k in range(count)]
+    samples = [_Sample(known) for known in plan.balls(angles, count)]
     floats = plan.floats(angles)
     _certified(plan, floats, samples, rng=rng, starts=STARTS)
     missing = [k for k, sample in enumerate(samples) if sample.lacks_a_root(plan)]
@@ -332,11 +368,9 @@ class _Sample:
 
     def classify(self, plan: _Plan) -> None:
         self.labels = [_labels(plan, root, self.known) for root in self.roots]
-        closed = iter(plan.closed(*self.known))
-        self.real, self.values = [], []
-        for branch in plan.branches:
-            self.real.append(decided_real([next(closed) for _ in branch.discriminants]))
-            self.values.append([next(closed) for _ in branch.values])
+        closed = plan.closed(*self.known)
+        self.real = [decided_real(closed[start:middle]) for start, middle, _ in plan.spans]
+        self.values = [closed[middle:end] for _, middle, end in plan.spans]
 
     def lacks_a_root(self, plan: _Plan) -> bool:
         """Whether some branch decided real has no root of its label (Newton may have missed it)."""
@@ -355,23 +389,31 @@ def _certified(plan: _Plan, floats: Mapping[str, Floats], samples: list[_Sample]
     # (block, partial solution) -> its unknowns' balls: candidates share their first blocks
     proved: dict[tuple[int, int], list[flint.arb] | None] = {}
     found: list[tuple[list[Root], bool]] = [([], False) for _ in samples]
-    known = [dict(zip(plan.known, sample.known)) for sample in samples]
+    unset = [_UNSET] * len(plan.index)
     for row, k in enumerate(candidates.owner.tolist()):
-        balls = dict(known[k])
-        for b, (block, certify, parameters) in enumerate(plan.certifiers):
+        balls = unset + samples[k].known  # the root's unknowns, each set by its block, then the known values
+        enclosure: list[flint.arb] | None = None
+        for b, (certify, parameters, slots) in enumerate(plan.steps):
             key = (b, lineage[b][row])
-            if key not in proved:
-                proved[key] = certify(rows[b][row], [balls[n] for n in parameters], candidates.inverses[b][key[1]])
-            enclosure = proved[key]
+            if key in proved:
+                enclosure = proved[key]
+            else:
+                # the Jacobian's inverse made only if the proof comes to it
+                enclosure = proved[key] = certify(rows[b][row], parameters(balls),
+                                                  functools.partial(candidates.inverses.at, *key))
             if enclosure is None:
                 break
-            balls.update(zip(block.names, enclosure))
+            for i, ball in zip(slots, enclosure):
+                balls[i] = ball
         roots, doubtful = found[k]
-        if proved[key] is None:
+        if enclosure is None:
             found[k] = roots, True
         else:
-            root = [balls[u] for u in plan.system.unknowns]
-            if not any(all(a.overlaps(c) for a, c in zip(root, r)) for r in roots):
+            root = balls[:len(unset)]
+            for other in roots:
+                if all(map(flint.arb.overlaps, root, other)):
+                    break  # a root found already
+            else:
                 roots.append(root)
     for sample, (roots, doubtful) in zip(samples, found):
         sample.roots, sample.doubtful = _nonnegative(plan, roots, doubtful)
@@ -382,7 +424,7 @@ def _nonnegative(plan: _Plan, roots: list[Root], doubtful: bool) -> tuple[list[R
     """Roots whose distances are not negative (a distance that might be either way is doubtful)."""
     kept = []
     for root in roots:
-        signs = [root[plan.index[n]] for n in plan.system.nonnegative]
+        signs = [root[k] for k in plan.nonnegative]
         if all(v >= 0 for v in signs):
             kept.append(root)
         elif not any(v < 0 for v in signs):
@@ -411,37 +453,34 @@ def decided_real(values: Sequence[flint.arb | int]) -> bool | None:
     return False if any(v < 0 for v in values) else None
 
 
-def _magnitudes(plan: _Plan, floats: Mapping[str, Floats], samples: list[_Sample]) -> list[list[dict[int, float]]]:
-    """Per sample, per root, ``id(polynomial)`` -> the sum of its terms' absolute values (floats, one pass)."""
+def _magnitudes(plan: _Plan, floats: Mapping[str, Floats], samples: list[_Sample]) -> list[list[list[float]]]:
+    """Per sample, per root, per polynomial of ``plan.evaluated``: the sum of its terms' absolute
+    values (floats, one pass)."""
     owners = [k for k, sample in enumerate(samples) for _ in sample.roots]
     if not owners or not plan.polynomials:
-        return [[{} for _ in sample.roots] for sample in samples]
-    floats = {n: v[owners] for n, v in floats.items()}
+        return [[[] for _ in sample.roots] for sample in samples]
+    floats = {n: v[owners] for n, v in floats.items() if n in plan.used}
     flat = [root for sample in samples for root in sample.roots]
     for u, k in plan.index.items():
-        floats[u] = np.array([float(root[k].mid()) for root in flat])
-    sizes = {}
-    for p in [*plan.polynomials.values(), *(p for pairs in plan.factors.factors.values() for _, p in pairs)]:
-        if id(p) not in sizes:
-            sizes[id(p)] = np.broadcast_to(p.magnitude(floats), (len(flat),))
+        if u in plan.used:
+            floats[u] = np.array([float(root[k]) for root in flat])
+    sizes = np.stack([np.broadcast_to(p.magnitude(floats), (len(flat),)) for p in plan.evaluated], axis=1).tolist()
     rows, start = [], 0
     for sample in samples:
-        rows.append([{key: float(v[start + j]) for key, v in sizes.items()} for j in range(len(sample.roots))])
+        rows.append(sizes[start:start + len(sample.roots)])
         start += len(sample.roots)
     return rows
 
 
-def _check_sample(report: Tally, plan: _Plan, sample: _Sample, *, magnitudes: list[dict[int, float]],
+def _check_sample(report: Tally, plan: _Plan, sample: _Sample, *, magnitudes: list[list[float]],
                   worst: dict[str, float]) -> None:
     """Evaluate the polynomials on the sample's roots and compare its branches."""
     report.samples += 1
-    known = dict(zip(plan.known, sample.known))
     for root, sizes in zip(sample.roots, magnitudes):
-        values = dict(zip(plan.system.unknowns, root), **known)
-        residual = _residuals(values, sizes)
-        for name, polynomial in plan.polynomials.items():
-            worst[name] = max(worst[name], residual(polynomial))
-        plan.factors.see(residual)
+        residuals = _residuals(plan.evaluated, root + sample.known, sizes)
+        for name, k in plan.worst:
+            worst[name] = max(worst[name], residuals[k])
+        plan.factors.see(dict(zip(plan.ids, residuals)))
     report.evaluated += len(sample.roots) if plan.polynomials else 0
     if sample.doubtful or None in sample.labels or None in sample.real:
         report.near_degenerate += 1
@@ -449,17 +488,14 @@ def _check_sample(report: Tally, plan: _Plan, sample: _Sample, *, magnitudes: li
     _compare(report, plan, sample)
 
 
-def _residuals(values: Mapping[str, flint.arb], sizes: Mapping[int, float]) -> Callable[[Polynomial], float]:
-    """``polynomial -> |p(K)| / sum |terms|`` at one root, each polynomial evaluated once."""
-    memo: dict[int, float] = {}
-
-    def residual(polynomial: Polynomial) -> float:
-        key = id(polynomial)
-        if key not in memo:
-            upper = float(abs(polynomial.balls(values)).upper().mid())
-            memo[key] = upper / sizes[key] if sizes[key] else upper
-        return memo[key]
-    return residual
+def _residuals(polynomials: Sequence[Polynomial], values: Sequence[flint.arb], sizes: Sequence[float]) -> list[float]:
+    """``|p(K)| / sum |terms|`` of each polynomial at one root (``values``: its balls and the known
+    values', as the polynomials' names), given each one's ``sizes``."""
+    residuals = []
+    for polynomial, size in zip(polynomials, sizes):
+        upper = float(polynomial.at(values).abs_upper())  # the upper bound of |p(K)|
+        residuals.append(upper / size if size else upper)
+    return residuals
 
 
 def _compare(report: Tally, plan: _Plan, sample: _Sample) -> None:
@@ -471,11 +507,13 @@ def _compare(report: Tally, plan: _Plan, sample: _Sample) -> None:
             continue
         matches = by_label.pop(branch.key, [])
         if len(matches) != 1:
-            report.failures.append(f"branch {dict(branch.key)}: {len(matches)} numeric solutions with its label")
+            report.failures.append(f"{branch.said}: {len(matches)} numeric solutions with its label")
             continue
-        error, size = _error(plan, branch, values, matches[0]), _size(matches[0])
-        report.error(error, scale=size, tolerance=MAX_ERROR, said=f"branch {dict(branch.key)}: its closed form is",
-                     detail=f"{error:.3g} from the root of its label (relative {error / size:.3g})")
+        error, size = _error(branch, values, matches[0]), _size(matches[0])
+        # the detail is only read past the tolerance: written only there
+        detail = "" if error <= MAX_ERROR * size else \
+            f"{error:.3g} from the root of its label (relative {error / size:.3g})"
+        report.error(error, scale=size, tolerance=MAX_ERROR, said=branch.said_off, detail=detail)
         report.compared += 1
     for key in by_label:
         # every label is decided here (_check_sample compares no sample with an undecided one)
@@ -485,15 +523,15 @@ def _compare(report: Tally, plan: _Plan, sample: _Sample) -> None:
 
 def _size(root: Root) -> float:
     """The configuration's size: its largest coordinate (1 where all are 0)."""
-    return max(abs(float(v.mid())) for v in root) or 1.0
+    return max(map(abs, map(float, root))) or 1.0
 
 
-def _error(plan: _Plan, branch: _Branch, values: list[flint.arb | int], root: Root) -> float:
+def _error(branch: _Branch, values: list[flint.arb | int], root: Root) -> float:
     """The largest distance between the closed form and the root it must equal (an upper bound)."""
     error = 0.0
-    for unknown, value in zip(branch.unknowns, values):
-        gap = abs(value - root[plan.index[unknown]])
-        error = max(error, float(gap.upper().mid()) if gap.is_finite() else float("inf"))
+    for k, value in zip(branch.slots, values):
+        gap = value - root[k]
+        error = max(error, float(gap.abs_upper()) if gap.is_finite() else float("inf"))  # the upper bound of |gap|
     return error
 
 

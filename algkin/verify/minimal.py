@@ -40,12 +40,16 @@ class FactorCheck:
         self.factors = {name: [(f, polynomial(f)) for f in fs] for name, fs in (factors or {}).items()}
         self.smallest = {name: [math.inf] * len(fs) for name, fs in self.factors.items()}
 
-    def see(self, residual_of: Callable[[Polynomial], float]) -> None:
-        """Take one certified root into account; ``residual_of(polynomial)`` is its residual there."""
+    def polynomials(self) -> list[Polynomial]:
+        """The kept factors' ``Polynomial``s, each factor's, in order (the same one may come twice)."""
+        return [polynomial for pairs in self.factors.values() for _, polynomial in pairs]
+
+    def see(self, residual_of: Mapping[int, float]) -> None:
+        """Take one certified root into account; ``residual_of[id(polynomial)]`` is its residual there."""
         for name, pairs in self.factors.items():
             best = self.smallest[name]
             for k, (_, polynomial) in enumerate(pairs):
-                best[k] = min(best[k], residual_of(polynomial))
+                best[k] = min(best[k], residual_of[id(polynomial)])
 
     def failures(self, tolerance: float, evaluated: int) -> list[str]:
         """One message per kept factor that vanished on no certified root."""
@@ -122,6 +126,8 @@ def _primitive(expr: sympy.Expr) -> sympy.Expr:
 def _not_product(name: str, polynomial: PolynomialLike, factors: Sequence[PolynomialLike]) -> str | None:
     """The factors checked one by one must be the polynomial reported, up to a constant."""
     target = exact(polynomial)
+    if len(factors) == 1 and _same(exact(factors[0]), target) and not target.is_zero():
+        return None  # one kept factor, the polynomial itself (a sweep's irreducible curve): their product is it
     ctx = _common_context(target, *map(exact, factors))
     target = _into(target, ctx)
     product = ctx.from_dict({(0,) * len(ctx.names()): 1})
@@ -133,6 +139,11 @@ def _not_product(name: str, polynomial: PolynomialLike, factors: Sequence[Polyno
             return None
     ratio = sympy.cancel(_shown(polynomial) / sympy.Mul(*map(_shown, factors)))
     return f"the kept factors of {name} do not multiply to it (quotient {ratio})"
+
+
+def _same(first: flint.fmpq_mpoly | flint.fmpz_mpoly, second: flint.fmpq_mpoly | flint.fmpz_mpoly) -> bool:
+    """The same polynomial in the same variables."""
+    return type(first) is type(second) and first.context() == second.context() and first == second
 
 
 def _common_context(*polys: flint.fmpq_mpoly | flint.fmpz_mpoly) -> flint.fmpq_mpoly_ctx:

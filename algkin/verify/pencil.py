@@ -19,6 +19,8 @@ in floats for all samples at once (``Pencil.solve``) and in balls for one sample
 
 from __future__ import annotations
 
+import functools
+import operator
 from collections.abc import Mapping, Sequence
 from typing import TypeAlias
 
@@ -56,9 +58,14 @@ class Pencil:
 
     @classmethod
     def of(cls, equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol], known: list[str]) -> Pencil | None:
-        """The pencil of a block of ``equations`` in ``unknowns``, or ``None`` where it is not one."""
+        """The pencil of a block of ``equations`` in ``unknowns``, or ``None`` where it is not one: made
+        once for the same block (the float solver's and the certifier's are one)."""
         if len(equations) != 2:
             return None
+        return _pencil_of(tuple(equations), tuple(unknowns), tuple(known))
+
+    @classmethod
+    def _of(cls, equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol], known: list[str]) -> Pencil | None:
         polys = [coefficients(eq, unknowns) for eq in equations]
         if any(sum(m) > 2 for p in polys for m in p):
             return None
@@ -108,16 +115,18 @@ class Pencil:
 
         Both roots are enclosed at once (a sample's candidates share their ``known`` balls)."""
         last_known, roots, middles = self._last
-        if last_known is None or len(last_known) != len(known) or any(a is not b for a, b in zip(last_known, known)):
-            roots = self._roots([arb(c) for c in self.coefficients(*known)])
-            middles = None if roots is None else [[float(b.mid()) for b in root] for root in roots]
+        if last_known is None or len(last_known) != len(known) or not all(map(operator.is_, last_known, known)):
+            roots = self._roots([c if type(c) is arb else arb(c) for c in self.coefficients(*known)])
+            middles = None if roots is None else [[float(b) for b in root] for root in roots]
             self._last = (tuple(known), roots, middles)
         if roots is None or middles is None:
             return None
-        gaps = [max(abs(m - c) for m, c in zip(middle, candidate)) for middle in middles]
-        gap, root = min(zip(gaps, roots), key=lambda pair: pair[0])
+        u, v = candidate
+        (u0, v0), (u1, v1) = middles
+        near, far = max(abs(u0 - u), abs(v0 - v)), max(abs(u1 - u), abs(v1 - v))
+        gap, root = (far, roots[1]) if far < near else (near, roots[0])  # the nearer root, the first if both are
         # a candidate far from both roots is no float solution: nothing is proved next to it
-        return root if gap <= NEAR * max(1.0, *(abs(c) for c in candidate)) else None
+        return root if gap <= NEAR * max(1.0, abs(u), abs(v)) else None
 
     @staticmethod
     def _roots(coefficients: list[arb]) -> list[Enclosure] | None:
@@ -139,8 +148,13 @@ class Pencil:
         roots = []
         for t in both:
             dependent = p * t + r
-            pair = [t, dependent] if swap else [dependent, t]
-            if not all(x.is_finite() for x in pair):
+            if not (t.is_finite() and dependent.is_finite()):
                 return None
-            roots.append(pair)
+            roots.append([t, dependent] if swap else [dependent, t])
         return roots
+
+
+@functools.lru_cache(maxsize=256)
+def _pencil_of(equations: tuple[sympy.Expr, ...], unknowns: tuple[sympy.Symbol, ...],
+               known: tuple[str, ...]) -> Pencil | None:
+    return Pencil._of(equations, unknowns, list(known))

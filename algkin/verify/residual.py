@@ -40,7 +40,7 @@ from numpy.typing import NDArray
 from ..evaluate import ARB
 from ..system.convert import flint_context, to_flint
 
-__all__ = ["Polynomial", "exact", "polynomial_of"]
+__all__ = ["Polynomial", "exact", "fraction", "polynomial_of"]
 
 # An eliminant as the elimination hands it over, or as a caller writes it
 PolynomialLike: TypeAlias = flint.fmpq_mpoly | flint.fmpz_mpoly | sympy.Expr
@@ -66,6 +66,22 @@ def polynomial_of(polynomial: PolynomialLike, names: Sequence[str],
 _BUILT: dict[tuple[tuple[str, ...], str, tuple[str, ...], tuple[tuple[str, str], ...]], Polynomial] = {}
 
 
+def fraction(value: ExactValue) -> Fraction:
+    """``value`` exactly as it is printed, ``Fraction(str(value))`` (a float as it is written, not
+    its binary value), without printing and parsing a rational.
+
+    >>> fraction(0.1), fraction(sympy.Rational(-3, 4)), fraction(Fraction(5, 2)), fraction(7)
+    (Fraction(1, 10), Fraction(-3, 4), Fraction(5, 2), Fraction(7, 1))
+    """
+    if isinstance(value, Fraction):
+        return value
+    if isinstance(value, sympy.Rational):
+        return Fraction(int(value.p), int(value.q))
+    if type(value) is int:
+        return Fraction(value)
+    return Fraction(str(value))
+
+
 def exact(polynomial: PolynomialLike) -> flint.fmpq_mpoly | flint.fmpz_mpoly:
     """``polynomial`` as an ``fmpq_mpoly`` (a sympy expression is converted, a flint one kept)."""
     if isinstance(polynomial, (flint.fmpq_mpoly, flint.fmpz_mpoly)):
@@ -83,7 +99,7 @@ class Polynomial:
         self.exact = poly = exact(polynomial)
         variables = [str(n) for n in poly.context().names()]
         degrees = poly.degrees()
-        known = {n: Fraction(str(v)) for n, v in (fixed or {}).items()}
+        known = {n: fraction(v) for n, v in (fixed or {}).items()}
         unknown = {v for v, d in zip(variables, degrees) if d} - set(names) - set(known)
         if unknown:
             raise ValueError(f"the polynomial {poly} has variables {sorted(unknown)} with no value")
@@ -91,44 +107,62 @@ class Polynomial:
                                               for n, v in known.items() if n in variables}
         # an fmpz_mpoly takes integer values only; the polynomials given values are fmpq_mpoly
         poly = poly.subs(given) if given else poly  # type: ignore[arg-type]
-        keep = [k for k, (n, d) in enumerate(zip(variables, poly.degrees())) if d and n not in given]
+        degrees = poly.degrees()
+        keep = [k for k, (n, d) in enumerate(zip(variables, degrees)) if d and n not in given]
         self.names = [variables[k] for k in keep]
-        terms = {tuple(int(m[k]) for k in keep): c for m, c in poly.to_dict().items()}
-        self.scale = _scale(terms.values())
-        terms = {m: flint.fmpq(c) / self.scale for m, c in terms.items()}
-        self.inner = max(range(len(keep)), key=lambda k: max(m[k] for m in terms)) if keep else None
+        # with ``monoms()``, the terms in ``to_dict``'s order, at half its cost (its stub says flint_scalar)
+        coefficients: list[flint.fmpq | flint.fmpz] = poly.coeffs()  # type: ignore[assignment]
+        self.scale = _scale(coefficients)
+        terms = {tuple([int(m[k]) for k in keep]): flint.fmpq(c) / self.scale
+                 for m, c in zip(poly.monoms(), coefficients)}
+        # the variable of highest degree (the first of them) is the inner one
+        self.inner = max(range(len(keep)), key=lambda k: degrees[keep[k]]) if keep else None
         self.groups = _groups(terms, self.inner)
         self.outer = [n for k, n in enumerate(self.names) if k != self.inner]
+        # where each variable sits among ``names``, for ``at``: the inner one, then the outer ones
+        self.slots = [list(names).index(n) for n in
+                      ([] if self.inner is None else [self.names[self.inner]]) + self.outer]
+        # each outer variable's highest power, and each group's outer powers that are not 0
+        self.tops = [max(m[k] for m in self.groups) for k in range(len(self.outer))]
+        self.raised = {m: [(k, e) for k, e in enumerate(m) if e] for m in self.groups}
         self.exponents = np.array(list(terms) or [()], dtype=float).reshape(len(terms) or 1, len(keep))
         self.sizes = np.array([abs(float(c)) for c in terms.values()] or [0.0])
         # (precision, the groups as arb_poly at it): made on first use, remade when the precision changes
-        self.made: tuple[int | None, dict[tuple[int, ...], flint.arb_poly]] = (None, {})
+        self.made: tuple[int | None, tuple[list[tuple[flint.arb_poly, list[tuple[int, int]]]],
+                                           list[flint.arb_poly | None]]] = (None, ([], []))
 
     def balls(self, values: Mapping[str, flint.arb]) -> flint.arb:
         """``p / scale`` at ``values`` (name -> ball), a ball."""
-        polys = self._polys()
         if self.inner is None:
-            return sum((p(0) for p in polys.values()), flint.arb(0))
-        x = values[self.names[self.inner]]
-        if len(self.outer) == 1:  # a curve: Horner in the other coordinate, no table of powers
-            return self._horner(polys, x, values[self.outer[0]])
-        outer = [values[n] for n in self.outer]
-        powers = [_powers(v, max(m[k] for m in polys)) for k, v in enumerate(outer)]
-        total = flint.arb(0)
-        for monomial, poly in polys.items():
-            term = poly(x)
-            for k, e in enumerate(monomial):
-                if e:
-                    term = term * powers[k][e]
-            total += term
-        return total
+            return self._value(None, [])
+        return self._value(values[self.names[self.inner]], [values[n] for n in self.outer])
 
-    def _horner(self, polys: dict[tuple[int, ...], flint.arb_poly], x: flint.arb, y: flint.arb) -> flint.arb:
-        top = max(m[0] for m in polys)
-        total = polys[(top,)](x)
-        for e in range(top - 1, -1, -1):
-            poly = polys.get((e,))
-            total = total * y if poly is None else total * y + poly(x)
+    def at(self, values: Sequence[flint.arb]) -> flint.arb:
+        """``p / scale`` at ``values``, one ball per name of the ``names`` it was made with, in
+        their order: ``balls`` without a mapping (the same ball)."""
+        if self.inner is None:
+            return self._value(None, [])
+        slots = self.slots
+        return self._value(values[slots[0]], [values[k] for k in slots[1:]])
+
+    def _value(self, x: flint.arb | None, outer: list[flint.arb]) -> flint.arb:
+        """``p / scale`` with its inner variable at ``x`` and its outer ones at ``outer``."""
+        groups, horner = self._polys()
+        if x is None:
+            return sum((p(0) for p, _ in groups), flint.arb(0))
+        if len(outer) == 1:  # a curve: Horner in the other coordinate, no table of powers
+            y = outer[0]
+            total = horner[0](x)  # type: ignore[misc]  # the highest power's group is never missing
+            for poly in horner[1:]:
+                total = total * y if poly is None else total * y + poly(x)
+            return total
+        powers = [_powers(v, top) for v, top in zip(outer, self.tops)]
+        total = flint.arb(0)
+        for poly, raised in groups:
+            term = poly(x)
+            for k, e in raised:
+                term = term * powers[k][e]
+            total += term
         return total
 
     def magnitude(self, values: Mapping[str, NDArray[np.float64]]) -> NDArray[np.float64]:
@@ -138,11 +172,14 @@ class Polynomial:
         points = np.abs(np.stack([np.asarray(values[n], dtype=float) for n in self.names], axis=-1))
         return np.asarray(np.prod(points[:, None, :] ** self.exponents[None], axis=-1) @ self.sizes, dtype=np.float64)
 
-    def _polys(self) -> dict[tuple[int, ...], flint.arb_poly]:
-        """The groups as ``arb_poly``, remade when the working precision changed."""
+    def _polys(self) -> tuple[list[tuple[flint.arb_poly, list[tuple[int, int]]]], list[flint.arb_poly | None]]:
+        """The groups as ``arb_poly`` with their outer powers, and (one outer variable) the groups
+        by outer power from the highest down for Horner: remade when the working precision changed."""
         precision = flint.ctx.prec
         if self.made[0] != precision:
-            self.made = (precision, {m: _arb_poly(terms) for m, terms in self.groups.items()})
+            polys = {m: _arb_poly(terms) for m, terms in self.groups.items()}
+            horner = [polys.get((e,)) for e in range(self.tops[0], -1, -1)] if len(self.outer) == 1 else []
+            self.made = (precision, ([(p, self.raised[m]) for m, p in polys.items()], horner))
         return self.made[1]
 
 
@@ -153,7 +190,7 @@ def _scale(coefficients: Iterable[flint.fmpq | flint.fmpz]) -> flint.fmpq:
     >>> _scale([flint.fmpq(3, 4), flint.fmpz(-10) ** 400]) == flint.fmpq(2) ** 1328
     True
     """
-    bits = [int(c.p).bit_length() - int(c.q).bit_length() for c in map(flint.fmpq, coefficients) if c]
+    bits = [c.p.bit_length() - c.q.bit_length() for c in map(flint.fmpq, coefficients) if c]
     return flint.fmpq(2) ** max(bits) if bits else flint.fmpq(1)
 
 

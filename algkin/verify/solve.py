@@ -159,7 +159,33 @@ class Candidates:
     owner: Rows
     values: dict[str, Floats]
     lineage: list[Rows]
-    inverses: list[Floats]
+    inverses: Inverses
+
+
+class Inverses:
+    """Per block ``b``, ``inverses[b]``: its Jacobian's float inverse at each of its partial solutions
+    (``_inverses``), computed when first asked: a block its pencil or its formula proves needs none.
+    ``at(b, r)`` is ``inverses[b][r]``."""
+
+    def __init__(self) -> None:
+        self._blocks: list[tuple[_Block, Mapping[str, Floats], int]] = []
+        self._made: dict[int, Floats] = {}
+
+    def add(self, block: _Block, values: Mapping[str, Floats], count: int) -> None:
+        """The next block, solved: ``values`` over its ``count`` partial solutions (never changed after)."""
+        self._blocks.append((block, values, count))
+
+    def __getitem__(self, b: int) -> Floats:
+        if b not in self._made:
+            self._made[b] = _inverses(*self._blocks[b])
+        return self._made[b]
+
+    def __len__(self) -> int:
+        return len(self._blocks)
+
+    def at(self, b: int, r: int) -> Floats:
+        inverse: Floats = self[b][r]
+        return inverse
 
 
 def solve_floats(blocks: Blocks, known: Mapping[str, Floats], rng: np.random.Generator,
@@ -169,21 +195,21 @@ def solve_floats(blocks: Blocks, known: Mapping[str, Floats], rng: np.random.Gen
     count = len(next(iter(known.values()))) if known else 1
     owner = np.arange(count)
     values = {n: np.broadcast_to(np.asarray(v, dtype=float), (count,)) for n, v in known.items()}
-    parents, inverses = [], []
+    parents, inverses = [], Inverses()
     for block in blocks.blocks:
-        scale = _scale(values, blocks.size, len(owner))
         if block.coefficients is not None:
             parent, found = _univariate(block, values)
         elif block.pencil is not None and starts <= STARTS:  # a retry searches by Newton, more widely
             parent, first, second = block.pencil.solve(values, len(owner))
             found = dict(zip(block.names, (first, second)))
         else:
-            parent, found = _newton(block, values, scale=scale, rng=rng, starts=starts)
+            parent, found = _newton(block, values, scale=_scale(values, blocks.size, len(owner)), rng=rng,
+                                    starts=starts)
         parents.append(parent)
         owner = owner[parent]
         values = {n: v[parent] for n, v in values.items()}
         values.update(found)
-        inverses.append(_inverses(block, values, len(owner)))
+        inverses.add(block, values, len(owner))
     lineage = [np.arange(len(owner))]
     for parent in reversed(parents[1:]):
         lineage.insert(0, parent[lineage[0]])
@@ -230,6 +256,10 @@ def _univariate(block: _Block, values: Mapping[str, Floats]) -> tuple[Rows, dict
         if degree < 1:
             continue
         monic = coeffs[rows, first + 1:] / coeffs[rows, first][:, None]
+        if degree == 1 and _plain(monic):  # the 1 x 1 companion's eigenvalue, as LAPACK gives it
+            parents.append(rows)
+            roots.append(-monic[:, 0])
+            continue
         companion = np.zeros((len(rows), degree, degree))
         companion[:, 0, :] = -monic
         companion[:, np.arange(1, degree), np.arange(degree - 1)] = 1
@@ -239,6 +269,17 @@ def _univariate(block: _Block, values: Mapping[str, Floats]) -> tuple[Rows, dict
         roots.append(eig.real[real])
     parent = np.concatenate(parents) if parents else np.zeros(0, dtype=int)
     return parent, {block.names[0]: np.concatenate(roots) if roots else np.zeros(0)}
+
+
+def _plain(values: Floats) -> bool:
+    """Whether every value is 0 or within 1e-130 and 1e130 in size: where LAPACK's eigenvalue of a
+    1 x 1 matrix is its entry, exactly (it rescales a matrix near the floats' ends, and refuses nan).
+
+    >>> _plain(np.array([[0.0], [-2.5e100]])), _plain(np.array([[1e200]])), _plain(np.array([[np.nan]]))
+    (True, False, False)
+    """
+    size = np.abs(values)
+    return bool(np.all((size == 0) | ((size > 1e-130) & (size < 1e130))))
 
 
 def _newton(block: _Block, values: Mapping[str, Floats], *, scale: Floats, rng: np.random.Generator,

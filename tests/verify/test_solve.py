@@ -1,14 +1,21 @@
 """algkin.verify.solve: a block's Jacobian is the one sympy's matrices give, expression for expression; a
-block in one unknown solved without numpy.ma."""
+block in one unknown solved without numpy.ma, a linear one to LAPACK's bit; a Jacobian's inverse made only
+for a proof that uses it."""
 
+import functools
 import subprocess
 import sys
 
+import flint
+import numpy as np
 import sympy
 from hypothesis import given, settings, strategies as st
 
-from algkin.system import symbol
-from algkin.verify.solve import derivative, jacobian
+from algkin.system import System, symbol
+from algkin.verify import solve
+from algkin.verify.balls import certifier_of, certify_parameters
+from algkin.verify.check import WORKING_BITS
+from algkin.verify.solve import blocks_of, derivative, jacobian, solve_floats
 
 from ..processes import ENV
 
@@ -50,3 +57,37 @@ def test_a_block_in_one_unknown_is_solved_without_loading_numpy_ma():
             "print(sorted(found.values['x'].round(12).tolist()), 'numpy.ma' in sys.modules)")
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120, env=ENV)
     assert done.stdout.splitlines()[-1] == "[-2.0, -1.414213562373, 1.414213562373, 2.0] False", done.stderr[-300:]
+
+
+def test_a_block_linear_in_its_unknown_gives_lapacks_eigenvalue_to_the_bit():
+    # c x - s = 0: the 1 x 1 companion [[s / c]], whose eigenvalue LAPACK gives exactly, save where it
+    # rescales a matrix near the floats' ends (below 1e-138): samples with such a one still go to LAPACK
+    system = System(("x",), (), {"t": ("c", "s")}, (c * x - symbol("s"),))
+    for cs, ss in [([3.0, -7.0, 2.0, 5.0, 1e150, 3.0], [1.0, 2.0, 0.0, -0.0, 1e-150, 1e-120]),
+                   ([3.0, 1.0, 1e-100], [1.0, 1e-300, 1e-290])]:
+        cs, ss = np.array(cs), np.array(ss)
+        found = solve_floats(blocks_of(system), {"c": cs, "s": ss}, np.random.default_rng(0))
+        expected = np.linalg.eigvals((-(-ss / cs))[:, None, None]).real.ravel()
+        assert found.owner.tolist() == list(range(len(cs)))
+        assert [float(v).hex() for v in found.values["x"]] == [float(v).hex() for v in expected]
+
+
+def test_a_jacobians_inverse_is_made_only_for_a_proof_that_asks_for_it(monkeypatch):
+    # two circles are proved by their pencil: no inverse; a circle and a hyperbola by Krawczyk's test
+    # from the float inverse: one block's inverses, made once for all its candidates
+    made = []
+    inverses = solve._inverses
+    monkeypatch.setattr(solve, "_inverses", lambda *arguments: made.append(1) or inverses(*arguments))
+    circle = x**2 + y**2 - 4
+    for other, asked in [((x - c)**2 + y**2 - 4, 0), (x * y - c, 1)]:
+        made.clear()
+        system = System(("x", "y"), (), {"t": ("c", "s")}, (circle, other))
+        blocks = blocks_of(system)
+        found = solve_floats(blocks, {"c": np.array([1.0, 1.5]), "s": np.array([0.0, 0.0])}, np.random.default_rng(0))
+        certify, parameters = certifier_of(blocks.blocks[0]), certify_parameters(blocks.blocks[0])
+        with flint.ctx.workprec(WORKING_BITS):
+            proved = [certify([found.values["x"][r], found.values["y"][r]],
+                              [flint.arb(found.values[n][r]) for n in parameters],
+                              functools.partial(found.inverses.at, 0, r)) for r in range(len(found.owner))]
+        assert len(proved) >= 4 and all(root is not None for root in proved)
+        assert len(made) == asked
