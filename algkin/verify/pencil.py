@@ -19,7 +19,6 @@ in floats for all samples at once (``Pencil.solve``) and in balls for one sample
 
 from __future__ import annotations
 
-import functools
 import operator
 from collections.abc import Mapping, Sequence
 from typing import TypeAlias
@@ -58,14 +57,9 @@ class Pencil:
 
     @classmethod
     def of(cls, equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol], known: list[str]) -> Pencil | None:
-        """The pencil of a block of ``equations`` in ``unknowns``, or ``None`` where it is not one: made
-        once for the same block (the float solver's and the certifier's are one)."""
+        """The pencil of a block of ``equations`` in ``unknowns``, or ``None`` where it is not one."""
         if len(equations) != 2:
             return None
-        return _pencil_of(tuple(equations), tuple(unknowns), tuple(known))
-
-    @classmethod
-    def _of(cls, equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol], known: list[str]) -> Pencil | None:
         polys = [coefficients(eq, unknowns) for eq in equations]
         if any(sum(m) > 2 for p in polys for m in p):
             return None
@@ -153,8 +147,3 @@ class Pencil:
             roots.append([t, dependent] if swap else [dependent, t])
         return roots
 
-
-@functools.lru_cache(maxsize=256)
-def _pencil_of(equations: tuple[sympy.Expr, ...], unknowns: tuple[sympy.Symbol, ...],
-               known: tuple[str, ...]) -> Pencil | None:
-    return Pencil._of(equations, unknowns, list(known))
