@@ -20,12 +20,12 @@ import sympy
 from sympy.polys.polyutils import _sort_gens
 from sympy.simplify.simplify import signsimp
 
+from ..scene.implicit.algebra import HALF, square_reduced
 from ..system.convert import from_terms
 
 __all__ = ["cancelled"]
 
 Fraction = tuple[flint.fmpq_mpoly, flint.fmpq_mpoly]  # numerator, denominator, as as_numer_denom keeps them
-HALF = sympy.Rational(1, 2)
 
 
 class _Unsupported(Exception):
@@ -155,14 +155,8 @@ class _Walk:
     def _reduced(self, poly: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
         """``poly`` with each root's stand-in ``r`` of degree at most 1: ``r**2`` as its radicand."""
         for index, radicand in self.squares:
-            if poly.degrees()[index] < 2:
-                continue
-            by_half: dict[int, dict[tuple[int, ...], flint.fmpq]] = {}
-            for exponents, coefficient in poly.to_dict().items():
-                half, rest = divmod(exponents[index], 2)
-                by_half.setdefault(half, {})[exponents[:index] + (rest,) + exponents[index + 1:]] = coefficient
-            poly = sum((self.ring.from_dict(terms) * radicand**half for half, terms in by_half.items()),
-                       self.ring.from_dict({}))
+            if poly.degrees()[index] >= 2:
+                poly = square_reduced(poly, index, radicand)
         return poly
 
     def _has_root(self, poly: flint.fmpq_mpoly) -> bool:

@@ -7,7 +7,7 @@ import sympy
 
 from ...system.convert import from_terms, to_flint
 
-__all__ = ["Circles", "reduce_on_circles", "reduce_exact_on_circles"]
+__all__ = ["Circles", "reduce_on_circles", "reduce_exact_on_circles", "square_reduced"]
 
 HALF = sympy.Rational(1, 2)
 
@@ -120,11 +120,22 @@ def reduce_exact_on_circles(poly: flint.fmpq_mpoly, inputs: Circles) -> flint.fm
             continue
         if str(c) not in names:
             return None
-        at = names.index(str(s))
-        one_minus_c2 = 1 - ring.gens()[names.index(str(c))] ** 2
-        by_half: dict[int, dict[tuple[int, ...], flint.fmpq]] = {}  # k // 2 -> the terms with s**(k % 2)
-        for exponents, coefficient in poly.to_dict().items():
-            half, rest = divmod(exponents[at], 2)
-            by_half.setdefault(half, {})[exponents[:at] + (rest,) + exponents[at + 1:]] = coefficient
-        poly = sum((ring.from_dict(terms) * one_minus_c2**half for half, terms in by_half.items()), ring.from_dict({}))
+        poly = square_reduced(poly, names.index(str(s)), 1 - ring.gens()[names.index(str(c))] ** 2)
     return poly
+
+
+def square_reduced(poly: flint.fmpq_mpoly, at: int, square: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
+    """``poly`` with its variable number ``at`` (``v``) of degree at most 1, ``v**2`` taken as
+    ``square``: each ``v**k`` as ``v**(k % 2) * square**(k // 2)``.
+
+    >>> ring = flint.fmpq_mpoly_ctx.get(("r", "x"), "lex")
+    >>> r, x = ring.gens()
+    >>> square_reduced(r**3 + r**2 * x, 0, x + 1)
+    r*x + r + x^2 + x
+    """
+    ring = poly.context()
+    by_half: dict[int, dict[tuple[int, ...], flint.fmpq]] = {}  # k // 2 -> the terms with v**(k % 2)
+    for exponents, coefficient in poly.to_dict().items():
+        half, rest = divmod(exponents[at], 2)
+        by_half.setdefault(half, {})[exponents[:at] + (rest,) + exponents[at + 1:]] = coefficient
+    return sum((ring.from_dict(terms) * square**half for half, terms in by_half.items()), ring.from_dict({}))
