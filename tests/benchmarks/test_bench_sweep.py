@@ -11,13 +11,6 @@ def bench(benchmark_module):
     return benchmark_module("bench_sweep")
 
 
-@pytest.fixture
-def other_checkout(tmp_path):
-    (tmp_path / "algkin").mkdir()
-    (tmp_path / "algkin" / "__init__.py").write_text("")
-    return tmp_path.resolve()
-
-
 def chosen(bench, *argv):
     arguments = bench.parse(list(argv))
     return list(bench.sweeps(["a=1:2:2"], alone=not arguments.quick,

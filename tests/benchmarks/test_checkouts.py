@@ -11,14 +11,6 @@ def checkouts(benchmark_module):
     return benchmark_module("checkouts")
 
 
-@pytest.fixture
-def other_checkout(tmp_path):
-    """A stand-in for ``git archive <commit> | tar -x -C DIR``: an algkin that says where it is."""
-    (tmp_path / "algkin").mkdir()
-    (tmp_path / "algkin" / "__init__.py").write_text("WHERE = 'the other checkout'\n")
-    return tmp_path
-
-
 def test_its_examples_hold(checkouts):
     assert doctest.testmod(checkouts).failed == 0
 
