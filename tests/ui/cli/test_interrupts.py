@@ -19,10 +19,14 @@ import pytest
 from ...processes import algkin, finish, kill_group, start
 
 WAIT = 120  # seconds: only a hang takes this long
-# Minutes of work after its imports (python-flint's Buchberger on the six-bar family), so still running
-# when signalled however late a loaded machine lets the test read the import it waits for: with
-# seconds of work, a starved test once signalled a process that had already finished (exit 0).
-SLOW = ("derive", "stephenson-iii-family", "--method", "groebner")
+# Work after its imports that a signal stops at once, and that lasts however late a loaded machine
+# lets the test read the import it waits for: a serial sweep of 100,000 designs (some 15 minutes),
+# each design milliseconds of python-flint calls. Not one long C call: a Gröbner basis of the six-bar
+# family (a single python-flint call of minutes, which holds off every handler) once left a starved
+# test waiting for an answer to its Ctrl-C for 120 s; with seconds of work, a starved test once
+# signalled a process that had already finished (exit 0).
+def _slow(tmp_path):
+    return ("sweep", "fourbar", "--grid", "a=1:3:100000", "--analyses", "curve", "--out", str(tmp_path / "sweep"))
 
 
 def _lines(stream):
@@ -60,7 +64,7 @@ def _rest(lines):
 
 
 # What the `algkin` console script runs (pyproject.toml's entry point), beside `python -m algkin`.
-CONSOLE_SCRIPT = ["-c", "import sys; from algkin.ui.cli import main; sys.exit(main())", *SLOW]
+CONSOLE_SCRIPT = ("-c", "import sys; from algkin.ui.cli import main; sys.exit(main())")
 
 
 # Each a module imported after main() set its handlers: the first it imports, one of sympy's (the
@@ -68,9 +72,9 @@ CONSOLE_SCRIPT = ["-c", "import sys; from algkin.ui.cli import main; sys.exit(ma
 # start-up (site, the venv's .pth files) and ``import algkin.ui.cli`` (some 20 ms: no sympy) run
 # with Python's handler, which no code of algkin's can replace sooner.
 @pytest.mark.parametrize("module", ["algkin.ui.cli.sweep", "sympy.core.numbers", "algkin.scene"])
-@pytest.mark.parametrize("entry", [algkin(*SLOW), CONSOLE_SCRIPT], ids=["python-m", "console-script"])
-def test_ctrl_c_while_importing_is_one_line_and_exit_130(module, entry):
-    process = start(["-X", "importtime", *entry])
+@pytest.mark.parametrize("entry", [algkin(), CONSOLE_SCRIPT], ids=["python-m", "console-script"])
+def test_ctrl_c_while_importing_is_one_line_and_exit_130(module, entry, tmp_path):
+    process = start(["-X", "importtime", *entry, *_slow(tmp_path)])
     try:
         lines = _lines(process.stderr)
         said = _await_import(lines, module)
