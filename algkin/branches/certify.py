@@ -24,10 +24,9 @@ from typing import TypedDict
 
 import flint
 import numpy as np
-import sympy
 from numpy.typing import NDArray
 
-from ..evaluate import ARB, evaluate
+from ..evaluate.program import ARB, BallProgram, compile_program
 from ..system import input_values
 from .closed_form import Branch
 
@@ -54,14 +53,16 @@ def interval_keys(turning: bool) -> tuple[str, str]:
     return ("from_deg", "to_deg") if turning else ("from_length", "to_length")
 
 
-def _status(discriminants: Sequence[sympy.Expr], variables: tuple[str, ...], lo: float, hi: float,
+def _status(discriminants: BallProgram, variables: tuple[str, ...], lo: float, hi: float,
             parameters: Mapping[str, flint.arb]) -> str | None:
+    """Over ``[lo, hi]``: ``no-assembly`` if a discriminant (a program of the variables, then the
+    parameters) is negative throughout, ``certified`` if all are positive throughout, else None."""
     middle, radius = (flint.arb(lo) + flint.arb(hi)) / 2, (flint.arb(hi) - flint.arb(lo)) / 2
     value = flint.arb(middle.mid(), radius.mid() + radius.rad())
     if len(variables) == 2:
         value *= flint.arb.pi() / 180
-    values = dict(parameters, **input_values(variables, value))
-    balls = [evaluate(d, values, ARB) for d in discriminants]
+    at = input_values(variables, value)
+    balls = discriminants(*(at[v] for v in variables), *parameters.values())
     if any(b < 0 for b in balls):
         return "no-assembly"
     if all(b > 0 for b in balls):
@@ -77,9 +78,10 @@ def certify_label(branch: Branch, variables: tuple[str, ...], lo_deg: float, hi_
     (the range in lengths, the keys ``from_length``, ``to_length``); ``parameters``: name -> arb for every
     dimension in the discriminants.
     """
-    discriminants = list(branch.discriminants.values())
-    if not discriminants:
+    if not branch.discriminants:
         return _merged([(float(lo_deg), float(hi_deg), "certified")], variables)
+    # compiled once: the interval's splits evaluate them hundreds of times
+    discriminants = compile_program(branch.discriminants.values(), [*variables, *parameters], ARB)
     pieces: list[tuple[float, float, str]] = []
     # widest first: if the evaluations run out, what is left undecided is the finest part
     queue = [(-(float(hi_deg) - float(lo_deg)), float(lo_deg), float(hi_deg))]
