@@ -13,12 +13,12 @@ from __future__ import annotations
 
 import csv
 import io
-import json
 from collections.abc import Callable, Iterable, Sequence
 from typing import TYPE_CHECKING
 
 from ..errors import OutputError
 from ..runtime.files import write_atomic
+from ..runtime.strict_json import json_text
 from .row import COLUMNS, BenchRow
 
 if TYPE_CHECKING:
@@ -75,7 +75,7 @@ def write(report: BenchReport, directory: str,
     except OSError as err:
         raise OutputError(directory, err.strerror or str(err)) from err
     paths = [os.path.join(directory, n) for n in ("bench.json", "bench.csv")]
-    write_atomic(paths[0], json.dumps(report.to_json(), indent=2))
+    write_atomic(paths[0], json_text(report.to_json()))
     write_atomic(paths[1], to_csv(report.rows))
     if plot is not None:
         paths.append(plot(report.rows, os.path.join(directory, "bench.png")))

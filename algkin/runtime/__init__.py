@@ -1,6 +1,6 @@
 """What every layer may use: budgets (``budget``), work in a forked child process (``child``),
 progress reports (``progress``), files written atomically (``files``), argument checks
-(``validation``) and text safe to show on a terminal (``terminal``).
+(``validation``), text safe to show on a terminal (``terminal``) and strict JSON (``strict_json``).
 
 The lowest layer but ``algkin.errors``: it imports nothing else of algkin.
 """

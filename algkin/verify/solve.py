@@ -43,6 +43,7 @@ STEPS = 60
 ABANDON_AFTER = 8  # Newton steps after which a start still far from vanishing is given up
 ABANDON_RESIDUAL = 1e-4  # relative to the squared scale: the equations are quadratic in lengths
 CONVERGED = 1e-13  # a Newton step this small (relative to the block's scale) ends the iteration
+NOISE = 1e-14  # a coefficient this small beside the sum of its terms' sizes is taken as 0
 SAME_ROOT = 1e-7  # end points closer than this (relative) are one root
 
 
@@ -95,11 +96,23 @@ class _Block:
             degree = max(m[0] for m in terms[0])
             highest_first = [terms[0].get((d,), sympy.Integer(0)) for d in range(degree, -1, -1)]
             self.coefficients: ArrayProgram | None = compile_program(highest_first, arguments, NUMPY)
+            self.magnitudes: ArrayProgram = compile_program([_magnitude(c) for c in highest_first], arguments, NUMPY)
         else:
             self.coefficients = None
             self.residual: ArrayProgram = compile_program(equations, arguments, NUMPY)
             self.jacobian: ArrayProgram = compile_program(jacobian(equations, unknowns), arguments, NUMPY)
             self.pencil = Pencil.of(equations, unknowns, [a for a in arguments if a not in names])
+
+
+def _magnitude(coefficient: sympy.Expr) -> sympy.Expr:
+    """The sum of the absolute values of ``coefficient``'s terms (a polynomial in the known values):
+    the size its float value is rounded against.
+
+    >>> c, s = symbol("c"), symbol("s")
+    >>> _magnitude(3 - 2*c*s)
+    2*Abs(c*s) + 3
+    """
+    return sympy.Add(*[sympy.Abs(term) for term in sympy.Add.make_args(coefficient)])
 
 
 def jacobian(equations: list[sympy.Expr], unknowns: list[sympy.Symbol]) -> list[sympy.Expr]:
@@ -245,9 +258,12 @@ def _univariate(block: _Block, values: Mapping[str, Floats]) -> tuple[Rows, dict
     """Real eigenvalues of each row's companion matrix (rows grouped by their actual degree)."""
     assert block.coefficients is not None  # only a block in one unknown is solved here
     count = len(next(iter(values.values())))
-    coeffs = columns(block.coefficients(*_arguments(block.arguments, values, count)), count)
-    largest = np.max(np.abs(coeffs), axis=1)
-    nonzero = np.abs(coeffs) > 1e-14 * largest[:, None]
+    arguments = _arguments(block.arguments, values, count)
+    coeffs = columns(block.coefficients(*arguments), count)
+    # a coefficient is zero where it is within its own rounding, not where it is small beside the
+    # others: roots far from the origin (a mechanism of lengths 1e15) have a leading coefficient
+    # 1e-15 of the constant's
+    nonzero = np.abs(coeffs) > NOISE * columns(block.magnitudes(*arguments), count)
     lead = np.where(nonzero.any(axis=1), nonzero.argmax(axis=1), coeffs.shape[1])
     parents, roots = [], []
     for first in sorted(set(lead.tolist())):  # np.unique's: it would load numpy.ma, 10 ms of a cold command

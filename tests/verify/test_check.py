@@ -112,6 +112,17 @@ def test_a_lambda_of_any_size_is_compared_as_at_scale_one(k):
     assert verification.max_abs_error < 1e-40 * 3 * float(k)  # coordinates up to about 3k
 
 
+def test_a_four_bar_of_crank_1_and_bars_near_1e15_is_compared():
+    # Mixed scales: the coupler point's equation, 2 P_x - B_x + B_y - c - s = 0 with B near 5e14, has a
+    # leading coefficient 1e-15 of its constant's. It was taken for zero beside it: P had no numeric
+    # solution and the check, comparing nothing, failed.
+    derived = algkin.derive("fourbar", samples=5, certify=False, set={"l": "10**15+1/7", "m": "10**15"})
+    verification = derived.verification
+    assert verification.passed, verification.failures
+    assert verification.compared == 10  # both branches at each of the 5 samples
+    assert verification.max_rel_error < 1e-40
+
+
 def test_narrow_assembly_range_is_still_compared():
     # Crank 41/8, ground 5, bars 1/2 and 5/2: B assembles on about 6% of the turn, so
     # uniform samples mostly land where nothing can be compared; more are drawn there.

@@ -72,6 +72,24 @@ def test_a_block_linear_in_its_unknown_gives_lapacks_eigenvalue_to_the_bit():
         assert [float(v).hex() for v in found.values["x"]] == [float(v).hex() for v in expected]
 
 
+def test_roots_near_1e15_are_found_beside_a_leading_coefficient_1e_30_of_the_constant():
+    # x**2 - 10**30 c: roots +-1e15 sqrt(c), by hand; its leading 1 was once taken for zero beside 1e30
+    system = System(("x",), (), {"t": ("c", "s")}, (x**2 - 10**30 * c,))
+    found = solve_floats(blocks_of(system), {"c": np.array([1.0, 0.25]), "s": np.array([0.0, 0.0])},
+                         np.random.default_rng(0))
+    assert found.owner.tolist() == [0, 0, 1, 1]
+    assert np.allclose(sorted(found.values["x"][:2]), [-1e15, 1e15], rtol=1e-15)
+    assert np.allclose(sorted(found.values["x"][2:]), [-5e14, 5e14], rtol=1e-15)
+
+
+def test_a_leading_coefficient_within_its_own_rounding_of_zero_is_zero():
+    # (c + s - 3/10) x**2 + x - 1 at c = 0.1, s = 0.2: the leading coefficient is 0, rounded to
+    # 5.6e-17 in floats; only the linear equation's root, 1, is a root (not one near -1.8e16)
+    system = System(("x",), (), {"t": ("c", "s")}, ((c + symbol("s") - sympy.Rational(3, 10)) * x**2 + x - 1,))
+    found = solve_floats(blocks_of(system), {"c": np.array([0.1]), "s": np.array([0.2])}, np.random.default_rng(0))
+    assert found.values["x"].tolist() == [1.0]
+
+
 def test_a_jacobians_inverse_is_made_only_for_a_proof_that_asks_for_it(monkeypatch):
     # two circles are proved by their pencil: no inverse; a circle and a hyperbola by Krawczyk's test
     # from the float inverse: one block's inverses, made once for all its candidates

@@ -22,12 +22,12 @@ import argparse
 import functools
 import gc
 import importlib
-import json
 import sys
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING
 
 from ...errors import AlgkinError, BudgetExceeded, SceneError, UsageError
+from ...runtime.strict_json import json_text
 from .flags import as_typed
 from .signals import Stopped, say, stopping_signals, write_stdout
 
@@ -160,7 +160,7 @@ def _failed(argv: list[str], args: argparse.Namespace | None, kind: str, message
     command = args.command if args is not None else next(iter(argv), None)
     document = {"error": {"kind": kind, "message": message},
                 "command": command if command in COMMANDS else None, "scene": getattr(args, "scene", None)}
-    return json.dumps(document, indent=2) + "\n"
+    return json_text(document)
 
 
 def _kind(err: AlgkinError) -> str:

@@ -5,7 +5,6 @@ command passes its deadline, ``args.deadline``, to the work that keeps to it."""
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import os
 import pathlib
@@ -14,6 +13,7 @@ from typing import TYPE_CHECKING, Any, Union
 
 from ...runtime import suggest
 from ...errors import UsageError, renamed
+from ...runtime.strict_json import json_text
 from ...runtime.validation import real
 from .groups import group_curve, group_derive, group_toggles, group_verify
 from .sweep import COMMANDS as SWEEP_COMMANDS
@@ -66,7 +66,7 @@ def _cmd_bench(args: argparse.Namespace) -> Outcome:
     report = bench(args.problems, args.methods, args.backends, budget, not args.no_peers, rounds)
     written = write(report, args.out, plot=_bench_plot()) if args.out else []
     if args.json:
-        text = json.dumps(report.to_json(), indent=2) + "\n"
+        text = json_text(report.to_json())
     else:
         text = "\n".join([table(report.rows), "machine: " + ", ".join(f"{k} {v}" for k, v in report.machine.items()),
                           *(f"wrote {path}" for path in written)]) + "\n"
@@ -344,7 +344,7 @@ def _finish(args: argparse.Namespace, out: pathlib.Path | None, document: Docume
         return text, code
     if not args.json:
         text += terminal_safe(f"wrote the full JSON document to {out}\n")
-    return text, code, [(out, json.dumps(document, indent=2) + "\n")]
+    return text, code, [(out, json_text(document))]
 
 
 def _engine(args: argparse.Namespace) -> dict[str, Any]:

@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import argparse
-import json
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
+from ...runtime.strict_json import json_text
 from ...runtime.terminal import terminal_safe
 
 if TYPE_CHECKING:
@@ -197,7 +197,7 @@ def render(args: argparse.Namespace, document: Document, report: Callable[[Docum
     >>> render(SimpleNamespace(json=False), {"out": "a.svg"}, lambda d: d["out"])
     'a.svg\\n'
     """
-    return (json.dumps(document, indent=2) if args.json else terminal_safe(report(document))) + "\n"
+    return json_text(document) if args.json else terminal_safe(report(document)) + "\n"
 
 
 def report_solve(d: Document) -> str:

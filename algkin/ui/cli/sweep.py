@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 import argparse
-import json
 from collections.abc import Callable
 from typing import TYPE_CHECKING
+
+from ...runtime.strict_json import json_text
 
 if TYPE_CHECKING:
     from .commands import Command, Outcome
@@ -61,7 +62,7 @@ def _cmd_sweep(args: argparse.Namespace) -> Outcome:
                  yes=args.yes)
     document = done.to_json()
     if args.json:
-        return json.dumps(document, indent=2) + "\n", 0
+        return json_text(document), 0
     counts = ", ".join(f"{k} {v}" for k, v in document["status"].items())
     return (f"{document['designs']} designs ({document['computed']} computed now): {counts}\n"
             f"wrote {document['dataset']}\n"), 0
@@ -73,7 +74,7 @@ def _cmd_atlas(args: argparse.Namespace) -> Outcome:
     written = write_atlas(args.dir, args.out, samples=args.samples)
     document = {"out": str(args.out), "designs": written["designs"], "drawn": written["drawn"]}
     if args.json:
-        return json.dumps(document, indent=2) + "\n", 0
+        return json_text(document), 0
     return f"wrote {args.out}: {document['drawn']} of {document['designs']} designs drawn\n", 0
 
 
