@@ -22,8 +22,7 @@ from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled
 from ..scene.implicit.algebra import Circles, reduce_on_circles
 from ..system import symbol
-from ..system.text import ExpressionText
-from .algebra import readable, tidy_ratio
+from .algebra import FormText, tidy_ratio
 from .constructions import Mode, algebra_of
 
 __all__ = ["Branch", "closed_forms"]
@@ -49,28 +48,28 @@ class Branch:
     def valid_when(self) -> str:
         """Where the branch is real, each discriminant without its positive numeric factor (a square's
         base != 0)."""
-        return self._valid_when(ExpressionText())
+        return self._valid_when(FormText())
 
-    def _valid_when(self, text: ExpressionText) -> str:
-        shown = {p: readable(d) for p, d in self.discriminants.items()}
-        return " & ".join(f"({text(d.base)} != 0)" if p in self.squares and d.is_Pow else
-                          f"({text(_without_positive_number(d))} >= 0)" for p, d in shown.items()) or "True"
+    def _valid_when(self, text: FormText) -> str:
+        shown = {p: text.readable(d) for p, d in self.discriminants.items()}
+        return " & ".join(f"({text.text(d.base)} != 0)" if p in self.squares and d.is_Pow else
+                          f"({text.text(_without_positive_number(d))} >= 0)" for p, d in shown.items()) or "True"
 
-    def shown_values(self, text: ExpressionText | None = None) -> dict[str, str]:
+    def shown_values(self, text: FormText | None = None) -> dict[str, str]:
         """Each closed form as text, every factor primitive with integer coefficients (``readable``);
-        ``text`` writes them (one for a document writes its shared subexpressions once)."""
-        text = text or ExpressionText()
-        return {k: text(readable(v)) for k, v in self.values.items()}
+        ``text`` writes them (one for a document does its shared subexpressions once)."""
+        text = text or FormText()
+        return {k: text(v) for k, v in self.values.items()}
 
-    def to_json(self, text: ExpressionText | None = None) -> dict[str, object]:
+    def to_json(self, text: FormText | None = None) -> dict[str, object]:
         """The branch as JSON; ``text`` as for ``shown_values``."""
-        text = text or ExpressionText()
+        text = text or FormText()
         return {
             "label": self.label,
             "labels": dict(self.labels),
             "values": self.shown_values(text),
             "valid_when": self._valid_when(text),
-            "discriminants": {k: text(readable(v)) for k, v in self.discriminants.items()},
+            "discriminants": {k: text(v) for k, v in self.discriminants.items()},
             "selected": self.selected,
         }
 

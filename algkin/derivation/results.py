@@ -11,13 +11,12 @@ from typing import Any, Union
 import attrs
 import sympy
 
-from ..branches import Branch
+from ..branches import Branch, FormText
 from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled
 from ..scene.implicit.algebra import Circles, reduce_exact_on_circles, reduce_on_circles
 from ..system import inputs_json
 from ..system.convert import sympy_text, to_sympy
-from ..system.text import ExpressionText
 from ..verify import Verification
 from .modes import Followed
 from .tasks import Eliminant
@@ -67,13 +66,13 @@ class Derivation:
         return {u: _reduced(e, self.compiled.circles) for u, e in self.eliminations.items()}
 
     def to_json(self) -> Json:
-        text = ExpressionText()  # the branches' closed forms share their roots and denominators
+        text = FormText()  # the branches' closed forms share their roots and denominators
         document = self._json(text)
         if self.modes:  # a key of its own: a scene without modes gives the document it always gave
             document["modes"] = [self._mode_json(m, text) for m in self.modes]
         return document
 
-    def _mode_json(self, followed: Followed, text: ExpressionText) -> Json:
+    def _mode_json(self, followed: Followed, text: FormText) -> Json:
         """A named mode, its pieces each with the branch that is the mode there and its closed forms."""
         document = followed.to_json()
         for piece, shown in zip((p for p in followed.pieces if p.status != "no-assembly"), document["pieces"]):
@@ -82,7 +81,7 @@ class Derivation:
             shown["values"] = branch.shown_values(text) if branch else {}
         return document
 
-    def _json(self, text: ExpressionText) -> Json:
+    def _json(self, text: FormText) -> Json:
         system = self.compiled.system
         return {
             "scene": self.compiled.scene.name,
