@@ -119,7 +119,7 @@ class Subject:
         self.compiled = compile_scene(scene, [of])
         self.branch = next(b for b in closed_forms(self.compiled) if b.selected)
         (self.unknowns,) = self.compiled.outputs.values()
-        (self.c, self.s), = _one_input(self.compiled, self.branch, self.unknowns, of)
+        self.c, self.s = _one_input(self.compiled, self.branch, self.unknowns, of)
         # the construction whose toggles matter: the output's own, else the last one it rests on
         self.dyad = next((d for d in self.compiled.implicit if d.point == of), None) or \
             (self.compiled.implicit[-1] if self.compiled.implicit else None)
@@ -133,7 +133,7 @@ class Subject:
                        for u in self.unknowns}
 
 
-def _one_input(compiled: Compiled, branch: Branch, unknowns: tuple[str, ...], of: str) -> list[tuple[str, str]]:
+def _one_input(compiled: Compiled, branch: Branch, unknowns: tuple[str, ...], of: str) -> tuple[str, ...]:
     """The one input angle's (cos, sin) names that ``of`` moves with; a UsageError if it moves with
     none (a fixed point, a bar's length: no error to measure) or with more than one."""
     inputs = compiled.system.inputs
@@ -143,7 +143,8 @@ def _one_input(compiled: Compiled, branch: Branch, unknowns: tuple[str, ...], of
     angles = {symbol(n) for pair in inputs.values() for n in pair}
     if not any(sympy.sympify(branch.values[u]).free_symbols & angles for u in unknowns):
         raise UsageError("of", of, "does not move with the input: no error to measure")
-    return list(inputs.values())
+    (pair,) = inputs.values()
+    return pair
 
 
 class _StableOutput:
