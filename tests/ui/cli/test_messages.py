@@ -80,3 +80,15 @@ def test_a_curve_with_nothing_dropped_says_so_without_a_dangling_colon(capsys):
     assert code == 0
     assert "no extraneous factor dropped" in out.splitlines()
     assert not any(line.endswith(":") for line in out.splitlines())
+
+
+@pytest.mark.parametrize("command", [["derive"], ["curve", "--point", "P"], ["verify"]])
+def test_an_empty_method_is_no_method_not_the_default(capsys, command):
+    # `--method ""` (an unset shell variable) ran the default method as if the flag were absent
+    err = one_error(capsys, command[0], "chebyshev-lambda", *command[1:], "--method", "", "--samples", "3")
+    assert err.startswith("algkin: error: --method='': unknown elimination method"), err
+
+
+def test_an_empty_method_with_points_solved_together_is_refused(capsys):
+    err = one_error(capsys, "derive", "3rpr", "--method", "", "--samples", "3")
+    assert err.startswith("algkin: error: --method='': is not taken with points solved together"), err
