@@ -42,9 +42,6 @@ _ERROR_KINDS = ((UsageError, "usage"), (SceneError, "scene"), (BudgetExceeded, "
 # numpy loads numpy.random on first use: there, it was 9 ms of the first verification's stage.
 ALGEBRA = ("sympy", "numpy", "numpy.random", "flint")
 NO_ALGEBRA = frozenset({"list"})
-# matplotlib's warning of a character its font lacks (a scene named in another script, a control
-# character): the figure shows a box there; two lines on stderr would break its one line.
-MISSING_GLYPH = r"Glyph \d+ .* missing from font"
 
 
 def __getattr__(name: str) -> object:
@@ -107,7 +104,10 @@ def _command(args: argparse.Namespace) -> int:
         return write_stdout("", 0)
     check_paths(args)  # before any work: every output writable, none over an input
     with progress.shown(args.quiet), warnings.catch_warnings():  # ended, and its line cleared, before anything is said
-        warnings.filterwarnings("ignore", MISSING_GLYPH, UserWarning)
+        # A library's warning is two lines on stderr, which holds at most one: matplotlib's of a glyph its
+        # font lacks (a scene named in another script), numpy's of a float overflow (what it means, the
+        # report says: a verification that could not evaluate, a figure's box).
+        warnings.simplefilter("ignore")
         text, code, *files = _run(args)
     _save(*files)
     return write_stdout(text, code)  # a signal while writing (to a slow reader) is caught too
