@@ -92,3 +92,14 @@ def test_an_empty_method_is_no_method_not_the_default(capsys, command):
 def test_an_empty_method_with_points_solved_together_is_refused(capsys):
     err = one_error(capsys, "derive", "3rpr", "--method", "", "--samples", "3")
     assert err.startswith("algkin: error: --method='': is not taken with points solved together"), err
+
+
+@pytest.mark.parametrize(("args", "said"), [
+    (["extremum", "arm-string", "--of", "AB", "--range", "-1e-3:-2e-3"], "--range='-1e-3:-2e-3': lo must be below hi"),
+    (["follow", "fourbar", "--mode", "left", "--from", "theta=0", "--to", "9", "--max-step", "-1e-3"],
+     "--max-step='-1e-3': expected a positive number"),
+])
+def test_a_value_starting_with_a_minus_and_a_digit_is_a_value(capsys, args, said):
+    # argparse took only -90 or -0.5 for a value: `--range -90:90` said "expected one argument"
+    err = one_error(capsys, *args)
+    assert err.startswith(f"algkin: error: {said}"), err
