@@ -83,3 +83,22 @@ def _reach_ins(path):
 def test_no_module_reaches_into_another_modules_private_names():
     found = [r for path in sorted((ROOT / "algkin").rglob("*.py")) for r in _reach_ins(path)]
     assert not found, found
+
+
+def _memoised_with_arguments(path):
+    """Functions of one file memoised by ``functools`` (``lru_cache``, ``cache``) that take arguments."""
+    found = []
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and (node.args.args or node.args.kwonlyargs):
+            for decorator in node.decorator_list:
+                name = ast.unparse(decorator.func if isinstance(decorator, ast.Call) else decorator)
+                if name.split(".")[-1] in ("lru_cache", "cache"):
+                    found.append(f"{path.relative_to(ROOT)}:{node.lineno} {node.name}")
+    return found
+
+
+def test_work_kept_by_its_key_is_kept_in_a_named_bounded_cache():
+    # A cache of work keyed by values is a runtime.cache.BoundedCache, named and cleared with the others
+    # (clear_caches), never a hidden functools one; a lazy constant (no arguments) may be functools'.
+    found = [r for path in sorted((ROOT / "algkin").rglob("*.py")) for r in _memoised_with_arguments(path)]
+    assert not found, found

@@ -3,7 +3,7 @@ construction's branch algebra (``constructions``)."""
 
 from .assembly import check_assembly
 from .certify import certify_label
-from .algebra import readable
+from .algebra import FormText, readable
 from .closed_form import Branch, closed_forms
 
-__all__ = ["Branch", "closed_forms", "check_assembly", "certify_label", "readable"]
+__all__ = ["Branch", "closed_forms", "check_assembly", "certify_label", "readable", "FormText"]

@@ -6,9 +6,10 @@ import sympy
 from sympy.core.mul import _keep_coeff
 
 from ..scene.implicit.algebra import Circles, reduce_on_circles
+from ..system.text import ExpressionText
 from .ratio import cancelled
 
-__all__ = ["reducer", "tidy_ratio", "tidy_product", "tidy_sqrt", "readable"]
+__all__ = ["reducer", "tidy_ratio", "tidy_product", "tidy_sqrt", "readable", "Readable", "FormText"]
 
 
 def reducer(substitution: Mapping[sympy.Symbol, sympy.Expr], inputs: Circles) -> Callable[[sympy.Expr], sympy.Expr]:
@@ -79,28 +80,67 @@ def readable(expr: sympy.Expr) -> sympy.Expr:
     >>> readable(sympy.sqrt((sympy.Rational(9, 2) - 3*c/2) * (c + 1)))
     sqrt(6)*sqrt((3 - c)*(c + 1))/2
     """
-    if expr.is_Add:  # a sum of terms: each term read apart (a content pulled out of them all reads worse)
-        return sympy.Add(*[readable(term) for term in expr.args])
-    return _keep_coeff(*_content_and_part(expr))
+    return Readable()(expr)
 
 
-def _content_and_part(expr: sympy.Expr) -> tuple[sympy.Expr, sympy.Expr]:
-    """``(k, p)`` with ``expr = k * p``, ``k`` a number and every sum among ``p``'s factors primitive."""
-    if expr.is_Number:
-        return expr, sympy.Integer(1)
-    if expr.is_Atom:
-        return sympy.Integer(1), expr
-    if expr.is_Add:
-        terms = readable(expr)
-        return terms.primitive() if terms.is_Add else _content_and_part(terms)
-    if expr.is_Mul:
-        parts = [_content_and_part(factor) for factor in expr.args]
-        return sympy.Mul(*[k for k, _ in parts]), sympy.Mul(*[p for _, p in parts])
-    if expr.is_Pow:
-        content, part = _content_and_part(expr.base)
-        if expr.exp.is_Integer:
-            return content**expr.exp, part**expr.exp
-        # a root: sympy takes the root of the number out of the product by itself
-        number, rest = sympy.Pow(_keep_coeff(content, part), expr.exp).as_coeff_Mul()
-        return number, rest
-    return sympy.Integer(1), expr.func(*[readable(a) for a in expr.args])
+class Readable:
+    """``readable`` for the expressions of one document, each shared subexpression made readable once
+    (a six-bar's root recurs in every coordinate of every branch)."""
+
+    def __init__(self) -> None:
+        self._made: dict[sympy.Expr, sympy.Expr] = {}
+        self._parts: dict[sympy.Expr, tuple[sympy.Expr, sympy.Expr]] = {}
+
+    def __call__(self, expr: sympy.Expr) -> sympy.Expr:
+        made = self._made.get(expr)
+        if made is None:
+            if expr.is_Add:  # a sum of terms: each term read apart (a content pulled out of them all reads worse)
+                made = sympy.Add(*[self(term) for term in expr.args])
+            else:
+                made = _keep_coeff(*self._content_and_part(expr))
+            self._made[expr] = made
+        return made
+
+    def _content_and_part(self, expr: sympy.Expr) -> tuple[sympy.Expr, sympy.Expr]:
+        """``(k, p)`` with ``expr = k * p``, ``k`` a number and every sum among ``p``'s factors primitive."""
+        found = self._parts.get(expr)
+        if found is None:
+            found = self._parts[expr] = self._split(expr)
+        return found
+
+    def _split(self, expr: sympy.Expr) -> tuple[sympy.Expr, sympy.Expr]:
+        if expr.is_Number:
+            return expr, sympy.Integer(1)
+        if expr.is_Atom:
+            return sympy.Integer(1), expr
+        if expr.is_Add:
+            terms = self(expr)
+            return terms.primitive() if terms.is_Add else self._content_and_part(terms)
+        if expr.is_Mul:
+            parts = [self._content_and_part(factor) for factor in expr.args]
+            return sympy.Mul(*[k for k, _ in parts]), sympy.Mul(*[p for _, p in parts])
+        if expr.is_Pow:
+            content, part = self._content_and_part(expr.base)
+            if expr.exp.is_Integer:
+                return content**expr.exp, part**expr.exp
+            # a root: sympy takes the root of the number out of the product by itself
+            number, rest = sympy.Pow(_keep_coeff(content, part), expr.exp).as_coeff_Mul()
+            return number, rest
+        return sympy.Integer(1), expr.func(*[self(a) for a in expr.args])
+
+
+class FormText:
+    """Closed forms of one document as text: made ``readable``, then written as ``str`` writes them,
+    each shared subexpression done once.
+
+    >>> c = sympy.Symbol("c")
+    >>> FormText()(sympy.sqrt(sympy.Rational(9, 2) - 3*c/2))
+    'sqrt(6)*sqrt(3 - c)/2'
+    """
+
+    def __init__(self) -> None:
+        self.readable = Readable()
+        self.text = ExpressionText()
+
+    def __call__(self, expr: sympy.Expr) -> str:
+        return self.text(self.readable(expr))

@@ -26,7 +26,8 @@ import flint
 import numpy as np
 from numpy.typing import NDArray
 
-from ..evaluate.program import ARB, BallProgram, compile_program
+from ..evaluate import ARB
+from ..evaluate.program import BallProgram, compile_program
 from ..system import input_values
 from .closed_form import Branch
 

@@ -22,7 +22,7 @@ from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled
 from ..scene.implicit.algebra import Circles, reduce_on_circles
 from ..system import symbol
-from .algebra import readable, tidy_ratio
+from .algebra import FormText, tidy_ratio
 from .constructions import Mode, algebra_of
 
 __all__ = ["Branch", "closed_forms"]
@@ -48,21 +48,28 @@ class Branch:
     def valid_when(self) -> str:
         """Where the branch is real, each discriminant without its positive numeric factor (a square's
         base != 0)."""
-        shown = {p: readable(d) for p, d in self.discriminants.items()}
-        return " & ".join(f"({d.base} != 0)" if p in self.squares and d.is_Pow else
-                          f"({_without_positive_number(d)} >= 0)" for p, d in shown.items()) or "True"
+        return self._valid_when(FormText())
 
-    def shown_values(self) -> dict[str, str]:
-        """Each closed form as text, every factor primitive with integer coefficients (``readable``)."""
-        return {k: str(readable(v)) for k, v in self.values.items()}
+    def _valid_when(self, text: FormText) -> str:
+        shown = {p: text.readable(d) for p, d in self.discriminants.items()}
+        return " & ".join(f"({text.text(d.base)} != 0)" if p in self.squares and d.is_Pow else
+                          f"({text.text(_without_positive_number(d))} >= 0)" for p, d in shown.items()) or "True"
 
-    def to_json(self) -> dict[str, object]:
+    def shown_values(self, text: FormText | None = None) -> dict[str, str]:
+        """Each closed form as text, every factor primitive with integer coefficients (``readable``);
+        ``text`` writes them (one for a document does its shared subexpressions once)."""
+        text = text or FormText()
+        return {k: text(v) for k, v in self.values.items()}
+
+    def to_json(self, text: FormText | None = None) -> dict[str, object]:
+        """The branch as JSON; ``text`` as for ``shown_values``."""
+        text = text or FormText()
         return {
             "label": self.label,
             "labels": dict(self.labels),
-            "values": self.shown_values(),
-            "valid_when": self.valid_when,
-            "discriminants": {k: str(readable(v)) for k, v in self.discriminants.items()},
+            "values": self.shown_values(text),
+            "valid_when": self._valid_when(text),
+            "discriminants": {k: text(v) for k, v in self.discriminants.items()},
             "selected": self.selected,
         }
 

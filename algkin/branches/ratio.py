@@ -34,8 +34,9 @@ class _Unsupported(Exception):
 
 def cancelled(expr: sympy.Expr) -> tuple[sympy.Rational, sympy.Expr, sympy.Expr] | None:
     """``(k, p, q)`` with ``sympy.fraction(sympy.cancel(expr))`` being ``(k1*p, k2*q)``, ``k = k1/k2``,
-    ``p`` and ``q`` sums with coprime integer coefficients (their ``primitive`` parts); None where
-    that is not sure (see the module), or where ``p`` or ``q`` is no sum.
+    ``p`` and ``q`` sums with coprime integer coefficients (their ``primitive`` parts), or ``(r, 1, 1)``
+    where the ratio is a number ``r``; None where that is not sure (see the module), or where only one
+    of ``p`` and ``q`` is no sum.
 
     >>> c, s = sympy.symbols("c s")
     >>> root = sympy.sqrt(5 - 4 * c)
@@ -43,6 +44,8 @@ def cancelled(expr: sympy.Expr) -> tuple[sympy.Rational, sympy.Expr, sympy.Expr]
     (1/6, c*sqrt(5 - 4*c) - 2, s*sqrt(5 - 4*c) + 4*s)
     >>> cancelled(c / (s * root + 1) + 1) is None  # a root in a denominator of a sum's term
     True
+    >>> cancelled((5 - 4 * c) / (10 - 8 * c))
+    (1/2, 1, 1)
     """
     symbols = expr.free_symbols
     roots = {p for p in expr.atoms(sympy.Pow) if p.exp == HALF}
@@ -67,12 +70,19 @@ def _normalised(numerator: flint.fmpq_mpoly, denominator: flint.fmpq_mpoly,
                 gens: list[sympy.Expr]) -> tuple[sympy.Rational, sympy.Expr, sympy.Expr] | None:
     """``(k, p, q)``: ``numerator/denominator = k*p/q``, ``p``, ``q`` primitive, ``q``'s leading
     coefficient positive (sympy's ``canonical_unit``); None unless both are sums."""
+    if numerator.is_constant() and denominator.is_constant():  # sympy's cancel gives the number
+        one = sympy.Integer(1)
+        return _rational(numerator.leading_coefficient() / denominator.leading_coefficient()), one, one
     if denominator.leading_coefficient() < 0:
         numerator, denominator = -numerator, -denominator
     (kp, p), (kq, q) = (_primitive(poly) for poly in (numerator, denominator))
     if len(p) < 2 or len(q) < 2:
         return None
     return kp / kq, from_terms(p, gens), from_terms(q, gens)
+
+
+def _rational(value: flint.fmpq) -> sympy.Rational:
+    return sympy.Rational(int(value.p), int(value.q))
 
 
 def _primitive(poly: flint.fmpq_mpoly) -> tuple[sympy.Rational, dict[tuple[int, ...], int]]:

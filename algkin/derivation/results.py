@@ -11,7 +11,7 @@ from typing import Any, Union
 import attrs
 import sympy
 
-from ..branches import Branch
+from ..branches import Branch, FormText
 from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled
 from ..scene.implicit.algebra import Circles, reduce_exact_on_circles, reduce_on_circles
@@ -66,21 +66,22 @@ class Derivation:
         return {u: _reduced(e, self.compiled.circles) for u, e in self.eliminations.items()}
 
     def to_json(self) -> Json:
-        document = self._json()
+        text = FormText()  # the branches' closed forms share their roots and denominators
+        document = self._json(text)
         if self.modes:  # a key of its own: a scene without modes gives the document it always gave
-            document["modes"] = [self._mode_json(m) for m in self.modes]
+            document["modes"] = [self._mode_json(m, text) for m in self.modes]
         return document
 
-    def _mode_json(self, followed: Followed) -> Json:
+    def _mode_json(self, followed: Followed, text: FormText) -> Json:
         """A named mode, its pieces each with the branch that is the mode there and its closed forms."""
         document = followed.to_json()
         for piece, shown in zip((p for p in followed.pieces if p.status != "no-assembly"), document["pieces"]):
             branch = followed.branch_of(piece, self.branches) if piece.status == "mode" else None
             shown["branch"] = branch.label if branch else None
-            shown["values"] = branch.shown_values() if branch else {}
+            shown["values"] = branch.shown_values(text) if branch else {}
         return document
 
-    def _json(self) -> Json:
+    def _json(self, text: FormText) -> Json:
         system = self.compiled.system
         return {
             "scene": self.compiled.scene.name,
@@ -93,7 +94,7 @@ class Derivation:
             "eliminants_reduced": {u: _reduced_text(e, self.compiled.circles)  # on c**2 + s**2 = 1
                                    for u, e in self.eliminations.items()},
             "eliminant_figures": {u: _figures(e) for u, e in self.eliminations.items()},
-            "branches": [dict(b.to_json(), certified=None if c is None else [dict(i) for i in c])
+            "branches": [dict(b.to_json(text), certified=None if c is None else [dict(i) for i in c])
                          for b, c in zip(self.branches, self.certified)],
             "verification": self.verification.to_json(),
             "timings": dict(self.timings),

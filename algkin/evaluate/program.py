@@ -32,6 +32,7 @@ import flint
 import numpy as np
 import sympy
 
+from ..runtime.cache import BoundedCache
 from .tree import ARB, FLOAT, MPMATH, NUMPY  # noqa: F401 - the kinds a program is compiled for
 from .tree import Floats, N, NumberKind, integer_power
 
@@ -47,20 +48,19 @@ ArrayProgram: TypeAlias = CompiledProgram[Floats | float]
 BallProgram: TypeAlias = CompiledProgram[flint.arb]
 
 
-@functools.lru_cache(maxsize=512)
-def _cached(exprs: tuple[sympy.Expr, ...], names: tuple[str, ...], kind: NumberKind[N]) -> _Program[N]:
-    return _Program(exprs, names, kind)
+# Programs by their expressions, names and kind: a second verification of a scene finds its programs here.
+PROGRAMS: BoundedCache[_Program[Any]] = BoundedCache(512, name="compiled programs")
 
 
 def compile_program(exprs: Iterable[sympy.Expr], names: Iterable[str], kind: NumberKind[N]) -> CompiledProgram[N]:
     """A function of the values of ``names`` (in order) returning ``exprs``' values, as a list.
 
-    Compiled once per ``(exprs, names, kind)`` and cached: a second verification of the same
+    Compiled once per ``(exprs, names, kind)`` and kept (``PROGRAMS``): a second verification of the same
     scene reuses it. Compiled when it is first called: a program kept for a case that does not
     come (a block's Newton iteration where its pencil solves it) costs no ``cse``.
     """
-    # lru_cache's wrapper of a generic function returns Any: the type said here
-    program: _Program[N] = _cached(tuple(sympy.sympify(e) for e in exprs), tuple(names), kind)
+    key = (tuple(sympy.sympify(e) for e in exprs), tuple(names), kind)
+    program: _Program[N] = PROGRAMS.get(key, lambda: _Program(*key))
     return program
 
 

@@ -9,7 +9,6 @@ Traceback (most recent call last):
 algkin.errors.SceneError: bad.toml: points.A.fixed: unknown name 'q' (known: none)
 """
 
-import functools
 import os
 import re
 import stat
@@ -27,6 +26,7 @@ import sympy
 
 from ..catalog import CATALOG as _CATALOG, catalog_names, catalog_path
 from ..runtime import suggest
+from ..runtime.cache import BoundedCache
 from ..errors import SceneError, UsageError
 from .constraints import Constraint, parse_constraint
 from .constructions import CONSTRUCTIONS, QUARTER_TURNS, Construction, Crank, Dyad, Fixed, Frame, Meet, Mode, Slider, \
@@ -104,12 +104,11 @@ def load_scene_text(text: str, source: str = "<scene>") -> Scene:
     A text read before gives the same (immutable) scene again, without parsing it twice."""
     if not isinstance(text, str) or not isinstance(source, str):
         return _parse(text, source)
-    return _parsed(text, source)
+    return SCENE_TEXTS.get((text, source), lambda: _parse(text, source))
 
 
-@functools.lru_cache(maxsize=64)
-def _parsed(text: str, source: str) -> Scene:
-    return _parse(text, source)
+# Scenes by their text and source: the same text is parsed once.
+SCENE_TEXTS: BoundedCache[Scene] = BoundedCache(64, name="scenes read")
 
 
 def _parse(text: str, source: str) -> Scene:

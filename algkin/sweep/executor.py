@@ -94,7 +94,7 @@ def on_worker(version: str, job: Job, index: int, designs: Sequence[tuple[int, A
 
 def _families() -> BoundedCache[Family | None]:
     """Where a process keeps the families of the jobs it runs (a sweep runs one)."""
-    return BoundedCache(FAMILIES)
+    return BoundedCache(FAMILIES, name="sweep families")
 
 
 def _version() -> str:

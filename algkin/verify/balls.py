@@ -37,6 +37,7 @@ from numpy.typing import NDArray
 
 from ..evaluate import ARB
 from ..evaluate.program import BallProgram, compile_program
+from ..runtime.cache import BoundedCache
 from ..system import symbol
 from ..system.convert import coefficients
 from .pencil import Pencil
@@ -173,10 +174,7 @@ def _explicit(equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol],
     return compile_program([-terms.get((0,), sympy.Integer(0)) / lead], parameters, ARB)
 
 
-@functools.lru_cache(maxsize=256)
-def _cached(names: tuple[str, ...], equations: tuple[sympy.Expr, ...],
-            parameters: tuple[str, ...]) -> BlockCertifier:
-    return BlockCertifier(list(names), list(equations), list(parameters))
+CERTIFIERS: BoundedCache[BlockCertifier] = BoundedCache(256, name="blocks' certifiers")
 
 
 def certify_parameters(block: Block) -> list[str]:
@@ -186,4 +184,5 @@ def certify_parameters(block: Block) -> list[str]:
 
 def certifier_of(block: Block) -> BlockCertifier:
     """The ``BlockCertifier`` of a ``solve.Blocks`` block, compiled once and reused by later calls."""
-    return _cached(tuple(block.names), tuple(block.equations), tuple(certify_parameters(block)))
+    key = (tuple(block.names), tuple(block.equations), tuple(certify_parameters(block)))
+    return CERTIFIERS.get(key, lambda: BlockCertifier(*map(list, key)))

@@ -11,13 +11,13 @@ elimination is reused.
 
 from __future__ import annotations
 
-import functools
 import math
 from collections.abc import Callable, Iterable, Mapping, Sequence
 
 import flint
 import sympy
 
+from ..runtime.cache import BoundedCache
 from ..system.convert import flint_context, to_sympy
 from .residual import Polynomial, PolynomialLike, exact
 
@@ -68,7 +68,7 @@ def structure_failures(polynomials: Mapping[str, PolynomialLike],
     """Messages for every polynomial that is not squarefree, or is not the product of its
     kept factors (when they are given). Exact and deterministic: an answer is kept for the
     same polynomials checked again."""
-    failures = []
+    failures: list[str] = []
     for name, p in polynomials.items():
         kept = (factors or {}).get(name)
         failures += _structure(name, _Keyed(p), None if kept is None else tuple(map(_Keyed, kept)))
@@ -90,12 +90,20 @@ class _Keyed:
         return hash(self.key)
 
 
-@functools.lru_cache(maxsize=256)
-def _structure(name: str, polynomial: _Keyed, factors: tuple[_Keyed, ...] | None) -> list[str]:
+def _structure(name: str, polynomial: _Keyed, factors: tuple[_Keyed, ...] | None) -> tuple[str, ...]:
+    """What is wrong with the polynomial's structure (squarefree, the product of its factors),
+    found once for the same polynomial and factors (``STRUCTURES``)."""
+    return STRUCTURES.get((name, polynomial, factors), lambda: _structure_failures(name, polynomial, factors))
+
+
+def _structure_failures(name: str, polynomial: _Keyed, factors: tuple[_Keyed, ...] | None) -> tuple[str, ...]:
     failures = [_not_squarefree(name, polynomial.polynomial)]
     if factors is not None:
         failures.append(_not_product(name, polynomial.polynomial, [f.polynomial for f in factors]))
-    return [f for f in failures if f]
+    return tuple(f for f in failures if f)
+
+
+STRUCTURES: BoundedCache[tuple[str, ...]] = BoundedCache(256, name="eliminants' structure checks")
 
 
 def _shown(polynomial: PolynomialLike) -> sympy.Expr:

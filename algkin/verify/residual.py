@@ -38,6 +38,7 @@ import sympy
 from numpy.typing import NDArray
 
 from ..evaluate import ARB
+from ..runtime.cache import BoundedCache
 from ..system.convert import flint_context, to_flint
 
 __all__ = ["Polynomial", "exact", "fraction", "polynomial_of"]
@@ -56,14 +57,10 @@ def polynomial_of(polynomial: PolynomialLike, names: Sequence[str],
     poly = exact(polynomial)
     key = (tuple(map(str, poly.context().names())), str(poly), tuple(names),
            tuple(sorted((n, str(v)) for n, v in (fixed or {}).items())))
-    if key not in _BUILT:
-        _BUILT[key] = Polynomial(poly, names, fixed)
-        while len(_BUILT) > 256:
-            _BUILT.pop(next(iter(_BUILT)))
-    return _BUILT[key]
+    return POLYNOMIALS.get(key, lambda: Polynomial(poly, names, fixed))
 
 
-_BUILT: dict[tuple[tuple[str, ...], str, tuple[str, ...], tuple[tuple[str, str], ...]], Polynomial] = {}
+POLYNOMIALS: BoundedCache[Polynomial] = BoundedCache(256, name="polynomials ready for balls")
 
 
 def fraction(value: ExactValue) -> Fraction:

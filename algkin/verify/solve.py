@@ -18,7 +18,6 @@ out are candidates: ``balls.Certifier`` proves each one (or not) on the original
 
 from __future__ import annotations
 
-import functools
 import itertools
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
@@ -30,6 +29,7 @@ from numpy.typing import NDArray
 
 from ..evaluate import NUMPY
 from ..evaluate.program import ArrayProgram, Floats, columns, compile_program
+from ..runtime.cache import BoundedCache
 from ..system import System, symbol
 from ..system.convert import coefficients
 from .pencil import Pencil
@@ -151,11 +151,13 @@ def derivative(expr: sympy.Expr, u: sympy.Symbol) -> sympy.Expr:
     return expr.diff(u)
 
 
-@functools.lru_cache(maxsize=64)
 def blocks_of(system: System) -> Blocks:
     """The system's ``Blocks``, compiled once per system (a hashable value: its own key) and
-    reused by later calls."""
-    return Blocks(system)
+    reused by later calls (``BLOCKS``)."""
+    return BLOCKS.get(system, lambda: Blocks(system))
+
+
+BLOCKS: BoundedCache[Blocks] = BoundedCache(64, name="systems' numeric blocks")
 
 
 @dataclass

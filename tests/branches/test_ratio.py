@@ -23,6 +23,13 @@ def test_a_later_dyads_ratio_in_flint():
     assert tidy_ratio(expr) == _tidy_ratio_in_sympy(expr)
 
 
+def test_a_ratio_that_is_a_number_in_flint():
+    # the lambda's dyad, of equal bars: (l1**2 - l2**2 + dist2) / (2 dist2) is 1/2 (by hand)
+    for expr, value in [((5 - 4 * C) / (10 - 8 * C), sympy.Rational(1, 2)), ((4 * C - 5) / (30 - 24 * C), sympy.Rational(-1, 6))]:
+        assert cancelled(expr) is not None
+        assert tidy_ratio(expr) == _tidy_ratio_in_sympy(expr) == value
+
+
 def test_what_the_argument_does_not_cover_is_left_to_sympy():
     root = sympy.sqrt(5 - 4 * C)
     assert cancelled(C / (S * root + 1) + 1) is None  # a root in a denominator of a sum's term

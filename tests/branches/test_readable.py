@@ -6,7 +6,8 @@ import pytest
 import sympy
 
 import algkin
-from algkin.branches import closed_forms, readable
+from algkin.branches import FormText, closed_forms, readable
+from algkin.branches.algebra import Readable
 from algkin.scene import compile_scene, load_scene
 from algkin.scene.settings import with_values
 
@@ -57,3 +58,14 @@ def test_the_fourbar_with_halves_reads_in_integers():
     document = algkin.derive(with_values(load_scene("fourbar"), {"a": "3/2", "d": "4.5"})).to_json()
     shown = document["branches"][0]["values"]["B_x"]
     assert "/2 - " not in shown and "(5 - 3*c_theta)" in shown
+
+
+def test_one_reader_for_a_document_gives_each_form_what_a_reader_of_its_own_gives():
+    # a six-bar's branches share their roots and denominators: read (and written) once for the document
+    forms = [v for branch in closed_forms(compile_scene(load_scene("stephenson-iii"), ["P"]))
+             for v in (*branch.values.values(), *branch.discriminants.values())]
+    shared, text = Readable(), FormText()
+    for form in forms + forms[::-1]:
+        alone = readable(form)
+        assert shared(form) == alone
+        assert text(form) == str(alone)

@@ -1,0 +1,41 @@
+"""algkin.system.text: an ExpressionText writes every expression as sympy's ``str`` does, character for
+character, however many subexpressions the expressions of one document share."""
+
+import sympy
+from hypothesis import given, settings, strategies as st
+
+from algkin.system.text import ExpressionText
+
+c, s = sympy.symbols("c s", real=True)
+LEAVES = (st.sampled_from([c, s, sympy.Symbol("l"), sympy.Symbol("l", positive=True)])
+          | st.fractions(-9, 9, max_denominator=7).map(sympy.Rational)
+          | st.floats(-1e3, 1e3, allow_nan=False).map(sympy.Float))
+
+
+def _expressions(children):
+    return (st.tuples(children, children).map(lambda p: p[0] + p[1])
+            | st.tuples(children, children).map(lambda p: p[0] - p[1])
+            | st.tuples(children, children).map(lambda p: p[0] * p[1])
+            | st.tuples(children, children).map(lambda p: p[0] / p[1] if p[1] != 0 else p[0])
+            | st.tuples(children, st.sampled_from([-2, -1, 2, 3, sympy.Rational(1, 2), sympy.Rational(-3, 2)]))
+            .map(lambda p: p[0] ** p[1] if p[0] != 0 else p[0])
+            | children.map(sympy.Abs))
+
+
+EXPRESSIONS = st.recursive(LEAVES, _expressions, max_leaves=14)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(EXPRESSIONS, min_size=1, max_size=6))
+def test_one_text_for_many_expressions_writes_each_as_str_does(exprs):
+    text = ExpressionText()
+    # each also nested in the next: a subexpression seen first on its own, then inside another, and the reverse
+    nested = [e * exprs[k - 1] + 1 for k, e in enumerate(exprs)]
+    for expr in [*exprs, *nested, *exprs]:
+        assert text(expr) == str(expr)
+
+
+def test_a_float_on_its_own_and_inside_a_sum_is_written_as_str_writes_each():
+    # sympy keeps a Float's trailing zeros at the top only
+    half, text = sympy.Float("0.50"), ExpressionText()
+    assert [text(half + c), text(half), text(half + c)] == [str(half + c), str(half), str(half + c)]
