@@ -25,6 +25,8 @@ from typing import Any, TypedDict
 import attrs
 import flint
 import sympy
+from sympy.polys.polytools import _sorted_factors
+from sympy.polys.polyutils import _sort_gens
 
 from ..branches import Branch
 from ..derivation.prepared import Prepared, given, prepared_from
@@ -41,6 +43,7 @@ from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
 from ..system import input_values, symbol
 from ..system.angles import Parametrisation
+from ..system.convert import flint_context, to_flint
 from ..runtime.frozen import FrozenDict
 from .frozen import deep_frozen, frozen_rows, thawed
 
@@ -195,14 +198,53 @@ def _artefacts(prepared: Prepared, line: Parametrisation, deadline: Deadline) ->
         u = symbol(unknown)
         if sympy.degree(elimination.polynomial, u) < 2:
             continue
-        discriminant = sympy.discriminant(elimination.polynomial, u)
-        for factor, _ in sympy.factor_list(sympy.expand(discriminant.xreplace(_defaults(compiled))))[1]:
+        for factor in discriminant_factors(elimination.polynomial, u, _defaults(compiled)):
             numerator = line.numerator(factor)
             if not numerator.has(t) or any(sympy.rem(g, numerator, t) == 0 for g in geometric if g.has(t)):
                 continue
             dropped.append({"eliminant": unknown, "factor": str(factor),
                             "why": _why_not_a_toggle(compiled, branches, factor, line)})
     return dropped
+
+
+def discriminant_factors(polynomial: sympy.Expr, unknown: sympy.Symbol,
+                         values: Mapping[sympy.Symbol, sympy.Expr]) -> list[sympy.Expr]:
+    """The irreducible factors of ``polynomial``'s discriminant in ``unknown`` with ``values`` put in:
+    those of ``sympy.factor_list``, in its order, computed in python-flint (sympy's discriminant and
+    factoring took over a minute on a six-bar's eliminants).
+
+    sympy's ``factor_list`` takes the terms' common monomial out first (``together``), so each of its
+    variables is a factor of its own, then factors the rest over the variables it has; each factor is
+    primitive with a positive leading coefficient in the lex order of sympy's generators, as python-flint's.
+
+    >>> u, c, a = sympy.symbols("u c a")
+    >>> discriminant_factors((c - 2) * u**2 + a * u + c**2 - 4, u, {a: sympy.Integer(0)})  # -4 (c + 2) (c - 2)**2
+    [c + 2, c - 2]
+    """
+    gens = _sort_gens(polynomial.free_symbols)
+    given = {k: v for k, v in values.items() if k in polynomial.free_symbols}
+    if not all(v.is_Rational for v in given.values()):  # a dimension python-flint cannot take: sympy's way
+        discriminant = sympy.expand(sympy.discriminant(polynomial, unknown).xreplace(values))
+        return [factor for factor, _ in sympy.factor_list(discriminant)[1]]
+    ctx = flint_context([g.name for g in gens])
+    discriminant = to_flint(polynomial, ctx).discriminant(unknown.name)
+    if given:
+        discriminant = discriminant.subs({k.name: flint.fmpq(int(v.p), int(v.q)) for k, v in given.items()})
+    if discriminant.is_zero():
+        return []
+    common = [min(m[k] for m in discriminant.monoms()) for k in range(len(gens))]
+    factors = [(sympy.Poly(gens[k], gens[k], domain=sympy.ZZ), e) for k, e in enumerate(common) if e]
+    rest = discriminant / ctx.from_dict({tuple(common): 1})
+    if not rest.is_constant():
+        kept = [k for k, d in enumerate(rest.degrees()) if d]  # the variables sympy factors the rest over
+        factors += [(_sympy_poly(f, [gens[k] for k in kept], kept), e) for f, e in rest.factor()[1]]
+    return [poly.as_expr() for poly, _ in _sorted_factors(factors, "factor")]
+
+
+def _sympy_poly(poly: flint.fmpq_mpoly, gens: Sequence[sympy.Symbol], kept: Sequence[int]) -> sympy.Poly:
+    """A primitive integer ``poly`` as a sympy ``Poly`` over ``gens``, the variables at ``kept``."""
+    terms = {tuple(m[k] for k in kept): int(flint.fmpq(c).p) for m, c in poly.to_dict().items()}
+    return sympy.Poly.from_dict(terms, *gens, domain=sympy.ZZ)
 
 
 def _why_not_a_toggle(compiled: Compiled, branches: Sequence[Branch], factor: sympy.Expr, line: Parametrisation) -> str:

@@ -5,11 +5,12 @@ from fractions import Fraction
 from importlib.resources import files
 
 import pytest
+import sympy
 from hypothesis import assume, example, given, settings, strategies as st
 
 from algkin.derivation.prepared import prepare
 from algkin.scene import compile_scene, load_scene_text
-from algkin.analyses.toggles import grashof, toggles
+from algkin.analyses.toggles import discriminant_factors, grashof, toggles
 
 from ..derivation.work import counting
 
@@ -183,3 +184,19 @@ def test_a_scene_file_given_as_a_path_object(tmp_path):
     path.write_text(files("algkin.catalog").joinpath("chebyshev-lambda.toml").read_text(encoding="utf-8"))
     found = toggles(path, artefacts=False)
     assert (found.toggles, found.grashof["class"]) == ((), "crank-rocker")  # as the module's example says
+
+
+U, C, S, K = (sympy.Symbol(n) for n in ("u", "c_t", "s_t", "k"))
+TERMS = st.lists(st.tuples(st.integers(-6, 6), st.integers(0, 3), st.integers(0, 2), st.integers(0, 2), st.integers(0, 1)),
+                 min_size=2, max_size=7)
+
+
+@settings(max_examples=60, deadline=None)
+@given(TERMS, st.fractions(-3, 3, max_denominator=4))
+def test_discriminant_factors_are_sympys_factor_list_in_its_order(terms, k):
+    # eliminant-like polynomials in u over the input's c, s and a dimension k given a value
+    polynomial = sympy.Add(*[a * U**e * C**i * S**j * K**m for a, e, i, j, m in terms])
+    assume(sympy.degree(polynomial, U) >= 2)
+    values = {K: sympy.Rational(k.numerator, k.denominator)}
+    expected = sympy.factor_list(sympy.expand(sympy.discriminant(polynomial, U).xreplace(values)))[1]
+    assert [str(f) for f in discriminant_factors(polynomial, U, values)] == [str(f) for f, _ in expected]
