@@ -51,6 +51,8 @@ __all__ = ["follow", "Followed", "FollowedSample"]
 MAX_INPUT_DIGITS = 40
 """The most digits an input value is written with to tell it from its neighbours (a step is
 never shorter than 2^-36 of the span)."""
+MAX_STEPS = 100_000
+"""The most steps a ``max_step`` may ask for: each is a sample kept and shown."""
 
 
 @attrs.frozen
@@ -118,7 +120,7 @@ def follow(scene: Scene | str, *, mode: str, start: Mapping[str, Any], stop: Any
     name, t0, t1 = _span(scene, start, stop)
     others = dict(at or {})
     if name in others:
-        raise UsageError("at", name, "is the input followed: give its start with start=, not at=")
+        raise UsageError("at", name, "is the input followed: give its value as the start only")
     found = solve(scene, {**others, name: t0}, mode=mode, digits=30)
     if not found.configurations:
         raise UsageError("mode", mode, f"does not assemble at {name} = {t0}")
@@ -132,7 +134,7 @@ def follow(scene: Scene | str, *, mode: str, start: Mapping[str, Any], stop: Any
     follower = Follower(system.unknowns, system.equations, variables, parameters)
     configuration = found.configurations[0]
     guess = [float(configuration.points[u[:-2]][u.endswith("_y")]) for u in system.unknowns]
-    step = None if max_step is None else _step(max_step)
+    step = None if max_step is None else _step(max_step, t0, t1)
     path = follower.follow(guess, t0, t1, known=[known[p] for p in parameters], max_step=step, deadline=deadline)
     inputs = _input_texts([sample.t for sample in path.samples], digits)
     samples = tuple(_sample(system, variables, path, k, known, digits, at=inputs[k]) for k in range(len(path.samples)))
@@ -159,13 +161,18 @@ def _checked(scene: Scene, name: str, value: Any, argument: str) -> Fraction:
         raise UsageError(argument, err.value, err.message) from None
 
 
-def _step(value: Any) -> Fraction:
+def _step(value: Any, t0: Fraction, t1: Fraction) -> Fraction:
+    """``max_step`` as an exact positive number, no shorter than the way from ``t0`` to ``t1`` over ``MAX_STEPS``."""
+    span = abs(t1 - t0)
     try:
         step = Fraction(str(value))
     except (ValueError, ZeroDivisionError):
         step = Fraction(0)
     if step <= 0:
         raise UsageError("max_step", value, "expected a positive number (the input's unit)")
+    if span > step * MAX_STEPS:
+        raise UsageError("max_step", value, f"would take over {MAX_STEPS} steps from {float(t0):g} to {float(t1):g}; "
+                                            f"give at least {float(span / MAX_STEPS):.3g}")
     return step
 
 

@@ -118,8 +118,8 @@ class Subject:
     def __init__(self, scene: Scene, of: str, *, deadline: Deadline | None = None) -> None:
         self.compiled = compile_scene(scene, [of])
         self.branch = next(b for b in closed_forms(self.compiled) if b.selected)
-        (self.c, self.s), = self.compiled.system.inputs.values()
         (self.unknowns,) = self.compiled.outputs.values()
+        self.c, self.s = _one_input(self.compiled, self.branch, self.unknowns, of)
         # the construction whose toggles matter: the output's own, else the last one it rests on
         self.dyad = next((d for d in self.compiled.implicit if d.point == of), None) or \
             (self.compiled.implicit[-1] if self.compiled.implicit else None)
@@ -131,6 +131,20 @@ class Subject:
         self.solved = {u: [sympy.lambdify(cs, r, "numpy")
                            for r in sympy.solve(derived.eliminations[u].polynomial, symbol(u))]
                        for u in self.unknowns}
+
+
+def _one_input(compiled: Compiled, branch: Branch, unknowns: tuple[str, ...], of: str) -> tuple[str, ...]:
+    """The one input angle's (cos, sin) names that ``of`` moves with; a UsageError if it moves with
+    none (a fixed point, a bar's length: no error to measure) or with more than one."""
+    inputs = compiled.system.inputs
+    if len(inputs) > 1:
+        raise UsageError("of", of, f"moves with {len(inputs)} inputs ({', '.join(inputs)}); accuracy is measured "
+                                   "over one input angle")
+    angles = {symbol(n) for pair in inputs.values() for n in pair}
+    if not any(sympy.sympify(branch.values[u]).free_symbols & angles for u in unknowns):
+        raise UsageError("of", of, "does not move with the input: no error to measure")
+    (pair,) = inputs.values()
+    return pair
 
 
 class _StableOutput:

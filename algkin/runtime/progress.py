@@ -41,7 +41,7 @@ def shown(quiet: bool = False, stream: TextIO | None = None, *,
     the line is cleared when the block ends, so that what is written next starts clean. A count is
     redrawn at most every 0.1 s of ``clock`` (seconds; tests give one that moves when they say)."""
     stream = sys.stderr if stream is None else stream
-    if quiet or not stream.isatty():
+    if quiet or stream is None or not stream.isatty():  # None: stderr closed (``2>&-``)
         yield
         return
     line = _Line(stream, clock)

@@ -492,6 +492,8 @@ def parse_inputs(motion: Motion, texts: Sequence[str]) -> dict[str, float]:
         if not lo <= degrees <= hi:
             what = "a number of degrees" if motion.inputs[name].is_angle else "a length"
             raise UsageError("--input", text, f"expected {what} in [{lo:g}, {hi:g}]")
+        if name in inputs:
+            raise UsageError("--input", text, f"{name} given twice")
         inputs[name] = degrees
     return inputs
 
@@ -513,6 +515,8 @@ def parse_ranges(texts: Sequence[str], option: str = "--range-of") -> dict[str, 
         # nan fails lo < hi, so only infinities need their own check.
         if not (name.isidentifier() and lo < hi and np.isfinite([lo, hi]).all()):
             raise UsageError(option, text, "expected NAME=LO:HI, finite numbers with LO below HI, e.g. a=0.5:2")
+        if name in ranges:
+            raise UsageError(option, text, f"{name} given twice")
         ranges[name] = (lo, hi)
     return ranges
 

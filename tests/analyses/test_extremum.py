@@ -2,10 +2,15 @@
 
 import json
 import math
+import re
 import subprocess
 import sys
 
 import flint
+import pytest
+
+from algkin.analyses.extremum import extremum
+from algkin.errors import UsageError
 
 
 def run(*args):
@@ -72,3 +77,10 @@ def test_an_angles_extremes_do_not_follow_the_callers_mpmath_precision():
             result = extremum(scene, "angle(A, B, D)")
         found[dps] = [float(p.value) for p in result.critical_points]
     assert found[15] == found[50]
+
+
+@pytest.mark.parametrize("output", ["O.x", "dist(O, D)"])
+def test_an_output_of_fixed_points_does_not_depend_on_the_input(output):
+    # once "scene='chebyshev-lambda': an extremum needs exactly one input", of a scene with one
+    with pytest.raises(UsageError, match=re.escape(f"output={output!r}: the output does not depend on the input")):
+        extremum("chebyshev-lambda", output)

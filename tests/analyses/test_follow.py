@@ -138,6 +138,10 @@ def test_the_deadline_is_kept():
     (dict(start={"angle": -1}), "start='angle=-1': expected a number of degrees in [0, 360]"),
     (dict(start={}), "start={}: expected one input and its value"),
     (dict(max_step=0), "max_step=0: expected a positive number"),
+    # once taken: 3.6e302 steps, never ending (without a budget) and a sample kept at each
+    (dict(max_step="1e-300"), "max_step='1e-300': would take over 100000 steps from 0 to 360; give at least "
+                              "0.0036"),
+    (dict(at={"angle": 3}), "at='angle': is the input followed: give its value as the start only"),
     (dict(digits=0), "digits=0: expected a whole number of digits"),
 ])
 def test_bad_input_names_the_argument(kwargs, said):

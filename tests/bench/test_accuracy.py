@@ -8,6 +8,7 @@ import pytest
 from hypothesis import assume, given, settings, strategies as st
 
 from algkin.bench.accuracy import REFERENCE, accuracy
+from algkin.errors import UsageError
 from algkin.scene.settings import with_values
 from algkin.branches.constructions.floats import heron_area
 
@@ -231,3 +232,15 @@ def test_without_numba_the_compiled_row_says_it_is_numpy(monkeypatch):
     by = {(r["strategy"], r["case"]): r for r in rows}
     assert "numba is not installed" in by["compiled", "uniform"]["note"]
     assert by["compiled", "uniform"]["max_rel_error"] == by["stabilised", "uniform"]["max_rel_error"]
+
+
+@pytest.mark.parametrize("scene, of, said", [
+    ("chebyshev-lambda", "O", "of='O': does not move with the input"),  # a fixed point: no input at all
+    ("chebyshev-lambda", "dist(A, A)", "of='dist(A, A)': does not move with the input"),  # 0: no relative error
+    ("five-bar", None, "of='P': moves with 2 inputs (t1, t2)"),
+])
+def test_an_output_that_does_not_move_with_one_input_is_refused(scene, of, said):
+    # once a traceback (no input to unpack, or two), or numpy's warnings on stderr and rows of NaN
+    with pytest.raises(UsageError) as caught:
+        accuracy(scene, samples=10, of=of)
+    assert str(caught.value).startswith(said)

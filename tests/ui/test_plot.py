@@ -1,6 +1,7 @@
 """Figures: one command each, drawn from closed forms, with the certified points on them."""
 
 import io
+import json
 import pathlib
 import subprocess
 import sys
@@ -185,3 +186,13 @@ def test_lengths_carry_the_scenes_unit_and_names_are_typeset():
     assert all(t.startswith("$") and "**" not in t and "sqrt(" not in t for t in legend[:-1])
     for drawn in (figure, against.figure):
         drawn.savefig(io.BytesIO(), format="png")  # the mathtext parses
+
+
+@pytest.mark.parametrize("name", ["連杆機構", "lambda\x1b[31m\r"], ids=["cjk", "control"])
+def test_a_scene_name_the_font_cannot_draw_says_nothing_on_stderr(tmp_path, name):
+    # matplotlib warned of each missing glyph (two lines each) on stderr, which holds at most one line
+    scene = tmp_path / "named.toml"
+    scene.write_text(ARM.replace('name = "arm-string"', f"name = {json.dumps(name)}"), encoding="utf-8")
+    for out, extra in ((tmp_path / "mechanism.png", []), (tmp_path / "quantity.svg", ["--of", "AB"])):
+        done = run("plot", str(scene), "--out", str(out), *extra)
+        assert (done.returncode, done.stderr) == (0, "") and out.stat().st_size > 0

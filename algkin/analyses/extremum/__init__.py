@@ -36,6 +36,7 @@ from .critical import (DIGITS, CriticalPoint, Number, Problem, critical_points, 
 
 if TYPE_CHECKING:
     from ...derivation.pipeline import Derivation
+    from ...scene.compile import Compiled
 
 Exact = tuple[Union[sympy.Expr, None], Union[sympy.Expr, None]]  # an angle's extreme in degrees, its via's value
 
@@ -110,8 +111,7 @@ def problem_for(derived: Derivation, output: str, degrees: tuple[sympy.Expr, sym
     input's range. ``witnesses``: the derivation's (its ``Prepared``'s), drawn again if not given;
     its eliminations keep to ``deadline``, if any."""
     compiled = derived.compiled
-    if len(compiled.system.inputs) != 1:
-        raise UsageError("scene", compiled.scene.name, "an extremum needs exactly one input")
+    _one_input(compiled, output)
     name, line = single_input(compiled, "extrema")
     ((output_name, unknowns),) = compiled.outputs.items()
     parameters = tuple(symbol(p) for p in compiled.system.parameters)
@@ -147,6 +147,16 @@ def input_span(spec: Input, angle_range: tuple[float | str, float | str] | None)
     return lo, hi
 
 
+def _one_input(compiled: Compiled, output: str) -> str:
+    """The one input ``output`` moves with; a UsageError if none (it is made of fixed points only) or several."""
+    if not compiled.system.inputs:
+        raise UsageError("output", output, "the output does not depend on the input")
+    if len(compiled.system.inputs) != 1:
+        raise UsageError("scene", compiled.scene.name, "an extremum needs exactly one input")
+    (name,) = compiled.system.inputs
+    return name
+
+
 def extremum(scene: SceneLike | Prepared, output: str, angle_range: tuple[float | str, float | str] | None = None,
              params: Sequence[str] = (), largest: bool = False, method: str = "resultant", backend: str = "flint",
              set: Values | None = None,  # noqa: A002 - the public API's name, as in derive
@@ -179,10 +189,7 @@ def extremum_of(derived: Derivation, output: str, angle_range: tuple[float | str
     mapped, and the least and greatest exchanged where the angle falls as its via grows. Its
     eliminations keep to ``deadline``, if any.
     """
-    inputs = derived.compiled.system.inputs
-    if len(inputs) != 1:
-        raise UsageError("scene", derived.compiled.scene.name, "an extremum needs exactly one input")
-    (name,) = inputs
+    name = _one_input(derived.compiled, output)
     lo, hi = input_span(derived.compiled.scene.inputs[name], angle_range)
     problem = problem_for(derived, output, (lo, hi), witnesses=witnesses, deadline=deadline)
     scale = problem.scale

@@ -23,6 +23,7 @@ import functools
 import gc
 import importlib
 import sys
+import warnings
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING
 
@@ -102,7 +103,11 @@ def _command(args: argparse.Namespace) -> int:
     if sys.stdout is None:  # closed (``>&-``): no work whose result could not be written
         return write_stdout("", 0)
     check_paths(args)  # before any work: every output writable, none over an input
-    with progress.shown(args.quiet):  # ended, and its line cleared, before anything is said
+    with progress.shown(args.quiet), warnings.catch_warnings():  # ended, and its line cleared, before anything is said
+        # A library's warning is two lines on stderr, which holds at most one: matplotlib's of a glyph its
+        # font lacks (a scene named in another script), numpy's of a float overflow (what it means, the
+        # report says: a verification that could not evaluate, a figure's box).
+        warnings.simplefilter("ignore")
         text, code, *files = _run(args)
     _save(*files)
     return write_stdout(text, code)  # a signal while writing (to a slow reader) is caught too

@@ -93,7 +93,7 @@ def _method(args: argparse.Namespace) -> str:
     """The method asked for, else the default (imported here: ``algkin list`` loads no algebra)."""
     from ...eliminate import DEFAULT_METHOD
 
-    return args.method or DEFAULT_METHOD
+    return DEFAULT_METHOD if args.method is None else args.method
 
 
 def _range(text: str) -> tuple[float, float]:

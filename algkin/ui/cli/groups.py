@@ -29,7 +29,7 @@ def _refuse(args: argparse.Namespace, options: Sequence[str]) -> None:
         value = getattr(args, option, None)
         if option == "backend" and value == "flint":
             continue
-        if value:
+        if value not in (None, False, []):  # given, if only as "" (an unset shell variable)
             flag = "--" + option.replace("_", "-")
             raise UsageError(flag, " ".join(value) if isinstance(value, list) else value, NOT_YET)
 

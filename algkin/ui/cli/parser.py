@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import re
 import sys
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any, NoReturn
@@ -36,12 +37,15 @@ class Shown(Exception):  # noqa: N818 - not an error: the answer to --help or --
 
 class _Parser(argparse.ArgumentParser):
     """argparse with a one-line error and exit code 2; help and version raised as ``Shown``;
-    ``type=int`` and ``type=float`` read ASCII numbers only (Python's own also read other scripts' digits)."""
+    ``type=int`` and ``type=float`` read ASCII numbers only (Python's own also read other scripts' digits);
+    a value that starts with a minus and a digit is a value (``--range -90:90``, ``--max-step -1e-3``), where
+    argparse takes only ``-90`` or ``-0.5`` as one and else said "expected one argument"."""
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
         self.register("type", int, _whole)
         self.register("type", float, _real)
+        self._negative_number_matcher = re.compile(r"^-\.?[0-9]")  # no flag of algkin's starts so
 
     def error(self, message: str) -> NoReturn:
         raise UsageError("arguments", " ".join(sys.argv[1:]), message)

@@ -7,7 +7,7 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 from ...runtime.strict_json import json_text
-from ...runtime.terminal import terminal_safe
+from ...runtime.terminal import one_line, terminal_safe
 
 if TYPE_CHECKING:
     import sympy
@@ -191,13 +191,19 @@ def _report_group_accuracy(d: Document) -> str:
 
 
 def render(args: argparse.Namespace, document: Document, report: Callable[[Document], str]) -> str:
-    """What the command prints: ``document`` as JSON with --json, else ``report(document)``.
+    """What the command prints: ``document`` as JSON with --json, else ``report(document)``, where
+    the scene's name is one line (a newline in it must not start a line that reads as algkin's own).
 
     >>> from types import SimpleNamespace
     >>> render(SimpleNamespace(json=False), {"out": "a.svg"}, lambda d: d["out"])
     'a.svg\\n'
+    >>> render(SimpleNamespace(json=False), {"scene": "x\\nverification passed"}, lambda d: f"scene {d['scene']}")
+    'scene x\\\\nverification passed\\n'
     """
-    return json_text(document) if args.json else terminal_safe(report(document)) + "\n"
+    if args.json:
+        return json_text(document)
+    name = document.get("scene")
+    return terminal_safe(report(dict(document, scene=one_line(name)) if isinstance(name, str) else document)) + "\n"
 
 
 def report_solve(d: Document) -> str:

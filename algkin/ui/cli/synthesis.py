@@ -9,7 +9,9 @@ sees (two equal poses, a pure translation) is said as the file's: ``FILE: poses:
 from __future__ import annotations
 
 import argparse
+import os
 import pathlib
+import re
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
@@ -53,6 +55,8 @@ def _cmd_synthesize(args: argparse.Namespace) -> Outcome:
     task = read_task(args.file)
     if task.kind != args.kind:
         raise UsageError("kind", args.kind, f"{args.file} asks for {task.kind} synthesis (kind = \"{task.kind}\")")
+    if args.out:
+        _never_over_input(args.file, args.out, task.name)
     try:
         found = synthesize(task, bits=args.bits, digits=args.digits, min_transmission=args.min_transmission,
                            budget=args.deadline)
@@ -70,6 +74,21 @@ def _cmd_synthesize(args: argparse.Namespace) -> Outcome:
         files.append(_figure(found, args.plot))
         document["plot"] = args.plot
     return render(args, document, report_synthesis), 0, files
+
+
+def _never_over_input(file: str, out: str, name: str) -> None:
+    """Refuse ``--out`` before the work if the input is there under the name of a scene file it
+    writes (``NAME-K.toml``, through any link): it would be replaced by a mechanism."""
+    from ...synthesis.fourbar import safe_name
+
+    folder = pathlib.Path(out)
+    if not (folder.is_dir() and os.path.isfile(file)):
+        return  # a folder still to make, or an example taken by name: nothing of the user's there
+    written = re.compile(rf"{re.escape(safe_name(name))}-[0-9]+\.toml")
+    for path in folder.iterdir():
+        if written.fullmatch(path.name) and path.is_file() and os.path.samefile(path, file):
+            raise UsageError("--out", out, f"holds the input {file} as {path.name}, a name of the scene files "
+                                           "written there; algkin never writes over what it reads")
 
 
 def _figure(found: Any, path: str) -> File:

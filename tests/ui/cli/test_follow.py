@@ -48,7 +48,7 @@ def test_the_budget_stops_it_with_one_line_exit_1(monkeypatch, capsys):
     (["--mode", "left", "--from", "phi=0", "--to", "90"], "--from='phi': not an input of fourbar (inputs: theta)"),
     (["--mode", "left", "--from", "0", "--to", "90"], "--from='0': expected INPUT=VALUE"),
     (["--mode", "left", "--from", "theta=0", "--to", "90", "--max-step", "-1"], "--max-step='-1': expected a positive"),
-    (["--mode", "left", "--from", "theta=0", "--to", "90", "--at", "theta=3"], "--at='theta': is the input followed"),
+    (["--mode", "left", "--from", "theta=0", "--to", "90", "--at", "theta=3"], "--at='theta': is the input followed: give its value as the start only"),
     (["--mode", "left", "--from", "theta=0"], "the following arguments are required: --to"),
 ])
 def test_bad_input_is_one_line_exit_2(capsys, argv, said):

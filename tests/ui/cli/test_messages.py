@@ -80,3 +80,26 @@ def test_a_curve_with_nothing_dropped_says_so_without_a_dangling_colon(capsys):
     assert code == 0
     assert "no extraneous factor dropped" in out.splitlines()
     assert not any(line.endswith(":") for line in out.splitlines())
+
+
+@pytest.mark.parametrize("command", [["derive"], ["curve", "--point", "P"], ["verify"]])
+def test_an_empty_method_is_no_method_not_the_default(capsys, command):
+    # `--method ""` (an unset shell variable) ran the default method as if the flag were absent
+    err = one_error(capsys, command[0], "chebyshev-lambda", *command[1:], "--method", "", "--samples", "3")
+    assert err.startswith("algkin: error: --method='': unknown elimination method"), err
+
+
+def test_an_empty_method_with_points_solved_together_is_refused(capsys):
+    err = one_error(capsys, "derive", "3rpr", "--method", "", "--samples", "3")
+    assert err.startswith("algkin: error: --method='': is not taken with points solved together"), err
+
+
+@pytest.mark.parametrize(("args", "said"), [
+    (["extremum", "arm-string", "--of", "AB", "--range", "-1e-3:-2e-3"], "--range='-1e-3:-2e-3': lo must be below hi"),
+    (["follow", "fourbar", "--mode", "left", "--from", "theta=0", "--to", "9", "--max-step", "-1e-3"],
+     "--max-step='-1e-3': expected a positive number"),
+])
+def test_a_value_starting_with_a_minus_and_a_digit_is_a_value(capsys, args, said):
+    # argparse took only -90 or -0.5 for a value: `--range -90:90` said "expected one argument"
+    err = one_error(capsys, *args)
+    assert err.startswith(f"algkin: error: {said}"), err

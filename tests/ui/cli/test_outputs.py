@@ -179,3 +179,12 @@ def test_help_and_version_on_a_full_stdout_are_one_line_and_exit_1(args):
         process = start(algkin(*args), stdout=full)
     code, _, err, _ = finish(process, timeout=120)
     assert (code, err) == (1, NO_SPACE)
+
+
+@pytest.mark.parametrize("args", [("list",), ("derive", "chebyshev-lambda", "--outputs", "B", "--samples", "3",
+                                             "--max-seconds", "100")], ids=["list", "derive-budget"])
+def test_a_closed_stderr_still_does_the_work(args):
+    # `algkin list 2>&-`: Python's sys.stderr is then None; nothing is said, the output is still written
+    process = start(algkin(*args), stderr=None, preexec_fn=lambda: os.close(2))
+    code, out, _, _ = finish(process, timeout=120)
+    assert code == 0 and out.split()[0] in ("3rpr", "scene"), out

@@ -131,3 +131,17 @@ def test_toggles_time_ratio_follows_set_and_is_null_with_a_reason(tmp_path):
     document = json.loads(rocking.stdout)
     assert document["time_ratio"] is None and "does not turn fully" in document["time_ratio_reason"]
     assert len(document["limits"]) == 2
+
+
+@pytest.mark.parametrize("command", [["show"], ["derive", "--samples", "3"], ["toggles"]])
+def test_a_scene_name_cannot_start_a_line_of_the_report(tmp_path, capsys, command):
+    # a name holding a newline printed a line of the scene's own making among algkin's
+    forged = "x\nverification passed: 80 branch values on 40 samples\r\n"
+    text = (ROOT / "algkin" / "catalog" / "chebyshev-lambda.toml").read_text()
+    (tmp_path / "forged.toml").write_text(text.replace('name = "chebyshev-lambda"', f"name = {json.dumps(forged)}"))
+    from algkin.ui.cli import main
+
+    assert main([command[0], str(tmp_path / "forged.toml"), *command[1:]]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert not any(line.startswith("verification passed: 80") for line in lines)
+    assert any("x\\nverification passed: 80 branch values on 40 samples\\r\\n" in line for line in lines)

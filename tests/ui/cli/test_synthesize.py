@@ -2,6 +2,7 @@
 no real solution an answer (exit 0), and bad input one line, exit 2, nothing written."""
 
 import json
+import os
 import pathlib
 
 import pytest
@@ -198,3 +199,13 @@ def test_from_python_a_task_of_any_name_writes_scene_files_of_a_safe_name():
 
     found = synthesize(attrs.evolve(read_task("three-pairs"), name="../../escaped"))
     assert list(found.scenes()) == ["escaped-1.toml"]
+
+
+def test_a_scene_file_it_would_write_is_never_its_input(capsys, tmp_path):
+    # the input named as the first scene file it writes (NAME-1.toml), in the folder written to
+    given = tmp_path / "three-pairs-1.toml"
+    given.write_text(pathlib.Path(THREE).read_text())
+    assert main(["synthesize", "function", str(given), "--out", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith(f"algkin: error: --out='{tmp_path}': ") and "three-pairs-1.toml" in err
+    assert given.read_text() == pathlib.Path(THREE).read_text() and os.listdir(tmp_path) == [given.name]

@@ -18,7 +18,8 @@ import sympy
 pytest.importorskip("matplotlib")
 
 from algkin import curve  # noqa: E402
-from algkin.ui.draw import animate, mechanism_figure, modes_figure  # noqa: E402
+from algkin.errors import UsageError  # noqa: E402
+from algkin.ui.draw import animate, mechanism_figure, modes_figure, parse_inputs, parse_ranges  # noqa: E402
 from algkin.analyses.motion import Motion  # noqa: E402
 from algkin.scene import load_scene  # noqa: E402
 
@@ -368,3 +369,15 @@ def test_a_slider_is_a_block_on_a_rail_and_its_lines_point_no_pivot():
     heights = sorted(line.get_xy1()[1] for line in rails)  # each edge horizontal, one either side of y = 1/2
     assert heights[0] < 0.5 < heights[1] and all(line.get_xy1()[1] == line.get_xy2()[1] for line in rails)
     assert (0.0, 0.5) not in [tuple(xy) for xy in joints(axes)]  # L, the line's point, is no ground pivot
+
+
+@pytest.mark.parametrize("parse, texts, said", [
+    (lambda texts: parse_inputs(Motion("chebyshev-lambda"), texts), ["angle=30", "40"],
+     "--input='40': angle given twice"),
+    (parse_ranges, ["a=1:2", "a=3:4"], "--range-of='a=3:4': a given twice"),
+])
+def test_a_value_given_twice_is_refused(parse, texts, said):
+    # the last one was drawn, the first silently dropped (solve's --at refuses the same)
+    with pytest.raises(UsageError) as caught:
+        parse(texts)
+    assert str(caught.value) == said
