@@ -18,6 +18,12 @@ GRID = 721
 _FLOAT_BITS = 500  # a product of two rationals of more bits than this may leave a float's range (2**1024)
 
 
+def _in_float_range(expression: sympy.Expr) -> sympy.Expr:
+    """``expression`` times a power of two, its largest rational then within a factor 2**64 of 1."""
+    bits = max((r.p.bit_length() - r.q.bit_length() for r in expression.atoms(sympy.Rational) if r), default=0)
+    return sympy.expand(expression * sympy.Rational(2) ** -(bits - 64)) if bits > 64 else expression
+
+
 def check_assembly(compiled: Compiled, branches: Sequence[Branch]) -> None:
     """Raise SceneError naming the dyad or slider whose discriminant is negative on the whole range."""
     chosen = next(b for b in branches if b.selected)
@@ -56,10 +62,13 @@ def _check_sides(compiled: Compiled, chosen: Branch, defaults: dict[sympy.Symbol
 
 
 def _on_grid(args: list[sympy.Symbol], expression: sympy.Expr, angles: dict[sympy.Symbol, FloatArray]) -> FloatArray:
+    """``expression`` in floats on the grid, where only its sign is read: nan as -inf."""
     if any(max(r.p.bit_length(), r.q.bit_length()) > _FLOAT_BITS for r in expression.atoms(sympy.Rational)):
         # a dimension of huge numerator and denominator (10**90 + 1)/10**89 makes factors past a
-        # float's range (1/10**357 is 0.0): expanded, each coefficient is one exact rational again
-        expression = sympy.expand(expression)
+        # float's range (1/10**357 is 0.0): expanded, each coefficient is one exact rational again,
+        # and scaled by a power of two (the same sign) to a float's range (lengths of 1e77 make a
+        # four-bar's discriminant's coefficients 1e308 and more)
+        expression = _in_float_range(sympy.expand(expression))
     with np.errstate(all="ignore"):  # a pole (an input where a base meets a base) or a nan is no real value
         values = numpy_function(args, expression)(*angles.values())
         return np.nan_to_num(np.broadcast_to(np.asarray(values, dtype=np.float64), (GRID,)), nan=-np.inf)

@@ -591,10 +591,16 @@ def parse_output(name: str, text: str, points: Collection[str], *, source: str =
     Traceback (most recent call last):
     ...
     algkin.errors.SceneError: s.toml: outputs.phi: angle(D, D) has no direction: its two points are the same point
+    >>> parse_output("r", "dist(D, D)", "D", source="s.toml")
+    Traceback (most recent call last):
+    ...
+    algkin.errors.SceneError: s.toml: outputs.r: dist(D, D) is always 0: its two points are the same point
     """
     element = element or f"outputs.{name}"
     if match := _DIST.match(text):
         kind, refs = "dist", match.groups()
+        if refs[0] == refs[1]:  # its eliminant, r**2 = 0, has only a double root: nothing to prove it by
+            raise SceneError(source, element, f"{text.strip()} is always 0: its two points are the same point")
     elif match := _ANGLE.match(text):
         kind, refs = "angle", _angle_points(text, match.group(1), source, element)
     elif match := _COORD.match(text):

@@ -213,7 +213,7 @@ def solve_floats(blocks: Blocks, known: Mapping[str, Floats], rng: np.random.Gen
     parents, inverses = [], Inverses()
     for block in blocks.blocks:
         if block.coefficients is not None:
-            parent, found = _univariate(block, values)
+            parent, found = _univariate(block, values, len(owner))
         elif block.pencil is not None and starts <= STARTS:  # a retry searches by Newton, more widely
             parent, first, second = block.pencil.solve(values, len(owner))
             found = dict(zip(block.names, (first, second)))
@@ -256,10 +256,10 @@ def _arguments(names: Iterable[str], values: Mapping[str, Floats], count: int) -
     return [values[n] if n in values else np.zeros(count) for n in names]
 
 
-def _univariate(block: _Block, values: Mapping[str, Floats]) -> tuple[Rows, dict[str, Floats]]:
-    """Real eigenvalues of each row's companion matrix (rows grouped by their actual degree)."""
+def _univariate(block: _Block, values: Mapping[str, Floats], count: int) -> tuple[Rows, dict[str, Floats]]:
+    """Real eigenvalues of each of the ``count`` rows' companion matrices (rows grouped by their actual
+    degree); ``values`` holds no array where nothing is known (a point fixed in a scene with no input)."""
     assert block.coefficients is not None  # only a block in one unknown is solved here
-    count = len(next(iter(values.values())))
     arguments = _arguments(block.arguments, values, count)
     coeffs = columns(block.coefficients(*arguments), count)
     # a coefficient is zero where it is within its own rounding, not where it is small beside the

@@ -123,6 +123,22 @@ def test_a_four_bar_of_crank_1_and_bars_near_1e15_is_compared():
     assert verification.max_rel_error < 1e-40
 
 
+def test_a_four_bar_of_lengths_near_1e77_is_compared():
+    # Its dyad's discriminant has coefficients past a float's range (a quartic in lengths of 1e77): its
+    # sign on the assembly check's grid once overflowed (a traceback, OverflowError)
+    derived = algkin.derive("fourbar", samples=5, certify=False, set={"a": "1e77", "d": "4e77", "l": "3e77", "m": "3.5e77"})
+    assert derived.verification.passed, derived.verification.failures
+    assert derived.verification.compared == 10 and derived.verification.max_rel_error < 1e-40
+
+
+def test_the_outputs_of_fixed_points_are_checked_on_their_one_configuration():
+    # no input and no parameter: nothing varies, so one sample (the scene file puts D at (2, 0)); once a
+    # StopIteration where the numeric solution looked for the samples' count among no known values
+    derived = algkin.derive("chebyshev-lambda", ["D"], samples=5, certify=False)
+    assert [str(v) for v in derived.branches[0].values.values()] == ["2", "0"]
+    assert derived.verification.passed and (derived.verification.samples, derived.verification.compared) == (1, 1)
+
+
 def test_narrow_assembly_range_is_still_compared():
     # Crank 41/8, ground 5, bars 1/2 and 5/2: B assembles on about 6% of the turn, so
     # uniform samples mostly land where nothing can be compared; more are drawn there.
