@@ -2,7 +2,7 @@
 
 import re
 
-__all__ = ["terminal_safe", "one_line"]
+__all__ = ["terminal_safe", "one_line", "shortened"]
 
 # Control characters (ESC starts terminal commands) and bidirectional overrides (which
 # reorder what is shown) from a scene's names and text are shown escaped, never obeyed.
@@ -16,6 +16,16 @@ def terminal_safe(text: str) -> str:
     'scene \\x1b[31mred\\u202e\n'
     """
     return _UNSAFE.sub(lambda m: m.group().encode("unicode_escape").decode("ascii"), text)
+
+
+def shortened(text: str, limit: int = 80) -> str:
+    """``text`` cut to ``limit`` characters for an error line, saying how long it was (a value, or a
+    name given as a scene, may be 100000 characters long).
+
+    >>> shortened("x=" + "9" * 100, 30)
+    'x=99999999...(102 characters)'
+    """
+    return text if len(text) <= limit else f"{text[:limit - 20]}...({len(text)} characters)"
 
 
 def one_line(text: str) -> str:

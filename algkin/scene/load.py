@@ -26,6 +26,7 @@ import sympy
 
 from ..catalog import CATALOG as _CATALOG, catalog_names, catalog_path
 from ..runtime import suggest
+from ..runtime.terminal import shortened
 from ..runtime.cache import BoundedCache
 from ..errors import SceneError, UsageError
 from .constraints import Constraint, parse_constraint
@@ -66,12 +67,12 @@ class _FloatText(str):
 def load_scene(name_or_path: str | os.PathLike[str]) -> Scene:
     """Load a catalog scene by name, or a scene file by path."""
     path = str(name_or_path)
-    if not os.path.exists(path):
+    if not os.path.lexists(path):  # a link that leads nowhere (or round in a loop) is read, to say so
         if path in catalog_names():
             path = catalog_path(path)
         else:
             names = catalog_names()
-            raise SceneError(path, "", "no such file and no catalog scene of that name"
+            raise SceneError(shortened(path), "", "no such file and no catalog scene of that name"
                              + suggest.known(path, names, plural="catalog"))
     data = _read(path)
     try:

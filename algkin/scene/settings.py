@@ -25,6 +25,7 @@ import attrs
 import sympy
 
 from ..runtime import suggest
+from ..runtime.terminal import shortened
 from ..errors import UsageError
 from .expr import MAX_NUMBER_BITS, irrational, parse
 from .model import Scene
@@ -131,4 +132,4 @@ def _given(name: str, value: object) -> str:
 
 def _shown(text: str) -> str:
     """``text`` cut to ``SHOWN`` characters for an error line (a value may be 100000 digits long)."""
-    return text if len(text) <= SHOWN else f"{text[:SHOWN - 20]}...({len(text)} characters)"
+    return shortened(text, SHOWN)

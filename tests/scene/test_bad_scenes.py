@@ -158,3 +158,25 @@ def test_unreadable_file_is_one_line(tmp_path, monkeypatch):
     monkeypatch.setattr("builtins.open", refuse)  # chmod 000 does not stop root
     with pytest.raises(SceneError, match="cannot read: Permission denied"):
         load_scene(path)
+
+
+def test_a_symlink_loop_says_it_cannot_be_read(tmp_path):
+    # it was "no such file and no catalog scene of that name": the link is there, it leads nowhere
+    from algkin.errors import SceneError
+    from algkin.scene import load_scene
+
+    first, second = tmp_path / "first.toml", tmp_path / "second.toml"
+    first.symlink_to(second)
+    second.symlink_to(first)
+    with pytest.raises(SceneError, match=f"^{first}: cannot read: ") as refused:
+        load_scene(first)
+    assert "catalog" not in str(refused.value)
+
+
+def test_a_scene_name_of_100000_characters_is_cut_short_in_the_error_line():
+    from algkin.errors import SceneError
+    from algkin.scene import load_scene
+
+    with pytest.raises(SceneError, match=r"^q{60}\.\.\.\(100000 characters\): no such file") as refused:
+        load_scene("q" * 100_000)
+    assert len(str(refused.value)) < 2000
