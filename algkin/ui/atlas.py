@@ -140,6 +140,8 @@ def write_atlas(folder: str | pathlib.Path, out: str | pathlib.Path, samples: in
     if not 1 <= samples <= MAX_SAMPLES:
         raise UsageError("--samples", samples, f"expected a number of inputs per thumbnail from 1 to {MAX_SAMPLES}")
     check_output("--out", str(out))
+    if pathlib.Path(out).suffix.lower() not in (".html", ".htm"):  # as plot refuses a suffix it does not write
+        raise UsageError("--out", str(out), "the atlas is an HTML page: give a name ending in .html")
     data = atlas_data(folder, samples)
     write_atomic(out, atlas_page(data))
     return {"designs": len(data["designs"]), "drawn": sum(1 for d in data["designs"] if d["paths"])}

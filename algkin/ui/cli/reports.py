@@ -263,7 +263,7 @@ def report_show(d: Document) -> str:
              "points: " + ", ".join(f"{n} ({k})" for n, k in d["points"].items()),
              "unknowns: " + ", ".join(d["system"]["unknowns"]),
              "parameters: " + (", ".join(d["system"]["parameters"]) or "none (all exact)"),
-             "inputs: " + ", ".join(_input_said(n, v) for n, v in d["inputs"].items()),
+             "inputs: " + (", ".join(_input_said(n, v) for n, v in d["inputs"].items()) or "none (a structure)"),
              *[f"geared: {n} = {g['ratio']}*{g['driven_by']}" for n, g in d.get("geared", {}).items()],
              "equations (= 0):"]
     lines += [f"  {eq}" for eq in d["system"]["equations"]]

@@ -10,6 +10,7 @@ import pytest
 import sympy
 
 import algkin
+from algkin.ui.cli import main
 from algkin.ui.cli.reports import report_toggles
 
 from .test_usage import ROOT, run_cli
@@ -145,3 +146,11 @@ def test_a_scene_name_cannot_start_a_line_of_the_report(tmp_path, capsys, comman
     lines = capsys.readouterr().out.splitlines()
     assert not any(line.startswith("verification passed: 80") for line in lines)
     assert any("x\\nverification passed: 80 branch values on 40 samples\\r\\n" in line for line in lines)
+
+
+def test_show_of_a_scene_with_no_input_says_so(tmp_path, capsys):
+    # it printed "inputs: " and nothing after
+    scene = tmp_path / "structure.toml"
+    scene.write_text('[points]\nO = { fixed = [0, 0] }\nD = { fixed = [2, 0] }\n[outputs]\nd = "dist(O, D)"\n')
+    assert main(["show", str(scene)]) == 0
+    assert "inputs: none (a structure)\n" in capsys.readouterr().out

@@ -89,6 +89,16 @@ def test_the_atlas_samples_have_a_cap(tmp_path, capsys):
     assert not (tmp_path / "atlas.html").exists()
 
 
+def test_the_atlas_is_written_under_an_html_name_only(tmp_path, capsys):
+    # a page written as at.png was an HTML page under an image's name
+    assert main(GOOD + ["--out", str(tmp_path / "out")]) == 0
+    capsys.readouterr()
+    assert main(["atlas", str(tmp_path / "out"), "--out", str(tmp_path / "at.png")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "the atlas is an HTML page: give a name ending in .html" in err
+    assert not (tmp_path / "at.png").exists()
+
+
 def test_a_directory_holding_other_files_is_refused(tmp_path, capsys):
     (tmp_path / "notes.txt").write_text("mine")
     assert main(GOOD + ["--out", str(tmp_path)]) == 2
