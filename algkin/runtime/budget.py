@@ -5,9 +5,10 @@ A ``Budget`` is a value, what a caller allows: at most ``seconds`` of wall time,
 which is passed to the work that keeps to it (``budget=`` of ``derive``, ``eliminate``...):
 one budget starts any number of deadlines.
 
-A python-flint resultant or Gröbner basis is one C call that no signal interrupts, so a
-deadline's ``run()`` computes in a forked child process killed at the deadline
-(``algkin.runtime.child``). The work says what it is doing (``note``), so the message says
+A python-flint resultant or Gröbner basis is one C call that no signal interrupts (it holds
+the GIL: no Python handler runs until it returns), so a deadline's ``run()`` computes in a
+forked child process killed at the deadline (``algkin.runtime.child``); a budget ``apart``
+does so with no time limit too, so that a signal to the parent (Ctrl-C) stops the work at once. The work says what it is doing (``note``), so the message says
 what was being computed when time ran out; the parent shows it as progress
 (``algkin.runtime.progress``). A terms budget is checked after every resultant and Gröbner basis.
 This module imports no algebra, so that a command's parent process stays light.
@@ -106,6 +107,8 @@ class Budget:
     seconds: float | None = attrs.field(default=None, validator=_seconds)
     terms: int | None = attrs.field(default=None, validator=_terms)
     clock: Callable[[], float] = attrs.field(default=time.monotonic, kw_only=True, repr=False)
+    # the work in a forked child even without ``seconds`` (where the platform forks): the command line's
+    apart: bool = attrs.field(default=False, kw_only=True)
 
     def start(self) -> "Deadline":
         """This budget running from now: its deadline ``seconds`` on from the clock's reading."""
@@ -151,15 +154,17 @@ class Deadline:
 
     def run(self, function: Callable[[], T]) -> T:
         """``function()``, stopped at the deadline when there is a time budget: in a forked
-        child, unless this is already the child keeping this deadline."""
+        child (where the budget is ``apart``, with no time budget too), unless this is already
+        the child keeping this deadline."""
         seconds, clock = self.budget.seconds, self.budget.clock
-        if seconds is None or self._tell is not None:
+        if self._tell is not None or (seconds is None and not (self.budget.apart and _can_fork())):
             return function()
         from .child import TimeUp, forked
 
+        left = None if seconds is None else (lambda: self.begun + seconds - clock())
         with forked(lambda tell: self._within(function, tell), shows_progress=True) as child:
             try:
-                return child.answer(left=lambda: self.begun + seconds - clock(), heard=self._heard)
+                return child.answer(left=left, heard=self._heard)
             except TimeUp:
                 elapsed = clock() - self.begun
                 raise BudgetExceeded(f"max_seconds={seconds:g}: stopped after {elapsed:.2f} s "
@@ -174,6 +179,12 @@ class Deadline:
         """A note from the child, kept and shown."""
         self.doing = doing
         progress.stage(doing)
+
+
+def _can_fork() -> bool:
+    from .child import can_fork
+
+    return can_fork()
 
 
 def started(budget: "Budget | Deadline | None" = None) -> Deadline:

@@ -26,6 +26,7 @@ from typing import Any
 
 from ..errors import AlgkinError, ComputationError, UsageError
 from ..runtime.cache import BoundedCache
+from ..runtime.stopping import raise_if_stopped
 from .design import Job, evaluate_chunk
 from .family import Family
 
@@ -34,6 +35,9 @@ __all__ = ["EXECUTORS", "run_chunks", "on_worker", "dask_modules", "dask_setup"]
 EXECUTORS = ("dask", "serial")
 CONNECT_SECONDS = 10  # how long to wait for the scheduler at --scheduler ADDRESS
 FAMILIES = 2  # jobs' families a process keeps at once
+# Above every level: the scheduler logs at CRITICAL (with a traceback) each message it cannot send to
+# workers a signal to the group has just ended, lines of its own beside the command's one.
+_SILENT = logging.CRITICAL + 1
 
 
 def run_chunks(job: Job, chunks: Sequence[tuple[int, list]], done: Callable[[int, list], None],
@@ -47,6 +51,7 @@ def run_chunks(job: Job, chunks: Sequence[tuple[int, list]], done: Callable[[int
         families = _families()
         for index, designs in chunks:
             done(*evaluate_chunk(job, index, designs, families))
+            raise_if_stopped()
         return
     version = _version()
     with _client(workers, scheduler) as (client, as_completed):
@@ -62,6 +67,8 @@ def run_chunks(job: Job, chunks: Sequence[tuple[int, list]], done: Callable[[int
                 raise ComputationError(f"chunk {futures[future]} failed on the Dask cluster: "
                                        f"{type(err).__name__}: {' '.join(str(err).split())}") from None
             done(*rows)
+            # a signal's exception raised in one of Dask's finalisers is printed and dropped there
+            raise_if_stopped()
 
 
 def on_worker(version: str, job: Job, index: int, designs: Sequence[tuple[int, Any]]) -> tuple[int, list]:
@@ -130,7 +137,7 @@ def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, A
             cluster = stack.enter_context(distributed.LocalCluster(
                 n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1", dashboard_address=None,
                 scheduler_kwargs={"dashboard": False, "dashboard_address": "127.0.0.1:0"},
-                silence_logs=logging.CRITICAL))
+                silence_logs=_SILENT))
             client = stack.enter_context(distributed.Client(cluster))
         else:
             try:
@@ -173,7 +180,7 @@ def _quiet_logs() -> Iterator[None]:
     loggers = [logging.getLogger(n) for n in ("distributed", "dask", "tornado", "asyncio")]
     levels = [g.level for g in loggers]
     for g in loggers:
-        g.setLevel(logging.CRITICAL)
+        g.setLevel(_SILENT)
     try:
         yield
     finally:

@@ -28,6 +28,7 @@ from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING
 
 from ...errors import AlgkinError, BudgetExceeded, SceneError, UsageError
+from ...runtime.stopping import raise_if_stopped
 from ...runtime.strict_json import json_text
 from .flags import as_typed
 from .signals import Stopped, say, stopping_signals, write_stdout
@@ -67,12 +68,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     """
     with stopping_signals(restore=argv is not None):
         try:
-            return _main(sys.argv[1:] if argv is None else list(argv))
+            return _main(sys.argv[1:] if argv is None else list(argv), apart=argv is None)
         except Stopped as stop:  # while an error's line was said: that line is all
             return 128 + stop.signum
 
 
-def _main(argv: list[str]) -> int:
+def _main(argv: list[str], *, apart: bool = False) -> int:
     args: argparse.Namespace | None = None  # until parsed: an error before then still says what it can
     try:
         from .parser import Shown, build_parser
@@ -85,7 +86,7 @@ def _main(argv: list[str]) -> int:
             args = build_parser().parse_args(argv)
         except Shown as shown:  # --help, --version
             return write_stdout(shown.text, 0)
-        return _command(args)
+        return _command(args, apart=apart)
     except Stopped as stop:
         return write_stdout(_failed(argv, args, "interrupted", str(stop), str(stop)), 128 + stop.signum, failed=True)
     except (SceneError, UsageError) as err:
@@ -95,8 +96,9 @@ def _main(argv: list[str]) -> int:
         return write_stdout(_failed(argv, args, _kind(err), str(err), f"failed: {err}"), 1, failed=True)
 
 
-def _command(args: argparse.Namespace) -> int:
-    """Run the parsed command: its paths checked, its work done, its files saved, its output written."""
+def _command(args: argparse.Namespace, *, apart: bool = False) -> int:
+    """Run the parsed command: its paths checked, its work done (``apart``: see ``_run``), its files
+    saved, its output written."""
     from ...runtime import progress
     from .paths import check_paths
 
@@ -108,19 +110,25 @@ def _command(args: argparse.Namespace) -> int:
         # font lacks (a scene named in another script), numpy's of a float overflow (what it means, the
         # report says: a verification that could not evaluate, a figure's box).
         warnings.simplefilter("ignore")
-        text, code, *files = _run(args)
+        text, code, *files = _run(args, apart=apart)
+    raise_if_stopped()  # a signal whose exception a library swallowed (in a finaliser) still stops it
     _save(*files)
     return write_stdout(text, code)  # a signal while writing (to a slow reader) is caught too
 
 
-def _run(args: argparse.Namespace) -> Outcome:
+def _run(args: argparse.Namespace, *, apart: bool = False) -> Outcome:
     """The command's output and exit code, all of its work (imports, loading, compiling, the algebra,
     formatting) done within its budget: in a child process killed at the deadline, if it has one.
-    The command finds the deadline it keeps to (and passes on) as ``args.deadline``."""
+    The command finds the deadline it keeps to (and passes on) as ``args.deadline``.
+
+    ``apart`` (the program, not a call from Python): a command that eliminates (it takes
+    ``--max-seconds``) works in a child even with no time budget, so that Ctrl-C stops it at once,
+    not after the python-flint call under way (a Gröbner basis can be minutes of one C call)."""
     from ...runtime.budget import Budget
     from .commands import COMMANDS
 
-    args.deadline = Budget(seconds=getattr(args, "max_seconds", None), terms=getattr(args, "max_terms", None)).start()
+    args.deadline = Budget(seconds=getattr(args, "max_seconds", None), terms=getattr(args, "max_terms", None),
+                           apart=apart and hasattr(args, "max_seconds")).start()
     args.deadline.note(f"starting {args.command}")  # until the command says more (its imports come first)
     work = functools.partial(COMMANDS[args.command], args)
     return args.deadline.run(work if args.command in NO_ALGEBRA else functools.partial(_with_algebra, work))

@@ -2,8 +2,9 @@
 ``finally`` run on the way out (a budget's worker is killed); a reader of stdout gone ends quietly,
 a stdout that cannot be written (closed, a full disk) is one line and exit 1.
 
-Nothing here imports more than the standard library: ``main`` sets these handlers before its
-other imports (sympy's take half a second, long enough for a Ctrl-C)."""
+Nothing here imports more than the standard library (and ``algkin.runtime.stopping``, which
+imports nothing more): ``main`` sets these handlers before its other imports (sympy's take half a
+second, long enough for a Ctrl-C)."""
 
 import contextlib
 import errno
@@ -14,11 +15,12 @@ import threading
 from collections.abc import Iterator
 from types import FrameType
 
+from ...runtime.stopping import SAID, Stopped, forget, stop
+
 __all__ = ["stopping_signals", "Stopped", "write_stdout", "say"]
 
 
-# What a stopping signal says on stderr; the exit code is 128 + its number, as a shell's.
-_STOPS = {signal.SIGINT: "interrupted", signal.SIGTERM: "terminated (SIGTERM)", signal.SIGHUP: "hung up (SIGHUP)"}
+_STOPS = SAID  # the stopping signals: what each says on stderr (the exit code is 128 + its number)
 
 
 # The reader of stdout went away (``algkin list | head -1``): 128 + SIGPIPE, what a shell reports
@@ -73,16 +75,6 @@ def say(line: str) -> None:
         print(f"algkin: {line}", file=sys.stderr, flush=True)
 
 
-class Stopped(BaseException):
-    """A stopping signal (SIGINT, SIGTERM, SIGHUP) while a command runs, raised so that every
-    ``finally`` on the way out runs: a budget's child is killed and joined. Not an AlgkinError:
-    like KeyboardInterrupt, no ``except Exception`` may swallow it."""
-
-    def __init__(self, signum: int) -> None:
-        super().__init__(_STOPS[signal.Signals(signum)])
-        self.signum = signum
-
-
 @contextlib.contextmanager
 def stopping_signals(restore: bool = True) -> Iterator[None]:
     """While the block runs, the stopping signals raise ``Stopped``; then the handlers found are back,
@@ -91,6 +83,7 @@ def stopping_signals(restore: bool = True) -> Iterator[None]:
     if threading.current_thread() is not threading.main_thread():
         yield  # only the main thread may set handlers, and only it receives signals
         return
+    forget()  # a signal to an earlier command (in this process) stops no later one
     found = {signum: signal.signal(signum, _stop) for signum in _STOPS}
     try:
         yield
@@ -101,7 +94,8 @@ def stopping_signals(restore: bool = True) -> Iterator[None]:
 
 
 def _stop(signum: int, frame: FrameType | None) -> None:
-    """Raise the signal as ``Stopped``, once: a second signal must not cut the clean-up short."""
+    """Raise the signal as ``Stopped``, once: a second signal must not cut the clean-up short. It is
+    recorded first (``runtime.stopping``): where the exception is swallowed, the work asks again."""
     for each in _STOPS:
         signal.signal(each, signal.SIG_IGN)
-    raise Stopped(signum)
+    stop(signum)

@@ -115,8 +115,9 @@ def _await(condition, what):
 def test_a_signal_to_a_sweeps_group_stops_its_dask_workers_quietly(tmp_path, signum, code, said):
     pytest.importorskip("distributed")
     out = tmp_path / "sweep"
-    # far more designs than can be done before the signal: the sweep is still running
-    process = start(algkin("sweep", "fourbar", "--grid", "a=1:3:400", "--grid", "d=2:3:10", "--analyses", "curve",
+    # far more designs than can be done before the signal (40,000: minutes), however late a loaded machine
+    # lets the test send it: the sweep is still running
+    process = start(algkin("sweep", "fourbar", "--grid", "a=1:3:4000", "--grid", "d=2:3:10", "--analyses", "curve",
                            "--workers", "2", "--chunk", "2", "--out", out))
     try:
         # the manifest is written once the cluster and its workers are up (sweep's ``ready``)
@@ -127,3 +128,28 @@ def test_a_signal_to_a_sweeps_group_stops_its_dask_workers_quietly(tmp_path, sig
         _await(lambda: not _group(process.pid), "a process of the group outlived the command")
     finally:
         kill_group(process)
+
+
+class _SignalledWhenCollected:
+    """Sends this process SIGINT from its finaliser: the handler's exception is raised there, where
+    Python prints it and drops it (as in a library's ``__del__`` during a sweep on Dask)."""
+
+    def __del__(self):
+        os.kill(os.getpid(), signal.SIGINT)
+
+
+@pytest.mark.filterwarnings("ignore::pytest.PytestUnraisableExceptionWarning")  # the dropped exception, as intended
+def test_a_signal_whose_exception_a_finaliser_dropped_still_stops_the_sweep(tmp_path, monkeypatch, capsys):
+    import algkin.sweep.executor as executor
+    from algkin.ui.cli import main
+
+    evaluate = executor.evaluate_chunk
+
+    def signalled_then_evaluated(*args):
+        _SignalledWhenCollected()  # collected at once
+        return evaluate(*args)
+
+    monkeypatch.setattr(executor, "evaluate_chunk", signalled_then_evaluated)
+    argv = ["sweep", "fourbar", "--grid", "a=1:2:40", "--executor", "serial", "--chunk", "4", "--out", str(tmp_path / "s")]
+    assert main(argv) == 130  # it ran all 40 designs and said nothing, exit 0
+    assert capsys.readouterr().err.endswith("algkin: interrupted\n")
