@@ -108,7 +108,8 @@ class Budget:
     terms: int | None = attrs.field(default=None, validator=_terms)
     clock: Callable[[], float] = attrs.field(default=time.monotonic, kw_only=True, repr=False)
     # the work in a forked child even without ``seconds`` (where the platform forks): the command line's
-    apart: bool = attrs.field(default=False, kw_only=True)
+    # own way of running, not a limit, so not in the repr users read
+    apart: bool = attrs.field(default=False, kw_only=True, repr=False)
 
     def start(self) -> "Deadline":
         """This budget running from now: its deadline ``seconds`` on from the clock's reading."""
