@@ -8,7 +8,8 @@ one budget starts any number of deadlines.
 A python-flint resultant or Gröbner basis is one C call that no signal interrupts (it holds
 the GIL: no Python handler runs until it returns), so a deadline's ``run()`` computes in a
 forked child process killed at the deadline (``algkin.runtime.child``); a budget ``apart``
-does so with no time limit too, so that a signal to the parent (Ctrl-C) stops the work at once. The work says what it is doing (``note``), so the message says
+does so with no time limit too, so that a signal to the parent (Ctrl-C) stops the work at
+once. The work says what it is doing (``note``), so the message says
 what was being computed when time ran out; the parent shows it as progress
 (``algkin.runtime.progress``). A terms budget is checked after every resultant and Gröbner basis.
 This module imports no algebra, so that a command's parent process stays light.

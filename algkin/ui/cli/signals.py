@@ -20,9 +20,6 @@ from ...runtime.stopping import SAID, Stopped, forget, stop
 __all__ = ["stopping_signals", "Stopped", "write_stdout", "say"]
 
 
-_STOPS = SAID  # the stopping signals: what each says on stderr (the exit code is 128 + its number)
-
-
 # The reader of stdout went away (``algkin list | head -1``): 128 + SIGPIPE, what a shell reports
 # for a program the closed pipe ended; 1 would say that the computation failed.
 _STDOUT_CLOSED = 128 + signal.SIGPIPE
@@ -84,7 +81,7 @@ def stopping_signals(restore: bool = True) -> Iterator[None]:
         yield  # only the main thread may set handlers, and only it receives signals
         return
     forget()  # a signal to an earlier command (in this process) stops no later one
-    found = {signum: signal.signal(signum, _stop) for signum in _STOPS}
+    found = {signum: signal.signal(signum, _stop) for signum in SAID}  # every stopping signal
     try:
         yield
     finally:
@@ -96,6 +93,6 @@ def stopping_signals(restore: bool = True) -> Iterator[None]:
 def _stop(signum: int, frame: FrameType | None) -> None:
     """Raise the signal as ``Stopped``, once: a second signal must not cut the clean-up short. It is
     recorded first (``runtime.stopping``): where the exception is swallowed, the work asks again."""
-    for each in _STOPS:
+    for each in SAID:
         signal.signal(each, signal.SIG_IGN)
     stop(signum)
