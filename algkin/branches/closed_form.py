@@ -12,18 +12,22 @@ in the closed forms of the points it is built on; a branch is one label per poin
 c_angle/2 + s_angle*sqrt((5 - 4*c_angle)*(c_angle + 5))/(5 - 4*c_angle) + 1
 """
 
+import contextlib
 import functools
 import itertools
+from collections.abc import Sequence
 
 import attrs
 import sympy
 
 from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled
-from ..scene.implicit.algebra import Circles, reduce_on_circles
+from ..scene.implicit.algebra import HALF, Circles, reduce_on_circles
 from ..system import symbol
 from .algebra import FormText, tidy_ratio
 from .constructions import Mode, algebra_of
+from .constructions.dyad import NestedModes
+from .tower import Tower, Unsupported, roots_in
 
 __all__ = ["Branch", "closed_forms"]
 
@@ -84,31 +88,39 @@ def closed_forms(compiled: Compiled) -> list[Branch]:
     """Every branch (all label combinations of the dyads and sliders) of ``compiled``; a point
     without modes of its own (an inversor's second intersection) follows the others."""
     moded = [spec for spec in compiled.implicit if spec.labels]
-    built: dict[tuple[int, tuple[str, ...]], Mode] = {}  # branches sharing the labels before a point share its algebra
+    built: Built = {}  # branches sharing the labels before a point share its algebra
     return [_branch(compiled, dict(zip((spec.point for spec in moded), labels)), built)
             for labels in itertools.product(*(spec.labels for spec in moded))]
 
 
-def _branch(compiled: Compiled, chosen: dict[str, str], built: dict[tuple[int, tuple[str, ...]], Mode]) -> Branch:
+Built = dict[tuple[int, tuple[str, ...]], tuple[Mode, Tower | None]]  # (point, labels before) -> modes, tower
+
+
+def _branch(compiled: Compiled, chosen: dict[str, str], built: Built) -> Branch:
     """The branch with the label ``chosen[point]`` for each point with modes, each built on the ones before
     it; ``built`` holds each point's modes by the labels before it, for the other branches."""
     inputs, specs = compiled.circles, compiled.implicit
     substitution: dict[sympy.Symbol, sympy.Expr] = {}
     discriminants: dict[str, sympy.Expr] = {}
     squares: set[str] = set()
+    towers: list[Tower] = []  # those the points were built in, the last one last
     for index, spec in enumerate(specs):
         sigma = spec.sign(chosen[spec.point]) if spec.labels else 1
         algebra = algebra_of(spec)
         before = (index, tuple(chosen[s.point] for s in specs[:index] if s.labels))
         if before not in built:  # each mode built once, for every branch it is in
-            built[before] = functools.cache(algebra.modes(substitution, inputs=inputs))
-        (x, y), discriminants[spec.point] = built[before](sigma)
+            modes = algebra.modes(substitution, inputs=inputs)
+            built[before] = functools.cache(modes), modes.tower if isinstance(modes, NestedModes) else None
+        modes, tower = built[before]
+        (x, y), discriminants[spec.point] = modes(sigma)
+        if tower is not None:
+            towers.append(tower)
         if algebra.square:
             squares.add(spec.point)
         substitution.update({symbol(spec.unknowns[0]): x, symbol(spec.unknowns[1]): y})
     values = {u: substitution[symbol(u)] for spec in specs for u in spec.unknowns}
     for unknown, definition in compiled.definitions.items():
-        values[unknown] = _output_value(definition, substitution, inputs)
+        values[unknown] = _output_value(definition, substitution, inputs, towers[-1:])
     labels = list(chosen.values())
     label = labels[0] if len(labels) == 1 else " ".join(f"{p}:{l}" for p, l in chosen.items())
     selected = all(chosen[spec.point] == spec.branch for spec in specs if spec.labels)
@@ -116,7 +128,10 @@ def _branch(compiled: Compiled, chosen: dict[str, str], built: dict[tuple[int, t
 
 
 def _output_value(definition: sympy.Expr, substitution: dict[sympy.Symbol, sympy.Expr],
-                  inputs: Circles) -> sympy.Expr:
+                  inputs: Circles, towers: Sequence[Tower]) -> sympy.Expr:
+    nested = _nested_value(definition, substitution, inputs, towers)
+    if nested is not None:
+        return nested
     if definition.is_Pow and definition.exp == sympy.Rational(1, 2):
         return sympy.sqrt(reduce_on_circles(definition.base.xreplace(substitution), inputs))
     roots = [p for p in definition.atoms(sympy.Pow) if p.exp in (sympy.Rational(1, 2), sympy.Rational(-1, 2))]
@@ -126,6 +141,33 @@ def _output_value(definition: sympy.Expr, substitution: dict[sympy.Symbol, sympy
     if not value.is_polynomial() and value.is_rational_function():  # over symbolic lengths: one fraction
         return tidy_ratio(value)
     return value
+
+
+def _nested_value(definition: sympy.Expr, substitution: dict[sympy.Symbol, sympy.Expr],
+                  inputs: Circles, towers: Sequence[Tower]) -> sympy.Expr | None:
+    """``definition`` (a polynomial or ratio in the unknowns, or the root of one) in a ``Tower``, where
+    the unknowns' closed forms hold more than one square root or one inside another: the one the last
+    of them was built in (``towers``) where it has them all, else a new one; None elsewhere (and for
+    what a tower does not take)."""
+    root = definition.is_Pow and definition.exp == HALF
+    inside = definition.base if root else definition
+    if roots_in([inside]):
+        return None
+    value = None
+    for tower in towers:
+        with contextlib.suppress(Unsupported):  # a root it has no room for
+            given = {u: tower.value(substitution[u]) for u in inside.free_symbols if u in substitution}
+            value = tower.expr(tower.value_given(inside, given))
+    if value is None:
+        placed = inside.xreplace(substitution)
+        try:
+            tower = Tower([placed], inputs)
+            if tower.roots < 2:  # one root at most: sympy's forms of a single dyad read well
+                return None
+            value = tower.expr(tower.value(placed))
+        except Unsupported:
+            return None
+    return sympy.sqrt(value) if root else value
 
 
 def _over_roots(definition: sympy.Expr, roots: list[sympy.Pow], substitution: dict[sympy.Symbol, sympy.Expr],

@@ -85,12 +85,13 @@ def test_closed_forms_keep_integer_coefficients_inside_their_factors(scene):
 
 def test_branches_share_the_algebra_before_their_labels_differ(monkeypatch):
     """A six-bar's two dyads on four branches: the first dyad's algebra once, the second's once per
-    label of the first (3 reductions of a dyad's base, not 8), the modes built from them."""
+    label of the first (3 dyads' algebras, not 8), the modes built from them."""
     from algkin.branches.constructions import dyad
 
     reductions = []
-    reducer = dyad.reducer
-    monkeypatch.setattr(dyad, "reducer", lambda *args: reductions.append(1) or reducer(*args))
+    modes = dyad.DyadAlgebra.modes
+    monkeypatch.setattr(dyad.DyadAlgebra, "modes",
+                        lambda self, *args, **kwargs: reductions.append(1) or modes(self, *args, **kwargs))
     branches = closed_forms(compile_scene(load_scene("stephenson-iii"), ["P"]))
     assert [b.label for b in branches] == ["B:left F:left", "B:left F:right", "B:right F:left", "B:right F:right"]
     assert len(reductions) == 3
@@ -98,12 +99,10 @@ def test_branches_share_the_algebra_before_their_labels_differ(monkeypatch):
     assert left["B_x"] == right["B_x"] and left["F_x"] != right["F_x"]
 
 
-def test_each_dyads_modes_built_once_for_the_branches_they_are_in(monkeypatch):
-    # Stephenson III: B's two modes on the crank, F's on each of B's: three square roots taken,
-    # one per dyad algebra (B once, F once per label of B), not one per branch and point (eight)
-    from algkin.branches.constructions import dyad
+def test_each_dyads_modes_built_once_for_the_branches_they_are_in():
+    # Stephenson III: B's two modes on the crank, F's on each of B's: three square roots in all the
+    # closed forms, one per dyad algebra (B once, F once per label of B), not one per branch and point
+    from algkin.branches.tower import roots_in
 
-    roots = []
-    monkeypatch.setattr(dyad.sympy, "sqrt", lambda expr: roots.append(expr) or sympy.Pow(expr, sympy.S.Half))
     branches = closed_forms(compile_scene(load_scene("stephenson-iii"), ["P"]))
-    assert len(branches) == 4 and len(roots) == 3
+    assert len(branches) == 4 and len(roots_in([v for b in branches for v in b.values.values()])) == 3

@@ -5,7 +5,8 @@ the pipeline was split and its caches made explicit: a refactor changes how answ
 the answers. Timings are left out (they are the only part that differs between runs). A change meant to
 alter an answer rewrites the reference (``python -m tests.derivation.test_catalog_unchanged``) in the
 same commit, where the diff shows what changed (since: Hart's named crossed mode, each irreducible
-curve's reason, and the scenes added to the catalog).
+curve's reason, the scenes added to the catalog, and the closed forms of a dyad built on another's
+root, taken in a tower of roots: tests/branches/test_tower.py compares them with the old ones).
 
 The verification's measured errors (``ROUNDING``: residuals and errors of 1e-40 and less, at 200 bits)
 are rounding, not answers: evaluating a closed form's sums in another grouping moves them by tens of

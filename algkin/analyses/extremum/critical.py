@@ -19,6 +19,7 @@ import flint
 import mpmath
 import sympy
 
+from ...branches.tower import root_free
 from ...eliminate import eliminate
 from ...errors import ComputationError, UsageError
 from ...evaluate import MPMATH, evaluate
@@ -146,8 +147,8 @@ def meeting_factors(problem: Problem, *, deadline: Deadline | None = None) -> li
                               [problem.t.name] + names, method="resultant", budget=deadline).factors
         except ComputationError:
             pass  # the discriminant is a constant: the values never meet
-    for discriminant in problem.valid:
-        for factor, _ in sympy.factor_list(problem.numerator_in_t(discriminant))[1]:
+    for discriminant in problem.valid:  # one on a dyad built on another's root: its conjugates' zeros too
+        for factor, _ in sympy.factor_list(problem.numerator_in_t(root_free(discriminant)))[1]:
             factor = sympy.expand(factor)
             if factor.has(problem.t) and not any(sympy.expand(factor - f) == 0 or sympy.expand(factor + f) == 0
                                                  for f in found):

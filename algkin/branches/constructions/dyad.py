@@ -34,10 +34,11 @@ from ...scene.implicit import DyadSpec
 from ...scene.implicit.algebra import Circles
 from ...scene.implicit.base import FloatArray, Point
 from ..algebra import reducer, tidy_product, tidy_ratio
+from ..tower import Tower, Unsupported, roots_in
 from .base import BranchAlgebra, Fix, HalfAngle, Mode, StableEvaluator, Substitution
 from .floats import heron_area, stable_quadratic
 
-__all__ = ["DyadAlgebra"]
+__all__ = ["DyadAlgebra", "NestedModes"]
 
 Factored = tuple[int, list[Callable[[FloatArray], FloatArray]]]  # an input, quadratics in its t
 
@@ -49,6 +50,12 @@ class DyadAlgebra(BranchAlgebra):
     spec: DyadSpec
 
     def modes(self, substitution: Substitution, *, inputs: Circles) -> Mode:
+        base = [e.xreplace(substitution) for e in (*self.spec.base_p, *self.spec.base_q)]
+        if roots_in(base):  # built on an earlier point's root: sympy's expansion reads (and costs) far worse
+            try:
+                return _nested_modes(base, self.spec.lengths, inputs)
+            except Unsupported:
+                pass
         reduce = reducer(substitution, inputs)
         px, py = (reduce(v) for v in self.spec.base_p)
         qx, qy = (reduce(v) for v in self.spec.base_q)
@@ -74,6 +81,44 @@ class DyadAlgebra(BranchAlgebra):
     def stable_evaluator(self, *, fix: Fix, arguments: Sequence[sympy.Symbol], half_angles: Circles,
                          sigma: float) -> StableEvaluator:
         return _Stable(self.spec, fix=fix, arguments=arguments, half_angles=half_angles, sigma=sigma)
+
+
+class NestedModes:
+    """A dyad's ``Mode`` over a base that holds square roots, with the ``Tower`` it is built in (a point
+    defined on it is built there too, from the values it remembers)."""
+
+    def __init__(self, tower: Tower, mode: Mode) -> None:
+        self.tower, self._mode = tower, mode
+
+    def __call__(self, sigma: int) -> tuple[Point, sympy.Expr]:
+        return self._mode(sigma)
+
+
+def _nested_modes(base: list[sympy.Expr], lengths: tuple[sympy.Expr, sympy.Expr], inputs: Circles) -> NestedModes:
+    """``modes`` over a base that holds square roots, in a ``Tower``. With the base over one
+    denominator ``E`` (``P = p/E``, ``Q = q/E``, ``a = q - p``, ``G = |a|**2``: ``|PQ|**2 = G/E**2``),
+    the closed form of the module's first paragraph is
+    ``X = (G (p + q) + (l1**2 - l2**2) E**2 a + sigma r rot90(a)) / (2 G E)`` with ``r = sqrt(H+ H-)``,
+    ``H+ = (l1 + l2)**2 E**2 - G`` (zero extended), ``H- = G - (l1 - l2)**2 E**2`` (zero folded):
+    ``r = E**2 sqrt(F+ F-)``, the discriminant ``H+ H-`` without the positive ``E**4``."""
+    tower = Tower([*base, *lengths], inputs, new_roots=1)
+    (px, py, qx, qy), common = tower.over_common([tower.value(e) for e in base])
+    l1, l2 = (tower.value(v) for v in lengths)
+    ax, ay, square = qx - px, qy - py, common * common
+    spread = ax * ax + ay * ay
+    extended, folded = (l1 + l2) * (l1 + l2) * square - spread, spread - (l1 - l2) * (l1 - l2) * square
+    (ke, he), (kf, hf) = tower.primitive(extended), tower.primitive(folded)
+    n, d = (ke * kf).as_numer_denom()  # sqrt(k he hf) = sqrt(n d he hf) / d
+    root = tower.new_root(extended * folded * int(d) ** 2, sympy.sqrt(sympy.Mul(n * d, he, hf))) / int(d)
+    along = (l1 * l1 - l2 * l2) * square
+    below = 2 * spread * common
+    discriminant = sympy.Mul(he, hf)  # its sign (the contents are positive)
+
+    def mode(sigma: int) -> tuple[Point, sympy.Expr]:
+        x = (spread * (px + qx) + along * ax - sigma * root * ay) / below
+        y = (spread * (py + qy) + along * ay + sigma * root * ax) / below
+        return (tower.expr(x, remember=True), tower.expr(y, remember=True)), discriminant
+    return NestedModes(tower, mode)
 
 
 class _Stable:

@@ -12,7 +12,7 @@ import os
 import signal
 import sys
 import threading
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from types import FrameType
 
 from ...runtime.stopping import SAID, Stopped, forget, stop
@@ -82,12 +82,24 @@ def stopping_signals(restore: bool = True) -> Iterator[None]:
         return
     forget()  # a signal to an earlier command (in this process) stops no later one
     found = {signum: signal.signal(signum, _stop) for signum in SAID}  # every stopping signal
+    unraisable, sys.unraisablehook = sys.unraisablehook, _quiet_stops(sys.unraisablehook)
     try:
         yield
     finally:
+        sys.unraisablehook = unraisable
         for signum, handler in found.items():
             # None: a handler not set from Python; the default is the nearest we can put back.
             signal.signal(signum, signal.SIG_DFL if handler is None or not restore else handler)
+
+
+def _quiet_stops(hook: Callable[["sys.UnraisableHookArgs"], object]) -> Callable[["sys.UnraisableHookArgs"], None]:
+    """``hook``, but silent on a ``Stopped`` raised where Python drops it (a finaliser, a collector's
+    callback such as Dask's GC diagnosis): the signal is recorded and stops the work at its next
+    question, and its message is the command's one line, not an "Exception ignored" traceback."""
+    def quiet(unraisable: "sys.UnraisableHookArgs") -> None:
+        if not isinstance(unraisable.exc_value, Stopped):
+            hook(unraisable)
+    return quiet
 
 
 def _stop(signum: int, frame: FrameType | None) -> None:

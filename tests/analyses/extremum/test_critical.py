@@ -25,3 +25,16 @@ def test_turning_crank_has_no_dead_centre_candidates():
     # The lambda's crank turns fully: B is real everywhere, so no extreme is a dead centre.
     found = extremum("chebyshev-lambda", "B.y")
     assert all(p.kind != "dead centre" for p in found.critical_points)
+
+
+@pytest.mark.slow  # 7 s: a six-bar's distance, its second dyad on the first's root
+def test_a_six_bars_distance_has_extremes_where_its_second_dyad_is_built_on_a_root():
+    """Stephenson III's |OP|: the second dyad's discriminant holds the first's square root, so where
+    its branch stops is found from the discriminant times its conjugate. (It raised TypeError, after
+    minutes.) The maximum by mpmath: the old, sympy-expanded closed forms of the selected branch sampled
+    every 0.1 degree, then the derivative's root (findroot at 30 digits): 3.78251206361934 at
+    156.584481610082 degrees."""
+    found = extremum("stephenson-iii", "dist(P, O)")
+    assert float(found.maximum.input_deg) == pytest.approx(156.584481610082, abs=1e-9)
+    assert float(found.maximum.value) == pytest.approx(3.78251206361934, abs=1e-12)
+    assert float(found.minimum.value) < float(found.maximum.value)
