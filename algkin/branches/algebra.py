@@ -9,7 +9,7 @@ from ..scene.implicit.algebra import Circles, reduce_on_circles
 from ..system.text import ExpressionText
 from .ratio import cancelled
 
-__all__ = ["reducer", "tidy_ratio", "tidy_product", "tidy_sqrt", "readable", "Readable", "FormText"]
+__all__ = ["reducer", "tidy_ratio", "tidy_product", "tidy_sqrt", "unsplit_root", "readable", "Readable", "FormText"]
 
 
 def reducer(substitution: Mapping[sympy.Symbol, sympy.Expr], inputs: Circles) -> Callable[[sympy.Expr], sympy.Expr]:
@@ -68,6 +68,24 @@ def tidy_sqrt(expr: sympy.Expr) -> sympy.Expr:
     return outside * sympy.sqrt(sympy.expand(inside**2 * part))
 
 
+def unsplit_root(expr: sympy.Expr) -> sympy.Expr:
+    """``sqrt(expr)`` with the root of its positive number in front and the rest under one root, as written,
+    without sympy's questions of each factor's sign (``sympy.sqrt`` asks them to take out the factors it
+    proves nonnegative: minutes for a chain of three dyads' squared distance). The same expression as
+    ``sympy.sqrt`` gives wherever no sign is known.
+
+    >>> c = sympy.Symbol("c", real=True)
+    >>> unsplit_root(sympy.Mul(sympy.Rational(3, 16), 5 - 4*c, 1 / (c + 5)))
+    sqrt(3)*sqrt((5 - 4*c)/(c + 5))/4
+    >>> unsplit_root(sympy.Mul(sympy.Rational(3, 16), 5 - 4*c, 1 / (c + 5))) == sympy.sqrt(sympy.Mul(3, 5 - 4*c, 1 / (c + 5))) / 4
+    True
+    """
+    number, rest = expr.as_coeff_Mul()
+    if rest == 1 or number < 0:  # sympy keeps a -1 under the root, its own way
+        return sympy.sqrt(expr)
+    return sympy.Mul(sympy.sqrt(number), sympy.Pow(rest, sympy.S.Half, evaluate=False))
+
+
 def readable(expr: sympy.Expr) -> sympy.Expr:
     """``expr`` as written for a reader: each sum that is a factor (of a numerator, a denominator, under
     a root) primitive with integer coefficients, the rational contents gathered in one number in front of
@@ -123,7 +141,6 @@ class Readable:
             content, part = self._content_and_part(expr.base)
             if expr.exp.is_Integer:
                 return content**expr.exp, part**expr.exp
-            # a root: sympy takes the root of the number out of the product by itself
             number, rest = sympy.Pow(_keep_coeff(content, part), expr.exp).as_coeff_Mul()
             return number, rest
         return sympy.Integer(1), expr.func(*[self(a) for a in expr.args])

@@ -24,7 +24,7 @@ from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled
 from ..scene.implicit.algebra import HALF, Circles, reduce_on_circles
 from ..system import symbol
-from .algebra import FormText, tidy_ratio
+from .algebra import FormText, tidy_ratio, unsplit_root
 from .constructions import Mode, algebra_of
 from .constructions.dyad import NestedModes
 from .tower import Tower, Unsupported, roots_in
@@ -167,7 +167,7 @@ def _nested_value(definition: sympy.Expr, substitution: dict[sympy.Symbol, sympy
             value = tower.expr(tower.value(placed))
         except Unsupported:
             return None
-    return sympy.sqrt(value) if root else value
+    return unsplit_root(value) if root else value
 
 
 def _over_roots(definition: sympy.Expr, roots: list[sympy.Pow], substitution: dict[sympy.Symbol, sympy.Expr],

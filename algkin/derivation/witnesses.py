@@ -25,7 +25,8 @@ import flint
 
 from ..branches import Branch
 from ..eliminate import Witness
-from ..evaluate import ARB, evaluate
+from ..evaluate import ARB
+from ..evaluate.program import compile_program
 from ..scene import Compiled
 from ..scene.model import Input
 from .assembles import Pieces, where_assembled
@@ -113,12 +114,13 @@ def _witness(compiled: Compiled, branch: Branch, spread: Mapping[str, list[Sampl
     for n in compiled.system.parameters:
         default = Fraction(str(compiled.parameter_values[n]))
         exact[n] = default * (1 + Fraction(k + 1, 211)) if default else Fraction(k + 1, 211)
-    values = {n: ARB.number(v.numerator, v.denominator) for n, v in exact.items()}
-    for disc in branch.discriminants.values():
-        if not evaluate(disc, values, ARB) > 0:
-            return None
-    for unknown, expr in branch.values.items():
-        values[unknown] = evaluate(expr, values, ARB)
-        if not values[unknown].is_finite():
-            return None
+    names = sorted(exact)
+    balls = [ARB.number(exact[n].numerator, exact[n].denominator) for n in names]
+    # compiled once a branch (a six-bar's closed forms are long: walking them per sample was most of this)
+    if not all(d > 0 for d in compile_program(list(branch.discriminants.values()), names, ARB)(*balls)):
+        return None
+    closed = compile_program(list(branch.values.values()), names, ARB)(*balls)
+    if not all(flint.arb(v).is_finite() for v in closed):
+        return None
+    values = dict(zip(names, balls)) | {u: flint.arb(v) for u, v in zip(branch.values, closed)}
     return Witness(values, {n: flint.fmpq(v.numerator, v.denominator) for n, v in exact.items()})
