@@ -205,6 +205,8 @@ def points_in(problem: Problem, stationary: Sequence[Polynomial], meeting: Seque
                 if not lo <= degrees <= hi or _seen(found, degrees):
                     continue
                 here = problem.value(degrees)
+                if here != here:  # a discriminant touching zero here reads a rounding below it
+                    here = _value_at_meeting(problem, degrees)
                 if _is_stationary(problem, degrees, here):
                     found.append(CriticalPoint(degrees, here, _kind(problem, degrees, here), ball + turn))
         found += _dead_centres(problem, meeting, lo, hi, found)

@@ -68,3 +68,17 @@ def test_a_six_bars_link_direction_has_extremes():
     assert float(found.minimum.value) == pytest.approx(118.985998993366, abs=1e-9)
     assert float(found.maximum.input_deg) == pytest.approx(66.0204742325034, abs=1e-9)
     assert float(found.maximum.value) == pytest.approx(165.393606899217, abs=1e-9)
+
+
+def test_an_extreme_where_a_dyads_discriminant_touches_zero_is_kept():
+    """Hart's inversor on its scene's modes: at 300 degrees the crossed dyad C's discriminant touches zero
+    (|BD| = a - b = 2, C folded; both modes meet and part again), and there |OQ| is greatest. At the root
+    found for it the discriminant read a rounding below zero, and the maximum was given as the dead centre
+    at 284.48 degrees (2.9155). By mpmath, independently (circle-circle intersections at 30 digits from the
+    scene's dimensions, 0.25-degree scan, then findroot on the derivative): 3 at 300 degrees, and the
+    minimum 1.5 at 28.9550243718598."""
+    found = extremum("hart-inversor", "dist(Q, O)")
+    assert float(found.maximum.input_deg) == pytest.approx(300, abs=1e-9)
+    assert float(found.maximum.value) == pytest.approx(3, abs=1e-12)
+    assert float(found.minimum.input_deg) == pytest.approx(28.9550243718598, abs=1e-9)
+    assert float(found.minimum.value) == pytest.approx(1.5, abs=1e-12)
