@@ -63,11 +63,28 @@ class Problem:
         return self.line.t
 
     def half_angle(self) -> list[sympy.Expr]:
-        """``F`` and ``dF/dtheta`` as polynomials in ``u``, ``t`` and the parameters."""
+        """``F`` and ``dF/dtheta`` as polynomials in ``u``, ``t`` and the parameters, an angle's
+        without the factors ``1 + t**2`` (an eliminant whose highest terms hold ``c**2 + s**2`` gives
+        them to both, and a shared factor makes their resultant in ``t`` vanish; they have no real root).
+
+        >>> c, s, t, u = sympy.symbols("c s t u")
+        >>> Problem((c**2 + s**2) * (u - s), s, u, Parametrisation((c, s), t), ()).half_angle()
+        [t**2*u - 2*t + u, t**2 - 1]
+        """
         along = self.line.derivative(self.eliminant)
         if along == 0:
             raise UsageError("output", str(self.u), "the output does not depend on the input")
-        return [self.numerator_in_t(e) for e in (self.eliminant, along)]
+        return [self._off_the_circle(self.numerator_in_t(e)) for e in (self.eliminant, along)]
+
+    def _off_the_circle(self, numerator: sympy.Expr) -> sympy.Expr:
+        if not self.line.is_angle:
+            return numerator
+        circle = 1 + self.t**2
+        while True:
+            quotient, remainder = sympy.div(numerator, circle, self.t)
+            if remainder != 0:
+                return numerator
+            numerator = sympy.expand(quotient)
 
     def numerator_in_t(self, expr: sympy.Expr) -> sympy.Expr:
         return self.line.numerator(expr)
@@ -188,6 +205,8 @@ def points_in(problem: Problem, stationary: Sequence[Polynomial], meeting: Seque
                 if not lo <= degrees <= hi or _seen(found, degrees):
                     continue
                 here = problem.value(degrees)
+                if here != here:  # a discriminant touching zero here reads a rounding below it
+                    here = _value_at_meeting(problem, degrees)
                 if _is_stationary(problem, degrees, here):
                     found.append(CriticalPoint(degrees, here, _kind(problem, degrees, here), ball + turn))
         found += _dead_centres(problem, meeting, lo, hi, found)
