@@ -171,10 +171,17 @@ def toggles(scene: SceneLike, artefacts: bool = True,
     name, line = single_input(compiled)
     lo, hi = scene.inputs[name].span
     found: list[Toggle] = []
+    moded = [spec.point for spec in compiled.implicit if spec.labels]
+    if len(moded) > 1 or artefacts:  # the branches, to see earlier points assemble (and for the artefacts)
+        prepared = prepared or prepared_from(compiled)
     with flint.ctx.workprec(ROOT_BITS):
         for spec in compiled.implicit:
+            earlier = moded[:moded.index(spec.point)] if spec.point in moded else moded
             for kind, condition in toggle_conditions(compiled, spec, deadline=deadline).items():
                 for ball in line.roots(condition):
+                    if earlier and prepared and not _earlier_may_assemble(compiled, prepared.branches, earlier,
+                                                                          line, ball):
+                        continue
                     found += [Toggle(float(ball.mid()) + turn, ball + turn, spec.point, kind, line.is_angle)
                               for turn in line.turns if lo <= float(ball.mid()) + turn <= hi]
         # the eliminants' branches and witnesses: the scene's own, prepared once
@@ -247,14 +254,30 @@ def _sympy_poly(poly: flint.fmpq_mpoly, gens: Sequence[sympy.Symbol], kept: Sequ
     return sympy.Poly.from_dict(terms, *gens, domain=sympy.ZZ)
 
 
-def _why_not_a_toggle(compiled: Compiled, branches: Sequence[Branch], factor: sympy.Expr, line: Parametrisation) -> str:
-    """At every real root of ``factor``, ball arithmetic shows the modes apart or not assembled."""
+def _earlier_may_assemble(compiled: Compiled, branches: Sequence[Branch], earlier: Sequence[str],
+                          line: Parametrisation, ball: flint.arb) -> bool:
+    """Whether the points ``earlier`` (those a toggling point comes after) may all be real at the input
+    ``ball``: False where on every branch one of them is certified not to assemble (its discriminant < 0).
+    A toggle's condition holds the earlier points eliminated, their complex configurations too: Hart's
+    C "folds" at 120 degrees, where D, on which it is built, cannot close."""
+    values = _ball_values(compiled, line, ball)
+    return any(all(not evaluate(b.discriminants[p], values, ARB) < 0 for p in earlier if p in b.discriminants)
+               for b in branches)
+
+
+def _ball_values(compiled: Compiled, line: Parametrisation, ball: flint.arb) -> dict[str, flint.arb]:
+    """The dimensions' defaults and the input's variables at ``ball`` (degrees, or a length) as balls."""
     defaults = {k.name: ARB.number(int(sympy.Rational(v).p), int(sympy.Rational(v).q))
                 for k, v in _defaults(compiled).items()}
-    reasons: set[str] = set()
     names = tuple(v.name for v in line.variables)
+    return dict(defaults, **input_values(names, ball * flint.arb.pi() / 180 if line.is_angle else ball))
+
+
+def _why_not_a_toggle(compiled: Compiled, branches: Sequence[Branch], factor: sympy.Expr, line: Parametrisation) -> str:
+    """At every real root of ``factor``, ball arithmetic shows the modes apart or not assembled."""
+    reasons: set[str] = set()
     for ball in line.roots(factor):
-        values = dict(defaults, **input_values(names, ball * flint.arb.pi() / 180 if line.is_angle else ball))
+        values = _ball_values(compiled, line, ball)
         reason = _separated(compiled, branches, values)
         if reason is None:
             return "undecided: the balls could not separate the modes"

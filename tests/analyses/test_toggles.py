@@ -200,3 +200,16 @@ def test_discriminant_factors_are_sympys_factor_list_in_its_order(terms, k):
     values = {K: sympy.Rational(k.numerator, k.denominator)}
     expected = sympy.factor_list(sympy.expand(sympy.discriminant(polynomial, U).xreplace(values)))[1]
     assert [str(f) for f in discriminant_factors(polynomial, U, values)] == [str(f) for f, _ in expected]
+
+
+def test_a_toggle_where_an_earlier_dyad_cannot_assemble_is_none():
+    # Hart's inversor (a = 4, b = 2, r = 1): D is on A = 2 (cos, sin) and W = 2Z - A, Z = (1, 0), at b = 2
+    # and 2r = 2, so |AW|**2 = 4 |Z - A|**2 = 20 - 16 cos: D closes where cos >= 1/4 (extended at
+    # cos = 1/4). C, built on D, "folded" at 120 and 240 degrees by its eliminated condition, where
+    # |AW|**2 = 28 > 16: no real mechanism there, so no toggle (it was listed, certified).
+    found = toggles("hart-inversor", artefacts=False)
+    d = sorted(t.input_deg for t in found.toggles if t.point == "D")
+    assert d == pytest.approx([math.degrees(math.acos(1 / 4)), 360 - math.degrees(math.acos(1 / 4))], abs=1e-12)
+    for t in found.toggles:
+        assert math.cos(math.radians(t.input_deg)) >= 1 / 4 - 1e-12, t  # where D assembles
+    assert not any(abs(t.input_deg - deg) < 1e-6 for t in found.toggles for deg in (120, 240))
