@@ -185,7 +185,7 @@ def toggles(scene: SceneLike, artefacts: bool = True,
                     found += [Toggle(float(ball.mid()) + turn, ball + turn, spec.point, kind, line.is_angle)
                               for turn in line.turns if lo <= float(ball.mid()) + turn <= hi]
         # the eliminants' branches and witnesses: the scene's own, prepared once
-        dropped = _artefacts(prepared or prepared_from(compiled), line, deadline) if artefacts else []
+        dropped = _artefacts(prepared, line, deadline) if artefacts and prepared else []
     found.sort(key=lambda g: g.input_deg)
     unit = "deg" if line.is_angle else "length"
     return Toggles(scene.name, name, (lo, hi), found, grashof(compiled), dropped, unit)

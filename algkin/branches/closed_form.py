@@ -15,7 +15,6 @@ c_angle/2 + s_angle*sqrt((5 - 4*c_angle)*(c_angle + 5))/(5 - 4*c_angle) + 1
 import contextlib
 import functools
 import itertools
-from collections.abc import Sequence
 
 import attrs
 import sympy
@@ -103,7 +102,7 @@ def _branch(compiled: Compiled, chosen: dict[str, str], built: Built) -> Branch:
     substitution: dict[sympy.Symbol, sympy.Expr] = {}
     discriminants: dict[str, sympy.Expr] = {}
     squares: set[str] = set()
-    towers: list[Tower] = []  # those the points were built in, the last one last
+    last: Tower | None = None  # the tower the last nested point was built in
     for index, spec in enumerate(specs):
         sigma = spec.sign(chosen[spec.point]) if spec.labels else 1
         algebra = algebra_of(spec)
@@ -113,14 +112,13 @@ def _branch(compiled: Compiled, chosen: dict[str, str], built: Built) -> Branch:
             built[before] = functools.cache(modes), modes.tower if isinstance(modes, NestedModes) else None
         modes, tower = built[before]
         (x, y), discriminants[spec.point] = modes(sigma)
-        if tower is not None:
-            towers.append(tower)
+        last = tower or last
         if algebra.square:
             squares.add(spec.point)
         substitution.update({symbol(spec.unknowns[0]): x, symbol(spec.unknowns[1]): y})
     values = {u: substitution[symbol(u)] for spec in specs for u in spec.unknowns}
     for unknown, definition in compiled.definitions.items():
-        values[unknown] = _output_value(definition, substitution, inputs, towers[-1:])
+        values[unknown] = _output_value(definition, substitution, inputs, last)
     labels = list(chosen.values())
     label = labels[0] if len(labels) == 1 else " ".join(f"{p}:{l}" for p, l in chosen.items())
     selected = all(chosen[spec.point] == spec.branch for spec in specs if spec.labels)
@@ -128,8 +126,8 @@ def _branch(compiled: Compiled, chosen: dict[str, str], built: Built) -> Branch:
 
 
 def _output_value(definition: sympy.Expr, substitution: dict[sympy.Symbol, sympy.Expr],
-                  inputs: Circles, towers: Sequence[Tower]) -> sympy.Expr:
-    nested = _nested_value(definition, substitution, inputs, towers)
+                  inputs: Circles, tower: Tower | None) -> sympy.Expr:
+    nested = _nested_value(definition, substitution, inputs, tower)
     if nested is not None:
         return nested
     if definition.is_Pow and definition.exp == sympy.Rational(1, 2):
@@ -144,17 +142,17 @@ def _output_value(definition: sympy.Expr, substitution: dict[sympy.Symbol, sympy
 
 
 def _nested_value(definition: sympy.Expr, substitution: dict[sympy.Symbol, sympy.Expr],
-                  inputs: Circles, towers: Sequence[Tower]) -> sympy.Expr | None:
+                  inputs: Circles, tower: Tower | None) -> sympy.Expr | None:
     """``definition`` (a polynomial or ratio in the unknowns, or the root of one) in a ``Tower``, where
-    the unknowns' closed forms hold more than one square root or one inside another: the one the last
-    of them was built in (``towers``) where it has them all, else a new one; None elsewhere (and for
-    what a tower does not take)."""
+    the unknowns' closed forms hold more than one square root or one inside another: ``tower`` (the
+    last nested point's) where it has them all, else a new one; None elsewhere (and for what a tower
+    does not take)."""
     root = definition.is_Pow and definition.exp == HALF
     inside = definition.base if root else definition
     if roots_in([inside]):
         return None
     value = None
-    for tower in towers:
+    if tower is not None:
         with contextlib.suppress(Unsupported):  # a root it has no room for
             given = {u: tower.value(substitution[u]) for u in inside.free_symbols if u in substitution}
             value = tower.expr(tower.value_given(inside, given))

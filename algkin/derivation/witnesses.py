@@ -26,7 +26,7 @@ import flint
 from ..branches import Branch
 from ..eliminate import Witness
 from ..evaluate import ARB
-from ..evaluate.program import compile_program
+from ..evaluate.program import BallProgram, compile_program
 from ..scene import Compiled
 from ..scene.model import Input
 from .assembles import Pieces, where_assembled
@@ -51,12 +51,16 @@ def sampled_witnesses(compiled: Compiled, branches: Sequence[Branch], where: Map
     spread = {n: exact_samples(compiled.scene.inputs[n], WITNESSES_PER_BRANCH * 3, where.get(n))
               for n in compiled.system.inputs}
     count = len(next(iter(spread.values()), [()]))
+    names = _exact_names(compiled)
     groups = []
     with flint.ctx.workprec(WITNESS_BITS):
         for branch in branches:
+            # compiled once a branch (a six-bar's closed forms are long: walking them per sample was most of this)
+            programs = (compile_program(list(branch.discriminants.values()), names, ARB),
+                        compile_program(list(branch.values.values()), names, ARB))
             group: list[Witness] = []
             for k in range(count):
-                point = _witness(compiled, branch, spread, k)
+                point = _witness(compiled, branch, programs, spread, k)
                 if point is not None:
                     group.append(point)
                 if len(group) == WITNESSES_PER_BRANCH:
@@ -107,19 +111,28 @@ def _on_circle(angle: float) -> Sample:
     return (u * u - 1) / (u * u + 1), 2 * u / (u * u + 1)
 
 
-def _witness(compiled: Compiled, branch: Branch, spread: Mapping[str, list[Sample]], k: int) -> Witness | None:
+def _exact_names(compiled: Compiled) -> list[str]:
+    """The variables a witness holds exactly, the programs' arguments: the inputs' and the dimensions."""
+    return sorted([*(v for variables in compiled.system.inputs.values() for v in variables),
+                   *compiled.system.parameters])
+
+
+def _witness(compiled: Compiled, branch: Branch, programs: tuple[BallProgram, BallProgram],
+             spread: Mapping[str, list[Sample]], k: int) -> Witness | None:
+    """The configuration of ``branch`` at sample ``k``, where it assembles: ``programs`` give its
+    discriminants and its closed forms in the inputs' variables and the dimensions, sorted by name."""
     exact: dict[str, Fraction] = {}  # the inputs' cos and sin (or lengths) and the dimensions are rational: kept exactly too
     for name, variables in compiled.system.inputs.items():
         exact.update(zip(variables, spread[name][k]))
     for n in compiled.system.parameters:
         default = Fraction(str(compiled.parameter_values[n]))
         exact[n] = default * (1 + Fraction(k + 1, 211)) if default else Fraction(k + 1, 211)
-    names = sorted(exact)
+    names = _exact_names(compiled)
     balls = [ARB.number(exact[n].numerator, exact[n].denominator) for n in names]
-    # compiled once a branch (a six-bar's closed forms are long: walking them per sample was most of this)
-    if not all(d > 0 for d in compile_program(list(branch.discriminants.values()), names, ARB)(*balls)):
+    discriminants, closed_forms = programs
+    if not all(d > 0 for d in discriminants(*balls)):
         return None
-    closed = compile_program(list(branch.values.values()), names, ARB)(*balls)
+    closed = closed_forms(*balls)
     if not all(flint.arb(v).is_finite() for v in closed):
         return None
     values = dict(zip(names, balls)) | {u: flint.arb(v) for u, v in zip(branch.values, closed)}
