@@ -3,13 +3,14 @@
 from collections.abc import Callable, Mapping
 
 import sympy
-from sympy.core.mul import _keep_coeff
+from sympy.core.add import _addsort
+from sympy.core.mul import _keep_coeff, _mulsort
 
 from ..scene.implicit.algebra import Circles, reduce_on_circles
 from ..system.text import ExpressionText
 from .ratio import cancelled
 
-__all__ = ["reducer", "tidy_ratio", "tidy_product", "tidy_sqrt", "unsplit_root", "readable", "Readable", "FormText"]
+__all__ = ["reducer", "tidy_ratio", "tidy_product", "tidy_sqrt", "unsplit_root", "product", "total", "readable", "Readable", "FormText"]
 
 
 def reducer(substitution: Mapping[sympy.Symbol, sympy.Expr], inputs: Circles) -> Callable[[sympy.Expr], sympy.Expr]:
@@ -83,7 +84,65 @@ def unsplit_root(expr: sympy.Expr) -> sympy.Expr:
     number, rest = expr.as_coeff_Mul()
     if rest == 1 or number < 0:  # sympy keeps a -1 under the root, its own way
         return sympy.sqrt(expr)
-    return sympy.Mul(sympy.sqrt(number), sympy.Pow(rest, sympy.S.Half, evaluate=False))
+    # The product put in sympy's order directly: its constructor would ask the signs again (tens
+    # of milliseconds where the number leaves a surd, sqrt(2) in front).
+    coefficient, surd = sympy.sqrt(number).as_coeff_Mul()
+    factors = [sympy.Pow(rest, sympy.S.Half, evaluate=False), *([] if surd == 1 else [surd])]
+    _mulsort(factors)
+    if coefficient != 1:
+        factors.insert(0, coefficient)
+    return factors[0] if len(factors) == 1 else sympy.Mul._from_args(factors, is_commutative=True)
+
+
+def product(*factors: sympy.Expr) -> sympy.Expr:
+    """``sympy.Mul(*factors)``, put in sympy's order directly where that is all its constructor would
+    do: numbers gathered in front, no two factors of one base, no number left to spread over a sum.
+    sympy's constructor evaluates each power again, and a root of a product asks the sign of each
+    factor (most of a six-bar's closed forms' cost); elsewhere it is called.
+
+    >>> c = sympy.Symbol("c", real=True)
+    >>> root = unsplit_root(sympy.Mul(12, c - 2, 1 / (c + 5)))
+    >>> product(sympy.Rational(1, 4), c**2 + 1, root)
+    sqrt(3)*sqrt((c - 2)/(c + 5))*(c**2 + 1)/2
+    >>> _.args == sympy.Mul(sympy.Rational(1, 4), c**2 + 1, root).args
+    True
+    >>> product(2, c + 1)   # a number spread over a sum: sympy's own
+    2*c + 2
+    """
+    coefficient, rest = sympy.S.One, []
+    for factor in factors:
+        number, others = sympy.sympify(factor).as_coeff_mul()
+        coefficient *= number
+        rest.extend(others)
+    bases = [r.as_base_exp()[0] for r in rest]
+    if not coefficient or len(set(bases)) < len(bases) or sum(1 for b in bases if b.is_Number) > 1 \
+            or (coefficient != 1 and len(rest) == 1 and rest[0].is_Add):
+        return sympy.Mul(*factors)
+    _mulsort(rest)
+    args = rest if coefficient == 1 else [coefficient, *rest]
+    return args[0] if len(args) == 1 else sympy.Mul._from_args(args, is_commutative=True)
+
+
+def total(*terms: sympy.Expr) -> sympy.Expr:
+    """``sympy.Add(*terms)``, put in sympy's order directly where that is all its constructor would do:
+    sums opened, the number in front, no two terms alike (``product``'s reason; elsewhere it is called).
+
+    >>> c = sympy.Symbol("c", real=True)
+    >>> total(c**2 + 1, 3 * c * sympy.sqrt(c + 2)).args == sympy.Add(c**2 + 1, 3 * c * sympy.sqrt(c + 2)).args
+    True
+    """
+    number, rest = sympy.S.Zero, []
+    for term in terms:
+        for part in sympy.Add.make_args(sympy.sympify(term)):
+            if part.is_Number:
+                number += part
+            else:
+                rest.append(part)
+    if len(rest) < 2 or len({r.as_coeff_Mul()[1] for r in rest}) < len(rest):
+        return sympy.Add(*terms)
+    _addsort(rest)
+    args = rest if number == 0 else [number, *rest]
+    return sympy.Add._from_args(args, is_commutative=True)
 
 
 def readable(expr: sympy.Expr) -> sympy.Expr:

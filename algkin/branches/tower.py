@@ -23,6 +23,7 @@ from sympy.core.mul import _keep_coeff
 
 from ..scene.implicit.algebra import HALF, Circles, square_reduced
 from ..system.convert import fmpq_to_rational, from_terms
+from .algebra import product, total
 
 __all__ = ["Tower", "Value", "Unsupported", "roots_in", "root_free"]
 
@@ -175,7 +176,7 @@ class Tower:
         if denominator.leading_coefficient() < 0:
             numerator, denominator = -numerator, -denominator
         (above, a), (below, q) = self.written(numerator), self.written(denominator)
-        expr = _keep_coeff(above / below, sympy.Mul(a, 1 / q))
+        expr = _keep_coeff(above / below, product(a, 1 / q))
         if remember:
             self._memo[expr] = value
         return expr
@@ -200,8 +201,8 @@ class Tower:
         by_roots: dict[tuple[int, ...], dict[tuple[int, ...], flint.fmpq]] = {}
         for exponents, coefficient in terms.items():
             by_roots.setdefault(exponents[split:], {})[exponents[:split]] = coefficient / content
-        return fmpq_to_rational(content), sympy.Add(*[
-            sympy.Mul(from_terms(part, self.symbols), *[r**e for r, e in zip(self.shown[split:], exponents) if e])
+        return fmpq_to_rational(content), total(*[
+            product(from_terms(part, self.symbols), *[r**e for r, e in zip(self.shown[split:], exponents) if e])
             for exponents, part in by_roots.items()])
 
 

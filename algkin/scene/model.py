@@ -1,5 +1,7 @@
 """Scene data: parameters, inputs, points built by constructions, named outputs."""
 
+import math
+
 import attrs
 import sympy
 
@@ -81,8 +83,9 @@ class Input:
         """(lo, hi) as floats in the unit users read: degrees for an angle, the length itself."""
         if not self.is_angle:
             return float(self.lo), float(self.hi)
-        lo, hi = (float(sympy.deg(self.to_radians(v))) for v in (self.lo, self.hi))
-        return lo, hi
+        # Degrees as they are; radians scaled in floats (sympy's pi would first import its geometry)
+        scale = 1 if self.unit == "deg" else 180 / math.pi
+        return float(self.lo) * scale, float(self.hi) * scale
 
     def shown(self, value: float) -> str:
         """A value in users' units as text: ``30°`` for an angle, ``0.25`` for a length."""

@@ -66,13 +66,17 @@ def test_sympy_text_keeps_sympys_exception_for_a_number_and_a_negative_multiple(
         ["1 - 2*x", "-x*y + 1", "2 - y**2", "-x - 1"]
 
 
-@given(terms)
-def test_from_terms_is_the_expression_of_sympys_poly(term_list):
+@given(terms, st.permutations(GENS + [sympy.Symbol("B_x"), sympy.Symbol("x10", positive=True)]))
+def test_from_terms_is_the_expression_of_sympys_poly(term_list, gens):
+    gens = gens[:3]  # in an order that is not sympy's, with or without assumptions
     as_dict = {exps: flint.fmpq(q.numerator, q.denominator) for q, exps in term_list}
-    as_dict = {exps: q for exps, q in as_dict.items() if q}
-    expected = sympy.Poly.from_dict({e: sympy.Rational(int(q.p), int(q.q)) for e, q in as_dict.items()}, *GENS,
-                                    domain=sympy.QQ).as_expr() if as_dict else sympy.Integer(0)
-    assert from_terms(as_dict, GENS) == expected  # the same tree, not only the same value
+    nonzero = {exps: q for exps, q in as_dict.items() if q}
+    expected = sympy.Poly.from_dict({e: sympy.Rational(int(q.p), int(q.q)) for e, q in nonzero.items()}, *gens,
+                                    domain=sympy.QQ).as_expr() if nonzero else sympy.Integer(0)
+    built = from_terms(as_dict, gens)  # zero coefficients given too: dropped
+    # the same tree, not only the same value: its arguments in sympy's order, its hash, its text
+    assert built == expected and built.args == expected.args
+    assert hash(built) == hash(expected) and sympy.srepr(built) == sympy.srepr(expected) and str(built) == str(expected)
 
 
 @given(terms, st.integers(1, 2))

@@ -33,7 +33,7 @@ from ...evaluate.program import numpy_function
 from ...scene.implicit import DyadSpec
 from ...scene.implicit.algebra import Circles
 from ...scene.implicit.base import FloatArray, Point
-from ..algebra import reducer, tidy_product, tidy_ratio
+from ..algebra import reducer, tidy_product, tidy_ratio, unsplit_root
 from ..tower import Tower, Unsupported, roots_in
 from .base import BranchAlgebra, Fix, HalfAngle, Mode, StableEvaluator, Substitution
 from .floats import heron_area, stable_quadratic
@@ -109,7 +109,7 @@ def _nested_modes(base: list[sympy.Expr], lengths: tuple[sympy.Expr, sympy.Expr]
     extended, folded = (l1 + l2) * (l1 + l2) * square - spread, spread - (l1 - l2) * (l1 - l2) * square
     (ke, he), (kf, hf) = tower.primitive(extended), tower.primitive(folded)
     n, d = (ke * kf).as_numer_denom()  # sqrt(k he hf) = sqrt(n d he hf) / d
-    root = tower.new_root(extended * folded * int(d) ** 2, sympy.sqrt(sympy.Mul(n * d, he, hf))) / int(d)
+    root = tower.new_root(extended * folded * int(d) ** 2, unsplit_root(sympy.Mul(n * d, he, hf))) / int(d)
     along = (l1 * l1 - l2 * l2) * square
     below = 2 * spread * common
     discriminant = sympy.Mul(he, hf)  # its sign (the contents are positive)

@@ -1,0 +1,48 @@
+"""``branches.algebra``: a root written without sympy's questions is the root sympy writes."""
+
+import sympy
+from hypothesis import assume, example, given, strategies as st
+
+from algkin.branches.algebra import product, total, unsplit_root
+
+C, S = sympy.symbols("c s", real=True)
+numbers = st.fractions(min_value=0, max_value=10**6, max_denominator=10**6).filter(bool)  # surds and squares
+# sums of monomials in c and s: real, of a sign sympy does not know (a positive one, c**2 + 1, it splits out)
+sums = st.lists(st.tuples(st.integers(-50, 50).filter(bool), st.integers(0, 4), st.integers(0, 3)),
+                min_size=2, max_size=6).map(
+    lambda terms: sympy.Add(*[k * C**i * S**j for k, i, j in terms])).filter(
+    lambda p: p.is_Add and p.is_extended_nonnegative is None and p.is_extended_nonpositive is None)
+
+
+@given(numbers, st.lists(sums, min_size=1, max_size=3, unique=True))
+def test_a_root_of_a_product_of_unknown_sign_is_sympys(number, factors):
+    expr = sympy.Mul(sympy.Rational(number.numerator, number.denominator), *factors)
+    assume(expr.is_extended_nonnegative is None)  # not a square: sqrt(p**2) is sympy's Abs(p)
+    written, sympys = unsplit_root(expr), sympy.sqrt(expr)
+    assert written == sympys and written.args == sympys.args and str(written) == str(sympys)
+
+
+X = sympy.Symbol("x")  # no assumptions: sympy asks nothing of its sign
+surds = st.sampled_from([sympy.sqrt(2), sympy.sqrt(3), sympy.sqrt(6), 1 / sympy.sqrt(5)])
+atoms = st.one_of(st.sampled_from([C, S, X, C**2, 1 / S, X**3]), sums, sums.map(lambda p: 1 / p))
+roots = sums.map(lambda p: sympy.Pow(p, sympy.S.Half, evaluate=False))
+factor = st.one_of(numbers.map(lambda q: sympy.Rational(q.numerator, q.denominator)), st.integers(-5, 5).map(sympy.Integer),
+                   surds, atoms, roots,
+                   st.tuples(numbers, atoms, roots).map(lambda t: sympy.Mul(sympy.Rational(t[0].numerator,
+                                                                                           t[0].denominator),
+                                                                              t[1], t[2])))
+
+
+@given(st.lists(factor, max_size=5))
+@example([sympy.Integer(2), C + 1])  # sympy spreads a number over a sum
+@example([sympy.sqrt(2), sympy.sqrt(3)])  # and gathers surds
+def test_a_product_is_sympys(factors):
+    built, sympys = product(*factors), sympy.Mul(*factors)
+    assert built == sympys and built.args == sympys.args and str(built) == str(sympys)
+
+
+@given(st.lists(st.one_of(factor, st.lists(factor, max_size=3).map(lambda f: sympy.Mul(*f)), sums), max_size=6))
+@example([C + 1, -C, sympy.Integer(3)])  # alike terms, numbers: sympy's own
+def test_a_sum_is_sympys(terms):
+    built, sympys = total(*terms), sympy.Add(*terms)
+    assert built == sympys and built.args == sympys.args and str(built) == str(sympys)
