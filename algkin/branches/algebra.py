@@ -172,7 +172,7 @@ class Readable:
         made = self._made.get(expr)
         if made is None:
             if expr.is_Add:  # a sum of terms: each term read apart (a content pulled out of them all reads worse)
-                made = sympy.Add(*[self(term) for term in expr.args])
+                made = total(*[self(term) for term in expr.args])
             else:
                 made = _keep_coeff(*self._content_and_part(expr))
             self._made[expr] = made
@@ -195,12 +195,14 @@ class Readable:
             return terms.primitive() if terms.is_Add else self._content_and_part(terms)
         if expr.is_Mul:
             parts = [self._content_and_part(factor) for factor in expr.args]
-            return sympy.Mul(*[k for k, _ in parts]), sympy.Mul(*[p for _, p in parts])
+            return sympy.Mul(*[k for k, _ in parts]), product(*[p for _, p in parts])
         if expr.is_Pow:
             content, part = self._content_and_part(expr.base)
             if expr.exp.is_Integer:
                 return content**expr.exp, part**expr.exp
-            number, rest = sympy.Pow(_keep_coeff(content, part), expr.exp).as_coeff_Mul()
+            base = _keep_coeff(content, part)
+            root = unsplit_root(base) if expr.exp == sympy.S.Half else sympy.Pow(base, expr.exp)
+            number, rest = root.as_coeff_Mul()
             return number, rest
         return sympy.Integer(1), expr.func(*[self(a) for a in expr.args])
 
