@@ -29,14 +29,14 @@ import flint
 import mpmath
 import sympy
 
-from ...eliminate import eliminate
 from ...errors import ComputationError
 from ...runtime.budget import Deadline
 from ...runtime.frozen import FrozenDict
 from ...system.convert import univariate
 from ...system.roots import real_roots
 from ..frozen import frozen_rows, thawed
-from .critical import DIGITS, ROOT_BITS, CriticalPoint, Number, Problem, extreme, meeting_factors, points_at
+from .critical import (DIGITS, ROOT_BITS, CriticalPoint, Number, Problem, extreme, meeting_factors, points_at,
+                       resultant_factors)
 
 __all__ = ["ClosedForm", "closed_form", "value_factors", "Region", "describe", "end_degrees", "value_at_angle"]
 
@@ -97,9 +97,8 @@ def _text(expr: sympy.Expr | None) -> str | None:
 def value_factors(problem: Problem, backend: str = "flint", *, deadline: Deadline | None = None) -> list[sympy.Expr]:
     """Factors, in ``u`` and the parameters, of the resultant in ``t`` of ``F`` and ``dF/dtheta``
     (the elimination keeping to ``deadline``, if any)."""
-    names = [p.name for p in problem.parameters]
-    factors = eliminate(problem.half_angle(), [problem.t.name], [problem.u.name] + names,
-                        method="resultant", backend=backend, budget=deadline).factors
+    factors = resultant_factors(problem.half_angle(), problem.t, [problem.u, *problem.parameters], backend=backend,
+                                deadline=deadline)
     return [f for f in factors if f.has(problem.u)]
 
 
