@@ -32,7 +32,7 @@ from ..toggles import single_input
 from .angles import AngleScale, direction_problem
 from .closed import ClosedForm, Region, closed_form, describe, value_factors
 from .critical import (DIGITS, CriticalPoint, Number, Problem, constant_value, critical_points, extreme,
-                       meeting_factors, points_at, stationary_factors)
+                       meeting_factors, points_at, stationary_factors, stretches_of)
 
 if TYPE_CHECKING:
     from ...derivation.pipeline import Derivation
@@ -125,7 +125,8 @@ def problem_for(derived: Derivation, output: str, degrees: tuple[sympy.Expr, sym
     chosen = next(b for b in derived.branches if b.selected)
     scale = AngleScale(angle.cos, None) if angle is not None else None
     return Problem(derived.eliminations[unknowns[0]].polynomial, chosen.values[unknowns[0]],
-                   symbol(unknowns[0]), line, parameters, scale, tuple(chosen.discriminants.values()))
+                   symbol(unknowns[0]), line, parameters, scale, tuple(chosen.discriminants.values()),
+                   stretches_of(derived, chosen, lambda b: b.values[unknowns[0]], output))
 
 
 def input_span(spec: Input, angle_range: tuple[float | str, float | str] | None) -> tuple[sympy.Expr, sympy.Expr]:

@@ -156,13 +156,19 @@ def end_degrees(problem: Problem, best: CriticalPoint) -> sympy.Rational | None:
 
 def value_at_angle(problem: Problem, degrees: sympy.Rational, values: Values) -> sympy.Expr:
     """The closed form at an exact angle, tidied (denested when that is shorter and equal)."""
-    raw = problem.closed.xreplace(problem.line.exact_at(degrees))
+    raw = _closed_at(problem, degrees).xreplace(problem.line.exact_at(degrees))
     if raw.is_Rational:
         return raw  # every tidier form of a rational is itself
     target = _numeric(raw, values)
     forms = [f for f in (raw, sympy.sqrtdenest(raw), sympy.radsimp(raw), sympy.factor(raw))
              if abs(_numeric(f, values) - target) <= MATCH * (1 + abs(target))]
     return min(forms, key=sympy.count_ops)
+
+
+def _closed_at(problem: Problem, degrees: sympy.Rational | mpmath.mpf) -> sympy.Expr:
+    """The closed form the output has at ``degrees``: a named mode's there (``Problem.on``)."""
+    here = problem.on(mpmath.mpf(float(degrees)))
+    return (here or problem).closed
 
 
 @dataclass(frozen=True)
@@ -197,7 +203,7 @@ def describe(problem: Problem, stationary: Sequence[sympy.Expr], values_factors:
     if value is None and root is not None and at == "dead centre":
         value = _double_root(problem, root)
     if value is None and root is not None:
-        value = sympy.sqrtdenest(problem.closed.xreplace(line.exact_in_t(root)))
+        value = sympy.sqrtdenest(_closed_at(problem, best.input_deg).xreplace(line.exact_in_t(root)))
     return Description(at, degrees, value, factor, u_factor)
 
 

@@ -28,12 +28,15 @@ from ...system.convert import flint_context, from_terms, to_flint, to_flint_inte
 from ...system.roots import Polynomial, real_roots
 
 if TYPE_CHECKING:
+    from ...branches import Branch
+    from ...derivation.modes import Piece
+    from ...derivation.results import Derivation
     from ...runtime.budget import Deadline
     from .angles import AngleScale
 
-__all__ = ["Problem", "CriticalPoint", "critical_points", "points_in", "points_at", "extreme",
+__all__ = ["Problem", "Stretch", "CriticalPoint", "critical_points", "points_in", "points_at", "extreme",
            "stationary_factors", "meeting_factors", "constant_value", "resultant_factors", "along_input",
-           "ROOT_BITS"]
+           "stretches_of", "ROOT_BITS", "SEAM"]
 
 ROOT_BITS = 128
 DIGITS = 40
@@ -41,9 +44,54 @@ DIGITS = 40
 Number = Union[int, float, sympy.Rational, mpmath.mpf]  # a range end: exact, or an mpf
 
 
+SEAM = 1e-9  # degrees: how far a stretch reaches past its (float) end into a neighbour that does not assemble
+
+
+@dataclass(frozen=True)
+class Stretch:
+    """Where a named mode (``derive``'s ``modes``) is another branch than the chosen one: on
+    ``[lo, hi]`` (the input as users read it) the output's closed form is ``closed``, assembled
+    where every one of ``valid`` is >= 0; ``closed`` None where the mode is absent."""
+
+    lo: float
+    hi: float
+    closed: sympy.Expr | None
+    valid: tuple[sympy.Expr, ...] = ()
+
+
+def stretches_of(derived: Derivation, chosen: Branch, closed_of: Callable[[Branch], sympy.Expr], output: str
+                 ) -> tuple[Stretch, ...]:
+    """Where a named mode (``derived.modes``) is another branch than ``chosen`` (its label changed
+    where it crossed the other mode: Hart's C), the output's closed form there, ``closed_of`` that
+    branch; where the mode is absent, none. The modes are followed at the dimensions' values:
+    refused with any symbolic."""
+    found: list[Stretch] = []
+    for followed in derived.modes:
+        pieces = followed.pieces
+        for k, piece in enumerate(pieces):
+            branch = followed.branch_of(piece, derived.branches) if piece.status == "mode" else None
+            if piece.status == "absent" or (branch is not None and branch is not chosen):
+                # its ends are floats: widened where the other side does not assemble (a dead centre)
+                lo, hi = (piece.lo - _seam(pieces, k - 1), piece.hi + _seam(pieces, k + 1))
+                found.append(Stretch(lo, hi, None) if branch is None else
+                             Stretch(lo, hi, closed_of(branch), tuple(branch.discriminants.values())))
+    if found and derived.compiled.system.parameters:
+        raise UsageError("params", ", ".join(derived.compiled.system.parameters),
+                         f"{output} follows a named mode that changes branch along the motion, followed at fixed "
+                         "dimensions only: give them values (--set) rather than leave them symbolic")
+    return tuple(found)
+
+
+def _seam(pieces: Sequence[Piece], k: int) -> float:
+    """How far a stretch reaches into its neighbour ``pieces[k]``: ``SEAM`` where that does not
+    assemble (or there is none), so that a dead centre rounded out of the stretch stays in it."""
+    return SEAM if not 0 <= k < len(pieces) or pieces[k].status == "no-assembly" else 0.0
+
+
 @dataclass(frozen=True)
 class Problem:
-    """An output ``u`` on the motion: its eliminant and the chosen branch's closed form."""
+    """An output ``u`` on the motion: its eliminant and the chosen branch's closed form (a
+    named mode's, on its ``stretches``, at fixed dimensions)."""
 
     eliminant: sympy.Expr  # F(u, c, s; parameters), or F(u, t; parameters) for a length input t
     closed: sympy.Expr  # u(c, s; parameters) on the selected branch
@@ -52,9 +100,12 @@ class Problem:
     parameters: tuple[sympy.Symbol, ...]  # symbols left symbolic
     scale: AngleScale | None = None  # an angle output: how its degrees follow from u (``angles``)
     valid: tuple[sympy.Expr, ...] = ()  # the chosen branch's discriminants: it assembles where all are >= 0
+    stretches: tuple[Stretch, ...] = ()  # none with parameters symbolic
 
     def at(self, values: Mapping[sympy.Symbol, sympy.Expr]) -> Problem:
         """The problem with parameters fixed (``values``: symbol -> rational)."""
+        if not values and not self.parameters:
+            return self  # nothing to fix: the eliminant is not expanded again (a second, on thousands of terms)
         return replace(self, eliminant=sympy.expand(self.eliminant.xreplace(values)),
                        closed=self.closed.xreplace(values), parameters=(),
                        valid=tuple(d.xreplace(values) for d in self.valid))
@@ -100,10 +151,28 @@ class Problem:
     def numerator_in_t(self, expr: sympy.Expr) -> sympy.Expr:
         return self.line.numerator(expr)
 
+    def on(self, degrees: mpmath.mpf) -> Problem | None:
+        """The problem whose closed form is the output's at ``degrees`` (a named mode's stretch
+        there, turns apart), None where the mode is absent."""
+        for stretch in self.stretches:
+            if any(stretch.lo <= degrees + turn <= stretch.hi for turn in self.line.turns):
+                return None if stretch.closed is None else \
+                    replace(self, closed=stretch.closed, valid=stretch.valid, stretches=())
+        return self
+
+    def valid_anywhere(self) -> tuple[sympy.Expr, ...]:
+        """The discriminants of every branch the output takes: the chosen one's and its stretches'."""
+        found = list(self.valid)
+        found += [d for s in self.stretches for d in s.valid if d not in found]
+        return tuple(found)
+
     def value(self, degrees: mpmath.mpf) -> mpmath.mpf:
         """The closed form at ``degrees`` (a length input's value; mpmath), nan where it is not
         real or the branch does not assemble (a closed form may be real past that: a
         transmission angle's cosine)."""
+        here = self.on(degrees)
+        if here is not self:
+            return mpmath.nan if here is None else here.value(degrees)
         at = self.line.numbers_at(degrees)
         result = self.closed_at(at)
         if not isinstance(result, mpmath.mpf) or not self.assembles(at):
@@ -245,7 +314,7 @@ def meeting_factors(problem: Problem, *, deadline: Deadline | None = None) -> li
                                        [problem.t, *problem.parameters], backend="flint", deadline=deadline)
         except ComputationError:
             pass  # the discriminant is a constant: the values never meet
-    for discriminant in problem.valid:  # one on a dyad built on another's root: its conjugates' zeros too
+    for discriminant in problem.valid_anywhere():  # one on a dyad built on another's root: its conjugates' zeros too
         for factor, _ in sympy.factor_list(problem.numerator_in_t(root_free(discriminant)))[1]:
             factor = sympy.expand(factor)
             if factor.has(problem.t) and not any(sympy.expand(factor - f) == 0 or sympy.expand(factor + f) == 0
@@ -334,7 +403,10 @@ def _ends_here(problem: Problem, degrees: mpmath.mpf) -> bool:
 def _value_at_meeting(problem: Problem, degrees: mpmath.mpf) -> mpmath.mpf:
     """The branch's value where its square root's argument is zero up to rounding (the
     imaginary part then tiny), nan where the branch is not real."""
-    result = problem.closed_at(problem.line.numbers_at(degrees))
+    here = problem.on(degrees)
+    if here is None:
+        return mpmath.nan
+    result = here.closed_at(problem.line.numbers_at(degrees))
     if isinstance(result, mpmath.mpc):
         tiny = mpmath.mpf(10) ** (-DIGITS // 3) * (1 + abs(result))
         return result.real if abs(result.imag) <= tiny else mpmath.nan

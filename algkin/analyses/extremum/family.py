@@ -97,7 +97,7 @@ class ExtremumFamily:
         line = problem.line
         direction = problem.scale is not None and problem.scale.quarter_turns is not None
         # the direction's reference depends on the design's motion; a length input takes no half angle
-        self.generic = line.is_angle and not direction
+        self.generic = line.is_angle and not direction and not problem.stretches  # a named mode: ``extremum``'s
         if not self.generic:
             return
         self._names = [v.name for v in line.variables] + [problem.u.name] + list(self.defaults)
