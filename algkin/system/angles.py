@@ -22,21 +22,57 @@ import flint
 import mpmath
 import sympy
 
-from .convert import flint_context, to_flint, univariate
+from .convert import flint_context, from_terms, to_flint, univariate
 from .roots import real_roots
 
-__all__ = ["half_angle_numerator", "half_angle_poly", "tangent_to_degrees", "vanishes_at_half_turn", "Parametrisation"]
+__all__ = ["half_angle_numerator", "half_angle_poly", "half_angle_terms", "tangent_to_degrees", "vanishes_at_half_turn", "Parametrisation"]
 
 
 def half_angle_numerator(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol, t: sympy.Symbol) -> sympy.Expr:
-    """The numerator, in ``t``, of ``expr`` with ``c``, ``s`` in the half-angle form (through
-    ``half_angle_poly`` where ``expr`` holds numbers alone)."""
-    expr = sympy.expand(expr)
-    if expr.free_symbols <= {c, s}:
-        poly = half_angle_poly(expr, c, s)
-        return sympy.Add(*[sympy.Integer(int(a)) * t**k for k, a in enumerate(poly.coeffs())])
+    """The numerator, in ``t`` (and ``expr``'s other symbols), of ``expr`` with ``c``, ``s`` in the
+    half-angle form: a polynomial's in python-flint (``half_angle_terms``), a quotient's (a
+    discriminant's norm) through sympy.
+
+    >>> a, c, s, t = sympy.symbols("a c s t")
+    >>> half_angle_numerator(a * c + s, c, s, t), half_angle_numerator(s / (c + 1), c, s, t)
+    (-a*t**2 + a + 2*t, t**3 + t)
+    """
+    names = [c.name, s.name, *sorted({v.name for v in expr.free_symbols} - {c.name, s.name})]
+    if len(set(names)) == len(names) and t.name not in names[2:]:
+        try:
+            poly = to_flint(expr, flint_context(names))
+        except TypeError:  # a quotient, a root
+            poly = None
+        if poly is not None:
+            others = sorted(expr.free_symbols - {c, s}, key=lambda v: v.name)
+            return from_terms(_cleared(half_angle_terms(poly)), [t, *others])
     half = {c: (1 - t**2) / (1 + t**2), s: 2 * t / (1 + t**2)}
-    return sympy.expand(sympy.numer(sympy.together(expr.xreplace(half))))
+    return sympy.expand(sympy.numer(sympy.together(sympy.expand(expr).xreplace(half))))
+
+
+_COSINE, _SINE, _ONE = flint.fmpq_poly([1, 0, -1]), flint.fmpq_poly([0, 2]), flint.fmpq_poly([1, 0, 1])
+
+
+def half_angle_terms(poly: flint.fmpq_mpoly) -> dict[tuple[int, ...], flint.fmpq_poly]:
+    """``poly``'s terms in ``c, s`` (its first two variables) in ``t`` (``c = (1 - t^2)/(1 + t^2)``,
+    ``s = 2t/(1 + t^2)``) times ``(1 + t^2)**k``, ``k`` its degree in them, grouped by the
+    exponents of its other variables."""
+    terms = poly.to_dict()
+    degree = max((m[0] + m[1] for m in terms), default=0)
+    grouped: dict[tuple[int, ...], flint.fmpq_poly] = {}
+    for monomial, coefficient in terms.items():
+        i, j, rest = monomial[0], monomial[1], tuple(monomial[2:])
+        grouped[rest] = grouped.get(rest, flint.fmpq_poly([])) + \
+            coefficient * _COSINE**i * _SINE**j * _ONE**(degree - i - j)
+    return grouped
+
+
+def _cleared(grouped: dict[tuple[int, ...], flint.fmpq_poly]) -> dict[tuple[int, ...], int]:
+    """``half_angle_terms`` as integer terms ``{(power of t, *other exponents): coefficient}``, the
+    denominators cleared."""
+    denominator = math.lcm(1, *(int(p.denom()) for p in grouped.values()))
+    return {(k, *rest): int(a * denominator) for rest, in_t in grouped.items()
+            for k, a in enumerate(in_t.coeffs()) if a != 0}
 
 
 def half_angle_poly(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol) -> flint.fmpz_poly:
@@ -48,16 +84,8 @@ def half_angle_poly(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol) -> flint
     >>> half_angle_poly(c**2 + s**2, c, s)  # (1 + t**2)**2 / (1 + t**2)**2: no root
     x^4 + 2*x^2 + 1
     """
-    terms = to_flint(expr, flint_context([str(c), str(s)])).to_dict()
-    degree = max((i + j for i, j in terms), default=0)
-    cosine, sine, one = flint.fmpq_poly([1, 0, -1]), flint.fmpq_poly([0, 2]), flint.fmpq_poly([1, 0, 1])
-    total = flint.fmpq_poly([])
-    for (i, j), coefficient in terms.items():
-        total += coefficient * cosine**i * sine**j * one ** (degree - i - j)
-    if total.degree() < 0:
-        return flint.fmpz_poly([])
-    denominator = math.lcm(*(int(flint.fmpq(a).q) for a in total.coeffs()))
-    return flint.fmpz_poly([int(flint.fmpq(a) * denominator) for a in total.coeffs()])
+    terms = _cleared(half_angle_terms(to_flint(expr, flint_context([str(c), str(s)]))))
+    return flint.fmpz_poly([terms.get((k,), 0) for k in range(max((m[0] + 1 for m in terms), default=0))])
 
 
 def vanishes_at_half_turn(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol) -> bool:

@@ -31,8 +31,8 @@ from ...system import symbol
 from ..toggles import single_input
 from .angles import AngleScale, direction_problem
 from .closed import ClosedForm, Region, closed_form, describe, value_factors
-from .critical import (DIGITS, CriticalPoint, Number, Problem, critical_points, extreme, meeting_factors,
-                       points_at, stationary_factors)
+from .critical import (DIGITS, CriticalPoint, Number, Problem, constant_value, critical_points, extreme,
+                       meeting_factors, points_at, stationary_factors, stretches_of)
 
 if TYPE_CHECKING:
     from ...derivation.pipeline import Derivation
@@ -125,7 +125,8 @@ def problem_for(derived: Derivation, output: str, degrees: tuple[sympy.Expr, sym
     chosen = next(b for b in derived.branches if b.selected)
     scale = AngleScale(angle.cos, None) if angle is not None else None
     return Problem(derived.eliminations[unknowns[0]].polynomial, chosen.values[unknowns[0]],
-                   symbol(unknowns[0]), line, parameters, scale, tuple(chosen.discriminants.values()))
+                   symbol(unknowns[0]), line, parameters, scale, tuple(chosen.discriminants.values()),
+                   stretches_of(derived, chosen, lambda b: b.values[unknowns[0]], output))
 
 
 def input_span(spec: Input, angle_range: tuple[float | str, float | str] | None) -> tuple[sympy.Expr, sympy.Expr]:
@@ -195,6 +196,9 @@ def extremum_of(derived: Derivation, output: str, angle_range: tuple[float | str
     scale = problem.scale
     flip = scale is not None and scale.decreasing
     defaults = {p: sympy.Rational(str(derived.compiled.parameter_values[p.name])) for p in problem.parameters}
+    constant = constant_value(problem, defaults, lo, hi)
+    if constant is not None:
+        raise UsageError("output", output, f"the output does not depend on the input: it is {constant} throughout")
     stationary = stationary_factors(problem, backend, deadline=deadline)
     points = points_at(problem, stationary, defaults, lo, hi)
     closed = closed_form(problem, stationary, defaults, lo, hi, largest != flip, deadline=deadline) \

@@ -38,9 +38,10 @@ from ...errors import ComputationError, UsageError
 from ...evaluate import NUMPY, evaluate
 from ...system import input_values, symbol
 from ...system.angles import Parametrisation
-from .critical import DIGITS, Problem
+from .critical import DIGITS, Problem, stretches_of
 
 if TYPE_CHECKING:
+    from ...branches import Branch
     from ...derivation.results import Derivation
     from ...scene.compile import AngleOutput
 
@@ -140,12 +141,18 @@ def direction_problem(derived: Derivation, angle: AngleOutput, line: Parametrisa
     k = _reference(cos_form, sin_form, line, compiled.parameter_values, lo, hi, output)
     taken = set(system.variables) | set(compiled.parameter_values)
     w = _fresh(f"tan_half_{angle.name}", taken)
-    turned_cos, turned_sin = _rotated(cos_form, sin_form, -k)
-    closed = turned_sin / (1 + turned_cos)
     groups = witnesses if witnesses is not None else drawn(derived.compiled, derived.branches)
     eliminant = _eliminant(derived, angle, k, w, groups, deadline)
-    return Problem(eliminant, closed, w, line, parameters, AngleScale(w.name, k),
-                   tuple(chosen.discriminants.values()))
+    return Problem(eliminant, _via(chosen, angle, k), w, line, parameters, AngleScale(w.name, k),
+                   tuple(chosen.discriminants.values()),
+                   stretches_of(derived, chosen, lambda branch: _via(branch, angle, k), output))
+
+
+def _via(branch: Branch, angle: AngleOutput, k: int) -> sympy.Expr:
+    """``w = tan((phi - k*90)/2)`` on ``branch``, from its cosine and sine of ``phi``."""
+    assert angle.sin is not None, "a direction has a sine"
+    turned_cos, turned_sin = _rotated(branch.values[angle.cos], branch.values[angle.sin], -k)
+    return turned_sin / (1 + turned_cos)
 
 
 def _eliminant(derived: Derivation, angle: AngleOutput, k: int, w: sympy.Symbol, groups: Groups,

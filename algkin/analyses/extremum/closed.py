@@ -29,14 +29,14 @@ import flint
 import mpmath
 import sympy
 
-from ...eliminate import eliminate
 from ...errors import ComputationError
 from ...runtime.budget import Deadline
 from ...runtime.frozen import FrozenDict
 from ...system.convert import univariate
 from ...system.roots import real_roots
 from ..frozen import frozen_rows, thawed
-from .critical import DIGITS, ROOT_BITS, CriticalPoint, Number, Problem, extreme, meeting_factors, points_at
+from .critical import (DIGITS, ROOT_BITS, CriticalPoint, Number, Problem, extreme, meeting_factors, points_at,
+                       resultant_factors)
 
 __all__ = ["ClosedForm", "closed_form", "value_factors", "Region", "describe", "end_degrees", "value_at_angle"]
 
@@ -97,9 +97,8 @@ def _text(expr: sympy.Expr | None) -> str | None:
 def value_factors(problem: Problem, backend: str = "flint", *, deadline: Deadline | None = None) -> list[sympy.Expr]:
     """Factors, in ``u`` and the parameters, of the resultant in ``t`` of ``F`` and ``dF/dtheta``
     (the elimination keeping to ``deadline``, if any)."""
-    names = [p.name for p in problem.parameters]
-    factors = eliminate(problem.half_angle(), [problem.t.name], [problem.u.name] + names,
-                        method="resultant", backend=backend, budget=deadline).factors
+    factors = resultant_factors(problem.half_angle(), problem.t, [problem.u, *problem.parameters], backend=backend,
+                                deadline=deadline)
     return [f for f in factors if f.has(problem.u)]
 
 
@@ -157,13 +156,19 @@ def end_degrees(problem: Problem, best: CriticalPoint) -> sympy.Rational | None:
 
 def value_at_angle(problem: Problem, degrees: sympy.Rational, values: Values) -> sympy.Expr:
     """The closed form at an exact angle, tidied (denested when that is shorter and equal)."""
-    raw = problem.closed.xreplace(problem.line.exact_at(degrees))
+    raw = _closed_at(problem, degrees).xreplace(problem.line.exact_at(degrees))
     if raw.is_Rational:
         return raw  # every tidier form of a rational is itself
     target = _numeric(raw, values)
     forms = [f for f in (raw, sympy.sqrtdenest(raw), sympy.radsimp(raw), sympy.factor(raw))
              if abs(_numeric(f, values) - target) <= MATCH * (1 + abs(target))]
     return min(forms, key=sympy.count_ops)
+
+
+def _closed_at(problem: Problem, degrees: sympy.Rational | mpmath.mpf) -> sympy.Expr:
+    """The closed form the output has at ``degrees``: a named mode's there (``Problem.on``)."""
+    here = problem.on(mpmath.mpf(float(degrees)))
+    return (here or problem).closed
 
 
 @dataclass(frozen=True)
@@ -198,7 +203,7 @@ def describe(problem: Problem, stationary: Sequence[sympy.Expr], values_factors:
     if value is None and root is not None and at == "dead centre":
         value = _double_root(problem, root)
     if value is None and root is not None:
-        value = sympy.sqrtdenest(problem.closed.xreplace(line.exact_in_t(root)))
+        value = sympy.sqrtdenest(_closed_at(problem, best.input_deg).xreplace(line.exact_in_t(root)))
     return Description(at, degrees, value, factor, u_factor)
 
 

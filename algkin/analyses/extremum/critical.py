@@ -24,15 +24,19 @@ from ...eliminate import eliminate
 from ...errors import ComputationError, UsageError
 from ...evaluate import MPMATH, evaluate
 from ...system.angles import Parametrisation
-from ...system.convert import univariate
+from ...system.convert import flint_context, from_terms, to_flint, to_flint_integer, univariate
 from ...system.roots import Polynomial, real_roots
 
 if TYPE_CHECKING:
+    from ...branches import Branch
+    from ...derivation.modes import Piece
+    from ...derivation.results import Derivation
     from ...runtime.budget import Deadline
     from .angles import AngleScale
 
-__all__ = ["Problem", "CriticalPoint", "critical_points", "points_in", "points_at", "extreme",
-           "stationary_factors", "meeting_factors", "ROOT_BITS"]
+__all__ = ["Problem", "Stretch", "CriticalPoint", "critical_points", "points_in", "points_at", "extreme",
+           "stationary_factors", "meeting_factors", "constant_value", "resultant_factors", "along_input",
+           "stretches_of", "ROOT_BITS", "SEAM"]
 
 ROOT_BITS = 128
 DIGITS = 40
@@ -40,9 +44,54 @@ DIGITS = 40
 Number = Union[int, float, sympy.Rational, mpmath.mpf]  # a range end: exact, or an mpf
 
 
+SEAM = 1e-9  # degrees: how far a stretch reaches past its (float) end into a neighbour that does not assemble
+
+
+@dataclass(frozen=True)
+class Stretch:
+    """Where a named mode (``derive``'s ``modes``) is another branch than the chosen one: on
+    ``[lo, hi]`` (the input as users read it) the output's closed form is ``closed``, assembled
+    where every one of ``valid`` is >= 0; ``closed`` None where the mode is absent."""
+
+    lo: float
+    hi: float
+    closed: sympy.Expr | None
+    valid: tuple[sympy.Expr, ...] = ()
+
+
+def stretches_of(derived: Derivation, chosen: Branch, closed_of: Callable[[Branch], sympy.Expr], output: str
+                 ) -> tuple[Stretch, ...]:
+    """Where a named mode (``derived.modes``) is another branch than ``chosen`` (its label changed
+    where it crossed the other mode: Hart's C), the output's closed form there, ``closed_of`` that
+    branch; where the mode is absent, none. The modes are followed at the dimensions' values:
+    refused with any symbolic."""
+    found: list[Stretch] = []
+    for followed in derived.modes:
+        pieces = followed.pieces
+        for k, piece in enumerate(pieces):
+            branch = followed.branch_of(piece, derived.branches) if piece.status == "mode" else None
+            if piece.status == "absent" or (branch is not None and branch is not chosen):
+                # its ends are floats: widened where the other side does not assemble (a dead centre)
+                lo, hi = (piece.lo - _seam(pieces, k - 1), piece.hi + _seam(pieces, k + 1))
+                found.append(Stretch(lo, hi, None) if branch is None else
+                             Stretch(lo, hi, closed_of(branch), tuple(branch.discriminants.values())))
+    if found and derived.compiled.system.parameters:
+        raise UsageError("params", ", ".join(derived.compiled.system.parameters),
+                         f"{output} follows a named mode that changes branch along the motion, followed at fixed "
+                         "dimensions only: give them values (--set) rather than leave them symbolic")
+    return tuple(found)
+
+
+def _seam(pieces: Sequence[Piece], k: int) -> float:
+    """How far a stretch reaches into its neighbour ``pieces[k]``: ``SEAM`` where that does not
+    assemble (or there is none), so that a dead centre rounded out of the stretch stays in it."""
+    return SEAM if not 0 <= k < len(pieces) or pieces[k].status == "no-assembly" else 0.0
+
+
 @dataclass(frozen=True)
 class Problem:
-    """An output ``u`` on the motion: its eliminant and the chosen branch's closed form."""
+    """An output ``u`` on the motion: its eliminant and the chosen branch's closed form (a
+    named mode's, on its ``stretches``, at fixed dimensions)."""
 
     eliminant: sympy.Expr  # F(u, c, s; parameters), or F(u, t; parameters) for a length input t
     closed: sympy.Expr  # u(c, s; parameters) on the selected branch
@@ -51,9 +100,12 @@ class Problem:
     parameters: tuple[sympy.Symbol, ...]  # symbols left symbolic
     scale: AngleScale | None = None  # an angle output: how its degrees follow from u (``angles``)
     valid: tuple[sympy.Expr, ...] = ()  # the chosen branch's discriminants: it assembles where all are >= 0
+    stretches: tuple[Stretch, ...] = ()  # none with parameters symbolic
 
     def at(self, values: Mapping[sympy.Symbol, sympy.Expr]) -> Problem:
         """The problem with parameters fixed (``values``: symbol -> rational)."""
+        if not values and not self.parameters:
+            return self  # nothing to fix: the eliminant is not expanded again (a second, on thousands of terms)
         return replace(self, eliminant=sympy.expand(self.eliminant.xreplace(values)),
                        closed=self.closed.xreplace(values), parameters=(),
                        valid=tuple(d.xreplace(values) for d in self.valid))
@@ -63,36 +115,64 @@ class Problem:
         return self.line.t
 
     def half_angle(self) -> list[sympy.Expr]:
-        """``F`` and ``dF/dtheta`` as polynomials in ``u``, ``t`` and the parameters, an angle's
-        without the factors ``1 + t**2`` (an eliminant whose highest terms hold ``c**2 + s**2`` gives
-        them to both, and a shared factor makes their resultant in ``t`` vanish; they have no real root).
+        """``F`` and ``dF/dtheta`` as polynomials in ``u``, ``t`` and the parameters: ``F`` the
+        product of the eliminant's ``moving`` components in ``t``, each once. What else its
+        numerator holds would share a factor with the derivative and make their resultant in ``u``
+        vanish: a repeated factor (two factors in ``c, s`` equal on the circle), a factor free of
+        ``t`` (a component on which the output keeps one value). Factors free of ``u`` (``1 + t**2``
+        among them) would only add roots where no value is stationary.
 
         >>> c, s, t, u = sympy.symbols("c s t u")
-        >>> Problem((c**2 + s**2) * (u - s), s, u, Parametrisation((c, s), t), ()).half_angle()
-        [t**2*u - 2*t + u, t**2 - 1]
+        >>> Problem((c**2 + s**2) * (u - s)**2, s, u, Parametrisation((c, s), t), ()).half_angle()
+        [t**2*u - 2*t + u, 2*t**2 - 2]
         """
-        along = self.line.derivative(self.eliminant)
-        if along == 0:
+        moving, _ = self.components()
+        if not moving:
             raise UsageError("output", str(self.u), "the output does not depend on the input")
-        return [self._off_the_circle(self.numerator_in_t(e)) for e in (self.eliminant, along)]
+        symbols = sorted(set().union(*(f.free_symbols for f in moving)) | {self.t}, key=lambda v: v.name)
+        ctx = flint_context([v.name for v in symbols])
+        product = to_flint(sympy.Mul(*moving), ctx)
+        return [from_terms(p.to_dict(), symbols) for p in (product, along_input(product, self.t.name,
+                                                                               angle=self.line.is_angle))]
 
-    def _off_the_circle(self, numerator: sympy.Expr) -> sympy.Expr:
-        if not self.line.is_angle:
-            return numerator
-        circle = 1 + self.t**2
-        while True:
-            quotient, remainder = sympy.div(numerator, circle, self.t)
-            if remainder != 0:
-                return numerator
-            numerator = sympy.expand(quotient)
+    def components(self) -> tuple[list[sympy.Expr], list[sympy.Expr]]:
+        """The distinct irreducible factors of the eliminant's numerator in ``t`` that hold ``u``:
+        those that hold ``t`` too (the output moves on them), then those free of it (it keeps one
+        value on them).
+
+        >>> c, s, t, u = sympy.symbols("c s t u")
+        >>> Problem((2*u + 3)**2 * (u - c) * s, u, u, Parametrisation((c, s), t), ()).components()
+        ([t**2*u + t**2 + u - 1], [2*u + 3])
+        """
+        factors = _factors(self.numerator_in_t(self.eliminant))
+        moving = [f for f in factors if f.has(self.u) and f.has(self.t)]
+        return moving, [f for f in factors if f.has(self.u) and not f.has(self.t)]
 
     def numerator_in_t(self, expr: sympy.Expr) -> sympy.Expr:
         return self.line.numerator(expr)
+
+    def on(self, degrees: mpmath.mpf) -> Problem | None:
+        """The problem whose closed form is the output's at ``degrees`` (a named mode's stretch
+        there, turns apart), None where the mode is absent."""
+        for stretch in self.stretches:
+            if any(stretch.lo <= degrees + turn <= stretch.hi for turn in self.line.turns):
+                return None if stretch.closed is None else \
+                    replace(self, closed=stretch.closed, valid=stretch.valid, stretches=())
+        return self
+
+    def valid_anywhere(self) -> tuple[sympy.Expr, ...]:
+        """The discriminants of every branch the output takes: the chosen one's and its stretches'."""
+        found = list(self.valid)
+        found += [d for s in self.stretches for d in s.valid if d not in found]
+        return tuple(found)
 
     def value(self, degrees: mpmath.mpf) -> mpmath.mpf:
         """The closed form at ``degrees`` (a length input's value; mpmath), nan where it is not
         real or the branch does not assemble (a closed form may be real past that: a
         transmission angle's cosine)."""
+        here = self.on(degrees)
+        if here is not self:
+            return mpmath.nan if here is None else here.value(degrees)
         at = self.line.numbers_at(degrees)
         result = self.closed_at(at)
         if not isinstance(result, mpmath.mpf) or not self.assembles(at):
@@ -115,6 +195,37 @@ def _evaluated(expr: sympy.Expr, values: Mapping[str, object]) -> mpmath.mpf | m
         return evaluate(expr, values, MPMATH)
     except ZeroDivisionError:
         return mpmath.nan
+
+
+def _factors(poly: sympy.Expr) -> list[sympy.Expr]:
+    """The distinct irreducible factors of a polynomial with rational coefficients, primitive
+    over the integers (python-flint: sympy's factoring takes seconds on a few hundred terms)."""
+    symbols = sorted(poly.free_symbols, key=lambda v: v.name)
+    if not symbols:
+        return []
+    ctx = flint_context([v.name for v in symbols])
+    integer = to_flint_integer(to_flint(poly, ctx), flint.fmpz_mpoly_ctx.get(ctx.names(), "lex"))
+    return [from_terms(f.to_dict(), symbols) for f, _ in integer.factor()[1]]
+
+
+def along_input(poly: flint.fmpq_mpoly, t: str, *, angle: bool) -> flint.fmpq_mpoly:
+    """The derivative along the input of ``poly``, a polynomial in ``t``: a length's ``d/dt``; an
+    angle's ``d/dtheta`` of the polynomial in ``c, s`` of degree ``m`` whose numerator ``poly`` is
+    (``2 m`` its degree or one more), ``(1 + t**2) dF/dt - 2 m t F`` (twice its numerator), without
+    the factors ``1 + t**2`` (none is a real root)."""
+    derivative = poly.derivative(t)
+    if not angle:
+        return derivative
+    index = list(poly.context().names()).index(t)
+    tee = poly.context().gens()[index]
+    circle = 1 + tee**2
+    along = circle * derivative - 2 * ((poly.degrees()[index] + 1) // 2) * tee * poly
+    while not along.is_zero():
+        quotient, remainder = divmod(along, circle)
+        if not remainder.is_zero():
+            break
+        along = quotient
+    return along
 
 
 @dataclass(frozen=True)
@@ -140,13 +251,53 @@ class CriticalPoint:
 def stationary_factors(problem: Problem, backend: str = "flint", *, deadline: Deadline | None = None
                        ) -> list[sympy.Expr]:
     """Factors, in ``t`` and the parameters, of the resultant in ``u`` of ``F`` and ``dF/dtheta``
-    (the elimination keeping to ``deadline``, if any)."""
-    names = [p.name for p in problem.parameters]
+    (``Problem.half_angle``; the elimination keeping to ``deadline``, if any)."""
     try:
-        return eliminate(problem.half_angle(), [problem.u.name], [problem.t.name] + names,
-                         method="resultant", backend=backend, budget=deadline).factors
+        return resultant_factors(problem.half_angle(), problem.u, [problem.t, *problem.parameters],
+                                  backend=backend, deadline=deadline)
     except ComputationError as err:
         raise ComputationError(f"no stationary condition for {problem.u}: {err}") from None
+
+
+def resultant_factors(pair: list[sympy.Expr], variable: sympy.Symbol, keep: Sequence[sympy.Symbol], *,
+                       backend: str, deadline: Deadline | None) -> list[sympy.Expr]:
+    """Factors of the resultant in ``variable`` of ``F`` and its derivative ``pair``: none where
+    the derivative is a number (the output strictly monotone; a resultant with a number is one)."""
+    if not pair[1].free_symbols:
+        return []
+    return eliminate(pair, [variable.name], [v.name for v in keep], method="resultant", backend=backend,
+                     budget=deadline).factors
+
+
+def constant_value(problem: Problem, values: Mapping[sympy.Symbol, sympy.Expr], lo: Number, hi: Number
+                   ) -> sympy.Expr | None:
+    """The output's one value where the chosen branch lies on a component of the eliminant free
+    of the input (``Problem.components``): in the parameters where that component is linear in
+    ``u``, a number at ``values`` otherwise; None where the output moves. The branch is read at
+    ``values`` at inputs across ``[lo, hi]`` degrees; on no component at two of them, it moves."""
+    _, still = problem.components()
+    if not still:
+        return None
+    fixed = problem.at(values)
+    with mpmath.workdps(DIGITS):
+        lo, hi = _mp(lo), _mp(hi)
+        samples = [fixed.value(lo + (hi - lo) * (k + mpmath.mpf(0.382)) / 8) for k in range(8)]
+        real = [v for v in samples if v == v]
+        for factor in still:
+            coefficients = [_mp(c) for c in reversed(sympy.Poly(factor.xreplace(values), problem.u).all_coeffs())]
+            if len(real) >= 2 and all(_root_of(coefficients, v) for v in real):
+                linear = sympy.Poly(factor, problem.u)
+                if linear.degree() == 1:
+                    return sympy.factor(-linear.coeff_monomial(1) / linear.coeff_monomial(problem.u))
+                return sympy.Float(mpmath.nstr(real[0], 15), 15)
+    return None
+
+
+def _root_of(coefficients: Sequence[mpmath.mpf], value: mpmath.mpf) -> bool:
+    """Whether ``value`` is a root of the polynomial of ``coefficients`` (lowest first), to rounding."""
+    scale = sum(abs(c) * abs(value) ** k for k, c in enumerate(coefficients))
+    residual = abs(mpmath.fsum(c * value**k for k, c in enumerate(coefficients)))
+    return residual <= mpmath.mpf(10) ** (-DIGITS // 2) * scale
 
 
 def meeting_factors(problem: Problem, *, deadline: Deadline | None = None) -> list[sympy.Expr]:
@@ -155,16 +306,15 @@ def meeting_factors(problem: Problem, *, deadline: Deadline | None = None) -> li
     With them, the factors of the branch's own discriminants (``Problem.valid``): where it
     stops assembling even though the output's values do not meet (both modes give a
     transmission angle the same cosine). The elimination keeps to ``deadline``, if any."""
-    eliminant = problem.numerator_in_t(problem.eliminant)
+    moving, _ = problem.half_angle()  # a repeated factor would make the discriminant vanish
     found: list[sympy.Expr] = []
-    if sympy.degree(eliminant, problem.u) >= 2:
-        names = [p.name for p in problem.parameters]
+    if sympy.degree(moving, problem.u) >= 2:
         try:
-            found = eliminate([eliminant, sympy.diff(eliminant, problem.u)], [problem.u.name],
-                              [problem.t.name] + names, method="resultant", budget=deadline).factors
+            found = resultant_factors([moving, sympy.diff(moving, problem.u)], problem.u,
+                                       [problem.t, *problem.parameters], backend="flint", deadline=deadline)
         except ComputationError:
             pass  # the discriminant is a constant: the values never meet
-    for discriminant in problem.valid:  # one on a dyad built on another's root: its conjugates' zeros too
+    for discriminant in problem.valid_anywhere():  # one on a dyad built on another's root: its conjugates' zeros too
         for factor, _ in sympy.factor_list(problem.numerator_in_t(root_free(discriminant)))[1]:
             factor = sympy.expand(factor)
             if factor.has(problem.t) and not any(sympy.expand(factor - f) == 0 or sympy.expand(factor + f) == 0
@@ -253,7 +403,10 @@ def _ends_here(problem: Problem, degrees: mpmath.mpf) -> bool:
 def _value_at_meeting(problem: Problem, degrees: mpmath.mpf) -> mpmath.mpf:
     """The branch's value where its square root's argument is zero up to rounding (the
     imaginary part then tiny), nan where the branch is not real."""
-    result = problem.closed_at(problem.line.numbers_at(degrees))
+    here = problem.on(degrees)
+    if here is None:
+        return mpmath.nan
+    result = here.closed_at(problem.line.numbers_at(degrees))
     if isinstance(result, mpmath.mpc):
         tiny = mpmath.mpf(10) ** (-DIGITS // 3) * (1 + abs(result))
         return result.real if abs(result.imag) <= tiny else mpmath.nan

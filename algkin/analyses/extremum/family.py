@@ -49,10 +49,11 @@ from ...scene.load import SceneLike, as_scene
 from ...scene.model import Scene
 from ...scene.settings import with_values
 from ...system import symbol
+from ...system.angles import half_angle_terms
 from ...system.convert import flint_context, to_flint, to_sympy
 from . import Extremum, exact_pair, extremum, in_degrees, input_span, problem_for
 from .closed import describe, end_degrees, value_at_angle
-from .critical import DIGITS, CriticalPoint, Problem, extreme, points_in
+from .critical import DIGITS, CriticalPoint, Problem, along_input, extreme, points_in
 
 __all__ = ["extremum_family", "ExtremumFamily"]
 
@@ -96,7 +97,7 @@ class ExtremumFamily:
         line = problem.line
         direction = problem.scale is not None and problem.scale.quarter_turns is not None
         # the direction's reference depends on the design's motion; a length input takes no half angle
-        self.generic = line.is_angle and not direction
+        self.generic = line.is_angle and not direction and not problem.stretches  # a named mode: ``extremum``'s
         if not self.generic:
             return
         self._names = [v.name for v in line.variables] + [problem.u.name] + list(self.defaults)
@@ -163,11 +164,11 @@ class ExtremumFamily:
                 (self._denominator is not None and self._denominator.subs(specialised).is_zero()) or \
                 [e for _, e in eliminant.factor()[1]] != [1]:
             return None
-        c, s = self._names[:2]
-        along = -self._ring.gens()[1] * eliminant.derivative(c) + self._ring.gens()[0] * eliminant.derivative(s)
-        if along.is_zero():
-            return None  # ``extremum`` refuses it: the output does not depend on the input
         problem = self.problem
+        names = (problem.u.name, problem.t.name)
+        numerator = _moving(_half_angle(eliminant, names))
+        if numerator is None:
+            return None  # ``extremum`` says what the output keeps to
         with mpmath.workdps(DIGITS):
             numbers = tuple(mpmath.mpf(int(values[n].p)) / int(values[n].q) for n in self.defaults)
         fixed = _DesignProblem(to_sympy(eliminant, self._ring), problem.closed.xreplace(
@@ -175,8 +176,7 @@ class ExtremumFamily:
             problem.u, problem.line, (), problem.scale,
             tuple(to_sympy(d, self._ring) for d in valid), program=self._closed, numbers=numbers, exact_valid=valid,
             terms=self._terms(specialised))
-        names = (problem.u.name, problem.t.name)
-        numerator, derivative = (_half_angle(p, names) for p in (eliminant, along))
+        derivative = along_input(numerator, names[1], angle=True)
         try:
             stationary = eliminate([numerator, derivative], [names[0]], [names[1]], method="resultant",
                                    backend=self._settings["backend"])
@@ -303,28 +303,24 @@ def _meeting(numerator: flint.fmpq_mpoly, valid: Sequence[flint.fmpq_mpoly], nam
     return found
 
 
-_COSINE, _SINE, _ONE = flint.fmpq_poly([1, 0, -1]), flint.fmpq_poly([0, 2]), flint.fmpq_poly([1, 0, 1])
-
-
-def _half_angle_terms(poly: flint.fmpq_mpoly) -> dict[tuple[int, ...], flint.fmpq_poly]:
-    """``poly``'s terms in ``c, s`` (its first two variables) in ``t`` (``c = (1 - t^2)/(1 + t^2)``,
-    ``s = 2t/(1 + t^2)``) times ``(1 + t^2)**k``, ``k`` its degree in them, grouped by the
-    exponents of its other variables: ``half_angle_numerator``'s numerator, in python-flint."""
-    terms = poly.to_dict()
-    degree = max((m[0] + m[1] for m in terms), default=0)
-    grouped: dict[tuple[int, ...], flint.fmpq_poly] = {}
-    for monomial, coefficient in terms.items():
-        i, j, rest = monomial[0], monomial[1], tuple(monomial[2:])
-        grouped[rest] = grouped.get(rest, flint.fmpq_poly([])) + \
-            coefficient * _COSINE**i * _SINE**j * _ONE**(degree - i - j)
-    return grouped
+def _moving(numerator: flint.fmpq_mpoly) -> flint.fmpq_mpoly | None:
+    """``Problem.half_angle``'s ``F`` from the eliminant's numerator in ``u, t``: its distinct factors
+    in both; None where a factor holds ``u`` alone (the output may keep one value) or none moves."""
+    moving = numerator.context().from_dict({(0, 0): 1})
+    for factor, _ in numerator.factor()[1]:
+        in_u, in_t = factor.degrees()
+        if in_u and not in_t:
+            return None
+        if in_u:
+            moving *= factor
+    return moving if moving.degrees()[0] else None
 
 
 def _half_angle(poly: flint.fmpq_mpoly, names: tuple[str, str]) -> flint.fmpq_mpoly:
     """``poly`` in ``c, s, u`` (and dimensions already set) as its half-angle numerator in ``u, t``."""
     ring = flint_context(names)
     terms: dict[tuple[int, ...], int | flint.fmpz | flint.fmpq] = {}
-    for rest, in_t in _half_angle_terms(poly).items():
+    for rest, in_t in half_angle_terms(poly).items():
         for k, coefficient in enumerate(in_t.coeffs()):
             if coefficient != 0:
                 terms[(rest[0], k)] = coefficient
@@ -333,7 +329,7 @@ def _half_angle(poly: flint.fmpq_mpoly, names: tuple[str, str]) -> flint.fmpq_mp
 
 def _half_angle_cs(poly: flint.fmpq_mpoly) -> flint.fmpz_poly:
     """``poly`` in ``c, s`` alone as its half-angle numerator, denominators cleared."""
-    in_t = sum(_half_angle_terms(poly).values(), flint.fmpq_poly([]))
+    in_t = sum(half_angle_terms(poly).values(), flint.fmpq_poly([]))
     return flint.fmpz_poly([int(c * in_t.denom()) for c in in_t.coeffs()]) if in_t.degree() >= 0 else flint.fmpz_poly([])
 
 
