@@ -13,15 +13,13 @@ anything but an expanded polynomial that sympy's preparation leaves as it is, a 
 rational, any other function or power.
 """
 
-import math
-
 import flint
 import sympy
 from sympy.polys.polyutils import _sort_gens
 from sympy.simplify.simplify import signsimp
 
 from ..scene.implicit.algebra import HALF, square_reduced
-from ..system.convert import from_terms
+from ..system.convert import content, fmpq_to_rational, from_terms
 
 __all__ = ["cancelled"]
 
@@ -72,7 +70,7 @@ def _normalised(numerator: flint.fmpq_mpoly, denominator: flint.fmpq_mpoly,
     coefficient positive (sympy's ``canonical_unit``); None unless both are sums."""
     if numerator.is_constant() and denominator.is_constant():  # sympy's cancel gives the number
         one = sympy.Integer(1)
-        return _rational(numerator.leading_coefficient() / denominator.leading_coefficient()), one, one
+        return fmpq_to_rational(numerator.leading_coefficient() / denominator.leading_coefficient()), one, one
     if denominator.leading_coefficient() < 0:
         numerator, denominator = -numerator, -denominator
     (kp, p), (kq, q) = (_primitive(poly) for poly in (numerator, denominator))
@@ -81,17 +79,11 @@ def _normalised(numerator: flint.fmpq_mpoly, denominator: flint.fmpq_mpoly,
     return kp / kq, from_terms(p, gens), from_terms(q, gens)
 
 
-def _rational(value: flint.fmpq) -> sympy.Rational:
-    return sympy.Rational(int(value.p), int(value.q))
-
-
 def _primitive(poly: flint.fmpq_mpoly) -> tuple[sympy.Rational, dict[tuple[int, ...], int]]:
     """``(content, terms)``: ``poly = content * terms``, the terms coprime integers, the content positive."""
     terms = poly.to_dict()
-    denominators = math.lcm(*(int(c.q) for c in terms.values()))
-    integers = {m: int(c.p) * (denominators // int(c.q)) for m, c in terms.items()}
-    divisor = math.gcd(*integers.values())
-    return sympy.Rational(divisor, denominators), {m: c // divisor for m, c in integers.items()}
+    common = content(terms.values())
+    return fmpq_to_rational(common), {m: int((c / common).p) for m, c in terms.items()}
 
 
 class _Walk:

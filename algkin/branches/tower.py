@@ -22,7 +22,7 @@ import sympy
 from sympy.core.mul import _keep_coeff
 
 from ..scene.implicit.algebra import HALF, Circles, square_reduced
-from ..system.convert import fmpq_to_rational, from_terms
+from ..system.convert import content, fmpq_to_rational, from_terms
 from .algebra import product, total
 
 __all__ = ["Tower", "Value", "Unsupported", "roots_in", "root_free"]
@@ -195,13 +195,12 @@ class Tower:
         terms = poly.to_dict()
         if not terms:
             return sympy.Integer(1), sympy.Integer(0)
-        numbers = flint.fmpq_poly(list(terms.values()))  # an integer polynomial over a denominator, in C
-        content = flint.fmpq(numbers.numer().content(), numbers.denom())
+        common = content(terms.values())
         split = len(self.symbols)
         by_roots: dict[tuple[int, ...], dict[tuple[int, ...], flint.fmpq]] = {}
         for exponents, coefficient in terms.items():
-            by_roots.setdefault(exponents[split:], {})[exponents[:split]] = coefficient / content
-        return fmpq_to_rational(content), total(*[
+            by_roots.setdefault(exponents[split:], {})[exponents[:split]] = coefficient / common
+        return fmpq_to_rational(common), total(*[
             product(from_terms(part, self.symbols), *[r**e for r, e in zip(self.shown[split:], exponents) if e])
             for exponents, part in by_roots.items()])
 

@@ -17,7 +17,7 @@ from ..errors import ComputationError
 from ..system import symbol
 from .factor import IrreducibilityProof, irreducibility_proof, quadratic_proof
 from .protocol import BackendFactory, Term
-from ..system.convert import flint_context, to_flint, to_flint_integer, to_sympy
+from ..system.convert import content, flint_context, to_flint, to_flint_integer, to_sympy
 
 __all__ = ["FlintBackend", "FlintMpolys", "SympyBackend", "BACKENDS"]
 
@@ -258,11 +258,7 @@ class FlintBackend(FlintMpolys[flint.fmpq_mpoly]):
         """Integer coefficients with gcd 1, positive leading coefficient (lex)."""
         if poly.is_zero():
             return poly
-        # the coefficients as one univariate polynomial: FLINT keeps it as an integer polynomial over
-        # their common denominator, whose content is the numerators' gcd (3 against 5.6 us for 17
-        # terms by Python's lcm and gcd of each coefficient's numerator and denominator)
-        coefficients = flint.fmpq_poly(poly.coeffs())
-        scaled = poly * flint.fmpq(coefficients.denom(), coefficients.numer().content())
+        scaled = poly / content(poly.coeffs())  # 3 against 5.6 us for 17 terms by Python's lcm and gcd
         return -scaled if scaled.leading_coefficient() < 0 else scaled
 
     def groebner_lex(self, polys: Sequence[flint.fmpq_mpoly], order: Sequence[str]) -> list[flint.fmpq_mpoly]:

@@ -25,7 +25,7 @@ from sympy.core.mul import _mulsort
 from ..evaluate import NumberKind, evaluate
 from .core import symbol
 
-__all__ = ["flint_context", "to_flint", "rational_polynomial", "coefficients", "from_terms", "to_sympy", "sympy_text", "to_flint_integer", "fmpq_to_rational", "univariate"]
+__all__ = ["flint_context", "to_flint", "rational_polynomial", "coefficients", "from_terms", "to_sympy", "sympy_text", "to_flint_integer", "fmpq_to_rational", "univariate", "content"]
 
 
 def flint_context(names: Iterable[str], ordering: str = "lex") -> flint.fmpq_mpoly_ctx:
@@ -133,6 +133,20 @@ def to_flint_integer(poly: flint.fmpq_mpoly, ctx: flint.fmpz_mpoly_ctx) -> flint
         return ctx.from_dict({})
     lcm = math.lcm(*(int(c.q) for c in terms.values()))
     return ctx.from_dict({m: int(c.p) * (lcm // int(c.q)) for m, c in terms.items()})
+
+
+def content(coefficients: Iterable[flint.fmpq | flint.fmpz | int]) -> flint.fmpq:
+    """The positive rational whose quotients with ``coefficients`` are coprime integers (1 where all
+    are 0). FLINT keeps them, as one univariate polynomial, as integers over their common denominator,
+    whose content is the numerators' gcd: in C, a fraction of Python's lcm and gcd of each.
+
+    >>> content([flint.fmpq(-3, 4), flint.fmpq(-9, 2), 0])
+    3/4
+    """
+    numbers = flint.fmpq_poly(list(coefficients))
+    if numbers.is_zero():
+        return flint.fmpq(1)
+    return flint.fmpq(numbers.numer().content(), numbers.denom())
 
 
 def fmpq_to_rational(value: flint.fmpq | flint.fmpz | int) -> sympy.Rational:
