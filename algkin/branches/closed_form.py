@@ -23,7 +23,7 @@ from ..runtime.frozen import FrozenDict, frozen
 from ..scene import Compiled
 from ..scene.implicit.algebra import HALF, Circles, reduce_on_circles
 from ..system import symbol
-from .algebra import FormText, tidy_ratio, unsplit_root
+from .algebra import FormText, product, tidy_ratio, unsplit_root
 from .constructions import Mode, algebra_of
 from .constructions.dyad import NestedModes
 from .tower import Tower, Unsupported, roots_in
@@ -134,7 +134,8 @@ def _output_value(definition: sympy.Expr, substitution: dict[sympy.Symbol, sympy
         return sympy.sqrt(reduce_on_circles(definition.base.xreplace(substitution), inputs))
     roots = [p for p in definition.atoms(sympy.Pow) if p.exp in (sympy.Rational(1, 2), sympy.Rational(-1, 2))]
     if roots:  # an angle's cosine or sine over a length that varies: numerator / sqrt(square)
-        return _over_roots(definition, roots, substitution, inputs)
+        nested = _nested_over_roots(definition, roots, substitution, inputs, tower)
+        return nested if nested is not None else _over_roots(definition, roots, substitution, inputs)
     value = sympy.expand(reduce_on_circles(definition, inputs).xreplace(substitution), deep=False)
     if not value.is_polynomial() and value.is_rational_function():  # over symbolic lengths: one fraction
         return tidy_ratio(value)
@@ -166,6 +167,34 @@ def _nested_value(definition: sympy.Expr, substitution: dict[sympy.Symbol, sympy
         except Unsupported:
             return None
     return unsplit_root(value) if root else value
+
+
+def _nested_over_roots(definition: sympy.Expr, roots: list[sympy.Pow], substitution: dict[sympy.Symbol, sympy.Expr],
+                       inputs: Circles, tower: Tower | None) -> sympy.Expr | None:
+    """``definition``, a root-free part times roots of sums or their reciprocals (an angle's cosine
+    or sine), each part in a tower (``_nested_value``) where the points hold nested roots: sympy's
+    expansion of the whole took seconds on Hart's Q. None elsewhere."""
+    if not definition.is_Mul:
+        return None
+    powers = [f for f in definition.args if f in roots]
+    rest = sympy.Mul(*[f for f in definition.args if f not in roots])
+    parts = [_nested_value(e, substitution, inputs, tower) for e in (rest, *(p.base for p in powers))]
+    if roots_in([rest]) or any(part is None for part in parts):
+        return None
+    numerator, *radicands = parts
+    return product(numerator, *[_root_power(r, p.exp) for r, p in zip(radicands, powers)])
+
+
+def _root_power(radicand: sympy.Expr, exponent: sympy.Rational) -> sympy.Expr:
+    """``radicand**exponent`` for an exponent of 1/2 or -1/2, without sympy's sign questions
+    (``unsplit_root``): its number's root inverted by sympy, the rest's power written as it is."""
+    root = unsplit_root(radicand)
+    if exponent == HALF:
+        return root
+    number, rest = root.as_coeff_Mul()
+    inverted = [sympy.Pow(f.base, -f.exp, evaluate=False) if f.base.free_symbols else 1 / f
+                for f in sympy.Mul.make_args(rest)]
+    return product(1 / number, *inverted)
 
 
 def _over_roots(definition: sympy.Expr, roots: list[sympy.Pow], substitution: dict[sympy.Symbol, sympy.Expr],

@@ -106,3 +106,50 @@ def test_each_dyads_modes_built_once_for_the_branches_they_are_in():
 
     branches = closed_forms(compile_scene(load_scene("stephenson-iii"), ["P"]))
     assert len(branches) == 4 and len(roots_in([v for b in branches for v in b.values.values()])) == 3
+
+
+def _meet(p, q, l1, l2, side):
+    """The point at ``l1`` from ``p`` and ``l2`` from ``q``, on ``side`` of p -> q (mpmath), None where none."""
+    import mpmath
+
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    d2 = dx * dx + dy * dy
+    along = (l1 * l1 - l2 * l2 + d2) / (2 * d2)
+    h2 = l1 * l1 / d2 - along * along
+    if h2 < 0:
+        return None
+    across = mpmath.sqrt(h2) * (1 if side == "left" else -1)
+    return p[0] + along * dx - across * dy, p[1] + along * dy + across * dx
+
+
+def test_a_direction_on_points_with_nested_roots_is_the_geometrys():
+    """Hart's inversor's direction of Q from O, its closed forms made in a tower (sympy's expansion of
+    the whole took seconds, 125,000 characters a form), against mpmath from the scene's geometry:
+    A = 2 (cos, sin), B = -A, D at 2 from A and from W = (2, 0) - A on D's side, C at 2 from B and 4
+    from D on C's side, Q = (B + C)/2; cos, sin = Q / |Q|."""
+    import mpmath
+
+    from algkin import derive
+
+    mpmath.mp.dps = 40
+    derived = derive("hart-inversor", outputs=["angle(O, Q)"])
+    compared = 0
+    for branch in derived.branches:
+        sides = dict(part.split(":") for part in branch.label.split())
+        for degrees in (10, 40, 70, 290, 310, 350):
+            theta = mpmath.radians(degrees)
+            a = (2 * mpmath.cos(theta), 2 * mpmath.sin(theta))
+            b = (-a[0], -a[1])
+            d = _meet(a, (2 - a[0], -a[1]), 2, 2, sides["D"])
+            c = None if d is None else _meet(b, d, 2, 4, sides["C"])
+            if c is None:
+                continue
+            q = ((b[0] + c[0]) / 2, (b[1] + c[1]) / 2)
+            length = mpmath.hypot(*q)
+            at = {"c_angle": mpmath.cos(theta), "s_angle": mpmath.sin(theta)}
+            for name, expected in (("cos_angle_O_Q", q[0] / length), ("sin_angle_O_Q", q[1] / length)):
+                value = sympy.sympify(branch.values[name]).evalf(40, subs={sympy.Symbol(k, real=True): v
+                                                                            for k, v in at.items()})
+                assert abs(complex(value) - float(expected)) < 1e-12, (branch.label, degrees, name)
+                compared += 1
+    assert compared >= 24  # each branch where it assembles
