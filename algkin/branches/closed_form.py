@@ -192,7 +192,7 @@ def _root_power(radicand: sympy.Expr, exponent: sympy.Rational) -> sympy.Expr:
     if exponent == HALF:
         return root
     number, rest = root.as_coeff_Mul()
-    inverted = [sympy.Pow(f.base, -f.exp, evaluate=False) if f.base.free_symbols else 1 / f
+    inverted = [sympy.Pow(f.base, -f.exp, evaluate=False) if f.is_Pow and f.base.free_symbols else 1 / f
                 for f in sympy.Mul.make_args(rest)]
     return product(1 / number, *inverted)
 
