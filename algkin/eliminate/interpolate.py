@@ -78,18 +78,32 @@ _T = TypeVar("_T")
 
 
 def interpolation(backend: Backend[P], polys: list[P], request: EliminationRequest) -> MethodOutcome[P]:
-    """The eliminant of ``polys`` with ``request.parameters`` symbolic, by interpolating
-    specialisations; ``linear`` itself when no parameter is held or the backend is not flint."""
+    """The eliminant of ``polys`` (unprepared: see below) with ``request.parameters`` symbolic,
+    by interpolating specialisations; ``linear`` itself when no parameter is held or the
+    backend is not flint.
+
+    The equations come unprepared, and each specialisation is prepared on its own: a
+    variable that a family's equation defines linearly with a numeric slope only because
+    another dimension is fixed (on the Stephenson III with ``u`` symbolic and ``v = 1/4``,
+    ``F_x`` from ``P_y``'s equation) would, substituted in the family, take from every image
+    the better substitutions its specialisation allows (``B_x`` and ``B_y`` from both of
+    ``P``'s): an eliminant of degree 152 in ``P_x``, ``P_y`` instead of 72 by 48."""
     held = set().union(*(backend.variables(p) for p in polys)) if polys else set()
     parameters = [n for n in backend.names if n in request.parameters and n in held]
     if not parameters or backend.name != "flint":
-        return linear_elimination(backend, polys, request)
+        return _linear(backend, polys, request)
     family = _Family(cast(FlintBackend, backend), cast(list[flint.fmpq_mpoly], polys), request, parameters)
     try:
         return MethodOutcome([cast(P, family.solve())], log=family.log)
     except NotPolynomial:  # the leading coefficient holds a parameter: no monic normalisation
         return MethodOutcome(polys, log=[("interpolation-declined", "leading coefficient")]).then(
-            linear_elimination(backend, polys, request))
+            _linear(backend, polys, request))
+
+
+def _linear(backend: Backend[P], polys: list[P], request: EliminationRequest) -> MethodOutcome[P]:
+    """The ``linear`` method on ``polys`` prepared."""
+    prepared = prepare(backend, polys, request.eliminate)
+    return prepared.then(linear_elimination(backend, prepared.left, request))
 
 
 class _Family:
