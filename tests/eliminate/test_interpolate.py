@@ -45,6 +45,21 @@ def test_a_daemonic_process_interpolates_without_a_child():
     assert ("checked-at", 2) in log
 
 
+def test_factors_sharing_the_motions_degrees_are_told_apart_at_the_witness():
+    # x = +-1 and y = (r + 1) x: the eliminant (y - r - 1)(y + r + 1), two factors of degree 1 in y
+    # at every r; the witness (x, y) = (1, 3/2) at r = 1/2 lies on the first only
+    import flint
+
+    from algkin.eliminate.select import Witness
+
+    exact = {"x": flint.fmpq(1), "y": flint.fmpq(3, 2), "r": flint.fmpq(1, 2)}
+    witness = Witness({n: flint.arb(v) for n, v in exact.items()}, exact)
+    result = eliminate([x**2 - 1, y - (r + 1) * x], ["x"], ["y", "r"], method="interpolate", parameters=["r"],
+                       witnesses=[[witness]])
+    assert _same_up_to_constant(result.polynomial, y - r - 1)
+    assert ("told-apart-at-the-witness", 1) in result.log
+
+
 def test_no_parameter_is_the_linear_method():
     circles = [x**2 + y**2 - 1, (x - 1)**2 + y**2 - 1]
     result = eliminate(circles, ["x"], ["y"], method="interpolate")
