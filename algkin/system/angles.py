@@ -22,21 +22,54 @@ import flint
 import mpmath
 import sympy
 
-from .convert import flint_context, to_flint, univariate
+from .convert import flint_context, from_terms, to_flint, univariate
 from .roots import real_roots
 
-__all__ = ["half_angle_numerator", "half_angle_poly", "tangent_to_degrees", "vanishes_at_half_turn", "Parametrisation"]
+__all__ = ["half_angle_numerator", "half_angle_poly", "off_the_circle", "tangent_to_degrees", "vanishes_at_half_turn", "Parametrisation"]
 
 
 def half_angle_numerator(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol, t: sympy.Symbol) -> sympy.Expr:
-    """The numerator, in ``t``, of ``expr`` with ``c``, ``s`` in the half-angle form (through
-    ``half_angle_poly`` where ``expr`` holds numbers alone)."""
-    expr = sympy.expand(expr)
-    if expr.free_symbols <= {c, s}:
-        poly = half_angle_poly(expr, c, s)
-        return sympy.Add(*[sympy.Integer(int(a)) * t**k for k, a in enumerate(poly.coeffs())])
-    half = {c: (1 - t**2) / (1 + t**2), s: 2 * t / (1 + t**2)}
-    return sympy.expand(sympy.numer(sympy.together(expr.xreplace(half))))
+    """The numerator, in ``t``, of ``expr`` with ``c``, ``s`` in the half-angle form: ``expr``
+    times ``(1 + t**2)**k`` (``k`` its degree in ``c, s``) and its denominators' lcm, in
+    python-flint (a sympy substitution took minutes on an eliminant of thousands of terms in
+    a symbolic dimension: ``extremum --param``)."""
+    gens = [c, s, *sorted(sympy.sympify(expr).free_symbols - {c, s, t}, key=str), t]
+    ring = flint_context(map(str, gens))
+    poly = to_flint(expr, ring)
+    terms = poly.to_dict()
+    degree = max((m[0] + m[1] for m in terms), default=0)
+    cosines, sines, ones = ([base**k for k in range(degree + 1)] for base in (_COSINE, _SINE, _ONE))
+    grouped: dict[tuple[int, ...], flint.fmpq_poly] = {}  # the other variables' exponents -> a polynomial in t
+    for monomial, coefficient in terms.items():
+        i, j, rest = monomial[0], monomial[1], tuple(monomial[2:])
+        grouped[rest] = grouped.get(rest, flint.fmpq_poly([])) + coefficient * cosines[i] * sines[j] * ones[degree - i - j]
+    numerator: dict[tuple[int, ...], flint.fmpq] = {}
+    for rest, in_t in grouped.items():
+        for k, coefficient in enumerate(in_t.coeffs()):
+            if coefficient != 0:
+                numerator[(0, 0) + rest[:-1] + (rest[-1] + k,)] = flint.fmpq(coefficient)
+    if not numerator:
+        return sympy.Integer(0)
+    lcm = math.lcm(*(int(v.q) for v in numerator.values()))
+    return from_terms({m: v * lcm for m, v in numerator.items()}, gens)
+
+
+_COSINE, _SINE, _ONE = flint.fmpq_poly([1, 0, -1]), flint.fmpq_poly([0, 2]), flint.fmpq_poly([1, 0, 1])
+
+
+def off_the_circle(numerator: sympy.Expr, t: sympy.Symbol) -> sympy.Expr:
+    """``numerator`` divided by ``1 + t**2`` as often as it divides exactly (in python-flint)."""
+    gens = sorted(sympy.sympify(numerator).free_symbols | {t}, key=str)
+    ring = flint_context(map(str, gens))
+    poly = to_flint(numerator, ring)
+    circle = 1 + ring.gens()[gens.index(t)] ** 2
+    divided = False
+    while not poly.is_zero():
+        quotient, remainder = divmod(poly, circle)
+        if not remainder.is_zero():
+            break
+        poly, divided = quotient, True
+    return from_terms(poly.to_dict(), gens) if divided else numerator
 
 
 def half_angle_poly(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol) -> flint.fmpz_poly:
@@ -100,10 +133,16 @@ class Parametrisation:
 
     def derivative(self, expr: sympy.Expr) -> sympy.Expr:
         """``d expr / d input``: ``-s*d/dc + c*d/ds`` along an angle, ``d/dt`` along a length."""
+        gens = sorted(sympy.sympify(expr).free_symbols | set(self.variables), key=str)
+        ring = flint_context(map(str, gens))  # in python-flint: sympy takes seconds on thousands of terms
+        poly = to_flint(expr, ring)
         if self.is_angle:
             c, s = self.variables
-            return sympy.expand(-s * sympy.diff(expr, c) + c * sympy.diff(expr, s))
-        return sympy.expand(sympy.diff(expr, self.variables[0]))
+            along = -ring.gens()[gens.index(s)] * poly.derivative(str(c)) \
+                + ring.gens()[gens.index(c)] * poly.derivative(str(s))
+        else:
+            along = poly.derivative(str(self.variables[0]))
+        return from_terms(along.to_dict(), gens)
 
     def shown(self, root: flint.arb) -> flint.arb:
         """A root in ``t`` as the input users read: degrees for an angle, the length itself."""

@@ -23,7 +23,7 @@ from ...branches.tower import root_free
 from ...eliminate import eliminate
 from ...errors import ComputationError, UsageError
 from ...evaluate import MPMATH, evaluate
-from ...system.angles import Parametrisation
+from ...system.angles import Parametrisation, off_the_circle
 from ...system.convert import univariate
 from ...system.roots import Polynomial, real_roots
 
@@ -77,14 +77,7 @@ class Problem:
         return [self._off_the_circle(self.numerator_in_t(e)) for e in (self.eliminant, along)]
 
     def _off_the_circle(self, numerator: sympy.Expr) -> sympy.Expr:
-        if not self.line.is_angle:
-            return numerator
-        circle = 1 + self.t**2
-        while True:
-            quotient, remainder = sympy.div(numerator, circle, self.t)
-            if remainder != 0:
-                return numerator
-            numerator = sympy.expand(quotient)
+        return off_the_circle(numerator, self.t) if self.line.is_angle else numerator
 
     def numerator_in_t(self, expr: sympy.Expr) -> sympy.Expr:
         return self.line.numerator(expr)
