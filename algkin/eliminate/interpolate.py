@@ -142,7 +142,7 @@ class _Family:
         self.random = random.Random(0x5EED)
         self.log: list[LogEntry] = []
         self.signature, drop, self.anchor = self._learn()
-        self.residues = ModularBackend(backend.names, PRIMES[0])  # reads the degrees of an image's factors
+        self.modular = ModularBackend(backend.names, PRIMES[0])  # reads the degrees of the factors of an image
         self.drop = self._trusted(drop)
         self.cluster = self._cluster()
 
@@ -269,9 +269,9 @@ class _Family:
             full = full_at(point)
             if full is None:
                 continue
-            everyone = self._candidates(self.residues, full)
-            dropping = self._candidates(self.residues, dropped_at(point) or [])
-            kept = _submultiset(self.signature, sorted(self._degrees_in(self.residues, f) for f in dropping))
+            everyone = self._candidates(self.modular, full)
+            dropping = self._candidates(self.modular, dropped_at(point) or [])
+            kept = _submultiset(self.signature, sorted(self._degrees_in(self.modular, f) for f in dropping))
             return drop if kept and all(any(f == g for g in everyone) for f in dropping) else frozenset()
         return frozenset()
 
@@ -286,7 +286,7 @@ class _Family:
             factors = factors_at(self._random_residues(rng))
             if factors is None:
                 continue
-            found = sorted(self._degrees_in(self.residues, f) for f in self._candidates(self.residues, factors))
+            found = sorted(self._degrees_in(self.modular, f) for f in self._candidates(self.modular, factors))
             if not _submultiset(self.signature, found):
                 continue
             if found != self.signature:
