@@ -200,6 +200,7 @@ def _stephenson_iii_family_point(theta, u, modes):
     return None if f is None else frame(c, f, u, mpmath.mpf(1) / 4)
 
 
+@pytest.mark.slow
 def test_stephenson_iii_family_in_u_alone_holds_the_mechanisms_points():
     # v fixed at 1/4 gives F_x a numeric slope in P_y's equation: substituted in the family it
     # left every image an eliminant of degree 152 whose four factors of the curve's degrees the
