@@ -35,7 +35,7 @@ from .linear import linear_elimination
 from .methods import groebner_basis, prepare, resultant_chain
 from .factor import IrreducibilityProof, factor_with
 from .protocol import Backend, P
-from .request import EliminationRequest, LogEntry, Method
+from .request import EliminationRequest, LogEntry, Method, MethodOutcome
 from .select import NOT_THE_MOTION, Witness, WitnessGroups, select_factors, unreal_factors, vanishes_at
 
 __all__ = ["eliminate", "eliminate_each", "Elimination", "Witness", "Budget", "Deadline", "METHODS", "DEFAULT_METHOD", "BACKENDS",
@@ -45,6 +45,8 @@ __all__ = ["eliminate", "eliminate_each", "Elimination", "Witness", "Budget", "D
 METHODS: dict[str, Method] = {"resultant": resultant_chain, "groebner": groebner_basis, "linear": linear_elimination,
                              "interpolate": interpolation}
 DEFAULT_METHOD = "linear"  # measured fastest on every catalog problem: ``algkin bench``
+PREPARING = frozenset({"interpolate"})
+"""Methods given the equations unprepared: they prepare each specialisation of them themselves."""
 OUTSIDE_THE_IDEAL = frozenset({
     "stripped",  # an equation divided by a multiplier's factor: only the ideal's saturation holds it
     "interpolated",  # images cut to the factors a signature read at one witness chose
@@ -250,7 +252,7 @@ def _converted(engine: Backend[P], equations: Sequence[sympy.Expr | flint.fmpq_m
 
 def _eliminate(engine: Backend[P], method: str, run: Method, polys: list[P], keep: tuple[str, ...],
                request: EliminationRequest, *, start: float) -> Elimination[P]:
-    prepared = prepare(engine, polys, request.eliminate)
+    prepared = MethodOutcome(polys) if method in PREPARING else prepare(engine, polys, request.eliminate)
     outcome = prepared.then(run(engine, _consistent(engine, prepared.left), request))
     left = _consistent(engine, outcome.left)
     if not left:

@@ -70,7 +70,8 @@ def line_degree(image: Image, parameters: Sequence[str], prime: int, rng: random
         if value is None or t in ts:
             misses += 1
             if misses > RETRIES:
-                raise ComputationError(f"interpolating in {', '.join(parameters)}: every image unlucky")
+                raise ComputationError(f"interpolating in {', '.join(parameters)}: every image unlucky ({RETRIES + 1} "
+                                       "random values in a row gave no eliminant of the expected factors' degrees)")
             continue
         misses = 0
         if table and value == _newton_value(table, ts, t, prime):

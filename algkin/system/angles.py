@@ -107,11 +107,11 @@ class Parametrisation:
 
     >>> c, s, t = sympy.symbols("c s t")
     >>> angle = Parametrisation((c, s), t)
-    >>> angle.numerator(c - s), angle.derivative(c * s)
-    (-t**2 - 2*t + 1, c**2 - s**2)
+    >>> angle.numerator(c - s)
+    -t**2 - 2*t + 1
     >>> length = Parametrisation((t,), t)
-    >>> length.numerator(t**2 - 2), length.derivative(t**2 - 2), length.turns
-    (t**2 - 2, 2*t, (0,))
+    >>> length.numerator(t**2 - 2), length.turns
+    (t**2 - 2, (0,))
     """
 
     def __init__(self, variables: tuple[sympy.Symbol, ...], t: sympy.Symbol) -> None:
@@ -125,13 +125,6 @@ class Parametrisation:
             c, s = self.variables
             return half_angle_numerator(expr, c, s, self.t)
         return sympy.expand(expr.xreplace({self.variables[0]: self.t}))
-
-    def derivative(self, expr: sympy.Expr) -> sympy.Expr:
-        """``d expr / d input``: ``-s*d/dc + c*d/ds`` along an angle, ``d/dt`` along a length."""
-        if self.is_angle:
-            c, s = self.variables
-            return sympy.expand(-s * sympy.diff(expr, c) + c * sympy.diff(expr, s))
-        return sympy.expand(sympy.diff(expr, self.variables[0]))
 
     def shown(self, root: flint.arb) -> flint.arb:
         """A root in ``t`` as the input users read: degrees for an angle, the length itself."""

@@ -45,6 +45,21 @@ def test_a_daemonic_process_interpolates_without_a_child():
     assert ("checked-at", 2) in log
 
 
+def test_factors_sharing_the_motions_degrees_are_told_apart_at_the_witness():
+    # x = +-1 and y = (r + 1) x: the eliminant (y - r - 1)(y + r + 1), two factors of degree 1 in y
+    # at every r; the witness (x, y) = (1, 3/2) at r = 1/2 lies on the first only
+    import flint
+
+    from algkin.eliminate.select import Witness
+
+    exact = {"x": flint.fmpq(1), "y": flint.fmpq(3, 2), "r": flint.fmpq(1, 2)}
+    witness = Witness({n: flint.arb(v) for n, v in exact.items()}, exact)
+    result = eliminate([x**2 - 1, y - (r + 1) * x], ["x"], ["y", "r"], method="interpolate", parameters=["r"],
+                       witnesses=[[witness]])
+    assert _same_up_to_constant(result.polynomial, y - r - 1)
+    assert ("told-apart-at-the-witness", 1) in result.log
+
+
 def test_no_parameter_is_the_linear_method():
     circles = [x**2 + y**2 - 1, (x - 1)**2 + y**2 - 1]
     result = eliminate(circles, ["x"], ["y"], method="interpolate")
@@ -154,3 +169,63 @@ def test_curve_interpolates_a_symbolic_tracing_point_beyond_a_four_bar():
     assert family_method(_curve_task("stephenson-iii-family", []), "linear") == "linear"  # nothing symbolic
     assert family_method(_curve_task("fourbar", ["p", "q"]), "linear") == "linear"  # four unknowns: linear is fast
     assert family_method(_curve_task("fourbar", ["a", "d", "l", "m", "p", "q"]), "linear") == "linear"
+
+
+def _stephenson_iii_family_point(theta, u, modes):
+    """P of the catalog's stephenson-iii-family at crank angle ``theta`` (radians), v = 1/4, in
+    the assembly ``modes`` (the two dyads' signs), from the scene's geometry in mpmath; None
+    where a dyad does not assemble."""
+    import mpmath
+
+    def dyad(p, q, near, far, sign):
+        dx, dy = q[0] - p[0], q[1] - p[1]
+        d = mpmath.sqrt(dx**2 + dy**2)
+        along = (near**2 - far**2 + d**2) / (2 * d)
+        if near**2 < along**2:
+            return None
+        h = sign * mpmath.sqrt(near**2 - along**2)
+        return p[0] + (along * dx - h * dy) / d, p[1] + (along * dy + h * dx) / d
+
+    def frame(p, q, a, b):  # p + a (q - p) + b rot90(q - p)
+        dx, dy = q[0] - p[0], q[1] - p[1]
+        return p[0] + a * dx - b * dy, p[1] + a * dy + b * dx
+
+    half = mpmath.mpf(1) / 2
+    a = (mpmath.cos(theta), mpmath.sin(theta))
+    b = dyad(a, (4, 0), 3, mpmath.mpf(7) / 2, modes[0])
+    if b is None:
+        return None
+    c = frame(a, b, half, half)
+    f = dyad(c, (-1, 5), 3, 2, modes[1])
+    return None if f is None else frame(c, f, u, mpmath.mpf(1) / 4)
+
+
+@pytest.mark.slow
+def test_stephenson_iii_family_in_u_alone_holds_the_mechanisms_points():
+    # v fixed at 1/4 gives F_x a numeric slope in P_y's equation: substituted in the family it
+    # left every image an eliminant of degree 152 whose four factors of the curve's degrees the
+    # signature could not tell apart ("every image unlucky")
+    import mpmath
+
+    from algkin.derivation.pipeline import curve
+
+    family = curve("stephenson-iii-family", "P", params=["u"], samples=8)
+    assert family.elimination.method == "interpolate" and family.verification.passed
+    poly = family.elimination.polynomial
+    px, py, u = (sympy.Symbol(n, real=True) for n in ("P_x", "P_y", "u"))
+    terms = [sympy.lambdify((px, py, u), t, "mpmath") for t in sympy.Add.make_args(sympy.expand(poly))]
+    mpmath.mp.dps = 50
+    try:
+        checked = 0
+        for u_value in (mpmath.mpf(-3) / 7, mpmath.mpf(5) / 3, mpmath.e):
+            for degrees in range(0, 360, 40):
+                for modes in ((1, 1), (1, -1), (-1, 1), (-1, -1)):
+                    point = _stephenson_iii_family_point(mpmath.radians(degrees), u_value, modes)
+                    if point is None:
+                        continue
+                    values = [t(*point, u_value) for t in terms]
+                    assert abs(mpmath.fsum(values)) < mpmath.mpf(10) ** -40 * mpmath.fsum(map(abs, values))
+                    checked += 1
+        assert checked > 50
+    finally:
+        mpmath.mp.dps = 15
