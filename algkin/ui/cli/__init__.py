@@ -40,8 +40,10 @@ __all__ = ["main", "usage", "build_parser", "terminal_safe"]
 
 _ERROR_KINDS = ((UsageError, "usage"), (SceneError, "scene"), (BudgetExceeded, "budget"))
 # Most of a computing command's imports, loaded before it runs (``_with_algebra``); ``list`` needs none.
-# numpy loads numpy.random on first use: there, it was 9 ms of the first verification's stage.
-ALGEBRA = ("sympy", "numpy", "numpy.random", "flint")
+# numpy loads numpy.random on first use: there, it was 9 ms of the first verification's stage; sympy
+# loads the three modules after it on its first sum (``Add.flatten``), 25 ms of the first stage.
+ALGEBRA = ("sympy", "numpy", "numpy.random", "flint", "sympy.calculus.accumulationbounds",
+           "sympy.matrices.expressions", "sympy.tensor.tensor")
 NO_ALGEBRA = frozenset({"list"})
 
 

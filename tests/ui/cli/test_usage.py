@@ -133,6 +133,21 @@ def test_the_random_samples_module_is_loaded_with_the_algebra_not_in_the_verific
     assert done.stdout.splitlines()[-1] == "True", done.stderr[-300:]
 
 
+def test_sympys_first_sum_loads_nothing_once_the_algebra_is_loaded(tmp_path):
+    # sympy's Add.flatten imports three modules on its first call: 25 ms of the first stage, timed as its work
+    code = ("import sys; from algkin.ui.cli import _with_algebra\n"
+            "def work():\n"
+            "    import sympy\n"
+            "    before = set(sys.modules)\n"
+            "    x, y = sympy.symbols('x y')\n"
+            "    sympy.Add(x * y, x, 3)\n"
+            "    return sorted(set(sys.modules) - before)\n"
+            "print(_with_algebra(work))")
+    done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True, timeout=120,
+                          env=dict(os.environ, PYTHONPATH=str(ROOT)))
+    assert done.stdout.splitlines()[-1] == "[]", done.stdout[-300:] + done.stderr[-300:]
+
+
 def test_list_json_has_both_catalog_scenes(runs):
     document = good_json(runs, "list")
     names = {scene["name"] for scene in document["scenes"]}
