@@ -30,6 +30,7 @@ def test_the_first_axis_varies_slowest():
     ("a=1:2:1", "COUNT 1 needs LO = HI"),
     ("a=1:1:3", "LO = HI is one value, not 3: give COUNT 1"),  # three identical designs
     ("a=1e200:1e201:2", "outside 1e-100 to 1e100"),
+    ("a=1e-1000000000:1:2", "decimal exponent out of range"),  # Fraction would compute 10**1000000000 first
 ])
 def test_bad_grids_are_refused(spec, says):
     with pytest.raises(UsageError, match=says) as raised:
