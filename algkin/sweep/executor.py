@@ -35,6 +35,8 @@ __all__ = ["EXECUTORS", "run_chunks", "on_worker", "dask_modules", "dask_setup"]
 EXECUTORS = ("dask", "serial")
 CONNECT_SECONDS = 10  # how long to wait for the scheduler at --scheduler ADDRESS
 FAMILIES = 2  # jobs' families a process keeps at once
+# Ctrl-C and a terminal's hang-up reach the whole process group, the workers too.
+GROUP_SIGNALS = frozenset({signal.SIGINT, signal.SIGHUP})
 # Above every level: the scheduler logs at CRITICAL (with a traceback) each message it cannot send to
 # workers a signal to the group has just ended, lines of its own beside the command's one.
 _SILENT = logging.CRITICAL + 1
@@ -134,10 +136,11 @@ def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, A
             _start_resource_tracker()
             # no dashboard, and the scheduler's HTTP server (health checks) on a free local port:
             # its default, 8787, is taken by any other cluster on the machine
-            cluster = stack.enter_context(distributed.LocalCluster(
-                n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1", dashboard_address=None,
-                scheduler_kwargs={"dashboard": False, "dashboard_address": "127.0.0.1:0"},
-                silence_logs=_SILENT))
+            with _held(GROUP_SIGNALS):
+                cluster = stack.enter_context(distributed.LocalCluster(
+                    n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1", dashboard_address=None,
+                    scheduler_kwargs={"dashboard": False, "dashboard_address": "127.0.0.1:0"},
+                    silence_logs=_SILENT))
             client = stack.enter_context(distributed.Client(cluster))
         else:
             try:
@@ -145,6 +148,22 @@ def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, A
             except (OSError, TimeoutError, ValueError) as err:
                 raise UsageError("scheduler", scheduler, f"cannot connect: {' '.join(str(err).split())}") from None
         yield client, distributed.as_completed
+
+
+@contextlib.contextmanager
+def _held(signals: frozenset[signal.Signals]) -> Iterator[None]:
+    """``signals`` blocked in this thread while the block runs, then delivered here if they came.
+
+    The threads started meanwhile (the cluster's event loop, which spawns its worker processes)
+    keep them blocked, and so do those processes from their first instruction: a Ctrl-C to the
+    process group while a worker still imports distributed (a second or more, before ``dask_setup``
+    ignores it) waits for the worker to ignore it instead of printing its KeyboardInterrupt traceback.
+    This thread answers it once the cluster is up, by closing it."""
+    found = signal.pthread_sigmask(signal.SIG_BLOCK, signals)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, found)
 
 
 def _start_resource_tracker() -> None:
@@ -170,7 +189,7 @@ def dask_setup(worker: Any) -> None:
     stops (one line) and closes the cluster, which ends its workers (by SIGTERM), where each
     would otherwise print a ``KeyboardInterrupt`` traceback, or die leaving its semaphores to
     multiprocessing's resource tracker, which prints one traceback each."""
-    for signum in (signal.SIGINT, signal.SIGHUP):
+    for signum in GROUP_SIGNALS:
         signal.signal(signum, signal.SIG_IGN)
 
 
