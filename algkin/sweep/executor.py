@@ -145,7 +145,7 @@ def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, A
         else:
             try:
                 client = stack.enter_context(distributed.Client(scheduler, timeout=CONNECT_SECONDS))
-            except (OSError, TimeoutError, ValueError) as err:
+            except (OSError, TimeoutError, ValueError, TypeError) as err:  # TypeError: tls:// without its context
                 raise UsageError("scheduler", scheduler, f"cannot connect: {' '.join(str(err).split())}") from None
         yield client, distributed.as_completed
 

@@ -43,6 +43,14 @@ def test_a_scheduler_that_is_not_there_is_a_usage_error(tmp_path, monkeypatch):
     assert not any(tmp_path.iterdir())  # nothing written
 
 
+@pytest.mark.parametrize("address", ["tls://127.0.0.1:9", "ucx://127.0.0.1:9"])
+def test_a_scheduler_whose_protocol_cannot_be_used_is_a_usage_error(tmp_path, address):
+    # TLS without its context, UCX without its package: Dask raises TypeError, which was a traceback
+    with pytest.raises(UsageError, match=f"^scheduler='{address}': cannot connect: "):
+        sweep("fourbar", tmp_path, grid=["a=1:2:2"], analyses=["grashof"], scheduler=address)
+    assert not any(tmp_path.iterdir())
+
+
 def test_ctrl_c_stops_the_cluster_and_leaves_no_process(tmp_path):
     argv = ["sweep", "fourbar", "--grid", "a=1/2:3/2:30", "--grid", "m=3:4:2", "--analyses", "curve,transmission",
             "--out", tmp_path, "--workers", "2", "--chunk", "1"]
