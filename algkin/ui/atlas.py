@@ -118,6 +118,8 @@ def atlas_data(folder: str | pathlib.Path, samples: int = 181) -> dict[str, Any]
         raise UsageError("DIR", str(folder), "holds no sweep (manifest.json)")
     rows = read_dataset(folder).to_pylist()
     scene = load_scene_text(manifest["scene"]["toml"], f"{folder}/manifest.json")
+    if manifest["point"] not in scene.points:
+        raise UsageError("DIR", str(folder), f"its manifest's point {manifest['point']!r} is not a point of its scene")
     swept = [c[len("param_"):] for c in (rows[0] if rows else {}) if c.startswith("param_") and not c.endswith("_float")]
     tracer = _Tracer(scene, manifest["point"], swept, samples)
     designs = [_entry(row, swept, tracer) for row in rows]

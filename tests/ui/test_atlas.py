@@ -152,3 +152,33 @@ def test_a_design_whose_values_the_scene_refuses_is_not_drawn(tmp_path):
     refused, drawn = atlas_data(tmp_path / "sweep", samples=19)["designs"]
     assert refused["paths"] == [] and "length must be positive" in refused["reason"]
     assert drawn["paths"]
+
+
+@pytest.mark.parametrize("damage, says", [
+    (lambda m: m.update(point="ZZ"), "point 'ZZ' is not a point of its scene"),
+    (lambda m: m.pop("point"), "is not a sweep's"),
+    (lambda m: m["scene"].update(toml=7), "is not a sweep's"),
+])
+def test_a_manifest_edited_or_damaged_is_refused_naming_it(tmp_path, damage, says):
+    """Each was a traceback (KeyError, TypeError) while the page was made."""
+    import json
+
+    from algkin.errors import UsageError
+    from algkin.sweep import sweep
+
+    sweep("fourbar", tmp_path / "sweep", grid=["a=1:2:2"], analyses=["grashof"], executor="serial")
+    manifest = json.loads((tmp_path / "sweep" / "manifest.json").read_text())
+    damage(manifest)
+    (tmp_path / "sweep" / "manifest.json").write_text(json.dumps(manifest))
+    with pytest.raises(UsageError, match=says):
+        atlas_data(tmp_path / "sweep")
+
+
+def test_a_dataset_that_is_not_parquet_is_refused_naming_it(tmp_path):
+    from algkin.errors import UsageError
+    from algkin.sweep import sweep
+
+    sweep("fourbar", tmp_path / "sweep", grid=["a=1:2:2"], analyses=["grashof"], executor="serial")
+    (tmp_path / "sweep" / "designs.parquet").write_text("not parquet")
+    with pytest.raises(UsageError, match="designs.parquet'?: cannot be read"):
+        atlas_data(tmp_path / "sweep")
