@@ -35,6 +35,7 @@ __all__ = ["EXECUTORS", "run_chunks", "on_worker", "dask_modules", "dask_setup"]
 EXECUTORS = ("dask", "serial")
 CONNECT_SECONDS = 10  # how long to wait for the scheduler at --scheduler ADDRESS
 FAMILIES = 2  # jobs' families a process keeps at once
+_TRACKER_WARNING = "ignore:resource_tracker:UserWarning"  # the tracker's warnings start with its name
 # Ctrl-C and a terminal's hang-up reach the whole process group, the workers too.
 GROUP_SIGNALS = frozenset({signal.SIGINT, signal.SIGHUP})
 # Above every level: the scheduler logs at CRITICAL (with a traceback) each message it cannot send to
@@ -173,14 +174,28 @@ def _start_resource_tracker() -> None:
     ``KeyError`` traceback for each semaphore it never saw."""
     from multiprocessing import resource_tracker
 
-    if threading.current_thread() is not threading.main_thread():
-        resource_tracker.ensure_running()
-        return
-    found = signal.signal(signal.SIGHUP, signal.SIG_IGN)  # for the few milliseconds of a fork and exec
+    with _tracker_quiet():
+        if threading.current_thread() is not threading.main_thread():
+            resource_tracker.ensure_running()
+            return
+        found = signal.signal(signal.SIGHUP, signal.SIG_IGN)  # for the few milliseconds of a fork and exec
+        try:
+            resource_tracker.ensure_running()
+        finally:
+            signal.signal(signal.SIGHUP, found)
+
+
+@contextlib.contextmanager
+def _tracker_quiet() -> Iterator[None]:
+    """The resource tracker started meanwhile has its ``resource_tracker: There appear to be N leaked
+    semaphore objects to clean up`` warning silenced (passed on as a ``-W`` option): a SIGTERM to the
+    group ends the workers before they let go of their semaphores, and the tracker, which removes them
+    as it should, said so in two lines of its own after the command's one."""
+    sys.warnoptions.append(_TRACKER_WARNING)
     try:
-        resource_tracker.ensure_running()
+        yield
     finally:
-        signal.signal(signal.SIGHUP, found)
+        sys.warnoptions.remove(_TRACKER_WARNING)
 
 
 def dask_setup(worker: Any) -> None:
