@@ -37,6 +37,7 @@ from ..evaluate import ARB, evaluate
 from ..runtime import suggest
 from ..runtime.budget import Deadline
 from ..runtime.frozen import FrozenDict, frozen
+from ..runtime.validation import NumberTooLarge, rational
 from ..scene import Scene, compile_scene
 from ..scene.groups import compile_groups
 from ..scene.load import as_scene
@@ -165,7 +166,9 @@ def _step(value: Any, t0: Fraction, t1: Fraction) -> Fraction:
     """``max_step`` as an exact positive number, no shorter than the way from ``t0`` to ``t1`` over ``MAX_STEPS``."""
     span = abs(t1 - t0)
     try:
-        step = Fraction(str(value))
+        step = rational(str(value))
+    except NumberTooLarge as err:
+        raise UsageError("max_step", value, str(err)) from None
     except (ValueError, ZeroDivisionError):
         step = Fraction(0)
     if step <= 0:

@@ -42,6 +42,7 @@ from ..eliminate.group import GroupSolution, Mode, modes_in_sequence, solve_grou
 from ..errors import ComputationError, SceneError, UsageError
 from ..evaluate import ARB, evaluate
 from ..runtime.frozen import FrozenDict, frozen
+from ..runtime.validation import NumberTooLarge, rational
 from ..scene import Compiled, Input, Scene, compile_scene
 from ..scene.groups import Groups, compile_groups
 from ..scene.constructions import Dyad, Slider, Unknown
@@ -150,7 +151,9 @@ def input_value(scene: Scene, name: str, value: Any) -> Fraction:
     """An input's value, exactly, within its range (degrees for an angle)."""
     spec = scene.inputs[name]
     try:
-        exact = Fraction(str(value)) if str(value).isascii() and not isinstance(value, bool) else None
+        exact = rational(str(value))
+    except NumberTooLarge as err:
+        raise UsageError("at", f"{name}={value}", str(err)) from None
     except (ValueError, ZeroDivisionError):
         exact = None
     lo, hi = spec.span

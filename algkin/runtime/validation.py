@@ -38,13 +38,15 @@ from ..errors import UsageError
 if TYPE_CHECKING:
     from .budget import Budget, Deadline
 
-__all__ = ["names", "count", "seed", "budget", "real", "whole", "rational", "MAX_VERIFY_SAMPLES",
-           "MAX_ACCURACY_SAMPLES"]
+__all__ = ["names", "count", "seed", "budget", "real", "whole", "rational", "NumberTooLarge", "MAX_VERIFY_SAMPLES",
+           "MAX_ACCURACY_SAMPLES", "MAX_NUMBER_BITS", "MAX_DECIMAL_EXPONENT"]
 
 # Each verification sample is solved at 50 digits (milliseconds); each accuracy sample
 # holds a few floats per strategy and case. Past these a run takes hours or the memory.
 MAX_VERIFY_SAMPLES = 10_000
 MAX_ACCURACY_SAMPLES = 1_000_000
+MAX_NUMBER_BITS = 1024  # an exact number's numerator and denominator, about 308 decimal digits
+MAX_DECIMAL_EXPONENT = 4 * MAX_NUMBER_BITS  # keeps Fraction("1e...") cheap before the bit check
 
 
 def names(argument: str, value: Iterable[str] | None) -> tuple[str, ...] | None:
@@ -103,9 +105,26 @@ def whole(text: str) -> int:
     return int(_ascii(text))
 
 
+class NumberTooLarge(ValueError):
+    """An exact number past the sizes algkin reads (the message says which)."""
+
+
 def rational(text: str) -> Fraction:
-    """``Fraction(text)`` of an ASCII ``text`` (``"3/2"``, ``"0.1"`` is 1/10); ValueError otherwise."""
-    return Fraction(_ascii(text))
+    """``Fraction(text)`` of an ASCII ``text`` (``"3/2"``, ``"0.1"`` is 1/10); ValueError otherwise,
+    NumberTooLarge past MAX_NUMBER_BITS. The decimal exponent is bounded first: ``Fraction("1e-1000000000")``
+    would compute 10**1000000000, and one of 10**100000 cannot even be printed."""
+    plain = _ascii(text)
+    _mantissa, _, exponent = plain.replace("_", "").lower().partition("e")
+    try:
+        too_far = bool(exponent) and abs(int(exponent)) > MAX_DECIMAL_EXPONENT
+    except ValueError:
+        too_far = False  # no decimal exponent: Fraction says what is wrong
+    if too_far:
+        raise NumberTooLarge(f"decimal exponent out of range (at most {MAX_DECIMAL_EXPONENT}): {text!r}")
+    value = Fraction(plain)
+    if max(abs(value.numerator).bit_length(), value.denominator.bit_length()) > MAX_NUMBER_BITS:
+        raise NumberTooLarge(f"number too large or too precise (more than {MAX_NUMBER_BITS} bits)")
+    return value
 
 
 def _ascii(text: object) -> str:

@@ -23,18 +23,17 @@ ValueError: unexpected character '１' at 0 (numbers and names are ASCII: digits
 
 import re
 from collections.abc import Callable, Mapping
-from fractions import Fraction
 
 import sympy
+
+from ..runtime.validation import MAX_NUMBER_BITS, NumberTooLarge, rational
 
 __all__ = ["parse", "exact_number", "bits_bound", "irrational", "MAX_EXPRESSION_LENGTH", "MAX_NUMBER_BITS", "MAX_VALUE_BITS"]
 
 MAX_EXPRESSION_LENGTH = 500
 MAX_DEPTH = 40
 MAX_EXPONENT = 64
-MAX_NUMBER_BITS = 1024  # numerators and denominators, about 308 decimal digits
 MAX_VALUE_BITS = 64 * MAX_NUMBER_BITS  # a value after parameters are substituted into it
-_MAX_DECIMAL_EXPONENT = 4 * MAX_NUMBER_BITS  # keeps Fraction("1e...") cheap before the bit check
 
 Token = tuple[str, str]  # (kind: num, name or op; its text)
 
@@ -52,16 +51,12 @@ def exact_number(text: str) -> sympy.Rational:
     """
     if not str(text).isascii():  # Fraction would read other scripts' digits
         raise ValueError(f"not a number in ASCII digits 0-9: {text!r}")
-    plain = str(text).replace("_", "")
-    _mantissa, _, exponent = plain.lower().partition("e")
     try:
-        too_far = bool(exponent) and abs(int(exponent)) > _MAX_DECIMAL_EXPONENT
-        value = None if too_far else Fraction(plain)
+        value = rational(str(text).replace("_", ""))
+    except NumberTooLarge:
+        raise
     except (ValueError, ZeroDivisionError):
         raise ValueError(f"not a finite number: {text!r}") from None
-    if value is None:
-        raise ValueError(f"decimal exponent out of range (at most {_MAX_DECIMAL_EXPONENT}): {text!r}")
-    _check_size(value.numerator, value.denominator)
     return sympy.Rational(value.numerator, value.denominator)
 
 

@@ -40,6 +40,7 @@ from .store import DATASET, MANIFEST, done_chunks, merge, open_directory, read_d
     without_timings, write_part
 
 if TYPE_CHECKING:  # the scene layer loads when a sweep is planned
+    from ..scene import Scene
     from ..scene.load import SceneLike
 
 __all__ = ["sweep", "Sweep", "plan", "ANALYSES", "Analysis", "register", "read_dataset", "read_manifest",
@@ -77,6 +78,21 @@ class Plan:
     chunk: int
 
 
+def _refuse_still(scene: Scene, point: str, swept: tuple[str, ...]) -> None:
+    """UsageError if ``point`` stays put whatever the swept dimensions (a ground pivot): its curve, and
+    every design's, would be a point; a compile that fails here is left to each design to say."""
+    from ..branches import closed_forms
+    from ..derivation.curves import refuse_still
+    from ..errors import SceneError
+    from ..scene import compile_scene
+
+    try:
+        compiled = compile_scene(scene, [point], swept)
+    except SceneError:
+        return
+    refuse_still(compiled, closed_forms(compiled), point)
+
+
 def plan(scene: SceneLike, *, grid: Iterable[str] = (), random: int | None = None, seed: int = 0,
          analyses: Iterable[str] = ("curve",), point: str | None = None, budget: float | None = None,
          chunk: int = CHUNK, share: bool = True) -> Plan:
@@ -108,6 +124,8 @@ def plan(scene: SceneLike, *, grid: Iterable[str] = (), random: int | None = Non
     point = point or list(scene.points)[-1]
     if point not in scene.points:
         raise UsageError("point", point, f"not a point of {scene.name} (points: {', '.join(scene.points)})")
+    if {"curve", "singular"} & set(chosen) and not scene.unknown_points:
+        _refuse_still(scene, point, tuple(designs[0]))
     if budget is not None:
         time_budget(budget, "budget")
     if not isinstance(chunk, int) or chunk < 1:

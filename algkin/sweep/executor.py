@@ -35,6 +35,9 @@ __all__ = ["EXECUTORS", "run_chunks", "on_worker", "dask_modules", "dask_setup"]
 EXECUTORS = ("dask", "serial")
 CONNECT_SECONDS = 10  # how long to wait for the scheduler at --scheduler ADDRESS
 FAMILIES = 2  # jobs' families a process keeps at once
+_TRACKER_WARNING = "ignore:resource_tracker:UserWarning"  # the tracker's warnings start with its name
+# Ctrl-C and a terminal's hang-up reach the whole process group, the workers too.
+GROUP_SIGNALS = frozenset({signal.SIGINT, signal.SIGHUP})
 # Above every level: the scheduler logs at CRITICAL (with a traceback) each message it cannot send to
 # workers a signal to the group has just ended, lines of its own beside the command's one.
 _SILENT = logging.CRITICAL + 1
@@ -134,17 +137,34 @@ def _client(workers: int | None, scheduler: str | None) -> Iterator[tuple[Any, A
             _start_resource_tracker()
             # no dashboard, and the scheduler's HTTP server (health checks) on a free local port:
             # its default, 8787, is taken by any other cluster on the machine
-            cluster = stack.enter_context(distributed.LocalCluster(
-                n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1", dashboard_address=None,
-                scheduler_kwargs={"dashboard": False, "dashboard_address": "127.0.0.1:0"},
-                silence_logs=_SILENT))
+            with _held(GROUP_SIGNALS):
+                cluster = stack.enter_context(distributed.LocalCluster(
+                    n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1", dashboard_address=None,
+                    scheduler_kwargs={"dashboard": False, "dashboard_address": "127.0.0.1:0"},
+                    silence_logs=_SILENT))
             client = stack.enter_context(distributed.Client(cluster))
         else:
             try:
                 client = stack.enter_context(distributed.Client(scheduler, timeout=CONNECT_SECONDS))
-            except (OSError, TimeoutError, ValueError) as err:
+            except (OSError, TimeoutError, ValueError, TypeError) as err:  # TypeError: tls:// without its context
                 raise UsageError("scheduler", scheduler, f"cannot connect: {' '.join(str(err).split())}") from None
         yield client, distributed.as_completed
+
+
+@contextlib.contextmanager
+def _held(signals: frozenset[signal.Signals]) -> Iterator[None]:
+    """``signals`` blocked in this thread while the block runs, then delivered here if they came.
+
+    The threads started meanwhile (the cluster's event loop, which spawns its worker processes)
+    keep them blocked, and so do those processes from their first instruction: a Ctrl-C to the
+    process group while a worker still imports distributed (a second or more, before ``dask_setup``
+    ignores it) waits for the worker to ignore it instead of printing its KeyboardInterrupt traceback.
+    This thread answers it once the cluster is up, by closing it."""
+    found = signal.pthread_sigmask(signal.SIG_BLOCK, signals)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, found)
 
 
 def _start_resource_tracker() -> None:
@@ -154,14 +174,28 @@ def _start_resource_tracker() -> None:
     ``KeyError`` traceback for each semaphore it never saw."""
     from multiprocessing import resource_tracker
 
-    if threading.current_thread() is not threading.main_thread():
-        resource_tracker.ensure_running()
-        return
-    found = signal.signal(signal.SIGHUP, signal.SIG_IGN)  # for the few milliseconds of a fork and exec
+    with _tracker_quiet():
+        if threading.current_thread() is not threading.main_thread():
+            resource_tracker.ensure_running()
+            return
+        found = signal.signal(signal.SIGHUP, signal.SIG_IGN)  # for the few milliseconds of a fork and exec
+        try:
+            resource_tracker.ensure_running()
+        finally:
+            signal.signal(signal.SIGHUP, found)
+
+
+@contextlib.contextmanager
+def _tracker_quiet() -> Iterator[None]:
+    """The resource tracker started meanwhile has its ``resource_tracker: There appear to be N leaked
+    semaphore objects to clean up`` warning silenced (passed on as a ``-W`` option): a SIGTERM to the
+    group ends the workers before they let go of their semaphores, and the tracker, which removes them
+    as it should, said so in two lines of its own after the command's one."""
+    sys.warnoptions.append(_TRACKER_WARNING)
     try:
-        resource_tracker.ensure_running()
+        yield
     finally:
-        signal.signal(signal.SIGHUP, found)
+        sys.warnoptions.remove(_TRACKER_WARNING)
 
 
 def dask_setup(worker: Any) -> None:
@@ -170,7 +204,7 @@ def dask_setup(worker: Any) -> None:
     stops (one line) and closes the cluster, which ends its workers (by SIGTERM), where each
     would otherwise print a ``KeyboardInterrupt`` traceback, or die leaving its semaphores to
     multiprocessing's resource tracker, which prints one traceback each."""
-    for signum in (signal.SIGINT, signal.SIGHUP):
+    for signum in GROUP_SIGNALS:
         signal.signal(signum, signal.SIG_IGN)
 
 

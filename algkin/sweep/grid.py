@@ -33,7 +33,7 @@ from typing import overload
 import numpy as np
 
 from ..errors import UsageError
-from ..runtime.validation import rational
+from ..runtime.validation import NumberTooLarge, rational
 
 __all__ = ["parse_grid", "parse_ranges", "grid_designs", "random_designs", "Designs", "RANDOM_STEPS", "MAX_DESIGNS"]
 
@@ -47,6 +47,8 @@ def _exact(text: str, spec: str) -> Fraction:
     """An exact rational from a decimal or a fraction (``0.1``, ``3/2``, ``-2``), never a float's binary value."""
     try:
         value = rational(text)
+    except NumberTooLarge as err:
+        raise UsageError("grid", spec, str(err)) from None
     except (ValueError, ZeroDivisionError):
         raise UsageError("grid", spec, f"{text.strip()!r} is not a number (e.g. 1.5 or 3/2)") from None
     if abs(value) > 10**100 or (value and abs(value) < Fraction(1, 10**100)):

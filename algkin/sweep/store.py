@@ -53,9 +53,19 @@ def read_manifest(folder: str | pathlib.Path, *, argument: str = "folder") -> di
     if not path.is_file():
         return None
     try:
-        return json.loads(path.read_text())
+        found = json.loads(path.read_text())
     except (OSError, ValueError) as err:
         raise UsageError(argument, str(folder), f"its {MANIFEST} cannot be read: {err}") from None
+    if not _is_manifest(found):
+        raise UsageError(argument, str(folder), f"its {MANIFEST} is not a sweep's (edited or damaged: "
+                                                "its scene's text and the traced point are missing)")
+    return found
+
+
+def _is_manifest(found: Any) -> bool:
+    """Whether ``found`` has what a sweep's manifest must: the scene's TOML and the point, as text."""
+    return (isinstance(found, dict) and isinstance(found.get("scene"), dict)
+            and isinstance(found["scene"].get("toml"), str) and isinstance(found.get("point"), str))
 
 
 def open_directory(folder: str | pathlib.Path, manifest: Mapping[str, Any], check_only: bool = False) -> None:
@@ -103,8 +113,7 @@ def merge(folder: str | pathlib.Path, columns: Mapping[str, str]) -> pathlib.Pat
     pa = _pyarrow()
     parts = sorted((pathlib.Path(folder) / PARTS).glob("part-*.parquet"))
     schema = arrow_schema(columns)
-    table = pa.concat_tables([pa.parquet.read_table(p, schema=schema) for p in parts]) if parts \
-        else schema.empty_table()
+    table = pa.concat_tables([_table(p, schema=schema) for p in parts]) if parts else schema.empty_table()
     table = table.sort_by("design")
     target = pathlib.Path(folder) / DATASET
     with atomic_output(target) as temporary:
@@ -117,7 +126,21 @@ def read_dataset(folder: str | pathlib.Path) -> Any:
     path = pathlib.Path(folder) / DATASET
     if not path.is_file():
         raise UsageError("folder", str(folder), f"holds no {DATASET}: not a finished sweep")
-    return _pyarrow().parquet.read_table(path)
+    table = _table(path)
+    missing = [c for c in ("design", "status", "reason") if c not in table.column_names]
+    if missing:
+        raise UsageError("folder", str(folder), f"its {DATASET} is not a sweep's (no column {', '.join(missing)})")
+    return table
+
+
+def _table(path: pathlib.Path, schema: Any = None) -> Any:
+    """The Parquet file at ``path`` (as ``schema``, if given); one that cannot be read (damaged, or
+    not one of this sweep's parts) is a usage error naming it."""
+    try:
+        return _pyarrow().parquet.read_table(path, schema=schema)
+    except (OSError, ValueError) as err:  # pyarrow's ArrowInvalid is a ValueError
+        raise UsageError("folder", str(path), f"cannot be read as this sweep's: {' '.join(str(err).split())}; "
+                                              "delete it to compute it again") from None
 
 
 def without_timings(table: Any) -> Any:

@@ -42,10 +42,11 @@ import flint
 
 from ..errors import SceneError
 from ..runtime import suggest
+from ..runtime.terminal import shortened
 from ..scene.expr import exact_number
 from ..scene.load import MAX_SCENE_BYTES
 from .data import Angle, AnglePair, Point, Pose
-from .fourbar import safe_name
+from .fourbar import NAME_CHARS, safe_name
 
 __all__ = ["Task", "read_task", "read_task_text", "example_names", "KINDS"]
 
@@ -137,7 +138,8 @@ class _Reader:
                 self.fail(key, f"not a key of a {kind} file" + suggest.known(key, sorted(allowed), plural="valid"))
         name = data.get("name", safe_name(os.path.splitext(os.path.basename(self.source))[0]))
         if not isinstance(name, str) or not name or name != safe_name(name):
-            self.fail("name", f"expected letters, digits, '-' and '_' (it names the scene files written), got {name!r}")
+            self.fail("name", f"expected at most {NAME_CHARS} letters, digits, '-' and '_' (it names the scene "
+                                  f"files written), got {shortened(repr(name))}")
         if not isinstance(data.get("description", ""), str):
             self.fail("description", "expected a string")
         task = Task(self.source, kind, name)

@@ -26,11 +26,13 @@ import re
 import attrs
 import flint
 
-__all__ = ["FourBar", "Position", "scene_text", "safe_name", "DIGITS", "BITS"]
+__all__ = ["FourBar", "Position", "scene_text", "safe_name", "DIGITS", "BITS", "NAME_CHARS"]
 
 Ball2 = tuple[flint.arb, flint.arb]
 DIGITS = 40
 """Significant digits of a written scene's numbers."""
+NAME_CHARS = 80
+"""Characters of a written scene's name at most: it names the scene files too."""
 BITS = 192
 """Working precision of the arithmetic on a design's balls (above DIGITS' 133 bits)."""
 
@@ -129,12 +131,12 @@ def scene_text(design: FourBar, *, branch: str, digits: int = DIGITS) -> str:
 
 def safe_name(name: str) -> str:
     """A name from user text, as scene names and files are written: letters, digits, ``-`` and
-    ``_`` only, at most 80 (it goes into TOML and into file names: no quote, no ``/``, no ``..``).
+    ``_`` only, at most NAME_CHARS (it goes into TOML and into file names: no quote, no ``/``, no ``..``).
 
     >>> safe_name("../../etc/x y"), safe_name("fourbar-poses"), safe_name("/")
     ('etc-x-y', 'fourbar-poses', 'synthesized')
     """
-    return re.sub(r"[^A-Za-z0-9_-]+", "-", name).strip("-")[:80] or "synthesized"
+    return re.sub(r"[^A-Za-z0-9_-]+", "-", name).strip("-")[:NAME_CHARS] or "synthesized"
 
 
 def _decimal(ball: flint.arb, digits: int) -> str:

@@ -81,6 +81,19 @@ class _Tracer:
         shared = Motion(scene)
         self.shared = shared if set(swept) <= set(shared.params) else None
 
+    def valid(self, values: dict[str, str]) -> bool:
+        """Whether the scene takes ``values`` (a failed design's may be refused by its compilation, a
+        length not positive: the symbolic closed forms would still draw it)."""
+        from ..errors import SceneError
+        from ..scene import compile_scene
+        from ..scene.settings import with_values
+
+        try:
+            compile_scene(with_values(self.scene, values), [self.point])
+        except SceneError:
+            return False
+        return True
+
     def tracks(self, values: dict[str, str]) -> list[tuple[bool, list[tuple[float, float]]]]:
         from ..analyses.motion import Motion
         from ..scene.settings import with_values
@@ -105,6 +118,8 @@ def atlas_data(folder: str | pathlib.Path, samples: int = 181) -> dict[str, Any]
         raise UsageError("DIR", str(folder), "holds no sweep (manifest.json)")
     rows = read_dataset(folder).to_pylist()
     scene = load_scene_text(manifest["scene"]["toml"], f"{folder}/manifest.json")
+    if manifest["point"] not in scene.points:
+        raise UsageError("DIR", str(folder), f"its manifest's point {manifest['point']!r} is not a point of its scene")
     swept = [c[len("param_"):] for c in (rows[0] if rows else {}) if c.startswith("param_") and not c.endswith("_float")]
     tracer = _Tracer(scene, manifest["point"], swept, samples)
     designs = [_entry(row, swept, tracer) for row in rows]
@@ -120,6 +135,8 @@ def _entry(row: dict[str, Any], swept: list[str], tracer: _Tracer) -> dict[str, 
              "circularity": row.get("curve_circularity"), "singular": row.get("singular_count"),
              "tmin": row.get("transmission_min_deg"), "tmax": row.get("transmission_max_deg"), "paths": []}
     if row["status"] in ("does-not-assemble", "structure"):  # no motion: nothing to draw
+        return entry
+    if row["status"] == "failed" and not tracer.valid(values):  # no mechanism: nothing to draw
         return entry
     tracks = tracer.tracks(values)
     frame = _frame([t for _, t in tracks])

@@ -36,7 +36,7 @@ from collections.abc import Sequence
 import sympy
 
 from ..runtime import suggest
-from ..branches import Branch, closed_forms, readable
+from ..branches import Branch, check_assembly, closed_forms, readable
 from ..branches.stable import StableBranch, output_forms
 from ..derivation.modes import resolve_modes
 from ..errors import UsageError
@@ -94,6 +94,8 @@ def export(scene: SceneLike, outputs: Sequence[str] | None = None, to: str = "c"
     scene = resolve_modes(scene)  # a mode named by a configuration: its label
     compiled = compile_scene(scene, outputs, list(params))
     branches = closed_forms(compiled)
+    if not params:  # as derive and plot: no code for a mechanism whose every output would be NaN
+        check_assembly(compiled, branches)
     if to == "latex":
         return _latex(compiled, branches)
     inputs = compiled.system.inputs

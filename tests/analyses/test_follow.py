@@ -141,6 +141,10 @@ def test_the_deadline_is_kept():
     # once taken: 3.6e302 steps, never ending (without a budget) and a sample kept at each
     (dict(max_step="1e-300"), "max_step='1e-300': would take over 100000 steps from 0 to 360; give at least "
                               "0.0036"),
+    # 1e-100000 was read, then failed printing its denominator; 1e-1000000000 never came back from Fraction
+    (dict(start={"angle": "1e-100000"}), "start='angle=1e-100000': decimal exponent out of range"),
+    (dict(stop="1e-1000000000"), "stop='angle=1e-1000000000': decimal exponent out of range"),
+    (dict(max_step="1e-1000000000"), "max_step='1e-1000000000': decimal exponent out of range"),
     (dict(at={"angle": 3}), "at='angle': is the input followed: give its value as the start only"),
     (dict(digits=0), "digits=0: expected a whole number of digits"),
 ])

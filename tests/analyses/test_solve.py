@@ -96,6 +96,15 @@ def test_bad_arguments_name_the_argument(at, options, argument):
     assert caught.value.argument == argument
 
 
+@pytest.mark.parametrize("value", ["1e-100000", "1e-1000000000", "0." + "0" * 400 + "1"])
+def test_an_input_too_precise_to_read_is_refused_naming_it(value):
+    # 1e-100000 was read, then failed printing its 100,000-digit denominator (a traceback);
+    # 1e-1000000000 never came back from Fraction("1e-1000000000")
+    with pytest.raises(UsageError, match="exponent out of range|more than 1024 bits") as caught:
+        solve("fourbar", at={"theta": value})
+    assert caught.value.argument == "at"
+
+
 def test_the_facade_has_it():
     import algkin
 

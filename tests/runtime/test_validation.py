@@ -1,5 +1,7 @@
 """Misuse of the Python API raises algkin's own errors, naming the argument (issue: hostile input)."""
 
+from fractions import Fraction
+
 import attrs
 import pytest
 import sympy
@@ -113,3 +115,25 @@ def test_a_bound_size_value_set_exactly_still_does():
     big = 2**600 + 1
     result = algkin.derive("fourbar", outputs=["B"], set={"d": sympy.Rational(4 * big + 1, big)}, samples=0)
     assert result.compiled.parameter_values["d"] == sympy.Rational(4 * big + 1, big)
+
+
+@pytest.mark.parametrize("text, says", [
+    ("1e-1000000000", "decimal exponent out of range"),  # Fraction would compute 10**1000000000 first
+    ("1e5000", "decimal exponent out of range"),
+    ("1e-400", "more than 1024 bits"),
+    ("0." + "0" * 400 + "1", "more than 1024 bits"),
+    (str(2**1024), "more than 1024 bits"),
+])
+def test_an_exact_number_past_the_sizes_read_is_refused_before_it_is_made(text, says):
+    from algkin.runtime.validation import NumberTooLarge, rational
+
+    with pytest.raises(NumberTooLarge, match=says):
+        rational(text)
+
+
+def test_an_exact_number_within_the_sizes_is_read_exactly():
+    from algkin.runtime.validation import rational
+
+    assert rational("1e-300") == Fraction(1, 10**300)
+    assert rational(str(2**1024 - 1)) == 2**1024 - 1
+    assert rational(" 2.5e-1 ") == Fraction(1, 4)

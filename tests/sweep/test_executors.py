@@ -5,6 +5,7 @@ partial part file."""
 import io
 import signal
 import time
+from pathlib import Path
 
 import pyarrow.parquet as pq
 import pytest
@@ -43,6 +44,14 @@ def test_a_scheduler_that_is_not_there_is_a_usage_error(tmp_path, monkeypatch):
     assert not any(tmp_path.iterdir())  # nothing written
 
 
+@pytest.mark.parametrize("address", ["tls://127.0.0.1:9", "ucx://127.0.0.1:9"])
+def test_a_scheduler_whose_protocol_cannot_be_used_is_a_usage_error(tmp_path, address):
+    # TLS without its context, UCX without its package: Dask raises TypeError, which was a traceback
+    with pytest.raises(UsageError, match=f"^scheduler='{address}': cannot connect: "):
+        sweep("fourbar", tmp_path, grid=["a=1:2:2"], analyses=["grashof"], scheduler=address)
+    assert not any(tmp_path.iterdir())
+
+
 def test_ctrl_c_stops_the_cluster_and_leaves_no_process(tmp_path):
     argv = ["sweep", "fourbar", "--grid", "a=1/2:3/2:30", "--grid", "m=3:4:2", "--analyses", "curve,transmission",
             "--out", tmp_path, "--workers", "2", "--chunk", "1"]
@@ -79,3 +88,22 @@ def test_an_existing_cluster_by_its_address_is_used_and_left_running(tmp_path):
         assert out == f"2 designs (2 computed now): ok 2\nwrote {tmp_path / 'designs.parquet'}\n"
         with Client(cluster) as client:  # still there for its owner
             assert client.submit(sum, [1, 2]).result() == 3
+
+
+def test_the_resource_tracker_removes_semaphores_left_behind_without_a_word():
+    """Workers ended by a SIGTERM to the group leave their semaphores to the tracker, which removed them
+    and printed two lines of warning after the command's one (as this process, ended at once, does)."""
+    import subprocess
+    import sys
+
+    code = ("import os, multiprocessing\n"
+            "from algkin.sweep.executor import _start_resource_tracker\n"
+            "_start_resource_tracker()\n"
+            "kept = multiprocessing.get_context('spawn').Semaphore()\n"
+            "name = kept._semlock.name\n"
+            "print(name, flush=True)\n"
+            "os._exit(0)\n")  # no finaliser runs: the semaphore is left registered, as a killed worker's
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0 and done.stdout.strip(), done.stderr
+    assert done.stderr == "", done.stderr
+    assert not (Path("/dev/shm") / f"sem.{done.stdout.strip().lstrip('/')}").exists()  # removed all the same

@@ -30,6 +30,7 @@ def test_the_first_axis_varies_slowest():
     ("a=1:2:1", "COUNT 1 needs LO = HI"),
     ("a=1:1:3", "LO = HI is one value, not 3: give COUNT 1"),  # three identical designs
     ("a=1e200:1e201:2", "outside 1e-100 to 1e100"),
+    ("a=1e-1000000000:1:2", "decimal exponent out of range"),  # Fraction would compute 10**1000000000 first
 ])
 def test_bad_grids_are_refused(spec, says):
     with pytest.raises(UsageError, match=says) as raised:
@@ -106,3 +107,18 @@ def test_the_sweep_takes_its_options_by_name(tmp_path):
     with pytest.raises(TypeError):
         plan("fourbar", ["a=1:2:2"])
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("point, analyses", [("O", ["curve"]), ("D", ["grashof", "singular"])])
+def test_a_ground_pivot_for_the_curve_is_refused_before_any_design(point, analyses):
+    # every design failed, one by one, on the same bad argument (exit 0): O = (0, 0) and D = (d, 0) never move
+    from algkin.sweep import plan
+
+    with pytest.raises(UsageError, match=f"point='{point}': is fixed at .*its trajectory is a point"):
+        plan("fourbar", grid=["a=1:2:2", "d=3:4:2"], analyses=analyses, point=point)
+
+
+def test_a_ground_pivot_is_no_matter_without_a_curve():
+    from algkin.sweep import plan
+
+    assert len(plan("fourbar", grid=["a=1:2:2"], analyses=["grashof"], point="O").designs) == 2

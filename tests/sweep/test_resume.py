@@ -127,3 +127,22 @@ def test_the_manifest_says_what_the_sweep_is(uninterrupted):
     assert manifest["scene"]["name"] == "fourbar" and "[points]" in manifest["scene"]["toml"]
     assert manifest["designs"] == {"grid": {"a": ["1/2", "5/6", "7/6", "3/2"], "m": ["3", "4"]}}
     assert manifest["analyses"] == ANALYSES and manifest["count"] == 8 and manifest["algkin"]
+
+
+@pytest.mark.parametrize("damage", ["manifest", "part"])
+def test_a_damaged_sweep_directory_is_refused_in_one_line_and_left_as_it_is(tmp_path, uninterrupted, capsys,
+                                                                            damage):
+    """A manifest edited into a list, a part file overwritten: each was a traceback (AttributeError, ArrowInvalid)."""
+    import shutil
+
+    shutil.copytree(uninterrupted, tmp_path, dirs_exist_ok=True)
+    (tmp_path / "designs.parquet").unlink()  # the parts are merged again
+    damaged = tmp_path / ("manifest.json" if damage == "manifest" else "parts/part-000001.parquet")
+    damaged.write_text("[]")
+    files = {p: p.read_bytes() for p in tmp_path.rglob("*") if p.is_file()}
+    code = main(["sweep", "fourbar", *(x for g in GRID for x in ("--grid", g)), "--analyses", ",".join(ANALYSES),
+                 "--chunk", "1", "--out", str(tmp_path), "--executor", "serial"])
+    err = capsys.readouterr().err
+    assert code == 2 and err.count("\n") == 1 and "Traceback" not in err, err
+    assert ("is not a sweep's" if damage == "manifest" else "part-000001.parquet': cannot be read") in err
+    assert {p: p.read_bytes() for p in tmp_path.rglob("*") if p.is_file()} == files

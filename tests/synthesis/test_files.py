@@ -56,6 +56,8 @@ def test_function_and_path_files():
     ('kind = "path"\npivots = { crank = [0, 0] }\npoints = []', "pivots", "rocker"),
     ('kind = "path"\npivots = { crank = [0, 0, 1], rocker = [1, 0] }\npoints = []', "pivots.crank", "[x, y]"),
     ('kind = ', "", "TOML syntax error"),
+    # letters only, but past the 80 characters a file name takes: the message said "expected letters"
+    ('kind = "motion"\nname = "' + "a" * 81 + '"', "name", "at most 80"),
 ])
 def test_faults_name_the_element(text, element, words):
     with pytest.raises(SceneError) as err:

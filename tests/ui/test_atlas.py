@@ -137,3 +137,48 @@ def test_the_singular_points_filter_appears_with_its_column(atlas, tmp_path):
     state, cards = load(tmp_path / "atlas.html", "?singular=2")
     assert [not c["hidden"] for c in cards] == [n == 2 for n in counts] and state["shown"] == str(counts.count(2))
     assert not atlas_data(atlas / "sweep")["filters"]["singular"]
+
+
+def test_a_design_whose_values_the_scene_refuses_is_not_drawn(tmp_path):
+    """A crank of length -1 fails at the sweep (a length must be positive); the closed forms, derived with
+    the crank symbolic, would still trace a curve for it, and the atlas counted it drawn."""
+    from algkin.sweep import sweep
+    from algkin.ui.atlas import write_atlas
+
+    sweep("fourbar", tmp_path / "sweep", grid=["a=-1:1:2"], analyses=["curve"], executor="serial")
+    assert read_dataset(tmp_path / "sweep").column("status").to_pylist() == ["failed", "ok"]
+    written = write_atlas(tmp_path / "sweep", tmp_path / "atlas.html", samples=19)
+    assert written == {"designs": 2, "drawn": 1}
+    refused, drawn = atlas_data(tmp_path / "sweep", samples=19)["designs"]
+    assert refused["paths"] == [] and "length must be positive" in refused["reason"]
+    assert drawn["paths"]
+
+
+@pytest.mark.parametrize("damage, says", [
+    (lambda m: m.update(point="ZZ"), "point 'ZZ' is not a point of its scene"),
+    (lambda m: m.pop("point"), "is not a sweep's"),
+    (lambda m: m["scene"].update(toml=7), "is not a sweep's"),
+])
+def test_a_manifest_edited_or_damaged_is_refused_naming_it(tmp_path, damage, says):
+    """Each was a traceback (KeyError, TypeError) while the page was made."""
+    import json
+
+    from algkin.errors import UsageError
+    from algkin.sweep import sweep
+
+    sweep("fourbar", tmp_path / "sweep", grid=["a=1:2:2"], analyses=["grashof"], executor="serial")
+    manifest = json.loads((tmp_path / "sweep" / "manifest.json").read_text())
+    damage(manifest)
+    (tmp_path / "sweep" / "manifest.json").write_text(json.dumps(manifest))
+    with pytest.raises(UsageError, match=says):
+        atlas_data(tmp_path / "sweep")
+
+
+def test_a_dataset_that_is_not_parquet_is_refused_naming_it(tmp_path):
+    from algkin.errors import UsageError
+    from algkin.sweep import sweep
+
+    sweep("fourbar", tmp_path / "sweep", grid=["a=1:2:2"], analyses=["grashof"], executor="serial")
+    (tmp_path / "sweep" / "designs.parquet").write_text("not parquet")
+    with pytest.raises(UsageError, match="designs.parquet'?: cannot be read"):
+        atlas_data(tmp_path / "sweep")

@@ -123,6 +123,16 @@ def test_out_is_written_whole_and_a_bad_path_writes_nothing(tmp_path):
     assert bad.returncode == 2 and sorted(p.name for p in tmp_path.iterdir()) == ["p.js"]
 
 
+@pytest.mark.parametrize("to", ["c", "numpy", "js", "latex"])
+def test_a_mechanism_that_never_assembles_is_refused_and_its_old_file_kept(to, tmp_path):
+    # crank 100 on a ground of 4: |AD| >= 96, past coupler + rocker = 3 + 7/2, at every angle
+    (tmp_path / "old.txt").write_text("kept")
+    run = run_cli(["export", "fourbar", "--set", "a=100", "--to", to, "--out", "old.txt"], tmp_path)
+    assert run.returncode == 2 and run.stdout == "", run.stderr
+    assert len(run.stderr.splitlines()) == 1 and "can never assemble" in run.stderr, run.stderr
+    assert (tmp_path / "old.txt").read_text() == "kept"
+
+
 def test_json_holds_the_code_as_printed(tmp_path):
     run = run_cli(["export", "chebyshev-lambda", "--outputs", "B", "--to", "numpy", "--json"], tmp_path)
     assert run.returncode == 0

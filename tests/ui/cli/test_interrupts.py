@@ -131,6 +131,37 @@ def test_a_signal_to_a_sweeps_group_stops_its_dask_workers_quietly(tmp_path, sig
         kill_group(process)
 
 
+def _starting_workers(pgid):
+    """The processes of the group ``pgid`` that multiprocessing spawned (a Dask worker, from its first import)."""
+    found = set()
+    for pid in _group(pgid):
+        try:
+            if b"spawn_main" in (Path("/proc") / str(pid) / "cmdline").read_bytes():
+                found.add(pid)
+        except OSError:  # it ended while we looked
+            continue
+    return found
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(not Path("/proc").is_dir(), reason="reads the process group from /proc")
+def test_ctrl_c_while_the_dask_workers_start_is_one_line(tmp_path):
+    """Ctrl-C reaches the group while a worker is still importing distributed (a second or more), before
+    it could ignore SIGINT: it printed its KeyboardInterrupt traceback, and another traceback per queue."""
+    pytest.importorskip("distributed")
+    out = tmp_path / "sweep"
+    process = start(algkin("sweep", "fourbar", "--grid", "a=1:3:4000", "--analyses", "curve", "--workers", "2",
+                           "--out", out))
+    try:
+        _await(lambda: _starting_workers(process.pid) or process.poll() is not None, "no Dask worker started")
+        assert not (out / "manifest.json").exists(), "the workers were up already"
+        os.killpg(process.pid, signal.SIGINT)
+        assert finish(process, timeout=WAIT)[::2] == (130, "algkin: interrupted\n")
+        _await(lambda: not _group(process.pid), "a process of the group outlived the command")
+    finally:
+        kill_group(process)
+
+
 class _SignalledWhenCollected:
     """Sends this process SIGINT from its finaliser: the handler's exception is raised there, where
     Python prints it and drops it (as in a library's ``__del__`` during a sweep on Dask)."""
