@@ -154,15 +154,16 @@ def end_degrees(problem: Problem, best: CriticalPoint) -> sympy.Rational | None:
     return None
 
 
-def value_at_angle(problem: Problem, degrees: sympy.Rational, values: Values) -> sympy.Expr:
-    """The closed form at an exact angle, tidied (denested when that is shorter and equal)."""
+def value_at_angle(problem: Problem, degrees: sympy.Rational, values: Values) -> sympy.Expr | None:
+    """The closed form at an exact angle, tidied (denested when that is shorter and equal); None
+    where it has no value there (0/0: the output's value there is its limit)."""
     raw = _closed_at(problem, degrees).xreplace(problem.line.exact_at(degrees))
     if raw.is_Rational:
         return raw  # every tidier form of a rational is itself
     target = _numeric(raw, values)
     forms = [f for f in (raw, sympy.sqrtdenest(raw), sympy.radsimp(raw), sympy.factor(raw))
              if abs(_numeric(f, values) - target) <= MATCH * (1 + abs(target))]
-    return min(forms, key=sympy.count_ops)
+    return min(forms, key=sympy.count_ops, default=None)
 
 
 def _closed_at(problem: Problem, degrees: sympy.Rational | mpmath.mpf) -> sympy.Expr:

@@ -7,6 +7,10 @@ vanishes there). With the half-angle ``t = tan(theta/2)`` both become polynomial
 by python-flint with certified enclosures, hold every stationary input. No calculus on
 square roots, no numeric minimiser. A length input is ``t`` itself (``F_t = 0``), its
 values shown as lengths where an angle's are in degrees (``input_deg`` holds either).
+
+A value of ``u`` can run off to infinity only where the eliminant's leading coefficient in
+``u`` vanishes (two lines of a meet turning parallel); there the branch's closed form is read
+from each side: a pole makes the output unbounded (+-inf), a 0/0 has its limit.
 """
 
 from __future__ import annotations
@@ -241,7 +245,7 @@ class CriticalPoint:
 
     input_deg: mpmath.mpf
     value: mpmath.mpf
-    kind: str  # minimum, maximum, inflection, dead centre, endpoint
+    kind: str  # minimum, maximum, inflection, dead centre, pole (value +-inf), endpoint
     # the input in degrees; None at a range end (balls do not hash: left out of eq and hash)
     enclosure: flint.arb | None = field(default=None, compare=False)
     via: mpmath.mpf | None = None  # an angle output: the value of the scalar standing for it (``angles``)
