@@ -56,6 +56,7 @@ SEAM = 1e-9  # degrees: how far a stretch reaches past its (float) end into a ne
 # 1/sqrt(x)), a bounded one tends to its limit.
 PROBES = (8, 16, 24)  # powers of ten
 RUN_OFF = 100
+SAME_INPUT = mpmath.mpf(10) ** (-DIGITS // 2)  # two inputs closer than this are one (a suspect's, a range end's)
 
 
 @dataclass(frozen=True)
@@ -369,7 +370,8 @@ def _leading_coefficient(poly: sympy.Expr, variable: sympy.Symbol) -> sympy.Expr
     index = symbols.index(variable)
     terms = to_flint(poly, flint_context([v.name for v in symbols])).to_dict()
     top = max(m[index] for m in terms)
-    return from_terms({m: c for m, c in terms.items() if m[index] == top}, symbols).xreplace({variable: 1})
+    leading = from_terms({m: c for m, c in terms.items() if m[index] == top}, symbols)
+    return leading.xreplace({variable: sympy.Integer(1)})  # xreplace gives back a rule's value as it is
 
 
 def critical_points(problem: Problem, factors: Sequence[sympy.Expr] | None, lo: Number, hi: Number,
@@ -476,10 +478,12 @@ def _poles(problem: Problem, suspects: Sequence[Suspect], lo: mpmath.mpf, hi: mp
     """
     points: list[CriticalPoint] = []
     for degrees, ball in suspects:
+        if _seen(found, degrees):
+            continue  # a stationary point, its value finite (``_value_at``): no pole
         limits = {side: one_sided_limit(problem, degrees, side) for side in _sides_within(degrees, lo, hi)}
         points += [CriticalPoint(degrees, limit, "pole", ball, side=side)
                    for side, limit in limits.items() if mpmath.isinf(limit) and problem.scale is None]
-        if len(limits) == 2 and all(mpmath.isfinite(v) for v in limits.values()) and not _seen(found + points, degrees):
+        if len(limits) == 2 and all(mpmath.isfinite(v) for v in limits.values()) and not _seen(points, degrees):
             here = _value_at(problem, degrees, suspects)
             if _is_stationary(problem, degrees, here):
                 points.append(CriticalPoint(degrees, here, _kind(problem, degrees, here), ball))
@@ -489,9 +493,8 @@ def _poles(problem: Problem, suspects: Sequence[Suspect], lo: mpmath.mpf, hi: mp
 def _sides_within(degrees: mpmath.mpf, lo: mpmath.mpf, hi: mpmath.mpf) -> list[int]:
     """The sides (-1 below, +1 above) from which the range reaches ``degrees``: none outside it,
     one at its ends (to rounding)."""
-    near = mpmath.mpf(10) ** (-DIGITS // 2)
-    return [side for side, inside in ((-1, lo + near < degrees <= hi + near), (1, lo - near <= degrees < hi - near))
-            if inside]
+    return [side for side, inside in ((-1, lo + SAME_INPUT < degrees <= hi + SAME_INPUT),
+                                      (1, lo - SAME_INPUT <= degrees < hi - SAME_INPUT)) if inside]
 
 
 def one_sided_limit(problem: Problem, degrees: mpmath.mpf, side: int) -> mpmath.mpf:
@@ -513,17 +516,19 @@ def one_sided_limit(problem: Problem, degrees: mpmath.mpf, side: int) -> mpmath.
 
 def _value_at(problem: Problem, degrees: mpmath.mpf, suspects: Sequence[Suspect]) -> mpmath.mpf:
     """The output at ``degrees`` (a dead centre's to rounding); at a suspect (``_pole_suspects``),
-    its limit where the closed form there reads otherwise (0/0: a cancellation, not a value), nan
-    where it runs off."""
+    its limit (from below, or above where it does not assemble below) where the closed form
+    there reads otherwise (0/0: a cancellation, not a value), nan where it runs off."""
     value = problem.value(degrees)
     if value != value:  # a discriminant touching zero here reads a rounding below it
         value = _value_at_meeting(problem, degrees)
     if not _near(suspects, degrees):
         return value
-    limits = [v for v in (one_sided_limit(problem, degrees, side) for side in (-1, 1)) if v == v]
-    if any(mpmath.isinf(v) for v in limits):
+    limit = one_sided_limit(problem, degrees, -1)
+    if limit != limit:  # the branch does not assemble below
+        limit = one_sided_limit(problem, degrees, 1)
+    if mpmath.isinf(limit):
         return mpmath.nan
-    return value if not limits or _agrees(value, limits[0]) else limits[0]
+    return value if limit != limit or _agrees(value, limit) else limit
 
 
 def _end_value(problem: Problem, degrees: mpmath.mpf, inward: int, suspects: Sequence[Suspect],
@@ -550,7 +555,7 @@ def _end_value(problem: Problem, degrees: mpmath.mpf, inward: int, suspects: Seq
 
 
 def _near(suspects: Sequence[Suspect], degrees: mpmath.mpf) -> bool:
-    return any(abs(degrees - at) < mpmath.mpf(10) ** (-DIGITS // 2) for at, _ in suspects)
+    return any(abs(degrees - at) < SAME_INPUT for at, _ in suspects)
 
 
 def _agrees(value: mpmath.mpf, limit: mpmath.mpf) -> bool:
