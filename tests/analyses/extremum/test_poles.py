@@ -17,7 +17,7 @@ import pytest
 import sympy
 
 from algkin.analyses.extremum import extremum
-from algkin.analyses.extremum.critical import Problem, critical_points, extreme
+from algkin.analyses.extremum.critical import Problem, critical_points, extreme, pole_factors
 from algkin.errors import UsageError
 from algkin.system import symbol
 from algkin.system.angles import Parametrisation
@@ -152,3 +152,11 @@ def test_a_stationary_point_at_a_removable_zero_over_zero_is_read_by_its_limit()
 
     with mpmath.workdps(30):
         assert max(rationalised(60 + mpmath.mpf(k) / 100) for k in range(6001)) == pytest.approx(0.5, abs=1e-20)
+
+
+def test_a_leading_coefficient_that_is_a_number_has_no_poles():
+    """A length input's ``B_x - x`` (piston-driven-crank's B.x): the coefficient of ``u`` is 1, nowhere
+    zero (it was taken as a Python int, and the extremum failed on it)."""
+    x = symbol("x")
+    assert pole_factors(Problem(U - x, x, U, Parametrisation((x,), x), ())) == []
+    assert pole_factors(Problem(x * U**2 - 1, 1 / sympy.sqrt(x), U, Parametrisation((x,), x), ())) == [x]
