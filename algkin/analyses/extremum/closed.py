@@ -29,14 +29,14 @@ import flint
 import mpmath
 import sympy
 
-from ...errors import ComputationError
+from ...errors import ComputationError, UsageError
 from ...runtime.budget import Deadline
 from ...runtime.frozen import FrozenDict
 from ...system.convert import univariate
 from ...system.roots import real_roots
 from ..frozen import frozen_rows, thawed
 from .critical import (DIGITS, ROOT_BITS, CriticalPoint, Number, Problem, extreme, meeting_factors, points_at,
-                       resultant_factors)
+                       pole_factors, resultant_factors)
 
 __all__ = ["ClosedForm", "closed_form", "value_factors", "Region", "describe", "end_degrees", "value_at_angle"]
 
@@ -154,15 +154,16 @@ def end_degrees(problem: Problem, best: CriticalPoint) -> sympy.Rational | None:
     return None
 
 
-def value_at_angle(problem: Problem, degrees: sympy.Rational, values: Values) -> sympy.Expr:
-    """The closed form at an exact angle, tidied (denested when that is shorter and equal)."""
+def value_at_angle(problem: Problem, degrees: sympy.Rational, values: Values) -> sympy.Expr | None:
+    """The closed form at an exact angle, tidied (denested when that is shorter and equal); None
+    where it has no value there (0/0: the output's value there is its limit)."""
     raw = _closed_at(problem, degrees).xreplace(problem.line.exact_at(degrees))
     if raw.is_Rational:
         return raw  # every tidier form of a rational is itself
     target = _numeric(raw, values)
     forms = [f for f in (raw, sympy.sqrtdenest(raw), sympy.radsimp(raw), sympy.factor(raw))
              if abs(_numeric(f, values) - target) <= MATCH * (1 + abs(target))]
-    return min(forms, key=sympy.count_ops)
+    return min(forms, key=sympy.count_ops, default=None)
 
 
 def _closed_at(problem: Problem, degrees: sympy.Rational | mpmath.mpf) -> sympy.Expr:
@@ -175,7 +176,7 @@ def _closed_at(problem: Problem, degrees: sympy.Rational | mpmath.mpf) -> sympy.
 class Description:
     """What the extremum is at one parameter point, and the polynomials that pin it down."""
 
-    at: str  # 'stationary', 'dead centre' or 'endpoint'
+    at: str  # 'stationary', 'dead centre', 'endpoint', or 'unbounded' (a pole in the range: no extreme)
     input: sympy.Expr | None  # degrees, None without radicals
     value: sympy.Expr | None
     input_factor: sympy.Expr | None  # the stationary factor in t it is a root of; None at an end
@@ -269,28 +270,37 @@ def closed_form(problem: Problem, stationary: list[sympy.Expr], defaults: Values
     (its eliminations keeping to ``deadline``, if any)."""
     values_factors = value_factors(problem, deadline=deadline)
     meeting = meeting_factors(problem, deadline=deadline)
+    poles = pole_factors(problem)
 
     def extremum_at(values: Values) -> Found | None:
         """The certified extremum at ``values`` and its description; ``None`` where the output
         is real nowhere on the range (the mechanism does not assemble at those dimensions)."""
-        points = points_at(problem, stationary, values, lo, hi, meeting)
+        points = points_at(problem, stationary, values, lo, hi, meeting, poles)
         if not any(p.value == p.value for p in points):
             return None
         best = extreme(points, largest)
+        if best.unbounded:
+            return best, Description("unbounded", None, None, None, None)
         return best, describe(problem, stationary, values_factors, values, best, meeting)
 
     with mpmath.workdps(DIGITS):
         found = extremum_at(defaults)
         if found is None:  # real nowhere at the defaults: refused, as ``extreme`` refuses
             raise ComputationError("the output is not real anywhere on the range")
-        _, here = found
+        best, here = found
+        if best.unbounded:
+            raise UsageError("params", ", ".join(p.name for p in problem.parameters),
+                             f"the output is unbounded near {float(best.input_deg):.12g} deg (a pole) at the "
+                             "dimensions' values: it has no extreme to give as a closed form")
+        # a pole entering the range is an event too: where a leading coefficient's root crosses an end
+        moving = stationary + meeting + poles
         if len(problem.parameters) == 1:
-            events = event_polynomials(problem, stationary + meeting, values_factors, (lo, hi))
+            events = event_polynomials(problem, moving, values_factors, (lo, hi))
             regions, values = _regions(problem, events, extremum_at, defaults)
             conditions = _interval_conditions(problem.parameters[0], regions, defaults)
         else:
             regions, values = [], []  # no regions in more than one dimension
-            own = event_polynomials(problem, stationary + meeting, values_factors, (lo, hi), here)
+            own = event_polynomials(problem, moving, values_factors, (lo, hi), here)
             conditions = _sign_conditions(own, defaults)
     return ClosedForm(here.value, here.input, here.at, here.input_factor, [c for c, _ in conditions], regions, values,
                       valid_when_text=[text for _, text in conditions])

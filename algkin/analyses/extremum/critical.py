@@ -7,6 +7,10 @@ vanishes there). With the half-angle ``t = tan(theta/2)`` both become polynomial
 by python-flint with certified enclosures, hold every stationary input. No calculus on
 square roots, no numeric minimiser. A length input is ``t`` itself (``F_t = 0``), its
 values shown as lengths where an angle's are in degrees (``input_deg`` holds either).
+
+A value of ``u`` can run off to infinity only where the eliminant's leading coefficient in
+``u`` vanishes (two lines of a meet turning parallel); there the branch's closed form is read
+from each side: a pole makes the output unbounded (+-inf), a 0/0 has its limit.
 """
 
 from __future__ import annotations
@@ -35,8 +39,8 @@ if TYPE_CHECKING:
     from .angles import AngleScale
 
 __all__ = ["Problem", "Stretch", "CriticalPoint", "critical_points", "points_in", "points_at", "extreme",
-           "stationary_factors", "meeting_factors", "constant_value", "resultant_factors", "along_input",
-           "stretches_of", "ROOT_BITS", "SEAM"]
+           "stationary_factors", "meeting_factors", "pole_factors", "one_sided_limit", "constant_value",
+           "resultant_factors", "along_input", "stretches_of", "ROOT_BITS", "SEAM"]
 
 ROOT_BITS = 128
 DIGITS = 40
@@ -45,6 +49,14 @@ Number = Union[int, float, sympy.Rational, mpmath.mpf]  # a range end: exact, or
 
 
 SEAM = 1e-9  # degrees: how far a stretch reaches past its (float) end into a neighbour that does not assemble
+
+# Where the output's closed form may have a pole it is read at these distances from it (in the
+# input's unit; the pole is known to ROOT_BITS, far closer), at twice the digits: a value running
+# off grows by at least ``RUN_OFF`` from one to the next (by 1e8 like 1/x, by 1e4 like
+# 1/sqrt(x)), a bounded one tends to its limit.
+PROBES = (8, 16, 24)  # powers of ten
+RUN_OFF = 100
+SAME_INPUT = mpmath.mpf(10) ** (-DIGITS // 2)  # two inputs closer than this are one (a suspect's, a range end's)
 
 
 @dataclass(frozen=True)
@@ -234,10 +246,16 @@ class CriticalPoint:
 
     input_deg: mpmath.mpf
     value: mpmath.mpf
-    kind: str  # minimum, maximum, inflection, dead centre, endpoint
+    kind: str  # minimum, maximum, inflection, dead centre, pole (value +-inf), endpoint
     # the input in degrees; None at a range end (balls do not hash: left out of eq and hash)
     enclosure: flint.arb | None = field(default=None, compare=False)
     via: mpmath.mpf | None = None  # an angle output: the value of the scalar standing for it (``angles``)
+    side: int = 0  # a pole's: -1 where the output runs off as the input rises to it, +1 as it falls to it
+
+    @property
+    def unbounded(self) -> bool:
+        """Whether the output runs off to infinity here (its value is +inf or -inf)."""
+        return bool(mpmath.isinf(self.value))
 
     def to_json(self) -> dict[str, object]:
         point: dict[str, object] = {"input_deg": float(self.input_deg), "value": float(self.value), "kind": self.kind}
@@ -245,6 +263,10 @@ class CriticalPoint:
             point["enclosure_deg"] = self.enclosure.str(20)
         if self.via is not None:
             point["via"] = float(self.via)
+        if self.unbounded:  # strict JSON has no infinity: the value is null there, and this says which
+            point["limit"] = "+inf" if self.value > 0 else "-inf"
+        if self.side:
+            point["side"] = "below" if self.side < 0 else "above"
         return point
 
 
@@ -323,28 +345,61 @@ def meeting_factors(problem: Problem, *, deadline: Deadline | None = None) -> li
     return found
 
 
-def critical_points(problem: Problem, factors: Sequence[sympy.Expr] | None, lo: Number, hi: Number,
-                    meeting: Sequence[sympy.Expr] | None = None) -> list[CriticalPoint]:
-    """Stationary points of ``problem`` (fixed dimensions) in ``[lo, hi]`` degrees, its dead
-    centres, then the two ends.
+def pole_factors(problem: Problem) -> list[sympy.Expr]:
+    """Factors, in ``t`` and the parameters, of the leading coefficients in ``u`` of the
+    eliminant's moving components (``Problem.components``): the only finite inputs where a
+    value of the output can run off to infinity (two lines of a meet turning parallel).
 
-    ``factors`` are ``stationary_factors`` and ``meeting`` (computed here if not given)
-    ``meeting_factors`` with the parameters fixed as in ``problem``; either is recomputed
-    if fixing the parameters made one of its factors vanish identically.
+    >>> c, s, t, u = sympy.symbols("c s t u")
+    >>> pole_factors(Problem(c * u - s, u, u, Parametrisation((c, s), t), ()))
+    [t - 1, t + 1]
+    """
+    moving, _ = problem.components()
+    found: list[sympy.Expr] = []
+    for component in moving:
+        for factor in _factors(_leading_coefficient(component, problem.u)):
+            if factor.has(problem.t) and not any(sympy.expand(factor + f) == 0 for f in found) \
+                    and factor not in found:
+                found.append(factor)
+    return found
+
+
+def _leading_coefficient(poly: sympy.Expr, variable: sympy.Symbol) -> sympy.Expr:
+    """The coefficient of ``poly``'s highest power of ``variable`` (python-flint: no sympy Poly of thousands of terms)."""
+    symbols = sorted(poly.free_symbols, key=lambda v: v.name)
+    index = symbols.index(variable)
+    terms = to_flint(poly, flint_context([v.name for v in symbols])).to_dict()
+    top = max(m[index] for m in terms)
+    leading = from_terms({m: c for m, c in terms.items() if m[index] == top}, symbols)
+    return leading.xreplace({variable: sympy.Integer(1)})  # xreplace gives back a rule's value as it is
+
+
+def critical_points(problem: Problem, factors: Sequence[sympy.Expr] | None, lo: Number, hi: Number,
+                    meeting: Sequence[sympy.Expr] | None = None, poles: Sequence[sympy.Expr] | None = None
+                    ) -> list[CriticalPoint]:
+    """Stationary points of ``problem`` (fixed dimensions) in ``[lo, hi]`` degrees, its dead
+    centres and poles, then the two ends.
+
+    ``factors`` are ``stationary_factors``, ``meeting`` ``meeting_factors`` and ``poles``
+    ``pole_factors`` (each computed here if not given) with the parameters fixed as in
+    ``problem``; either of the first two is recomputed if fixing the parameters made one of
+    its factors vanish identically.
     """
     t = problem.t
     polys = [univariate(p, t) for p in _fixed_or_anew(factors, stationary_factors, problem) if p.has(t)]
     meeting = [univariate(f, t) for f in _fixed_or_anew(meeting, meeting_factors, problem) if f.has(t)]
-    return points_in(problem, polys, meeting, lo, hi)
+    leading = pole_factors(problem) if poles is None else poles
+    return points_in(problem, polys, meeting, lo, hi, [univariate(f, t) for f in leading if f.has(t)])
 
 
 def points_in(problem: Problem, stationary: Sequence[Polynomial], meeting: Sequence[Polynomial], lo: Number,
-              hi: Number) -> list[CriticalPoint]:
-    """``critical_points`` from the ``stationary`` and ``meeting`` factors at fixed dimensions,
-    as univariate polynomials in ``t`` (python-flint): no sympy on the way."""
+              hi: Number, poles: Sequence[Polynomial] = ()) -> list[CriticalPoint]:
+    """``critical_points`` from the ``stationary``, ``meeting`` and ``poles`` factors at fixed
+    dimensions, as univariate polynomials in ``t`` (python-flint): no sympy on the way."""
     found: list[CriticalPoint] = []
     with flint.ctx.workprec(ROOT_BITS), mpmath.workdps(DIGITS):
         lo, hi = _mp(lo), _mp(hi)
+        suspects = _pole_suspects(problem, poles, lo, hi)
         balls = [problem.line.shown(r.ball) for p in stationary if p.degree() >= 1 for r in real_roots(p)]
         if problem.line.is_angle:
             balls.append(flint.arb(180))  # t = infinity
@@ -354,14 +409,14 @@ def points_in(problem: Problem, stationary: Sequence[Polynomial], meeting: Seque
                 degrees = middle + turn
                 if not lo <= degrees <= hi or _seen(found, degrees):
                     continue
-                here = problem.value(degrees)
-                if here != here:  # a discriminant touching zero here reads a rounding below it
-                    here = _value_at_meeting(problem, degrees)
+                here = _value_at(problem, degrees, suspects)
                 if _is_stationary(problem, degrees, here):
                     found.append(CriticalPoint(degrees, here, _kind(problem, degrees, here), ball + turn))
         found += _dead_centres(problem, meeting, lo, hi, found)
-        ends = [CriticalPoint(mpmath.mpf(x), problem.value(mpmath.mpf(x)), "endpoint") for x in (lo, hi)]
-    return sorted(found, key=lambda p: p.input_deg) + ends
+        found += _poles(problem, suspects, lo, hi, found)
+        ends = [CriticalPoint(x, _end_value(problem, x, inward, suspects, found), "endpoint")
+                for x, inward in ((lo, 1), (hi, -1))]
+    return sorted(found, key=lambda p: (p.input_deg, p.side)) + ends
 
 
 def _fixed_or_anew(factors: Sequence[sympy.Expr] | None, compute: Callable[[Problem], list[sympy.Expr]],
@@ -393,6 +448,122 @@ def _dead_centres(problem: Problem, meeting: Sequence[Polynomial], lo: mpmath.mp
     return points
 
 
+Suspect = tuple[mpmath.mpf, flint.arb]  # where the output may run off: the input, its enclosure
+
+
+def _pole_suspects(problem: Problem, poles: Sequence[Polynomial], lo: mpmath.mpf, hi: mpmath.mpf) -> list[Suspect]:
+    """The inputs in the range (to rounding) where a value of the output can run off to infinity
+    or its closed form be 0/0: the real roots of the leading coefficients in ``u``
+    (``pole_factors``), and an angle's half turn, where its degree in ``t`` may drop."""
+    balls = [problem.line.shown(r.ball) for p in poles if p.degree() >= 1 for r in real_roots(p)]
+    if problem.line.is_angle:
+        balls.append(flint.arb(180))  # t = infinity
+    suspects: list[Suspect] = []
+    for ball in balls:
+        middle = mpmath.mpf(ball.mid().str(DIGITS, radius=False))
+        suspects += [(middle + turn, ball + turn) for turn in problem.line.turns if _sides_within(middle + turn, lo, hi)]
+    return suspects
+
+
+def _poles(problem: Problem, suspects: Sequence[Suspect], lo: mpmath.mpf, hi: mpmath.mpf,
+           found: list[CriticalPoint]) -> list[CriticalPoint]:
+    """Where the output runs off to infinity inside the range (a "pole" on each side it does so
+    from: -inf on one and +inf on the other like 1/x), and where its closed form is 0/0 but
+    bounded and the output stationary (the limit there is a critical value).
+
+    Only at the ``suspects`` (``_pole_suspects``) can a value of ``u`` be unbounded; whether the
+    branch's is, is read from each side (``one_sided_limit``). An angle's via is not looked at:
+    its value is bounded, and a direction's via runs off only where the direction passes its
+    reference's opposite.
+    """
+    points: list[CriticalPoint] = []
+    for degrees, ball in suspects:
+        if _seen(found, degrees):
+            continue  # a stationary point, its value finite (``_value_at``): no pole
+        limits = {side: one_sided_limit(problem, degrees, side) for side in _sides_within(degrees, lo, hi)}
+        points += [CriticalPoint(degrees, limit, "pole", ball, side=side)
+                   for side, limit in limits.items() if mpmath.isinf(limit) and problem.scale is None]
+        if len(limits) == 2 and all(mpmath.isfinite(v) for v in limits.values()) and not _seen(points, degrees):
+            here = _value_at(problem, degrees, suspects)
+            if _is_stationary(problem, degrees, here):
+                points.append(CriticalPoint(degrees, here, _kind(problem, degrees, here), ball))
+    return points
+
+
+def _sides_within(degrees: mpmath.mpf, lo: mpmath.mpf, hi: mpmath.mpf) -> list[int]:
+    """The sides (-1 below, +1 above) from which the range reaches ``degrees``: none outside it,
+    one at its ends (to rounding)."""
+    return [side for side, inside in ((-1, lo + SAME_INPUT < degrees <= hi + SAME_INPUT),
+                                      (1, lo - SAME_INPUT <= degrees < hi - SAME_INPUT)) if inside]
+
+
+def one_sided_limit(problem: Problem, degrees: mpmath.mpf, side: int) -> mpmath.mpf:
+    """The output's limit as the input tends to ``degrees`` from below (``side`` -1) or above
+    (+1): +inf or -inf where it runs off, nan where the branch does not assemble just there.
+
+    Read at ``PROBES`` from ``degrees`` at twice the digits: nearer and nearer, a value that
+    runs off grows by ``RUN_OFF`` or more at each step (like ``x**(-1/k)``, ``k`` up to 4),
+    a bounded one does not.
+    """
+    with mpmath.workdps(2 * DIGITS):
+        probes = [problem.value(degrees + side * mpmath.mpf(10) ** -k) for k in PROBES]
+        if any(v != v for v in probes):
+            return mpmath.nan
+        if all(abs(far) * RUN_OFF < abs(near) for far, near in zip(probes, probes[1:])):
+            return mpmath.inf if probes[-1] > 0 else -mpmath.inf
+    return +probes[-1]  # rounded to the working digits
+
+
+def _value_at(problem: Problem, degrees: mpmath.mpf, suspects: Sequence[Suspect]) -> mpmath.mpf:
+    """The output at ``degrees`` (a dead centre's to rounding); at a suspect (``_pole_suspects``),
+    its limit (from below, or above where it does not assemble below) where the closed form
+    there reads otherwise (0/0: a cancellation, not a value), nan where it runs off."""
+    value = problem.value(degrees)
+    if value != value:  # a discriminant touching zero here reads a rounding below it
+        value = _value_at_meeting(problem, degrees)
+    if not _near(suspects, degrees):
+        return value
+    limit = one_sided_limit(problem, degrees, -1)
+    if limit != limit:  # the branch does not assemble below
+        limit = one_sided_limit(problem, degrees, 1)
+    if mpmath.isinf(limit):
+        return mpmath.nan
+    return value if limit != limit or _agrees(value, limit) else limit
+
+
+def _end_value(problem: Problem, degrees: mpmath.mpf, inward: int, suspects: Sequence[Suspect],
+               found: Sequence[CriticalPoint]) -> mpmath.mpf:
+    """The output at a range end: a point's of ``found`` there (a dead centre's: the one value,
+    that point the extreme where they tie); where its closed form is not real there or the end
+    is a suspect (``_pole_suspects``), its limit from inside the range (+-inf where it runs
+    off), the value there where that agrees with it (to rounding); nan where the branch does
+    not assemble just inside it either."""
+    there = [p for p in found if _seen([p], degrees) and (not p.side or p.side == inward)]
+    if there:
+        return there[0].value
+    value = problem.value(degrees)
+    if value == value and not _near(suspects, degrees):
+        return value
+    limit = one_sided_limit(problem, degrees, inward)
+    if mpmath.isinf(limit):
+        return limit if problem.scale is None else mpmath.nan  # an angle's via runs off at no pole of the angle
+    if limit != limit:
+        return value
+    if value != value:
+        value = _value_at_meeting(problem, degrees)  # a dead centre's value to rounding, not the probe's
+    return value if _agrees(value, limit) else limit
+
+
+def _near(suspects: Sequence[Suspect], degrees: mpmath.mpf) -> bool:
+    return any(abs(degrees - at) < SAME_INPUT for at, _ in suspects)
+
+
+def _agrees(value: mpmath.mpf, limit: mpmath.mpf) -> bool:
+    """Whether a value read at a point is its limit there, to the probes' accuracy (a 0/0 read
+    where the closed form cancels is off by far more)."""
+    return value == value and abs(value - limit) <= mpmath.mpf(10) ** -9 * (1 + abs(limit))
+
+
 def _ends_here(problem: Problem, degrees: mpmath.mpf) -> bool:
     """Whether the branch is real just on one side of ``degrees``."""
     step = mpmath.mpf(10) ** -12
@@ -414,14 +585,16 @@ def _value_at_meeting(problem: Problem, degrees: mpmath.mpf) -> mpmath.mpf:
 
 
 def points_at(problem: Problem, stationary: Sequence[sympy.Expr], values: Mapping[sympy.Symbol, sympy.Expr],
-              lo: Number, hi: Number, meeting: Sequence[sympy.Expr] | None = None) -> list[CriticalPoint]:
+              lo: Number, hi: Number, meeting: Sequence[sympy.Expr] | None = None,
+              poles: Sequence[sympy.Expr] | None = None) -> list[CriticalPoint]:
     """``critical_points`` with the dimensions fixed at ``values`` (symbol -> rational); the
-    ``stationary`` and ``meeting`` factors, found once with the dimensions symbolic, are
-    specialised rather than eliminated again."""
+    ``stationary``, ``meeting`` and ``poles`` factors, found once with the dimensions symbolic,
+    are specialised rather than eliminated again."""
     factors = [sympy.expand(f.xreplace(values)) for f in stationary]
     fixed_meeting = None if meeting is None else [sympy.expand(f.xreplace(values)) for f in meeting]
+    fixed_poles = None if poles is None else [sympy.expand(f.xreplace(values)) for f in poles]
     with mpmath.workdps(DIGITS):
-        return critical_points(problem.at(values), factors, lo, hi, fixed_meeting)
+        return critical_points(problem.at(values), factors, lo, hi, fixed_meeting, fixed_poles)
 
 
 def _mp(number: Number) -> mpmath.mpf:

@@ -141,7 +141,8 @@ class ExtremumFamily:
         design = self._design(values)
         if design is None:
             return None
-        points = points_in(design.problem, design.stationary_polys, design.meeting_polys, *self.span)
+        points = points_in(design.problem, design.stationary_polys, design.meeting_polys, *self.span,
+                           design.pole_polys)
         if not any(p.value == p.value for p in points):
             return None  # it assembles nowhere on the range: ``extremum`` says how it fails
         scale = self.problem.scale
@@ -244,6 +245,7 @@ class _Design:
         self.stationary_polys = [_univariate(f, names[1]) for f in stationary.exact[1]]
         self._meeting = _meeting(numerator, valid, names)
         self.meeting_polys = [p for p, _ in self._meeting]
+        self.pole_polys = [_leading_in_u(numerator, names)]  # ``pole_factors``, unfactored: the same roots
 
     def exact(self, best: CriticalPoint) -> tuple[sympy.Expr | None, sympy.Expr | None]:
         """``(degrees, via)`` of the angle's extreme ``best`` (its via's point), as ``extremum``'s ``exact``."""
@@ -301,6 +303,13 @@ def _meeting(numerator: flint.fmpq_mpoly, valid: Sequence[flint.fmpq_mpoly], nam
                 found.append((poly, sympy.Add(*[sympy.Integer(int(c)) * variable**k
                                                 for k, c in enumerate(factor.coeffs()) if c != 0])))
     return found
+
+
+def _leading_in_u(numerator: flint.fmpq_mpoly, names: tuple[str, str]) -> flint.fmpq_poly:
+    """The coefficient in ``t`` of the highest power of ``u`` in ``numerator`` (in ``u, t``)."""
+    top = numerator.degrees()[0]
+    return _univariate(numerator.context().from_dict({m: c for m, c in numerator.to_dict().items() if m[0] == top}),
+                       names[1])
 
 
 def _moving(numerator: flint.fmpq_mpoly) -> flint.fmpq_mpoly | None:

@@ -49,16 +49,27 @@ def report_extremum(d: Document) -> str:
              + (f" (at {dims})" if dims else "") + ":"]
     if angle:
         lines.append(f"  (an angle in degrees, {angle['degrees']}, found through {angle['via']})")
-    lines += [f"  {p['kind']:10} {p['value']:.12g}{unit} at {p['enclosure' + suffix]}{at}" for p in d["critical_points"]]
+    lines += [f"  {p['kind']:10} {p['value']:+.12g} as {d['input']} {_towards(p)} {p['enclosure' + suffix]}{at}"
+              if "limit" in p else f"  {p['kind']:10} {p['value']:.12g}{unit} at {p['enclosure' + suffix]}{at}"
+              for p in d["critical_points"]]
     lines += [f"  {'end':10} {p['value']:.12g}{unit} at {p['input' + suffix]:g}{at}" for p in d["endpoints"]]
     for key in ("minimum", "maximum"):
         p = d[key]
+        if "limit" in p:
+            lines.append(f"{key}: {p['limit']}: unbounded near {d['input']} = {p['input' + suffix]:.12g}{at} "
+                         f"(a pole: {p['limit']} as {d['input']} {_towards(p)} it)")
+            continue
         lines.append(f"{key}: {p['value']:.12g}{unit} at {p['input' + suffix]:.12g}{at} ({p['kind']})")
         if p.get("exact"):
             lines.append(f"  exactly {p['exact']} deg, where {d['angle']['via']} = {p['exact_via']}")
     if "closed_form" in d:
         lines += _report_closed_form(d["closed_form"], d["input"], at)
     return "\n".join(lines)
+
+
+def _towards(point: Document) -> str:
+    """How the input comes to a pole the output runs off at: rising to it or falling to it (or at a range end)."""
+    return {"below": "rises to", "above": "falls to"}.get(point.get("side", ""), "tends to")
 
 
 def _report_closed_form(form: Document, name: str, at: str = " deg") -> list[str]:
@@ -73,6 +84,9 @@ def _report_closed_form(form: Document, name: str, at: str = " deg") -> list[str
             where = _interval(region)
             if region["at"] == "nowhere":
                 lines.append(f"    {where}: the output is not real anywhere on the range (no assembly)")
+                continue
+            if region["at"] == "unbounded":
+                lines.append(f"    {where}: the output is unbounded (a pole in the range): no extreme")
                 continue
             what = {"endpoint": "the minimiser leaves the range; the minimum is at the end",
                     "dead centre": "at the dead centre (where the branch stops assembling)"}.get(region["at"],
