@@ -188,7 +188,7 @@ def test_a_hostile_name_is_refused_and_never_a_path(capsys, tmp_path):
         path = tmp_path / "hostile.toml"
         path.write_text(text.replace('name = "three-pairs"', f"name = {json.dumps(hostile)}"))
         code, _, err = run(capsys, "synthesize", "function", str(path), "--out", str(tmp_path / "out"))
-        assert code == 2 and "hostile.toml: name: expected letters, digits" in err and err.count("\n") == 1
+        assert code == 2 and "hostile.toml: name: expected at most 80 letters, digits" in err and err.count("\n") == 1
     assert sorted(p.name for p in tmp_path.iterdir()) == ["hostile.toml"]
 
 
