@@ -134,10 +134,11 @@ def _root_matching(factor: sympy.Expr | None, variable: sympy.Symbol, target: mp
         return None
     candidates = []
     for root in sympy.roots(sympy.Poly(factor, variable)):
-        for form in {root, sympy.sqrtdenest(root), sympy.radsimp(root)}:
+        for form in dict.fromkeys([root, sympy.sqrtdenest(root), sympy.radsimp(root)]):
             if abs(_numeric(form, values) - target) <= MATCH * (1 + abs(target)):
                 candidates.append(form)
-    return min(candidates, key=sympy.count_ops, default=None)
+    # ties broken by the text: the same form in every process (a set's order follows the hash seed)
+    return min(candidates, key=lambda form: (sympy.count_ops(form), str(form)), default=None)
 
 
 def _exact_degrees(value: mpmath.mpf) -> sympy.Rational:
