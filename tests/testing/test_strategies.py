@@ -150,9 +150,11 @@ def test_group_scenes_are_one_group_of_two_points_solved_together(scene):
 
 
 def test_the_scene_type_draws_points_solved_together_too():
-    from hypothesis import find
+    from hypothesis import Phase, find
 
     from algkin.scene import Scene
 
-    found = find(st.from_type(Scene), lambda scene: bool(scene.unknown_points), settings=settings(database=None))
+    # the first one found is enough: shrinking it assembled scene after scene (25 s of the suite)
+    found = find(st.from_type(Scene), lambda scene: bool(scene.unknown_points),
+                 settings=settings(database=None, phases=[Phase.generate]))
     assert found.name in ("3rpr-drawn", "triad-drawn")
