@@ -84,14 +84,9 @@ def unsplit_root(expr: sympy.Expr) -> sympy.Expr:
     number, rest = expr.as_coeff_Mul()
     if rest == 1 or number < 0:  # sympy keeps a -1 under the root, its own way
         return sympy.sqrt(expr)
-    # The product put in sympy's order directly: its constructor would ask the signs again (tens
-    # of milliseconds where the number leaves a surd, sqrt(2) in front).
-    coefficient, surd = sympy.sqrt(number).as_coeff_Mul()
-    factors = [sympy.Pow(rest, sympy.S.Half, evaluate=False), *([] if surd == 1 else [surd])]
-    _mulsort(factors)
-    if coefficient != 1:
-        factors.insert(0, coefficient)
-    return factors[0] if len(factors) == 1 else sympy.Mul._from_args(factors, is_commutative=True)
+    # ``product``: sympy's constructor would ask the signs again (tens of milliseconds where the number
+    # leaves a surd, sqrt(2) in front)
+    return product(sympy.sqrt(number), sympy.Pow(rest, sympy.S.Half, evaluate=False))
 
 
 def product(*factors: sympy.Expr) -> sympy.Expr:

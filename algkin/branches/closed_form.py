@@ -178,8 +178,10 @@ def _nested_over_roots(definition: sympy.Expr, roots: list[sympy.Pow], substitut
         return None
     powers = [f for f in definition.args if f in roots]
     rest = sympy.Mul(*[f for f in definition.args if f not in roots])
+    if roots_in([rest]):
+        return None
     parts = [_nested_value(e, substitution, inputs, tower) for e in (rest, *(p.base for p in powers))]
-    if roots_in([rest]) or any(part is None for part in parts):
+    if any(part is None for part in parts):
         return None
     numerator, *radicands = parts
     return product(numerator, *[_root_power(r, p.exp) for r, p in zip(radicands, powers)])
