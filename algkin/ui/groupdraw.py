@@ -22,7 +22,7 @@ from typing import TYPE_CHECKING, Any, TypeVar, Union
 import numpy as np
 
 from ..errors import UsageError
-from ..runtime.files import atomic_output, check_output
+from ..runtime.files import atomic_output, bytes_written
 from ..runtime.validation import real
 from .groupmotion import GroupMotion, Placed
 from .plot import new_figure
@@ -36,7 +36,7 @@ if TYPE_CHECKING:
 PathT = TypeVar("PathT", bound=Union[str, "os.PathLike[str]"])  # a path given back as it came
 Bounds = tuple[float, float, float, float]
 
-__all__ = ["modes_figure", "draw_configuration", "animate_modes", "plot_groups"]
+__all__ = ["modes_figure", "draw_configuration", "animate_modes", "groups_file"]
 
 _BAR: dict[str, Any] = dict(color="tab:blue", linewidth=2.5, solid_capstyle="round", zorder=2)
 _JOINT: dict[str, Any] = dict(marker="o", markersize=6, color="black", markerfacecolor="white", zorder=4)
@@ -200,11 +200,12 @@ def _value(motion: GroupMotion, texts: Sequence[str]) -> float | None:
     return value
 
 
-def plot_groups(scene: Scene, out: PathT, *, inputs: Sequence[str] = (), branch: str | None = None,
-                ranges: Sequence[str] = ()) -> PathT:
-    """``algkin plot`` on a scene with points solved together: every mode at the input (.png, .svg,
-    .pdf), the motion (.gif), the page with the input's slider and a mode selector (.html)."""
-    from .plot import save
+def groups_file(scene: Scene, out: str | os.PathLike[str], *, inputs: Sequence[str] = (), branch: str | None = None,
+                ranges: Sequence[str] = ()) -> bytes:
+    """What ``algkin plot`` writes to ``out`` for a scene with points solved together, as bytes (nothing
+    written): every mode at the input (.png, .svg, .pdf), the motion (.gif), the page with the input's
+    slider and a mode selector (.html)."""
+    from .plot import image
 
     suffix = pathlib.Path(out).suffix.lower()
     if suffix == ".mp4":
@@ -213,13 +214,12 @@ def plot_groups(scene: Scene, out: PathT, *, inputs: Sequence[str] = (), branch:
         raise UsageError("--branch", branch, "every mode is drawn with points solved together; leave out --branch")
     if ranges:
         raise UsageError("--range-of", ranges[0], "points solved together take their dimensions' values: use --set")
-    check_output("--out", out)
     motion = GroupMotion(scene)
     value = _value(motion, inputs)
     if suffix == ".html":
-        from .html.groups import write_groups
+        from .html.groups import group_page
 
-        return write_groups(motion, out, value)
+        return group_page(motion, value).encode("utf-8")
     if suffix == ".gif":
-        return animate_modes(motion, out)
-    return save(modes_figure(motion, value), out)
+        return bytes_written(lambda path: animate_modes(motion, path), suffix)
+    return image(modes_figure(motion, value), suffix)
