@@ -200,6 +200,12 @@ def test_range_of_sets_a_slider_of_the_page(tmp_path):
     ["--out", "x.html", "--range-of", "a=2:1"],      # lo above hi
     ["--out", "x.html", "--range-of", "a=x:1"],      # not a number
     ["--out", "x.html", "--range-of", "a=0:inf"],    # not finite
+    ["--out", "x.html", "--range-of", "a=nan:2"],
+    ["--out", "x.html", "--range-of", "a=1:1"],      # lo at hi
+    # a, l and m are lengths in fourbar.toml (the crank's, the dyad's): positive at both ends
+    ["--out", "x.html", "--range-of", "a=-1:1"],
+    ["--out", "x.html", "--range-of", "a=0:1"],
+    ["--out", "x.html", "--range-of", "m=-4:-1"],
     ["--out", "x.html", "--range-of", "a0.5:2"],     # no name
     ["--out", "x.html", "--range-of", "zz=1:2"],     # not a dimension
     ["--out", "x.png", "--range-of", "a=0.5:2"],     # no sliders in a .png
@@ -209,6 +215,15 @@ def test_a_bad_range_of_exits_2_with_one_line_and_writes_nothing(tmp_path, args)
     done = plot("fourbar", *[str(tmp_path / a) if a.startswith("x.") else a for a in args])
     assert one_line(done, 2) and done.stderr.startswith("algkin: error: --range-of="), done.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_range_of_a_dimension_that_is_no_length_may_cross_zero(tmp_path):
+    # In fourbar.toml d places the fixed pivot D = (d, 0) and p, q the coupler point in the frame of AB:
+    # coordinates, which any sign keeps a valid scene.
+    out = tmp_path / "page.html"
+    assert plot("fourbar", "--out", out, "--range-of", "d=-5:5", "--range-of", "p=-1:1").returncode == 0
+    sliders = {p["name"]: (p["lo"], p["hi"]) for p in page_model(out)["params"]}
+    assert sliders["d"] == (-5, 5) and sliders["p"] == (-1, 1)
 
 
 NEVER = (CATALOG / "chebyshev-lambda.toml").read_text().replace("fixed = [2, 0]", "fixed = [20, 0]")
