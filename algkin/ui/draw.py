@@ -24,6 +24,7 @@ import sympy
 from ..errors import UsageError
 from ..runtime.budget import Budget, Deadline, started
 from ..runtime.files import atomic_output, bytes_written, check_output, write_atomic
+from ..runtime.terminal import one_line
 from ..runtime.validation import real
 from ..scene.load import as_scene
 from .plot import FORMATS as FIGURE_FORMATS, new_figure
@@ -267,7 +268,7 @@ def _pose_title(motion: Motion) -> Callable[[Pose], str]:
     """The title of a figure of one configuration: the scene, its input angles, its branch."""
     def title(pose: Pose) -> str:
         angles = ", ".join(f"{n} = {motion.inputs[n].shown(v)}" for n, v in pose.inputs.items())
-        return f"{motion.scene.name}: {angles}, {pose.branch}"
+        return f"{one_line(motion.scene.name)}: {angles}, {pose.branch}"
     return title
 
 
@@ -394,7 +395,7 @@ def modes_figure(motion: Motion, inputs: Mapping[str, float] | None = None,
         _finish(axes, f"{branch.label}" + (" (scene's choice)" if branch.selected else ""), motion.scene.unit)
         axes.label_outer()  # the shared y scale is read off the first panel
     angles = ", ".join(f"{n} = {motion.inputs[n].shown(v)}" for n, v in motion.complete(inputs)[0].items())
-    figure.suptitle(f"{motion.scene.name}: assembly modes at {angles}", parse_math=False)
+    figure.suptitle(f"{one_line(motion.scene.name)}: assembly modes at {angles}", parse_math=False)
     return figure
 
 
@@ -417,7 +418,7 @@ def animate(motion: Motion, out: PathT, parameters: Mapping[str, float] | None =
     name = next(iter(motion.inputs))
     shown = motion.inputs[name].shown
     live = LiveFigure(motion, parameters, branch, every_mode=False,
-                      title=lambda pose: f"{motion.scene.name}: {name} = {shown(pose.inputs[name])}")
+                      title=lambda pose: f"{one_line(motion.scene.name)}: {name} = {shown(pose.inputs[name])}")
     poses = motion.poses(parameters, branch, frames)
     with atomic_output(out) as temporary:  # the writers infer the format from the kept suffix
         if suffix == ".gif":

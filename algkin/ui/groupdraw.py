@@ -23,6 +23,7 @@ import numpy as np
 
 from ..errors import UsageError
 from ..runtime.files import atomic_output, bytes_written
+from ..runtime.terminal import one_line
 from ..runtime.validation import real
 from .groupmotion import GroupMotion, Placed
 from .plot import new_figure
@@ -138,7 +139,7 @@ def modes_figure(motion: GroupMotion, value: float | None = None) -> Figure:
             draw_configuration(axes, motion, placed.points, color=_MODES[k % len(_MODES)], gid=f"mode-{k}-")
             _finish(axes, bounds, f"{placed.label} ({placed.how})")
         axes.label_outer()
-    figure.suptitle(f"{motion.scene.name}: every real mode at {motion.input.name} = {motion.input.shown(value)}",
+    figure.suptitle(f"{one_line(motion.scene.name)}: every real mode at {motion.input.name} = {motion.input.shown(value)}",
                     parse_math=False)
     return figure
 
@@ -171,7 +172,7 @@ def animate_modes(motion: GroupMotion, out: PathT, *, frames: int = 72, fps: int
                       va="center", color="tab:red", wrap=True, parse_math=False)
         axes.set_xlim(bounds[0], bounds[1])  # axline and fill must not move the limits
         axes.set_ylim(bounds[2], bounds[3])
-        axes.set_title(f"{motion.scene.name}: {motion.input.name} = {motion.input.shown(value)}",
+        axes.set_title(f"{one_line(motion.scene.name)}: {motion.input.name} = {motion.input.shown(value)}",
                        fontsize="medium", parse_math=False)
 
     movie = animation.FuncAnimation(figure, frame, frames=list(np.linspace(lo, hi, frames)), cache_frame_data=False)

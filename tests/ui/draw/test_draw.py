@@ -4,10 +4,12 @@ import io
 import json
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
 import types
+from xml.etree import ElementTree
 
 import attrs
 import numpy as np
@@ -22,6 +24,7 @@ from algkin.errors import UsageError  # noqa: E402
 from algkin.ui.draw import animate, mechanism_figure, modes_figure, parse_inputs, parse_ranges  # noqa: E402
 from algkin.analyses.motion import Motion  # noqa: E402
 from algkin.scene import load_scene  # noqa: E402
+from algkin.ui.cli import main  # noqa: E402
 
 from ...derivation.test_still_points import STILL  # noqa: E402
 from ...hand_linkages import CHEBYSHEV, fourbar  # noqa: E402
@@ -283,6 +286,20 @@ def test_a_write_that_fails_is_one_line(tmp_path, suffix):
     done = plot("chebyshev-lambda", "--out", out)
     assert one_line(done, 1) and done.stderr.startswith("algkin: failed: "), done.stderr
     assert list(tmp_path.iterdir()) == [out]
+
+
+@pytest.mark.parametrize("args", [[], ["--modes"], ["--of", "dist(P, D)"]], ids=["mechanism", "modes", "quantity"])
+def test_a_scene_name_with_control_characters_is_written_out_in_a_figure(tmp_path, args):
+    # An SVG holds each title as text (a comment): no raw control byte, which no XML may hold.
+    scene = tmp_path / "controls.toml"
+    scene.write_text((CATALOG / "fourbar.toml").read_text().replace(
+        'name = "fourbar"', 'name = "four\\u001b[31mbar\\u0007\\u0000\\nx"'))
+    out = tmp_path / "drawing.svg"
+    assert main(["plot", str(scene), "--out", str(out), *args]) == 0
+    data = out.read_bytes()
+    assert not re.search(rb"[\x00-\x08\x0b\x0c\x0e-\x1f\x7f]", data)
+    assert rb"four\x1b[31mbar\x07\x00\nx" in data  # by hand: each as Python writes its escape
+    ElementTree.fromstring(data)  # well-formed
 
 
 def test_a_scene_name_is_shown_as_text_not_mathtext():
