@@ -29,6 +29,7 @@ import sympy
 from ..errors import UsageError
 from ..evaluate import MPMATH, evaluate
 from ..runtime import suggest, validation
+from ..runtime.budget import Budget, Deadline, started
 from ..scene import Scene
 from ..scene.implicit.base import FloatArray
 from ..scene.load import SceneLike, Values, as_scene
@@ -46,19 +47,23 @@ __all__ = ["load_quantities", "Mechanism", "Quantity"]
 
 
 def load_quantities(scene: SceneLike, params: Sequence[str] = (),
-                    set: Values | None = None) -> Mechanism:  # noqa: A002 - ``set=`` is the public name (the command line's --set)
+                    set: Values | None = None,  # noqa: A002 - ``set=`` is the public name (the command line's --set)
+                    *, budget: Budget | Deadline | None = None) -> Mechanism:
     """A mechanism from a catalog name, a path or a ``Scene``; ``params`` stay symbolic, and
-    ``set`` gives others exact values in place of their defaults (``set={"b": "3/2"}``)."""
+    ``set`` gives others exact values in place of their defaults (``set={"b": "3/2"}``).
+    A ``Budget`` (started now) or the ``Deadline`` of one running bounds the eliminations of
+    its quantities' derivations and extrema: their time and their eliminants' terms."""
     names = validation.names("params", params) or ()
-    return Mechanism(with_values(as_scene(scene), set, names), names)
+    return Mechanism(with_values(as_scene(scene), set, names), names, deadline=started(validation.budget(budget)))
 
 
 class Mechanism:
     """A scene with some dimensions symbolic: the place to ask for quantities."""
 
-    def __init__(self, scene: Scene, params: Sequence[str] = ()) -> None:
+    def __init__(self, scene: Scene, params: Sequence[str] = (), *, deadline: Deadline | None = None) -> None:
         self.scene = scene
         self.params = tuple(params)
+        self.deadline = deadline  # what its quantities' eliminations keep to (None: no bound)
 
     @property
     def parameters(self) -> dict[str, sympy.Expr]:
@@ -129,14 +134,15 @@ class Quantity:
         """The mechanism's scene prepared for this quantity (``algkin.prepare``): its derivation's and extremum's."""
         from ..derivation.prepared import prepare
 
-        return prepare(self.mechanism.scene, outputs=[self.text], params=self.mechanism.params)
+        return prepare(self.mechanism.scene, outputs=[self.text], params=self.mechanism.params,
+                       deadline=self.mechanism.deadline)
 
     @cached_property
     def derivation(self) -> Derivation:
         """The quantity's derivation, its ``mode`` the branch it calls selected."""
         from ..derivation.pipeline import derive
 
-        derived = derive(self.prepared, samples=0)
+        derived = derive(self.prepared, samples=0, budget=self.mechanism.deadline)
         if self.mode is None:
             return derived
         labels = [b.label for b in derived.branches]
@@ -156,7 +162,8 @@ class Quantity:
     def _problem(self) -> Problem:
         from .extremum import problem_for
 
-        return problem_for(self.derivation, self.text, witnesses=self.prepared.witnesses)
+        return problem_for(self.derivation, self.text, witnesses=self.prepared.witnesses,
+                           deadline=self.mechanism.deadline)
 
     @property
     def input(self) -> sympy.Symbol:
@@ -287,7 +294,8 @@ class Quantity:
         """Critical points, minimum and maximum; closed forms in the symbolic dimensions."""
         from .extremum import extremum_of
 
-        return extremum_of(self.derivation, self.text, range, largest, witnesses=self.prepared.witnesses)
+        return extremum_of(self.derivation, self.text, range, largest, witnesses=self.prepared.witnesses,
+                           deadline=self.mechanism.deadline)
 
     def __repr__(self) -> str:
         mode = "" if self.mode is None else f", mode={self.mode!r}"

@@ -33,12 +33,12 @@ import pathlib
 import shutil
 import stat
 import tempfile
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import TypeAlias
 
 from ..errors import OutputError, UsageError
 
-__all__ = ["atomic_output", "write_atomic", "check_output", "check_directory"]
+__all__ = ["atomic_output", "write_atomic", "bytes_written", "check_output", "check_directory"]
 
 _Path: TypeAlias = "str | os.PathLike[str]"  # a path as a caller gives it
 
@@ -68,6 +68,20 @@ def write_atomic(path: _Path, data: str | bytes) -> None:
     """Write ``data`` (text as UTF-8, or bytes) to ``path`` through ``atomic_output``."""
     with atomic_output(path) as temporary:
         temporary.write_bytes(data.encode("utf-8") if isinstance(data, str) else data)
+
+
+def bytes_written(write: Callable[[pathlib.Path], object], suffix: str) -> bytes:
+    """The bytes ``write(path)`` writes to a new file named with ``suffix`` (for a writer that
+    takes only a path, and may infer the format from its suffix), read back; the file is then
+    removed, with the private folder it was made in.
+
+    >>> bytes_written(lambda path: path.write_text("frames"), ".gif")
+    b'frames'
+    """
+    with tempfile.TemporaryDirectory(prefix="algkin.") as folder:
+        path = pathlib.Path(folder) / f"written{suffix}"
+        write(path)
+        return path.read_bytes()
 
 
 def _temporary(folder: _Path, target: _Path) -> str:

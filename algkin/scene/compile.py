@@ -299,6 +299,24 @@ class DimensionChecks:
     def reach(self, bits: Mapping[str, int]) -> int:
         return max((bits_bound(v, bits) for v in (*self.lengths, *self.numbers)), default=0)
 
+    def not_positive(self, values: Mapping[str, sympy.Expr]) -> tuple[sympy.Expr, sympy.Expr] | None:
+        """The first of ``lengths`` that compiling with ``values`` (dimension name -> exact value)
+        would refuse, with its value there; None if none (one still in a symbol is not decided).
+
+        >>> from algkin.scene import load_scene
+        >>> checks = dimension_checks(load_scene("fourbar"), ["P"], ["a", "l"])
+        >>> checks.not_positive({"a": sympy.Integer(-1), "l": sympy.Integer(3)})
+        (a, -1)
+        >>> checks.not_positive({"a": sympy.Integer(1)}) is None
+        True
+        """
+        for length in self.lengths:
+            value = length.xreplace({s: values[s.name] for s in length.free_symbols
+                                     if isinstance(s, sympy.Symbol) and s.name in values})
+            if _not_positive(value):
+                return length, value
+        return None
+
 
 def dimension_checks(scene: Scene, outputs: Sequence[str] | None, params: Iterable[str]) -> DimensionChecks:
     """The values ``compile_scene(scene, outputs, params)`` checks, of the constructions it builds,
@@ -432,9 +450,14 @@ def _check_lengths(scene: Scene, name: str, construction: Construction,
         for variable, given in moving:
             ends = [e.xreplace({variable: end}) for e in ends for end in (given.lo, given.hi)]
         for end in ends:
-            if end.is_number and not end > 0:
+            if _not_positive(end):
                 raise SceneError(scene.source, f"points.{name}", f"length must be positive, got {length}"
                                  + (f" = {end} at an end of its input's range" if end != length else ""))
+
+
+def _not_positive(length: sympy.Expr) -> bool:
+    """Whether ``length``, a number, is not positive (a length in a symbol is not decided here)."""
+    return bool(length.is_number and not length > 0)
 
 
 def _check_direction(scene: Scene, name: str, construction: Construction) -> None:

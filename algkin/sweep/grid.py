@@ -2,7 +2,7 @@
 
 ``NAME=LO:HI:COUNT`` spaces COUNT exact values from LO to HI, both included (LO and HI exact:
 ``0.1`` is 1/10, ``3/2`` is 3/2); several ``--grid`` options make their product, the first
-varying slowest. With ``--random N`` each ``NAME=LO:HI`` is a range and the N designs are
+varying slowest. With ``--random N`` each ``NAME=LO:HI`` is a range and N distinct designs are
 drawn with a seed, each value ``LO + (HI - LO) * k / 10**6`` for a drawn whole ``k``: exact,
 and the same on every machine.
 
@@ -175,13 +175,47 @@ def grid_designs(axes: Mapping[str, Sequence[Fraction]]) -> Designs:
 
 
 def random_designs(ranges: Mapping[str, tuple[Fraction, Fraction]], count: int, seed: int) -> Designs:
-    """``count`` designs drawn uniformly (on a lattice of RANDOM_STEPS steps) in ``ranges``, from ``seed``."""
+    """``count`` distinct designs drawn uniformly (on a lattice of RANDOM_STEPS steps) in ``ranges``, from
+    ``seed``: a draw that repeats an earlier design is dropped and drawn again, further on in the seed's
+    sequence. More designs than the ranges hold (a range LO = HI is one value) are refused.
+
+    >>> random_designs({"a": (Fraction(1), Fraction(1))}, 2, seed=0)
+    Traceback (most recent call last):
+    ...
+    algkin.errors.UsageError: random=2: the ranges hold 1 distinct design at most (a=1:1: one value)
+    """
     if not 1 <= count <= MAX_DESIGNS:
         raise UsageError("random", count, f"expected a number of designs from 1 to {MAX_DESIGNS}")
     if seed < 0:
         raise UsageError("seed", seed, "expected a whole number from 0")
-    steps = np.random.Generator(np.random.PCG64(seed)).integers(0, RANDOM_STEPS, size=(count, len(ranges)),
-                                                                endpoint=True)
     bounds = list(ranges.values())
+    spread = np.array([lo < hi for lo, hi in bounds])
+    held = (RANDOM_STEPS + 1) ** int(spread.sum())
+    if count > held:
+        single = [f"{n}={lo}:{hi}" for n, (lo, hi) in ranges.items() if lo == hi]
+        raise UsageError("random", count, f"the ranges hold {held} distinct design{'s' if held > 1 else ''} at most "
+                                          f"({', '.join(single)}: {'one value' if len(single) == 1 else 'one value each'})")
+    steps = _distinct_steps(np.random.Generator(np.random.PCG64(seed)), spread, count)
     return Designs(list(ranges), count, lambda k: [lo + (hi - lo) * Fraction(int(step), RANDOM_STEPS)
                                                    for (lo, hi), step in zip(bounds, steps[k])])
+
+
+# Rows drawn at once to replace repeats: enough that a sweep near all its ranges hold ends in few rounds.
+_REDRAW = 2**16
+
+
+def _distinct_steps(generator: np.random.Generator, spread: np.ndarray, count: int) -> np.ndarray:
+    """``count`` rows of whole steps in [0, RANDOM_STEPS], one per range, no two alike where the ranges of
+    more than one value (``spread``) are concerned, the others' steps 0: the generator's first ``count``
+    rows in order, each repeat dropped, then new rows drawn in turn until there are ``count``."""
+    rows: list[np.ndarray] = []
+    seen: set[tuple[int, ...]] = set()
+    size = count
+    while len(rows) < count:
+        for row in generator.integers(0, RANDOM_STEPS, size=(size, len(spread)), endpoint=True) * spread:
+            key = tuple(row.tolist())
+            if key not in seen and len(rows) < count:
+                seen.add(key)
+                rows.append(row)
+        size = max(count - len(rows), _REDRAW)
+    return np.array(rows).reshape(count, len(spread))

@@ -16,7 +16,6 @@ and the page writes what it shows to ``<output id="state" data-shown data-total 
 
 from __future__ import annotations
 
-import html
 import math
 import pathlib
 from fractions import Fraction
@@ -27,7 +26,7 @@ import numpy as np
 
 from ..errors import UsageError
 from ..runtime.files import check_output, write_atomic
-from .html import fill, script_json
+from .html import fill, markup, script_json
 
 if TYPE_CHECKING:
     from ..scene import Scene
@@ -148,7 +147,7 @@ def _entry(row: dict[str, Any], swept: list[str], tracer: _Tracer) -> dict[str, 
 def atlas_page(data: dict[str, Any]) -> str:
     """The HTML text of the atlas for ``data`` (``atlas_data``)."""
     template = resources.files("algkin.ui.html").joinpath("atlas.html").read_text(encoding="utf-8")
-    return fill(template, {"title": html.escape(f"algkin atlas: {data['scene']}", quote=True),
+    return fill(template, {"title": markup(f"algkin atlas: {data['scene']}", line=True),
                            "data": script_json(data)})
 
 

@@ -22,7 +22,9 @@ import numpy as np
 import sympy
 
 from ..errors import UsageError
-from ..runtime.files import atomic_output, check_output
+from ..runtime.budget import Budget, Deadline, started
+from ..runtime.files import atomic_output, bytes_written, check_output, write_atomic
+from ..runtime.terminal import one_line
 from ..runtime.validation import real
 from ..scene.load import as_scene
 from .plot import FORMATS as FIGURE_FORMATS, new_figure
@@ -42,7 +44,7 @@ if TYPE_CHECKING:
 Bounds = tuple[float, float, float, float]  # xmin, xmax, ymin, ymax
 PathT = TypeVar("PathT", bound=Union[str, "os.PathLike[str]"])  # a path given back as it came
 
-__all__ = ["mechanism_figure", "modes_figure", "draw_pose", "PoseArtists", "LiveFigure", "draw_curve", "animate", "parse_inputs", "parse_ranges", "plot_mechanism", "FORMATS"]
+__all__ = ["mechanism_figure", "modes_figure", "draw_pose", "PoseArtists", "LiveFigure", "draw_curve", "animate", "parse_inputs", "parse_ranges", "plot_mechanism", "mechanism_file", "FORMATS"]
 
 FORMATS = FIGURE_FORMATS + (".gif", ".mp4", ".html")  # a still figure, or the motion animated
 # matplotlib's keyword arguments, of many types
@@ -266,7 +268,7 @@ def _pose_title(motion: Motion) -> Callable[[Pose], str]:
     """The title of a figure of one configuration: the scene, its input angles, its branch."""
     def title(pose: Pose) -> str:
         angles = ", ".join(f"{n} = {motion.inputs[n].shown(v)}" for n, v in pose.inputs.items())
-        return f"{motion.scene.name}: {angles}, {pose.branch}"
+        return f"{one_line(motion.scene.name)}: {angles}, {pose.branch}"
     return title
 
 
@@ -352,10 +354,11 @@ class LiveFigure:
 
 def mechanism_figure(motion: Motion, inputs: Mapping[str, float] | None = None,
                      parameters: Mapping[str, float] | None = None, branch: str | None = None,
-                     curve: bool = True) -> Figure:
+                     curve: bool = True, *, budget: Budget | Deadline | None = None) -> Figure:
     """The configuration at ``inputs`` with each traced point's trajectory and implicit curve.
 
-    The implicit curves are derived at the dimensions' defaults, so they are drawn only there.
+    The implicit curves are derived at the dimensions' defaults, so they are drawn only there;
+    their eliminations keep to ``budget`` (a ``Budget``, or a running ``Deadline``), if any.
     """
     inputs = inputs if inputs is not None else motion.start(parameters, branch)
     live = LiveFigure(motion, parameters, branch)
@@ -365,8 +368,9 @@ def mechanism_figure(motion: Motion, inputs: Mapping[str, float] | None = None,
     if curve and at_defaults and len(motion.inputs) == 1:
         from ..derivation.pipeline import curve as derive_curve
 
+        deadline = started(budget)  # one for every curve: the budget bounds them all
         for name in motion.traced:
-            draw_curve(live.axes, derive_curve(motion.scene, name, samples=0), live.bounds)
+            draw_curve(live.axes, derive_curve(motion.scene, name, samples=0, budget=deadline), live.bounds)
     # Below the axes: inside, it would cover a curve on one scene or another.
     live.figure.legend(loc="outside lower center", ncols=2, fontsize="small")
     return live.figure
@@ -391,7 +395,7 @@ def modes_figure(motion: Motion, inputs: Mapping[str, float] | None = None,
         _finish(axes, f"{branch.label}" + (" (scene's choice)" if branch.selected else ""), motion.scene.unit)
         axes.label_outer()  # the shared y scale is read off the first panel
     angles = ", ".join(f"{n} = {motion.inputs[n].shown(v)}" for n, v in motion.complete(inputs)[0].items())
-    figure.suptitle(f"{motion.scene.name}: assembly modes at {angles}", parse_math=False)
+    figure.suptitle(f"{one_line(motion.scene.name)}: assembly modes at {angles}", parse_math=False)
     return figure
 
 
@@ -410,17 +414,11 @@ def animate(motion: Motion, out: PathT, parameters: Mapping[str, float] | None =
     The axes are fitted to the drawn assembly mode. The still parts (axes, ticks, trajectories)
     are rendered once; each frame restores them and draws only the moving artists (blitting).
     """
-    import pathlib
-
-    from matplotlib import animation
-
-    suffix = pathlib.Path(out).suffix.lower()
-    if suffix == ".mp4" and not animation.writers.is_available("ffmpeg"):
-        raise UsageError("--out", str(out), "an .mp4 needs ffmpeg on PATH (not found); write a .gif instead")
+    suffix = _check_movie(out)
     name = next(iter(motion.inputs))
     shown = motion.inputs[name].shown
     live = LiveFigure(motion, parameters, branch, every_mode=False,
-                      title=lambda pose: f"{motion.scene.name}: {name} = {shown(pose.inputs[name])}")
+                      title=lambda pose: f"{one_line(motion.scene.name)}: {name} = {shown(pose.inputs[name])}")
     poses = motion.poses(parameters, branch, frames)
     with atomic_output(out) as temporary:  # the writers infer the format from the kept suffix
         if suffix == ".gif":
@@ -428,6 +426,16 @@ def animate(motion: Motion, out: PathT, parameters: Mapping[str, float] | None =
         else:
             _write_mp4(temporary, live, poses, fps)
     return out
+
+
+def _check_movie(out: str | os.PathLike[str]) -> str:
+    """The suffix of ``out``, an animation's, refused if it cannot be written here (an .mp4 with no ffmpeg)."""
+    from matplotlib import animation
+
+    suffix = os.path.splitext(out)[1].lower()
+    if suffix == ".mp4" and not animation.writers.is_available("ffmpeg"):
+        raise UsageError("--out", str(out), "an .mp4 needs ffmpeg on PATH (not found); write a .gif instead")
+    return suffix
 
 
 def _frames(live: LiveFigure, poses: Sequence[Pose], dpi: float) -> Iterator[NDArray[np.uint8]]:
@@ -522,33 +530,42 @@ def parse_ranges(texts: Sequence[str], option: str = "--range-of") -> dict[str, 
 
 
 def plot_mechanism(scene: str | Scene, out: PathT, inputs: Sequence[str] = (), branch: str | None = None,
-                   modes: bool = False, params: Sequence[str] | None = None, ranges: Sequence[str] = ()) -> PathT:
-    """``algkin plot SCENE --out F``: the format follows the suffix of ``out``; returns ``out``.
+                   modes: bool = False, params: Sequence[str] | None = None, ranges: Sequence[str] = (), *,
+                   budget: Budget | Deadline | None = None) -> PathT:
+    """``algkin plot SCENE --out F``: ``mechanism_file`` written to ``out``; returns ``out``.
 
-    ``ranges``: ``--range-of`` texts (``NAME=LO:HI``), the sliders' ranges of the .html page.
     A scene whose chosen assembly mode never assembles is refused before ``out`` is touched.
     """
-    import pathlib
+    _format(out)
+    check_output("--out", out)
+    write_atomic(out, mechanism_file(scene, out, inputs, branch, modes, params, ranges, budget=budget))
+    return out
 
+
+def mechanism_file(scene: str | Scene, out: str | os.PathLike[str], inputs: Sequence[str] = (),
+                   branch: str | None = None, modes: bool = False, params: Sequence[str] | None = None,
+                   ranges: Sequence[str] = (), *, budget: Budget | Deadline | None = None) -> bytes:
+    """What ``algkin plot SCENE --out OUT`` writes to ``out``, in the format of its suffix, as bytes;
+    nothing is written to ``out`` (the command line writes it, once the work is done in its budget).
+
+    ``ranges``: ``--range-of`` texts (``NAME=LO:HI``), the sliders' ranges of the .html page.
+    ``budget`` (a ``Budget`` or a running ``Deadline``) bounds the implicit curves' eliminations.
+    """
     from ..branches import check_assembly
     from ..analyses.motion import Motion
-    from .plot import save
+    from .plot import image
 
-    path = pathlib.Path(out)
-    suffix = path.suffix.lower()
-    if suffix not in FORMATS:
-        raise UsageError("--out", out, f"unknown format; valid: {', '.join(FORMATS)}")
-    check_output("--out", out)
+    suffix = _format(out)
     if modes and branch is not None:
         raise UsageError("--branch", branch, "--modes draws every assembly mode; leave out --branch")
     sliders = parse_ranges(ranges)
     loaded = as_scene(scene)
     if loaded.unknown_points:  # points solved together: every mode, from solve and follow
-        from .groupdraw import plot_groups
+        from .groupdraw import groups_file
 
         if params:
             raise UsageError("--param", params[0], "points solved together take their dimensions' values: use --set")
-        return plot_groups(loaded, out, inputs=inputs, branch=branch, ranges=ranges)
+        return groups_file(loaded, out, inputs=inputs, branch=branch, ranges=ranges)
     if sliders and suffix != ".html":
         raise UsageError("--range-of", ranges[0], "only the .html page has sliders; write a .html")
     motion = Motion(loaded, params)
@@ -556,10 +573,19 @@ def plot_mechanism(scene: str | Scene, out: PathT, inputs: Sequence[str] = (), b
     motion.branch_index(branch)  # a bad --branch fails before anything is drawn
     check_assembly(motion.compiled, motion.branches)
     if suffix == ".html":
-        from .html import write
+        from .html import page
 
-        return write(motion, out, chosen, branch, sliders)
+        return page(motion, chosen, branch, sliders).encode("utf-8")
     if suffix in (".gif", ".mp4"):
-        return animate(motion, out, branch=branch)
-    figure = modes_figure(motion, chosen) if modes else mechanism_figure(motion, chosen, branch=branch)
-    return save(figure, out)
+        _check_movie(out)
+        return bytes_written(lambda path: animate(motion, path, branch=branch), suffix)
+    figure = modes_figure(motion, chosen) if modes else mechanism_figure(motion, chosen, branch=branch, budget=budget)
+    return image(figure, suffix)
+
+
+def _format(out: str | os.PathLike[str]) -> str:
+    """The suffix of ``out`` (lower case), one of ``FORMATS``."""
+    suffix = os.path.splitext(out)[1].lower()
+    if suffix not in FORMATS:
+        raise UsageError("--out", out, f"unknown format; valid: {', '.join(FORMATS)}")
+    return suffix

@@ -22,7 +22,8 @@ from typing import TYPE_CHECKING, Any, TypeVar, Union
 import numpy as np
 
 from ..errors import UsageError
-from ..runtime.files import atomic_output, check_output
+from ..runtime.files import atomic_output, bytes_written
+from ..runtime.terminal import one_line
 from ..runtime.validation import real
 from .groupmotion import GroupMotion, Placed
 from .plot import new_figure
@@ -36,7 +37,7 @@ if TYPE_CHECKING:
 PathT = TypeVar("PathT", bound=Union[str, "os.PathLike[str]"])  # a path given back as it came
 Bounds = tuple[float, float, float, float]
 
-__all__ = ["modes_figure", "draw_configuration", "animate_modes", "plot_groups"]
+__all__ = ["modes_figure", "draw_configuration", "animate_modes", "groups_file"]
 
 _BAR: dict[str, Any] = dict(color="tab:blue", linewidth=2.5, solid_capstyle="round", zorder=2)
 _JOINT: dict[str, Any] = dict(marker="o", markersize=6, color="black", markerfacecolor="white", zorder=4)
@@ -138,7 +139,7 @@ def modes_figure(motion: GroupMotion, value: float | None = None) -> Figure:
             draw_configuration(axes, motion, placed.points, color=_MODES[k % len(_MODES)], gid=f"mode-{k}-")
             _finish(axes, bounds, f"{placed.label} ({placed.how})")
         axes.label_outer()
-    figure.suptitle(f"{motion.scene.name}: every real mode at {motion.input.name} = {motion.input.shown(value)}",
+    figure.suptitle(f"{one_line(motion.scene.name)}: every real mode at {motion.input.name} = {motion.input.shown(value)}",
                     parse_math=False)
     return figure
 
@@ -171,7 +172,7 @@ def animate_modes(motion: GroupMotion, out: PathT, *, frames: int = 72, fps: int
                       va="center", color="tab:red", wrap=True, parse_math=False)
         axes.set_xlim(bounds[0], bounds[1])  # axline and fill must not move the limits
         axes.set_ylim(bounds[2], bounds[3])
-        axes.set_title(f"{motion.scene.name}: {motion.input.name} = {motion.input.shown(value)}",
+        axes.set_title(f"{one_line(motion.scene.name)}: {motion.input.name} = {motion.input.shown(value)}",
                        fontsize="medium", parse_math=False)
 
     movie = animation.FuncAnimation(figure, frame, frames=list(np.linspace(lo, hi, frames)), cache_frame_data=False)
@@ -200,11 +201,12 @@ def _value(motion: GroupMotion, texts: Sequence[str]) -> float | None:
     return value
 
 
-def plot_groups(scene: Scene, out: PathT, *, inputs: Sequence[str] = (), branch: str | None = None,
-                ranges: Sequence[str] = ()) -> PathT:
-    """``algkin plot`` on a scene with points solved together: every mode at the input (.png, .svg,
-    .pdf), the motion (.gif), the page with the input's slider and a mode selector (.html)."""
-    from .plot import save
+def groups_file(scene: Scene, out: str | os.PathLike[str], *, inputs: Sequence[str] = (), branch: str | None = None,
+                ranges: Sequence[str] = ()) -> bytes:
+    """What ``algkin plot`` writes to ``out`` for a scene with points solved together, as bytes (nothing
+    written): every mode at the input (.png, .svg, .pdf), the motion (.gif), the page with the input's
+    slider and a mode selector (.html)."""
+    from .plot import image
 
     suffix = pathlib.Path(out).suffix.lower()
     if suffix == ".mp4":
@@ -213,13 +215,12 @@ def plot_groups(scene: Scene, out: PathT, *, inputs: Sequence[str] = (), branch:
         raise UsageError("--branch", branch, "every mode is drawn with points solved together; leave out --branch")
     if ranges:
         raise UsageError("--range-of", ranges[0], "points solved together take their dimensions' values: use --set")
-    check_output("--out", out)
     motion = GroupMotion(scene)
     value = _value(motion, inputs)
     if suffix == ".html":
-        from .html.groups import write_groups
+        from .html.groups import group_page
 
-        return write_groups(motion, out, value)
+        return group_page(motion, value).encode("utf-8")
     if suffix == ".gif":
-        return animate_modes(motion, out)
-    return save(modes_figure(motion, value), out)
+        return bytes_written(lambda path: animate_modes(motion, path), suffix)
+    return image(modes_figure(motion, value), suffix)

@@ -24,6 +24,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..errors import AlgkinError, UsageError
 from ..runtime.files import write_atomic
+from ..runtime.terminal import one_line
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -129,7 +130,7 @@ def quantity_figure(quantity: Quantity, found: Extremum, derivative: bool = Fals
     axes.set_xlabel(f"{name} (degrees)")
     per = f"{unit[:-1]} per radian)" if unit else " (per radian)"
     axes.set_ylabel(f"{label}{per}" if derivative else f"{text}{unit}")
-    axes.set_title(f"{'Derivative of ' if derivative else ''}{quantity.text} in {quantity.mechanism.scene.name}",
+    axes.set_title(f"{'Derivative of ' if derivative else ''}{quantity.text} in {one_line(quantity.mechanism.scene.name)}",
                    parse_math=False)  # a scene's name is text, never mathtext
     axes.grid(True)
     axes.legend()
@@ -215,7 +216,7 @@ def accuracy_figure(result: Accuracy | GroupAccuracy) -> Figure:
     axes.set_ylim(bottom=floor / 3)
     axes.set_xlabel("time per sample (ns)")
     axes.set_ylabel("max relative error")
-    axes.set_title(f"Speed against error: {result.point} of {result.scene}", parse_math=False)
+    axes.set_title(f"Speed against error: {result.point} of {one_line(result.scene)}", parse_math=False)
     axes.grid(True, which="both", linewidth=0.3)
     shown = [s for s in markers if any(r["strategy"] == s for r in rows)]
     # Beside the axes (the constrained layout makes room): inside, they would cover points.

@@ -9,6 +9,7 @@ import pytest
 import sympy
 
 import algkin
+from algkin.errors import BudgetExceeded, UsageError
 
 from ..hand_linkages import CHEBYSHEV, fourbar
 from .extremum.arm_by_hand import hand_minimum
@@ -107,3 +108,13 @@ def test_the_extremum_of_a_mode_is_that_modes():
         dense = [fourbar(a, **CHEBYSHEV, branch=mode)["B"][1] for a in np.linspace(0, 360, 3601)]
         assert float(found.maximum.value) == pytest.approx(max(dense), abs=1e-5)
         assert float(found.minimum.value) == pytest.approx(min(dense), abs=1e-5)
+
+
+def test_a_budget_bounds_the_eliminations_of_its_quantities():
+    # B's eliminant comes from the dyad's two circles, (B_x - a c)^2 + (B_y - a s)^2 = l^2 and one about D:
+    # by hand, more than 3 terms each.
+    quantity = algkin.load_quantities("fourbar", budget=algkin.Budget(terms=3)).output("dist(P, D)")
+    with pytest.raises(BudgetExceeded, match="max_terms=3: "):
+        quantity.extremum()
+    with pytest.raises(UsageError, match="budget=10: expected an algkin.Budget"):
+        algkin.load_quantities("fourbar", budget=10)

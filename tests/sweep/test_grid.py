@@ -1,7 +1,9 @@
 """Grid and random designs: exact values by hand, bad specs refused in one line."""
 
+import re
 from fractions import Fraction
 
+import numpy as np
 import pytest
 from hypothesis import given, strategies as st
 
@@ -77,6 +79,35 @@ def test_random_draws_repeat_with_the_seed_and_stay_in_range(seed, count):
             assert lo <= design[name] <= hi
             # on the lattice: (value - lo) / (hi - lo) is k / RANDOM_STEPS for a whole k
             assert ((design[name] - lo) / (hi - lo) * RANDOM_STEPS).denominator == 1
+
+
+@pytest.mark.parametrize("specs", [["a=0:1"], ["a=1:1", "l=0:1"]], ids=["one-range", "beside-one-value"])
+def test_random_designs_are_distinct(specs):
+    # 3000 draws on 10^6 + 1 steps repeat about 3000^2 / 2 / 10^6 = 4.5 times (the birthday bound): with
+    # seed 0, 7 times; each repeat is drawn again.
+    drawn = random_designs(parse_ranges(specs), 3000, 0)
+    assert len(drawn) == 3000 and len({tuple(d.values()) for d in drawn}) == 3000
+    if "a=1:1" in specs:
+        assert {d["a"] for d in drawn} == {1}
+
+
+def test_random_designs_keep_the_seeds_draws_up_to_its_first_repeat():
+    # The seed's sequence, read from numpy directly: k in [0, 10^6] per design; the designs are those
+    # draws, in order, until one repeats an earlier one.
+    ks = np.random.Generator(np.random.PCG64(0)).integers(0, RANDOM_STEPS, size=(3000, 1), endpoint=True)[:, 0]
+    first = next(i for i, k in enumerate(ks) if k in ks[:i])
+    drawn = random_designs(parse_ranges(["a=0:1"]), 3000, 0)
+    assert [d["a"] for d in drawn[:first]] == [Fraction(int(k), RANDOM_STEPS) for k in ks[:first]]
+
+
+@pytest.mark.parametrize("specs, count, says", [
+    (["a=1:1"], 2, "the ranges hold 1 distinct design at most (a=1:1: one value)"),
+    (["a=1:1", "l=3/2:3/2"], 5, "the ranges hold 1 distinct design at most (a=1:1, l=3/2:3/2: one value each)"),
+])
+def test_more_random_designs_than_the_ranges_hold_are_refused(specs, count, says):
+    with pytest.raises(UsageError, match=re.escape(says)):
+        random_designs(parse_ranges(specs), count, 0)
+    assert random_designs(parse_ranges(specs), 1, 0)[0]["a"] == 1  # the one design they hold
 
 
 def test_random_ranges_take_no_count():

@@ -173,16 +173,18 @@ def _figure_path(option: str, text: str) -> pathlib.Path:
 
 
 def _cmd_plot(args: argparse.Namespace) -> Outcome:
+    """The drawing made within the budget, as bytes; the parent writes it (a stop at the deadline
+    leaves no file begun)."""
     if args.of is None:
-        from ..draw import plot_mechanism
+        from ..draw import mechanism_file
 
         for option in ("range", "derivative", "against"):
             if getattr(args, option):
                 raise UsageError(f"--{option}", getattr(args, option), "goes with --of OUTPUT")
         # plot's --param names the page's sliders, which start at the values set: no clash
-        written = plot_mechanism(_scene_of(args, ()), args.out, args.input, args.branch, args.modes, args.param,
-                                 args.range_of)
-        return render(args, _written(args, written), lambda d: d["out"]), 0
+        data = mechanism_file(_scene_of(args, ()), args.out, args.input, args.branch, args.modes, args.param,
+                              args.range_of, budget=args.deadline)
+        return _drawn(args, pathlib.Path(args.out), data)
     for option in ("input", "branch", "modes", "param", "range_of"):
         if getattr(args, option):
             value = getattr(args, option)
@@ -193,15 +195,20 @@ def _cmd_plot(args: argparse.Namespace) -> Outcome:
         raise UsageError("--against", args.against, "draws the minimum; leave out --derivative")
     against = _against(args.against) if args.against else None
     from ...analyses.quantities import load_quantities
-    from ..plot import minimum_figure, quantity_figure, save
+    from ..plot import image, minimum_figure, quantity_figure
 
     params = [against[0]] if against else []
-    quantity = load_quantities(_scene_of(args, params), params).output(args.of)
+    quantity = load_quantities(_scene_of(args, params), params, budget=args.deadline).output(args.of)
     with renamed("outputs", to="of"):
         found = quantity.extremum(_range(args.range) if args.range else None)
     figure = minimum_figure(quantity, found, *against) if against else \
         quantity_figure(quantity, found, derivative=args.derivative)
-    return render(args, _written(args, save(figure, out)), lambda d: d["out"]), 0
+    return _drawn(args, out, image(figure, out.suffix))
+
+
+def _drawn(args: argparse.Namespace, out: pathlib.Path, data: bytes) -> Outcome:
+    """``plot``'s outcome: what it says, and its drawing for the parent to write to ``out``."""
+    return render(args, _written(args, out), lambda d: d["out"]), 0, [(out, data)]
 
 
 def _written(args: argparse.Namespace, out: str | os.PathLike[str]) -> dict[str, object]:

@@ -295,6 +295,7 @@ def build_parser() -> argparse.ArgumentParser:
     plot.add_argument("--range", help="with --of: lo:hi of the input, in its unit")
     plot.add_argument("--derivative", action="store_true", help="with --of: the slope, with its zero marked")
     plot.add_argument("--against", help="with --of: p=lo:hi, the minimum against the dimension p")
+    _budget_options(plot)
     export = _command(commands, "export", "every branch's stabilised formulas as a self-contained function "
                                           "(C, numpy, JavaScript) or its closed forms (LaTeX)")
     _scene(export)

@@ -17,8 +17,8 @@ True
 >>> sorted(set(re.findall(r'https?://[^"\s]+', text)))
 ['http://www.w3.org/2000/svg']
 
-Text from the scene is escaped wherever it lands: HTML-escaped in the markup, and in the
-script's JSON no ``<``, ``>`` or ``&`` that could close the script or open a comment.
+Text from the scene is escaped wherever it lands: HTML-escaped in the markup, its control
+and bidi characters written out (``markup``), and in the script's JSON no ``<``, ``>`` or ``&`` that could close the script or open a comment.
 The template is filled in one pass, so a slot's text is never read as another slot.
 
 >>> fill("<p>{{a}} {{b}}</p>", {"a": "{{b}}", "b": "x"})
@@ -40,6 +40,7 @@ from typing import TYPE_CHECKING, TypedDict, TypeVar, Union
 import sympy
 
 from ...runtime.files import write_atomic
+from ...runtime.terminal import one_line, terminal_safe
 from ...scene import Scene
 from ...scene.constructions import Dyad
 from ...system import symbol
@@ -51,13 +52,14 @@ if TYPE_CHECKING:
 _PathT = TypeVar("_PathT", bound=Union[str, "os.PathLike[str]"])  # a path given back as it came
 Ranges = Mapping[str, tuple[float, float]]  # a dimension's slider bounds, by name
 
-__all__ = ["page", "document", "model", "slider_range", "parameter_range", "parameter_slider", "write", "fill", "script_json",
-           "Slider"]
+__all__ = ["page", "document", "model", "slider_range", "parameter_range", "parameter_slider", "write", "markup", "fill",
+           "script_json", "Slider"]
 
 _SLOT = re.compile(r"\{\{(\w+)\}\}")
 # Inside <script>, "<" could close the element or open a comment, and U+2028/U+2029 end a
-# line in older JavaScript: all are written as escapes, which JSON reads back the same.
-_SCRIPT_UNSAFE = {"<": "\\u003c", ">": "\\u003e", "&": "\\u0026", "\u2028": "\\u2028", "\u2029": "\\u2029"}
+# line in older JavaScript; the control characters JSON leaves raw (DEL, C1) and the bidi marks are
+# written out as in the markup (``markup``). All as \uXXXX escapes, which JSON reads back the same.
+_SCRIPT_UNSAFE = re.compile("[<>&\x7f-\x9f\u061c\u200e\u200f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
 
 
 class Slider(TypedDict):
@@ -86,8 +88,27 @@ def parameter_range(motion: Motion, name: str, ranges: Ranges | None = None) -> 
         if given not in motion.params:
             raise UsageError("--range-of", given, f"not a symbolic dimension of {motion.scene.name} "
                                                   f"(symbolic: {', '.join(motion.params) or 'none'})")
+    if ranges and name in ranges:
+        _refuse_lengths_not_positive(motion, name, ranges[name])
     bounds = (ranges or {}).get(name, motion.scene.parameter_ranges.get(name))
     return slider_range(motion.defaults[name]) if bounds is None else (float(bounds[0]), float(bounds[1]))
+
+
+def _refuse_lengths_not_positive(motion: Motion, name: str, bounds: tuple[float, float]) -> None:
+    """Refuse a slider's range on which a length of the scene (a crank's, a dyad's, a distance's:
+    positive by the scene format) would not be positive at either end, the other dimensions at their
+    defaults: the check compiling the scene with that value makes (``DimensionChecks``)."""
+    from ...errors import UsageError
+    from ...scene.compile import dimension_checks
+
+    checks = dimension_checks(motion.scene, list(motion.scene.points), motion.params)
+    for end in bounds:
+        found = checks.not_positive({**motion.compiled.parameter_values, name: sympy.Rational(repr(end))})
+        if found is not None:
+            length, value = found
+            raise UsageError("--range-of", f"{name}={bounds[0]:g}:{bounds[1]:g}",
+                             f"the length {length} of {motion.scene.name} would be {value} at {name} = {end:g}; "
+                             "a length must be positive")
 
 
 def parameter_slider(motion: Motion, name: str, ranges: Ranges | None = None) -> Slider:
@@ -162,11 +183,22 @@ def document(scene: Scene, data: str, script: str) -> str:
     folder = resources.files(__name__)
     code = data + "".join(folder.joinpath(name).read_text(encoding="utf-8") for name in ("draw.js", script))
     return fill(folder.joinpath("page.html").read_text(encoding="utf-8"), {
-        "title": html.escape(f"algkin: {scene.name}", quote=True),
-        "description": html.escape(scene.description, quote=True),
+        "title": markup(f"algkin: {scene.name}", line=True),
+        "description": markup(scene.description),
         "style": folder.joinpath("page.css").read_text(encoding="utf-8"),
         "script": code,
     })
+
+
+def markup(text: str, *, line: bool = False) -> str:
+    r"""Scene text as a page shows it: HTML-escaped, its control and bidi characters written out as on a
+    terminal (``terminal_safe``; with ``line``, for a title, its newlines and tabs too: ``one_line``),
+    never raw bytes in the page.
+
+    >>> markup("<b>four\x1b[31mbar\x00\nx</b>", line=True)
+    '&lt;b&gt;four\\x1b[31mbar\\x00\\nx&lt;/b&gt;'
+    """
+    return html.escape(one_line(text) if line else terminal_safe(text), quote=True)
 
 
 def fill(template: str, slots: Mapping[str, str]) -> str:
@@ -177,7 +209,7 @@ def fill(template: str, slots: Mapping[str, str]) -> str:
 def script_json(value: object) -> str:
     """``value`` as JSON that can sit inside ``<script>``: nothing in it ends the element."""
     text = json.dumps(value, ensure_ascii=False)
-    return re.sub("[<>&\u2028\u2029]", lambda match: _SCRIPT_UNSAFE[match.group()], text)
+    return _SCRIPT_UNSAFE.sub(lambda match: f"\\u{ord(match.group()):04x}", text)
 
 
 def write(motion: Motion, out: _PathT, inputs: Mapping[str, float] | None = None, branch: str | None = None,

@@ -16,22 +16,18 @@ inputs where it meets another mode (marked on its path, which ends there).
 
 from __future__ import annotations
 
-import os
-from typing import TYPE_CHECKING, TypeVar, Union
+from typing import TYPE_CHECKING
 
 import sympy
 
 from ...errors import UsageError
-from ...runtime.files import write_atomic
 from . import document, script_json
 from .jscode import branch_function
 
 if TYPE_CHECKING:
     from ..groupmotion import GroupMotion
 
-_PathT = TypeVar("_PathT", bound=Union[str, "os.PathLike[str]"])
-
-__all__ = ["group_model", "group_page", "write_groups"]
+__all__ = ["group_model", "group_page"]
 
 DIGITS = 12  # significant digits of the samples written: far below the interpolation's error
 
@@ -80,9 +76,3 @@ def group_page(motion: GroupMotion, value: float | None = None) -> str:
                          f"in [{lo:g}, {hi:g}]: nothing to move")
     data = f"const MODEL = {script_json(group_model(motion, value))};\nconst BUILT = {_built_function(motion)};\n"
     return document(motion.scene, data, "groups.js")
-
-
-def write_groups(motion: GroupMotion, out: _PathT, value: float | None = None) -> _PathT:
-    """Write the page to ``out``, replacing any earlier file only once complete; returns ``out``."""
-    write_atomic(out, group_page(motion, value))
-    return out

@@ -53,6 +53,21 @@ def test_a_name_twice_and_absurd_draws_are_refused(tmp_path, capsys, extra, says
     assert not (tmp_path / "out").exists()
 
 
+@pytest.mark.parametrize("grids, says", [
+    (["a=1:1"], "--random=2: the ranges hold 1 distinct design at most (a=1:1: one value)"),
+    (["a=1:1", "l=3:3"], "--random=2: the ranges hold 1 distinct design at most (a=1:1, l=3:3: one value each)"),
+])
+def test_random_draws_in_ranges_of_one_value_are_refused(tmp_path, capsys, grids, says):
+    # Two draws where every range is one value are one design twice: refused, as a grid's LO = HI with a
+    # COUNT above 1 is.
+    argv = ["sweep", "fourbar", *(f"--grid={g}" for g in grids), "--random", "2", "--analyses", "grashof",
+            "--executor", "serial", "--out", str(tmp_path / "out")]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and says in err, err
+    assert not (tmp_path / "out").exists()
+
+
 def test_a_run_longer_than_a_day_asks_for_yes(tmp_path, capsys):
     # 10^6 designs, each at least 0.001 s to assemble and 0.2 s of limits (the table's floors, not this
     # machine's speed), one at a time: 201000 s, 2.33 days

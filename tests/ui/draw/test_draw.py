@@ -4,10 +4,12 @@ import io
 import json
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
 import types
+from xml.etree import ElementTree
 
 import attrs
 import numpy as np
@@ -22,6 +24,7 @@ from algkin.errors import UsageError  # noqa: E402
 from algkin.ui.draw import animate, mechanism_figure, modes_figure, parse_inputs, parse_ranges  # noqa: E402
 from algkin.analyses.motion import Motion  # noqa: E402
 from algkin.scene import load_scene  # noqa: E402
+from algkin.ui.cli import main  # noqa: E402
 
 from ...derivation.test_still_points import STILL  # noqa: E402
 from ...hand_linkages import CHEBYSHEV, fourbar  # noqa: E402
@@ -200,6 +203,12 @@ def test_range_of_sets_a_slider_of_the_page(tmp_path):
     ["--out", "x.html", "--range-of", "a=2:1"],      # lo above hi
     ["--out", "x.html", "--range-of", "a=x:1"],      # not a number
     ["--out", "x.html", "--range-of", "a=0:inf"],    # not finite
+    ["--out", "x.html", "--range-of", "a=nan:2"],
+    ["--out", "x.html", "--range-of", "a=1:1"],      # lo at hi
+    # a, l and m are lengths in fourbar.toml (the crank's, the dyad's): positive at both ends
+    ["--out", "x.html", "--range-of", "a=-1:1"],
+    ["--out", "x.html", "--range-of", "a=0:1"],
+    ["--out", "x.html", "--range-of", "m=-4:-1"],
     ["--out", "x.html", "--range-of", "a0.5:2"],     # no name
     ["--out", "x.html", "--range-of", "zz=1:2"],     # not a dimension
     ["--out", "x.png", "--range-of", "a=0.5:2"],     # no sliders in a .png
@@ -209,6 +218,15 @@ def test_a_bad_range_of_exits_2_with_one_line_and_writes_nothing(tmp_path, args)
     done = plot("fourbar", *[str(tmp_path / a) if a.startswith("x.") else a for a in args])
     assert one_line(done, 2) and done.stderr.startswith("algkin: error: --range-of="), done.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_range_of_a_dimension_that_is_no_length_may_cross_zero(tmp_path):
+    # In fourbar.toml d places the fixed pivot D = (d, 0) and p, q the coupler point in the frame of AB:
+    # coordinates, which any sign keeps a valid scene.
+    out = tmp_path / "page.html"
+    assert plot("fourbar", "--out", out, "--range-of", "d=-5:5", "--range-of", "p=-1:1").returncode == 0
+    sliders = {p["name"]: (p["lo"], p["hi"]) for p in page_model(out)["params"]}
+    assert sliders["d"] == (-5, 5) and sliders["p"] == (-1, 1)
 
 
 NEVER = (CATALOG / "chebyshev-lambda.toml").read_text().replace("fixed = [2, 0]", "fixed = [20, 0]")
@@ -268,6 +286,20 @@ def test_a_write_that_fails_is_one_line(tmp_path, suffix):
     done = plot("chebyshev-lambda", "--out", out)
     assert one_line(done, 1) and done.stderr.startswith("algkin: failed: "), done.stderr
     assert list(tmp_path.iterdir()) == [out]
+
+
+@pytest.mark.parametrize("args", [[], ["--modes"], ["--of", "dist(P, D)"]], ids=["mechanism", "modes", "quantity"])
+def test_a_scene_name_with_control_characters_is_written_out_in_a_figure(tmp_path, args):
+    # An SVG holds each title as text (a comment): no raw control byte, which no XML may hold.
+    scene = tmp_path / "controls.toml"
+    scene.write_text((CATALOG / "fourbar.toml").read_text().replace(
+        'name = "fourbar"', 'name = "four\\u001b[31mbar\\u0007\\u0000\\nx"'))
+    out = tmp_path / "drawing.svg"
+    assert main(["plot", str(scene), "--out", str(out), *args]) == 0
+    data = out.read_bytes()
+    assert not re.search(rb"[\x00-\x08\x0b\x0c\x0e-\x1f\x7f]", data)
+    assert rb"four\x1b[31mbar\x07\x00\nx" in data  # by hand: each as Python writes its escape
+    ElementTree.fromstring(data)  # well-formed
 
 
 def test_a_scene_name_is_shown_as_text_not_mathtext():
