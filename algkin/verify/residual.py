@@ -53,9 +53,10 @@ PolynomialLike: TypeAlias = flint.fmpq_mpoly | flint.fmpz_mpoly | sympy.Expr
 ExactValue: TypeAlias = sympy.Rational | Fraction | int | float
 # The rest's exponents -> {(power of the row variable, power of the inner one): coefficient}
 Tables: TypeAlias = dict[tuple[int, ...], dict[tuple[int, int], flint.fmpq]]
-# Made at a precision: a curve's arb_poly per power of the row variable from the highest (None where
-# there is no term), or per table of more variables the rest's (variable, power) pairs and the arb_mat
-Made: TypeAlias = list[flint.arb_poly | None] | list[tuple[list[tuple[int, int]], flint.arb_mat]]
+# A curve's arb_poly per power of the row variable from the highest (None where there is no term)
+Horner: TypeAlias = list[flint.arb_poly | None]
+# Per table of a polynomial in more variables: the rest's (variable, power) pairs and the arb_mat
+Matrices: TypeAlias = list[tuple[list[tuple[int, int]], flint.arb_mat]]
 
 
 def polynomial_of(polynomial: PolynomialLike, names: Sequence[str],
@@ -130,7 +131,7 @@ class Polynomial:
         self.exponents = np.array(list(terms) or [()], dtype=np.intp).reshape(len(terms) or 1, len(keep))
         self.sizes = np.array([abs(float(c)) for c in terms.values()] or [0.0])
         # (precision, the tables in balls at it): made on first use, remade when the precision changes
-        self.made: tuple[int | None, Made] = (None, [])
+        self.made: tuple[int | None, Horner, Matrices] = (None, [], [])
 
     def balls(self, values: Mapping[str, flint.arb]) -> flint.arb:
         """``p / scale`` at ``values`` (name -> ball), a ball."""
@@ -143,12 +144,12 @@ class Polynomial:
 
     def _value(self, values: list[flint.arb]) -> flint.arb:
         """``p / scale`` with its variables (inner, row, the rest) at ``values``."""
-        made = self._made()
+        horner, matrices = self._made()
         # fewer than two variables: the missing ones are never raised
         inner, row = (values + [flint.arb(0), flint.arb(0)])[:2]
         if len(values) <= 2:
             total = flint.arb(0)
-            for poly in made:
+            for poly in horner:
                 total = total * row if poly is None else total * row + poly(inner)
             return total
         tops = self.tops
@@ -156,7 +157,7 @@ class Polynomial:
         line = flint.arb_mat(1, tops[1] + 1, _powers(row, tops[1]))
         powers = [_powers(v, top) for v, top in zip(values[2:], tops[2:])]
         total = flint.arb(0)
-        for raised, table in made:
+        for raised, table in matrices:
             term = (line * table * column)[0, 0]
             for k, e in raised:
                 term *= powers[k][e]
@@ -175,7 +176,7 @@ class Polynomial:
             terms *= powers[:, self.exponents[:, k]]
         return np.asarray(terms @ self.sizes, dtype=np.float64)
 
-    def _made(self) -> Made:
+    def _made(self) -> tuple[Horner, Matrices]:
         """The tables in balls: remade when the working precision changed."""
         precision = flint.ctx.prec
         if self.made[0] != precision:
@@ -185,12 +186,12 @@ class Polynomial:
                 by_row: list[dict[int, flint.fmpq]] = [{} for _ in range(tops[1] + 1)]
                 for (i, j), c in table.items():
                     by_row[i][j] = c
-                self.made = (precision, [_arb_poly(terms) if terms else None for terms in reversed(by_row)])
+                self.made = (precision, [_arb_poly(terms) if terms else None for terms in reversed(by_row)], [])
             else:
-                self.made = (precision, [([(k, e) for k, e in enumerate(raised) if e],
-                                          _arb_mat(table, tops[1] + 1, tops[0] + 1))
-                                         for raised, table in self.tables.items()])
-        return self.made[1]
+                self.made = (precision, [], [([(k, e) for k, e in enumerate(raised) if e],
+                                              _arb_mat(table, tops[1] + 1, tops[0] + 1))
+                                             for raised, table in self.tables.items()])
+        return self.made[1], self.made[2]
 
 
 def _scale(coefficients: Iterable[flint.fmpq | flint.fmpz]) -> flint.fmpq:
