@@ -4,10 +4,14 @@ The numerator is ``p`` evaluated in balls on the root's enclosure ``K``, its upp
 a polynomial that vanishes on the root gives a ball around 0 as narrow as the enclosure;
 one that does not is proved nonzero there. A polynomial comes as a python-flint
 ``fmpq_mpoly`` (an eliminant, straight from the elimination) or a sympy expression;
-dimensions kept symbolic take their exact values first (python-flint substitution). It is
-then grouped by the monomials of all but its variable of highest degree, each group an
-``arb_poly`` in that variable (evaluated in C). The denominator, the sum of the terms'
-absolute values, only scales the figure: it is evaluated in floats, for all roots at once.
+dimensions kept symbolic take their exact values first (python-flint substitution). Its
+terms are then laid out by the powers of its two variables of highest degree, one table per
+monomial of the rest. A curve (two variables) is evaluated by Horner's rule in both, an
+``arb_poly`` per power of the second; a polynomial in more, a table at a time, as
+``row * table * column`` (``arb_mat`` products, a few calls into C where one ``arb_poly`` per
+monomial made hundreds of calls from Python). The denominator, the sum of the terms'
+absolute values, only scales the figure: it is evaluated in floats, for all roots at once,
+from tables of each variable's powers.
 Both are of ``p / scale``, ``scale`` a power of two within a factor 2 of the largest coefficient: the
 figure is the same, and coefficients past a float's range (a dimension written with 90-digit
 integers, raised to the eighth power) still give finite floats.
@@ -47,8 +51,12 @@ __all__ = ["Polynomial", "exact", "fraction", "polynomial_of"]
 PolynomialLike: TypeAlias = flint.fmpq_mpoly | flint.fmpz_mpoly | sympy.Expr
 # An exact value, read back from its printed form (``Fraction(str(value))``)
 ExactValue: TypeAlias = sympy.Rational | Fraction | int | float
-# Monomial exponents of all but the inner variable -> [(inner exponent, coefficient)]
-Groups: TypeAlias = dict[tuple[int, ...], list[tuple[int, flint.fmpq | flint.fmpz]]]
+# The rest's exponents -> {(power of the row variable, power of the inner one): coefficient}
+Tables: TypeAlias = dict[tuple[int, ...], dict[tuple[int, int], flint.fmpq]]
+# A curve's arb_poly per power of the row variable from the highest (None where there is no term)
+Horner: TypeAlias = list[flint.arb_poly | None]
+# Per table of a polynomial in more variables: the rest's (variable, power) pairs and the arb_mat
+Matrices: TypeAlias = list[tuple[list[tuple[int, int]], flint.arb_mat]]
 
 
 def polynomial_of(polynomial: PolynomialLike, names: Sequence[str],
@@ -112,53 +120,47 @@ class Polynomial:
         self.scale = _scale(coefficients)
         terms = {tuple([int(m[k]) for k in keep]): flint.fmpq(c) / self.scale
                  for m, c in zip(poly.monoms(), coefficients)}
-        # the variable of highest degree (the first of them) is the inner one
-        self.inner = max(range(len(keep)), key=lambda k: degrees[keep[k]]) if keep else None
-        self.groups = _groups(terms, self.inner)
-        self.outer = [n for k, n in enumerate(self.names) if k != self.inner]
-        # where each variable sits among ``names``, for ``at``: the inner one, then the outer ones
-        self.slots = [list(names).index(n) for n in
-                      ([] if self.inner is None else [self.names[self.inner]]) + self.outer]
-        # each outer variable's highest power, and each group's outer powers that are not 0
-        self.tops = [max(m[k] for m in self.groups) for k in range(len(self.outer))]
-        self.raised = {m: [(k, e) for k, e in enumerate(m) if e] for m in self.groups}
-        self.exponents = np.array(list(terms) or [()], dtype=float).reshape(len(terms) or 1, len(keep))
+        tops = [max((m[k] for m in terms), default=0) for k in range(len(keep))]
+        # the variable of highest degree (the first of them) is the inner one, the next the row one
+        order = sorted(range(len(keep)), key=lambda k: -tops[k])
+        self.tops = [tops[k] for k in order]
+        self.tables = _tables(terms, order)
+        # where each variable sits among ``names``, for ``at``: the inner one, the row one, then the rest
+        self.slots = [list(names).index(self.names[k]) for k in order]
+        self.order = [self.names[k] for k in order]
+        self.exponents = np.array(list(terms) or [()], dtype=np.intp).reshape(len(terms) or 1, len(keep))
         self.sizes = np.array([abs(float(c)) for c in terms.values()] or [0.0])
-        # (precision, the groups as arb_poly at it): made on first use, remade when the precision changes
-        self.made: tuple[int | None, tuple[list[tuple[flint.arb_poly, list[tuple[int, int]]]],
-                                           list[flint.arb_poly | None]]] = (None, ([], []))
+        # (precision, the tables in balls at it): made on first use, remade when the precision changes
+        self.made: tuple[int | None, Horner, Matrices] = (None, [], [])
 
     def balls(self, values: Mapping[str, flint.arb]) -> flint.arb:
         """``p / scale`` at ``values`` (name -> ball), a ball."""
-        if self.inner is None:
-            return self._value(None, [])
-        return self._value(values[self.names[self.inner]], [values[n] for n in self.outer])
+        return self._value([values[n] for n in self.order])
 
     def at(self, values: Sequence[flint.arb]) -> flint.arb:
         """``p / scale`` at ``values``, one ball per name of the ``names`` it was made with, in
         their order: ``balls`` without a mapping (the same ball)."""
-        if self.inner is None:
-            return self._value(None, [])
-        slots = self.slots
-        return self._value(values[slots[0]], [values[k] for k in slots[1:]])
+        return self._value([values[k] for k in self.slots])
 
-    def _value(self, x: flint.arb | None, outer: list[flint.arb]) -> flint.arb:
-        """``p / scale`` with its inner variable at ``x`` and its outer ones at ``outer``."""
-        groups, horner = self._polys()
-        if x is None:
-            return sum((p(0) for p, _ in groups), flint.arb(0))
-        if len(outer) == 1:  # a curve: Horner in the other coordinate, no table of powers
-            y = outer[0]
-            total = horner[0](x)  # type: ignore[misc]  # the highest power's group is never missing
-            for poly in horner[1:]:
-                total = total * y if poly is None else total * y + poly(x)
+    def _value(self, values: list[flint.arb]) -> flint.arb:
+        """``p / scale`` with its variables (inner, row, the rest) at ``values``."""
+        horner, matrices = self._made()
+        # fewer than two variables: the missing ones are never raised
+        inner, row = (values + [flint.arb(0), flint.arb(0)])[:2]
+        if len(values) <= 2:
+            total = flint.arb(0)
+            for poly in horner:
+                total = total * row if poly is None else total * row + poly(inner)
             return total
-        powers = [_powers(v, top) for v, top in zip(outer, self.tops)]
+        tops = self.tops
+        column = flint.arb_mat(tops[0] + 1, 1, _powers(inner, tops[0]))
+        line = flint.arb_mat(1, tops[1] + 1, _powers(row, tops[1]))
+        powers = [_powers(v, top) for v, top in zip(values[2:], tops[2:])]
         total = flint.arb(0)
-        for poly, raised in groups:
-            term = poly(x)
+        for raised, table in matrices:
+            term = (line * table * column)[0, 0]
             for k, e in raised:
-                term = term * powers[k][e]
+                term *= powers[k][e]
             total += term
         return total
 
@@ -166,18 +168,30 @@ class Polynomial:
         """The sum of the absolute values of the terms of ``p / scale``, for float arrays ``values`` (all at once)."""
         if not self.names:
             return np.full(1, self.sizes.sum())
-        points = np.abs(np.stack([np.asarray(values[n], dtype=float) for n in self.names], axis=-1))
-        return np.asarray(np.prod(points[:, None, :] ** self.exponents[None], axis=-1) @ self.sizes, dtype=np.float64)
+        points = [np.abs(np.asarray(values[n], dtype=float)) for n in self.names]
+        terms = np.ones((len(points[0]), len(self.sizes)))
+        for k, x in enumerate(points):
+            top = int(self.exponents[:, k].max())
+            powers = np.cumprod(np.column_stack([np.ones_like(x)] + [x] * top), axis=1)
+            terms *= powers[:, self.exponents[:, k]]
+        return np.asarray(terms @ self.sizes, dtype=np.float64)
 
-    def _polys(self) -> tuple[list[tuple[flint.arb_poly, list[tuple[int, int]]]], list[flint.arb_poly | None]]:
-        """The groups as ``arb_poly`` with their outer powers, and (one outer variable) the groups
-        by outer power from the highest down for Horner: remade when the working precision changed."""
+    def _made(self) -> tuple[Horner, Matrices]:
+        """The tables in balls: remade when the working precision changed."""
         precision = flint.ctx.prec
         if self.made[0] != precision:
-            polys = {m: _arb_poly(terms) for m, terms in self.groups.items()}
-            horner = [polys.get((e,)) for e in range(self.tops[0], -1, -1)] if len(self.outer) == 1 else []
-            self.made = (precision, ([(p, self.raised[m]) for m, p in polys.items()], horner))
-        return self.made[1]
+            tops = self.tops + [0, 0]
+            if len(self.tops) <= 2:
+                (table,) = self.tables.values()
+                by_row: list[dict[int, flint.fmpq]] = [{} for _ in range(tops[1] + 1)]
+                for (i, j), c in table.items():
+                    by_row[i][j] = c
+                self.made = (precision, [_arb_poly(terms) if terms else None for terms in reversed(by_row)], [])
+            else:
+                self.made = (precision, [], [([(k, e) for k, e in enumerate(raised) if e],
+                                              _arb_mat(table, tops[1] + 1, tops[0] + 1))
+                                             for raised, table in self.tables.items()])
+        return self.made[1], self.made[2]
 
 
 def _scale(coefficients: Iterable[flint.fmpq | flint.fmpz]) -> flint.fmpq:
@@ -191,21 +205,27 @@ def _scale(coefficients: Iterable[flint.fmpq | flint.fmpz]) -> flint.fmpq:
     return flint.fmpq(2) ** max(bits) if bits else flint.fmpq(1)
 
 
-def _groups(terms: Mapping[tuple[int, ...], flint.fmpq | flint.fmpz], inner: int | None) -> Groups:
-    """``outer monomial -> [(inner exponent, coefficient)]``."""
-    groups: defaultdict[tuple[int, ...], list[tuple[int, flint.fmpq | flint.fmpz]]] = defaultdict(list)
+def _tables(terms: Mapping[tuple[int, ...], flint.fmpq], order: Sequence[int]) -> Tables:
+    """The terms per monomial of the variables past the first two of ``order``, each
+    ``{(power of order[1], power of order[0]): coefficient}``."""
+    tables: defaultdict[tuple[int, ...], dict[tuple[int, int], flint.fmpq]] = defaultdict(dict)
     for monomial, coefficient in terms.items():
-        if inner is None:
-            groups[()].append((0, coefficient))
-        else:
-            groups[monomial[:inner] + monomial[inner + 1:]].append((monomial[inner], coefficient))
-    return dict(groups) or {(): [(0, flint.fmpq(0))]}
+        exponents = [monomial[k] for k in order] + [0, 0]
+        tables[tuple(exponents[2:len(order)])][exponents[1], exponents[0]] = coefficient
+    return dict(tables) or {(): {}}
 
 
-def _arb_poly(terms: Sequence[tuple[int, flint.fmpq | flint.fmpz]]) -> flint.arb_poly:
-    coefficients = [ARB.number(0, 1)] * (max(e for e, _ in terms) + 1)
-    for exponent, c in terms:
-        c = flint.fmpq(c)
+def _arb_mat(entries: Mapping[tuple[int, int], flint.fmpq], rows: int, columns: int) -> flint.arb_mat:
+    """``entries`` as balls at the working precision in a ``rows x columns`` matrix (0 elsewhere)."""
+    matrix = flint.arb_mat(rows, columns)
+    for (i, j), c in entries.items():
+        matrix[i, j] = ARB.number(int(c.p), int(c.q))
+    return matrix
+
+
+def _arb_poly(terms: Mapping[int, flint.fmpq]) -> flint.arb_poly:
+    coefficients = [ARB.number(0, 1)] * (max(terms) + 1)
+    for exponent, c in terms.items():
         coefficients[exponent] = ARB.number(int(c.p), int(c.q))
     return flint.arb_poly(coefficients)
 

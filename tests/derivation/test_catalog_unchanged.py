@@ -6,7 +6,9 @@ the answers. Timings are left out (they are the only part that differs between r
 alter an answer rewrites the reference (``python -m tests.derivation.test_catalog_unchanged``) in the
 same commit, where the diff shows what changed (since: Hart's named crossed mode, each irreducible
 curve's reason, the scenes added to the catalog, and the closed forms of a dyad built on another's
-root, taken in a tower of roots: tests/branches/test_tower.py compares them with the old ones).
+root, taken in a tower of roots: tests/branches/test_tower.py compares them with the old ones; and
+the residuals' rounding, when a polynomial in three variables or more was evaluated a table of
+coefficients at a time: every other value the same).
 
 The verification's measured errors (``ROUNDING``: residuals and errors of 1e-40 and less, at 200 bits)
 are rounding, not answers: evaluating a closed form's sums in another grouping moves them by tens of

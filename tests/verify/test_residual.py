@@ -50,3 +50,39 @@ def test_coefficients_past_a_float_give_finite_residuals():
     at = {x: sympy.Rational(1, 2), y: sympy.Rational(5, 4), a: 2}
     terms = sympy.expand(CURVE.subs(a, 2)).as_ordered_terms()
     assert ratio == pytest.approx(abs(float(CURVE.subs(at))) / sum(abs(float(t.subs(at))) for t in terms), rel=1e-12)
+
+
+z, w = sympy.symbols("z w", real=True)
+# a table per monomial of the rest: z and w past the two variables of highest degree (x, y)
+FOUR = CURVE * (z**2 - 3 * w) + x**5 * z * w**2 - sympy.Rational(5, 7) * y**4 * z**3 + 11 * w - 2
+SHAPES = {"four variables": (FOUR, ["x", "y", "z", "w"]), "three": (FOUR.subs(w, 1), ["x", "y", "z"]),
+          "one": (CURVE.subs(y, 2), ["x"]), "none": (CURVE.subs({x: 1, y: 2}), [])}
+
+
+@pytest.mark.parametrize("shape", SHAPES)
+@settings(max_examples=25, deadline=None)
+@given(point=st.lists(st.fractions(-3, 3, max_denominator=50), min_size=4, max_size=4),
+       dimension=st.fractions(1, 4, max_denominator=20))
+def test_balls_in_any_number_of_variables_hold_the_exact_value(shape, point, dimension):
+    expr, names = SHAPES[shape]
+    polynomial = Polynomial(expr, names, {"a": dimension})
+    values = dict(zip(names, point))
+    exact = expr.subs({**{sympy.Symbol(n, real=True): sympy.Rational(v) for n, v in values.items()},
+                       a: sympy.Rational(dimension)})
+    with flint.ctx.workprec(200):
+        # balls of radius 1e-60 about the point: the exact value lies in the result
+        ball = polynomial.balls({n: flint.arb(flint.fmpq(v.numerator, v.denominator), 1e-60) for n, v in values.items()})
+        scaled = flint.fmpq(int(exact.p), int(exact.q)) / polynomial.scale
+        assert ball.contains(flint.arb(scaled))
+        assert ball.rad() <= 1e-40 * (1 + abs(float(scaled)))
+
+
+@pytest.mark.parametrize("shape", SHAPES)
+def test_the_magnitude_in_any_number_of_variables_is_the_sum_of_the_terms_absolute_values(shape):
+    expr, names = SHAPES[shape]
+    polynomial = Polynomial(expr, names, {"a": 2})
+    points = {n: np.array([1.5, -0.25, 2.0])[: 3] * (k + 1) for k, n in enumerate(names)}
+    terms = sympy.expand(expr.subs(a, 2)).as_ordered_terms()
+    expected = [sum(abs(float(t.subs({sympy.Symbol(n, real=True): points[n][i] for n in names}))) for t in terms)
+                for i in range(3)]
+    assert np.allclose(np.broadcast_to(polynomial.magnitude(points), (3,)) * float(polynomial.scale), expected)
