@@ -32,6 +32,7 @@ from .model import Output, Scene
 from .names import angle_unknowns, check_names, check_output_unknowns, check_symbol_name
 
 __all__ = ["Compiled", "DyadSpec", "SliderSpec", "AngleOutput", "compile_scene", "resolve_outputs", "refuse_solved_together",
+           "refuse_lengths_not_positive",
            "DimensionChecks", "dimension_checks"]
 
 Substitution = Mapping[sympy.Symbol, sympy.Expr]
@@ -338,6 +339,29 @@ def dimension_checks(scene: Scene, outputs: Sequence[str] | None, params: Iterab
         numbers=numbers,
         directions=tuple(getattr(c, "direction") for c in constructions if getattr(c, "direction", None) is not None),
         phases=tuple(c.phase for c in constructions if isinstance(c, Crank) and not all(v.is_number for v in c.phase)))
+
+
+def refuse_lengths_not_positive(scene: Scene, name: str, bounds: tuple[float, float], *, argument: str) -> None:
+    """Refuse a span of the dimension ``name`` (``argument``'s, a slider's or a plot's) at either end
+    of which a length of ``scene`` (a crank's, a dyad's, a distance's: positive by the scene format)
+    would not be positive, the other dimensions at their values: the check compiling the scene with
+    that value makes.
+
+    >>> from algkin.scene import load_scene
+    >>> refuse_lengths_not_positive(load_scene("fourbar"), "a", (-1.0, 1.0), argument="--range-of")
+    Traceback (most recent call last):
+    ...
+    algkin.errors.UsageError: --range-of='a=-1:1': the length a of fourbar would be -1 at a = -1; a length must be positive
+    >>> refuse_lengths_not_positive(load_scene("fourbar"), "d", (-5.0, 5.0), argument="--range-of")  # a pivot's coordinate
+    """
+    checks = dimension_checks(scene, list(scene.points), [name])
+    for end in bounds:
+        found = checks.not_positive({name: sympy.Rational(repr(end))})
+        if found is not None:
+            length, value = found
+            raise UsageError(argument, f"{name}={bounds[0]:g}:{bounds[1]:g}",
+                             f"the length {length} of {scene.name} would be {value} at {name} = {end:g}; "
+                             "a length must be positive")
 
 
 def _substituted(construction: Construction, substitution: Substitution) -> Construction:

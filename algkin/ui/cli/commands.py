@@ -195,10 +195,16 @@ def _cmd_plot(args: argparse.Namespace) -> Outcome:
         raise UsageError("--against", args.against, "draws the minimum; leave out --derivative")
     against = _against(args.against) if args.against else None
     from ...analyses.quantities import load_quantities
+    from ...scene.compile import refuse_lengths_not_positive
+    from ...scene.load import as_scene
     from ..plot import image, minimum_figure, quantity_figure
 
     params = [against[0]] if against else []
-    quantity = load_quantities(_scene_of(args, params), params, budget=args.deadline).output(args.of)
+    with renamed("params", to="--against"):  # --against's dimension, made symbolic
+        scene = as_scene(_scene_of(args, params))
+        if against:
+            refuse_lengths_not_positive(scene, against[0], against[1:], argument="--against")
+        quantity = load_quantities(scene, params, budget=args.deadline).output(args.of)
     with renamed("outputs", to="of"):
         found = quantity.extremum(_range(args.range) if args.range else None)
     figure = minimum_figure(quantity, found, *against) if against else \

@@ -89,26 +89,11 @@ def parameter_range(motion: Motion, name: str, ranges: Ranges | None = None) -> 
             raise UsageError("--range-of", given, f"not a symbolic dimension of {motion.scene.name} "
                                                   f"(symbolic: {', '.join(motion.params) or 'none'})")
     if ranges and name in ranges:
-        _refuse_lengths_not_positive(motion, name, ranges[name])
+        from ...scene.compile import refuse_lengths_not_positive
+
+        refuse_lengths_not_positive(motion.scene, name, ranges[name], argument="--range-of")
     bounds = (ranges or {}).get(name, motion.scene.parameter_ranges.get(name))
     return slider_range(motion.defaults[name]) if bounds is None else (float(bounds[0]), float(bounds[1]))
-
-
-def _refuse_lengths_not_positive(motion: Motion, name: str, bounds: tuple[float, float]) -> None:
-    """Refuse a slider's range on which a length of the scene (a crank's, a dyad's, a distance's:
-    positive by the scene format) would not be positive at either end, the other dimensions at their
-    defaults: the check compiling the scene with that value makes (``DimensionChecks``)."""
-    from ...errors import UsageError
-    from ...scene.compile import dimension_checks
-
-    checks = dimension_checks(motion.scene, list(motion.scene.points), motion.params)
-    for end in bounds:
-        found = checks.not_positive({**motion.compiled.parameter_values, name: sympy.Rational(repr(end))})
-        if found is not None:
-            length, value = found
-            raise UsageError("--range-of", f"{name}={bounds[0]:g}:{bounds[1]:g}",
-                             f"the length {length} of {motion.scene.name} would be {value} at {name} = {end:g}; "
-                             "a length must be positive")
 
 
 def parameter_slider(motion: Motion, name: str, ranges: Ranges | None = None) -> Slider:

@@ -87,3 +87,20 @@ def test_sigterm_stops_a_long_plot_at_once(tmp_path):
 def test_plot_help_names_its_budget_options():
     code, out, _, _ = run(algkin("plot", "--help"), timeout=60)
     assert code == 0 and "--max-seconds" in out and "--max-terms" in out
+
+
+@pytest.mark.parametrize(("against", "said"), [
+    # arm-string's r is the arm's length: r = 0 made every angle's |AB| one value ("does not depend on the
+    # input"), a negative r a mechanism the scene format refuses
+    ("r=-400:400", "--against='r=-400:400': the length r of arm-string would be -400 at r = -400; "
+                   "a length must be positive"),
+    ("r=0:4", "--against='r=0:4': the length r of arm-string would be 0 at r = 0; a length must be positive"),
+    # the dimension is --against's, made symbolic: the message names that flag, not --param
+    ("rr=1:4", "--against='rr': not a parameter of arm-string (parameters: a, b, r, g); did you mean 'r'?"),
+])
+def test_a_bad_against_names_it_in_one_line_and_exits_2(tmp_path, against, said):
+    out = tmp_path / "minimum.png"
+    code, stdout, err, _ = run(algkin("plot", "arm-string", "--of", "AB", "--against", against, "--out", out),
+                               timeout=120)
+    assert (code, stdout, err) == (2, "", f"algkin: error: {said}\n")
+    assert not out.exists()
