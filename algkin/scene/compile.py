@@ -32,7 +32,7 @@ from .model import Output, Scene
 from .names import angle_unknowns, check_names, check_output_unknowns, check_symbol_name
 
 __all__ = ["Compiled", "DyadSpec", "SliderSpec", "AngleOutput", "compile_scene", "resolve_outputs", "refuse_solved_together",
-           "refuse_lengths_not_positive",
+           "refuse_lengths_not_positive", "length_not_positive",
            "DimensionChecks", "dimension_checks"]
 
 Substitution = Mapping[sympy.Symbol, sympy.Expr]
@@ -343,9 +343,7 @@ def dimension_checks(scene: Scene, outputs: Sequence[str] | None, params: Iterab
 
 def refuse_lengths_not_positive(scene: Scene, name: str, bounds: tuple[float, float], *, argument: str) -> None:
     """Refuse a span of the dimension ``name`` (``argument``'s, a slider's or a plot's) at either end
-    of which a length of ``scene`` (a crank's, a dyad's, a distance's: positive by the scene format)
-    would not be positive, the other dimensions at their values: the check compiling the scene with
-    that value makes.
+    of which a length of ``scene`` would not be positive (``length_not_positive``).
 
     >>> from algkin.scene import load_scene
     >>> refuse_lengths_not_positive(load_scene("fourbar"), "a", (-1.0, 1.0), argument="--range-of")
@@ -354,14 +352,31 @@ def refuse_lengths_not_positive(scene: Scene, name: str, bounds: tuple[float, fl
     algkin.errors.UsageError: --range-of='a=-1:1': the length a of fourbar would be -1 at a = -1; a length must be positive
     >>> refuse_lengths_not_positive(load_scene("fourbar"), "d", (-5.0, 5.0), argument="--range-of")  # a pivot's coordinate
     """
+    found = length_not_positive(scene, name, bounds)
+    if found is not None:
+        length, value, end = found
+        raise UsageError(argument, f"{name}={bounds[0]:g}:{bounds[1]:g}",
+                         f"the length {length} of {scene.name} would be {value} at {name} = {end:g}; "
+                         "a length must be positive")
+
+
+def length_not_positive(scene: Scene, name: str, bounds: tuple[float, float]) \
+        -> tuple[sympy.Expr, sympy.Expr, float] | None:
+    """A length of ``scene`` (a crank's, a dyad's, a distance's: positive by the scene format) that
+    would not be positive at an end of the span ``bounds`` of its dimension ``name``, the other
+    dimensions at their values (the check compiling the scene with that value makes): ``(length,
+    its value, the end)``; None if none.
+
+    >>> from algkin.scene import load_scene
+    >>> length_not_positive(load_scene("fourbar"), "m", (-4.0, -1.0))
+    (m, -4, -4.0)
+    """
     checks = dimension_checks(scene, list(scene.points), [name])
     for end in bounds:
-        found = checks.not_positive({name: sympy.Rational(repr(end))})
+        found = checks.not_positive({name: sympy.Rational(repr(float(end)))})
         if found is not None:
-            length, value = found
-            raise UsageError(argument, f"{name}={bounds[0]:g}:{bounds[1]:g}",
-                             f"the length {length} of {scene.name} would be {value} at {name} = {end:g}; "
-                             "a length must be positive")
+            return (*found, float(end))
+    return None
 
 
 def _substituted(construction: Construction, substitution: Substitution) -> Construction:

@@ -92,8 +92,25 @@ def parameter_range(motion: Motion, name: str, ranges: Ranges | None = None) -> 
         from ...scene.compile import refuse_lengths_not_positive
 
         refuse_lengths_not_positive(motion.scene, name, ranges[name], argument="--range-of")
-    bounds = (ranges or {}).get(name, motion.scene.parameter_ranges.get(name))
-    return slider_range(motion.defaults[name]) if bounds is None else (float(bounds[0]), float(bounds[1]))
+        return (float(ranges[name][0]), float(ranges[name][1]))
+    declared = motion.scene.parameter_ranges.get(name)
+    if declared is None:
+        return slider_range(motion.defaults[name])
+    bounds = (float(declared[0]), float(declared[1]))
+    _refuse_declared_lengths_not_positive(motion.scene, name, bounds)
+    return bounds
+
+
+def _refuse_declared_lengths_not_positive(scene: Scene, name: str, bounds: tuple[float, float]) -> None:
+    """A range the scene file declares for a length, reaching zero or below: the file's error."""
+    from ...errors import SceneError
+    from ...scene.compile import length_not_positive
+
+    found = length_not_positive(scene, name, bounds)
+    if found is not None:
+        length, value, end = found
+        raise SceneError(scene.source, f"parameters.{name}.range",
+                         f"the length {length} would be {value} at {name} = {end:g}; a length must be positive")
 
 
 def parameter_slider(motion: Motion, name: str, ranges: Ranges | None = None) -> Slider:

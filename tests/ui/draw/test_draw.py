@@ -229,6 +229,19 @@ def test_a_range_of_a_dimension_that_is_no_length_may_cross_zero(tmp_path):
     assert sliders["d"] == (-5, 5) and sliders["p"] == (-1, 1)
 
 
+def test_a_range_the_scene_declares_reaching_a_negative_length_is_the_files_error(tmp_path):
+    # the crank's length a declared with a slider range [-1, 2]: the page drew a negative crank
+    scene = tmp_path / "negative.toml"
+    scene.write_text((CATALOG / "fourbar.toml").read_text().replace(
+        "a = 1          # crank |OA|", "a = { default = 1, range = [-1, 2] }"))
+    out = tmp_path / "page.html"
+    done = plot(scene, "--out", out)
+    assert one_line(done, 2), done.stderr
+    assert done.stderr == (f"algkin: error: {scene}: parameters.a.range: the length a would be -1 at a = -1; "
+                           "a length must be positive\n")
+    assert not out.exists()
+
+
 NEVER = (CATALOG / "chebyshev-lambda.toml").read_text().replace("fixed = [2, 0]", "fixed = [20, 0]")
 
 
