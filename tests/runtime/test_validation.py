@@ -137,3 +137,19 @@ def test_an_exact_number_within_the_sizes_is_read_exactly():
     assert rational("1e-300") == Fraction(1, 10**300)
     assert rational(str(2**1024 - 1)) == 2**1024 - 1
     assert rational(" 2.5e-1 ") == Fraction(1, 4)
+
+
+@pytest.mark.parametrize("argument, value", [("method", ["linear"]), ("backend", {"flint": 1}), ("method", None)])
+def test_a_method_or_backend_that_is_not_a_name_is_refused_by_name(argument, value):
+    # a list or a dict was a TypeError (unhashable) from the table's lookup
+    with pytest.raises(UsageError, match=f"^{argument}=.*unknown elimination {argument}"):
+        algkin.derive("chebyshev-lambda", outputs=["B"], samples=0, **{argument: value})
+
+
+@pytest.mark.parametrize("angle_range", [5, (), (0,), (0, 90, 180), "0:90", (0, "1e999999999"), (0, 2**2000)],
+                         ids=["number", "empty", "one", "three", "text", "huge-exponent", "huge-integer"])
+def test_an_extremum_range_that_is_not_two_numbers_of_a_readable_size_is_refused(angle_range):
+    # a number or a pair too short or long was a TypeError or ValueError from unpacking it; "1e999999999"
+    # was read exactly as 10**999999999, minutes of work before any answer
+    with pytest.raises(UsageError, match="^angle_range="):
+        algkin.extremum("arm-string", "AB", angle_range)
