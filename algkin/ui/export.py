@@ -38,6 +38,7 @@ import sympy
 from ..runtime import suggest
 from ..branches import Branch, check_assembly, closed_forms, readable
 from ..branches.stable import StableBranch, output_forms
+from ..derivation.assembles import where_assembled
 from ..derivation.modes import resolve_modes
 from ..errors import UsageError
 from ..evaluate.trace import Program, trace
@@ -94,8 +95,9 @@ def export(scene: SceneLike, outputs: Sequence[str] | None = None, to: str = "c"
     scene = resolve_modes(scene)  # a mode named by a configuration: its label
     compiled = compile_scene(scene, outputs, list(params))
     branches = closed_forms(compiled)
-    if not params:  # as derive and plot: no code for a mechanism whose every output would be NaN
+    if not params:  # as derive and plot: no code for a mechanism whose every output would be NaN, or a structure's
         check_assembly(compiled, branches)
+        where_assembled(compiled, branches)  # refuses a motion that assembles at isolated inputs only
     if to == "latex":
         return _latex(compiled, branches)
     inputs = compiled.system.inputs

@@ -176,3 +176,13 @@ int main(void) {
         got = [float(v) for v in subprocess.run([str(binary)], capture_output=True, text=True, check=True).stdout.split()]
         np.testing.assert_allclose(got, left, rtol=1e-15)
     assert "from no input" in export(scene, None, "js").splitlines()[0]
+
+
+@pytest.mark.parametrize("to", ["c", "latex"])
+def test_a_mechanism_that_assembles_at_one_input_only_is_refused_as_derive_refuses_it(to, tmp_path):
+    # ground 22/3 less crank 5/6 is 13/2 = coupler 3 + rocker 7/2: B reaches across at theta = 0 alone
+    (tmp_path / "old.txt").write_text("kept")
+    run = run_cli(["export", "fourbar", "--set", "a=5/6", "--set", "d=22/3", "--to", to, "--out", "old.txt"], tmp_path)
+    assert run.returncode == 2 and run.stdout == "", run.stderr
+    assert len(run.stderr.splitlines()) == 1 and "a structure, not a motion" in run.stderr, run.stderr
+    assert (tmp_path / "old.txt").read_text() == "kept"
