@@ -272,7 +272,7 @@ def report_follow(d: Document) -> str:
 
 def report_show(d: Document) -> str:
     """``algkin show``'s text: the points, unknowns, parameters, inputs and equations of the scene."""
-    lines = [f"scene {d['scene']}: {d['description']}",
+    lines = [f"scene {d['scene']}: {one_line(d['description'])}",  # a newline in it must not start a line
              *([f"lengths in {d['length_unit']}"] if d.get("length_unit") else []),
              "points: " + ", ".join(f"{n} ({k})" for n, k in d["points"].items()),
              "unknowns: " + ", ".join(d["system"]["unknowns"]),
