@@ -27,7 +27,7 @@ from .expr import MAX_VALUE_BITS, bits_bound, irrational
 from .implicit import DyadSpec, ImplicitSpec, SliderSpec
 from .implicit.algebra import Circles, reduce_on_circles
 from .implicit.base import Point
-from .load import parse_output
+from .load import SceneLike, as_scene, parse_output
 from .model import Output, Scene
 from .names import angle_unknowns, check_names, check_output_unknowns, check_symbol_name
 
@@ -211,12 +211,14 @@ def refuse_solved_together(scene: Scene) -> None:
                          "extremum and singular do not yet")
 
 
-def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: Iterable[str] = ()) -> Compiled:
+def compile_scene(scene: SceneLike, outputs: Sequence[str] | None = None, params: Iterable[str] = ()) -> Compiled:
     """Compile ``scene`` for ``outputs`` (names, point names, ``dist(P, Q)``, ``P.x``).
 
     Parameters named in ``params`` stay symbolic; the others take their exact defaults. A scene
     with points solved together (``unknown = true``) is refused: only ``algkin solve`` takes it, for now.
     """
+    if not isinstance(scene, Scene):  # the public API's: a catalog name or a path, or a refusal naming it
+        scene = as_scene(scene)
     refuse_solved_together(scene)
     symbolic = tuple(params)
     defaults, substitution, bits = _parameter_values(scene, symbolic)

@@ -153,3 +153,21 @@ def test_an_extremum_range_that_is_not_two_numbers_of_a_readable_size_is_refused
     # was read exactly as 10**999999999, minutes of work before any answer
     with pytest.raises(UsageError, match="^angle_range="):
         algkin.extremum("arm-string", "AB", angle_range)
+
+
+def test_compile_scene_takes_a_catalog_name_and_refuses_what_is_not_a_scene():
+    # algkin.compile_scene("fourbar") was an AttributeError ('str' object has no attribute 'unknown_points')
+    compiled = algkin.compile_scene("chebyshev-lambda", ["B"])
+    assert [str(u) for u in compiled.system.unknowns] == ["B_x", "B_y"]
+    with pytest.raises(UsageError, match="^scene=42: expected a catalog name"):
+        algkin.compile_scene(42)
+
+
+@pytest.mark.parametrize("seconds", ["5", None, [5]], ids=["text", "none", "list"])
+def test_a_budget_of_seconds_that_is_not_a_number_is_refused_by_name(seconds):
+    # Budget(seconds="5") was a TypeError from comparing it with 0; None there means no time budget
+    if seconds is None:
+        assert algkin.Budget(seconds=None).seconds is None
+        return
+    with pytest.raises(UsageError, match="^max_seconds="):
+        algkin.Budget(seconds=seconds)
