@@ -344,7 +344,7 @@ def build_parser() -> argparse.ArgumentParser:
                               f"{BENCH_FULL[1]} rounds (about half an hour in all)")
     bench.add_argument("--no-peers", action="store_true", help="skip Singular, PARI/GP, Macaulay2, msolve")
     bench.add_argument("--rounds", type=int,
-                       help=f"rows under 2 s are measured this many times in turn, each keeping its best "
+                       help=f"rows under 2 s are measured this many times in turn (at most 100), each keeping its best "
                             f"(default {BENCH_QUICK[1]}, {BENCH_FULL[1]} with --full)")
     bench.add_argument("--out", help="directory for bench.json, bench.csv and bench.png")
     _json(bench)
