@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any, NoReturn
 
 from ...errors import UsageError
 from ...runtime import suggest
+from ...runtime.terminal import shortened
 from ...runtime.validation import real, whole
 
 if TYPE_CHECKING:
@@ -22,6 +23,7 @@ __all__ = ["build_parser", "usage", "Shown", "BENCH_QUICK", "BENCH_FULL"]
 # ``algkin bench``'s (seconds per row, rounds): by default a run of a few minutes (rows past 5 s are
 # reported over budget, each measured once); ``--full`` lets the largest problems finish, and measures
 # the quick rows in three rounds (a run of about half an hour).
+ARGUMENTS_SHOWN = 200  # characters of the command line an error line repeats (a value may be 100000 long)
 BENCH_QUICK = (5.0, 1)
 BENCH_FULL = (60.0, 3)
 
@@ -48,7 +50,7 @@ class _Parser(argparse.ArgumentParser):
         self._negative_number_matcher = re.compile(r"^-\.?[0-9]")  # no flag of algkin's starts so
 
     def error(self, message: str) -> NoReturn:
-        raise UsageError("arguments", " ".join(sys.argv[1:]), message)
+        raise UsageError("arguments", shortened(" ".join(sys.argv[1:]), ARGUMENTS_SHOWN), message)
 
     def parse_known_args(self, args: Sequence[str] | None = None,  # type: ignore[override]
                          namespace: argparse.Namespace | None = None) -> tuple[argparse.Namespace, list[str]]:
@@ -98,7 +100,16 @@ def _whole(text: str) -> int:
     try:
         return whole(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a whole number (ASCII digits 0-9), got {text!r}") from None
+        raise argparse.ArgumentTypeError(_long(text) or f"expected a whole number (ASCII digits 0-9), got "
+                                                        f"{shortened(text)!r}") from None
+
+
+def _long(text: str) -> str | None:
+    """What is wrong with a whole number in ASCII digits that Python's int() refuses: its length
+    (past 4300 digits), not that it is no number; None for other text."""
+    digits = text.strip()
+    return f"a number of {len(digits)} digits, far past any this option takes" \
+        if text.isascii() and digits.isdigit() else None
 
 
 def _real(text: str) -> float:
@@ -202,9 +213,13 @@ def _seconds(text: str) -> float:
 
 
 def _terms(text: str) -> int:
-    if not (text.isascii() and text.strip().isdigit()) or int(text) < 1:
-        raise argparse.ArgumentTypeError(f"expected a positive whole number of terms, got {text!r}")
-    return int(text)
+    try:
+        terms = whole(text) if text.isascii() and text.strip().isdigit() else 0
+    except ValueError:
+        raise argparse.ArgumentTypeError(_long(text)) from None
+    if terms < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive whole number of terms, got {shortened(text)!r}")
+    return terms
 
 
 def build_parser() -> argparse.ArgumentParser:
