@@ -47,6 +47,9 @@ class _Parser(argparse.ArgumentParser):
         super().__init__(*args, **kwargs)
         self.register("type", int, _whole)
         self.register("type", float, _real)
+        for name in (None, "store"):  # the default action, and said by name
+            self.register("action", name, _StoreOnce)
+        self.given: set[str] = set()  # the flags of one value met in this parse
         self._negative_number_matcher = re.compile(r"^-\.?[0-9]")  # no flag of algkin's starts so
 
     def error(self, message: str) -> NoReturn:
@@ -57,12 +60,14 @@ class _Parser(argparse.ArgumentParser):
         """As argparse, and with the positional a list option swallowed given back to it:
         ``derive --outputs B chebyshev-lambda`` reads as ``derive chebyshev-lambda --outputs B``."""
         try:
+            self.given = set()
             return super().parse_known_args(args, namespace)
         except UsageError as err:
             given = list(sys.argv[1:] if args is None else args)
             moved = _positional_first(given, self._list_options()) if "are required" in err.message else None
             if moved is None:
                 raise
+            self.given = set()
             return super().parse_known_args(moved, namespace)
 
     def _list_options(self) -> set[str]:
@@ -131,6 +136,20 @@ class _Once(argparse.Action):
                 raise UsageError(option_string or self.dest, value, "given twice")
             given.append(value)
         setattr(namespace, self.dest, given)
+
+
+class _StoreOnce(argparse._StoreAction):
+    """A flag of one value given twice is refused (``--to c --to js --out f.c``: which was meant?),
+    where argparse would keep the last without a word."""
+
+    def __call__(self, parser: argparse.ArgumentParser, namespace: argparse.Namespace,
+                 values: str | Sequence[Any] | None, option_string: str | None = None) -> None:
+        given = parser.given if isinstance(parser, _Parser) else set()
+        if option_string is not None:
+            if self.dest in given:
+                raise UsageError(option_string, values, "given twice")
+            given.add(self.dest)
+        super().__call__(parser, namespace, values, option_string)
 
 
 class _Help(argparse.ArgumentDefaultsHelpFormatter):
