@@ -309,8 +309,8 @@ def latex_lines(forms: Iterable[Form]) -> str:
     """
     import sympy
 
-    return "".join(f"% {caption}\n\\[ {' '.join([sympy.latex(expr), relation]).strip()} \\]\n"
-                   for caption, expr, relation in forms)
+    return "".join(f"% {one_line(caption)}\n\\[ {' '.join([sympy.latex(expr), relation]).strip()} \\]\n"
+                   for caption, expr, relation in forms)  # a newline in a caption (an output typed so) ends no comment
 
 
 def verification_line(v: Document) -> str:

@@ -166,3 +166,11 @@ def test_a_scene_description_cannot_start_a_line_of_show(tmp_path, capsys):
     assert lines[0] == "scene chebyshev-lambda: one\\nnever assembles: B: forged\\r\\nequations (= 0):"
     assert not any(line.startswith("never assembles") for line in lines)
     assert sum(line.startswith("equations (= 0):") for line in lines) == 1
+
+
+def test_a_latex_caption_stays_in_its_comment():
+    # a caption holding a newline (an output typed "dist(O,\nB)") ended the % comment: the rest was TeX
+    from algkin.ui.cli.reports import latex_lines
+
+    text = latex_lines([("minimum of dist(O,\nB)\r\\input{x}", sympy.Integer(2), "")])
+    assert text.splitlines() == ["% minimum of dist(O,\\nB)\\r\\input{x}", r"\[ 2 \]"]
