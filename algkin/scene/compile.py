@@ -253,6 +253,7 @@ def compile_scene(scene: SceneLike, outputs: Sequence[str] | None = None, params
             raise SceneError(scene.source, f"points.{name}", str(err)) from None
         coords[name] = (sympy.expand(x), sympy.expand(y))
         _check_rational(scene, name, [*coords[name], *builder.equations[made:]])
+        _check_reach(scene, name, coords[name])
     lengths = {v for c in scene.points.values() for length in _lengths(c) for v in length.free_symbols}
     definitions, output_unknowns, nonnegative, angles = _output_equations(resolved, coords, builder, lengths=lengths,
                                                                           source=scene.source)
@@ -356,6 +357,16 @@ def _check_finite(scene: Scene, element: str, value: object) -> None:
     if value.is_number and value != 0 and not MAGNITUDES[0] <= abs(value) <= MAGNITUDES[1]:
         raise SceneError(scene.source, element, f"{sympy.Float(value, 3)} is outside the magnitudes "
                          "1e-100 to 1e100 that floating-point checks can square")
+
+
+def _check_reach(scene: Scene, name: str, coordinates: Point) -> None:
+    """A coordinate with a coefficient past ``MAGNITUDES`` (each frame of a long chain multiplies
+    them, by sqrt(2) at ``at = [1, 1]``) is a scene error, as such a dimension is: floats overflow on it."""
+    for coordinate in coordinates:
+        for coefficient in coordinate.as_coefficients_dict().values():
+            if coefficient.is_number and abs(coefficient) > MAGNITUDES[1]:
+                raise SceneError(scene.source, f"points.{name}", f"its coordinates reach {sympy.Float(abs(coefficient), 3)}"
+                                 ", past the magnitude 1e100 that floating-point checks can square")
 
 
 def _check_bases(scene: Scene, name: str, dyad: Dyad, bases: Sequence[Point]) -> None:
