@@ -24,7 +24,7 @@ import sympy
 
 from ..derivation.tasks import EliminationTask
 from ..eliminate import BACKENDS, DEFAULT_METHOD, METHODS, Elimination
-from ..runtime import progress
+from ..runtime import progress, validation
 from ..runtime.budget import time_budget
 from . import specialise
 from .agree import PASSING, Agreement, Verdict, agreement, from_sympy, portable, rebuild
@@ -46,6 +46,7 @@ SPECIALISATIONS = 2  # random rational specialisations checked where the Gröbne
 DEFAULT = (DEFAULT_METHOD, "flint")
 ROUNDS = 3  # rows measured in turn, each keeping its best round (``bench(rounds=...)``)...
 ROUND_CAP = 2.0  # ...when one run takes less than this many seconds
+MAX_ROUNDS = 100  # past this the quick rows alone take hours: a bench that never ends
 
 
 @dataclass
@@ -83,7 +84,8 @@ def bench(problems: Sequence[str] | None = None, methods: Sequence[str] | None =
     from .engines import PEERS
 
     time_budget(budget, "budget")  # a row's deadline, so a week at most (past that the timer overflows)
-    names = problems or problem_names()
+    validation.count("rounds", rounds, MAX_ROUNDS, minimum=1)
+    names = validation.names("problems", problems) or problem_names()  # each once: a row is measured once
     pairs = sorted({(m, b) for m in methods or METHODS for b in backends or BACKENDS} | {DEFAULT})
     rows: list[BenchRow] = []
     with progress.counting(len(names) * (len(pairs) + 1 + (len(PEERS) if peers else 0)), "rows"):

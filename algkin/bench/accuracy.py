@@ -43,7 +43,6 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, TypedDict, TypeVar
 
-import attrs
 import numpy as np
 import sympy
 from numpy.typing import NDArray
@@ -59,7 +58,7 @@ from ..runtime.budget import Budget, Deadline, started
 from ..scene import Scene, compile_scene
 from ..scene.compile import Compiled
 from ..scene.groups import compile_groups
-from ..scene.constructions import Dyad, Fixed
+from ..scene.constructions import Dyad
 from ..scene.implicit.base import ImplicitSpec
 from ..scene.load import SceneLike, Values, as_scene
 from ..scene.settings import with_values
@@ -371,12 +370,6 @@ def _near_folds(subject: Subject, dyad: ImplicitSpec) -> list[float]:
     return folds
 
 
-def _translated(scene: Scene, offset: int) -> Scene:
-    """The scene moved by (offset, offset): every ground point shifted."""
-    points = {n: (Fixed(p.x + offset, p.y + offset) if isinstance(p, Fixed) else p) for n, p in scene.points.items()}
-    return attrs.evolve(scene, points=points)
-
-
 def accuracy(scene: SceneLike, samples: int = 2000, seed: int = 0, set: Values | None = None,  # noqa: A002 - the public name (--set)
              of: str | None = None, *, budget: Budget | Deadline | None = None) -> Accuracy | GroupAccuracy:
     """Rows of speed and error per strategy and case for the output ``of`` (a point, ``dist(A, B)``,
@@ -408,6 +401,6 @@ def accuracy(scene: SceneLike, samples: int = 2000, seed: int = 0, set: Values |
     deadline.note(f"measuring each strategy on {scene.name}")
     for case, theta in progress.counted(sample_cases(subject, samples, rng).items(), "cases"):
         rows += _rows(subject, case, theta)
-    far = Subject(_translated(scene, FAR), of, deadline=deadline)
+    far = Subject(scene.translated(FAR), of, deadline=deadline)
     rows += _rows(far, "far-1e7", sample_cases(far, samples, rng)["uniform"])
     return Accuracy(scene.name, of, rows)

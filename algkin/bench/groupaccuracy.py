@@ -40,7 +40,6 @@ from ..analyses.groups.toggles import toggles_groups
 from ..analyses.solve import solve
 from ..errors import UsageError
 from ..scene import Scene
-from ..scene.constructions import Fixed
 from ..scene.load import SceneLike, as_scene
 
 __all__ = ["group_accuracy", "GroupAccuracy", "STRATEGIES", "DIGITS", "MAX_SAMPLES"]
@@ -269,13 +268,6 @@ def _inputs(prepared: GroupScene, samples: int, rng: np.random.Generator) -> dic
     return cases
 
 
-def _translated(scene: Scene, offset: int) -> Scene:
-    import attrs
-
-    points = {n: (Fixed(p.x + offset, p.y + offset) if isinstance(p, Fixed) else p) for n, p in scene.points.items()}
-    return attrs.evolve(scene, points=points)
-
-
 def group_accuracy(scene: SceneLike, samples: int = 40, seed: int = 0, *,
                    clock: Callable[[], float] = time.perf_counter) -> GroupAccuracy:
     """Rows of speed and error per strategy and case on a scene with points solved together
@@ -291,7 +283,7 @@ def group_accuracy(scene: SceneLike, samples: int = 40, seed: int = 0, *,
     rows: list[dict[str, Any]] = []
     for case, values in _inputs(prepared, count, rng).items():
         rows += _Case(scene, case, values, clock=clock).rows()
-    far = _translated(scene, FAR)
+    far = scene.translated(FAR)
     far_inputs = _inputs(prepare_groups(far, command="accuracy"), count, rng)["uniform"]
     rows += _Case(far, f"far-{FAR:.0e}".replace("+0", "").replace("+", ""), far_inputs, clock=clock).rows()
     moving = [p for g in prepared.compiled.groups for p in g.points]

@@ -139,8 +139,9 @@ def _refuse_structure(compiled: Compiled, branch: Branch, intervals: list[Interv
     places = _places(_joined(sorted(undecided)), span, full_turn=spec.is_angle and span[1] - span[0] >= 360)
     at = " and ".join(f"{name} = {spec.shown(p)}" for p in places)
     point = _culprit(branch, compiled)
+    dimensions = _dimensions(compiled, point)  # none where the file gives every length as a number
     raise SceneError(compiled.scene.source, f"points.{point}",
-                     f"assembles only at {at} (with {_dimensions(compiled, point)}): {STRUCTURE}")
+                     f"assembles only at {at}{f' (with {dimensions})' if dimensions else ''}: {STRUCTURE}")
 
 
 def _places(stretches: list[tuple[float, float]], span: tuple[float, float], full_turn: bool) -> list[float]:

@@ -151,7 +151,7 @@ class Elimination(Generic[P]):
 
 
 def _lookup(table: dict[str, _T], kind: str, name: str) -> _T:
-    if name not in table:
+    if not isinstance(name, str) or name not in table:  # a list or a dict would not even hash
         raise UsageError(kind, name, f"unknown elimination {kind}" + suggest.known(str(name), sorted(table), plural="valid"))
     return table[name]
 

@@ -43,6 +43,7 @@ Traceback (most recent call last):
 algkin.errors.UsageError: max_seconds=10000000000.0: must be a positive number of seconds, at most a week (604800)
 """
 
+import numbers
 import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, TypeVar
@@ -73,7 +74,7 @@ def time_budget(seconds: float, argument: str) -> float:
     ...
     algkin.errors.UsageError: budget=nan: must be a positive number of seconds, at most a week (604800)
     """
-    if not 0 < seconds <= MAX_SECONDS:  # nan and inf too
+    if isinstance(seconds, bool) or not isinstance(seconds, numbers.Real) or not 0 < seconds <= MAX_SECONDS:  # nan, inf
         raise UsageError(argument, seconds, f"must be a positive number of seconds, at most a week ({MAX_SECONDS})")
     return seconds
 

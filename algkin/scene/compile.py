@@ -27,7 +27,7 @@ from .expr import MAX_VALUE_BITS, bits_bound, irrational
 from .implicit import DyadSpec, ImplicitSpec, SliderSpec
 from .implicit.algebra import Circles, reduce_on_circles
 from .implicit.base import Point
-from .load import parse_output
+from .load import SceneLike, as_scene, parse_output
 from .model import Output, Scene
 from .names import angle_unknowns, check_names, check_output_unknowns, check_symbol_name
 
@@ -212,12 +212,14 @@ def refuse_solved_together(scene: Scene) -> None:
                          "extremum and singular do not yet")
 
 
-def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: Iterable[str] = ()) -> Compiled:
+def compile_scene(scene: SceneLike, outputs: Sequence[str] | None = None, params: Iterable[str] = ()) -> Compiled:
     """Compile ``scene`` for ``outputs`` (names, point names, ``dist(P, Q)``, ``P.x``).
 
     Parameters named in ``params`` stay symbolic; the others take their exact defaults. A scene
     with points solved together (``unknown = true``) is refused: only ``algkin solve`` takes it, for now.
     """
+    if not isinstance(scene, Scene):  # the public API's: a catalog name or a path, or a refusal naming it
+        scene = as_scene(scene)
     refuse_solved_together(scene)
     symbolic = tuple(params)
     defaults, substitution, bits = _parameter_values(scene, symbolic)
@@ -252,6 +254,7 @@ def compile_scene(scene: Scene, outputs: Sequence[str] | None = None, params: It
             raise SceneError(scene.source, f"points.{name}", str(err)) from None
         coords[name] = (sympy.expand(x), sympy.expand(y))
         _check_rational(scene, name, [*coords[name], *builder.equations[made:]])
+        _check_reach(scene, name, coords[name])
     lengths = {v for c in scene.points.values() for length in _lengths(c) for v in length.free_symbols}
     definitions, output_unknowns, nonnegative, angles = _output_equations(resolved, coords, builder, lengths=lengths,
                                                                           source=scene.source)
@@ -411,6 +414,16 @@ def _check_finite(scene: Scene, element: str, value: object) -> None:
     if value.is_number and value != 0 and not MAGNITUDES[0] <= abs(value) <= MAGNITUDES[1]:
         raise SceneError(scene.source, element, f"{sympy.Float(value, 3)} is outside the magnitudes "
                          "1e-100 to 1e100 that floating-point checks can square")
+
+
+def _check_reach(scene: Scene, name: str, coordinates: Point) -> None:
+    """A coordinate with a coefficient past ``MAGNITUDES`` (each frame of a long chain multiplies
+    them, by sqrt(2) at ``at = [1, 1]``) is a scene error, as such a dimension is: floats overflow on it."""
+    for coordinate in coordinates:
+        for coefficient in coordinate.as_coefficients_dict().values():
+            if coefficient.is_number and abs(coefficient) > MAGNITUDES[1]:
+                raise SceneError(scene.source, f"points.{name}", f"its coordinates reach {sympy.Float(abs(coefficient), 3)}"
+                                 ", past the magnitude 1e100 that floating-point checks can square")
 
 
 def _check_bases(scene: Scene, name: str, dyad: Dyad, bases: Sequence[Point]) -> None:

@@ -40,7 +40,7 @@ __all__ = ["load_scene", "load_scene_text", "as_scene", "catalog_names", "MAX_SC
            "Values"]
 
 MAX_SCENE_BYTES = 256 * 1024
-_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")  # matched whole (fullmatch): a $ lets a name end in "\n"
 _TOP_KEYS = {"name", "description", "unit", "parameters", "inputs", "points", "constraints", "outputs"}
 Table = dict[str, Any]
 SceneLike = Union[str, "os.PathLike[str]", Scene]  # what the public functions take for a scene
@@ -155,7 +155,7 @@ class _Loader:
             self.fail(element, str(err))
 
     def identifier(self, name: str, element: str) -> str:
-        if not _NAME.match(name):
+        if not _NAME.fullmatch(name):
             self.fail(element, f"name {name!r} is not an identifier (letters, digits, _)")
         return name
 

@@ -1,5 +1,6 @@
 """Scene data: parameters, inputs, points built by constructions, named outputs."""
 
+import dataclasses
 import math
 
 import attrs
@@ -7,7 +8,7 @@ import sympy
 
 from ..runtime.frozen import FrozenDict, frozen
 from .constraints import Constraint
-from .constructions import Construction, Unknown
+from .constructions import Construction, Fixed, Mode, Unknown
 
 __all__ = ["Scene", "Input", "DrivenInput", "Output", "range_problem", "length_range_problem"]
 
@@ -154,5 +155,20 @@ class Scene:
         """The points solved together (``unknown = true``): a scene only ``algkin solve`` takes, for now."""
         return tuple(n for n, c in self.points.items() if isinstance(c, Unknown))
 
+    def translated(self, offset: int) -> "Scene":
+        """The scene moved by (offset, offset): every ground point, and every configuration that names
+        a mode (``mode.near``), shifted; the same mechanism, its modes the same."""
+        return attrs.evolve(self, points={n: _translated(c, offset) for n, c in self.points.items()})
+
     def parameter_symbols(self) -> dict[str, sympy.Symbol]:
         return {name: sympy.Symbol(name, real=True) for name in self.parameters}
+
+
+def _translated(construction: Construction, offset: int) -> Construction:
+    if isinstance(construction, Fixed):
+        return Fixed(construction.x + offset, construction.y + offset)
+    mode = getattr(construction, "mode", None)
+    if mode is None:
+        return construction
+    near = (mode.near[0] + offset, mode.near[1] + offset)
+    return dataclasses.replace(construction, mode=Mode(mode.at, near))  # type: ignore[type-var]

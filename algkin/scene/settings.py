@@ -18,6 +18,7 @@ Traceback (most recent call last):
 algkin.errors.UsageError: set='b=<an integer of 2001 bits>': number too large or too precise (more than 1024 bits)
 """
 
+import math
 from collections.abc import Iterable, Mapping
 from fractions import Fraction
 
@@ -105,6 +106,8 @@ def _exact(name: str, value: object) -> sympy.Expr:
                              f"number too large or too precise (more than {MAX_NUMBER_BITS} bits)")
         value = f"{numerator}/{denominator}"
     elif isinstance(value, float):
+        if not math.isfinite(value):  # its repr 'nan' or 'inf' would read as a name
+            raise UsageError("set", _given(name, value), "not a finite number")
         value = repr(value)
     try:
         exact = parse(value)

@@ -245,3 +245,11 @@ def test_an_output_that_does_not_move_with_one_input_is_refused(scene, of, said)
     with pytest.raises(UsageError) as caught:
         accuracy(scene, samples=10, of=of)
     assert str(caught.value).startswith(said)
+
+
+def test_a_scene_naming_a_mode_by_a_configuration_is_measured_far_away_too():
+    # hart-inversor names C's mode by where C is at angle 0: the far case moves that place with the scene
+    # (before: refused as bad input, C's named place 1.41e7 from the moved mechanism)
+    far = [r for r in accuracy("hart-inversor", samples=10).rows if r["case"] == "far-1e7"]
+    assert {r["strategy"] for r in far} >= {"closed-form", "stabilised", "reference"}
+    assert max(r["max_rel_error"] for r in far if r["strategy"] == "stabilised") < 1e-12

@@ -69,10 +69,13 @@ def test_cli_table_json_and_files(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("argv", [["--problems", "nope"], ["--methods", "magic"], ["--budget", "0"],
-                                  ["--rounds", "0"]])
+                                  ["--rounds", "0"], ["--rounds", "100000000000"],
+                                  ["--problems", "two-circles", "two-circles"]])
 def test_bad_options_exit_2_with_one_line(argv):
+    # --rounds 100000000000 ran on for ever (each quick row measured again that many times);
+    # a problem named twice was measured twice
     done = subprocess.run([sys.executable, "-m", "algkin", "bench", "--no-peers", *argv],
-                          capture_output=True, text=True)
+                          capture_output=True, text=True, timeout=120)
     assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
 
 

@@ -63,3 +63,23 @@ def test_an_irreducible_curve_says_why_even_when_its_factor_was_chosen_at_the_wi
     document = curve("peaucellier-lipkin", "P", samples=0).to_json()
     assert document["degree"] == 1 and document["irreducible"] is True
     assert document["irreducibility"].startswith("irreducible over QQ: the one factor")
+
+
+def test_a_structure_of_exact_dimensions_says_so_without_an_empty_list():
+    # The four-bar above with its lengths written in the file, no parameter: 'with ' named none
+    text = """name = "still"
+[inputs]
+theta = { range = [0, 360], unit = "deg" }
+[points]
+O = { fixed = [0, 0] }
+D = { fixed = ["22/3", 0] }
+A = { crank = "O", length = "5/6", input = "theta" }
+B = { dyad = ["A", "D"], lengths = [3, "7/2"], branch = "left" }
+[outputs]
+B = "B"
+"""
+    from algkin.scene import load_scene_text
+
+    with pytest.raises(SceneError, match=STRUCTURE) as raised:
+        curve(load_scene_text(text, "still.toml"), "B")
+    assert str(raised.value) == "still.toml: points.B: assembles only at theta = 0°: a structure, not a motion"

@@ -137,3 +137,37 @@ def test_an_exact_number_within_the_sizes_is_read_exactly():
     assert rational("1e-300") == Fraction(1, 10**300)
     assert rational(str(2**1024 - 1)) == 2**1024 - 1
     assert rational(" 2.5e-1 ") == Fraction(1, 4)
+
+
+@pytest.mark.parametrize("argument, value", [("method", ["linear"]), ("backend", {"flint": 1}), ("method", None)])
+def test_a_method_or_backend_that_is_not_a_name_is_refused_by_name(argument, value):
+    # a list or a dict was a TypeError (unhashable) from the table's lookup
+    with pytest.raises(UsageError, match=f"^{argument}=.*unknown elimination {argument}"):
+        algkin.derive("chebyshev-lambda", outputs=["B"], samples=0, **{argument: value})
+
+
+@pytest.mark.parametrize("angle_range", [5, (), (0,), (0, 90, 180), "0:90", (0, "1e999999999"), (0, 2**2000)],
+                         ids=["number", "empty", "one", "three", "text", "huge-exponent", "huge-integer"])
+def test_an_extremum_range_that_is_not_two_numbers_of_a_readable_size_is_refused(angle_range):
+    # a number or a pair too short or long was a TypeError or ValueError from unpacking it; "1e999999999"
+    # was read exactly as 10**999999999, minutes of work before any answer
+    with pytest.raises(UsageError, match="^angle_range="):
+        algkin.extremum("arm-string", "AB", angle_range)
+
+
+def test_compile_scene_takes_a_catalog_name_and_refuses_what_is_not_a_scene():
+    # algkin.compile_scene("fourbar") was an AttributeError ('str' object has no attribute 'unknown_points')
+    compiled = algkin.compile_scene("chebyshev-lambda", ["B"])
+    assert [str(u) for u in compiled.system.unknowns] == ["B_x", "B_y"]
+    with pytest.raises(UsageError, match="^scene=42: expected a catalog name"):
+        algkin.compile_scene(42)
+
+
+@pytest.mark.parametrize("seconds", ["5", None, [5]], ids=["text", "none", "list"])
+def test_a_budget_of_seconds_that_is_not_a_number_is_refused_by_name(seconds):
+    # Budget(seconds="5") was a TypeError from comparing it with 0; None there means no time budget
+    if seconds is None:
+        assert algkin.Budget(seconds=None).seconds is None
+        return
+    with pytest.raises(UsageError, match="^max_seconds="):
+        algkin.Budget(seconds=seconds)

@@ -69,3 +69,12 @@ def test_valued_is_with_values_without_the_reload(name, data):
         assert str(raised.value) == str(err)
         return
     assert valued(scene, values) == expected
+
+
+@pytest.mark.parametrize("value", [float("nan"), float("inf"), -float("inf")], ids=["nan", "inf", "minus-inf"])
+def test_a_float_that_is_no_finite_number_is_refused_as_such(value):
+    # nan was read as the name 'nan': "unknown name 'nan' (known: none)"
+    from algkin.errors import UsageError
+
+    with pytest.raises(UsageError, match=r"^set='a=-?(nan|inf)': not a finite number$"):
+        with_values(load_scene("fourbar"), {"a": value})

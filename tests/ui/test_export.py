@@ -138,3 +138,51 @@ def test_json_holds_the_code_as_printed(tmp_path):
     assert run.returncode == 0
     document = json.loads(run.stdout)
     assert document["to"] == "numpy" and document["code"] == export("chebyshev-lambda", ["B"], "numpy")
+
+
+# Two ground pivots 4 apart and a dyad of 3 and 3 on them: a structure, no input. B is where the
+# circles of radius 3 about (0, 0) and (4, 0) meet: x = 2, y = +-sqrt(9 - 4), left of O->D above.
+STRUCTURE = """name = "structure"
+[points]
+O = { fixed = [0, 0] }
+D = { fixed = [4, 0] }
+B = { dyad = ["O", "D"], lengths = [3, 3], branch = "left" }
+[outputs]
+B = "B"
+"""
+
+
+def test_a_structure_exports_functions_of_no_input_that_give_its_point(tmp_path):
+    from algkin.scene import load_scene_text
+
+    scene, left, right = load_scene_text(STRUCTURE, "structure.toml"), [2, 5 ** 0.5], [2, -5 ** 0.5]
+    scope = {}
+    exec(export(scene, None, "numpy"), scope)  # noqa: S102 - the exported module under test
+    np.testing.assert_allclose([scope["structure_left"](), scope["structure_right"]()], [left, right], rtol=1e-15)
+    if shutil.which("cc") is not None:
+        program = tmp_path / "structure.c"
+        program.write_text(export(scene, None, "c") + """
+#include <stdio.h>
+int main(void) {
+    double out[2];
+    structure_left(out);
+    printf("%.17g %.17g\\n", out[0], out[1]);
+    return 0;
+}
+""")
+        binary = tmp_path / "structure"
+        subprocess.run([shutil.which("cc"), "-std=c99", "-Wall", "-Werror", "-o", str(binary), str(program), "-lm"],
+                       check=True, capture_output=True, text=True)
+        got = [float(v) for v in subprocess.run([str(binary)], capture_output=True, text=True, check=True).stdout.split()]
+        np.testing.assert_allclose(got, left, rtol=1e-15)
+    assert "from no input" in export(scene, None, "js").splitlines()[0]
+
+
+@pytest.mark.parametrize("to", ["c", "latex"])
+def test_a_mechanism_that_assembles_at_one_input_only_is_refused_as_derive_refuses_it(to, tmp_path):
+    # ground 22/3 less crank 5/6 is 13/2 = coupler 3 + rocker 7/2: B reaches across at theta = 0 alone
+    (tmp_path / "old.txt").write_text("kept")
+    run = run_cli(["export", "fourbar", "--set", "a=5/6", "--set", "d=22/3", "--to", to, "--out", "old.txt"], tmp_path)
+    assert run.returncode == 2 and run.stdout == "", run.stderr
+    assert len(run.stderr.splitlines()) == 1 and "a structure, not a motion" in run.stderr, run.stderr
+    assert (tmp_path / "old.txt").read_text() == "kept"

@@ -23,6 +23,7 @@ from ...derivation.pipeline import derive
 from ...derivation.prepared import Prepared, given, prepare, require_outputs
 from ...derivation.witnesses import Groups
 from ...errors import UsageError, renamed
+from ...runtime import validation
 from ...runtime.budget import Budget, Deadline, started
 from ...runtime.frozen import FrozenDict, frozen
 from ...scene.load import SceneLike, Values
@@ -132,11 +133,17 @@ def problem_for(derived: Derivation, output: str, degrees: tuple[sympy.Expr, sym
 def input_span(spec: Input, angle_range: tuple[float | str, float | str] | None) -> tuple[sympy.Expr, sympy.Expr]:
     """The range ``extremum`` searches, exactly, in degrees (a length input's own unit):
     ``angle_range`` in the input's unit, else its declared range; refused in one line if not finite."""
+    if angle_range is not None and (isinstance(angle_range, str) or not isinstance(angle_range, Sequence)
+                                    or len(angle_range) != 2):  # a string of two digits would unpack too
+        raise UsageError("angle_range", angle_range, "expected two finite numbers (lo, hi)")
     lo, hi = angle_range if angle_range is not None else (spec.lo, spec.hi)
-    to_degrees = lambda v: sympy.Rational(str(v)) * (1 if spec.unit != "rad" else 180 / sympy.pi)  # noqa: E731
+    # read within algkin's sizes: sympy.Rational("1e999999999") is minutes of work on 10**999999999
+    to_degrees = lambda v: sympy.Rational(validation.rational(str(v))) * (1 if spec.unit != "rad" else 180 / sympy.pi)  # noqa: E731
     try:
         lo, hi = to_degrees(lo), to_degrees(hi)
-    except (TypeError, ValueError, sympy.SympifyError):
+    except validation.NumberTooLarge as err:
+        raise UsageError("angle_range", angle_range, str(err)) from None
+    except (TypeError, ValueError):
         raise UsageError("angle_range", angle_range, "expected two finite numbers (lo, hi)") from None
     problem: str | None = None
     if not (lo.is_finite and hi.is_finite):

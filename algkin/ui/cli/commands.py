@@ -61,8 +61,6 @@ def _cmd_bench(args: argparse.Namespace) -> Outcome:
     budget, rounds = BENCH_FULL if args.full else BENCH_QUICK
     budget = budget if args.budget is None else args.budget
     rounds = rounds if args.rounds is None else args.rounds
-    if rounds < 1:
-        raise UsageError("--rounds", rounds, "must be at least 1")
     report = bench(args.problems, args.methods, args.backends, budget, not args.no_peers, rounds)
     written = write(report, args.out, plot=_bench_plot()) if args.out else []
     if args.json:

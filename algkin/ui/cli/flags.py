@@ -36,6 +36,7 @@ FLAGS = {
     "branch": "--branch",
     "inputs": "--input",
     "problems": "--problems",
+    "rounds": "--rounds",  # bench's
     "budget": "--budget",  # bench's and sweep's seconds (derive's Budget is the command line's own)
     "grid": "--grid",
     "random": "--random",

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any, NoReturn
 
 from ...errors import UsageError
 from ...runtime import suggest
+from ...runtime.terminal import shortened
 from ...runtime.validation import real, whole
 
 if TYPE_CHECKING:
@@ -22,6 +23,7 @@ __all__ = ["build_parser", "usage", "Shown", "BENCH_QUICK", "BENCH_FULL"]
 # ``algkin bench``'s (seconds per row, rounds): by default a run of a few minutes (rows past 5 s are
 # reported over budget, each measured once); ``--full`` lets the largest problems finish, and measures
 # the quick rows in three rounds (a run of about half an hour).
+ARGUMENTS_SHOWN = 200  # characters of the command line an error line repeats (a value may be 100000 long)
 BENCH_QUICK = (5.0, 1)
 BENCH_FULL = (60.0, 3)
 
@@ -45,22 +47,27 @@ class _Parser(argparse.ArgumentParser):
         super().__init__(*args, **kwargs)
         self.register("type", int, _whole)
         self.register("type", float, _real)
+        for name in (None, "store"):  # the default action, and said by name
+            self.register("action", name, _StoreOnce)
+        self.given: set[str] = set()  # the flags of one value met in this parse
         self._negative_number_matcher = re.compile(r"^-\.?[0-9]")  # no flag of algkin's starts so
 
     def error(self, message: str) -> NoReturn:
-        raise UsageError("arguments", " ".join(sys.argv[1:]), message)
+        raise UsageError("arguments", shortened(" ".join(sys.argv[1:]), ARGUMENTS_SHOWN), message)
 
     def parse_known_args(self, args: Sequence[str] | None = None,  # type: ignore[override]
                          namespace: argparse.Namespace | None = None) -> tuple[argparse.Namespace, list[str]]:
         """As argparse, and with the positional a list option swallowed given back to it:
         ``derive --outputs B chebyshev-lambda`` reads as ``derive chebyshev-lambda --outputs B``."""
         try:
+            self.given = set()
             return super().parse_known_args(args, namespace)
         except UsageError as err:
             given = list(sys.argv[1:] if args is None else args)
             moved = _positional_first(given, self._list_options()) if "are required" in err.message else None
             if moved is None:
                 raise
+            self.given = set()
             return super().parse_known_args(moved, namespace)
 
     def _list_options(self) -> set[str]:
@@ -98,7 +105,16 @@ def _whole(text: str) -> int:
     try:
         return whole(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a whole number (ASCII digits 0-9), got {text!r}") from None
+        raise argparse.ArgumentTypeError(_long(text) or f"expected a whole number (ASCII digits 0-9), got "
+                                                        f"{shortened(text)!r}") from None
+
+
+def _long(text: str) -> str | None:
+    """What is wrong with a whole number in ASCII digits that Python's int() refuses: its length
+    (past 4300 digits), not that it is no number; None for other text."""
+    digits = text.strip()
+    return f"a number of {len(digits)} digits, far past any this option takes" \
+        if text.isascii() and digits.isdigit() else None
 
 
 def _real(text: str) -> float:
@@ -120,6 +136,20 @@ class _Once(argparse.Action):
                 raise UsageError(option_string or self.dest, value, "given twice")
             given.append(value)
         setattr(namespace, self.dest, given)
+
+
+class _StoreOnce(argparse._StoreAction):
+    """A flag of one value given twice is refused (``--to c --to js --out f.c``: which was meant?),
+    where argparse would keep the last without a word."""
+
+    def __call__(self, parser: argparse.ArgumentParser, namespace: argparse.Namespace,
+                 values: str | Sequence[Any] | None, option_string: str | None = None) -> None:
+        given = parser.given if isinstance(parser, _Parser) else set()
+        if option_string is not None:
+            if self.dest in given:
+                raise UsageError(option_string, values, "given twice")
+            given.add(self.dest)
+        super().__call__(parser, namespace, values, option_string)
 
 
 class _Help(argparse.ArgumentDefaultsHelpFormatter):
@@ -202,9 +232,13 @@ def _seconds(text: str) -> float:
 
 
 def _terms(text: str) -> int:
-    if not (text.isascii() and text.strip().isdigit()) or int(text) < 1:
-        raise argparse.ArgumentTypeError(f"expected a positive whole number of terms, got {text!r}")
-    return int(text)
+    try:
+        terms = whole(text) if text.isascii() and text.strip().isdigit() else 0
+    except ValueError:
+        raise argparse.ArgumentTypeError(_long(text)) from None
+    if terms < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive whole number of terms, got {shortened(text)!r}")
+    return terms
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -345,7 +379,7 @@ def build_parser() -> argparse.ArgumentParser:
                               f"{BENCH_FULL[1]} rounds (about half an hour in all)")
     bench.add_argument("--no-peers", action="store_true", help="skip Singular, PARI/GP, Macaulay2, msolve")
     bench.add_argument("--rounds", type=int,
-                       help=f"rows under 2 s are measured this many times in turn, each keeping its best "
+                       help=f"rows under 2 s are measured this many times in turn (at most 100), each keeping its best "
                             f"(default {BENCH_QUICK[1]}, {BENCH_FULL[1]} with --full)")
     bench.add_argument("--out", help="directory for bench.json, bench.csv and bench.png")
     _json(bench)

@@ -272,7 +272,7 @@ def report_follow(d: Document) -> str:
 
 def report_show(d: Document) -> str:
     """``algkin show``'s text: the points, unknowns, parameters, inputs and equations of the scene."""
-    lines = [f"scene {d['scene']}: {d['description']}",
+    lines = [f"scene {d['scene']}: {one_line(d['description'])}",  # a newline in it must not start a line
              *([f"lengths in {d['length_unit']}"] if d.get("length_unit") else []),
              "points: " + ", ".join(f"{n} ({k})" for n, k in d["points"].items()),
              "unknowns: " + ", ".join(d["system"]["unknowns"]),
@@ -309,8 +309,8 @@ def latex_lines(forms: Iterable[Form]) -> str:
     """
     import sympy
 
-    return "".join(f"% {caption}\n\\[ {' '.join([sympy.latex(expr), relation]).strip()} \\]\n"
-                   for caption, expr, relation in forms)
+    return "".join(f"% {one_line(caption)}\n\\[ {' '.join([sympy.latex(expr), relation]).strip()} \\]\n"
+                   for caption, expr, relation in forms)  # a newline in a caption (an output typed so) ends no comment
 
 
 def verification_line(v: Document) -> str:

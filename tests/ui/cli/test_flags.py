@@ -106,3 +106,17 @@ def test_every_name_raised_below_the_command_line_has_its_flag():
 
 def test_every_flag_in_the_table_is_one_the_command_line_takes():
     assert set(FLAGS.values()) <= _command_line_names()
+
+
+@pytest.mark.parametrize("args, flag", [
+    (["export", "chebyshev-lambda", "--to", "c", "--to", "js", "--out", "p.c"], "--to='js'"),
+    (["curve", "chebyshev-lambda", "--point", "P", "--point", "B"], "--point='B'"),
+    (["derive", "chebyshev-lambda", "--samples", "1", "--samples=2"], "--samples=2"),
+])
+def test_a_flag_of_one_value_given_twice_is_refused(tmp_path, monkeypatch, capsys, args, flag):
+    # argparse kept the last without a word: JavaScript written into p.c, the curve of B for P's
+    monkeypatch.chdir(tmp_path)
+    assert main(args) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err == f"algkin: error: {flag}: given twice\n"
+    assert list(tmp_path.iterdir()) == []

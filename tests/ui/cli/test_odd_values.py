@@ -159,3 +159,11 @@ def test_a_float_overflow_in_the_verification_says_no_second_line(tmp_path):
     # checked; numpy's overflow warnings were six lines on stderr beside the report's failed check
     done = algkin("curve", "fourbar", "--point", "P", "--set", "p=1e99", "--samples", "3", cwd=tmp_path)
     assert done.returncode in (0, 1) and done.stderr == "", done.stderr[-2000:]
+
+
+@pytest.mark.parametrize("flag", ["--seed", "--samples", "--max-terms"])
+def test_a_whole_number_of_5000_digits_is_refused_as_too_long_in_a_short_line(tmp_path, flag):
+    # Python reads at most 4300 digits: the line said "expected a whole number (ASCII digits 0-9)" of
+    # one (--max-terms: "invalid _terms value") and repeated the command line whole, 10,000 characters
+    line = refused(algkin("derive", "fourbar", flag, "9" * 5000, cwd=tmp_path), flag, "5000 digits")
+    assert "ASCII" not in line and "_terms" not in line and len(line) < 400, line[:500]

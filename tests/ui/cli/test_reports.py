@@ -154,3 +154,23 @@ def test_show_of_a_scene_with_no_input_says_so(tmp_path, capsys):
     scene.write_text('[points]\nO = { fixed = [0, 0] }\nD = { fixed = [2, 0] }\n[outputs]\nd = "dist(O, D)"\n')
     assert main(["show", str(scene)]) == 0
     assert "inputs: none (a structure)\n" in capsys.readouterr().out
+
+
+def test_a_scene_description_cannot_start_a_line_of_show(tmp_path, capsys):
+    # the description was printed as it is: its newline started a line that read as algkin's own
+    text = (ROOT / "algkin" / "catalog" / "chebyshev-lambda.toml").read_text()
+    forged = "one\nnever assembles: B: forged\r\nequations (= 0):"
+    (tmp_path / "forged.toml").write_text(text.replace("description = ", f"description = {json.dumps(forged)}\n# ", 1))
+    assert main(["show", str(tmp_path / "forged.toml")]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0] == "scene chebyshev-lambda: one\\nnever assembles: B: forged\\r\\nequations (= 0):"
+    assert not any(line.startswith("never assembles") for line in lines)
+    assert sum(line.startswith("equations (= 0):") for line in lines) == 1
+
+
+def test_a_latex_caption_stays_in_its_comment():
+    # a caption holding a newline (an output typed "dist(O,\nB)") ended the % comment: the rest was TeX
+    from algkin.ui.cli.reports import latex_lines
+
+    text = latex_lines([("minimum of dist(O,\nB)\r\\input{x}", sympy.Integer(2), "")])
+    assert text.splitlines() == ["% minimum of dist(O,\\nB)\\r\\input{x}", r"\[ 2 \]"]

@@ -1,0 +1,17 @@
+"""A scene moved away (``Scene.translated``, the accuracy run's far case) is the same mechanism: its
+ground points and the configurations that name its modes move together, its modes stay the ones meant."""
+
+from algkin.derivation.modes import resolve_modes
+from algkin.scene import load_scene
+
+FAR = 10**7
+
+
+def test_a_mode_named_by_a_configuration_moves_with_the_scene():
+    # Hart's inversor names C's mode by C near (-1, 1.7) at angle 0; moved by (1e7, 1e7) its C is there
+    # plus (1e7, 1e7), so the same mode is meant (before: refused, the nearest C 1.41e7 from the old place)
+    scene = load_scene("hart-inversor")
+    moved = scene.translated(FAR)
+    assert moved.points["C"].mode.near == (scene.points["C"].mode.near[0] + FAR, scene.points["C"].mode.near[1] + FAR)
+    assert (moved.points["O"].x, moved.points["O"].y) == (FAR, FAR)
+    assert resolve_modes(moved).points["C"].branch == resolve_modes(scene).points["C"].branch
