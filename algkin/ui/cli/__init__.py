@@ -22,6 +22,7 @@ import argparse
 import functools
 import gc
 import importlib
+import os
 import sys
 import warnings
 from collections.abc import Callable, Sequence
@@ -45,6 +46,8 @@ _ERROR_KINDS = ((UsageError, "usage"), (SceneError, "scene"), (BudgetExceeded, "
 ALGEBRA = ("sympy", "numpy", "numpy.random", "flint", "sympy.calculus.accumulationbounds",
            "sympy.matrices.expressions", "sympy.tensor.tensor")
 NO_ALGEBRA = frozenset({"list"})
+# Set (to anything), an unexpected exception propagates with its traceback instead of one line
+TRACEBACK = "ALGKIN_TRACEBACK"
 
 
 def __getattr__(name: str) -> object:
@@ -96,6 +99,12 @@ def _main(argv: list[str], *, apart: bool = False) -> int:
         return write_stdout(_failed(argv, args, _kind(err), str(err), f"error: {err}"), 2, failed=True)
     except AlgkinError as err:
         return write_stdout(_failed(argv, args, _kind(err), str(err), f"failed: {err}"), 1, failed=True)
+    except Exception as err:  # a defect of algkin's: said as every failure is (--json's one document too)
+        if os.environ.get(TRACEBACK):
+            raise
+        message = "out of memory" if isinstance(err, MemoryError) else \
+            f"internal error, {type(err).__name__}: {err} (a defect of algkin: {TRACEBACK}=1 shows where)"
+        return write_stdout(_failed(argv, args, "internal", message, f"failed: {message}"), 1, failed=True)
 
 
 def _command(args: argparse.Namespace, *, apart: bool = False) -> int:
@@ -179,5 +188,6 @@ def _failed(argv: list[str], args: argparse.Namespace | None, kind: str, message
 
 
 def _kind(err: AlgkinError) -> str:
-    """The error's kind in a JSON error document: usage, scene, budget or computation."""
+    """The error's kind in a JSON error document: usage, scene, budget or computation (interrupted and
+    internal are the command line's own)."""
     return next((kind for cls, kind in _ERROR_KINDS if isinstance(err, cls)), "computation")
