@@ -2,7 +2,7 @@
 
 import re
 
-__all__ = ["terminal_safe", "one_line", "shortened"]
+__all__ = ["terminal_safe", "one_line", "shortened", "clipped"]
 
 # Control characters (ESC starts terminal commands) and bidirectional overrides (which
 # reorder what is shown) from a scene's names and text are shown escaped, never obeyed.
@@ -36,3 +36,17 @@ def one_line(text: str) -> str:
     'points.B\\nimport os: not a name\\x1b[2J'
     """
     return terminal_safe(text).replace("\n", "\\n").replace("\t", "\\t")
+
+
+def clipped(text: str, limit: int = 1000) -> str:
+    """``text`` with its middle left out past ``limit`` characters (about that many kept), saying how
+    much: an error line keeps the flag it starts with and the reason it ends with (a value 100000
+    characters long may stand between them, once or more).
+
+    >>> clipped("--outputs='" + "B" * 3000 + "': unknown point", 60)
+    "--outputs='BBBBBBBB...(2988 characters left out)...BBBB': unknown point"
+    """
+    if len(text) <= limit:
+        return text
+    head, tail = limit // 2, limit // 3
+    return f"{text[:head - 11]}...({len(text) - head - tail + 11} characters left out)...{text[-tail:]}"

@@ -176,9 +176,9 @@ def _save(files: Sequence[File] = ()) -> None:
 def _failed(argv: list[str], args: argparse.Namespace | None, kind: str, message: str, line: str) -> str:
     """Say ``line`` on stderr; what stdout gets: with --json, the error as the one JSON document."""
     from .commands import COMMANDS
-    from ...runtime.terminal import one_line
+    from ...runtime.terminal import clipped, one_line
 
-    say(one_line(line))
+    say(clipped(one_line(line)))
     if not (getattr(args, "json", False) if args is not None else "--json" in argv):
         return ""
     command = args.command if args is not None else next(iter(argv), None)

@@ -103,3 +103,11 @@ def test_a_value_starting_with_a_minus_and_a_digit_is_a_value(capsys, args, said
     # argparse took only -90 or -0.5 for a value: `--range -90:90` said "expected one argument"
     err = one_error(capsys, *args)
     assert err.startswith(f"algkin: error: {said}"), err
+
+
+def test_a_value_a_hundred_thousand_characters_long_leaves_a_short_line_with_the_flag_and_the_reason(capsys):
+    # the value stands in the message three times: 300 KB on one line before
+    code, _, err = run(capsys, "derive", "fourbar", "--outputs", "Q" * 100_000)
+    assert code == 2 and err.count("\n") == 1 and len(err) < 1200
+    assert err.startswith("algkin: error: --outputs='QQQ") and "characters left out" in err
+    assert err.endswith("(outputs: B, P; or a point, P.x, P.y, dist(P, Q), angle(P, Q, R))\n")
