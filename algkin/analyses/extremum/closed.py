@@ -129,8 +129,14 @@ def _matching_factor(factors: Iterable[sympy.Expr], variable: sympy.Symbol, targ
 
 def _root_matching(factor: sympy.Expr | None, variable: sympy.Symbol, target: mpmath.mpf,
                    values: Values) -> sympy.Expr | None:
-    """The root of ``factor`` in radicals equal to ``target`` at ``values``, denested."""
-    if factor is None or sympy.degree(factor, variable) > 4:
+    """The root of ``factor`` in radicals equal to ``target`` at ``values``, denested; None past a
+    quadratic whose coefficients hold dimensions (Ferrari's formulas on the four-bar's ``dist(P, O)``
+    with ``a`` symbolic: 6.5 s for roots of 124,000 characters, then minutes denesting them, for a
+    form no reader could use: its factor says the input)."""
+    if factor is None:
+        return None
+    degree = sympy.degree(factor, variable)
+    if degree > 4 or (degree > 2 and factor.free_symbols - {variable}):
         return None
     candidates = []
     for root in sympy.roots(sympy.Poly(factor, variable)):
@@ -205,8 +211,18 @@ def describe(problem: Problem, stationary: Sequence[sympy.Expr], values_factors:
     if value is None and root is not None and at == "dead centre":
         value = _double_root(problem, root)
     if value is None and root is not None:
-        value = sympy.sqrtdenest(_closed_at(problem, best.input_deg).xreplace(line.exact_in_t(root)))
+        value = _denested(_closed_at(problem, best.input_deg).xreplace(line.exact_in_t(root)))
     return Description(at, degrees, value, factor, u_factor)
+
+
+# Past this many operations a form is left as it is: sympy's denesting of the four-bar's dist(P, O) at a
+# stationary input with ``a`` symbolic (6,080 operations) ran for minutes
+DENEST_OPS = 400
+
+
+def _denested(expr: sympy.Expr) -> sympy.Expr:
+    """``expr`` denested (``sympy.sqrtdenest``) where it is small enough to try (``DENEST_OPS``)."""
+    return sympy.sqrtdenest(expr) if sympy.count_ops(expr) <= DENEST_OPS else expr
 
 
 def _double_root(problem: Problem, root: sympy.Expr) -> sympy.Expr | None:
@@ -284,6 +300,8 @@ def closed_form(problem: Problem, stationary: list[sympy.Expr], defaults: Values
             return best, Description("unbounded", None, None, None, None)
         return best, describe(problem, stationary, values_factors, values, best, meeting)
 
+    if deadline is not None:
+        deadline.note("writing the extremum in the dimensions, region by region")
     with mpmath.workdps(DIGITS):
         found = extremum_at(defaults)
         if found is None:  # real nowhere at the defaults: refused, as ``extreme`` refuses
