@@ -13,7 +13,7 @@ import pytest
 from algkin.analyses.solve import solve
 from algkin.ui.export import export
 
-from .cli.test_usage import run_cli
+from .cli.in_process import run_main
 from .test_export_hostile import PAYLOADS
 
 
@@ -53,7 +53,7 @@ def test_a_hostile_scene_name_stays_data(tmp_path, hostile):
     source = resources.files("algkin.catalog").joinpath("3rpr.toml").read_text()
     scene = tmp_path / "hostile.toml"
     scene.write_text(source.replace('name = "3rpr"', f"name = {json.dumps(hostile)}"))
-    done = run_cli(["export", str(scene), "--to", "numpy", "--out", "m.py"], tmp_path)
+    done = run_main(["export", str(scene), "--to", "numpy", "--out", "m.py"], tmp_path)  # the code is the question
     assert done.returncode == 0, done.stderr
     code = (tmp_path / "m.py").read_text()
     assert all(32 <= ord(c) < 127 for line in code.splitlines() for c in line)
