@@ -2,6 +2,7 @@
 found by a root finder, the mode followed by continuation from where ``solve`` labels it, the other
 unknowns rational in it) gives ``algkin solve``'s coordinates; a hostile scene name stays data."""
 
+import contextlib
 import importlib.util
 import json
 import math
@@ -57,7 +58,8 @@ def test_a_hostile_scene_name_stays_data(tmp_path, hostile):
     assert done.returncode == 0, done.stderr
     code = (tmp_path / "m.py").read_text()
     assert all(32 <= ord(c) < 127 for line in code.splitlines() for c in line)
-    loaded = module(code, tmp_path / "m2.py")
+    with contextlib.chdir(tmp_path):  # a payload run on import would write its file here, where it is looked for
+        loaded = module(code, tmp_path / "m2.py")
     assert not list(tmp_path.glob("PWNED*"))
     functions = [n for n in dir(loaded) if callable(getattr(loaded, n)) and not n.startswith(("algkin_", "_"))]
     assert len(functions) == 4 and all(n.isidentifier() for n in functions)
