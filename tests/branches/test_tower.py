@@ -26,10 +26,11 @@ def expanded() -> dict:
         return json.load(text)
 
 
-def _at(text_or_expr, angle: mpmath.mpf, symbols: dict) -> mpmath.mpc:
-    expr = sympy.sympify(text_or_expr, locals=symbols) if isinstance(text_or_expr, str) else text_or_expr
-    c, s = symbols["c"], symbols["s"]
-    return mpmath.mpc(sympy.N(expr.xreplace({c: sympy.cos(angle), s: sympy.sin(angle)}), 50))
+def _on_the_circle(expr: sympy.Expr, symbols: dict):
+    """``expr`` as a function of the angle, in mpmath at its working precision (complex where a root's
+    radicand is negative): compiled once, then evaluated at each angle."""
+    function = sympy.lambdify((symbols["c"], symbols["s"]), expr, "mpmath")
+    return lambda angle: mpmath.mpc(function(mpmath.cos(angle), mpmath.sin(angle)))
 
 
 @pytest.mark.parametrize("name", NESTED)
@@ -47,10 +48,11 @@ def test_a_nested_dyads_closed_forms_are_sympys_expanded_ones(name: str, expande
     with mpmath.workdps(50):
         for branch in derived.branches:
             for unknown, value in branch.values.items():
+                old_at = _on_the_circle(sympy.sympify(before[branch.label][unknown], locals=locals_), symbols)
+                new_at = _on_the_circle(value, symbols)
                 for degrees in (17, 95, 211, 300):
                     angle = mpmath.radians(degrees)
-                    old = _at(sympy.sympify(before[branch.label][unknown], locals=locals_), angle, symbols)
-                    new = _at(value, angle, symbols)
+                    old, new = old_at(angle), new_at(angle)
                     assert abs(new - old) <= mpmath.mpf(10) ** -20 * max(1, abs(old)), (branch.label, unknown, degrees)
                     compared += 1
     assert compared == 4 * sum(len(b.values) for b in derived.branches)

@@ -21,19 +21,25 @@ RIVALS = {"flint": (("resultant", "flint"), ("groebner", "flint"), ("linear", "f
           "sympy": (("resultant", "flint"), ("resultant", "sympy"))}
 
 
-def eliminants(scene, params, method, backend):
-    """B_x and B_y each by eliminating the other from B's two equations, at shared witnesses."""
+def b_equations(scene, params):
+    """B's two equations, the variables kept, and the witnesses: compiled once for all the rivals."""
     compiled = compile_scene(scene, ["B"], params)
     groups = witnesses(compiled, closed_forms(compiled))
     system = compiled.system
     keep = list(system.input_variables) + list(system.parameters)
     equations = [e for e in system.equations if {"B_x", "B_y"} & {str(v) for v in e.free_symbols}]
+    return equations, keep, groups
+
+
+def eliminants(equations, keep, groups, method, backend):
+    """B_x and B_y each by eliminating the other from B's two equations, at shared witnesses."""
     return {u: eliminate(equations, [o], [u] + keep, method=method, backend=backend, witnesses=groups).polynomial
             for u, o in (("B_x", "B_y"), ("B_y", "B_x"))}
 
 
 def assert_agree(scene, params, rivals):
-    first, *others = (eliminants(scene, params, *rival) for rival in rivals)
+    equations, keep, groups = b_equations(scene, params)
+    first, *others = (eliminants(equations, keep, groups, *rival) for rival in rivals)
     for unknown in first:
         assert first[unknown].has(sympy.Symbol(unknown, real=True))
         for other in others:

@@ -1,6 +1,7 @@
 """A family (algkin.sweep.family): what the designs share, worked out once, gives each design the
 row it gets computed alone, and leaves to each design's own path what it cannot answer for."""
 
+import functools
 from fractions import Fraction
 from importlib import resources
 
@@ -21,10 +22,17 @@ def without_seconds(row):
     return {k: v for k, v in row.items() if not k.startswith("seconds_")}
 
 
+@functools.cache
+def family_of(scene, names, point, analyses):
+    """The family, made once for all the designs a test draws in its dimensions, as a sweep makes it once
+    for all of its designs."""
+    return Family.of(scene, names, point, analyses=analyses)
+
+
 def shared_and_alone(scene, values, *, point="P", analyses=ANALYSES):
     """The row of one design of ``scene`` with the family of its dimensions, and alone."""
     job = Job(scene, analyses, point)
-    family = Family.of(scene, tuple(values), point, analyses=analyses)
+    family = family_of(scene, tuple(values), point, analyses)
     return (without_seconds(evaluate_design(job, 0, values, family=family)),
             without_seconds(evaluate_design(job, 0, values)))
 

@@ -2,8 +2,6 @@
 and its filters show the designs they should (counted by hand: Grashof classes from the lengths)."""
 
 import html.parser
-import subprocess
-import sys
 from fractions import Fraction
 
 import pytest
@@ -13,6 +11,7 @@ from algkin.ui.atlas import atlas_data
 
 from ..hand_linkages import SIDES, fourbar
 from ..sweep.hand import hand_grashof
+from .cli.in_process import run_main
 from .draw.browser import dump_dom
 
 A, L, D = ("1/2", "3"), ("2", "3"), ("2", "4", "10")  # rocker m = 7/2; with d = 10 nothing assembles
@@ -26,7 +25,7 @@ def atlas(tmp_path_factory):
     for argv in (["sweep", "fourbar", *(f"--grid={g}" for g in grid), "--analyses", "curve,grashof,transmission",
                   "--out", folder / "sweep", "--executor", "serial"],
                  ["atlas", folder / "sweep", "--out", folder / "atlas.html"]):
-        done = subprocess.run([sys.executable, "-m", "algkin", *map(str, argv)], capture_output=True, text=True)
+        done = run_main(list(map(str, argv)), folder)  # in this process: the page is the question
         assert done.returncode == 0, done.stderr
     return folder
 
@@ -131,8 +130,7 @@ def test_the_singular_points_filter_appears_with_its_column(atlas, tmp_path):
               for k, status in enumerate(table.column("status").to_pylist())]
     pq.write_table(table.append_column("singular_count", pa.array(counts, pa.int64())),
                    tmp_path / "sweep" / "designs.parquet")
-    done = subprocess.run([sys.executable, "-m", "algkin", "atlas", str(tmp_path / "sweep"), "--out",
-                           str(tmp_path / "atlas.html")], capture_output=True, text=True)
+    done = run_main(["atlas", str(tmp_path / "sweep"), "--out", str(tmp_path / "atlas.html")], tmp_path)
     assert done.returncode == 0, done.stderr
     state, cards = load(tmp_path / "atlas.html", "?singular=2")
     assert [not c["hidden"] for c in cards] == [n == 2 for n in counts] and state["shown"] == str(counts.count(2))

@@ -13,7 +13,8 @@ from algkin.bench.accuracy import sample_cases, Subject
 from algkin.scene import load_scene
 from algkin.ui.export import export
 
-from .cli.test_usage import run_cli
+from .cli.in_process import run_main  # the code written is the question: in this process
+from .cli.test_usage import run_cli  # exit codes and the one line on stderr: in a process of its own
 
 TOLERANCE = 1e-13  # relative to the point's size
 ULPS = 8
@@ -116,7 +117,7 @@ def test_bad_export_arguments_are_one_line_and_exit_2(args, words, tmp_path):
 
 
 def test_out_is_written_whole_and_a_bad_path_writes_nothing(tmp_path):
-    run = run_cli(["export", "chebyshev-lambda", "--outputs", "P", "--to", "js", "--out", "p.js"], tmp_path)
+    run = run_main(["export", "chebyshev-lambda", "--outputs", "P", "--to", "js", "--out", "p.js"], tmp_path)
     assert run.returncode == 0 and "p.js" in run.stdout
     assert (tmp_path / "p.js").read_text() == export("chebyshev-lambda", ["P"], "js")
     bad = run_cli(["export", "chebyshev-lambda", "--to", "c", "--out", "missing/p.c"], tmp_path)
@@ -134,7 +135,7 @@ def test_a_mechanism_that_never_assembles_is_refused_and_its_old_file_kept(to, t
 
 
 def test_json_holds_the_code_as_printed(tmp_path):
-    run = run_cli(["export", "chebyshev-lambda", "--outputs", "B", "--to", "numpy", "--json"], tmp_path)
+    run = run_main(["export", "chebyshev-lambda", "--outputs", "B", "--to", "numpy", "--json"], tmp_path)
     assert run.returncode == 0
     document = json.loads(run.stdout)
     assert document["to"] == "numpy" and document["code"] == export("chebyshev-lambda", ["B"], "numpy")

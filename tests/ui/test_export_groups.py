@@ -2,6 +2,7 @@
 found by a root finder, the mode followed by continuation from where ``solve`` labels it, the other
 unknowns rational in it) gives ``algkin solve``'s coordinates; a hostile scene name stays data."""
 
+import contextlib
 import importlib.util
 import json
 import math
@@ -13,7 +14,7 @@ import pytest
 from algkin.analyses.solve import solve
 from algkin.ui.export import export
 
-from .cli.test_usage import run_cli
+from .cli.in_process import run_main
 from .test_export_hostile import PAYLOADS
 
 
@@ -53,11 +54,12 @@ def test_a_hostile_scene_name_stays_data(tmp_path, hostile):
     source = resources.files("algkin.catalog").joinpath("3rpr.toml").read_text()
     scene = tmp_path / "hostile.toml"
     scene.write_text(source.replace('name = "3rpr"', f"name = {json.dumps(hostile)}"))
-    done = run_cli(["export", str(scene), "--to", "numpy", "--out", "m.py"], tmp_path)
+    done = run_main(["export", str(scene), "--to", "numpy", "--out", "m.py"], tmp_path)  # the code is the question
     assert done.returncode == 0, done.stderr
     code = (tmp_path / "m.py").read_text()
     assert all(32 <= ord(c) < 127 for line in code.splitlines() for c in line)
-    loaded = module(code, tmp_path / "m2.py")
+    with contextlib.chdir(tmp_path):  # a payload run on import would write its file here, where it is looked for
+        loaded = module(code, tmp_path / "m2.py")
     assert not list(tmp_path.glob("PWNED*"))
     functions = [n for n in dir(loaded) if callable(getattr(loaded, n)) and not n.startswith(("algkin_", "_"))]
     assert len(functions) == 4 and all(n.isidentifier() for n in functions)

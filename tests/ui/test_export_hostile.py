@@ -20,7 +20,7 @@ from algkin.scene import SceneBuilder, load_scene_text
 from algkin.ui.export import export, function_names
 from algkin.ui.identifiers import RESERVED, identifiers
 
-from .cli.test_usage import run_cli
+from .cli.in_process import run_main
 
 NEWLINES = ["\n", "\r", "\r\n", "\x0b", "\x0c", "\x1c", "\x1d", "\x1e", "\x85", "\u2028", "\u2029"]
 # One line of live code per language; each writes a file PWNED_<language> in the working directory.
@@ -277,12 +277,13 @@ def test_a_function_name_taken_by_an_input_gives_the_input_another():
 
 
 def test_the_command_line_writes_the_same_inert_code(tmp_path):
-    """The scene file through ``algkin export FILE --to X --out F``, for each target."""
+    """The scene file through ``algkin export FILE --to X --out F``, for each target (in this process:
+    what it writes is the question, not the process)."""
     name = "\n".join(["x", *PAYLOADS, ""])
     (tmp_path / "hostile.toml").write_text(_scene_file(name, angle="int"), encoding="utf-8")
     scene = load_scene_text(_scene_file(name, angle="int"), "hostile.toml")
     for to, suffix in (("c", "c"), ("numpy", "py"), ("js", "js"), ("latex", "tex")):
-        run = run_cli(["export", "hostile.toml", "--to", to, "--out", f"out.{suffix}"], tmp_path)
+        run = run_main(["export", "hostile.toml", "--to", to, "--out", f"out.{suffix}"], tmp_path)
         assert run.returncode == 0, run.stderr
         assert (tmp_path / f"out.{suffix}").read_text(encoding="utf-8") == export(scene, None, to)
     assert not _latex_problems((tmp_path / "out.tex").read_text())

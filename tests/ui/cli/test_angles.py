@@ -1,12 +1,11 @@
 """Angle outputs through the command line: derive, verify, extremum and plot (exit codes, JSON, text)."""
 
 import json
-from concurrent.futures import ThreadPoolExecutor
 
 import pytest
 import sympy
 
-from .test_usage import run_cli
+from .in_process import run_main
 
 RUNS = {
     "derive-json": ["derive", "fourbar", "--outputs", "angle(D, B)", "--json"],
@@ -24,10 +23,9 @@ RUNS = {
 
 @pytest.fixture(scope="module")
 def runs(tmp_path_factory):
+    # in this process: these check what each command computes and writes, not its process (test_usage does)
     dirs = {k: tmp_path_factory.mktemp(k) for k in RUNS}
-    with ThreadPoolExecutor(max_workers=2) as pool:
-        futures = {k: pool.submit(run_cli, a, dirs[k]) for k, a in RUNS.items()}
-        yield {k: (f.result(), dirs[k]) for k, f in futures.items()}
+    return {k: (run_main(a, dirs[k]), dirs[k]) for k, a in RUNS.items()}
 
 
 def ok(runs, key):

@@ -10,6 +10,7 @@ import algkin
 from algkin.ui.cli import build_parser, main
 from algkin.errors import SceneError, UsageError
 
+from .in_process import run_main
 from .test_usage import run_cli
 
 
@@ -48,8 +49,8 @@ def test_help_shows_defaults_of_zero_too(capsys):
 
 
 def test_set_on_the_command_line_is_exact(tmp_path):
-    result = run_cli(["show", "arm-string", "--outputs", "AB", "--set", "b=0.1", "--set", "a=3/2", "--json"],
-                     tmp_path)
+    result = run_main(["show", "arm-string", "--outputs", "AB", "--set", "b=0.1", "--set", "a=3/2", "--json"],
+                      tmp_path)  # in this process: the document is the question
     assert result.returncode == 0, result.stderr
     equations = json.loads(result.stdout)["system"]["equations"]
     from algkin.scene import with_values

@@ -3,8 +3,6 @@
 import json
 import math
 import re
-import subprocess
-import sys
 
 import pytest
 import sympy
@@ -13,17 +11,16 @@ import algkin
 from algkin.ui.cli import main
 from algkin.ui.cli.reports import report_toggles
 
+from .in_process import run_main
 from .test_usage import ROOT, run_cli
 
 
 def test_derive_text_summarises_long_forms_and_out_keeps_them_whole(tmp_path):
     out = tmp_path / "stephenson.json"
-    command = [sys.executable, "-m", "algkin", "derive", "stephenson-iii", "--out", str(out)]
-    with subprocess.Popen(command, cwd=tmp_path, env={"PYTHONPATH": str(ROOT)}, stdout=subprocess.PIPE,
-                          stderr=subprocess.PIPE, text=True) as cli:
-        expected = algkin.derive("stephenson-iii").to_json()  # meanwhile, the same through the Python API
-        text, errors = cli.communicate(timeout=300)
-    assert cli.returncode == 0, errors
+    cli = run_main(["derive", "stephenson-iii", "--out", str(out)], tmp_path)
+    text = cli.stdout
+    expected = algkin.derive("stephenson-iii").to_json()  # the same through the Python API
+    assert cli.returncode == 0, cli.stderr
     assert len(text.encode()) < 8000 and max(len(line) for line in text.splitlines()) <= 250
     assert "full forms: --json or --out FILE" in text
     assert f"wrote the full JSON document to {out}" in text
@@ -34,7 +31,7 @@ def test_derive_text_summarises_long_forms_and_out_keeps_them_whole(tmp_path):
 
 
 def test_short_forms_stay_whole_with_no_hint(tmp_path):
-    result = run_cli(["derive", "arm-string", "--samples", "0"], tmp_path)
+    result = run_main(["derive", "arm-string", "--samples", "0"], tmp_path)
     assert result.returncode == 0, result.stderr
     document = algkin.derive("arm-string", samples=0).to_json()
     for form in [*document["eliminants_reduced"].values(), *document["branches"][0]["values"].values()]:
@@ -53,17 +50,17 @@ def test_toggles_text_puts_each_dropped_factor_on_one_short_line():
 
 
 def test_latex_of_derive_curve_and_extremum(tmp_path):
-    derived = run_cli(["derive", "chebyshev-lambda", "--outputs", "B", "--samples", "0", "--latex"], tmp_path)
+    derived = run_main(["derive", "chebyshev-lambda", "--outputs", "B", "--samples", "0", "--latex"], tmp_path)
     assert derived.returncode == 0, derived.stderr
     result = algkin.derive("chebyshev-lambda", ["B"], samples=0)
     for reduced in result.eliminants_reduced.values():  # on the circle, and labelled so
         assert sympy.latex(reduced) + " = 0" in derived.stdout
     assert "reduced on c^2 + s^2 = 1" in derived.stdout
     assert "\\sqrt" in derived.stdout and "\\frac" in derived.stdout
-    curve = run_cli(["curve", "chebyshev-lambda", "--point", "P", "--samples", "0", "--latex"], tmp_path)
+    curve = run_main(["curve", "chebyshev-lambda", "--point", "P", "--samples", "0", "--latex"], tmp_path)
     assert curve.returncode == 0, curve.stderr
     assert sympy.latex(algkin.curve("chebyshev-lambda", "P", samples=0).elimination.polynomial) in curve.stdout
-    minimum = run_cli(["extremum", "arm-string", "--of", "AB", "--param", "b", "--latex"], tmp_path)
+    minimum = run_main(["extremum", "arm-string", "--of", "AB", "--param", "b", "--latex"], tmp_path)
     assert minimum.returncode == 0, minimum.stderr
     assert "\\sqrt{b^{2} + 160000} - 350" in minimum.stdout
 
@@ -97,14 +94,14 @@ def test_toggles_gives_the_limit_positions_and_the_time_ratio(tmp_path):
     # the offset slider-crank (crank 1, rod 3, offset 1/2): B stops where crank and rod line up,
     # |OB| = 4 and 2; by hand its stroke is (sqrt(63) - sqrt(15))/2 and the return angle
     # alpha = asin(1/4) - asin(1/8)
-    text = run_cli(["toggles", "slider-crank"], tmp_path)
+    text = run_main(["toggles", "slider-crank"], tmp_path)
     assert text.returncode == 0, text.stderr
     assert "  extended   B [ahead] * at [7.18075578145828" in text.stdout
     assert "output stroke: travel 2.03213529349318 = (-sqrt(15) + 3*sqrt(7))/2" in text.stdout
     alpha = math.degrees(math.asin(1 / 4) - math.asin(1 / 8))
     printed = re.search(r"time ratio of B \[ahead\]: (\S+) = \(180 \+ alpha\)/\(180 - alpha\)", text.stdout)
     assert float(printed.group(1)) == pytest.approx((180 + alpha) / (180 - alpha), rel=1e-14)
-    result = run_cli(["toggles", "slider-crank", "--json"], tmp_path)
+    result = run_main(["toggles", "slider-crank", "--json"], tmp_path)
     document = json.loads(result.stdout)
     assert {"scene", "input", "range", "toggles", "grashof", "artefacts", "limits", "time_ratio"} <= set(document)
     ahead = [g for g in document["limits"] if g["selected"]]
@@ -121,14 +118,14 @@ def test_toggles_gives_the_limit_positions_and_the_time_ratio(tmp_path):
 def test_toggles_time_ratio_follows_set_and_is_null_with_a_reason(tmp_path):
     # crank 3/2, ground 4, coupler 3, rocker 7/2: a crank-rocker; by the law of cosines the crank
     # is at acos((16 + 4.5**2 - 3.5**2)/36) extended and 180 + acos((16 + 1.5**2 - 3.5**2)/12) folded
-    set_crank = run_cli(["toggles", "fourbar", "--set", "a=3/2", "--json"], tmp_path)
+    set_crank = run_main(["toggles", "fourbar", "--set", "a=3/2", "--json"], tmp_path)
     assert set_crank.returncode == 0, set_crank.stderr
     extended = math.degrees(math.acos((16 + 4.5**2 - 3.5**2) / 36))
     folded = 180 + math.degrees(math.acos((16 + 1.5**2 - 3.5**2) / 12))
     span = folded - extended
     ratio = json.loads(set_crank.stdout)["time_ratio"]
     assert ratio["ratio"] == pytest.approx(max(span, 360 - span) / min(span, 360 - span), rel=1e-12)
-    rocking = run_cli(["toggles", "fourbar-nongrashof", "--json"], tmp_path)
+    rocking = run_main(["toggles", "fourbar-nongrashof", "--json"], tmp_path)
     document = json.loads(rocking.stdout)
     assert document["time_ratio"] is None and "does not turn fully" in document["time_ratio_reason"]
     assert len(document["limits"]) == 2

@@ -12,6 +12,8 @@ from pathlib import Path
 import pytest
 import sympy
 
+from .in_process import run_main
+
 ROOT = Path(__file__).resolve().parents[3]
 
 
@@ -205,11 +207,12 @@ def test_show_b_leaves_out_the_coupler_point(runs):
 
 
 def test_zero_samples_say_skipped_not_passed(tmp_path):
-    text = run_cli(["derive", "chebyshev-lambda", "--outputs", "B", "--samples", "0"], tmp_path)
+    # in this process (``run_main``): the report is the question, not the process
+    text = run_main(["derive", "chebyshev-lambda", "--outputs", "B", "--samples", "0"], tmp_path)
     assert text.returncode == 0, text.stderr
     assert "verification skipped" in text.stdout and "passed" not in text.stdout
-    document = json.loads(run_cli(["derive", "chebyshev-lambda", "--outputs", "B", "--samples", "0", "--json"],
-                                  tmp_path).stdout)
+    document = json.loads(run_main(["derive", "chebyshev-lambda", "--outputs", "B", "--samples", "0", "--json"],
+                                   tmp_path).stdout)
     assert document["verification"]["status"] == "skipped" and document["verification"]["passed"] is False
 
 
@@ -217,7 +220,7 @@ def test_terminal_escapes_in_a_scene_are_shown_escaped(tmp_path):
     scene = tmp_path / "escapes.toml"
     scene.write_text('name = "x\\u001b[2J\\u202eevil"\ndescription = "bell\\u0007 nul"\n'
                      '[points]\nO = { fixed = [0, 0] }\n[outputs]\nO = "O"\n', encoding="utf-8")
-    result = run_cli(["show", str(scene)], tmp_path)
+    result = run_main(["show", str(scene)], tmp_path)  # in this process: what it prints is the question
     assert result.returncode == 0, result.stderr
     assert "\x1b" not in result.stdout and "\u202e" not in result.stdout and "\x07" not in result.stdout
     assert "\\x1b[2J" in result.stdout and "\\u202e" in result.stdout

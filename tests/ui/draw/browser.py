@@ -63,8 +63,13 @@ def dump_dom(page, query=""):
 
 def load(page, query=""):
     """The slider page's state after its scripts ran (``dump_dom``)."""
+    return state_of(dump_dom(page, query))
+
+
+def state_of(dom):
+    """The slider page's state in ``dom``, a document ``dump_dom`` gave: (state, joint circles, status)."""
     parser = _State()
-    parser.feed(dump_dom(page, query))
+    parser.feed(dom)
     assert parser.state, "the page wrote no state: its script did not run"
     state = dict(parser.state)
     state["positions"] = {k: tuple(v) for k, v in json.loads(state["positions"]).items()}

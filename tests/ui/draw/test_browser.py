@@ -4,10 +4,9 @@ The page's JavaScript evaluates closed forms printed from sympy; the positions i
 must match hand geometry (law of cosines, no algkin) and algkin's own values to ~1e-9.
 """
 
+import functools
 import math
 import re
-import subprocess
-import sys
 
 import pytest
 
@@ -15,18 +14,21 @@ from algkin.ui.draw import built
 from algkin.ui.html import write
 from algkin.analyses.motion import Motion
 
-from .browser import dump_dom, load
+from .browser import dump_dom, load, state_of
+from ..cli.in_process import run_main
 from ...hand_linkages import CHEBYSHEV, FOURBAR, fourbar
 
 
 @pytest.fixture(scope="module")
 def pages(tmp_path_factory):
+    """``algkin plot SCENE --out SCENE.html`` (in this process: the pages are the question) for the two
+    scenes; each page's document after its scripts ran, for a query, by one browser run each:
+    ``pages("fourbar", "?theta=30")``."""
     folder = tmp_path_factory.mktemp("pages")
     for scene in ("chebyshev-lambda", "fourbar"):
-        done = subprocess.run([sys.executable, "-m", "algkin", "plot", scene, "--out", folder / f"{scene}.html"],
-                              capture_output=True, text=True)
+        done = run_main(["plot", scene, "--out", str(folder / f"{scene}.html")], folder)
         assert done.returncode == 0, done.stderr
-    return folder
+    return functools.cache(lambda scene, query: dump_dom(folder / f"{scene}.html", query))
 
 
 def close(drawn, expected, tol=1e-9):
@@ -36,7 +38,7 @@ def close(drawn, expected, tol=1e-9):
 
 
 def test_chebyshev_slider_moves_the_drawing(pages):
-    state, circles, status = load(pages / "chebyshev-lambda.html", "?angle=37.3")
+    state, circles, status = state_of(pages("chebyshev-lambda", "?angle=37.3"))
     assert state["values"] == {"angle": 37.3} and state["assembles"] == "true"
     hand = fourbar(37.3, **CHEBYSHEV)
     close(state["positions"], hand)
@@ -47,13 +49,13 @@ def test_chebyshev_slider_moves_the_drawing(pages):
 
 
 def test_the_other_assembly_mode(pages):
-    state, circles, _ = load(pages / "chebyshev-lambda.html", "?angle=200&branch=right")
+    state, circles, _ = state_of(pages("chebyshev-lambda", "?angle=200&branch=right"))
     assert state["branch"] == "right"
     close(circles, fourbar(200, **CHEBYSHEV, branch="right"))
 
 
 def test_a_slider_per_dimension(pages):
-    state, circles, _ = load(pages / "fourbar.html", "?theta=123.4&l=2.5&m=3.2&q=0.2")
+    state, circles, _ = state_of(pages("fourbar", "?theta=123.4&l=2.5&m=3.2&q=0.2"))
     assert state["values"] == {"theta": 123.4, "a": 1, "d": 4, "l": 2.5, "m": 3.2, "p": 0.5, "q": 0.2}
     hand = fourbar(123.4, **dict(FOURBAR, l=2.5, m=3.2, q=0.2))
     close(state["positions"], hand)
@@ -63,12 +65,12 @@ def test_a_slider_per_dimension(pages):
 def test_cannot_assemble_where_the_discriminant_is_negative(pages):
     # |DA| = 5 at theta = 180 exceeds l + m = 0.75 + 3.5: by hand, no B.
     assert fourbar(180, **dict(FOURBAR, l=0.75)) is None
-    state, circles, status = load(pages / "fourbar.html", "?theta=180&l=0.75")
+    state, circles, status = state_of(pages("fourbar", "?theta=180&l=0.75"))
     assert state["assembles"] == "false" and state["blocked"] == "B" and state["positions"] == {}
     # what is built stays: O, D and the crank's A = (-1, 0); the circles about A and D are named
     close(circles, {"O": (0, 0), "D": (4, 0), "A": (-1, 0)})
     assert "B: the circles about A (radius l = 0.75) and D (radius m = 3.5) do not meet" in status
-    unmet = re.findall(r'<circle[^>]*class="unmet"[^>]*>', dump_dom(pages / "fourbar.html", "?theta=180&l=0.75"))
+    unmet = re.findall(r'<circle[^>]*class="unmet"[^>]*>', pages("fourbar", "?theta=180&l=0.75"))
     radii = sorted(float(re.search(r' r="([^"]+)"', c).group(1)) for c in unmet)
     assert radii == [0.75, 3.5]
 
@@ -143,6 +145,6 @@ def test_the_scenes_unit_of_length_is_on_the_page():
 
 
 def test_the_page_says_the_unit_of_its_lengths(pages):
-    dom = dump_dom(pages / "chebyshev-lambda.html", "?angle=30")
-    assert re.search(r'<p id="unit">lengths in mm</p>', dom)
-    assert re.search(r'<p id="unit"></p>', dump_dom(pages / "fourbar.html", "?theta=30"))
+    # the documents the tests above read (one browser run each)
+    assert re.search(r'<p id="unit">lengths in mm</p>', pages("chebyshev-lambda", "?angle=37.3"))
+    assert re.search(r'<p id="unit"></p>', pages("fourbar", "?theta=123.4&l=2.5&m=3.2&q=0.2"))

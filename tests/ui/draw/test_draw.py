@@ -27,6 +27,7 @@ from algkin.scene import load_scene  # noqa: E402
 from algkin.ui.cli import main  # noqa: E402
 
 from ...derivation.test_still_points import STILL  # noqa: E402
+from ..cli.in_process import run_main  # noqa: E402
 from ...hand_linkages import CHEBYSHEV, fourbar  # noqa: E402
 
 CATALOG = pathlib.Path(__file__).parents[3] / "algkin" / "catalog"
@@ -136,6 +137,12 @@ def plot(*args):
     return subprocess.run([sys.executable, "-m", "algkin", "plot", *map(str, args)], capture_output=True, text=True)
 
 
+def drawn(*args, cwd):
+    """``algkin plot args...`` in this process (``main``), for the tests of what it draws and writes; those of
+    its exit code and its one line on stderr run it in a process of its own (``plot``)."""
+    return run_main(["plot", *map(str, args)], cwd)
+
+
 def test_mp4_needs_ffmpeg(tmp_path):
     done = plot("chebyshev-lambda", "--out", tmp_path / "turn.mp4")
     if shutil.which("ffmpeg"):
@@ -148,7 +155,7 @@ def test_mp4_needs_ffmpeg(tmp_path):
 @pytest.mark.parametrize("suffix", [".png", ".svg", ".html"])
 def test_plot_command_writes_the_format_of_the_suffix(tmp_path, suffix):
     out = tmp_path / f"lambda{suffix}"
-    done = plot("chebyshev-lambda", "--out", out, "--input", "63")
+    done = drawn("chebyshev-lambda", "--out", out, "--input", "63", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     head = out.read_bytes()[:64]
     assert {".png": head.startswith(b"\x89PNG"), ".svg": b"<svg" in out.read_bytes()[:2000],
@@ -157,7 +164,7 @@ def test_plot_command_writes_the_format_of_the_suffix(tmp_path, suffix):
 
 def test_plot_json_is_one_document_naming_what_was_written(tmp_path):
     out = tmp_path / "lambda.svg"
-    done = plot("chebyshev-lambda", "--out", out, "--json")
+    done = drawn("chebyshev-lambda", "--out", out, "--json", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     assert json.loads(done.stdout) == {"scene": "chebyshev-lambda", "out": str(out), "format": "svg", "of": None}
     assert b"<svg" in out.read_bytes()[:2000]
@@ -190,11 +197,11 @@ def page_model(path):
 
 def test_range_of_sets_a_slider_of_the_page(tmp_path):
     out = tmp_path / "page.html"
-    done = plot("fourbar", "--out", out, "--range-of", "a=0.5:2", "--range-of", "l=1:4")
+    done = drawn("fourbar", "--out", out, "--range-of", "a=0.5:2", "--range-of", "l=1:4", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     sliders = {p["name"]: p for p in page_model(out)["params"]}
     assert (sliders["a"]["lo"], sliders["a"]["hi"]) == (0.5, 2) and (sliders["l"]["lo"], sliders["l"]["hi"]) == (1, 4)
-    assert plot("fourbar", "--out", tmp_path / "plain.html").returncode == 0
+    assert drawn("fourbar", "--out", tmp_path / "plain.html", cwd=tmp_path).returncode == 0
     plain = {p["name"]: p for p in page_model(tmp_path / "plain.html")["params"]}
     assert plain["d"] == sliders["d"] and plain["a"] != sliders["a"]  # only the named sliders change
 
@@ -224,7 +231,7 @@ def test_a_range_of_a_dimension_that_is_no_length_may_cross_zero(tmp_path):
     # In fourbar.toml d places the fixed pivot D = (d, 0) and p, q the coupler point in the frame of AB:
     # coordinates, which any sign keeps a valid scene.
     out = tmp_path / "page.html"
-    assert plot("fourbar", "--out", out, "--range-of", "d=-5:5", "--range-of", "p=-1:1").returncode == 0
+    assert drawn("fourbar", "--out", out, "--range-of", "d=-5:5", "--range-of", "p=-1:1", cwd=tmp_path).returncode == 0
     sliders = {p["name"]: (p["lo"], p["hi"]) for p in page_model(out)["params"]}
     assert sliders["d"] == (-5, 5) and sliders["p"] == (-1, 1)
 
@@ -340,7 +347,7 @@ def test_a_point_that_does_not_move_is_not_traced(tmp_path):
     (tmp_path / "still.toml").write_text(STILL)
     motion = Motion(load_scene(tmp_path / "still.toml"))
     assert motion.traced == ["A"]
-    done = plot(tmp_path / "still.toml", "--out", tmp_path / "still.png")
+    done = drawn(tmp_path / "still.toml", "--out", tmp_path / "still.png", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
 
 
