@@ -267,10 +267,11 @@ def test_every_eliminating_analysis_keeps_to_a_budget_from_python(analysis):
 
 
 def test_an_extremums_own_eliminations_keep_to_its_budget():
-    # the derivation of AB (b symbolic) keeps to 10 terms a step; the stationary condition does not
-    budget = Budget(terms=10)
+    # the derivation of AB (b symbolic) keeps to 8 terms a step; the extremum's own eliminations do not (its
+    # stationary condition, taken in AB's square, does; the values' resultant in t has 9 terms)
+    budget = Budget(terms=8)
     pipeline.derive("arm-string", ["AB"], params=["b"], samples=0, budget=budget)
     from algkin import extremum
 
-    with pytest.raises(BudgetExceeded, match=r"^max_terms=10: the resultant in \w+ has \d+ terms"):
+    with pytest.raises(BudgetExceeded, match=r"^max_terms=8: the resultant in \w+ has \d+ terms"):
         extremum("arm-string", "AB", params=["b"], budget=budget)
