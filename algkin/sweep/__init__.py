@@ -35,7 +35,7 @@ from ..runtime.budget import time_budget
 from .analyses import ANALYSES, Analysis, analyses_named, applicable, register
 from .design import STATUSES, TIMING_PREFIX, Job, columns
 from .executor import EXECUTORS, dask_modules, run_chunks
-from .grid import Designs, grid_designs, parse_grid, parse_ranges, random_designs
+from .grid import DRAW_SCHEME, Designs, first_repeat, grid_designs, parse_grid, parse_ranges, random_designs
 from .store import DATASET, MANIFEST, done_chunks, merge, open_directory, read_dataset, read_manifest, \
     without_timings, write_part
 
@@ -115,7 +115,7 @@ def plan(scene: SceneLike, *, grid: Iterable[str] = (), random: int | None = Non
     else:
         ranges = parse_ranges(grid)
         designs = random_designs(ranges, random, seed)
-        space = {"random": {"count": random, "seed": seed,
+        space = {"random": {"count": random, "seed": seed, "scheme": DRAW_SCHEME,
                             "ranges": {n: [_text(lo), _text(hi)] for n, (lo, hi) in ranges.items()}}}
     for name in designs[0]:
         if name not in scene.parameters:
@@ -157,7 +157,8 @@ def sweep(scene: SceneLike, out: str | pathlib.Path, *, grid: Iterable[str] = ()
     planned = plan(scene, grid=grid, random=random, seed=seed, analyses=analyses, point=point, budget=budget,
                    chunk=chunk, share=share)
     _check_executor(executor, workers, scheduler)
-    open_directory(out, planned.manifest, check_only=True)
+    manifest = _manifest_in(out, planned)
+    open_directory(out, manifest, check_only=True)
     done = done_chunks(out)
     total = len(planned.designs)
     chunks = [k for k in range(math.ceil(total / chunk)) if k not in done]
@@ -173,11 +174,33 @@ def sweep(scene: SceneLike, out: str | pathlib.Path, *, grid: Iterable[str] = ()
                 progress.step()
 
         run_chunks(planned.job, pending, written, executor, workers, scheduler,
-                   ready=lambda: open_directory(out, planned.manifest))
+                   ready=lambda: open_directory(out, manifest))
     dataset = merge(out, planned.columns)
     statuses = read_dataset(out).column("status").to_pylist()
     counts = {s: statuses.count(s) for s in STATUSES if s in statuses}
     return Sweep(pathlib.Path(out), dataset, total, computed, counts)
+
+
+def _manifest_in(out: str | pathlib.Path, planned: Plan) -> dict[str, Any]:
+    """The manifest the sweep in ``out`` must have to be resumed: the planned one, or the folder's own
+    when it holds these random designs drawn by the first draw scheme, which are this one's where
+    none repeats. Where one does, the designs differ from it on: resuming would mix the two draws,
+    and is refused."""
+    found = read_manifest(out, argument="out")
+    drawn = found.get("designs") if found is not None else None
+    older = drawn.get("random") if isinstance(drawn, dict) else None
+    if found is None or not isinstance(older, dict) or "scheme" in older:
+        return planned.manifest  # not a random sweep of the first scheme: compared as it is
+    if dict(found, designs={"random": dict(older, scheme=DRAW_SCHEME)}) != planned.manifest:
+        return planned.manifest  # another sweep anyway: said so as any other
+    space = planned.manifest["designs"]["random"]
+    ranges = {name: (Fraction(lo), Fraction(hi)) for name, (lo, hi) in space["ranges"].items()}
+    repeat = first_repeat(ranges, space["count"], space["seed"])
+    if repeat is not None:
+        raise UsageError("out", str(out), f"holds a sweep begun by an older algkin, whose random designs repeat "
+                                          f"(design {repeat} repeats an earlier one) where this one draws distinct "
+                                          "designs: resuming it would mix the two draws; give a new directory")
+    return found
 
 
 def projected_seconds(analyses: Iterable[str], designs: int, budget: float | None = None, parallel: int = 1) -> float:

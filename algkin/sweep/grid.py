@@ -35,9 +35,13 @@ import numpy as np
 from ..errors import UsageError
 from ..runtime.validation import NumberTooLarge, rational
 
-__all__ = ["parse_grid", "parse_ranges", "grid_designs", "random_designs", "Designs", "RANDOM_STEPS", "MAX_DESIGNS"]
+__all__ = ["parse_grid", "parse_ranges", "grid_designs", "random_designs", "first_repeat", "Designs", "RANDOM_STEPS",
+           "MAX_DESIGNS", "DRAW_SCHEME"]
 
 RANDOM_STEPS = 10**6  # a random value is LO + (HI - LO) * k / RANDOM_STEPS, k drawn whole
+# How random designs are drawn, recorded in a sweep's manifest: 2, distinct designs (a repeat drawn
+# again); 1, recorded by no number, the generator's first rows, repeats kept (algkin before 2 was).
+DRAW_SCHEME = 2
 # designs of one sweep at most: each is held in memory while planned (the grid's or the draws'
 # values, about half a gigabyte at this many), and a million four-bars take days already
 MAX_DESIGNS = 10**6
@@ -195,7 +199,7 @@ def random_designs(ranges: Mapping[str, tuple[Fraction, Fraction]], count: int, 
         single = [f"{n}={lo}:{hi}" for n, (lo, hi) in ranges.items() if lo == hi]
         raise UsageError("random", count, f"the ranges hold {held} distinct design{'s' if held > 1 else ''} at most "
                                           f"({', '.join(single)}: {'one value' if len(single) == 1 else 'one value each'})")
-    steps = _distinct_steps(np.random.Generator(np.random.PCG64(seed)), spread, count)
+    steps = _distinct_steps(_generator(seed), spread, count)
     return Designs(list(ranges), count, lambda k: [lo + (hi - lo) * Fraction(int(step), RANDOM_STEPS)
                                                    for (lo, hi), step in zip(bounds, steps[k])])
 
@@ -219,3 +223,26 @@ def _distinct_steps(generator: np.random.Generator, spread: np.ndarray, count: i
                 rows.append(row)
         size = max(count - len(rows), _REDRAW)
     return np.array(rows).reshape(count, len(spread))
+
+
+def first_repeat(ranges: Mapping[str, tuple[Fraction, Fraction]], count: int, seed: int) -> int | None:
+    """The first of the ``count`` designs drawn in ``ranges`` from ``seed`` by draw scheme 1 (the
+    generator's first rows, repeats kept) that repeats an earlier one; None if none does, and then
+    scheme 2 (``random_designs``) draws the same designs.
+
+    >>> first_repeat({"a": (Fraction(1), Fraction(2))}, 8, seed=23365), first_repeat({"a": (Fraction(1), Fraction(2))}, 8, seed=0)
+    (7, None)
+    """
+    spread = np.array([lo < hi for lo, hi in ranges.values()])
+    rows = _generator(seed).integers(0, RANDOM_STEPS, size=(count, len(spread)), endpoint=True) * spread
+    seen: set[tuple[int, ...]] = set()
+    for index, row in enumerate(rows.tolist()):
+        if tuple(row) in seen:
+            return index
+        seen.add(tuple(row))
+    return None
+
+
+def _generator(seed: int) -> np.random.Generator:
+    """The random draws' generator from ``seed``: PCG64, the same sequence on every machine."""
+    return np.random.Generator(np.random.PCG64(seed))

@@ -1,8 +1,8 @@
 """A sweep's directory: its manifest, one Parquet part file per chunk, and the merged dataset.
 
-``manifest.json`` says what the sweep is (the scene as TOML, the designs, the analyses, the
-traced point, the chunk size, the budget and algkin's version); a run into a directory that
-holds another sweep is refused. Each chunk's rows go to ``parts/part-NNNNNN.parquet``, written
+``manifest.json`` says what the sweep is (the scene as TOML, the designs, random ones with their
+draw scheme, the analyses, the traced point, the chunk size, the budget and algkin's version); a
+run into a directory that holds another sweep is refused. Each chunk's rows go to ``parts/part-NNNNNN.parquet``, written
 to a temporary name and renamed when whole, so a part file present is a chunk done; when all
 are, ``designs.parquet`` is their rows sorted by design id. Parquet is written by pyarrow (the
 ``sweep`` extra), imported only here.

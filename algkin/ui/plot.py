@@ -85,7 +85,7 @@ def math_name(quantity: Quantity) -> str:
         return f"$|{''.join(output.points)}|$"
     if output is not None and output.kind in ("x", "y"):
         return f"${output.points[0]}_{output.kind}$"
-    return quantity.text
+    return one_line(quantity.text)  # typed by the user (--of): one line
 
 
 def _unit(quantity: Quantity) -> str:
@@ -130,7 +130,7 @@ def quantity_figure(quantity: Quantity, found: Extremum, derivative: bool = Fals
     axes.set_xlabel(f"{name} (degrees)")
     per = f"{unit[:-1]} per radian)" if unit else " (per radian)"
     axes.set_ylabel(f"{label}{per}" if derivative else f"{text}{unit}")
-    axes.set_title(f"{'Derivative of ' if derivative else ''}{quantity.text} in {one_line(quantity.mechanism.scene.name)}",
+    axes.set_title(f"{'Derivative of ' if derivative else ''}{one_line(quantity.text)} in {one_line(quantity.mechanism.scene.name)}",
                    parse_math=False)  # a scene's name is text, never mathtext
     axes.grid(True)
     axes.legend()
@@ -162,7 +162,7 @@ def minimum_figure(quantity: Quantity, found: Extremum, parameter: str, lo: floa
     unit = _unit(quantity)
     axes.set_xlabel(f"{_symbol(parameter)}{unit}")  # a dimension: a length
     axes.set_ylabel(f"minimum of {math_name(quantity)}{unit}")
-    axes.set_title(f"Minimum of {quantity.text} over {quantity.input.name} in "
+    axes.set_title(f"Minimum of {one_line(quantity.text)} over {quantity.input.name} in "
                    f"[{found.range[0]:g}°, {found.range[1]:g}°] against {parameter}")
     axes.grid(True)
     axes.legend(fontsize="small")
@@ -216,7 +216,7 @@ def accuracy_figure(result: Accuracy | GroupAccuracy) -> Figure:
     axes.set_ylim(bottom=floor / 3)
     axes.set_xlabel("time per sample (ns)")
     axes.set_ylabel("max relative error")
-    axes.set_title(f"Speed against error: {result.point} of {one_line(result.scene)}", parse_math=False)
+    axes.set_title(f"Speed against error: {one_line(result.point)} of {one_line(result.scene)}", parse_math=False)
     axes.grid(True, which="both", linewidth=0.3)
     shown = [s for s in markers if any(r["strategy"] == s for r in rows)]
     # Beside the axes (the constrained layout makes room): inside, they would cover points.

@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given, strategies as st
 
 from algkin.errors import UsageError
-from algkin.sweep.grid import RANDOM_STEPS, grid_designs, parse_grid, parse_ranges, random_designs
+from algkin.sweep.grid import RANDOM_STEPS, first_repeat, grid_designs, parse_grid, parse_ranges, random_designs
 
 
 def test_values_are_exact_and_include_both_ends():
@@ -98,6 +98,19 @@ def test_random_designs_keep_the_seeds_draws_up_to_its_first_repeat():
     first = next(i for i, k in enumerate(ks) if k in ks[:i])
     drawn = random_designs(parse_ranges(["a=0:1"]), 3000, 0)
     assert [d["a"] for d in drawn[:first]] == [Fraction(int(k), RANDOM_STEPS) for k in ks[:first]]
+
+
+
+@pytest.mark.parametrize("count, seed", [(3000, 0), (8, 23365), (8, 0), (500, 3)])
+def test_the_first_repeat_of_the_first_draw_scheme(count, seed):
+    # Scheme 1 drew the seed's first rows as they came: read from numpy directly, the first index whose k
+    # is among the earlier ones (none: the distinct draws are the same designs)
+    ks = np.random.Generator(np.random.PCG64(seed)).integers(0, RANDOM_STEPS, size=(count, 1), endpoint=True)[:, 0]
+    expected = next((i for i, k in enumerate(ks) if k in ks[:i]), None)
+    assert first_repeat(parse_ranges(["a=0:1"]), count, seed) == expected
+    if expected is None:
+        assert [d["a"] for d in random_designs(parse_ranges(["a=0:1"]), count, seed)] == \
+            [Fraction(int(k), RANDOM_STEPS) for k in ks]
 
 
 @pytest.mark.parametrize("specs, count, says", [

@@ -146,3 +146,72 @@ def test_a_damaged_sweep_directory_is_refused_in_one_line_and_left_as_it_is(tmp_
     assert code == 2 and err.count("\n") == 1 and "Traceback" not in err, err
     assert ("is not a sweep's" if damage == "manifest" else "part-000001.parquet': cannot be read") in err
     assert {p: p.read_bytes() for p in tmp_path.rglob("*") if p.is_file()} == files
+
+
+# Eight random four-bars, a in [1, 2]: drawn with this seed, the generator's eighth row repeats an earlier
+# one (found by trying seeds; checked in the test, by numpy directly).
+RANDOM = ["--random", "8", "--seed", "23365", "--grid", "a=1:2", "--analyses", "grashof", "--chunk", "4",
+          "--executor", "serial"]
+
+
+def first_scheme_designs(ranges, count, seed):
+    """The random designs as algkin drew them before distinct designs (draw scheme 1): the generator's
+    first ``count`` rows of steps, repeats kept."""
+    from fractions import Fraction
+
+    import numpy as np
+
+    from algkin.sweep.grid import RANDOM_STEPS, Designs
+
+    steps = np.random.Generator(np.random.PCG64(seed)).integers(0, RANDOM_STEPS, size=(count, len(ranges)),
+                                                                endpoint=True)
+    bounds = list(ranges.values())
+    return Designs(list(ranges), count, lambda k: [lo + (hi - lo) * Fraction(int(step), RANDOM_STEPS)
+                                                   for (lo, hi), step in zip(bounds, steps[k])])
+
+
+def stopped_first_scheme_sweep(folder, monkeypatch, argv, *, keep):
+    """``folder`` as ``algkin sweep argv`` of the first draw scheme leaves it, stopped with only the parts
+    ``keep``: its designs drawn so, its manifest without the scheme's number."""
+    with monkeypatch.context() as patched:
+        patched.setattr("algkin.sweep.random_designs", first_scheme_designs)
+        assert main([*argv, "--out", str(folder), "--quiet"]) == 0
+    manifest = json.loads((folder / "manifest.json").read_text())
+    manifest["designs"]["random"].pop("scheme", None)
+    (folder / "manifest.json").write_text(json.dumps(manifest, indent=2, sort_keys=True) + "\n")
+    (folder / "designs.parquet").unlink()
+    for part in (folder / "parts").iterdir():
+        if part.name not in keep:
+            part.unlink()
+
+
+def test_a_random_sweep_begun_with_repeated_designs_is_not_resumed(tmp_path, monkeypatch, capsys):
+    # It was resumed: its second chunk's designs (the eighth a repeat) joined the first chunk of the
+    # distinct draws, a set of designs neither run draws.
+    from algkin.sweep.grid import parse_ranges
+
+    draws = [d["a"] for d in first_scheme_designs(parse_ranges(["a=1:2"]), 8, 23365)]
+    assert len(set(draws[:7])) == 7 and draws[7] in draws[:7]  # the premise: the eighth design repeats
+    stopped_first_scheme_sweep(tmp_path, monkeypatch, ["sweep", "fourbar", *RANDOM], keep={"part-000001.parquet"})
+    capsys.readouterr()
+    files = {p: p.read_bytes() for p in tmp_path.rglob("*") if p.is_file()}
+    code = main(["sweep", "fourbar", *RANDOM, "--out", str(tmp_path)])
+    err = capsys.readouterr().err
+    assert code == 2 and err.count("\n") == 1, err
+    assert err.startswith(f"algkin: error: --out='{tmp_path}': holds a sweep begun by an older algkin") and \
+        "design 7 repeats an earlier one" in err and "give a new directory" in err
+    assert {p: p.read_bytes() for p in tmp_path.rglob("*") if p.is_file()} == files
+
+
+def test_a_random_sweep_begun_without_a_repeat_is_resumed_as_the_same_designs(tmp_path, monkeypatch):
+    # Drawn by the first scheme, eight designs with seed 0 repeat none: they are the distinct draws too.
+    from algkin.sweep.grid import parse_ranges
+
+    assert len({d["a"] for d in first_scheme_designs(parse_ranges(["a=1:2"]), 8, 0)}) == 8
+    whole, stopped = tmp_path / "whole", tmp_path / "stopped"
+    argv = ["sweep", "fourbar", *RANDOM[:2], "--seed", "0", *RANDOM[4:]]
+    assert main([*argv, "--out", str(whole), "--quiet"]) == 0
+    stopped_first_scheme_sweep(stopped, monkeypatch, argv, keep={"part-000000.parquet"})
+    done = sweep("fourbar", stopped, grid=["a=1:2"], random=8, seed=0, analyses=["grashof"], chunk=4,
+                 executor="serial")
+    assert done.computed == 4 and canonical(stopped) == canonical(whole)

@@ -101,6 +101,14 @@ def test_a_scene_name_is_shown_as_text_not_mathtext():
         assert figure.axes[0].get_title().endswith(name)
 
 
+def test_an_output_typed_with_a_newline_is_one_line_in_the_titles():
+    # --of "dist(O,\nB)" (a newline is white space in it) broke the title in two, as it did the report
+    quantity = load_quantities("fourbar").output("dist(O,\nB)")
+    title = quantity_figure(quantity, quantity.extremum((0, 180))).axes[0].get_title()
+    assert title == "dist(O,\\nB) in fourbar"
+    assert accuracy_figure(Accuracy("s", "dist(O,\nB)", [])).axes[0].get_title() == "Speed against error: dist(O,\\nB) of s"
+
+
 def test_an_interrupted_save_leaves_the_earlier_figure_and_no_temporary(tmp_path, interrupted_writes):
     out = tmp_path / "speed.png"
     out.write_text("a good figure")

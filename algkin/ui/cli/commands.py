@@ -14,13 +14,13 @@ from typing import TYPE_CHECKING, Any, Union
 from ...runtime import suggest
 from ...errors import UsageError, renamed
 from ...runtime.strict_json import json_text
+from ...runtime.terminal import one_line
 from ...runtime.validation import real
 from .groups import group_curve, group_derive, group_toggles, group_verify
 from .sweep import COMMANDS as SWEEP_COMMANDS
 from .synthesis import COMMANDS as SYNTHESIS_COMMANDS
 from .reports import (Document, Form, extremum_forms, latex_lines, render, report_accuracy, report_curve,
-                      report_derive, report_extremum, report_follow, report_show, report_singular, report_solve, report_toggles, verification_line,
-                      terminal_safe)
+                      report_derive, report_extremum, report_follow, report_show, report_singular, report_solve, report_toggles, verification_line)
 
 if TYPE_CHECKING:
     from ...bench.row import BenchRow
@@ -67,7 +67,7 @@ def _cmd_bench(args: argparse.Namespace) -> Outcome:
         text = json_text(report.to_json())
     else:
         text = "\n".join([table(report.rows), "machine: " + ", ".join(f"{k} {v}" for k, v in report.machine.items()),
-                          *(f"wrote {path}" for path in written)]) + "\n"
+                          *(f"wrote {one_line(str(path))}" for path in written)]) + "\n"
     # exit 1 only where one of algkin's rows or a peer's exact elimination disagrees with its
     # reference (``BenchRow.passes``); a resultant chain's extra factor is its row's verdict
     agree = all(row.passes for row in report.rows)
@@ -354,7 +354,7 @@ def _finish(args: argparse.Namespace, out: pathlib.Path | None, document: Docume
     if out is None:
         return text, code
     if not args.json:
-        text += terminal_safe(f"wrote the full JSON document to {out}\n")
+        text += f"wrote the full JSON document to {one_line(str(out))}\n"  # the path typed: one line
     return text, code, [(out, json_text(document))]
 
 

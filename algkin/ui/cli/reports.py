@@ -204,20 +204,29 @@ def _report_group_accuracy(d: Document) -> str:
     return "\n".join(lines + ([f"note: {d['note']}"] if d.get("note") else []))
 
 
+# The keys of a command's document whose text the user typed (the scene's name, --of, --point, a
+# file to write): each shown as one line in the text report, where a newline must not start a line
+# that reads as algkin's own.
+_TYPED = ("scene", "of", "point", "out", "plot")
+
+
 def render(args: argparse.Namespace, document: Document, report: Callable[[Document], str]) -> str:
     """What the command prints: ``document`` as JSON with --json, else ``report(document)``, where
-    the scene's name is one line (a newline in it must not start a line that reads as algkin's own).
+    what the user typed (``_TYPED``: the scene's name, a flag's value) is one line.
 
     >>> from types import SimpleNamespace
     >>> render(SimpleNamespace(json=False), {"out": "a.svg"}, lambda d: d["out"])
     'a.svg\\n'
     >>> render(SimpleNamespace(json=False), {"scene": "x\\nverification passed"}, lambda d: f"scene {d['scene']}")
     'scene x\\\\nverification passed\\n'
+    >>> render(SimpleNamespace(json=False), {"of": "dist(A,\\nB)"}, lambda d: f"accuracy of {d['of']}")
+    'accuracy of dist(A,\\\\nB)\\n'
     """
     if args.json:
         return json_text(document)
-    name = document.get("scene")
-    return terminal_safe(report(dict(document, scene=one_line(name)) if isinstance(name, str) else document)) + "\n"
+    shown = {key: one_line(value) if key in _TYPED and isinstance(value, str) else value
+             for key, value in document.items()}
+    return terminal_safe(report(shown)) + "\n"
 
 
 def report_solve(d: Document) -> str:

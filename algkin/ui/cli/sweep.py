@@ -7,6 +7,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from ...runtime.strict_json import json_text
+from ...runtime.terminal import one_line
 
 if TYPE_CHECKING:
     from .commands import Command, Outcome
@@ -65,7 +66,7 @@ def _cmd_sweep(args: argparse.Namespace) -> Outcome:
         return json_text(document), 0
     counts = ", ".join(f"{k} {v}" for k, v in document["status"].items())
     return (f"{document['designs']} designs ({document['computed']} computed now): {counts}\n"
-            f"wrote {document['dataset']}\n"), 0
+            f"wrote {one_line(document['dataset'])}\n"), 0  # under --out: one line
 
 
 def _cmd_atlas(args: argparse.Namespace) -> Outcome:
@@ -75,7 +76,7 @@ def _cmd_atlas(args: argparse.Namespace) -> Outcome:
     document = {"out": str(args.out), "designs": written["designs"], "drawn": written["drawn"]}
     if args.json:
         return json_text(document), 0
-    return f"wrote {args.out}: {document['drawn']} of {document['designs']} designs drawn\n", 0
+    return f"wrote {one_line(args.out)}: {document['drawn']} of {document['designs']} designs drawn\n", 0
 
 
 COMMANDS: dict[str, Command] = {"sweep": _cmd_sweep, "atlas": _cmd_atlas}

@@ -16,6 +16,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from ...errors import SceneError, UsageError
+from ...runtime.terminal import one_line
 from .reports import Document, render
 
 if TYPE_CHECKING:
@@ -146,7 +147,7 @@ def report_synthesis(d: Document) -> str:
         what = f"the roots of {_shown(left['factor'])}" if "factor" in left else \
             f"{left['complex_count']} solution(s), {left['real_count']} real"
         lines.append(f"  left out: {what}: {left['reason']}")
-    lines += [f"wrote {path}" for path in d.get("written", [])]
+    lines += [f"wrote {one_line(path)}" for path in d.get("written", [])]  # under --out: one line
     if d.get("plot"):
         lines.append(f"wrote {d['plot']}")
     return "\n".join(lines)

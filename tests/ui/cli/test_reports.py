@@ -171,3 +171,34 @@ def test_a_latex_caption_stays_in_its_comment():
 
     text = latex_lines([("minimum of dist(O,\nB)\r\\input{x}", sympy.Integer(2), "")])
     assert text.splitlines() == ["% minimum of dist(O,\\nB)\\r\\input{x}", r"\[ 2 \]"]
+
+
+@pytest.mark.parametrize("command", [["accuracy", "fourbar", "--samples", "10"], ["extremum", "fourbar"]])
+def test_an_output_typed_with_a_newline_cannot_start_a_line_of_the_report(tmp_path, command):
+    # --of "dist(O,\nB)" (a newline is white space in it) printed "B) in fourbar..." as a line of its own
+    result = run_main([*command, "--of", "dist(O,\nB)"], tmp_path)
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert "dist(O,\\nB)" in lines[0] and not any(line.startswith("B)") for line in lines)
+
+
+FORGED_PATH = "x\nalgkin: all checks passed"  # a file's name may hold a newline: printed as it is, it forged a line
+
+
+@pytest.mark.parametrize("command, out", [
+    (["curve", "fourbar", "--point", "P", "--samples", "3", "--out"], FORGED_PATH),
+    (["export", "fourbar", "--to", "c", "--out"], FORGED_PATH),
+    (["plot", "fourbar", "--of", "dist(O, B)", "--out"], FORGED_PATH + ".svg"),
+    (["sweep", "fourbar", "--grid", "a=1:2:2", "--analyses", "grashof", "--executor", "serial", "--out"],
+     FORGED_PATH)])
+def test_a_path_typed_with_a_newline_is_said_in_one_line(tmp_path, command, out):
+    result = run_main([*command, out], tmp_path)
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert not any(line.startswith("algkin: all checks passed") for line in lines)
+    assert any("x\\nalgkin: all checks passed" in line for line in lines)
+    if command[0] == "sweep":  # and the atlas of that sweep, written under a name as forged
+        atlas = run_main(["atlas", out, "--out", FORGED_PATH + ".html"], tmp_path)
+        assert atlas.returncode == 0, atlas.stderr
+        assert atlas.stdout.startswith("wrote x\\nalgkin: all checks passed.html: ") and atlas.stdout.count("\n") == 1
+

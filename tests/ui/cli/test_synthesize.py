@@ -209,3 +209,14 @@ def test_a_scene_file_it_would_write_is_never_its_input(capsys, tmp_path):
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and err.startswith(f"algkin: error: --out='{tmp_path}': ") and "three-pairs-1.toml" in err
     assert given.read_text() == pathlib.Path(THREE).read_text() and os.listdir(tmp_path) == [given.name]
+
+
+def test_the_files_written_are_said_in_one_line_each(capsys, tmp_path):
+    # a newline in --out or --plot (a file's name may hold one) started a line of the user's making
+    out, figure = tmp_path / "x\nalgkin: all checks passed", tmp_path / "y\nalgkin: all checks passed.png"
+    code, text, _ = run(capsys, "synthesize", "function", THREE, "--out", str(out), "--plot", str(figure), "--quiet")
+    assert code == 0
+    lines = text.splitlines()
+    assert not any(line.startswith("algkin: all checks passed") for line in lines)
+    said = [line for line in lines if line.startswith("wrote ")]
+    assert len(said) == 2 and all("\\nalgkin: all checks passed" in line for line in said)
