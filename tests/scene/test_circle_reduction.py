@@ -103,3 +103,19 @@ def test_what_is_expanded_already_is_given_back_as_sympy_would(expr):
     assert reduce_on_circles(expr, CIRCLES) == _reduced_in_sympy(expr, CIRCLES)
     if algebra._expanded_already(expr):
         assert sympy.expand(expr) == expr
+
+
+_SQUARE_RING = flint.fmpq_mpoly_ctx.get(("u", "r", "w"), "lex")
+_EXPONENTS = st.tuples(st.integers(0, 3), st.integers(0, 5), st.integers(0, 3))
+_POLYNOMIALS = st.dictionaries(_EXPONENTS, st.fractions(max_denominator=9).filter(bool), max_size=12)
+
+
+@settings(max_examples=100, deadline=None)
+@given(_POLYNOMIALS, _POLYNOMIALS.map(lambda terms: {(u, 0, w): c for (u, _, w), c in terms.items()}))
+def test_square_reduced_is_sympys_remainder_by_the_square(terms, square_terms):
+    # r**2 taken as a radicand free of r: the remainder of the division by r**2 - radicand, as sympy gives it
+    poly, square = (_SQUARE_RING.from_dict({e: flint.fmpq(c.numerator, c.denominator) for e, c in t.items()})
+                    for t in (terms, square_terms))
+    r = to_sympy(_SQUARE_RING.gens()[1], _SQUARE_RING)
+    expected = sympy.rem(to_sympy(poly, _SQUARE_RING), r**2 - to_sympy(square, _SQUARE_RING), r)
+    assert sympy.expand(to_sympy(algebra.square_reduced(poly, 1, square), _SQUARE_RING) - expected) == 0

@@ -134,8 +134,24 @@ def square_reduced(poly: flint.fmpq_mpoly, at: int, square: flint.fmpq_mpoly) ->
     r*x + r + x^2 + x
     """
     ring = poly.context()
-    by_half: dict[int, dict[tuple[int, ...], flint.fmpq]] = {}  # k // 2 -> the terms with v**(k % 2)
-    for exponents, coefficient in poly.to_dict().items():
-        half, rest = divmod(exponents[at], 2)
-        by_half.setdefault(half, {})[exponents[:at] + (rest,) + exponents[at + 1:]] = coefficient
-    return sum((ring.from_dict(terms) * square**half for half, terms in by_half.items()), ring.from_dict({}))
+    name, v = ring.names()[at], ring.gens()[at]
+    even, odd = ring.from_dict({}), ring.from_dict({})
+    power = ring.from_dict({(0,) * ring.nvars(): 1})
+    coefficients = _coefficients_in(poly, at, name)
+    for k in range(0, len(coefficients), 2):  # c_k v**k + c_(k+1) v**(k+1) as (c_k + c_(k+1) v) square**(k/2)
+        even += coefficients[k] * power
+        if k + 1 < len(coefficients):
+            odd += coefficients[k + 1] * power
+        power *= square
+    return even + v * odd
+
+
+def _coefficients_in(poly: flint.fmpq_mpoly, at: int, name: str) -> list[flint.fmpq_mpoly]:
+    """``poly``'s coefficients in its variable number ``at``, lowest power first: Taylor's, a few
+    calls into python-flint (splitting its terms in Python cost three times as much)."""
+    coefficients, factorial = [], 1
+    for k in range(max(poly.degrees()[at], 0) + 1):
+        coefficients.append(poly.subs({name: 0}) / factorial)
+        poly = poly.derivative(at)
+        factorial *= k + 1
+    return coefficients
