@@ -12,6 +12,7 @@ AB**2 - 122500*c_theta**2 + 56000*c_theta - 122500*s_theta**2 + 280000*s_theta -
 """
 
 from collections.abc import Iterable, Mapping, Sequence
+from typing import Optional
 
 import attrs
 import sympy
@@ -20,7 +21,8 @@ from ..runtime import suggest
 from ..errors import SceneError, UsageError
 from ..runtime.frozen import FrozenDict, frozen
 from ..system import System, symbol
-from ..system.convert import rational_polynomial
+from ..system.convert import rational_polynomial, univariate
+from ..system.roots import real_roots
 from .constructions import Builder, Construction, Crank, Dyad, Indicator, Unbuildable
 from .driven import driven_angles, root_of
 from .expr import MAX_VALUE_BITS, bits_bound, irrational
@@ -32,7 +34,7 @@ from .model import Output, Scene
 from .names import angle_unknowns, check_names, check_output_unknowns, check_symbol_name
 
 __all__ = ["Compiled", "DyadSpec", "SliderSpec", "AngleOutput", "compile_scene", "resolve_outputs", "refuse_solved_together",
-           "refuse_lengths_not_positive", "length_not_positive",
+           "refuse_lengths_not_positive", "length_not_positive", "Span", "spans_lengths_positive",
            "DimensionChecks", "dimension_checks"]
 
 Substitution = Mapping[sympy.Symbol, sympy.Expr]
@@ -380,6 +382,49 @@ def length_not_positive(scene: Scene, name: str, bounds: tuple[float, float]) \
         if found is not None:
             return (*found, float(end))
     return None
+
+
+Span = tuple[Optional[float], Optional[float]]
+"""An open interval of a dimension; an end None: unbounded."""
+
+
+def spans_lengths_positive(scene: Scene, name: str) -> tuple[Span, ...] | None:
+    """The open intervals of the dimension ``name`` over which every length of ``scene`` in it
+    (``length_not_positive``'s, the other dimensions at their values) is positive, ascending;
+    None where no length holds it (a coordinate: a mechanism has any real value of it).
+
+    >>> from algkin.scene import load_scene
+    >>> spans_lengths_positive(load_scene("fourbar"), "a")
+    ((0.0, None),)
+    >>> spans_lengths_positive(load_scene("fourbar"), "d") is None  # a pivot's coordinate
+    True
+    """
+    lengths = [length for length in dimension_checks(scene, list(scene.points), [name]).lengths
+               if {str(s) for s in length.free_symbols} == {name}]  # one in an input too is not decided here
+    if not lengths:
+        return None
+    (variable,) = lengths[0].free_symbols
+    cuts = sorted({cut for length in lengths for part in sympy.fraction(sympy.together(length))
+                   for cut in _real_roots_of(part, variable)})
+    bounds: list[float | None] = [None, *cuts, None]
+    return tuple((lo, hi) for lo, hi in zip(bounds, bounds[1:])
+                 if all(length.xreplace({variable: _between(lo, hi)}) > 0 for length in lengths))
+
+
+def _real_roots_of(poly: sympy.Expr, variable: sympy.Symbol) -> list[float]:
+    if not poly.has(variable):
+        return []
+    exact = [(r.exact(), r.ball) for r in real_roots(univariate(poly, variable), bits=128)]
+    return [float(ball.mid()) if rational is None else float(rational) for rational, ball in exact]
+
+
+def _between(lo: float | None, hi: float | None) -> sympy.Rational:
+    """A rational strictly inside the interval (lo, hi), an end None for infinity."""
+    if lo is None:
+        return sympy.Rational(0) if hi is None else sympy.Rational(repr(hi)) - 1
+    if hi is None:
+        return sympy.Rational(repr(lo)) + 1
+    return (sympy.Rational(repr(lo)) + sympy.Rational(repr(hi))) / 2
 
 
 def _substituted(construction: Construction, substitution: Substitution) -> Construction:

@@ -27,7 +27,8 @@ from ...runtime import validation
 from ...runtime.budget import Budget, Deadline, started
 from ...runtime.frozen import FrozenDict, frozen
 from ...scene.load import SceneLike, Values
-from ...scene.model import Input, length_range_problem, range_problem
+from ...scene.compile import Span, spans_lengths_positive
+from ...scene.model import Input, Scene, length_range_problem, range_problem
 from ...system import symbol
 from ..toggles import single_input
 from .angles import AngleScale, direction_problem
@@ -208,8 +209,8 @@ def extremum_of(derived: Derivation, output: str, angle_range: tuple[float | str
         raise UsageError("output", output, f"the output does not depend on the input: it is {constant} throughout")
     stationary = stationary_factors(problem, backend, deadline=deadline)
     points = points_at(problem, stationary, defaults, lo, hi)
-    closed = closed_form(problem, stationary, defaults, lo, hi, largest != flip, deadline=deadline) \
-        if problem.parameters else None
+    closed = closed_form(problem, stationary, defaults, lo, hi, largest != flip, deadline=deadline,
+                         domain=_domain(derived.compiled.scene, problem.parameters)) if problem.parameters else None
     exact = None
     if scale is not None:
         exact = {key: _exact(problem, stationary, defaults, extreme(points, largest=(key == "maximum") != flip),
@@ -220,6 +221,12 @@ def extremum_of(derived: Derivation, output: str, angle_range: tuple[float | str
     return Extremum(derived.compiled.scene.name, output, name, (float(lo), float(hi)),
                     {p.name: v for p, v in defaults.items()}, points, extreme(points), extreme(points, True),
                     closed, problem, stationary, exact)
+
+
+def _domain(scene: Scene, parameters: Sequence[sympy.Symbol]) -> tuple[Span, ...] | None:
+    """Where one symbolic dimension makes a mechanism: where the lengths it is stay positive (None:
+    every real value, a coordinate's; regions are not drawn in more than one dimension)."""
+    return spans_lengths_positive(scene, parameters[0].name) if len(parameters) == 1 else None
 
 
 def _exact(problem: Problem, stationary: Sequence[sympy.Expr], defaults: Mapping[sympy.Symbol, sympy.Expr],

@@ -32,6 +32,7 @@ import sympy
 from ...errors import ComputationError, UsageError
 from ...runtime.budget import Deadline
 from ...runtime.frozen import FrozenDict
+from ...scene.compile import Span
 from ...system.convert import univariate
 from ...system.roots import real_roots
 from ..frozen import frozen_rows, thawed
@@ -212,7 +213,7 @@ def describe(problem: Problem, stationary: Sequence[sympy.Expr], values_factors:
         value = _double_root(problem, root)
     if value is None and root is not None:
         value = _denested(_closed_at(problem, best.input_deg).xreplace(line.exact_in_t(root)))
-    return Description(at, degrees, value, factor, u_factor)
+    return Description(at, degrees, None if value is None else tidied(value), factor, u_factor)
 
 
 # Past this many operations a form is left as it is: sympy's denesting of the four-bar's dist(P, O) at a
@@ -223,6 +224,44 @@ DENEST_OPS = 400
 def _denested(expr: sympy.Expr) -> sympy.Expr:
     """``expr`` denested (``sympy.sqrtdenest``) where it is small enough to try (``DENEST_OPS``)."""
     return sympy.sqrtdenest(expr) if sympy.count_ops(expr) <= DENEST_OPS else expr
+
+
+# Where a tidied form is compared with the form it replaces, each dimension at one of these in turn:
+# rationals that no dimension's special value (a pole, a radicand's root, a range end's) is likely at
+PROBES = tuple(sympy.Rational(p, q) for p, q in ((37, 11), (-53, 17), (101, 29), (7, 13), (-211, 37)))
+PROBE_DIGITS = 50
+
+
+def tidied(expr: sympy.Expr) -> sympy.Expr:
+    """``expr`` with each square root's radicand made one fraction, factored, and the terms over each
+    root collected, their coefficient factored: a dead centre's value, one root thrice over a sum of
+    fractions, as one root times one product. Kept as it is where that is no shorter, where the two
+    differ at ``PROBES``, where it holds no dimension or is past ``DENEST_OPS`` (sympy's cost)."""
+    size = sympy.count_ops(expr)
+    if not expr.free_symbols or size > DENEST_OPS:
+        return expr
+    roots = {p: sympy.sqrt(sympy.factor(sympy.together(p.base))) for p in expr.atoms(sympy.Pow)
+             if p.exp == sympy.S.Half}
+    if not roots:
+        return expr
+    tidy = sympy.collect(expr.xreplace(roots), list(roots.values()), sympy.factor)
+    return tidy if sympy.count_ops(tidy) < size and _equal_at_probes(tidy, expr) else expr
+
+
+def _equal_at_probes(one: sympy.Expr, other: sympy.Expr) -> bool:
+    """Whether two expressions agree to ``PROBE_DIGITS`` at each of ``PROBES`` where both are finite
+    (each symbol at a different one), and at three at least."""
+    symbols = sorted(one.free_symbols | other.free_symbols, key=str)
+    agreeing = 0
+    for k in range(len(PROBES)):
+        at = {s: PROBES[(k + i) % len(PROBES)] for i, s in enumerate(symbols)}
+        x, y = (sympy.N(e.xreplace(at), PROBE_DIGITS) for e in (one, other))
+        if not (x.is_finite and y.is_finite):
+            continue
+        if abs(complex(x - y)) > 10.0 ** (10 - PROBE_DIGITS) * (1 + abs(complex(y))):
+            return False
+        agreeing += 1
+    return agreeing >= 3
 
 
 def _double_root(problem: Problem, root: sympy.Expr) -> sympy.Expr | None:
@@ -282,9 +321,11 @@ def _sign_definite(poly: sympy.Expr, parameters: Sequence[sympy.Symbol]) -> bool
 
 
 def closed_form(problem: Problem, stationary: list[sympy.Expr], defaults: Values, lo: Number, hi: Number,
-                largest: bool = False, *, deadline: Deadline | None = None) -> ClosedForm:
+                largest: bool = False, *, domain: Sequence[Span] | None = None,
+                deadline: Deadline | None = None) -> ClosedForm:
     """The extremum of ``problem`` (parameters symbolic) over ``[lo, hi]`` degrees as a closed form
-    (its eliminations keeping to ``deadline``, if any)."""
+    (its eliminations keeping to ``deadline``, if any). With one parameter, its regions cover
+    ``domain`` alone (the spans where a length it is stays positive; None: every real value)."""
     values_factors = value_factors(problem, deadline=deadline)
     meeting = meeting_factors(problem, deadline=deadline)
     poles = pole_factors(problem)
@@ -315,7 +356,7 @@ def closed_form(problem: Problem, stationary: list[sympy.Expr], defaults: Values
         moving = stationary + meeting + poles
         if len(problem.parameters) == 1:
             events = event_polynomials(problem, moving, values_factors, (lo, hi))
-            regions, values = _regions(problem, events, extremum_at, defaults)
+            regions, values = _regions(problem, events, extremum_at, defaults, domain or [(None, None)])
             conditions = _interval_conditions(problem.parameters[0], regions, defaults)
         else:
             regions, values = [], []  # no regions in more than one dimension
@@ -366,24 +407,32 @@ def _interval_text(name: sympy.Symbol, lo: float | None, hi: float | None) -> st
 
 
 def _regions(problem: Problem, events: Sequence[sympy.Expr], extremum_at: Callable[[Values], Found | None],
-             defaults: Values) -> tuple[list[Region], list[sympy.Expr | None]]:
-    """Per interval between the events' real roots: where the extremum is and its closed form;
-    and each region's value as a sympy expression."""
+             defaults: Values, domain: Sequence[Span]) -> tuple[list[Region], list[sympy.Expr | None]]:
+    """Per interval between the events' real roots within ``domain``: where the extremum is and
+    its closed form; and each region's value as a sympy expression."""
     (name,) = problem.parameters
     with flint.ctx.workprec(ROOT_BITS):
         cuts = sorted({float(r.ball.mid()) for e in events for r in real_roots(univariate(e, name))})
-    bounds: list[float | None] = [None, *cuts, None]
+    intervals = [interval for span in domain for interval in _cut(span, cuts)]
     regions: list[Region] = []
     values: list[sympy.Expr | None] = []
-    for lo, hi in zip(bounds, bounds[1:]):
-        sample = defaults[name] if len(bounds) == 2 else _inside(lo, hi)
+    for lo, hi in intervals:
+        sample = defaults[name] if len(intervals) == 1 else _inside(lo, hi)
         region, value = _region(lo, hi, sample, extremum_at({name: sample}))
-        if regions and _same(regions[-1], region):
+        if regions and regions[-1]["to"] == lo and _same(regions[-1], region):
             regions[-1]["to"] = hi
         else:
             regions.append(region)
             values.append(value)
     return regions, values
+
+
+def _cut(span: Span, cuts: Sequence[float]) -> list[Span]:
+    """The open interval ``span`` cut at those of ``cuts`` inside it."""
+    lo, hi = span
+    inside = [c for c in cuts if (lo is None or lo < c) and (hi is None or c < hi)]
+    bounds = [lo, *inside, hi]
+    return list(zip(bounds, bounds[1:]))
 
 
 def _same(one: Region, other: Region) -> bool:
