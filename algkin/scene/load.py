@@ -535,7 +535,20 @@ class _Loader:
                 self.fail(element, str(err))
             if not any(_moves_with_unknowns(p, points) for p in constraints[name].points):
                 self.fail(element, "holds no point solved together (unknown = true) nor one built on such points")
+            self.check_not_again(name, constraints)
         return constraints
+
+    def check_not_again(self, name: str, constraints: Mapping[str, Constraint]) -> None:
+        """Bad input: a second constraint on the same distance, or the same three points on a line
+        (the same equation again, or one that contradicts it: the group's equations, one short,
+        left a curve of solutions, an elimination's failure)."""
+        constraint = constraints[name]
+        for other, earlier in constraints.items():
+            if other != name and (earlier.kind == "on") == (constraint.kind == "on") \
+                    and set(earlier.points) == set(constraint.points):
+                what = "three points on one line" if constraint.kind == "on" else "distance"
+                self.fail(f"constraints.{name}", f"{constraint.text}: the same {what} as constraints.{other} "
+                                                 f"({earlier.text}); give each once")
 
     def check_acyclic(self, points: Mapping[str, Construction]) -> None:
         state: dict[str, str] = {}  # point -> 'active' (on the path) or 'done'
