@@ -76,7 +76,7 @@ def load_scene(name_or_path: str | os.PathLike[str]) -> Scene:
                              + suggest.known(path, names, plural="catalog"))
     data = _read(path)
     try:
-        text = data.decode("utf-8")
+        text = data.decode("utf-8").removeprefix("\ufeff")  # a byte-order mark (Notepad writes one) is no text
     except UnicodeDecodeError as err:
         raise SceneError(path, "", f"not UTF-8 text ({err.reason} at byte {err.start})") from None
     label = os.path.basename(path) if path.startswith(_CATALOG) else path
