@@ -388,7 +388,7 @@ class _Loader:
         phase = self.number(value, element)
         quarter = phase / 90 if unit == "deg" else phase
         if not quarter.is_Integer or (unit == "rad" and phase != 0):
-            self.fail(element, f"phase {phase} {unit} has no rational cos and sin: give {_PHASE_FORMS}")
+            self.fail(element, f"phase {shortened(str(phase), 40)} {unit} has no rational cos and sin: give {_PHASE_FORMS}")
         cos, sin = QUARTER_TURNS[int(quarter) % 4]
         return sympy.Integer(cos), sympy.Integer(sin)
 
