@@ -105,8 +105,8 @@ def resolve_outputs(scene: Scene, requested: Sequence[str] | None) -> list[Outpu
     generated = check_names(scene)  # a scene built in Python has not been through the loader
     outputs: list[Output] = []
     taken: dict[str, str] = {}  # unknowns of distance and angle outputs -> the output's name
-    for text in requested or list(scene.outputs):
-        try:
+    for text in [t.strip() if isinstance(t, str) else t for t in requested or ()] or list(scene.outputs):
+        try:  # stripped: ' AB' (a quoted list, a pasted line) is the output AB, as ' B.x' is B.x
             output = scene.outputs[text] if text in scene.outputs else _requested_output(scene, text, generated)
             if any(o.name == output.name and (o.kind, o.points) == (output.kind, output.points) for o in outputs):
                 continue  # asked for twice

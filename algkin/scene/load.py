@@ -76,7 +76,7 @@ def load_scene(name_or_path: str | os.PathLike[str]) -> Scene:
                              + suggest.known(path, names, plural="catalog"))
     data = _read(path)
     try:
-        text = data.decode("utf-8")
+        text = data.decode("utf-8").removeprefix("\ufeff")  # a byte-order mark (Notepad writes one) is no text
     except UnicodeDecodeError as err:
         raise SceneError(path, "", f"not UTF-8 text ({err.reason} at byte {err.start})") from None
     label = os.path.basename(path) if path.startswith(_CATALOG) else path
@@ -388,7 +388,7 @@ class _Loader:
         phase = self.number(value, element)
         quarter = phase / 90 if unit == "deg" else phase
         if not quarter.is_Integer or (unit == "rad" and phase != 0):
-            self.fail(element, f"phase {phase} {unit} has no rational cos and sin: give {_PHASE_FORMS}")
+            self.fail(element, f"phase {shortened(str(phase), 40)} {unit} has no rational cos and sin: give {_PHASE_FORMS}")
         cos, sin = QUARTER_TURNS[int(quarter) % 4]
         return sympy.Integer(cos), sympy.Integer(sin)
 
@@ -535,7 +535,20 @@ class _Loader:
                 self.fail(element, str(err))
             if not any(_moves_with_unknowns(p, points) for p in constraints[name].points):
                 self.fail(element, "holds no point solved together (unknown = true) nor one built on such points")
+            self.check_not_again(name, constraints)
         return constraints
+
+    def check_not_again(self, name: str, constraints: Mapping[str, Constraint]) -> None:
+        """Bad input: a second constraint on the same distance, or the same three points on a line
+        (the same equation again, or one that contradicts it: the group's equations, one short,
+        left a curve of solutions, an elimination's failure)."""
+        constraint = constraints[name]
+        for other, earlier in constraints.items():
+            if other != name and (earlier.kind == "on") == (constraint.kind == "on") \
+                    and set(earlier.points) == set(constraint.points):
+                what = "three points on one line" if constraint.kind == "on" else "distance"
+                self.fail(f"constraints.{name}", f"{constraint.text}: the same {what} as constraints.{other} "
+                                                 f"({earlier.text}); give each once")
 
     def check_acyclic(self, points: Mapping[str, Construction]) -> None:
         state: dict[str, str] = {}  # point -> 'active' (on the path) or 'done'

@@ -101,7 +101,7 @@ def read_task(path: str | os.PathLike[str]) -> Task:
         raise SceneError(path, "", f"cannot read: {err.strerror or err}"
                          + suggest.known(os.path.basename(path), example_names(), plural="examples")) from None
     try:
-        text = data.decode("utf-8")
+        text = data.decode("utf-8").removeprefix("\ufeff")  # a byte-order mark (Notepad writes one) is no text
     except UnicodeDecodeError as err:
         raise SceneError(path, "", f"not UTF-8 text ({err.reason} at byte {err.start})") from None
     return read_task_text(text, os.path.basename(path) if path.startswith(_EXAMPLES) else path)

@@ -25,7 +25,7 @@ import sympy
 from .convert import flint_context, from_terms, to_flint, univariate
 from .roots import real_roots
 
-__all__ = ["half_angle_numerator", "half_angle_poly", "half_angle_terms", "tangent_to_degrees", "vanishes_at_half_turn", "Parametrisation"]
+__all__ = ["half_angle_degree", "half_angle_numerator", "half_angle_poly", "half_angle_terms", "tangent_to_degrees", "vanishes_at_half_turn", "Parametrisation"]
 
 
 def half_angle_numerator(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol, t: sympy.Symbol) -> sympy.Expr:
@@ -91,6 +91,31 @@ def half_angle_poly(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol) -> flint
 def vanishes_at_half_turn(expr: sympy.Expr, c: sympy.Symbol, s: sympy.Symbol) -> bool:
     """Whether the condition holds at ``theta = 180 deg`` (``t`` at infinity)."""
     return bool(sympy.expand(expr.xreplace({c: -1, s: 0})) == 0)
+
+
+def half_angle_degree(degrees: sympy.Expr | int, *, limit: int) -> int | None:
+    """The degree over the rationals of ``tan(degrees/2)`` (``degrees`` an angle in degrees) where
+    it is at most ``limit``; None where it is more, or where the tangent is not algebraic (an angle
+    that is no rational number of degrees, such as 1 radian).
+
+    ``tan(2 pi k/n)`` (``k/n`` in lowest terms) is of degree ``phi(n)``, halved where 4 divides
+    ``n`` and quartered where 8 does; so the degree grows with the denominator of the angle.
+
+    >>> half_angle_degree(90, limit=12), half_angle_degree(120, limit=12), half_angle_degree(5, limit=12)
+    (1, 2, 12)
+    >>> half_angle_degree(91, limit=12), half_angle_degree(sympy.Rational(9000000000001, 10**11), limit=12)
+    (None, None)
+    >>> half_angle_degree(180 / sympy.pi, limit=12) is None
+    True
+    """
+    value = sympy.sympify(degrees)
+    if not value.is_Rational:
+        return None
+    n = int((value / 720).q)
+    if n > 2 * (4 * limit) ** 2:  # phi(n) >= sqrt(n/2): the degree, at least phi(n)/4, is past the limit
+        return None
+    degree = int(sympy.totient(n)) // {8: 4, 4: 2}.get(math.gcd(n, 8), 1)
+    return degree if degree <= limit else None
 
 
 def tangent_to_degrees(t: flint.arb) -> flint.arb:

@@ -48,3 +48,12 @@ def test_a_chain_just_short_of_it_compiles_to_the_coordinates_by_hand():
     x, _ = compiled.coordinates[f"P{k}"]
     c, s = sympy.symbols("c_t s_t", real=True)
     assert (x.coeff(c), x.coeff(s)) == (_w(k)[0], -_w(k)[1])
+
+
+def test_a_requested_output_is_read_without_the_spaces_about_it():
+    from algkin.scene import load_scene
+    from algkin.scene.compile import resolve_outputs
+
+    scene = load_scene("arm-string")
+    assert [(o.name, o.kind, o.points) for o in resolve_outputs(scene, [" AB\n", " A.x "])] == \
+        [("AB", "dist", ("A", "B")), ("A.x", "x", ("A",))]

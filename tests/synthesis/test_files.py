@@ -74,3 +74,11 @@ def test_files_that_are_not_regular_or_too_large(tmp_path):
         read_task(big)
     with pytest.raises(SceneError, match="cannot read"):
         read_task(tmp_path / "absent.toml")
+
+
+def test_a_file_with_a_byte_order_mark_reads_as_without(tmp_path):
+    # Windows' Notepad starts UTF-8 with EF BB BF; it was "TOML syntax error: Invalid statement"
+    with_mark, without = tmp_path / "marked.toml", tmp_path / "plain.toml"
+    with_mark.write_bytes(b"\xef\xbb\xbf" + POSES.encode())
+    without.write_bytes(POSES.encode())
+    assert read_task(str(with_mark)).poses == read_task(str(without)).poses

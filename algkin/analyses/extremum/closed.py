@@ -33,6 +33,7 @@ from ...errors import ComputationError, UsageError
 from ...runtime.budget import Deadline
 from ...runtime.frozen import FrozenDict
 from ...scene.compile import Span
+from ...system.angles import half_angle_degree
 from ...system.convert import univariate
 from ...system.roots import real_roots
 from ..frozen import frozen_rows, thawed
@@ -199,7 +200,8 @@ def describe(problem: Problem, stationary: Sequence[sympy.Expr], values_factors:
     turn = 360 * mpmath.floor((best.input_deg + 180) / 360) if line.is_angle else 0
     degrees = end_degrees(problem, best)
     if degrees is not None:
-        end_value = line.at_end(degrees)(problem.numerator_in_t(problem.eliminant))
+        end_value = line.at_end(degrees)(problem.numerator_in_t(problem.eliminant)) \
+            if _exact_end(problem, degrees) else None
         return Description("endpoint" if best.kind == "endpoint" else "stationary", degrees,
                            value_at_angle(problem, degrees, values), None, end_value)
     t_star = line.t_of(best.input_deg)
@@ -214,6 +216,27 @@ def describe(problem: Problem, stationary: Sequence[sympy.Expr], values_factors:
     if value is None and root is not None:
         value = _denested(_closed_at(problem, best.input_deg).xreplace(line.exact_in_t(root)))
     return Description(at, degrees, None if value is None else tidied(value), factor, u_factor)
+
+
+# The largest degree of an angle's tan(end/2) at which an end's conditions are eliminated (the resultant
+# with its minimal polynomial): 6 takes every multiple of 10 degrees; arm-string's b at 5 degrees (12) took
+# 40 s, at 1 degree (48) it ran past 10 minutes
+END_DEGREE = 6
+
+
+def _exact_end(problem: Problem, degrees: sympy.Expr) -> bool:
+    """Whether the input at the end ``degrees`` is exact and small enough to eliminate (``END_DEGREE``)."""
+    return not problem.line.is_angle or half_angle_degree(degrees, limit=END_DEGREE) is not None
+
+
+def _check_ends(problem: Problem, lo: Number, hi: Number) -> None:
+    """A UsageError unless both ends of the range are exact enough for the closed form's conditions."""
+    for end in (lo, hi):
+        if not _exact_end(problem, sympy.sympify(end)):
+            raise UsageError("angle_range", f"{float(lo):g}:{float(hi):g}",
+                             f"with dimensions kept symbolic, each end must be an angle whose tan(end/2) is "
+                             f"algebraic of degree at most {END_DEGREE} (any multiple of 10 degrees; in radians, "
+                             f"0), for the conditions on the dimensions: {float(end):.12g} deg's is not")
 
 
 # Past this many operations a form is left as it is: sympy's denesting of the four-bar's dist(P, O) at a
@@ -326,6 +349,7 @@ def closed_form(problem: Problem, stationary: list[sympy.Expr], defaults: Values
     """The extremum of ``problem`` (parameters symbolic) over ``[lo, hi]`` degrees as a closed form
     (its eliminations keeping to ``deadline``, if any). With one parameter, its regions cover
     ``domain`` alone (the spans where a length it is stays positive; None: every real value)."""
+    _check_ends(problem, lo, hi)
     values_factors = value_factors(problem, deadline=deadline)
     meeting = meeting_factors(problem, deadline=deadline)
     poles = pole_factors(problem)

@@ -665,9 +665,14 @@ def points_at(problem: Problem, stationary: Sequence[sympy.Expr], values: Mappin
 
 
 def _mp(number: Number) -> mpmath.mpf:
-    """A rational (sympy, int) or mpf as an mpf at the working precision."""
-    number = sympy.Rational(number) if not isinstance(number, mpmath.mpf) else number
-    return number if isinstance(number, mpmath.mpf) else mpmath.mpf(int(number.p)) / int(number.q)
+    """A rational (sympy, int), an exact real (a radians range end in degrees, ``540/pi``) or an
+    mpf as an mpf at the working precision."""
+    if isinstance(number, mpmath.mpf):
+        return number
+    exact = sympy.sympify(number)
+    if exact.is_Rational:
+        return mpmath.mpf(int(exact.p)) / int(exact.q)
+    return mpmath.mpf(exact.evalf(mpmath.mp.dps + 5)._mpf_)
 
 
 def _seen(found: Sequence[CriticalPoint], degrees: mpmath.mpf) -> bool:

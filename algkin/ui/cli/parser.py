@@ -280,7 +280,7 @@ def build_parser() -> argparse.ArgumentParser:
                         help="outputs (names, points, dist(P, Q), P.x, angle(P, Q), angle(P, Q, R)); default: the scene's")
     extremum = _command(commands, "extremum", "stationary points of an output over the input")
     _scene(extremum)
-    extremum.add_argument("--of", required=True, help="a scalar output: distance, coordinate or angle (in degrees)")
+    extremum.add_argument("--of", required=True, type=str.strip, help="a scalar output: distance, coordinate or angle (in degrees)")
     extremum.add_argument("--range", metavar="LO:HI", help="lo:hi in the input's unit; default: its declared range")
     extremum.add_argument("--param", action=_Once, default=[], metavar="NAME",
                           help="keep this dimension symbolic: the minimum as a closed form in it")

@@ -111,3 +111,11 @@ def test_a_value_a_hundred_thousand_characters_long_leaves_a_short_line_with_the
     assert code == 2 and err.count("\n") == 1 and len(err) < 1200
     assert err.startswith("algkin: error: --outputs='QQQ") and "characters left out" in err
     assert err.endswith("(outputs: B, P; or a point, P.x, P.y, dist(P, Q), angle(P, Q, R))\n")
+
+
+def test_an_output_named_with_spaces_about_it_is_the_output(capsys):
+    # ' B.x' was taken and 'AB ' refused as "unknown point 'AB'; did you mean 'B'?" though AB is the output
+    code, out, _ = run(capsys, "extremum", "arm-string", "--of", "AB ", "--json")
+    assert code == 0 and json.loads(out)["of"] == "AB"
+    # |AB| least where OA points along OB (hand: |OB| - |OA| = sqrt(400**2 + 80**2) - 350)
+    assert json.loads(out)["minimum"]["value"] == pytest.approx((400**2 + 80**2) ** 0.5 - 350, rel=1e-12)
