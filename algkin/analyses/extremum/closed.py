@@ -219,9 +219,9 @@ def describe(problem: Problem, stationary: Sequence[sympy.Expr], values_factors:
 
 
 # The largest degree of an angle's tan(end/2) at which an end's conditions are eliminated (the resultant
-# with its minimal polynomial): 6 takes every multiple of 10 degrees; arm-string's b at 5 degrees (12) took
-# 40 s, at 1 degree (48) it ran past 10 minutes
-END_DEGREE = 6
+# with its minimal polynomial): 12 takes every multiple of 5 degrees (arm-string's b over 0:5 took 40 s, the
+# degree 12; 91 degrees, of degree 48, ran past ten minutes)
+END_DEGREE = 12
 
 
 def _exact_end(problem: Problem, degrees: sympy.Expr) -> bool:
@@ -235,7 +235,7 @@ def _check_ends(problem: Problem, lo: Number, hi: Number) -> None:
         if not _exact_end(problem, sympy.sympify(end)):
             raise UsageError("angle_range", f"{float(lo):g}:{float(hi):g}",
                              f"with dimensions kept symbolic, each end must be an angle whose tan(end/2) is "
-                             f"algebraic of degree at most {END_DEGREE} (any multiple of 10 degrees; in radians, "
+                             f"algebraic of degree at most {END_DEGREE} (any multiple of 5 degrees; in radians, "
                              f"0), for the conditions on the dimensions: {float(end):.12g} deg's is not")
 
 
