@@ -16,7 +16,8 @@ from typing import Any
 
 import sympy
 from sympy.core.mul import _keep_coeff
-from sympy.printing.precedence import precedence
+from sympy.core.function import Function
+from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
 
 from .order import PrintOrder
@@ -63,7 +64,7 @@ class _SharingPrinter(StrPrinter):  # type: ignore[misc, unused-ignore]  # sympy
         key = (type(item), item)
         found = self._precedences.get(key)
         if found is None:
-            found = self._precedences[key] = precedence(item)
+            found = self._precedences[key] = _product_precedence(item) if type(item) is sympy.Mul else precedence(item)
         return found
 
     def parenthesize(self, item: Any, level: int, strict: bool = False) -> str:
@@ -138,6 +139,16 @@ class _SharingPrinter(StrPrinter):  # type: ignore[misc, unused-ignore]  # sympy
         if len(denominator) == 1:
             return sign + "*".join(a_str) + "/" + b_str[0]
         return sign + "*".join(a_str) + "/(%s)" % "*".join(b_str)
+
+
+def _product_precedence(product: sympy.Mul) -> int:
+    """sympy 1.14's ``precedence_Mul``, a sum's where the product begins with a negative rational, without
+    ``could_extract_minus_sign``'s new ``-product`` and the assumptions of its new number."""
+    first = product.args[0]
+    if not (isinstance(first, sympy.Rational) and first.p) or any(
+            hasattr(arg, "precedence") and isinstance(arg, Function) for arg in product.args):
+        return int(precedence(product))
+    return int(PRECEDENCE["Add"] if first.p < 0 else PRECEDENCE["Mul"])
 
 
 def _inverted(power: sympy.Expr) -> sympy.Expr:
