@@ -49,7 +49,7 @@ class PrintOrder:
 
     def factors(self, mul: sympy.Mul) -> list[sympy.Expr]:
         """``mul.as_ordered_factors()``."""
-        commutative, noncommutative = mul.args_cnc()
+        commutative, noncommutative = _split_commutative(mul)
         commutative.sort(key=self.sort_key)
         return [*commutative, *noncommutative]
 
@@ -168,9 +168,24 @@ class PrintOrder:
         return found
 
 
+def _split_commutative(mul: sympy.Mul) -> tuple[list[sympy.Expr], list[sympy.Expr]]:
+    """``mul.args_cnc()``: its commutative factors, a negative rational in front split as -1 and its
+    opposite, then the others; read from the rational itself where there is one (sympy asks the new
+    number's assumptions)."""
+    first = mul.args[0]
+    if not (mul.is_commutative and isinstance(first, sympy.Rational)):
+        commutative, noncommutative = mul.args_cnc()
+        return commutative, noncommutative
+    if first.p < 0 and first is not sympy.S.NegativeOne:
+        return [sympy.S.NegativeOne, -first, *mul.args[1:]], []
+    return list(mul.args), []
+
+
 def _number_then_negative_product(terms: tuple[sympy.Expr, ...]) -> list[sympy.Expr] | None:
     """``as_ordered_terms``'s special case: a positive number and a negative number times one factor
     (``1 - c``) keep that order."""
+    if len(terms) != 2:  # the case's sums only
+        return None
     def not_number(x: sympy.Basic) -> bool:
         return not isinstance(x, _NUMBERS)
     ordered = sorted(terms, key=not_number)

@@ -105,7 +105,7 @@ class _SharingPrinter(StrPrinter):  # type: ignore[misc, unused-ignore]  # sympy
             return written
         prec = self._precedence(expr)
         c, e = expr.as_coeff_Mul()
-        if c < 0:
+        if (c.p < 0 if isinstance(c, sympy.Rational) else c < 0):  # a rational's sign without a comparison's sympify
             expr = _keep_coeff(-c, e)
             sign = "-"
         else:

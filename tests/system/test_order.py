@@ -49,3 +49,9 @@ def test_a_positive_number_and_a_negative_multiple_keep_sympys_order():
     # sympy writes 1 - c with its number first (a special case of its order)
     expr = 1 - c
     assert PrintOrder().terms(expr) == expr.as_ordered_terms() == [sympy.Integer(1), -c]
+
+
+def test_a_negative_rational_in_front_of_a_product_is_split_as_sympy_splits_it():
+    # sympy's args_cnc: -3/4*c*s as -1, 3/4, c, s; -c keeps its -1
+    for expr in (-sympy.Rational(3, 4) * c * s, -c * s, 2 * c * s, -2 * sympy.sqrt(c + 1) * s):
+        assert PrintOrder().factors(expr) == expr.as_ordered_factors()
