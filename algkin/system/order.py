@@ -6,7 +6,8 @@ sympy computes a sum's order again wherever the sum is a factor's sort key or pr
 term's coefficient to a complex (through ``evalf``) although the coefficients only break ties between terms
 of one monomial, which a sum never has but for number factors like ``sqrt(2)``: most of the time of
 writing a closed form. ``PrintOrder`` keeps each order and key, and converts the coefficients of a sum
-only where two of its terms tie.
+only where two of its terms tie. A root of a product among a term's factors is still evaluated once
+(``decompose_power``): the assumptions it asks of each factor's sign decide the generator sympy sorts by.
 
 >>> c = sympy.Symbol("c")
 >>> expr = 3*c**2 - c*sympy.sqrt(c + 1) + 5
@@ -25,7 +26,7 @@ from sympy.core.sorting import default_sort_key
 __all__ = ["PrintOrder"]
 
 _NUMBERS = (sympy.Number, NumberSymbol)
-# sympy's own key: its ``sort_key`` and its ``as_ordered_*`` methods where a class has them of its own
+# the key kept here; a class with a sort_key of its own (atoms among them) is keyed by that
 _EXPR_SORT_KEY: Callable[..., Any] = sympy.Expr.sort_key
 
 

@@ -2,7 +2,8 @@
 
 A closed form's square root and denominators recur in every coordinate of every branch: sympy's
 printer writes (and sorts the terms of) each occurrence again, half a second of a six-bar's
-``derive``. ``ExpressionText`` keeps what it wrote for one document.
+``derive``. ``ExpressionText`` keeps what it wrote for one document, and the order of each sum's terms
+and each product's factors (``order.PrintOrder``), which sympy computes again for each occurrence.
 
 >>> import sympy
 >>> c = sympy.Symbol("c")
@@ -15,8 +16,8 @@ printer writes (and sorts the terms of) each occurrence again, half a second of 
 from typing import Any
 
 import sympy
-from sympy.core.mul import _keep_coeff
 from sympy.core.function import Function
+from sympy.core.mul import _keep_coeff
 from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
 
