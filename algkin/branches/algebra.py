@@ -1,16 +1,19 @@
 """Exact algebra the closed forms share: earlier points substituted and reduced on the circles, tidy factors."""
 
 from collections.abc import Callable, Mapping
+from functools import reduce
 
 import sympy
 from sympy.core.add import _addsort
 from sympy.core.mul import _keep_coeff, _mulsort
+from sympy.core.numbers import igcd, ilcm
 
 from ..scene.implicit.algebra import Circles, reduce_on_circles
 from ..system.text import ExpressionText
 from .ratio import cancelled
 
-__all__ = ["reducer", "tidy_ratio", "tidy_product", "tidy_sqrt", "unsplit_root", "product", "total", "readable", "Readable", "FormText"]
+__all__ = ["reducer", "tidy_ratio", "tidy_product", "tidy_sqrt", "unsplit_root", "product", "total", "readable", "Readable", "FormText",
+           "times", "primitive_sum"]
 
 
 def reducer(substitution: Mapping[sympy.Symbol, sympy.Expr], inputs: Circles) -> Callable[[sympy.Expr], sympy.Expr]:
@@ -140,6 +143,50 @@ def total(*terms: sympy.Expr) -> sympy.Expr:
     return sympy.Add._from_args(args, is_commutative=True)
 
 
+def times(coefficient: sympy.Expr, part: sympy.Expr) -> sympy.Expr:
+    """sympy's ``_keep_coeff(coefficient, part)``: a rational times a symbol or a symbol's integer power put
+    together directly (sympy's constructor makes the same product, asking the new number's assumptions
+    first: most of the time of ``readable``); elsewhere ``_keep_coeff``.
+
+    >>> c = sympy.Symbol("c")
+    >>> times(sympy.Rational(3, 4), c**2).args == _keep_coeff(sympy.Rational(3, 4), c**2).args
+    True
+    """
+    if isinstance(coefficient, sympy.Rational) and coefficient.p and coefficient not in (1, -1) \
+            and part.is_commutative and (part.is_Symbol or part.is_Pow and part.base.is_Symbol and part.exp.is_Integer):
+        return sympy.Mul._from_args((coefficient, part), is_commutative=True)
+    return _keep_coeff(coefficient, part)
+
+
+def primitive_sum(add: sympy.Add) -> tuple[sympy.Expr, sympy.Expr]:
+    """sympy 1.14's ``Add.primitive`` (BSD licence): ``(R, add/R)`` with ``R`` the rational content of the
+    terms' coefficients, each term's new coefficient put on by ``times``.
+
+    >>> c = sympy.Symbol("c")
+    >>> primitive_sum(3*c/4 + sympy.Rational(9, 2)*c**2)
+    (3/4, 6*c**2 + c)
+    """
+    terms = []
+    for term in add.args:
+        k, rest = term.as_coeff_Mul()
+        if not k.is_Rational:
+            k, rest = sympy.S.One, term
+        if rest is sympy.S.ComplexInfinity:  # sympy's own handling of zoo
+            sympys: tuple[sympy.Expr, sympy.Expr] = add.primitive()
+            return sympys
+        terms.append((k.p, k.q, rest))
+    ngcd = reduce(igcd, [p for p, _, _ in terms], 0)
+    dlcm = reduce(ilcm, [q for _, q, _ in terms], 1)
+    if ngcd == dlcm == 1:
+        return sympy.S.One, add
+    made = [times(sympy.Rational((p // ngcd) * (dlcm // q)), rest) for p, q, rest in terms]
+    number = made.pop(0) if made[0].is_Number else None  # the number stays first
+    _addsort(made)
+    if number:
+        made.insert(0, number)
+    return sympy.Rational(ngcd, dlcm), add._new_rawargs(*made)
+
+
 def readable(expr: sympy.Expr) -> sympy.Expr:
     """``expr`` as written for a reader: each sum that is a factor (of a numerator, a denominator, under
     a root) primitive with integer coefficients, the rational contents gathered in one number in front of
@@ -169,7 +216,7 @@ class Readable:
             if expr.is_Add:  # a sum of terms: each term read apart (a content pulled out of them all reads worse)
                 made = total(*[self(term) for term in expr.args])
             else:
-                made = _keep_coeff(*self._content_and_part(expr))
+                made = times(*self._content_and_part(expr))
             self._made[expr] = made
         return made
 
@@ -187,7 +234,7 @@ class Readable:
             return sympy.Integer(1), expr
         if expr.is_Add:
             terms = self(expr)
-            return terms.primitive() if terms.is_Add else self._content_and_part(terms)
+            return primitive_sum(terms) if terms.is_Add else self._content_and_part(terms)
         if expr.is_Mul:
             parts = [self._content_and_part(factor) for factor in expr.args]
             return sympy.Mul(*[k for k, _ in parts]), product(*[p for _, p in parts])

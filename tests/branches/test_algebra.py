@@ -3,7 +3,9 @@
 import sympy
 from hypothesis import assume, example, given, strategies as st
 
-from algkin.branches.algebra import product, total, unsplit_root
+from sympy.core.mul import _keep_coeff
+
+from algkin.branches.algebra import primitive_sum, product, times, total, unsplit_root
 
 C, S = sympy.symbols("c s", real=True)
 numbers = st.fractions(min_value=0, max_value=10**6, max_denominator=10**6).filter(bool)  # surds and squares
@@ -46,3 +48,34 @@ def test_a_product_is_sympys(factors):
 def test_a_sum_is_sympys(terms):
     built, sympys = total(*terms), sympy.Add(*terms)
     assert built == sympys and built.args == sympys.args and str(built) == str(sympys)
+
+
+def _same_tree(built, sympys):
+    """The same expression, node by node in the same order and of the same classes (sympy finds some
+    numbers of other types equal, and ``srepr`` sorts a sum's terms)."""
+    return type(built) is type(sympys) and built == sympys and len(built.args) == len(sympys.args) \
+        and all(_same_tree(b, s) for b, s in zip(built.args, sympys.args))
+
+
+coefficients = st.one_of(st.fractions(-10**4, 10**4, max_denominator=10**3).map(sympy.Rational),
+                         st.sampled_from([sympy.S.One, sympy.S.NegativeOne, sympy.Float(1.5), sympy.sqrt(2)]))
+powers = st.tuples(st.sampled_from([C, S, X, sympy.Symbol("l", positive=True)]), st.integers(-3, 4)).map(
+    lambda p: p[0] ** p[1])
+
+
+@given(coefficients, st.one_of(powers, factor, sums))
+@example(sympy.Rational(3, 4), X**2)
+@example(sympy.Integer(2), sympy.sqrt(2))  # a number's root: sympy's own
+@example(sympy.Integer(3), sympy.Pow(sympy.Mul(C**2 + 1, C - 2), sympy.S.Half, evaluate=False))  # sympy splits it
+def test_a_coefficient_times_a_part_is_sympys(coefficient, part):
+    assert _same_tree(times(coefficient, part), _keep_coeff(coefficient, part))
+
+
+@given(st.lists(st.tuples(coefficients, st.one_of(powers, factor)), min_size=2, max_size=6).map(
+    lambda terms: sympy.Add(*[k * p for k, p in terms])).filter(lambda p: p.is_Add))
+@example(sympy.Rational(3, 4) * C + sympy.Rational(9, 2) * C**2)
+@example(6 * C - 4)  # the number stays first
+@example(9 * C + sympy.Rational(3, 2) * S)  # 6*c + s: the terms put in sympy's order again
+def test_a_sums_content_and_primitive_part_are_sympys(add):
+    (content, part), (sympys_content, sympys_part) = primitive_sum(add), add.primitive()
+    assert _same_tree(content, sympys_content) and _same_tree(part, sympys_part)

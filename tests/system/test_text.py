@@ -1,10 +1,13 @@
 """algkin.system.text: an ExpressionText writes every expression as sympy's ``str`` does, character for
 character, however many subexpressions the expressions of one document share."""
 
+import pytest
 import sympy
 from hypothesis import given, settings, strategies as st
 
 from algkin.system.text import ExpressionText
+
+from .closed_forms import CLOSED_FORMS
 
 c, s = sympy.symbols("c s", real=True)
 LEAVES = (st.sampled_from([c, s, sympy.Symbol("l"), sympy.Symbol("l", positive=True)])
@@ -39,3 +42,32 @@ def test_a_float_on_its_own_and_inside_a_sum_is_written_as_str_writes_each():
     # sympy keeps a Float's trailing zeros at the top only
     half, text = sympy.Float("0.50"), ExpressionText()
     assert [text(half + c), text(half), text(half + c)] == [str(half + c), str(half), str(half + c)]
+
+
+def _written_as_str_writes_them(exprs):
+    text = ExpressionText()
+    for expr in [*exprs, *[e / (c - 2) for e in exprs], *exprs]:
+        assert text(expr) == str(expr)
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(CLOSED_FORMS, min_size=1, max_size=3))
+def test_closed_forms_of_one_document_are_written_as_str_writes_them(exprs):
+    # the shapes algkin writes: roots of products over products, nested and unevaluated, surds, rationals
+    _written_as_str_writes_them(exprs)
+
+
+@pytest.mark.slow
+@settings(max_examples=250, deadline=None)
+@given(st.lists(CLOSED_FORMS, min_size=1, max_size=4))
+def test_many_closed_forms_of_one_document_are_written_as_str_writes_them(exprs):
+    _written_as_str_writes_them(exprs)
+
+
+def test_a_negative_product_and_its_parts_are_written_as_str_writes_them():
+    root = sympy.Pow(sympy.Mul(3 - c, 1 / (c + 5)), sympy.S.Half, evaluate=False)
+    exprs = [-3 * c * root / (c - 2), -root, 1 - c, -(c - 1) / (2 * (c + 1)), -sympy.sqrt(6) * root / 4,
+             # an unevaluated product's inverse: sympy writes c/((s*(c + 1)))
+             sympy.Mul(c, sympy.Pow(sympy.Mul(c + 1, s), -1, evaluate=False), evaluate=False)]
+    text = ExpressionText()
+    assert [text(e) for e in exprs] == [str(e) for e in exprs]
