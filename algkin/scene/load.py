@@ -200,7 +200,17 @@ class _Loader:
             if problem:
                 self.fail(element, problem)
             self.names[name] = sympy.Symbol(name, real=True)
+            if name in ranges:
+                self.check_default_in_range(defaults[name], ranges[name], element)
         return defaults, ranges
+
+    def check_default_in_range(self, default: sympy.Expr, bounds: tuple[sympy.Rational, sympy.Rational],
+                               element: str) -> None:
+        """A declared range holds its parameter's default, a number (a page's slider starts there); one
+        in other parameters is left to them (putting them in may cost gigabytes: the bits checks come later)."""
+        lo, hi = bounds
+        if default.is_Rational and not lo <= default <= hi:
+            self.fail(f"{element}.default", f"{default} is outside its range [{lo}, {hi}]")
 
     def ranged(self, spec: Table, element: str) -> tuple[object, tuple[sympy.Rational, sympy.Rational]]:
         """``{ default = d, range = [lo, hi] }``: the default's text and (lo, hi), two exact numbers."""

@@ -416,13 +416,14 @@ def scenes() -> st.SearchStrategy[Scene]:
 
 @st.composite
 def with_ranges(draw: st.DrawFn, scene_strategy: st.SearchStrategy[Scene] | None = None) -> Scene:
-    """A scene with declared slider ranges ``lo < hi`` (exact) on some of its parameters."""
+    """A scene with declared slider ranges ``lo < hi`` (exact) on some of its parameters, each about
+    its default."""
     scene = draw(scene_strategy or scenes())
     names = draw(st.lists(st.sampled_from(sorted(scene.parameters)), unique=True)) if scene.parameters else []
     ranges = {}
     for name in names:
-        lo, width = draw(_coordinates), draw(lengths())
-        ranges[name] = (sympy.Rational(lo), sympy.Rational(lo + width))
+        default, below, above = scene.parameters[name], draw(lengths()), draw(lengths())
+        ranges[name] = (default - sympy.Rational(below), default + sympy.Rational(above))
     return attrs.evolve(scene, parameter_ranges=ranges)
 
 
