@@ -667,8 +667,8 @@ def points_at(problem: Problem, stationary: Sequence[sympy.Expr], values: Mappin
 def _mp(number: Number) -> mpmath.mpf:
     """A rational (sympy, int), an exact real (a radians range end in degrees, ``540/pi``) or an
     mpf as an mpf at the working precision."""
-    if isinstance(number, mpmath.mpf):
-        return number
+    if isinstance(number, (mpmath.mpf, float)):
+        return mpmath.mpf(number)  # a float's own value (sympy evaluates 0.0 to an exact zero)
     exact = sympy.sympify(number)
     if exact.is_Rational:
         return mpmath.mpf(int(exact.p)) / int(exact.q)
