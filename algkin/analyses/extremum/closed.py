@@ -21,7 +21,6 @@ from __future__ import annotations
 import itertools
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import Any, Optional, TypeAlias, TypedDict
 
 import attrs
@@ -34,6 +33,7 @@ from ...runtime.budget import Deadline
 from ...runtime.frozen import FrozenDict
 from ...scene.compile import Span
 from ...system.angles import half_angle_degree
+from ...system.between import simplest_between
 from ...system.convert import univariate
 from ...system.roots import real_roots
 from ..frozen import frozen_rows, thawed
@@ -441,7 +441,7 @@ def _regions(problem: Problem, events: Sequence[sympy.Expr], extremum_at: Callab
     regions: list[Region] = []
     values: list[sympy.Expr | None] = []
     for lo, hi in intervals:
-        sample = defaults[name] if len(intervals) == 1 else _inside(lo, hi)
+        sample = defaults[name] if len(intervals) == 1 else sympy.Rational(simplest_between(lo, hi))
         region, value = _region(lo, hi, sample, extremum_at({name: sample}))
         if regions and regions[-1]["to"] == lo and _same(regions[-1], region):
             regions[-1]["to"] = hi
@@ -477,14 +477,3 @@ def _region(lo: float | None, hi: float | None, sample: sympy.Rational, found: F
     region["sample_input_deg"], region["sample_value"] = float(best.input_deg), float(best.value)
     return region, described.value
 
-
-def _inside(lo: float | None, hi: float | None) -> sympy.Rational:
-    """A simple rational strictly between two cuts (either may be None for infinity); not 0,
-    where a dimension degenerates (a crank of length 0 moves nothing), when the interval has more."""
-    if lo is None and hi is not None:
-        return sympy.Rational(Fraction(hi - max(1.0, abs(hi))).limit_denominator(1000))
-    if hi is None and lo is not None:
-        return sympy.Rational(Fraction(lo + max(1.0, abs(lo))).limit_denominator(1000))
-    assert lo is not None and hi is not None  # no cut at all: the defaults are the sample
-    middle = sympy.Rational(Fraction((lo + hi) / 2).limit_denominator(10**6))
-    return middle or sympy.Rational(Fraction((lo + 3 * hi) / 4).limit_denominator(10**6))
