@@ -71,9 +71,8 @@ def load_scene(name_or_path: str | os.PathLike[str]) -> Scene:
         if path in catalog_names():
             path = catalog_path(path)
         else:
-            names = catalog_names()
             raise SceneError(shortened(path), "", "no such file and no catalog scene of that name"
-                             + suggest.known(path, names, plural="catalog"))
+                             + _catalog_hint(path))
     data = _read(path)
     try:
         text = data.decode("utf-8").removeprefix("\ufeff")  # a byte-order mark (Notepad writes one) is no text
@@ -81,6 +80,15 @@ def load_scene(name_or_path: str | os.PathLike[str]) -> Scene:
         raise SceneError(path, "", f"not UTF-8 text ({err.reason} at byte {err.start})") from None
     label = os.path.basename(path) if path.startswith(_CATALOG) else path
     return load_scene_text(text, label)
+
+
+def _catalog_hint(path: str) -> str:
+    """The catalog, and the catalog name a missing ``path`` likely means: its file name without
+    ``.toml`` (``scenes/3rpr.toml``: the catalog's ``3rpr``), or the name closest to that."""
+    names = catalog_names()
+    stem = os.path.basename(path).removesuffix(".toml") or path
+    match = stem if stem in names else suggest.close_match(stem, names)
+    return f" (catalog: {', '.join(names)})" + (f"; did you mean {match!r}?" if match else "")
 
 
 def _read(path: str) -> bytes:
