@@ -344,11 +344,12 @@ def _sign_definite(poly: sympy.Expr, parameters: Sequence[sympy.Symbol]) -> bool
 
 
 def closed_form(problem: Problem, stationary: list[sympy.Expr], defaults: Values, lo: Number, hi: Number,
-                largest: bool = False, *, domain: Sequence[Span] | None = None,
+                largest: bool = False, *, domain: Sequence[Span] | None = None, lengths: Sequence[sympy.Expr] = (),
                 deadline: Deadline | None = None) -> ClosedForm:
     """The extremum of ``problem`` (parameters symbolic) over ``[lo, hi]`` degrees as a closed form
     (its eliminations keeping to ``deadline``, if any). With one parameter, its regions cover
-    ``domain`` alone (the spans where a length it is stays positive; None: every real value)."""
+    ``domain`` alone (the spans where a length it is stays positive; None: every real value); with
+    more, where it holds says each of ``lengths`` (the scene's, in the parameters) is positive."""
     _check_ends(problem, lo, hi)
     values_factors = value_factors(problem, deadline=deadline)
     meeting = meeting_factors(problem, deadline=deadline)
@@ -386,6 +387,7 @@ def closed_form(problem: Problem, stationary: list[sympy.Expr], defaults: Values
             regions, values = [], []  # no regions in more than one dimension
             own = event_polynomials(problem, moving, values_factors, (lo, hi), here)
             conditions = _sign_conditions(own, defaults)
+            conditions += _positive(lengths, already=[c for c, _ in conditions])
     return ClosedForm(here.value, here.input, here.at, here.input_factor, [c for c, _ in conditions], regions, values,
                       valid_when_text=[text for _, text in conditions])
 
@@ -401,6 +403,12 @@ def _sign_conditions(events: Iterable[sympy.Expr], defaults: Values) -> list[Con
         positive = event if sign > 0 else -event
         conditions.append((positive > 0, f"{positive} > 0") if sign else (sympy.Eq(event, 0), f"{event} = 0"))
     return conditions
+
+
+def _positive(lengths: Iterable[sympy.Expr], *, already: Sequence[sympy.Basic]) -> list[Condition]:
+    """``length > 0`` for each of ``lengths`` not already said: the events' signs at the defaults may
+    not exclude a negative length (a non-Grashof four-bar's rocker ``m`` with its crank ``a``)."""
+    return [(length > 0, f"{length} > 0") for length in dict.fromkeys(lengths) if (length > 0) not in already]
 
 
 def _interval_conditions(name: sympy.Symbol, regions: Sequence[Region], defaults: Values) -> list[Condition]:
