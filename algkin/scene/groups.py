@@ -38,7 +38,7 @@ import sympy
 from ..errors import SceneError
 from ..runtime.frozen import FrozenDict, frozen
 from ..system import symbol
-from .compile import defaults_subs
+from .compile import checked_construction, checked_length, parameter_defaults
 from .constructions import Builder, Indicator, Unbuildable, Unknown
 from .driven import driven_angles
 from .implicit.base import Point
@@ -79,9 +79,17 @@ def compile_groups(scene: Scene) -> Groups:
     A point built by a dyad, slider or meet is an unknown of its own with the construction's two
     equations (its two circles; its line and circle; its two lines): a group of its own, solved
     after the groups its base points belong to. SceneError for a group whose equations are not as
-    many as its unknowns."""
-    values = _defaults(scene)
+    many as its unknowns, or for a value that compiling a chain refuses (a length not positive, a
+    number past what floats can square)."""
+    values, bits = parameter_defaults(scene)
     builder = _builder(scene)
+    variables = {n: i.symbols for n, i in scene.inputs.items()}
+    for name in scene.points:
+        if not isinstance(scene.points[name], Unknown):
+            checked_construction(scene, name, substitution=values, bits=bits, inputs=variables)
+    for name, constraint in scene.constraints.items():
+        if constraint.value is not None:
+            checked_length(scene, f"constraints.{name}", constraint.value, substitution=values, inputs=variables)
     coordinates = _coordinates(scene, values, builder)
     equations = {name: sympy.expand(c.equation(coordinates).xreplace(values))
                  for name, c in scene.constraints.items()}
@@ -109,15 +117,6 @@ def _built_equations(builder: Builder) -> dict[str, tuple[sympy.Expr, sympy.Expr
     """Each point a construction built with two equations -> them (the builder adds them in pairs)."""
     points = [str(u)[:-2] for u in builder.unknowns[::2]]
     return {p: (builder.equations[2 * k], builder.equations[2 * k + 1]) for k, p in enumerate(points)}
-
-
-def _defaults(scene: Scene) -> dict[sympy.Symbol, sympy.Expr]:
-    """Every parameter's symbol -> its exact default (those above it resolved)."""
-    symbols = scene.parameter_symbols()
-    defaults: dict[str, sympy.Expr] = {}
-    for name, default in scene.parameters.items():
-        defaults[name] = default.xreplace(defaults_subs(defaults, symbols))
-    return defaults_subs(defaults, symbols)
 
 
 def _coordinates(scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr], builder: Builder) -> dict[str, Point]:
