@@ -386,7 +386,7 @@ def build_parser() -> argparse.ArgumentParser:
     from .sweep import add_commands
     from .synthesis import add_command as add_synthesis
 
-    add_commands(commands, _command, _json)
+    add_commands(commands, _command, _json, scene_arguments=_scene)
     add_synthesis(commands, _command, _json)
     _budget_options(commands.choices["synthesize"], terms=False)
     for command in commands.choices.values():
