@@ -25,7 +25,7 @@ def add_commands(commands: Subcommands, command: Callable[[Subcommands, str, str
     sweep = command(commands, "sweep", "named analyses over a grid (or random draws) of a scene's dimensions, "
                                        "one Parquet row per design; resumable, on Dask or in this process")
     scene_arguments(sweep)
-    sweep.add_argument("--grid", action="append", default=[], required=True, metavar="NAME=LO:HI:COUNT",
+    sweep.add_argument("--grid", nargs="+", action="extend", default=[], required=True, metavar="NAME=LO:HI:COUNT",
                        help="COUNT exact values of dimension NAME from LO to HI (repeatable: their product); "
                             "with --random, NAME=LO:HI")
     sweep.add_argument("--random", type=_positive, metavar="N", help="N designs drawn in the --grid ranges")
