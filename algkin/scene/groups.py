@@ -93,6 +93,8 @@ def compile_groups(scene: Scene) -> Groups:
     coordinates = _coordinates(scene, values, builder)
     equations = {name: sympy.expand(c.equation(coordinates).xreplace(values))
                  for name, c in scene.constraints.items()}
+    for name, equation in equations.items():
+        _check_rational(scene, name, equation)
     for indicator_point, pair in _built_equations(builder).items():
         equations.update({f"{indicator_point}.{k + 1}": sympy.expand(e.xreplace(values)) for k, e in enumerate(pair)})
     built = [p for p in scene.points if f"{p}.1" in equations]
@@ -106,6 +108,16 @@ def compile_groups(scene: Scene) -> Groups:
     sides = {i.point: dataclasses.replace(i, expr=sympy.expand(sympy.sympify(i.expr).xreplace(values)))
              for i in builder.indicators}
     return Groups(scene, groups, coordinates, inputs, sides)
+
+
+def _check_rational(scene: Scene, name: str, equation: sympy.Expr) -> None:
+    """A constraint's equation is over the rationals, as a chain's are: ``dist(P, Q) = sqrt(2)``
+    squares its root away, ``dist(P, Q)**2 = sqrt(2)`` cannot (a SceneError naming it)."""
+    numbers = [p for p in equation.atoms(sympy.Pow) if p.is_number and not p.is_Rational]
+    if numbers:
+        raise SceneError(scene.source, f"constraints.{name}", f"{numbers[0]} makes its equation irrational: the "
+                         "systems are over the rationals; give a length whose square is rational (dist(P, Q) = "
+                         "sqrt(2)) or a rational squared length (dist(P, Q)**2 = 2)")
 
 
 def _builder(scene: Scene) -> Builder:

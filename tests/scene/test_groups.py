@@ -166,6 +166,10 @@ def test_compile_scene_refuses_them_naming_the_command_that_takes_them():
     (('"dist(A1, P1) = r1"', '"dist(A1, P1) = r1 - 6"'),
      "constraints.leg1: length must be positive, got r1 - 6 = -1 at an end of its input's range"),
     (('at = ["1/2", "3/4"]', 'at = ["1e150", "3/4"]'), "points.P3: 1.00E+150 is outside the magnitudes"),
+    # an internal TypeError ("not a polynomial: sqrt(2)") in derive and solve
+    (('side = "dist(P1, P2) = 5"', 'side = "dist(P1, P2)**2 = sqrt(2)"'), "constraints.side: sqrt(2) makes its equation"),
+    (('side = "dist(P1, P2) = 5"', 'side = "dist(P1, P2) = 1 + sqrt(2)"'), "constraints.side: sqrt(2) makes its equation"),
+    (("r2 = 9", 'r2 = "1 + sqrt(2)"'), "parameters.r2: 1 + sqrt(2) is not rational"),
 ])
 def test_values_the_dyads_refuse_are_refused_in_a_group_too(change, said):
     """A chain's checks of its values, for a scene of points solved together: the SPEC's 3-RPR
@@ -181,3 +185,5 @@ def test_a_group_scene_of_ordinary_values_is_still_taken():
     for name in ("3rpr", "3rpr-six-modes", "stephenson-iii-triad", "eightbar-triad-dyad", "fourbar-instant-centre"):
         assert compile_groups(load_scene(name)).groups
     assert compile_groups(load_scene_text(SPEC_3RPR.replace("r2 = 9", 'r2 = "1e-50"'), "3rpr.toml")).groups
+    root = SPEC_3RPR.replace('side = "dist(P1, P2) = 5"', 'side = "dist(P1, P2) = sqrt(26)"')  # squared: 26
+    assert compile_groups(load_scene_text(root, "3rpr.toml")).groups[0].equations[3].is_polynomial()
