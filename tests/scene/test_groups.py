@@ -187,3 +187,15 @@ def test_a_group_scene_of_ordinary_values_is_still_taken():
     assert compile_groups(load_scene_text(SPEC_3RPR.replace("r2 = 9", 'r2 = "1e-50"'), "3rpr.toml")).groups
     root = SPEC_3RPR.replace('side = "dist(P1, P2) = 5"', 'side = "dist(P1, P2) = sqrt(26)"')  # squared: 26
     assert compile_groups(load_scene_text(root, "3rpr.toml")).groups[0].equations[3].is_polynomial()
+
+
+def test_a_line_through_two_points_at_one_place_says_so():
+    """``on(P, line(A, B))`` with A and B at one place (B's coordinates parameters whose defaults put
+    it on A) holds for every P: it was "the group of no point has more equations than unknowns:
+    1 (c) for 0 ()", which names neither the constraint nor what is wrong."""
+    scene = _scene('A = { fixed = [0, 0] }\nB = { fixed = ["u", "u"] }\nC = { fixed = [3, 0] }\nP = { unknown = true }',
+                   'a = "dist(A, P) = 1"\nb = "dist(C, P) = 3"\nc = "on(P, line(A, B))"', extra="[parameters]\nu = 0")
+    with pytest.raises(SceneError) as caught:
+        compile_groups(scene)
+    said = str(caught.value)
+    assert "constraints.c: line(A, B) has no direction: A and B are at one place" in said and "\n" not in said
