@@ -21,6 +21,7 @@ from ..runtime import suggest
 from ..errors import SceneError, UsageError
 from ..runtime.frozen import FrozenDict, frozen
 from ..system import System, symbol
+from ..system.between import simplest_between
 from ..system.convert import rational_polynomial, univariate
 from ..system.roots import real_roots
 from .constructions import Builder, Construction, Crank, Dyad, Indicator, Unbuildable
@@ -435,7 +436,7 @@ def spans_lengths_positive(scene: Scene, name: str) -> tuple[Span, ...] | None:
                    for cut in _real_roots_of(part, variable)})
     bounds: list[float | None] = [None, *cuts, None]
     return tuple((lo, hi) for lo, hi in zip(bounds, bounds[1:])
-                 if all(length.xreplace({variable: _between(lo, hi)}) > 0 for length in lengths))
+                 if all(length.xreplace({variable: sympy.Rational(simplest_between(lo, hi))}) > 0 for length in lengths))
 
 
 def _real_roots_of(poly: sympy.Expr, variable: sympy.Symbol) -> list[float]:
@@ -443,15 +444,6 @@ def _real_roots_of(poly: sympy.Expr, variable: sympy.Symbol) -> list[float]:
         return []
     exact = [(r.exact(), r.ball) for r in real_roots(univariate(poly, variable), bits=128)]
     return [float(ball.mid()) if rational is None else float(rational) for rational, ball in exact]
-
-
-def _between(lo: float | None, hi: float | None) -> sympy.Rational:
-    """A rational strictly inside the interval (lo, hi), an end None for infinity."""
-    if lo is None:
-        return sympy.Rational(0) if hi is None else sympy.Rational(repr(hi)) - 1
-    if hi is None:
-        return sympy.Rational(repr(lo)) + 1
-    return (sympy.Rational(repr(lo)) + sympy.Rational(repr(hi))) / 2
 
 
 def _substituted(construction: Construction, substitution: Substitution) -> Construction:

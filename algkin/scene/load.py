@@ -32,7 +32,7 @@ from ..errors import SceneError, UsageError
 from .constraints import Constraint, parse_constraint
 from .constructions import CONSTRUCTIONS, QUARTER_TURNS, Construction, Crank, Dyad, Fixed, Frame, Meet, Mode, Slider, \
     Unknown
-from .expr import exact_number, irrational, parse
+from .expr import MAX_VALUE_BITS, bits_bound, exact_number, irrational, parse
 from .model import DrivenInput, Input, Output, Scene, length_range_problem, range_problem
 from .names import check_names
 
@@ -71,9 +71,8 @@ def load_scene(name_or_path: str | os.PathLike[str]) -> Scene:
         if path in catalog_names():
             path = catalog_path(path)
         else:
-            names = catalog_names()
             raise SceneError(shortened(path), "", "no such file and no catalog scene of that name"
-                             + suggest.known(path, names, plural="catalog"))
+                             + _catalog_hint(path))
     data = _read(path)
     try:
         text = data.decode("utf-8").removeprefix("\ufeff")  # a byte-order mark (Notepad writes one) is no text
@@ -81,6 +80,29 @@ def load_scene(name_or_path: str | os.PathLike[str]) -> Scene:
         raise SceneError(path, "", f"not UTF-8 text ({err.reason} at byte {err.start})") from None
     label = os.path.basename(path) if path.startswith(_CATALOG) else path
     return load_scene_text(text, label)
+
+
+def _value_of(default: sympy.Expr, defaults: Mapping[str, sympy.Expr]) -> sympy.Rational | None:
+    """A default's exact value: itself if a number; in other parameters, where each of theirs is a
+    number and the value's bits stay within ``MAX_VALUE_BITS`` (chained powers, a default in a
+    default in..., may cost gigabytes: those are left to the bits checks of compiling); else None."""
+    used = {symbol: defaults[symbol.name] for symbol in default.free_symbols if isinstance(symbol, sympy.Symbol)}
+    if not all(value.is_Rational for value in used.values()):
+        return None
+    bits = {symbol.name: bits_bound(value, {}) for symbol, value in used.items()}
+    if bits_bound(default, bits) > MAX_VALUE_BITS:
+        return None
+    value = default.xreplace(used)
+    return value if value.is_Rational else None  # 1/0 or an irrational is said where it is checked
+
+
+def _catalog_hint(path: str) -> str:
+    """The catalog, and the catalog name a missing ``path`` likely means: its file name without
+    ``.toml`` (``scenes/3rpr.toml``: the catalog's ``3rpr``), or the name closest to that."""
+    names = catalog_names()
+    stem = os.path.basename(path).removesuffix(".toml") or path
+    match = stem if stem in names else suggest.close_match(stem, names)
+    return f" (catalog: {', '.join(names)})" + (f"; did you mean {match!r}?" if match else "")
 
 
 def _read(path: str) -> bytes:
@@ -221,16 +243,18 @@ class _Loader:
                 self.fail(element, problem)
             self.names[name] = sympy.Symbol(name, real=True)
             if name in ranges:
-                self.check_default_in_range(defaults[name], ranges[name], element)
+                self.check_default_in_range(defaults[name], defaults, ranges[name], element)
         return defaults, ranges
 
-    def check_default_in_range(self, default: sympy.Expr, bounds: tuple[sympy.Rational, sympy.Rational],
-                               element: str) -> None:
-        """A declared range holds its parameter's default, a number (a page's slider starts there); one
-        in other parameters is left to them (putting them in may cost gigabytes: the bits checks come later)."""
+    def check_default_in_range(self, default: sympy.Expr, defaults: Mapping[str, sympy.Expr],
+                               bounds: tuple[sympy.Rational, sympy.Rational], element: str) -> None:
+        """A declared range holds its parameter's default (a page's slider starts there): a number, or
+        one in other parameters whose ``defaults`` are numbers, where its value is cheap (``_value_of``)."""
         lo, hi = bounds
-        if default.is_Rational and not lo <= default <= hi:
-            self.fail(f"{element}.default", f"{default} is outside its range [{lo}, {hi}]")
+        value = _value_of(default, defaults)
+        if value is not None and not lo <= value <= hi:
+            said = f"{default} = {value}" if value != default else f"{value}"
+            self.fail(f"{element}.default", f"{said} is outside its range [{lo}, {hi}]")
 
     def ranged(self, spec: Table, element: str) -> tuple[object, tuple[sympy.Rational, sympy.Rational]]:
         """``{ default = d, range = [lo, hi] }``: the default's text and (lo, hi), two exact numbers."""

@@ -21,7 +21,6 @@ from __future__ import annotations
 import itertools
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import Any, Optional, TypeAlias, TypedDict
 
 import attrs
@@ -34,6 +33,7 @@ from ...runtime.budget import Deadline
 from ...runtime.frozen import FrozenDict
 from ...scene.compile import Span
 from ...system.angles import half_angle_degree
+from ...system.between import simplest_between
 from ...system.convert import univariate
 from ...system.roots import real_roots
 from ..frozen import frozen_rows, thawed
@@ -344,11 +344,12 @@ def _sign_definite(poly: sympy.Expr, parameters: Sequence[sympy.Symbol]) -> bool
 
 
 def closed_form(problem: Problem, stationary: list[sympy.Expr], defaults: Values, lo: Number, hi: Number,
-                largest: bool = False, *, domain: Sequence[Span] | None = None,
+                largest: bool = False, *, domain: Sequence[Span] | None = None, lengths: Sequence[sympy.Expr] = (),
                 deadline: Deadline | None = None) -> ClosedForm:
     """The extremum of ``problem`` (parameters symbolic) over ``[lo, hi]`` degrees as a closed form
     (its eliminations keeping to ``deadline``, if any). With one parameter, its regions cover
-    ``domain`` alone (the spans where a length it is stays positive; None: every real value)."""
+    ``domain`` alone (the spans where a length it is stays positive; None: every real value); with
+    more, where it holds says each of ``lengths`` (the scene's, in the parameters) is positive."""
     _check_ends(problem, lo, hi)
     values_factors = value_factors(problem, deadline=deadline)
     meeting = meeting_factors(problem, deadline=deadline)
@@ -386,6 +387,7 @@ def closed_form(problem: Problem, stationary: list[sympy.Expr], defaults: Values
             regions, values = [], []  # no regions in more than one dimension
             own = event_polynomials(problem, moving, values_factors, (lo, hi), here)
             conditions = _sign_conditions(own, defaults)
+            conditions += _positive(lengths, already=[c for c, _ in conditions])
     return ClosedForm(here.value, here.input, here.at, here.input_factor, [c for c, _ in conditions], regions, values,
                       valid_when_text=[text for _, text in conditions])
 
@@ -401,6 +403,12 @@ def _sign_conditions(events: Iterable[sympy.Expr], defaults: Values) -> list[Con
         positive = event if sign > 0 else -event
         conditions.append((positive > 0, f"{positive} > 0") if sign else (sympy.Eq(event, 0), f"{event} = 0"))
     return conditions
+
+
+def _positive(lengths: Iterable[sympy.Expr], *, already: Sequence[sympy.Basic]) -> list[Condition]:
+    """``length > 0`` for each of ``lengths`` not already said: the events' signs at the defaults may
+    not exclude a negative length (a non-Grashof four-bar's rocker ``m`` with its crank ``a``)."""
+    return [(length > 0, f"{length} > 0") for length in dict.fromkeys(lengths) if (length > 0) not in already]
 
 
 def _interval_conditions(name: sympy.Symbol, regions: Sequence[Region], defaults: Values) -> list[Condition]:
@@ -441,7 +449,7 @@ def _regions(problem: Problem, events: Sequence[sympy.Expr], extremum_at: Callab
     regions: list[Region] = []
     values: list[sympy.Expr | None] = []
     for lo, hi in intervals:
-        sample = defaults[name] if len(intervals) == 1 else _inside(lo, hi)
+        sample = defaults[name] if len(intervals) == 1 else sympy.Rational(simplest_between(lo, hi))
         region, value = _region(lo, hi, sample, extremum_at({name: sample}))
         if regions and regions[-1]["to"] == lo and _same(regions[-1], region):
             regions[-1]["to"] = hi
@@ -477,14 +485,3 @@ def _region(lo: float | None, hi: float | None, sample: sympy.Rational, found: F
     region["sample_input_deg"], region["sample_value"] = float(best.input_deg), float(best.value)
     return region, described.value
 
-
-def _inside(lo: float | None, hi: float | None) -> sympy.Rational:
-    """A simple rational strictly between two cuts (either may be None for infinity); not 0,
-    where a dimension degenerates (a crank of length 0 moves nothing), when the interval has more."""
-    if lo is None and hi is not None:
-        return sympy.Rational(Fraction(hi - max(1.0, abs(hi))).limit_denominator(1000))
-    if hi is None and lo is not None:
-        return sympy.Rational(Fraction(lo + max(1.0, abs(lo))).limit_denominator(1000))
-    assert lo is not None and hi is not None  # no cut at all: the defaults are the sample
-    middle = sympy.Rational(Fraction((lo + hi) / 2).limit_denominator(10**6))
-    return middle or sympy.Rational(Fraction((lo + 3 * hi) / 4).limit_denominator(10**6))

@@ -57,6 +57,17 @@ def test_a_mistyped_name_gets_its_close_match(capsys, args, words):
         assert word in err, err
 
 
+@pytest.mark.parametrize("command", [["show"], ["derive"], ["curve", "--point", "P"], ["extremum", "--of", "P.x"]],
+                         ids=lambda command: command[0])
+@pytest.mark.parametrize(("file", "name"), [("arm-string.toml", "arm-string"), ("3rpr.toml", "3rpr"),
+                                            ("fourbr.toml", "fourbar")])
+def test_a_missing_file_named_like_a_catalog_scene_suggests_the_scene(capsys, tmp_path, command, file, name):
+    # only the whole path was matched against the names: a directory before it, or a short name
+    # ('3rpr.toml' is too unlike '3rpr'), left the catalog listed with nothing suggested
+    err = one_error(capsys, command[0], str(tmp_path / file), *command[1:])
+    assert "no such file" in err and err.rstrip().endswith(f"did you mean {name!r}?"), err
+
+
 def test_a_name_like_nothing_gets_no_suggestion(capsys):
     err = one_error(capsys, "derive", "arm-string", "--param", "zzzz")
     assert "did you mean" not in err and "parameters: a, b, r, g" in err
