@@ -147,7 +147,8 @@ def toml_syntax_error(text: str, err: tomllib.TOMLDecodeError) -> str:
     if stopped is None:
         return said
     row, column = int(stopped.group(1)), int(stopped.group(2))
-    line = text.split("\n")[row - 1] if row <= text.count("\n") + 1 else ""
+    lines = text.split("\n")
+    line = lines[row - 1] if row <= len(lines) else ""
     before, after = _NUMBER_BEFORE.search(line[:column - 1]), _SLASH_NUMBER.match(line, column - 1)
     if before is None or after is None:
         return said
