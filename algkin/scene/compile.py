@@ -203,6 +203,40 @@ def defaults_subs(defaults: Mapping[str, sympy.Expr],
     return {symbols[n]: v for n, v in defaults.items()}
 
 
+def parameter_defaults(scene: Scene) -> tuple[dict[sympy.Symbol, sympy.Expr], dict[str, int]]:
+    """Every parameter's symbol -> its exact default, each checked as ``compile_scene`` checks it
+    (finite, rational, within ``MAGNITUDES``, of a bounded size: a SceneError naming it); and the
+    bound on each one's bits, for ``checked_construction``."""
+    _, substitution, bits = _parameter_values(scene, ())
+    return substitution, bits
+
+
+def checked_construction(scene: Scene, name: str, *, substitution: Substitution, bits: Mapping[str, int],
+                         inputs: Mapping[str, tuple[sympy.Symbol, ...]]) -> Construction:
+    """Point ``name``'s construction with ``substitution`` (parameters -> values) made, its values
+    checked: of a bounded size, finite and within ``MAGNITUDES``, lengths positive (at both ends of
+    the range of a length input in ``inputs``), a direction not zero, a phase on the unit circle;
+    else a SceneError naming the point."""
+    _check_bits(scene, name, scene.points[name], bits)
+    construction = _substituted(scene.points[name], substitution)
+    for value in vars(construction).values():
+        for item in value if isinstance(value, tuple) else (value,):
+            _check_finite(scene, f"points.{name}", item)
+    _check_lengths(scene, f"points.{name}", _lengths(construction), inputs)
+    _check_direction(scene, name, construction)
+    _check_phase(scene, name, construction)
+    return construction
+
+
+def checked_length(scene: Scene, element: str, length: sympy.Expr, *, substitution: Substitution,
+                   inputs: Mapping[str, tuple[sympy.Symbol, ...]]) -> None:
+    """A length that is not a point's (a constraint's), checked as a construction's lengths are by
+    ``checked_construction``, ``substitution`` made: a SceneError naming ``element``."""
+    value = length.xreplace(substitution)
+    _check_finite(scene, element, value)
+    _check_lengths(scene, element, (value,), inputs)
+
+
 def refuse_solved_together(scene: Scene) -> None:
     """UsageError for a scene with points solved together, saying the command that takes it (a
     SceneError first if its groups are bad: bad input whatever the command)."""
@@ -237,20 +271,13 @@ def compile_scene(scene: SceneLike, outputs: Sequence[str] | None = None, params
     everywhere = {symbol(n): defaults[n] for n in symbolic}
     never: dict[str, str] = {}
     for name in points:
-        _check_bits(scene, name, scene.points[name], bits)
-        construction = _substituted(scene.points[name], substitution)
+        construction = checked_construction(scene, name, substitution=substitution, bits=bits, inputs=inputs)
         if isinstance(construction, Dyad):
             bases = [tuple(sympy.expand(v.xreplace(everywhere)) for v in coords[b]) for b in construction.bases]
             _check_bases(scene, name, construction, bases)
             why = _never_meets(construction, bases, [length.xreplace(everywhere) for length in construction.lengths])
             if why:
                 never[name] = why
-        for value in vars(construction).values():
-            for item in value if isinstance(value, tuple) else (value,):
-                _check_finite(scene, f"points.{name}", item)
-        _check_lengths(scene, name, construction, inputs)
-        _check_direction(scene, name, construction)
-        _check_phase(scene, name, construction)
         made = len(builder.equations)
         try:
             x, y = construction.build(name, coords, builder)
@@ -531,17 +558,17 @@ def _lengths(construction: Construction) -> tuple[sympy.Expr, ...]:
     return tuple(length for length in lengths if isinstance(length, sympy.Expr))
 
 
-def _check_lengths(scene: Scene, name: str, construction: Construction,
+def _check_lengths(scene: Scene, element: str, lengths: Sequence[sympy.Expr],
                    inputs: Mapping[str, tuple[sympy.Symbol, ...]]) -> None:
     """Each length positive, at both ends of a length input's range where it moves with one."""
     moving = [(variables[0], scene.inputs[n]) for n, variables in inputs.items() if len(variables) == 1]
-    for length in _lengths(construction):
+    for length in lengths:
         ends = [length]
         for variable, given in moving:
             ends = [e.xreplace({variable: end}) for e in ends for end in (given.lo, given.hi)]
         for end in ends:
             if _not_positive(end):
-                raise SceneError(scene.source, f"points.{name}", f"length must be positive, got {length}"
+                raise SceneError(scene.source, element, f"length must be positive, got {length}"
                                  + (f" = {end} at an end of its input's range" if end != length else ""))
 
 

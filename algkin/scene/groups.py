@@ -38,7 +38,8 @@ import sympy
 from ..errors import SceneError
 from ..runtime.frozen import FrozenDict, frozen
 from ..system import symbol
-from .compile import defaults_subs
+from .compile import checked_construction, checked_length, parameter_defaults
+from .constraints import Constraint
 from .constructions import Builder, Indicator, Unbuildable, Unknown
 from .driven import driven_angles
 from .implicit.base import Point
@@ -79,12 +80,14 @@ def compile_groups(scene: Scene) -> Groups:
     A point built by a dyad, slider or meet is an unknown of its own with the construction's two
     equations (its two circles; its line and circle; its two lines): a group of its own, solved
     after the groups its base points belong to. SceneError for a group whose equations are not as
-    many as its unknowns."""
-    values = _defaults(scene)
+    many as its unknowns, or for a value that compiling a chain refuses (a length not positive, a
+    number past what floats can square)."""
+    values = _checked_values(scene)
     builder = _builder(scene)
     coordinates = _coordinates(scene, values, builder)
     equations = {name: sympy.expand(c.equation(coordinates).xreplace(values))
                  for name, c in scene.constraints.items()}
+    _check_equations(scene, equations, coordinates)
     for indicator_point, pair in _built_equations(builder).items():
         equations.update({f"{indicator_point}.{k + 1}": sympy.expand(e.xreplace(values)) for k, e in enumerate(pair)})
     built = [p for p in scene.points if f"{p}.1" in equations]
@@ -100,6 +103,47 @@ def compile_groups(scene: Scene) -> Groups:
     return Groups(scene, groups, coordinates, inputs, sides)
 
 
+def _checked_values(scene: Scene) -> dict[sympy.Symbol, sympy.Expr]:
+    """Every parameter's symbol -> its exact default, after the checks a chain's compiling makes of
+    the values of the parameters, of the constructions and of the constraints' lengths."""
+    values, bits = parameter_defaults(scene)
+    variables = {n: i.symbols for n, i in scene.inputs.items()}
+    for name in scene.points:
+        if not isinstance(scene.points[name], Unknown):
+            checked_construction(scene, name, substitution=values, bits=bits, inputs=variables)
+    for name, constraint in scene.constraints.items():
+        if constraint.value is not None:
+            checked_length(scene, f"constraints.{name}", constraint.value, substitution=values, inputs=variables)
+    return values
+
+
+def _check_equations(scene: Scene, equations: Mapping[str, sympy.Expr], coordinates: Mapping[str, Point]) -> None:
+    """Each constraint's equation over the rationals and not 0 = 0 (a SceneError naming it)."""
+    for name, equation in equations.items():
+        _check_rational(scene, name, equation)
+        if equation == 0:
+            raise SceneError(scene.source, f"constraints.{name}", _why_always(scene.constraints[name], coordinates))
+
+
+def _check_rational(scene: Scene, name: str, equation: sympy.Expr) -> None:
+    """A constraint's equation is over the rationals, as a chain's are: ``dist(P, Q) = sqrt(2)``
+    squares its root away, ``dist(P, Q)**2 = sqrt(2)`` cannot (a SceneError naming it)."""
+    numbers = [p for p in equation.atoms(sympy.Pow) if p.is_number and not p.is_Rational]
+    if numbers:
+        raise SceneError(scene.source, f"constraints.{name}", f"{numbers[0]} makes its equation irrational: the "
+                         "systems are over the rationals; give a length whose square is rational (dist(P, Q) = "
+                         "sqrt(2)) or a rational squared length (dist(P, Q)**2 = 2)")
+
+
+def _why_always(constraint: Constraint, coordinates: Mapping[str, Point]) -> str:
+    """Why a constraint that is 0 = 0 with the parameters' defaults holds nothing."""
+    if constraint.kind == "on":
+        _, a, b = constraint.points
+        if coordinates[a] == coordinates[b]:
+            return f"line({a}, {b}) has no direction: {a} and {b} are at one place with the parameters' defaults"
+    return f"{constraint.text} holds wherever its points are (0 = 0 with the parameters' defaults)"
+
+
 def _builder(scene: Scene) -> Builder:
     angles = {n: i.symbols for n, i in scene.inputs.items() if i.is_angle}
     return Builder(angles, driven_angles(scene, angles))
@@ -109,15 +153,6 @@ def _built_equations(builder: Builder) -> dict[str, tuple[sympy.Expr, sympy.Expr
     """Each point a construction built with two equations -> them (the builder adds them in pairs)."""
     points = [str(u)[:-2] for u in builder.unknowns[::2]]
     return {p: (builder.equations[2 * k], builder.equations[2 * k + 1]) for k, p in enumerate(points)}
-
-
-def _defaults(scene: Scene) -> dict[sympy.Symbol, sympy.Expr]:
-    """Every parameter's symbol -> its exact default (those above it resolved)."""
-    symbols = scene.parameter_symbols()
-    defaults: dict[str, sympy.Expr] = {}
-    for name, default in scene.parameters.items():
-        defaults[name] = default.xreplace(defaults_subs(defaults, symbols))
-    return defaults_subs(defaults, symbols)
 
 
 def _coordinates(scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr], builder: Builder) -> dict[str, Point]:

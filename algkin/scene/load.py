@@ -36,7 +36,7 @@ from .expr import MAX_VALUE_BITS, bits_bound, exact_number, irrational, parse
 from .model import DrivenInput, Input, Output, Scene, length_range_problem, range_problem
 from .names import check_names
 
-__all__ = ["load_scene", "load_scene_text", "as_scene", "catalog_names", "MAX_SCENE_BYTES", "SceneLike",
+__all__ = ["load_scene", "load_scene_text", "toml_syntax_error", "as_scene", "catalog_names", "MAX_SCENE_BYTES", "SceneLike",
            "Values"]
 
 MAX_SCENE_BYTES = 256 * 1024
@@ -134,13 +134,34 @@ def load_scene_text(text: str, source: str = "<scene>") -> Scene:
 SCENE_TEXTS: BoundedCache[Scene] = BoundedCache(64, name="scenes read")
 
 
+_STOPPED_AT = re.compile(r"\(at line (\d+), column (\d+)\)$")
+_NUMBER_BEFORE = re.compile(r"(\d+(?:\.\d+)?)\s*$")
+_SLASH_NUMBER = re.compile(r"/\s*(\d+(?:\.\d+)?)")
+
+
+def toml_syntax_error(text: str, err: tomllib.TOMLDecodeError) -> str:
+    """tomllib's message; where it stopped at the slash of a fraction written bare (``[1/2, 2]``,
+    as the expressions inside strings write it), how a TOML file takes one: as a string."""
+    said = f"TOML syntax error: {err}"
+    stopped = _STOPPED_AT.search(str(err))
+    if stopped is None:
+        return said
+    row, column = int(stopped.group(1)), int(stopped.group(2))
+    lines = text.split("\n")
+    line = lines[row - 1] if row <= len(lines) else ""
+    before, after = _NUMBER_BEFORE.search(line[:column - 1]), _SLASH_NUMBER.match(line, column - 1)
+    if before is None or after is None:
+        return said
+    return f'{said}; TOML has no fractions: write the fraction as a string: "{before.group(1)}/{after.group(1)}"'
+
+
 def _parse(text: str, source: str) -> Scene:
     if len(text.encode("utf-8")) > MAX_SCENE_BYTES:
         raise SceneError(source, "", f"text larger than {MAX_SCENE_BYTES} bytes")
     try:
         data = tomllib.loads(text, parse_float=_FloatText)
     except tomllib.TOMLDecodeError as err:
-        raise SceneError(source, "", f"TOML syntax error: {err}") from None
+        raise SceneError(source, "", toml_syntax_error(text, err)) from None
     except ValueError as err:  # tomllib's own int(): more digits than Python converts
         raise SceneError(source, "", f"TOML value not readable: {str(err).split(';')[0]}") from None
     except RecursionError:

@@ -61,6 +61,10 @@ def check_symbol_name(source: str, element: str, name: str, generated: Mapping[s
     """Refuse a user name that would stand for a generated variable or read back wrongly."""
     if name in generated:
         raise SceneError(source, element, f"the name {name!r} is taken by {generated[name]}")
+    _refuse_misread(source, element, name)
+
+
+def _refuse_misread(source: str, element: str, name: str) -> None:
     if misread(name):
         what = "a Python keyword" if keyword.iskeyword(name) else f"sympy's {name}"
         raise SceneError(source, element, f"the name {name!r} would read back as {what}, not as a symbol, "
@@ -97,6 +101,9 @@ def check_output_unknowns(source: str, element: str, unknowns: tuple[str, ...], 
 def check_names(scene: Scene) -> dict[str, str]:
     """Raise SceneError if any scene name collides with a generated one (see the module doc)."""
     generated = generated_names(scene)
+    for name, given in scene.inputs.items():
+        if not given.is_angle:  # a length input is a variable of its own name
+            _refuse_misread(scene.source, f"inputs.{name}", name)
     for name in scene.parameters:
         check_symbol_name(scene.source, f"parameters.{name}", name, generated)
     taken: dict[str, str] = {}

@@ -44,7 +44,7 @@ from ..errors import SceneError
 from ..runtime import suggest
 from ..runtime.terminal import shortened
 from ..scene.expr import exact_number
-from ..scene.load import MAX_SCENE_BYTES
+from ..scene.load import MAX_SCENE_BYTES, toml_syntax_error
 from .data import Angle, AnglePair, Point, Pose
 from .fourbar import NAME_CHARS, safe_name
 
@@ -114,7 +114,7 @@ def read_task_text(text: str, source: str = "<synthesis>") -> Task:
     try:
         data = tomllib.loads(text, parse_float=str)  # a float kept as its text: 0.1 stays 1/10
     except tomllib.TOMLDecodeError as err:
-        raise SceneError(source, "", f"TOML syntax error: {err}") from None
+        raise SceneError(source, "", toml_syntax_error(text, err)) from None
     except (ValueError, RecursionError) as err:
         raise SceneError(source, "", f"TOML value not readable: {str(err).split(';')[0]}") from None
     return _Reader(source).task(data)

@@ -5,7 +5,7 @@ import pytest
 import sympy
 
 from algkin.errors import SceneError, UsageError
-from algkin.scene import compile_scene, dump_scene, load_scene_text
+from algkin.scene import compile_scene, dump_scene, load_scene, load_scene_text
 from algkin.scene.groups import compile_groups
 
 # The SPEC's example, as written there.
@@ -155,3 +155,47 @@ def test_compile_scene_refuses_them_naming_the_command_that_takes_them():
             "sweep and accuracy take it; extremum and singular do not yet")
     with pytest.raises(UsageError, match=said):
         compile_scene(load_scene_text(SPEC_3RPR, "3rpr.toml"))
+
+
+@pytest.mark.parametrize(("change", "said"), [
+    (("r2 = 9", 'r2 = "1e200"'), "parameters.r2: 1.00E+200 is outside the magnitudes 1e-100 to 1e100"),
+    (("r2 = 9", 'r2 = "1e-200"'), "parameters.r2: 1.00E-200 is outside the magnitudes"),
+    (("r2 = 9", "r2 = -9"), "constraints.leg2: length must be positive, got -9"),
+    (('side = "dist(P1, P2) = 5"', 'side = "dist(P1, P2)**2 = r3 - 8"'),
+     "constraints.side: length must be positive, got 0"),
+    (('"dist(A1, P1) = r1"', '"dist(A1, P1) = r1 - 6"'),
+     "constraints.leg1: length must be positive, got r1 - 6 = -1 at an end of its input's range"),
+    (('at = ["1/2", "3/4"]', 'at = ["1e150", "3/4"]'), "points.P3: 1.00E+150 is outside the magnitudes"),
+    # an internal TypeError ("not a polynomial: sqrt(2)") in derive and solve
+    (('side = "dist(P1, P2) = 5"', 'side = "dist(P1, P2)**2 = sqrt(2)"'), "constraints.side: sqrt(2) makes its equation"),
+    (('side = "dist(P1, P2) = 5"', 'side = "dist(P1, P2) = 1 + sqrt(2)"'), "constraints.side: sqrt(2) makes its equation"),
+    (("r2 = 9", 'r2 = "1 + sqrt(2)"'), "parameters.r2: 1 + sqrt(2) is not rational"),
+])
+def test_values_the_dyads_refuse_are_refused_in_a_group_too(change, said):
+    """A chain's checks of its values, for a scene of points solved together: the SPEC's 3-RPR
+    with one value made bad. ``derive`` failed with an internal OverflowError on a leg of 1e200, and
+    a leg of -9 was taken as 9 (squared); a literal -9 was already refused."""
+    with pytest.raises(SceneError) as caught:
+        compile_groups(load_scene_text(SPEC_3RPR.replace(*change), "3rpr.toml"))
+    assert said in str(caught.value) and "\n" not in str(caught.value)
+
+
+def test_a_group_scene_of_ordinary_values_is_still_taken():
+    """The checks refuse by value, not by form: the catalog's groups and the SPEC's example compile."""
+    for name in ("3rpr", "3rpr-six-modes", "stephenson-iii-triad", "eightbar-triad-dyad", "fourbar-instant-centre"):
+        assert compile_groups(load_scene(name)).groups
+    assert compile_groups(load_scene_text(SPEC_3RPR.replace("r2 = 9", 'r2 = "1e-50"'), "3rpr.toml")).groups
+    root = SPEC_3RPR.replace('side = "dist(P1, P2) = 5"', 'side = "dist(P1, P2) = sqrt(26)"')  # squared: 26
+    assert compile_groups(load_scene_text(root, "3rpr.toml")).groups[0].equations[3].is_polynomial()
+
+
+def test_a_line_through_two_points_at_one_place_says_so():
+    """``on(P, line(A, B))`` with A and B at one place (B's coordinates parameters whose defaults put
+    it on A) holds for every P: it was "the group of no point has more equations than unknowns:
+    1 (c) for 0 ()", which names neither the constraint nor what is wrong."""
+    scene = _scene('A = { fixed = [0, 0] }\nB = { fixed = ["u", "u"] }\nC = { fixed = [3, 0] }\nP = { unknown = true }',
+                   'a = "dist(A, P) = 1"\nb = "dist(C, P) = 3"\nc = "on(P, line(A, B))"', extra="[parameters]\nu = 0")
+    with pytest.raises(SceneError) as caught:
+        compile_groups(scene)
+    said = str(caught.value)
+    assert "constraints.c: line(A, B) has no direction: A and B are at one place" in said and "\n" not in said

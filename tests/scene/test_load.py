@@ -26,3 +26,24 @@ def test_a_phase_of_309_digits_is_refused_in_a_short_line():
             as raised:
         load_scene_text(text, "s.toml")
     assert len(str(raised.value)) < 300
+
+
+@pytest.mark.parametrize("line, fraction", [
+    ('a = { default = 1, range = [1/2, 2] }', '"1/2"'),  # SPEC section 2's own example, as written there
+    ('a = 3 / 4', '"3/4"'),
+    ('a = { default = 1, range = ["1/2", 2.5/3] }', '"2.5/3"'),
+])
+def test_a_fraction_written_bare_says_to_write_it_as_a_string(line, fraction):
+    """TOML has no fractions: tomllib said only "Unclosed array (at line 2, column 30)"."""
+    text = f"[parameters]\n{line}\n[points]\nO = {{ fixed = [0, 0] }}\n"
+    with pytest.raises(SceneError) as caught:
+        load_scene_text(text, "s.toml")
+    said = str(caught.value)
+    assert said.startswith("s.toml: TOML syntax error: ") and f"write the fraction as a string: {fraction}" in said
+    assert "\n" not in said
+
+
+def test_other_syntax_errors_are_said_as_before():
+    with pytest.raises(SceneError) as caught:
+        load_scene_text("[parameters]\na = [1, 2\n", "s.toml")
+    assert "fraction" not in str(caught.value)

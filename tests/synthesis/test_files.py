@@ -56,6 +56,7 @@ def test_function_and_path_files():
     ('kind = "path"\npivots = { crank = [0, 0] }\npoints = []', "pivots", "rocker"),
     ('kind = "path"\npivots = { crank = [0, 0, 1], rocker = [1, 0] }\npoints = []', "pivots.crank", "[x, y]"),
     ('kind = ', "", "TOML syntax error"),
+    ('kind = "motion"\n[[poses]]\nx = 1/2', "", 'write the fraction as a string: "1/2"'),
     # letters only, but past the 80 characters a file name takes: the message said "expected letters"
     ('kind = "motion"\nname = "' + "a" * 81 + '"', "name", "at most 80"),
 ])

@@ -108,7 +108,7 @@ def _group_toggles(prepared: GroupScene, index: int, solution: GroupSolution) ->
     """The group's toggles: the real roots in range of its discriminant's factors, each certified."""
     assert prepared.input is not None
     angle = prepared.input.is_angle
-    param = "t_" if angle else prepared.variables[0]
+    param = "t" if angle else prepared.variables[0]  # t = tan(theta/2), as the docs name it
     names = (solution.variable, param)
     eliminant = _in_input(solution.eliminant.to_flint(), prepared.variables, names)
     discriminant = eliminant.discriminant(solution.variable)
@@ -148,7 +148,7 @@ def _later_toggles(prepared: GroupScene, index: int) -> list[GroupToggle]:
     group = groups[index]
     jacobian = sympy.Matrix([[sympy.diff(e, symbol(u)) for u in group.unknowns] for e in group.equations]).det()
     equations = [e for k in chain for e in groups[k].equations] + [sympy.expand(jacobian)]
-    param = "t_" if angle else prepared.variables[0]
+    param = "t" if angle else prepared.variables[0]  # t = tan(theta/2), as the docs name it
     if angle:
         c, s, t = (symbol(v) for v in (*prepared.variables, param))
         half = {c: (1 - t**2) / (1 + t**2), s: 2 * t / (1 + t**2)}

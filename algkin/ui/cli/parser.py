@@ -137,7 +137,7 @@ class _Once(argparse.Action):
 
     def __call__(self, parser: argparse.ArgumentParser, namespace: argparse.Namespace,
                  values: str | Sequence[Any] | None, option_string: str | None = None) -> None:
-        given = list(getattr(namespace, self.dest, None) or []) if self.nargs is None else []
+        given = list(getattr(namespace, self.dest, None) or [])  # a repetition adds to the names before it
         for value in values if isinstance(values, list) else [values]:
             if value in given:
                 raise UsageError(option_string or self.dest, value, "given twice")
@@ -197,7 +197,7 @@ def _common(parser: argparse.ArgumentParser, method: bool = True) -> None:
         parser.add_argument("--method", default=None,
                             help="elimination method: linear (the default), resultant, groebner")
         parser.add_argument("--backend", default="flint", help="polynomial backend: flint, sympy")
-        parser.add_argument("--param", action=_Once, default=[], metavar="NAME",
+        parser.add_argument("--param", nargs="+", action=_Once, default=[], metavar="NAME",
                             help="keep this dimension symbolic (repeatable); the others take their defaults")
         parser.add_argument("--samples", type=int, default=40,
                             help="numeric samples the closed forms are checked on (0 skips the check)")
@@ -264,7 +264,7 @@ def build_parser() -> argparse.ArgumentParser:
     _common(show, method=False)
     show.add_argument("--outputs", nargs="+", action=_Once, metavar="OUTPUT",
                       help="outputs (names, points, dist(P, Q), P.x, angle(P, Q), angle(P, Q, R)); default: the scene's")
-    show.add_argument("--param", action=_Once, default=[], metavar="NAME",
+    show.add_argument("--param", nargs="+", action=_Once, default=[], metavar="NAME",
                       help="keep this dimension symbolic (repeatable)")
     _budget_options(show, terms=False)
     derive = _command(commands, "derive", "eliminants, closed-form branches, verification")
@@ -289,7 +289,7 @@ def build_parser() -> argparse.ArgumentParser:
     _scene(extremum)
     extremum.add_argument("--of", required=True, type=str.strip, help="a scalar output: distance, coordinate or angle (in degrees)")
     extremum.add_argument("--range", metavar="LO:HI", help="lo:hi in the input's unit; default: its declared range")
-    extremum.add_argument("--param", action=_Once, default=[], metavar="NAME",
+    extremum.add_argument("--param", nargs="+", action=_Once, default=[], metavar="NAME",
                           help="keep this dimension symbolic: the minimum as a closed form in it")
     _json(extremum)
     _latex(extremum)
@@ -328,7 +328,7 @@ def build_parser() -> argparse.ArgumentParser:
                       help="the input angle drawn, in degrees: VALUE, or NAME=VALUE for each input")
     plot.add_argument("--branch", help="the assembly mode drawn (default: the scene's)")
     plot.add_argument("--modes", action="store_true", help="every assembly mode side by side")
-    plot.add_argument("--param", action=_Once,
+    plot.add_argument("--param", nargs="+", action=_Once,
                       help="a dimension with a slider in the .html page (default: every dimension)")
     plot.add_argument("--range-of", action="append", default=[], metavar="NAME=LO:HI",
                       help="the range of dimension NAME's slider in the .html page (repeatable), e.g. a=0.5:2")
@@ -344,14 +344,14 @@ def build_parser() -> argparse.ArgumentParser:
                         help="outputs (names, points, dist(P, Q), P.x, angle(P, Q), angle(P, Q, R)); default: the scene's")
     export.add_argument("--to", required=True, choices=("c", "numpy", "js", "latex"), help="the language written")
     export.add_argument("--out", metavar="FILE", help="write to FILE instead of stdout")
-    export.add_argument("--param", action=_Once, default=[], metavar="NAME",
+    export.add_argument("--param", nargs="+", action=_Once, default=[], metavar="NAME",
                         help="with --to latex: keep this dimension symbolic (repeatable)")
     _json(export, "the scene, the language, and the code (or the file it was written to)")
     _budget_options(export, terms=False)
     solve = _command(commands, "solve", "every real configuration (each mode or branch) at given inputs, "
                                         "certified in balls; none when nothing assembles there (exit 0)")
     _scene(solve)
-    solve.add_argument("--at", action="append", default=[], metavar="INPUT=VALUE",
+    solve.add_argument("--at", nargs="+", action="extend", default=[], metavar="INPUT=VALUE",
                        help="an input's exact value (degrees for an angle, e.g. 30, 1/3, 22.5; a length as it "
                             "is), one for each input")
     solve.add_argument("--mode", metavar="LABEL", help="only the configuration of this mode or branch")
@@ -366,7 +366,7 @@ def build_parser() -> argparse.ArgumentParser:
     follow.add_argument("--from", dest="start", metavar="INPUT=VALUE", required=True,
                         help="the input followed and its exact start value (degrees for an angle)")
     follow.add_argument("--to", dest="stop", metavar="VALUE", required=True, help="its exact end value")
-    follow.add_argument("--at", action="append", default=[], metavar="INPUT=VALUE",
+    follow.add_argument("--at", nargs="+", action="extend", default=[], metavar="INPUT=VALUE",
                         help="each other input's exact value, where the scene has more than one")
     follow.add_argument("--max-step", dest="max_step", metavar="STEP",
                         help="the largest step, in the input's unit (default: an eighth of the way)")
@@ -393,7 +393,7 @@ def build_parser() -> argparse.ArgumentParser:
     from .sweep import add_commands
     from .synthesis import add_command as add_synthesis
 
-    add_commands(commands, _command, _json)
+    add_commands(commands, _command, _json, scene_arguments=_scene)
     add_synthesis(commands, _command, _json)
     _budget_options(commands.choices["synthesize"], terms=False)
     for command in commands.choices.values():

@@ -10,6 +10,7 @@ from ...runtime.strict_json import json_text
 from ...runtime.terminal import one_line
 
 if TYPE_CHECKING:
+    from ...scene import Scene
     from .commands import Command, Outcome
     from .parser import Subcommands
 
@@ -17,12 +18,14 @@ __all__ = ["add_commands", "COMMANDS"]
 
 
 def add_commands(commands: Subcommands, command: Callable[[Subcommands, str, str], argparse.ArgumentParser],
-                 json_option: Callable[[argparse.ArgumentParser, str], None]) -> None:
-    """Add ``sweep`` and ``atlas`` to the subcommands (``command``: how a subcommand is made)."""
+                 json_option: Callable[[argparse.ArgumentParser, str], None], *,
+                 scene_arguments: Callable[[argparse.ArgumentParser], None]) -> None:
+    """Add ``sweep`` and ``atlas`` to the subcommands (``command``: how a subcommand is made;
+    ``scene_arguments``: the scene and ``--set``, as every command that takes a scene has them)."""
     sweep = command(commands, "sweep", "named analyses over a grid (or random draws) of a scene's dimensions, "
                                        "one Parquet row per design; resumable, on Dask or in this process")
-    sweep.add_argument("scene", help="catalog name (see `algkin list`) or path of a scene file (.toml)")
-    sweep.add_argument("--grid", action="append", default=[], required=True, metavar="NAME=LO:HI:COUNT",
+    scene_arguments(sweep)
+    sweep.add_argument("--grid", nargs="+", action="extend", default=[], required=True, metavar="NAME=LO:HI:COUNT",
                        help="COUNT exact values of dimension NAME from LO to HI (repeatable: their product); "
                             "with --random, NAME=LO:HI")
     sweep.add_argument("--random", type=_positive, metavar="N", help="N designs drawn in the --grid ranges")
@@ -57,7 +60,7 @@ def _positive(text: str) -> int:
 def _cmd_sweep(args: argparse.Namespace) -> Outcome:
     from ...sweep import sweep
 
-    done = sweep(args.scene, args.out, grid=args.grid, random=args.random, seed=args.seed,
+    done = sweep(_scene_set(args), args.out, grid=args.grid, random=args.random, seed=args.seed,
                  analyses=[a for a in args.analyses.split(",")], point=args.point, executor=args.executor,
                  workers=args.workers, scheduler=args.scheduler, budget=args.budget, chunk=args.chunk,
                  yes=args.yes)
@@ -67,6 +70,21 @@ def _cmd_sweep(args: argparse.Namespace) -> Outcome:
     counts = ", ".join(f"{k} {v}" for k, v in document["status"].items())
     return (f"{document['designs']} designs ({document['computed']} computed now): {counts}\n"
             f"wrote {one_line(document['dataset'])}\n"), 0  # under --out: one line
+
+
+def _scene_set(args: argparse.Namespace) -> str | Scene:
+    """The scene named, or with ``--set``, loaded with those dimensions set: any but a swept one."""
+    if not args.set:
+        return str(args.scene)
+    from ...errors import UsageError
+    from ...scene import load_scene
+    from ...scene.settings import parse_settings, with_values
+
+    settings = parse_settings(args.set)
+    swept = {axis.split("=", 1)[0].strip() for axis in args.grid}
+    for name in settings.keys() & swept:
+        raise UsageError("set", f"{name}={settings[name]}", f"{name} is swept by --grid; set it or sweep it, not both")
+    return with_values(load_scene(args.scene), settings)
 
 
 def _cmd_atlas(args: argparse.Namespace) -> Outcome:

@@ -44,3 +44,23 @@ def test_the_3rpr_singularity_locus_in_r1():
 
 def test_between_the_triads_toggles_it_assembles_only_near_zero_and_between_193_and_231():
     assert _counts("stephenson-iii-triad", [0, 90, 200, 270, 330]) == [2, 0, 2, 0, 2]
+
+
+@pytest.mark.parametrize("name", ["3rpr", "stephenson-iii-triad"])
+def test_each_toggles_factor_is_in_the_variable_its_docs_name_and_vanishes_there(name):
+    """The factor of an angle's toggle is in ``t = tan(theta/2)`` (docs/cli/toggles.md; ``t_`` was
+    printed), a length's in the length; evaluated there (mpmath, 60 digits) it is 0 to its size."""
+    import mpmath
+    import sympy
+
+    found = toggles_groups(name)
+    for toggle in found.toggles:
+        factor = sympy.parse_expr(toggle.factor)
+        (variable,) = factor.free_symbols
+        angle = found.unit == "deg"
+        assert str(variable) == ("t" if angle else found.input)
+        with mpmath.workdps(60):
+            at = mpmath.tan(mpmath.radians(toggle.value) / 2) if angle else mpmath.mpf(toggle.value)
+            value = sympy.lambdify(variable, factor, "mpmath")(at)
+            size = sum(abs(c) * abs(at) ** k for (k,), c in sympy.Poly(factor, variable).terms())
+            assert abs(value) < 1e-9 * size, (toggle, value)

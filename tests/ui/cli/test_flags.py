@@ -6,6 +6,7 @@ command line takes.
 """
 
 import argparse
+import json
 import pathlib
 import re
 
@@ -120,3 +121,31 @@ def test_a_flag_of_one_value_given_twice_is_refused(tmp_path, monkeypatch, capsy
     out, err = capsys.readouterr()
     assert out == "" and err == f"algkin: error: {flag}: given twice\n"
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("repeated, listed, dest, expected", [
+    (["derive", "fourbar", "--outputs", "B.x", "--outputs", "A.y"], ["derive", "fourbar", "--outputs", "B.x", "A.y"],
+     "outputs", ["B.x", "A.y"]),
+    (["derive", "fourbar", "--param", "a", "--param", "l"], ["derive", "fourbar", "--param", "a", "l"],
+     "param", ["a", "l"]),
+    (["solve", "five-bar", "--at", "t1=30", "--at", "t2=100"], ["solve", "five-bar", "--at", "t1=30", "t2=100"],
+     "at", ["t1=30", "t2=100"]),
+    (["sweep", "fourbar", "--grid", "a=1:2:2", "--grid", "d=4:10:2", "--out", "x"],
+     ["sweep", "fourbar", "--grid", "a=1:2:2", "d=4:10:2", "--out", "x"], "grid", ["a=1:2:2", "d=4:10:2"]),
+])
+def test_an_option_of_several_values_takes_them_repeated_or_listed_alike(repeated, listed, dest, expected):
+    """SPEC section 3 writes ``[--outputs ...]``, ``[--param p ...]``, ``--at INPUT=VALUE ...``,
+    ``--grid NAME=LO:HI:COUNT ...``: ``--outputs`` kept only its last repetition (the first dropped
+    without a word), and ``--param``, ``--at``, ``--grid`` refused a second value after the flag."""
+    assert getattr(build_parser().parse_args(repeated), dest) == expected
+    assert getattr(build_parser().parse_args(listed), dest) == expected
+
+
+def test_outputs_repeated_are_all_derived(capsys):
+    assert main(["derive", "fourbar", "--outputs", "B.x", "--outputs", "A.y", "--samples", "0", "--json"]) == 0
+    assert {"B_x", "A_y"} <= set(json.loads(capsys.readouterr().out)["eliminants"])
+
+
+def test_a_scene_after_a_list_of_names_is_still_the_scene():
+    parsed = build_parser().parse_args(["derive", "--param", "a", "l", "fourbar"])
+    assert (parsed.scene, parsed.param) == ("fourbar", ["a", "l"])

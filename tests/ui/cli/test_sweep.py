@@ -173,3 +173,26 @@ def test_a_design_past_its_budget_fails_saying_so(tmp_path, capsys):
 
     reasons = read_dataset(tmp_path / "out").column("reason").to_pylist()
     assert all(r.startswith("budget: max_seconds=0.001: stopped after") for r in reasons), reasons
+
+
+def test_set_gives_the_dimensions_it_does_not_sweep_their_values(tmp_path, capsys):
+    """SPEC section 3: every command that takes a scene takes ``--set``; ``sweep`` had none. With the
+    ground set to 10 (coupler 3, rocker 7/2), a crank of 1 or 2 leaves |AD| >= 8 > 3 + 7/2: neither
+    design assembles, where on the default ground of 4 both do (the test above)."""
+    assert main(GOOD + ["--set", "d=10", "--out", str(tmp_path / "out"), "--json"]) == 0
+    document = json.loads(capsys.readouterr().out)
+    assert document["designs"] == 2 and document["status"] == {"does-not-assemble": 2}
+    assert main(GOOD + ["--set", "d=4", "--out", str(tmp_path / "four"), "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["status"] == {"ok": 2}
+
+
+@pytest.mark.parametrize("change, says", [
+    (["--set", "a=3"], "--set='a=3': a is swept by --grid; set it or sweep it, not both"),
+    (["--set", "zz=3"], "--set='zz=3': not a parameter of fourbar"),
+    (["--set", "l=1/0"], "--set='l=1/0': division by zero"),
+])
+def test_a_set_that_cannot_hold_is_refused_in_one_line(tmp_path, capsys, change, says):
+    assert main(GOOD + change + ["--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and says in err, err
+    assert not (tmp_path / "out").exists()
