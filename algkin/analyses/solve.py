@@ -111,6 +111,8 @@ def solve(scene: Scene | str, at: Mapping[str, Any], *, mode: str | None = None,
     """
     if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= MAX_DIGITS:
         raise UsageError("digits", digits, f"expected a whole number of digits in [1, {MAX_DIGITS}]")
+    if not isinstance(at, Mapping):
+        raise UsageError("at", at, "expected a mapping of each input's name to its value, such as {'theta': 30}")
     scene = as_scene(scene)
     if scene.unknown_points:
         return _solved_together(scene, at, mode=mode, digits=digits)

@@ -38,6 +38,12 @@ def roots_in(exprs: Sequence[sympy.Expr]) -> set[sympy.Pow]:
     return {sympy.sqrt(p.base) for e in exprs for p in e.atoms(sympy.Pow) if p.exp.is_Rational and p.exp.q == 2}
 
 
+def _absolutes(exprs: Sequence[sympy.Expr]) -> set[sympy.Expr]:
+    """The absolute values in ``exprs``: sympy writes ``sqrt(x**2)`` of a real ``x`` as ``Abs(x)``
+    (a symbolic length's), which the tower takes back as the root of ``x**2``."""
+    return {a for e in exprs for a in e.atoms(sympy.Abs)}
+
+
 def root_free(expr: sympy.Expr) -> sympy.Expr:
     """``expr`` times its conjugates over its square roots (``Tower.norm``): a rational function, zero
     wherever ``expr`` is (and where a conjugate is); ``expr`` itself when it holds no root.
@@ -46,7 +52,7 @@ def root_free(expr: sympy.Expr) -> sympy.Expr:
     >>> root_free((c - sympy.sqrt(c + 2)) * 3)
     9*(c**2 - c - 2)
     """
-    if not roots_in([expr]):
+    if not roots_in([expr]) and not _absolutes([expr]):
         return expr
     tower = Tower([expr], [])
     return tower.expr(tower.norm(tower.value(expr)))
@@ -63,7 +69,7 @@ class Tower:
         self.symbols = sorted(symbols, key=lambda v: v.name)
         if len({v.name for v in self.symbols}) != len(self.symbols):
             raise Unsupported("two symbols of one name")
-        roots = roots_in(exprs)
+        roots = roots_in(exprs) | _absolutes(exprs)
         size = len(self.symbols) + len(roots) + new_roots
         self.ring = flint.fmpq_mpoly_ctx.get(tuple(f"g{k}" for k in range(size)), "lex")
         gens = self.ring.gens()
@@ -157,6 +163,8 @@ class Tower:
             return total
         if expr.is_Pow and expr.exp == HALF:  # a root's variable comes after those in its radicand
             return self.new_root(value(expr.base), expr)
+        if isinstance(expr, sympy.Abs):  # |x| = sqrt(x**2)
+            return self.new_root(value(expr.args[0] ** 2), expr)
         if expr.is_Pow and expr.exp.is_Rational and expr.exp.q in (1, 2):
             root = expr.exp.q == 2  # x**(k/2) as sqrt(x)**k
             base, power = value(sympy.sqrt(expr.base) if root else expr.base), int(expr.exp.p)

@@ -49,8 +49,9 @@ MAX_NUMBER_BITS = 1024  # an exact number's numerator and denominator, about 308
 MAX_DECIMAL_EXPONENT = 4 * MAX_NUMBER_BITS  # keeps Fraction("1e...") cheap before the bit check
 
 
-def names(argument: str, value: Iterable[str] | None) -> tuple[str, ...] | None:
-    """A tuple of names from a list (a lone string is a mistake: it would split into letters)."""
+def names(argument: str, value: Iterable[str] | None, *, distinct: bool = True) -> tuple[str, ...] | None:
+    """A tuple of names from a list (a lone string is a mistake: it would split into letters), each
+    once unless not ``distinct``."""
     if value is None:
         return None
     if isinstance(value, str):
@@ -65,7 +66,7 @@ def names(argument: str, value: Iterable[str] | None) -> tuple[str, ...] | None:
     for item in items:
         if not isinstance(item, str):
             raise UsageError(argument, value, f"expected names (strings), got {item!r}")
-        if item in seen:  # sympy refuses a generator twice, after the work before it
+        if distinct and item in seen:  # sympy refuses a generator twice, after the work before it
             raise UsageError(argument, item, "given twice")
         seen.add(item)
     return items

@@ -17,7 +17,7 @@ from typing import Optional
 import attrs
 import sympy
 
-from ..runtime import suggest
+from ..runtime import suggest, validation
 from ..errors import SceneError, UsageError
 from ..runtime.frozen import FrozenDict, frozen
 from ..system import System, symbol
@@ -257,8 +257,9 @@ def compile_scene(scene: SceneLike, outputs: Sequence[str] | None = None, params
     """
     if not isinstance(scene, Scene):  # the public API's: a catalog name or a path, or a refusal naming it
         scene = as_scene(scene)
+    outputs = validation.names("outputs", outputs, distinct=False)  # one asked twice is compiled once
     refuse_solved_together(scene)
-    symbolic = tuple(params)
+    symbolic = validation.names("params", params) or ()
     defaults, substitution, bits = _parameter_values(scene, symbolic)
     resolved = resolve_outputs(scene, outputs)
     points = _needed_points(scene, resolved)

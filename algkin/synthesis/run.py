@@ -9,6 +9,7 @@ centre-point and circle-point curves (a one-parameter family of dyads), and no f
 from __future__ import annotations
 
 import itertools
+import numbers
 import os
 import time
 from collections.abc import Callable, Sequence
@@ -90,7 +91,8 @@ def synthesize(task: Task | str | os.PathLike[str], *, bits: int = 128, digits: 
     if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= bits * 3 // 10:
         raise UsageError("digits", digits, f"expected a whole number of digits in [1, {bits * 3 // 10}] "
                                            f"(at most what {bits} bits hold)")
-    if not 0 <= min_transmission < 90:
+    if isinstance(min_transmission, bool) or not isinstance(min_transmission, numbers.Real) \
+            or not 0 <= min_transmission < 90:
         raise UsageError("min_transmission", min_transmission, "expected degrees in [0, 90)")
     deadline = started(budget)
     task = task if isinstance(task, Task) else read_task(task)

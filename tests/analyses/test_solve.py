@@ -86,6 +86,9 @@ def test_json_keys():
     ({"theta": 30, "phi": 1}, {}, "at"),
     ({"theta": 361}, {}, "at"),
     ({"theta": "x"}, {}, "at"),
+    (30, {}, "at"),  # a number, not a mapping: was a TypeError from iterating it
+    (None, {}, "at"),
+    (["theta"], {}, "at"),
     ({"theta": 30}, {"digits": 0}, "digits"),
     ({"theta": 30}, {"digits": MAX_DIGITS + 1}, "digits"),
     ({"theta": 30}, {"mode": "up"}, "mode"),

@@ -12,7 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import algkin
-from algkin.branches.tower import Tower
+from algkin.branches.tower import Tower, root_free
 
 # The closed forms of the catalog's scenes with a dyad on another's closed form as sympy's expansion
 # wrote them before the tower (tests/derivation/catalog_before.json.gz at commit 683cb89)
@@ -89,3 +89,11 @@ def test_a_value_in_the_tower_is_the_same_function(expr: sympy.Expr, angle: floa
     point = {c: sympy.cos(sympy.Float(angle, 30)), s: sympy.sin(sympy.Float(angle, 30)), a: sympy.Float(parameter, 30)}
     before, after = (complex(sympy.N(e.xreplace(point), 30)) for e in (expr, written))
     assert abs(after - before) <= 1e-20 * max(1.0, abs(before))
+
+
+def test_an_absolute_value_is_the_root_of_a_square():
+    # sympy writes sqrt(R**2) of a real R as Abs(R): a symbolic length's, as a Whitworth lever's R
+    c, length = sympy.symbols("c R", real=True)
+    assert sympy.sqrt(length**2) == sympy.Abs(length)
+    # (c - |R|) (c + |R|) = c**2 - R**2, by hand
+    assert sympy.expand(root_free(c - sympy.sqrt(length**2)) - (c**2 - length**2)) == 0

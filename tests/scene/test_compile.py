@@ -57,3 +57,19 @@ def test_a_requested_output_is_read_without_the_spaces_about_it():
     scene = load_scene("arm-string")
     assert [(o.name, o.kind, o.points) for o in resolve_outputs(scene, [" AB\n", " A.x "])] == \
         [("AB", "dist", ("A", "B")), ("A.x", "x", ("A",))]
+
+
+@pytest.mark.parametrize(("arguments", "argument"), [
+    ((5,), "outputs"),  # was a TypeError from iterating the number
+    (("B",), "outputs"),  # a lone name: its letters would be taken for names
+    ((["B"], "al"), "params"),  # "al" read as the dimensions a and l
+    ((["B", 7],), "outputs"),
+    ((["B"], ["a", "a"]), "params"),
+])
+def test_compile_scenes_arguments_are_checked_naming_them(arguments, argument):
+    from algkin.errors import UsageError
+    from algkin.scene import load_scene
+
+    with pytest.raises(UsageError) as raised:
+        compile_scene(load_scene("fourbar"), *arguments)
+    assert raised.value.argument == argument

@@ -102,6 +102,8 @@ def test_seven_points_give_the_four_bar_they_came_from_alone():
 def test_arguments_are_checked():
     from algkin.errors import UsageError
 
-    for kwargs in ({"bits": 10}, {"digits": 0}, {"digits": 500}, {"min_transmission": 95}):
-        with pytest.raises(UsageError):
+    for kwargs in ({"bits": 10}, {"digits": 0}, {"digits": 500}, {"min_transmission": 95},
+                   {"min_transmission": "30"}, {"min_transmission": float("nan")}, {"min_transmission": True}):
+        with pytest.raises(UsageError) as caught:
             synthesize(EXAMPLES / "three-pairs.toml", **kwargs)
+        assert caught.value.argument == next(iter(kwargs))

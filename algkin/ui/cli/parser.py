@@ -50,25 +50,32 @@ class _Parser(argparse.ArgumentParser):
         for name in (None, "store"):  # the default action, and said by name
             self.register("action", name, _StoreOnce)
         self.given: set[str] = set()  # the flags of one value met in this parse
+        self.arguments: list[str] = sys.argv[1:]  # those of this parse, which its errors quote
         self._negative_number_matcher = re.compile(r"^-\.?[0-9]")  # no flag of algkin's starts so
 
     def error(self, message: str) -> NoReturn:
-        raise UsageError("arguments", shortened(" ".join(sys.argv[1:]), ARGUMENTS_SHOWN), message)
+        raise UsageError("arguments", shortened(" ".join(self.arguments), ARGUMENTS_SHOWN), message)
 
     def parse_known_args(self, args: Sequence[str] | None = None,  # type: ignore[override]
                          namespace: argparse.Namespace | None = None) -> tuple[argparse.Namespace, list[str]]:
         """As argparse, and with the positional a list option swallowed given back to it:
         ``derive --outputs B chebyshev-lambda`` reads as ``derive chebyshev-lambda --outputs B``."""
+        given = self.arguments = list(sys.argv[1:] if args is None else args)
         try:
-            self.given = set()
-            return super().parse_known_args(args, namespace)
+            try:
+                self.given = set()
+                return super().parse_known_args(args, namespace)
+            except UsageError as err:
+                moved = _positional_first(given, self._list_options()) if "are required" in err.message else None
+                if moved is None:
+                    raise
+                self.given = set()
+                return super().parse_known_args(moved, namespace)
         except UsageError as err:
-            given = list(sys.argv[1:] if args is None else args)
-            moved = _positional_first(given, self._list_options()) if "are required" in err.message else None
-            if moved is None:
+            if err.argument != "arguments":
                 raise
-            self.given = set()
-            return super().parse_known_args(moved, namespace)
+            # a command's own parser saw what follows its name: the error quotes all that was given
+            raise UsageError("arguments", shortened(" ".join(given), ARGUMENTS_SHOWN), err.message) from None
 
     def _list_options(self) -> set[str]:
         return {flag for action in self._actions if action.nargs in ("+", "*") for flag in action.option_strings}

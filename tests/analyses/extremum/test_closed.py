@@ -1,6 +1,7 @@
 """Closed forms of the arm's minimum in symbolic dimensions, against hand geometry and brute force."""
 
 
+import mpmath
 import numpy as np
 import pytest
 import sympy
@@ -158,3 +159,17 @@ def test_the_closed_forms_written_do_not_depend_on_the_hash_seed(tmp_path):
         assert done.returncode == 0, done.stderr[-300:]
         documents.add(done.stdout)
     assert len(documents) == 1
+
+
+def test_a_whitworth_rams_leftmost_in_its_lever_length_is_the_lever_tangent_to_the_crank_circle():
+    # its discriminants hold sqrt(R**2), which sympy writes Abs(R): an internal error before
+    found = extremum("whitworth-quick-return", "D.x", params=["R"]).closed_form
+    # by hand: the lever leans furthest left where CA is tangent to the crank's circle (radius 3 about O,
+    # C 5 below O): lever direction (-3/5, 4/5), so B = (-3R/5, -5 + 4R/5), at crank angle 180 + asin(3/5);
+    # the ram D on y = 6 at 6 from B: D.x = B.x + sqrt(36 - (6 - B.y)**2)
+    length = sympy.Symbol("R", real=True)
+    with mpmath.workdps(30):
+        assert abs(sympy.N(found.input, 30) - (180 + mpmath.degrees(mpmath.asin(mpmath.mpf(3) / 5)))) < 1e-25
+        for value in (7, 10, 13, 16):
+            by_hand = -mpmath.mpf(3) * value / 5 + mpmath.sqrt(36 - (11 - mpmath.mpf(4) * value / 5) ** 2)
+            assert abs(sympy.N(found.value.xreplace({length: value}), 30) - by_hand) < 1e-25

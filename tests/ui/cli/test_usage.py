@@ -244,3 +244,14 @@ def test_show_gives_the_scenes_unit_of_length(capsys, scene, unit):
     assert json.loads(capsys.readouterr().out)["length_unit"] == unit
     assert main(["show", scene]) == 0
     assert ("lengths in mm" in capsys.readouterr().out) == bool(unit)
+
+
+@pytest.mark.parametrize("args, quoted", [
+    (["curve", "chebyshev-lambda"], "curve chebyshev-lambda"),  # a command's own parser's error
+    (["derive", "chebyshev-lambda", "--bogus"], "derive chebyshev-lambda --bogus"),
+])
+def test_main_called_in_a_process_quotes_its_own_arguments(tmp_path, args, quoted):
+    # main(argv) quoted sys.argv: under pytest, pytest's own arguments
+    done = run_main(args, tmp_path)
+    assert done.returncode == 2
+    assert done.stderr.startswith(f"algkin: error: arguments={quoted!r}: ") and done.stderr.count("\n") == 1
