@@ -143,14 +143,28 @@ def report_synthesis(d: Document) -> str:
         span = m["transmission_range"]
         lines.append(f"  {m['scene']}: {m['grashof'] or 'not a four-bar class'}"
                      + (f", transmission {span[0]:.1f}-{span[1]:.1f} deg" if span else "") + f"; {verdict}")
-    for left in d.get("excluded", []):
-        what = f"the roots of {_shown(left['factor'])}" if "factor" in left else \
-            f"{left['complex_count']} solution(s), {left['real_count']} real"
-        lines.append(f"  left out: {what}: {left['reason']}")
+    lines += [f"  left out: {what}: {reason}" for what, reason in _left_out(d.get("excluded", []))]
     lines += [f"wrote {one_line(path)}" for path in d.get("written", [])]  # under --out: one line
     if d.get("plot"):
         lines.append(f"wrote {d['plot']}")
     return "\n".join(lines)
+
+
+def _left_out(excluded: list[dict[str, Any]]) -> list[tuple[str, str]]:
+    """What was left out and why, a line each: a factor's roots by the factor, the solutions of
+    several factors left out for one reason counted together (three lines alike said nothing more)."""
+    shown: list[tuple[str, str]] = []
+    counts: dict[str, list[int]] = {}
+    for left in excluded:
+        if "factor" in left:
+            shown.append((f"the roots of {_shown(left['factor'])}", left["reason"]))
+        elif left["reason"] in counts:
+            counts[left["reason"]][0] += left["complex_count"]
+            counts[left["reason"]][1] += left["real_count"]
+        else:
+            counts[left["reason"]] = [left["complex_count"], left["real_count"]]
+    return shown + [(f"{complex_count} solution(s), {real_count} real", reason)
+                    for reason, (complex_count, real_count) in counts.items()]
 
 
 def _shown(polynomial: str, room: int = 160) -> str:

@@ -220,3 +220,19 @@ def test_the_files_written_are_said_in_one_line_each(capsys, tmp_path):
     assert not any(line.startswith("algkin: all checks passed") for line in lines)
     said = [line for line in lines if line.startswith("wrote ")]
     assert len(said) == 2 and all("\\nalgkin: all checks passed" in line for line in said)
+
+
+def test_solutions_left_out_for_one_reason_are_one_line_counting_them(capsys):
+    # fourbar-pairs: three extraneous factors of one reason were three lines alike
+    code, text, _ = run(capsys, "synthesize", "function", "fourbar-pairs", "--quiet")
+    assert code == 0
+    left = [line for line in text.splitlines() if "left out" in line]
+    _, document, _ = run(capsys, "synthesize", "function", "fourbar-pairs", "--json", "--quiet")
+    excluded = json.loads(document)["excluded"]
+    reasons = {e["reason"] for e in excluded}
+    assert len(excluded) > len(reasons) and len(left) == len(reasons)  # several of one reason, one line
+    for reason in reasons:
+        alike = [e for e in excluded if e["reason"] == reason]
+        line = f"  left out: {sum(e['complex_count'] for e in alike)} solution(s), " \
+               f"{sum(e['real_count'] for e in alike)} real: {reason}"
+        assert line in left
