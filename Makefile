@@ -23,10 +23,10 @@ demo: $(STAMP)
 	$(BIN)/algkin curve chebyshev-lambda --point P
 	$(BIN)/algkin derive arm-string --outputs AB
 
-# The tests run in WORKERS processes (pytest-xdist), each given whole files (a module's fixtures are
-# made once): CI's machine has 2 cores. WORKERS=0 runs them in pytest's own process.
-WORKERS ?= 2
-XDIST = -n $(WORKERS) --dist loadfile
+# The tests run in TEST_WORKERS processes (pytest-xdist), each given whole files (a module's fixtures are
+# made once): CI's machine has 2 cores. TEST_WORKERS=0 runs them in pytest's own process.
+TEST_WORKERS ?= 2
+XDIST = -n $(TEST_WORKERS) --dist loadfile
 
 # The suite but its slow set (tests marked slow: about a minute more), which CI runs too.
 test: $(STAMP) browser
