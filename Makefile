@@ -23,9 +23,14 @@ demo: $(STAMP)
 	$(BIN)/algkin curve chebyshev-lambda --point P
 	$(BIN)/algkin derive arm-string --outputs AB
 
+# The tests run in TEST_WORKERS processes (pytest-xdist), each given whole files (a module's fixtures are
+# made once): CI's machine has 2 cores. TEST_WORKERS=0 runs them in pytest's own process.
+TEST_WORKERS ?= 2
+XDIST = -n $(TEST_WORKERS) --dist loadfile
+
 # The suite but its slow set (tests marked slow: about a minute more), which CI runs too.
 test: $(STAMP) browser
-	$(BIN)/python -m pytest -m "not slow"
+	$(BIN)/python -m pytest -m "not slow" $(XDIST)
 
 # `make test` beside two CPU-bound busy processes, as on a loaded machine (CI's is shared): a test
 # that depends on the machine's speed fails here. The busy loops end with the recipe however it
@@ -37,8 +42,10 @@ test-loaded: $(STAMP) browser
 	echo "test-loaded: make test beside two busy processes:$$busy"; \
 	$(MAKE) test
 
+# The few tests of a bound on the machine's own clock (marked alone) run last, with no other test beside them.
 test-slow: $(STAMP) browser
-	$(BIN)/python -m pytest -m slow
+	$(BIN)/python -m pytest -m "slow and not alone" $(XDIST)
+	$(BIN)/python -m pytest -m "slow and alone"
 
 # algkin bench (--full: 60 s a row, the largest problems finish) exits 1 when one of algkin's rows
 # or a peer's exact elimination disagrees with its reference, bench_verify.py when a ratio misses

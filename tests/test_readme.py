@@ -102,3 +102,13 @@ def test_the_pictures_shown_are_drawn_by_the_docs_build_with_the_readmes_command
         for link in re.findall(r"!\[[^]]*\]\(([^)]+\.png)\)", page.read_text(encoding="utf-8")):
             path = posixpath.normpath(base + link)
             assert path in pictures | {"docs/images/bench.png"}, (page, link)
+
+
+def test_make_test_slow_runs_the_tests_on_the_machines_clock_alone():
+    # make test and make test-slow run in pytest-xdist's workers, two tests at once: the slow set's
+    # bounds on the machine's own clock (marked alone) are run after the rest, with no worker beside them.
+    _, recipes = _recipes()
+    lines = [line.strip() for line in recipes["test-slow"].splitlines()]
+    assert lines == ['$(BIN)/python -m pytest -m "slow and not alone" $(XDIST)',
+                     '$(BIN)/python -m pytest -m "slow and alone"']
+    assert recipes["test"].strip() == '$(BIN)/python -m pytest -m "not slow" $(XDIST)'

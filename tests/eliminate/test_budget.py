@@ -1,7 +1,7 @@
 """Budgets: a time budget stops even a single long C call, a terms budget stops big eliminants.
 
 The deadlines here are read on clocks the tests move (``tests/clocks.py``); the one test on the
-machine's own clock (how soon a long C call is stopped) is in the slow set.
+machine's own clock (how soon a long C call is stopped) is in the slow set, run alone (marked alone).
 """
 
 import multiprocessing
@@ -53,6 +53,7 @@ def test_one_long_elimination_stops_when_the_deadline_passes():
 
 
 @pytest.mark.slow
+@pytest.mark.alone
 def test_one_long_elimination_stops_near_the_deadline_on_the_machines_clock():
     # The one test of the time a stop takes (the kill, the join): its bound is generous, for a loaded machine.
     start = time.monotonic()

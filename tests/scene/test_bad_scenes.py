@@ -1,7 +1,8 @@
-"""Bad scene files (docs/scene-format.md) through the real command line: exit 2, one line, nothing run.
+"""Bad scene files (docs/scene-format.md) through the command line: exit 2, one line, nothing run.
 
 Each file in ``bad/`` starts with ``# expect: a | b | ...``: words that the error line
-must contain (the element and what is wrong), besides the file's own name.
+must contain (the element and what is wrong), besides the file's own name. Every file is given to
+the command line in this process (``main``); one file of each class to ``python -m algkin`` too.
 """
 
 import os
@@ -13,6 +14,8 @@ from pathlib import Path
 import pytest
 
 from algkin.scene.load import MAX_SCENE_BYTES
+
+from ..ui.cli.in_process import run_main
 
 ROOT = Path(__file__).resolve().parents[2]
 BAD = Path(__file__).resolve().parent / "bad"
@@ -60,22 +63,30 @@ def test_every_class_has_a_file():
     assert CLASSES <= {f.name for f in FILES}
 
 
+@pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])
+def test_bad_scene_is_refused(path, tmp_path):
+    workdir = tmp_path / "cwd"
+    workdir.mkdir()
+    assert_refused(run_main(["derive", str(path)], workdir), path, expectations(path), workdir)
+
+
 @pytest.fixture(scope="module")
 def derived(tmp_path_factory):
-    """``derive`` on every bad file, run a few at a time in the background; one empty
-    working directory each. Maps a file to a future (result, workdir)."""
+    """``python -m algkin derive`` on a file of each class, run a few at a time in the background;
+    one empty working directory each. Maps a file to a future (result, workdir)."""
 
     def one(path, workdir):
         return run_cli(["derive", path], workdir), workdir
 
     # mktemp is not thread-safe: make the directories here, run in the pool
-    workdirs = {path: tmp_path_factory.mktemp(f"cwd-{path.stem}") for path in FILES}
+    workdirs = {BAD / name: tmp_path_factory.mktemp(f"cwd-{name}") for name in CLASSES}
     with ThreadPoolExecutor(max_workers=max(2, os.cpu_count() or 1)) as pool:
-        yield {path: pool.submit(one, path, workdirs[path]) for path in FILES}
+        yield {path: pool.submit(one, path, workdir) for path, workdir in workdirs.items()}
 
 
-@pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])
-def test_bad_scene_is_refused(path, derived):
+@pytest.mark.parametrize("name", sorted(CLASSES))
+def test_a_bad_scene_of_each_class_is_refused_by_its_own_process(name, derived):
+    path = BAD / name
     result, workdir = derived[path].result()
     assert_refused(result, path, expectations(path), workdir)
 

@@ -6,7 +6,7 @@ Each command runs in a session of its own (``tests/processes.py``): a hang fails
 test here depends on how fast the machine is: a signal is sent once the worker has used some
 processor time (it is at work, however loaded the machine), and a deadline is passed by a
 clock the test moves (``tests/clocks.py``); the two tests of how soon a budget stops a command
-on the machine's own clock are in the slow set, with generous bounds.
+on the machine's own clock are in the slow set, with generous bounds, and run alone (marked alone).
 """
 
 import json
@@ -74,6 +74,7 @@ def one_line(err):
 
 
 @pytest.mark.slow
+@pytest.mark.alone
 @settings(max_examples=12)
 @given(command=st.sampled_from(COMMANDS), milliseconds=st.integers(10, 300))
 def test_a_small_budget_stops_the_command_near_it(startup, command, milliseconds):
@@ -92,6 +93,7 @@ def test_a_small_budget_stops_the_command_near_it(startup, command, milliseconds
 
 
 @pytest.mark.slow
+@pytest.mark.alone
 @pytest.mark.parametrize("command", ["derive", "show"])
 def test_a_scene_slow_to_load_stops_at_the_budget(tmp_path, startup, command):
     # Before the budget covered loading, derive took 30 s here (and 1.7 GB); a size guard on

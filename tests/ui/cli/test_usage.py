@@ -62,6 +62,11 @@ BAD_USAGE = {
     "nan-bench-budget": (["bench", "--budget", "nan"], ["--budget", "nan"]),
 }
 
+# A few of them through ``python -m algkin`` too (the rest in this process, ``run_main``): the process's
+# own exit code and stderr, from the parser's refusals to a scene's and an output's.
+IN_A_PROCESS = ("unknown-subcommand", "option-but-no-command", "bad-samples", "negative-seed", "unknown-scene",
+                "out-in-no-directory")
+
 GOOD = {
     "list": ["list", "--json"],
     "show-arm": ["show", "arm-string", "--outputs", "AB", "--json"],
@@ -76,7 +81,7 @@ def runs(tmp_path_factory):
     def one(args, workdir):
         return run_cli(args, workdir), workdir
 
-    jobs = {k: a for k, (a, _) in BAD_USAGE.items()} | GOOD
+    jobs = {k: BAD_USAGE[k][0] for k in IN_A_PROCESS} | GOOD
     # mktemp is not thread-safe: make the directories here, run in the pool
     workdirs = {k: tmp_path_factory.mktemp(f"cwd-{k}") for k in jobs}
     with ThreadPoolExecutor(max_workers=max(2, os.cpu_count() or 1)) as pool:
@@ -84,8 +89,17 @@ def runs(tmp_path_factory):
 
 
 @pytest.mark.parametrize("key", list(BAD_USAGE))
-def test_bad_usage_exits_2_with_one_line(key, runs):
+def test_bad_usage_exits_2_with_one_line(key, tmp_path):
+    assert_bad_usage(run_main(BAD_USAGE[key][0], tmp_path), key, tmp_path)
+
+
+@pytest.mark.parametrize("key", IN_A_PROCESS)
+def test_bad_usage_exits_2_with_one_line_from_its_own_process(key, runs):
     result, workdir = runs[key].result()
+    assert_bad_usage(result, key, workdir)
+
+
+def assert_bad_usage(result, key, workdir):
     assert result.returncode == 2, (result.returncode, result.stderr[-2000:])
     assert result.stdout == ""
     assert "Traceback" not in result.stderr
