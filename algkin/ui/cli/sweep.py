@@ -84,7 +84,29 @@ def _scene_set(args: argparse.Namespace) -> str | Scene:
     swept = {axis.split("=", 1)[0].strip() for axis in args.grid}
     for name in settings.keys() & swept:
         raise UsageError("set", f"{name}={settings[name]}", f"{name} is swept by --grid; set it or sweep it, not both")
-    return with_values(load_scene(args.scene), settings)
+    scene = load_scene(args.scene)
+    valued = with_values(scene, settings)
+    _refuse_a_set_no_design_takes(scene, valued, tuple(n for n in swept if n in scene.parameters), args.set)
+    return valued
+
+
+def _refuse_a_set_no_design_takes(scene: Scene, valued: Scene, swept: tuple[str, ...], given: list[str]) -> None:
+    """UsageError where the values ``--set`` gives make the scene refuse to compile, the swept dimensions
+    kept symbolic, though the file's own values compile: every design would fail for the same reason
+    (``--set l=-1``). Where the file's values fail too, each design says why, as without ``--set``."""
+    from ...errors import SceneError, UsageError
+    from ...scene import compile_scene
+
+    if scene.unknown_points:
+        return  # its groups' values are checked as the sweep is planned
+    try:
+        compile_scene(valued, list(valued.points), swept)
+    except SceneError as refused:
+        try:
+            compile_scene(scene, list(scene.points), swept)
+        except SceneError:
+            return
+        raise UsageError("set", " ".join(given), str(refused)) from None
 
 
 def _cmd_atlas(args: argparse.Namespace) -> Outcome:

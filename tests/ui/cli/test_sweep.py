@@ -190,6 +190,8 @@ def test_set_gives_the_dimensions_it_does_not_sweep_their_values(tmp_path, capsy
     (["--set", "a=3"], "--set='a=3': a is swept by --grid; set it or sweep it, not both"),
     (["--set", "zz=3"], "--set='zz=3': not a parameter of fourbar"),
     (["--set", "l=1/0"], "--set='l=1/0': division by zero"),
+    # every design would fail alike (a coupler of length -1), where the file's own values compile
+    (["--set", "l=-1"], "--set='l=-1': fourbar.toml: points.B: length must be positive, got -1"),
 ])
 def test_a_set_that_cannot_hold_is_refused_in_one_line(tmp_path, capsys, change, says):
     assert main(GOOD + change + ["--out", str(tmp_path / "out")]) == 2
