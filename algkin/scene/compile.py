@@ -35,7 +35,7 @@ from .model import Output, Scene
 from .names import angle_unknowns, check_names, check_output_unknowns, check_symbol_name
 
 __all__ = ["Compiled", "DyadSpec", "SliderSpec", "AngleOutput", "compile_scene", "resolve_outputs", "refuse_solved_together",
-           "refuse_lengths_not_positive", "length_not_positive", "Span", "spans_lengths_positive",
+           "refuse_lengths_not_positive", "length_not_positive", "Span", "lengths_in", "spans_lengths_positive",
            "DimensionChecks", "dimension_checks"]
 
 Substitution = Mapping[sympy.Symbol, sympy.Expr]
@@ -417,6 +417,18 @@ Span = tuple[Optional[float], Optional[float]]
 """An open interval of a dimension; an end None: unbounded."""
 
 
+def lengths_in(scene: Scene, names: Sequence[str]) -> tuple[sympy.Expr, ...]:
+    """The lengths of ``scene`` (``length_not_positive``'s) in the dimensions ``names`` alone, the others
+    at their values: one in an input too is not decided by the dimensions.
+
+    >>> from algkin.scene import load_scene
+    >>> lengths_in(load_scene("fourbar"), ["a", "l"])
+    (a, l)
+    """
+    return tuple(length for length in dimension_checks(scene, list(scene.points), list(names)).lengths
+                 if length.free_symbols and {str(s) for s in length.free_symbols} <= set(names))
+
+
 def spans_lengths_positive(scene: Scene, name: str) -> tuple[Span, ...] | None:
     """The open intervals of the dimension ``name`` over which every length of ``scene`` in it
     (``length_not_positive``'s, the other dimensions at their values) is positive, ascending;
@@ -428,8 +440,7 @@ def spans_lengths_positive(scene: Scene, name: str) -> tuple[Span, ...] | None:
     >>> spans_lengths_positive(load_scene("fourbar"), "d") is None  # a pivot's coordinate
     True
     """
-    lengths = [length for length in dimension_checks(scene, list(scene.points), [name]).lengths
-               if {str(s) for s in length.free_symbols} == {name}]  # one in an input too is not decided here
+    lengths = lengths_in(scene, [name])
     if not lengths:
         return None
     (variable,) = lengths[0].free_symbols

@@ -27,7 +27,7 @@ from ...runtime import validation
 from ...runtime.budget import Budget, Deadline, started
 from ...runtime.frozen import FrozenDict, frozen
 from ...scene.load import SceneLike, Values
-from ...scene.compile import Span, dimension_checks, spans_lengths_positive
+from ...scene.compile import Span, lengths_in, spans_lengths_positive
 from ...scene.model import Input, Scene, length_range_problem, range_problem
 from ...system import symbol
 from ..toggles import single_input
@@ -211,7 +211,8 @@ def extremum_of(derived: Derivation, output: str, angle_range: tuple[float | str
     points = points_at(problem, stationary, defaults, lo, hi)
     closed = closed_form(problem, stationary, defaults, lo, hi, largest != flip, deadline=deadline,
                          domain=_domain(derived.compiled.scene, problem.parameters),
-                         lengths=_lengths(derived.compiled.scene, problem.parameters)) if problem.parameters else None
+                         lengths=lengths_in(derived.compiled.scene, [p.name for p in problem.parameters])) \
+        if problem.parameters else None
     exact = None
     if scale is not None:
         exact = {key: _exact(problem, stationary, defaults, extreme(points, largest=(key == "maximum") != flip),
@@ -228,13 +229,6 @@ def _domain(scene: Scene, parameters: Sequence[sympy.Symbol]) -> tuple[Span, ...
     """Where one symbolic dimension makes a mechanism: where the lengths it is stay positive (None:
     every real value, a coordinate's; regions are not drawn in more than one dimension)."""
     return spans_lengths_positive(scene, parameters[0].name) if len(parameters) == 1 else None
-
-
-def _lengths(scene: Scene, parameters: Sequence[sympy.Symbol]) -> tuple[sympy.Expr, ...]:
-    """The lengths of ``scene`` (positive by the scene format) in the symbolic dimensions alone."""
-    names = {p.name for p in parameters}
-    return tuple(length for length in dimension_checks(scene, list(scene.points), names).lengths
-                 if length.free_symbols and {str(s) for s in length.free_symbols} <= names)
 
 
 def _exact(problem: Problem, stationary: Sequence[sympy.Expr], defaults: Mapping[sympy.Symbol, sympy.Expr],
