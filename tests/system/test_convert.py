@@ -7,6 +7,7 @@ import pytest
 from hypothesis import given, strategies as st
 import sympy
 
+from algkin.system import convert
 from algkin.system.convert import coefficients as coefficients_of, flint_context, from_terms, sympy_text, to_flint, to_sympy
 
 NAMES = ["x", "y", "z"]
@@ -91,3 +92,17 @@ def test_coefficients_are_sympys_polys_terms(term_list, power):
 def test_coefficients_refuse_two_symbols_of_one_name():
     with pytest.raises(TypeError, match="two symbols of one name"):
         coefficients_of(GENS[0] + sympy.Symbol("x"), GENS[:1])
+
+
+def test_sympy_text_writes_rational_coefficients_without_sympy(monkeypatch):
+    ctx = flint_context(["y", "x"])
+    y, x = ctx.gens()
+    polys = [x**2 / 3 - 2 * x * y / 5 - flint.fmpq(1, 2), flint.fmpq(1, 2) - x / 3, -x * y**2 / 7 + 4 * y / 3]
+    expected = [str(to_sympy(p, ctx)) for p in polys]
+    assert expected == ["x**2/3 - 2*x*y/5 - 1/2", "1/2 - x/3", "-x*y**2/7 + 4*y/3"]  # as sympy writes them
+    monkeypatch.setattr(convert, "to_sympy", _refuse_sympy)
+    assert [sympy_text(p, ctx) for p in polys] == expected
+
+
+def _refuse_sympy(poly, ctx):
+    raise AssertionError(f"converted to sympy: {poly}")
