@@ -164,7 +164,9 @@ def to_sympy(poly: flint.fmpq_mpoly | flint.fmpz_mpoly,
 def sympy_text(poly: flint.fmpq_mpoly | flint.fmpz_mpoly, ctx: flint.fmpq_mpoly_ctx | flint.fmpz_mpoly_ctx) -> str:
     """``str(to_sympy(poly, ctx))``, written directly: sympy's terms in lex order of its sorted symbols,
     each a product its rational coefficient's numerator begins and its denominator ends (``2*x**2*y/3``),
-    without building and printing the expression, a few milliseconds on a sextic.
+    without building and printing the expression, a few milliseconds on a sextic. Where the ring is lex
+    in sympy's order and the coefficients integers, FLINT's own text is sympy's (but its ``^``), but
+    for sympy's one exception of two terms.
 
     >>> ctx = flint_context(["y", "x"])
     >>> y, x = ctx.gens()
@@ -173,11 +175,15 @@ def sympy_text(poly: flint.fmpq_mpoly | flint.fmpz_mpoly, ctx: flint.fmpq_mpoly_
     >>> sympy_text(x**2/3 - 2*x*y/5 - flint.fmpq(1, 2), ctx)
     'x**2/3 - 2*x*y/5 - 1/2'
     """
+    names = [str(n) for n in ctx.names()]
+    order = sorted(range(len(names)), key=lambda k: symbol(names[k]).sort_key())  # sympy's order of symbols
+    if order == sorted(order) and ctx.ordering() == flint.Ordering.lex and len(poly) != 2:
+        written = str(poly)  # FLINT's terms in sympy's order: in C, a tenth of the time of the loop below
+        if "/" not in written:  # integer coefficients, written as sympy writes them (but powers, ^)
+            return written.replace("^", "**")
     terms = poly.to_dict()
     if not terms:
         return "0"
-    names = [str(n) for n in ctx.names()]
-    order = sorted(range(len(names)), key=lambda k: symbol(names[k]).sort_key())  # sympy's order of symbols
     ordered = sorted(((tuple(int(m[k]) for k in order), flint.fmpq(c)) for m, c in terms.items()),
                      key=lambda term: term[0], reverse=True)
     if len(ordered) == 2 and not any(ordered[1][0]) and ordered[1][1] > 0 and ordered[0][1] < 0 \

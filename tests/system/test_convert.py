@@ -52,9 +52,11 @@ coefficients = st.one_of(st.sampled_from([1, -1, 2, -3]), st.integers(-10**40, 1
                          st.fractions(max_denominator=7).filter(bool))
 
 
-@given(st.lists(st.sampled_from(TEXT_NAMES), min_size=1, max_size=4, unique=True),
+@given(st.lists(st.sampled_from(TEXT_NAMES), min_size=1, max_size=4, unique=True), st.booleans(),
        st.lists(st.tuples(coefficients, st.lists(st.integers(0, 4), min_size=4, max_size=4)), max_size=10))
-def test_sympy_text_is_how_sympy_writes_the_polynomial(names, term_list):
+def test_sympy_text_is_how_sympy_writes_the_polynomial(names, in_sympys_order, term_list):
+    if in_sympys_order:  # as sympy sorts its symbols: FLINT's own text is taken where the coefficients are integers
+        names = sorted(names, key=lambda n: sympy.Symbol(n).sort_key())
     ctx = flint_context(names)
     poly = ctx.from_dict({tuple(exps[:len(names)]): flint.fmpq(c.numerator, c.denominator) for c, exps in term_list})
     assert sympy_text(poly, ctx) == str(to_sympy(poly, ctx))
@@ -106,3 +108,28 @@ def test_sympy_text_writes_rational_coefficients_without_sympy(monkeypatch):
 
 def _refuse_sympy(poly, ctx):
     raise AssertionError(f"converted to sympy: {poly}")
+
+
+class _WrittenWhole:
+    """A polynomial whose terms refuse to be read one by one in Python: only FLINT writes it."""
+
+    def __init__(self, poly):
+        self.poly = poly
+
+    def __str__(self):
+        return str(self.poly)
+
+    def __len__(self):
+        return len(self.poly)
+
+    def to_dict(self):
+        raise AssertionError("its terms read one by one")
+
+
+def test_sympy_text_of_integer_coefficients_in_sympys_order_is_flints_own_text():
+    ctx = flint_context(["P_x", "P_y", "c_theta"])  # sympy's order: capitals first
+    px, py, c = ctx.gens()
+    poly = 3 * px**2 * c - px * py**3 + 10**30 * c - 1
+    expected = str(to_sympy(poly, ctx))
+    assert expected == "3*P_x**2*c_theta - P_x*P_y**3 + 1000000000000000000000000000000*c_theta - 1"
+    assert sympy_text(_WrittenWhole(poly), ctx) == expected
