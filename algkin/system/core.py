@@ -122,5 +122,14 @@ class System:
             "unknowns": list(self.unknowns),
             "parameters": list(self.parameters),
             "inputs": inputs_json(self.inputs),
-            "equations": [str(eq) for eq in self.equations],
+            "equations": self._equation_texts(),
         }
+
+    def _equation_texts(self) -> list[str]:
+        """``str`` of each equation, written from python-flint (``sympy_text``) where the equation is the
+        expression ``to_sympy`` makes of its polynomial, as the compiler's are: sympy's printing of a
+        six-bar's equations took milliseconds of a cold command."""
+        from .convert import sympy_text, to_sympy  # convert builds on this module
+
+        return [sympy_text(p, p.context()) if e == to_sympy(p, p.context()) else str(e)
+                for e, p in zip(self.equations, self.polynomials)]
