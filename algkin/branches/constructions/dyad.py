@@ -31,9 +31,9 @@ import sympy
 
 from ...evaluate.program import numpy_function
 from ...scene.implicit import DyadSpec
-from ...scene.implicit.algebra import Circles
+from ...scene.implicit.algebra import HALF, Circles
 from ...scene.implicit.base import FloatArray, Point
-from ..algebra import reducer, tidy_product, tidy_ratio, unsplit_root
+from ..algebra import product, product_root, reducer, tidy_product, tidy_ratio, total, unsplit_root
 from ..tower import Tower, Unsupported, roots_in
 from .base import BranchAlgebra, Fix, HalfAngle, Mode, StableEvaluator, Substitution
 from .floats import heron_area, stable_quadratic
@@ -65,11 +65,14 @@ class DyadAlgebra(BranchAlgebra):
         along = tidy_ratio((l1**2 - l2**2 + dist2) / (2 * dist2))
         disc = tidy_product(reduce((l1 + l2) ** 2 - dist2), reduce(dist2 - (l1 - l2) ** 2))
         spread = tidy_product(dist2)
-        half_root = sympy.sqrt(disc) / 2  # both modes' (the root of a product: sympy asks each factor's sign)
+        # both modes'; ``product``: sympy's ``/ 2`` asks the root's assumptions again (a millisecond)
+        half_root = product(HALF, product_root(disc))
 
         def mode(sigma: int) -> tuple[Point, sympy.Expr]:
-            across = sigma * half_root / spread
-            return (px + along * dx - across * dy, py + along * dy + across * dx), disc
+            # sympy's products and sums, put together where that is all they do (``product``, ``total``)
+            across = product(sigma, half_root, 1 / spread)
+            return (total(px, product(along, dx), product(-1, across, dy)),
+                    total(py, product(along, dy), product(across, dx))), disc
         return mode
 
     def toggle_conditions(self) -> dict[str, sympy.Expr]:
