@@ -23,6 +23,7 @@ from ..branches import Branch
 from ..runtime.frozen import frozen
 from ..scene import Compiled
 from ..system import symbol
+from ..system.convert import expanded
 from ..verify import CheckSetup, Verification, verify_branches
 from ..verify.check import Indicator, PolynomialLike
 from .prepared import Prepared
@@ -43,7 +44,7 @@ def check_setup(compiled: Compiled, branches: Iterable[Branch], *, keep_dimensio
     # no dimension to fix (none symbolic, or kept so): the compiled system and forms as they are, their
     # python-flint polynomials (the elimination's) with them
     fixed = system if not defaults else type(system)(
-        system.unknowns, (), system.inputs, tuple(sympy.expand(e.xreplace(defaults)) for e in system.equations),
+        system.unknowns, (), system.inputs, tuple(expanded(e.xreplace(defaults)) for e in system.equations),
         system.nonnegative)
     inputs = {n: (float(i.to_radians(i.lo)), float(i.to_radians(i.hi)))
               for n, i in compiled.scene.inputs.items() if n in system.inputs}

@@ -7,7 +7,8 @@ import pytest
 from hypothesis import given, strategies as st
 import sympy
 
-from algkin.system.convert import coefficients as coefficients_of, flint_context, from_terms, sympy_text, to_flint, to_sympy
+from algkin.system.convert import (coefficients as coefficients_of, expanded, flint_context, from_terms, sympy_text, to_flint,
+                                   to_sympy)
 
 NAMES = ["x", "y", "z"]
 GENS = [sympy.Symbol(n, real=True) for n in NAMES]
@@ -91,3 +92,18 @@ def test_coefficients_are_sympys_polys_terms(term_list, power):
 def test_coefficients_refuse_two_symbols_of_one_name():
     with pytest.raises(TypeError, match="two symbols of one name"):
         coefficients_of(GENS[0] + sympy.Symbol("x"), GENS[:1])
+
+
+A = sympy.Symbol("a")  # no assumptions, beside GENS' real ones
+LEAVES = st.sampled_from([*GENS, A, sympy.sqrt(2), sympy.Float(0.5)]) | st.fractions(-7, 7, max_denominator=5).map(
+    lambda q: sympy.Rational(q.numerator, q.denominator))
+EXPRESSIONS = st.recursive(LEAVES, lambda children: (
+    st.tuples(children, children).map(lambda p: p[0] + p[1]) | st.tuples(children, children).map(lambda p: p[0] * p[1])
+    | st.tuples(children, st.integers(-2, 4)).filter(lambda p: p[0] != 0 or p[1] > 0).map(lambda p: p[0] ** p[1])
+    | children.map(lambda e: e / 3)), max_leaves=12)
+
+
+@given(EXPRESSIONS)
+def test_expanded_is_sympys_expansion(expr):
+    ours, sympys = expanded(expr), sympy.expand(expr)
+    assert ours == sympys and str(ours) == str(sympys)
