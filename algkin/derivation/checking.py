@@ -46,7 +46,7 @@ def check_setup(compiled: Compiled, branches: Iterable[Branch], *, keep_dimensio
     fixed = system if not defaults else type(system)(
         system.unknowns, (), system.inputs, tuple(expanded(e.xreplace(defaults)) for e in system.equations),
         system.nonnegative)
-    inputs = {n: (float(i.to_radians(i.lo)), float(i.to_radians(i.hi)))
+    inputs = {n: (i.radians(i.lo), i.radians(i.hi))
               for n, i in compiled.scene.inputs.items() if n in system.inputs}
     indicators: list[Indicator] = [(i.point, _fixed(i.expr, defaults), i.positive, i.negative)
                                    for i in compiled.indicators]

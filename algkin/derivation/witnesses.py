@@ -54,6 +54,7 @@ def sampled_witnesses(compiled: Compiled, branches: Sequence[Branch], where: Map
     for both where no dimension is fixed for the check. A sample's exact inputs are made when it
     is first evaluated (most scenes need the first three)."""
     where = where or {}
+    spans = {n: where.get(n) or _whole(compiled.scene.inputs[n]) for n in compiled.system.inputs}
     count = WITNESSES_PER_BRANCH * 3 * 4 if compiled.system.inputs else 1
     names, known = _exact_names(compiled), _known_names(compiled)
     # a six-bar's closed forms are long: compiled once, not walked per sample
@@ -63,7 +64,7 @@ def sampled_witnesses(compiled: Compiled, branches: Sequence[Branch], where: Map
     groups: list[list[Witness]] = [[] for _ in branches]
     with flint.ctx.workprec(WITNESS_BITS):
         for k in range(count):
-            exact = _exact_values(compiled, where, k)
+            exact = _exact_values(compiled, spans, k)
             balls = {n: ARB.number(exact[n].numerator, exact[n].denominator) for n in names}
             values = program(*(balls[n] for n in known))
             for branch, group, start, end in zip(branches, groups, ends, ends[1:]):
@@ -93,9 +94,13 @@ def exact_sample(spec: Input, count: int, pieces: Pieces | None, k: int) -> Samp
 
     The ``4 * count`` points are evenly spread, and taken every fourth first, so that the first few
     already spread over the range."""
-    pieces = pieces or [(float(spec.to_radians(spec.lo)), float(spec.to_radians(spec.hi)))]
-    value = _along(pieces, (4 * (k % count) + k // count + 0.5) / (4 * count))
+    value = _along(pieces or _whole(spec), (4 * (k % count) + k // count + 0.5) / (4 * count))
     return _on_circle(value) if spec.is_angle else (Fraction(value).limit_denominator(97),)
+
+
+def _whole(spec: Input) -> Pieces:
+    """The input's whole range, in radians or lengths."""
+    return [(spec.radians(spec.lo), spec.radians(spec.hi))]
 
 
 def _along(pieces: Pieces, share: float) -> float:
@@ -133,12 +138,13 @@ def _known_names(compiled: Compiled) -> list[str]:
     return [*compiled.system.input_variables, *compiled.system.parameters]
 
 
-def _exact_values(compiled: Compiled, where: Mapping[str, Pieces], k: int) -> dict[str, Fraction]:
-    """Sample ``k``'s exact inputs (cos and sin, or lengths) and dimensions (nudged off their defaults)."""
+def _exact_values(compiled: Compiled, spans: Mapping[str, Pieces], k: int) -> dict[str, Fraction]:
+    """Sample ``k``'s exact inputs (cos and sin, or lengths) drawn from ``spans`` (input -> pieces of
+    its range) and dimensions (nudged off their defaults)."""
     exact: dict[str, Fraction] = {}
     for name, variables in compiled.system.inputs.items():
         exact.update(zip(variables, exact_sample(compiled.scene.inputs[name], WITNESSES_PER_BRANCH * 3,
-                                                 where.get(name), k)))
+                                                 spans[name], k)))
     for n in compiled.system.parameters:
         default = Fraction(str(compiled.parameter_values[n]))
         exact[n] = default * (1 + Fraction(k + 1, 211)) if default else Fraction(k + 1, 211)
