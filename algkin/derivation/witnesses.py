@@ -32,10 +32,11 @@ from ..scene import Compiled
 from ..scene.model import Input
 from .assembles import Pieces, where_assembled
 
-__all__ = ["witnesses", "sampled_witnesses", "exact_samples", "WITNESS_BITS", "WITNESSES_PER_BRANCH"]
+__all__ = ["witnesses", "sampled_witnesses", "exact_sample", "WITNESS_BITS", "WITNESSES_PER_BRANCH"]
 
 WITNESS_BITS = 256
 WITNESSES_PER_BRANCH = 3
+SPREAD = WITNESSES_PER_BRANCH * 3  # exact_sample's count: at most 4 * SPREAD samples are tried
 
 Sample = tuple[Fraction, ...]  # an angle's exact (cos, sin), or a length's (length,)
 Groups = tuple[tuple[Witness, ...], ...]  # per branch, its witnesses
@@ -55,7 +56,7 @@ def sampled_witnesses(compiled: Compiled, branches: Sequence[Branch], where: Map
     is first evaluated (most scenes need the first three)."""
     where = where or {}
     spans = {n: where.get(n) or _whole(compiled.scene.inputs[n]) for n in compiled.system.inputs}
-    count = WITNESSES_PER_BRANCH * 3 * 4 if compiled.system.inputs else 1
+    count = 4 * SPREAD if compiled.system.inputs else 1
     names, known = _exact_names(compiled), _known_names(compiled)
     # a six-bar's closed forms are long: compiled once, not walked per sample
     program = compile_program([e for b in branches for e in (*b.discriminants.values(), *b.values.values())],
@@ -77,23 +78,16 @@ def sampled_witnesses(compiled: Compiled, branches: Sequence[Branch], where: Map
     return tuple(tuple(group) for group in groups)
 
 
-def exact_samples(spec: Input, count: int, pieces: Pieces | None = None) -> list[Sample]:
-    """``4 * count`` exact rational inputs spread over the input's range (or over ``pieces`` of it, in
-    radians or lengths: where something assembles), the same number for every input: an angle's as an
-    exact point ``(cos, sin)`` on the unit circle, a length's as ``(length,)``.
+def exact_sample(spec: Input, count: int, pieces: Pieces | None, k: int) -> Sample:
+    """The ``k``-th of ``4 * count`` exact rational inputs spread evenly over the input's range (or
+    over ``pieces`` of it, in radians or lengths: where something assembles), taken every fourth
+    first so that the first few already spread over it: an angle's as an exact point ``(cos, sin)``
+    on the unit circle, a length's as ``(length,)``.
 
-    >>> points = exact_samples(Input("t", 179, 181, "deg"), 2)
+    >>> points = [exact_sample(Input("t", 179, 181, "deg"), 2, None, k) for k in range(8)]
     >>> len(points), all(c * c + s * s == 1 and c < 0 for c, s in points)
     (8, True)
     """
-    return [exact_sample(spec, count, pieces, k) for k in range(4 * count)]
-
-
-def exact_sample(spec: Input, count: int, pieces: Pieces | None, k: int) -> Sample:
-    """The ``k``-th of ``exact_samples(spec, count, pieces)``, made alone.
-
-    The ``4 * count`` points are evenly spread, and taken every fourth first, so that the first few
-    already spread over the range."""
     value = _along(pieces or _whole(spec), (4 * (k % count) + k // count + 0.5) / (4 * count))
     return _on_circle(value) if spec.is_angle else (Fraction(value).limit_denominator(97),)
 
@@ -143,8 +137,7 @@ def _exact_values(compiled: Compiled, spans: Mapping[str, Pieces], k: int) -> di
     its range) and dimensions (nudged off their defaults)."""
     exact: dict[str, Fraction] = {}
     for name, variables in compiled.system.inputs.items():
-        exact.update(zip(variables, exact_sample(compiled.scene.inputs[name], WITNESSES_PER_BRANCH * 3,
-                                                 spans[name], k)))
+        exact.update(zip(variables, exact_sample(compiled.scene.inputs[name], SPREAD, spans[name], k)))
     for n in compiled.system.parameters:
         default = Fraction(str(compiled.parameter_values[n]))
         exact[n] = default * (1 + Fraction(k + 1, 211)) if default else Fraction(k + 1, 211)
