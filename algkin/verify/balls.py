@@ -46,6 +46,7 @@ from .solve import jacobian
 
 __all__ = ["BlockCertifier", "certifier_of", "certify_parameters"]
 
+
 class Unset(enum.Enum):
     """No pencil given: the certifier finds its own."""
 
