@@ -3,16 +3,18 @@
 from collections.abc import Callable, Mapping
 from functools import reduce
 
+import flint
 import sympy
 from sympy.core.add import _addsort
 from sympy.core.mul import _keep_coeff, _mulsort
 from sympy.core.numbers import igcd, ilcm
 
 from ..scene.implicit.algebra import Circles, reduce_on_circles
+from ..system.convert import flint_context, to_flint
 from ..system.text import ExpressionText
 from .ratio import cancelled
 
-__all__ = ["reducer", "tidy_ratio", "tidy_product", "tidy_sqrt", "unsplit_root", "product", "total", "readable", "Readable", "FormText",
+__all__ = ["reducer", "tidy_ratio", "tidy_product", "factored_terms", "tidy_sqrt", "unsplit_root", "product_root", "product", "total", "readable", "Readable", "FormText",
            "times", "primitive_sum"]
 
 
@@ -52,7 +54,37 @@ def tidy_product(*factors: sympy.Expr) -> sympy.Expr:
     """The product of ``factors``, each expanded already (reduced on the circles), with every numeric
     content gathered in front."""
     parts = [_primitive(f) for f in factors]
-    return sympy.Mul(*[c for c, _ in parts], *[sympy.factor_terms(p) for _, p in parts])
+    return sympy.Mul(*[c for c, _ in parts], *[factored_terms(p) for _, p in parts])
+
+
+def factored_terms(expr: sympy.Expr) -> sympy.Expr:
+    """``sympy.factor_terms(expr)``: ``expr`` itself where it is a sum of integer multiples of monomials
+    with no factor it could take out (coprime coefficients, not all negative, no symbol in every
+    term), seen directly; sympy's elsewhere (its Factors of every term, a millisecond a dyad cold).
+
+    >>> c, s = sympy.symbols("c s", real=True)
+    >>> [factored_terms(e) for e in (5 - 4*c, c*s + c, -4*c - 5)]
+    [5 - 4*c, c*(s + 1), -(4*c + 5)]
+    """
+    if not expr.is_Add:
+        return sympy.factor_terms(expr)
+    coefficients, common = [], None
+    for term in expr.args:
+        coefficient, factors = term.as_coeff_mul()
+        if not coefficient.is_Integer or not all(_monomial(f) for f in factors):
+            return sympy.factor_terms(expr)
+        coefficients.append(int(coefficient))
+        bases = {f.as_base_exp()[0] for f in factors}
+        common = bases if common is None else common & bases
+    if common or all(k < 0 for k in coefficients) or reduce(igcd, coefficients) != 1:
+        return sympy.factor_terms(expr)
+    return expr
+
+
+def _monomial(factor: sympy.Expr) -> bool:
+    """A symbol or its positive integer power."""
+    return bool(factor.is_Symbol or (factor.is_Pow and factor.base.is_Symbol and factor.exp.is_Integer
+                                     and factor.exp > 0))
 
 
 def tidy_sqrt(expr: sympy.Expr) -> sympy.Expr:
@@ -90,6 +122,64 @@ def unsplit_root(expr: sympy.Expr) -> sympy.Expr:
     # ``product``: sympy's constructor would ask the signs again (tens of milliseconds where the number
     # leaves a surd, sqrt(2) in front)
     return product(sympy.sqrt(number), sympy.Pow(rest, sympy.S.Half, evaluate=False))
+
+
+_ANY_REAL = sympy.Symbol("x", real=True).assumptions0  # what sympy knows of a real symbol, and no more
+
+
+def product_root(expr: sympy.Expr) -> sympy.Expr:
+    """``sympy.sqrt(expr)`` of a positive number times polynomials in real symbols, without sympy's
+    questions of each factor's sign where the answer is known: a factor that takes both signs
+    (``takes_both_signs``) is one sympy cannot prove nonnegative or negative (it is sound), so it
+    keeps every such factor under the root, as ``unsplit_root`` writes it. A millisecond and more
+    of each dyad's closed form otherwise (its assumptions asked afresh of every new factor).
+
+    >>> c = sympy.Symbol("c", real=True)
+    >>> discriminant = sympy.Mul(4, 5 - 4*c, c + 5)
+    >>> product_root(discriminant), product_root(discriminant) == sympy.sqrt(discriminant)
+    (2*sqrt((5 - 4*c)*(c + 5)), True)
+    >>> product_root(sympy.Mul(4, c**2 + 1, c + 5))   # c**2 + 1 > 0: sympy takes it out
+    2*sqrt(c + 5)*sqrt(c**2 + 1)
+    """
+    number, rest = expr.as_coeff_Mul()
+    if number > 0 and rest != 1 and all(takes_both_signs(f) for f in sympy.Mul.make_args(rest)):
+        return unsplit_root(expr)
+    return sympy.sqrt(expr)
+
+
+def takes_both_signs(expr: sympy.Expr) -> bool:
+    """Whether ``expr``, a polynomial with rational coefficients in real symbols, is shown to be
+    positive somewhere and negative somewhere: at two exact points on the line of a variable of odd
+    degree, the others at 0, beyond every root there (Cauchy's bound). False where nothing is shown.
+
+    >>> c, s = sympy.symbols("c s", real=True)
+    >>> takes_both_signs(5 - 4*c), takes_both_signs(c**2 + s**2), takes_both_signs(s**2 * c + 1)
+    (True, False, False)
+    >>> takes_both_signs(5 - 4*sympy.Symbol("l", positive=True))   # true, but l < 0 is no witness
+    False
+    """
+    names = [v.name for v in expr.free_symbols]
+    # any real value is one sympy must allow: no symbol is known positive, an integer...
+    if not names or len(set(names)) != len(names) or any(v.assumptions0 != _ANY_REAL for v in expr.free_symbols):
+        return False
+    try:
+        poly = to_flint(expr, flint_context(sorted(names)))
+    except TypeError:  # a root, a quotient: not a polynomial
+        return False
+    for k, degree in enumerate(poly.degrees()):
+        if degree % 2:
+            line = poly.subs({n: 0 for j, n in enumerate(poly.context().names()) if j != k})
+            coefficients = dict(zip((m[k] for m in line.monoms()), line.coeffs()))
+            lead = coefficients.get(degree)
+            if lead:
+                bound = 1 + sum(abs(c) for c in coefficients.values()) / abs(lead)
+                point = [flint.fmpq(0)] * len(names)
+                signs = []
+                for end in (bound, -bound):
+                    point[k] = end
+                    signs.append(line(*point) > 0)
+                return signs[0] != signs[1]
+    return False
 
 
 def product(*factors: sympy.Expr) -> sympy.Expr:

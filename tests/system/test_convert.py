@@ -8,7 +8,8 @@ from hypothesis import given, strategies as st
 import sympy
 
 from algkin.system import convert
-from algkin.system.convert import coefficients as coefficients_of, flint_context, from_terms, sympy_text, to_flint, to_sympy
+from algkin.system.convert import (coefficients as coefficients_of, expanded, flint_context, from_terms, sympy_text, to_flint,
+                                   to_sympy)
 
 NAMES = ["x", "y", "z"]
 GENS = [sympy.Symbol(n, real=True) for n in NAMES]
@@ -133,3 +134,18 @@ def test_sympy_text_of_integer_coefficients_in_sympys_order_is_flints_own_text()
     expected = str(to_sympy(poly, ctx))
     assert expected == "3*P_x**2*c_theta - P_x*P_y**3 + 1000000000000000000000000000000*c_theta - 1"
     assert sympy_text(_WrittenWhole(poly), ctx) == expected
+
+
+A = sympy.Symbol("a")  # no assumptions, beside GENS' real ones
+LEAVES = st.sampled_from([*GENS, A, sympy.sqrt(2), sympy.Float(0.5)]) | st.fractions(-7, 7, max_denominator=5).map(
+    lambda q: sympy.Rational(q.numerator, q.denominator))
+EXPRESSIONS = st.recursive(LEAVES, lambda children: (
+    st.tuples(children, children).map(lambda p: p[0] + p[1]) | st.tuples(children, children).map(lambda p: p[0] * p[1])
+    | st.tuples(children, st.integers(-2, 4)).filter(lambda p: p[0] != 0 or p[1] > 0).map(lambda p: p[0] ** p[1])
+    | children.map(lambda e: e / 3)), max_leaves=12)
+
+
+@given(EXPRESSIONS)
+def test_expanded_is_sympys_expansion(expr):
+    ours, sympys = expanded(expr), sympy.expand(expr)
+    assert ours == sympys and str(ours) == str(sympys)

@@ -140,6 +140,19 @@ def test_a_computing_command_loads_the_algebra_first_and_freezes_it_out_of_the_c
     assert done.stdout.splitlines()[-1] == "0 True True 0", done.stderr[-300:]
 
 
+def test_a_derivations_own_modules_are_frozen_with_the_algebra(tmp_path):
+    # loaded by the command after the freeze, the pipeline's objects were walked by the collector as
+    # the derivation ran (a millisecond and more of a cold derive's total)
+    code = ("import gc, io, sys, contextlib; from algkin.ui.cli import main\n"
+            "with contextlib.redirect_stdout(io.StringIO()):\n"
+            "    code = main(['derive', 'chebyshev-lambda', '--outputs', 'B'])\n"
+            "derive = sys.modules['algkin.derivation.pipeline'].derive\n"
+            "print(any(o is derive for o in gc.get_objects()), code)")
+    done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True, timeout=120,
+                          env=dict(os.environ, PYTHONPATH=str(ROOT)))
+    assert done.stdout.splitlines()[-1] == "False 0", done.stdout[-300:] + done.stderr[-300:]
+
+
 def test_the_random_samples_module_is_loaded_with_the_algebra_not_in_the_verification(tmp_path):
     # numpy loads numpy.random on first use: 9 ms of the first verification's stage, timed as its work
     code = ("import sys; from algkin.ui.cli import _with_algebra;"
