@@ -3,14 +3,13 @@
 from collections.abc import Callable, Mapping
 from functools import reduce
 
-import flint
 import sympy
 from sympy.core.add import _addsort
 from sympy.core.mul import _keep_coeff, _mulsort
 from sympy.core.numbers import igcd, ilcm
 
 from ..scene.implicit.algebra import Circles, reduce_on_circles
-from ..system.convert import flint_context, to_flint
+from ..system.signs import takes_both_signs
 from ..system.text import ExpressionText
 from .ratio import cancelled
 
@@ -124,9 +123,6 @@ def unsplit_root(expr: sympy.Expr) -> sympy.Expr:
     return product(sympy.sqrt(number), sympy.Pow(rest, sympy.S.Half, evaluate=False))
 
 
-_ANY_REAL = sympy.Symbol("x", real=True).assumptions0  # what sympy knows of a real symbol, and no more
-
-
 def product_root(expr: sympy.Expr) -> sympy.Expr:
     """``sympy.sqrt(expr)`` of a positive number times polynomials in real symbols, without sympy's
     questions of each factor's sign where the answer is known: a factor that takes both signs
@@ -145,41 +141,6 @@ def product_root(expr: sympy.Expr) -> sympy.Expr:
     if number > 0 and rest != 1 and all(takes_both_signs(f) for f in sympy.Mul.make_args(rest)):
         return unsplit_root(expr)
     return sympy.sqrt(expr)
-
-
-def takes_both_signs(expr: sympy.Expr) -> bool:
-    """Whether ``expr``, a polynomial with rational coefficients in real symbols, is shown to be
-    positive somewhere and negative somewhere: at two exact points on the line of a variable of odd
-    degree, the others at 0, beyond every root there (Cauchy's bound). False where nothing is shown.
-
-    >>> c, s = sympy.symbols("c s", real=True)
-    >>> takes_both_signs(5 - 4*c), takes_both_signs(c**2 + s**2), takes_both_signs(s**2 * c + 1)
-    (True, False, False)
-    >>> takes_both_signs(5 - 4*sympy.Symbol("l", positive=True))   # true, but l < 0 is no witness
-    False
-    """
-    names = [v.name for v in expr.free_symbols]
-    # any real value is one sympy must allow: no symbol is known positive, an integer...
-    if not names or len(set(names)) != len(names) or any(v.assumptions0 != _ANY_REAL for v in expr.free_symbols):
-        return False
-    try:
-        poly = to_flint(expr, flint_context(sorted(names)))
-    except TypeError:  # a root, a quotient: not a polynomial
-        return False
-    for k, degree in enumerate(poly.degrees()):
-        if degree % 2:
-            line = poly.subs({n: 0 for j, n in enumerate(poly.context().names()) if j != k})
-            coefficients = dict(zip((m[k] for m in line.monoms()), line.coeffs()))
-            lead = coefficients.get(degree)
-            if lead:
-                bound = 1 + sum(abs(c) for c in coefficients.values()) / abs(lead)
-                point = [flint.fmpq(0)] * len(names)
-                signs = []
-                for end in (bound, -bound):
-                    point[k] = end
-                    signs.append(line(*point) > 0)
-                return signs[0] != signs[1]
-    return False
 
 
 def product(*factors: sympy.Expr) -> sympy.Expr:

@@ -16,17 +16,15 @@ where balls at rational points show that no sign can be known, its answer is kno
 True
 """
 
-import random
 from collections.abc import Callable
 from typing import Any
 
-import flint
 import sympy
 from sympy.core.exprtools import decompose_power
 from sympy.core.numbers import NumberSymbol
 from sympy.core.sorting import default_sort_key
 
-from ..evaluate import ARB, NumberKind, evaluate
+from .signs import signs_unknowable
 
 __all__ = ["PrintOrder"]
 
@@ -187,61 +185,9 @@ def _whole_root(factor: sympy.Expr) -> tuple[sympy.Expr, int] | None:
     if not (factor.is_Pow and factor.exp.is_Rational and factor.exp.q == 2 and type(factor.base) is sympy.Mul):
         return None
     base = factor.base
-    if not all(_plain_real(v) for v in base.free_symbols) or not _signs_unknowable(base.args):
+    if not signs_unknowable(base.args):
         return None
     return sympy.Pow(sympy.Mul(*base.args), sympy.S.Half, evaluate=False), int(factor.exp.p)
-
-
-_PLAIN_REAL = sympy.Symbol("x", real=True).assumptions0
-_WITNESSES = 32  # points tried before sympy is asked: a tower's roots show their sides in the first few
-_SPREAD = 64  # each symbol's value k/16 for an integer |k| <= _SPREAD
-_POSITIVE, _NEGATIVE, _NOT_REAL = "positive", "negative", "not real"
-
-
-def _no_absolute(value: flint.acb) -> flint.acb:
-    raise TypeError("an absolute value: its complex ball is not the one sympy means")
-
-
-_COMPLEX: NumberKind[flint.acb] = NumberKind("acb", number=lambda p, q: flint.acb(flint.fmpq(p, q)),
-                                             sqrt=lambda v: v.sqrt(), absolute=_no_absolute)
-
-
-def _plain_real(variable: sympy.Basic) -> bool:
-    """A symbol assumed real and nothing more, as algkin makes them: any real value is one it may take."""
-    return type(variable) is sympy.Symbol and variable.assumptions0 == _PLAIN_REAL
-
-
-def _signs_unknowable(factors: tuple[sympy.Expr, ...]) -> bool:
-    """Whether each factor is certified (in balls) positive at some real point and negative or not real at
-    another, and all of them real and not 0 at one point; at rational points, the same ones each time."""
-    names = sorted({v.name for f in factors for v in f.free_symbols})
-    seen: list[set[str | None]] = [set() for _ in factors]
-    all_real = False
-    chooser = random.Random(0)  # seeded: a document is written the same way each time
-    for _ in range(_WITNESSES):
-        values = {n: flint.fmpq(chooser.randint(-_SPREAD, _SPREAD), 16) for n in names}
-        try:
-            sides = [_side(f, values) for f in factors]
-        except TypeError:  # what closed forms do not hold: sympy is asked
-            return False
-        all_real = all_real or all(side in (_POSITIVE, _NEGATIVE) for side in sides)
-        for found, side in zip(seen, sides):
-            found.add(side)
-        if all_real and all(_POSITIVE in found and (_NEGATIVE in found or _NOT_REAL in found) for found in seen):
-            return True
-    return False
-
-
-def _side(expr: sympy.Expr, values: dict[str, flint.fmpq]) -> str | None:
-    """Where ``expr``'s value at the rational point ``values`` certainly is: positive, negative, not real;
-    None where the balls do not decide (or the value is 0)."""
-    real = evaluate(expr, {n: flint.arb(v) for n, v in values.items()}, ARB)  # nan where a root is of < 0
-    if real > 0:
-        return _POSITIVE
-    if real < 0:
-        return _NEGATIVE
-    value = evaluate(expr, {n: flint.acb(v) for n, v in values.items()}, _COMPLEX)
-    return _NOT_REAL if value.imag > 0 or value.imag < 0 else None
 
 
 def _split_commutative(mul: sympy.Mul) -> tuple[list[sympy.Expr], list[sympy.Expr]]:

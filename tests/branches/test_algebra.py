@@ -5,7 +5,7 @@ from hypothesis import assume, example, given, strategies as st
 
 from sympy.core.mul import _keep_coeff
 
-from algkin.branches.algebra import (factored_terms, primitive_sum, product, product_root, takes_both_signs, times, total,
+from algkin.branches.algebra import (factored_terms, primitive_sum, product, product_root, times, total,
                                     unsplit_root)
 
 C, S = sympy.symbols("c s", real=True)
@@ -42,12 +42,6 @@ def test_a_root_of_a_product_is_sympys(number, factors):
     assert written == sympys and written.args == sympys.args and str(written) == str(sympys)
 
 
-@given(any_sums)
-def test_a_sum_said_to_take_both_signs_is_of_no_sign_sympy_knows(p):
-    if takes_both_signs(p):
-        assert p.is_extended_nonnegative is None and p.is_extended_nonpositive is None
-
-
 A, B = sympy.symbols("a b")  # no assumptions
 monomials = st.tuples(st.sampled_from([1, 2, 3]), st.integers(0, 3), st.integers(0, 2), st.integers(0, 1)).map(
     lambda p: p[0] * C**p[1] * S**p[2] * A**p[3])
@@ -65,11 +59,6 @@ def test_factored_terms_is_sympys(summands):
     expr = sympy.Add(*summands)
     ours, sympys = factored_terms(expr), sympy.factor_terms(expr)
     assert ours == sympys and str(ours) == str(sympys)
-
-
-def test_a_line_takes_both_signs_and_a_sum_of_squares_not():
-    assert takes_both_signs(5 - 4 * C) and takes_both_signs(C * S**2 - 3 * S + C + 1)
-    assert not takes_both_signs(C**2 + S**2 + 1) and not takes_both_signs(-C**4 - S**2)
 
 
 X = sympy.Symbol("x")  # no assumptions: sympy asks nothing of its sign
