@@ -9,10 +9,11 @@ from sympy.core.mul import _keep_coeff, _mulsort
 from sympy.core.numbers import igcd, ilcm
 
 from ..scene.implicit.algebra import Circles, reduce_on_circles
+from ..system.signs import takes_both_signs
 from ..system.text import ExpressionText
 from .ratio import cancelled
 
-__all__ = ["reducer", "tidy_ratio", "tidy_product", "tidy_sqrt", "unsplit_root", "product", "total", "readable", "Readable", "FormText",
+__all__ = ["reducer", "tidy_ratio", "tidy_product", "factored_terms", "tidy_sqrt", "unsplit_root", "product_root", "product", "total", "readable", "Readable", "FormText",
            "times", "primitive_sum"]
 
 
@@ -52,7 +53,37 @@ def tidy_product(*factors: sympy.Expr) -> sympy.Expr:
     """The product of ``factors``, each expanded already (reduced on the circles), with every numeric
     content gathered in front."""
     parts = [_primitive(f) for f in factors]
-    return sympy.Mul(*[c for c, _ in parts], *[sympy.factor_terms(p) for _, p in parts])
+    return sympy.Mul(*[c for c, _ in parts], *[factored_terms(p) for _, p in parts])
+
+
+def factored_terms(expr: sympy.Expr) -> sympy.Expr:
+    """``sympy.factor_terms(expr)``: ``expr`` itself where it is a sum of integer multiples of monomials
+    with no factor it could take out (coprime coefficients, not all negative, no symbol in every
+    term), seen directly; sympy's elsewhere (its Factors of every term, a millisecond a dyad cold).
+
+    >>> c, s = sympy.symbols("c s", real=True)
+    >>> [factored_terms(e) for e in (5 - 4*c, c*s + c, -4*c - 5)]
+    [5 - 4*c, c*(s + 1), -(4*c + 5)]
+    """
+    if not expr.is_Add:
+        return sympy.factor_terms(expr)
+    coefficients, common = [], None
+    for term in expr.args:
+        coefficient, factors = term.as_coeff_mul()
+        if not coefficient.is_Integer or not all(_monomial(f) for f in factors):
+            return sympy.factor_terms(expr)
+        coefficients.append(int(coefficient))
+        bases = {f.as_base_exp()[0] for f in factors}
+        common = bases if common is None else common & bases
+    if common or all(k < 0 for k in coefficients) or reduce(igcd, coefficients) != 1:
+        return sympy.factor_terms(expr)
+    return expr
+
+
+def _monomial(factor: sympy.Expr) -> bool:
+    """A symbol or its positive integer power."""
+    return bool(factor.is_Symbol or (factor.is_Pow and factor.base.is_Symbol and factor.exp.is_Integer
+                                     and factor.exp > 0))
 
 
 def tidy_sqrt(expr: sympy.Expr) -> sympy.Expr:
@@ -90,6 +121,26 @@ def unsplit_root(expr: sympy.Expr) -> sympy.Expr:
     # ``product``: sympy's constructor would ask the signs again (tens of milliseconds where the number
     # leaves a surd, sqrt(2) in front)
     return product(sympy.sqrt(number), sympy.Pow(rest, sympy.S.Half, evaluate=False))
+
+
+def product_root(expr: sympy.Expr) -> sympy.Expr:
+    """``sympy.sqrt(expr)`` of a positive number times polynomials in real symbols, without sympy's
+    questions of each factor's sign where the answer is known: a factor that takes both signs
+    (``takes_both_signs``) is one sympy cannot prove nonnegative or negative (it is sound), so it
+    keeps every such factor under the root, as ``unsplit_root`` writes it. A millisecond and more
+    of each dyad's closed form otherwise (its assumptions asked afresh of every new factor).
+
+    >>> c = sympy.Symbol("c", real=True)
+    >>> discriminant = sympy.Mul(4, 5 - 4*c, c + 5)
+    >>> product_root(discriminant), product_root(discriminant) == sympy.sqrt(discriminant)
+    (2*sqrt((5 - 4*c)*(c + 5)), True)
+    >>> product_root(sympy.Mul(4, c**2 + 1, c + 5))   # c**2 + 1 > 0: sympy takes it out
+    2*sqrt(c + 5)*sqrt(c**2 + 1)
+    """
+    number, rest = expr.as_coeff_Mul()
+    if number > 0 and rest != 1 and all(takes_both_signs(f) for f in sympy.Mul.make_args(rest)):
+        return unsplit_root(expr)
+    return sympy.sqrt(expr)
 
 
 def product(*factors: sympy.Expr) -> sympy.Expr:

@@ -31,7 +31,7 @@ def check_assembly(compiled: Compiled, branches: Sequence[Branch]) -> None:
     angles: dict[sympy.Symbol, FloatArray] = {}
     for name, variables in compiled.system.inputs.items():
         given = compiled.scene.inputs[name]
-        grid = np.linspace(float(given.to_radians(given.lo)), float(given.to_radians(given.hi)), GRID)
+        grid = np.linspace(given.radians(given.lo), given.radians(given.hi), GRID)
         angles.update({symbol(v): x for v, x in input_values(variables, grid).items()})
     args = list(angles)
     real = np.ones(GRID, dtype=bool)

@@ -26,7 +26,7 @@ from ..system import symbol
 from .algebra import FormText, product, tidy_ratio, unsplit_root
 from .constructions import Mode, algebra_of
 from .constructions.dyad import NestedModes
-from .tower import Tower, Unsupported, roots_in
+from .tower import Tower, Unsupported, roots_in, varying_radicands
 
 __all__ = ["Branch", "closed_forms"]
 
@@ -159,6 +159,8 @@ def _nested_value(definition: sympy.Expr, substitution: dict[sympy.Symbol, sympy
             value = tower.expr(tower.value_given(inside, given))
     if value is None:
         placed = inside.xreplace(substitution)
+        if varying_radicands(placed) < 2:  # one root at most (a tower would say so, after sympy's roots of them)
+            return None
         try:
             tower = Tower([placed], inputs)
             if tower.roots < 2:  # one root at most: sympy's forms of a single dyad read well

@@ -25,7 +25,7 @@ from ..scene.implicit.algebra import HALF, Circles, square_reduced
 from ..system.convert import content, fmpq_to_rational, from_terms
 from .algebra import product, total
 
-__all__ = ["Tower", "Value", "Unsupported", "roots_in", "root_free"]
+__all__ = ["Tower", "Value", "Unsupported", "roots_in", "varying_radicands", "root_free"]
 
 
 class Unsupported(Exception):
@@ -36,6 +36,19 @@ class Unsupported(Exception):
 def roots_in(exprs: Sequence[sympy.Expr]) -> set[sympy.Pow]:
     """The square roots in ``exprs`` (``x**(k/2)`` holds ``sqrt(x)``), nested ones too."""
     return {sympy.sqrt(p.base) for e in exprs for p in e.atoms(sympy.Pow) if p.exp.is_Rational and p.exp.q == 2}
+
+
+def varying_radicands(expr: sympy.Expr) -> int:
+    """How many distinct radicands with symbols ``expr``'s square roots and absolute values have: at
+    least as many as the varying roots a ``Tower`` of it counts (``roots_in`` makes each root anew,
+    sympy's ``sqrt`` asking each factor's sign; two radicands may give one root, never one two).
+
+    >>> c = sympy.Symbol("c")
+    >>> varying_radicands(c * sympy.sqrt(5 - 4 * c) + sympy.sqrt(2) / sympy.sqrt(5 - 4 * c)), varying_radicands(c)
+    (1, 0)
+    """
+    radicands = {p.base for p in expr.atoms(sympy.Pow) if p.exp.is_Rational and p.exp.q == 2}
+    return sum(1 for r in radicands if r.free_symbols) + sum(1 for a in _absolutes([expr]) if a.free_symbols)
 
 
 def _absolutes(exprs: Sequence[sympy.Expr]) -> set[sympy.Expr]:

@@ -23,6 +23,7 @@ from ..branches import Branch
 from ..runtime.frozen import frozen
 from ..scene import Compiled
 from ..system import symbol
+from ..system.convert import expanded
 from ..verify import CheckSetup, Verification, verify_branches
 from ..verify.check import Indicator, PolynomialLike
 from .prepared import Prepared
@@ -40,19 +41,26 @@ def check_setup(compiled: Compiled, branches: Iterable[Branch], *, keep_dimensio
     sweep's designs of one family share them)."""
     system = compiled.system
     defaults = {} if keep_dimensions else {symbol(n): compiled.parameter_values[n] for n in system.parameters}
-    fixed = system if keep_dimensions else type(system)(
-        system.unknowns, (), system.inputs, tuple(sympy.expand(e.xreplace(defaults)) for e in system.equations),
+    # no dimension to fix (none symbolic, or kept so): the compiled system and forms as they are, their
+    # python-flint polynomials (the elimination's) with them
+    fixed = system if not defaults else type(system)(
+        system.unknowns, (), system.inputs, tuple(expanded(e.xreplace(defaults)) for e in system.equations),
         system.nonnegative)
-    inputs = {n: (float(i.to_radians(i.lo)), float(i.to_radians(i.hi)))
+    inputs = {n: (i.radians(i.lo), i.radians(i.hi))
               for n, i in compiled.scene.inputs.items() if n in system.inputs}
-    indicators: list[Indicator] = [(i.point, i.expr.xreplace(defaults), i.positive, i.negative)
+    indicators: list[Indicator] = [(i.point, _fixed(i.expr, defaults), i.positive, i.negative)
                                    for i in compiled.indicators]
     return CheckSetup(
         system=fixed,
         indicators=indicators,
-        branches=tuple((b.labels, frozen({u: v.xreplace(defaults) for u, v in b.values.items()}),
-                        frozen({p: d.xreplace(defaults) for p, d in b.discriminants.items()})) for b in branches),
+        branches=tuple((b.labels, frozen({u: _fixed(v, defaults) for u, v in b.values.items()}),
+                        frozen({p: _fixed(d, defaults) for p, d in b.discriminants.items()})) for b in branches),
         inputs=frozen(inputs), parameters=compiled.parameter_values)
+
+
+def _fixed(expr: sympy.Expr, defaults: Mapping[sympy.Symbol, object]) -> sympy.Expr:
+    """``expr`` with the dimensions at their ``defaults`` (itself where there are none: no walk of its tree)."""
+    return expr.xreplace(defaults) if defaults else expr
 
 
 def verify_prepared(prepared: Prepared, *, samples: int, seed: int, polynomials: Mapping[str, PolynomialLike],

@@ -22,7 +22,7 @@ from ..errors import SceneError, UsageError
 from ..runtime.frozen import FrozenDict, frozen
 from ..system import System, symbol
 from ..system.between import simplest_between
-from ..system.convert import rational_polynomial, univariate
+from ..system.convert import expanded, rational_polynomial, univariate
 from ..system.roots import real_roots
 from .constructions import Builder, Construction, Crank, Dyad, Indicator, Unbuildable
 from .driven import driven_angles, root_of
@@ -273,7 +273,7 @@ def compile_scene(scene: SceneLike, outputs: Sequence[str] | None = None, params
     for name in points:
         construction = checked_construction(scene, name, substitution=substitution, bits=bits, inputs=inputs)
         if isinstance(construction, Dyad):
-            bases = [tuple(sympy.expand(v.xreplace(everywhere)) for v in coords[b]) for b in construction.bases]
+            bases = [tuple(expanded(v.xreplace(everywhere)) for v in coords[b]) for b in construction.bases]
             _check_bases(scene, name, construction, bases)
             why = _never_meets(construction, bases, [length.xreplace(everywhere) for length in construction.lengths])
             if why:
@@ -283,13 +283,13 @@ def compile_scene(scene: SceneLike, outputs: Sequence[str] | None = None, params
             x, y = construction.build(name, coords, builder)
         except Unbuildable as err:
             raise SceneError(scene.source, f"points.{name}", str(err)) from None
-        coords[name] = (sympy.expand(x), sympy.expand(y))
+        coords[name] = (expanded(x), expanded(y))
         _check_rational(scene, name, [*coords[name], *builder.equations[made:]])
         _check_reach(scene, name, coords[name])
     lengths = {v for c in scene.points.values() for length in _lengths(c) for v in length.free_symbols}
     definitions, output_unknowns, nonnegative, angles = _output_equations(resolved, coords, builder, lengths=lengths,
                                                                           source=scene.source)
-    equations = [sympy.expand(eq) for eq in builder.equations]
+    equations = [expanded(eq) for eq in builder.equations]
     equations += [pair[0]**2 + pair[1]**2 - 1 for pair in inputs.values() if len(pair) == 2]
     _check_polynomial(scene, equations, symbolic)
     used = set().union(*(eq.free_symbols for eq in equations)) if equations else set()
@@ -507,7 +507,7 @@ def _check_bases(scene: Scene, name: str, dyad: Dyad, bases: Sequence[Point]) ->
     crank twice; ``bases``: their coordinates, every dimension at its default) make two circles
     about one centre: no point, or a whole circle of them. Bad input, refused by name."""
     (px, py), (qx, qy) = bases
-    if sympy.expand(px - qx) == 0 and sympy.expand(py - qy) == 0:
+    if expanded(px - qx) == 0 and expanded(py - qy) == 0:
         where = f" at ({px}, {py})" if px.is_number and py.is_number else ""
         raise SceneError(scene.source, f"points.{name}", f"bases coincide: {dyad.bases[0]} and {dyad.bases[1]} are "
                          f"one point{where} for every input (its two circles have one centre)")

@@ -5,6 +5,7 @@ import math
 
 import attrs
 import sympy
+from mpmath.libmp import from_rational, mpf_mul, mpf_pi, mpf_pos, round_nearest, to_float
 
 from ..runtime.frozen import FrozenDict, frozen
 from .constraints import Constraint
@@ -15,6 +16,7 @@ __all__ = ["Scene", "Input", "DrivenInput", "Output", "range_problem", "length_r
 # The motion repeats after a turn; a range past two turns or far from zero only multiplies
 # the work (certificates and samples are spread over it).
 MAX_SPAN_DEGREES = 720
+_EVALF_BITS = 53 + 4  # the precision sympy's float() evaluates at
 MAX_ABS_DEGREES = 36000
 
 
@@ -46,6 +48,22 @@ def length_range_problem(lo: sympy.Rational, hi: sympy.Rational) -> str | None:
     return None
 
 
+def _sympys_float_of_pi_times(coefficient: sympy.Rational) -> float:
+    """``float(coefficient * sympy.pi)``, the same float: sympy evaluates at 4 bits past a float's 53
+    (``EvalfMixin.evalf``), a product's factors rounded down at 7 more (``evalf_mul``, ``evalf_rational``,
+    ``mpf_pi``) and their product to the nearest, then rounds to 53 bits again (``Float._new``): not
+    always the nearest float, so done the same way here."""
+    if coefficient == 0:
+        return 0.0
+    if coefficient == 1:  # pi alone, not a product
+        value = mpf_pi(_EVALF_BITS)
+    else:
+        factors = _EVALF_BITS + 2 + 5  # evalf_mul's working precision for two factors
+        value = mpf_mul(from_rational(int(coefficient.p), int(coefficient.q), factors), mpf_pi(factors),
+                        _EVALF_BITS, round_nearest)
+    return float(to_float(mpf_pos(value, 53, round_nearest)))
+
+
 @attrs.frozen
 class Input:
     """What drives the mechanism: an angle (``lo``/``hi`` in ``unit``, 'deg' or 'rad') or, with
@@ -75,9 +93,18 @@ class Input:
             return (sympy.Symbol(self.name, real=True),)
         return (sympy.Symbol(f"c_{self.name}", real=True), sympy.Symbol(f"s_{self.name}", real=True))
 
-    def to_radians(self, value: sympy.Expr) -> sympy.Expr:
-        """``value`` in the unit the system takes it in: radians for an angle, a length as it is."""
-        return value * sympy.pi / 180 if self.unit == "deg" else value
+    def radians(self, value: sympy.Rational) -> float:
+        """``value`` in the unit the system takes it in, as a float: radians for an angle, a length as it
+        is. Degrees are turned as sympy's ``float(value * pi / 180)`` turns them, its rounding step
+        for step (``_sympys_float_of_pi_times``), without its evalf (whose first call builds its
+        tables: most of a millisecond of a cold command).
+
+        >>> Input("t", sympy.Integer(0), sympy.Integer(360)).radians(sympy.Integer(360))
+        6.283185307179586
+        """
+        if self.unit != "deg":
+            return float(value)
+        return _sympys_float_of_pi_times(sympy.Rational(value) / 180)
 
     @property
     def span(self) -> tuple[float, float]:

@@ -85,15 +85,19 @@ class System:
     nonnegative: tuple[str, ...] = ()
 
     def __attrs_post_init__(self) -> None:
-        from .convert import rational_polynomial  # convert builds on this module
+        from .convert import to_flint  # convert builds on this module
 
-        known = set(self.variables)
+        known, ring = set(self.variables), self._ring()
+        polynomials = []
         for eq in self.equations:
             stray = set(variables_of(eq)) - known
             if stray:
                 raise ComputationError(f"equation {eq} uses undeclared variables {sorted(stray)}")
-            if not rational_polynomial(eq):
-                raise ComputationError(f"equation {eq} has coefficients outside the rationals")
+            try:  # checked by converting it, once: ``polynomials`` (its cached value, set below)
+                polynomials.append(to_flint(eq, ring))
+            except TypeError:  # a root, a float, a quotient: not over the rationals
+                raise ComputationError(f"equation {eq} has coefficients outside the rationals") from None
+        object.__setattr__(self, "polynomials", tuple(polynomials))
 
     @property
     def input_variables(self) -> tuple[str, ...]:
@@ -105,22 +109,37 @@ class System:
 
     @functools.cached_property
     def polynomials(self) -> tuple[flint.fmpq_mpoly, ...]:
-        """The equations as python-flint polynomials over ``variables`` (lex), converted once
-        here, at the edge, so that every elimination of the system starts in python-flint.
+        """The equations as python-flint polynomials over ``variables`` (lex), converted once, as the
+        system is made and checked (``__attrs_post_init__``; here for a system unpickled, which is
+        not made again), so that every elimination of the system starts in python-flint.
 
         >>> x, c = sympy.symbols("x c")
         >>> System(("x",), (), {"t": ("c",)}, (x**2 - c,)).polynomials
         (x^2 - c,)
         """
-        from .convert import flint_context, to_flint
+        from .convert import to_flint
 
-        ring = flint_context(self.variables or ("_",))
+        ring = self._ring()
         return tuple(to_flint(e, ring) for e in self.equations)
+
+    def _ring(self) -> flint.fmpq_mpoly_ctx:
+        from .convert import flint_context  # convert builds on this module
+
+        return flint_context(self.variables or ("_",))
 
     def to_json(self) -> dict[str, Any]:
         return {
             "unknowns": list(self.unknowns),
             "parameters": list(self.parameters),
             "inputs": inputs_json(self.inputs),
-            "equations": [str(eq) for eq in self.equations],
+            "equations": self._equation_texts(),
         }
+
+    def _equation_texts(self) -> list[str]:
+        """``str`` of each equation, written from python-flint (``sympy_text``) where the equation is the
+        expression ``to_sympy`` makes of its polynomial, as the compiler's are: sympy's printing of a
+        six-bar's equations took milliseconds of a cold command."""
+        from .convert import sympy_text, to_sympy  # convert builds on this module
+
+        return [sympy_text(p, p.context()) if e == to_sympy(p, p.context()) else str(e)
+                for e, p in zip(self.equations, self.polynomials)]

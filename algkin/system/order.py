@@ -6,8 +6,9 @@ sympy computes a sum's order again wherever the sum is a factor's sort key or pr
 term's coefficient to a complex (through ``evalf``) although the coefficients only break ties between terms
 of one monomial, which a sum never has but for number factors like ``sqrt(2)``: most of the time of
 writing a closed form. ``PrintOrder`` keeps each order and key, and converts the coefficients of a sum
-only where two of its terms tie. A root of a product among a term's factors is still evaluated once
-(``decompose_power``): the assumptions it asks of each factor's sign decide the generator sympy sorts by.
+only where two of its terms tie. A root of a product among a term's factors is evaluated once
+(``decompose_power``): the assumptions it asks of each factor's sign decide the generator sympy sorts by;
+where balls at rational points show that no sign can be known, its answer is known without asking.
 
 >>> c = sympy.Symbol("c")
 >>> expr = 3*c**2 - c*sympy.sqrt(c + 1) + 5
@@ -22,6 +23,8 @@ import sympy
 from sympy.core.exprtools import decompose_power
 from sympy.core.numbers import NumberSymbol
 from sympy.core.sorting import default_sort_key
+
+from .signs import signs_unknowable
 
 __all__ = ["PrintOrder"]
 
@@ -165,8 +168,26 @@ class PrintOrder:
         key = (type(factor), factor)
         found = self._powers.get(key)
         if found is None:
-            found = self._powers[key] = decompose_power(factor)
+            found = self._powers[key] = _whole_root(factor) or decompose_power(factor)
         return found
+
+
+def _whole_root(factor: sympy.Expr) -> tuple[sympy.Expr, int] | None:
+    """``decompose_power(factor)`` for a power of a square root of a product of real symbols' expressions
+    whose signs sympy cannot know, without its questions of them (tens of milliseconds for a six-bar's root
+    over roots): None where not shown so (sympy then answers).
+
+    sympy's root of a product (``Mul._eval_power``, ``Pow._eval_expand_power_base``) takes out the factors it
+    proves nonnegative (a number among them) or negative, and an imaginary unit where it proves the product
+    imaginary; else it keeps the root whole. Its assumptions hold for every real value of the symbols: a
+    factor positive at one real point and negative or not real at another is neither, and a product real
+    and not 0 at one point is not imaginary."""
+    if not (factor.is_Pow and factor.exp.is_Rational and factor.exp.q == 2 and type(factor.base) is sympy.Mul):
+        return None
+    base = factor.base
+    if not signs_unknowable(base.args):
+        return None
+    return sympy.Pow(sympy.Mul(*base.args), sympy.S.Half, evaluate=False), int(factor.exp.p)
 
 
 def _split_commutative(mul: sympy.Mul) -> tuple[list[sympy.Expr], list[sympy.Expr]]:

@@ -107,7 +107,7 @@ class _SharingPrinter(StrPrinter):  # type: ignore[misc, unused-ignore]  # sympy
         prec = self._precedence(expr)
         c, e = expr.as_coeff_Mul()
         if (c.p < 0 if isinstance(c, sympy.Rational) else c < 0):  # a rational's sign without a comparison's sympify
-            expr = _keep_coeff(-c, e)
+            expr = _opposite(c, e)
             sign = "-"
         else:
             sign = ""
@@ -150,6 +150,18 @@ def _product_precedence(product: sympy.Mul) -> int:
             hasattr(arg, "precedence") and isinstance(arg, Function) for arg in product.args):
         return int(precedence(product))
     return int(PRECEDENCE["Add"] if first.p < 0 else PRECEDENCE["Mul"])
+
+
+def _opposite(coefficient: sympy.Rational, rest: sympy.Expr) -> sympy.Expr:
+    """``_keep_coeff(-coefficient, rest)``, a positive number times a variable or its power put together as
+    sympy's product would be (number first): its constructor asks the power's assumptions (a closed form's
+    terms, sympy's str in a six-bar's document: milliseconds)."""
+    opposite = -coefficient
+    if opposite is sympy.S.One:
+        return rest
+    if rest.is_Symbol or rest.is_Pow and rest.base.is_Symbol and rest.exp.is_Integer:
+        return sympy.Mul._from_args((opposite, rest))
+    return _keep_coeff(opposite, rest)
 
 
 def _inverted(power: sympy.Expr) -> sympy.Expr:

@@ -26,6 +26,7 @@ cannot be proved is reported as such, never used.
 
 from __future__ import annotations
 
+import enum
 import functools
 from collections.abc import Callable, Sequence
 from typing import Protocol
@@ -45,6 +46,14 @@ from .solve import jacobian
 
 __all__ = ["BlockCertifier", "certifier_of", "certify_parameters"]
 
+
+class Unset(enum.Enum):
+    """No pencil given: the certifier finds its own."""
+
+    UNSET = "unset"
+
+
+UNSET = Unset.UNSET
 BOX = 2.0**-96  # the Krawczyk box's half-width, relative to the root's size
 ATTEMPTS = 4  # Newton steps tried before a candidate is given up (a near-double root needs more)
 
@@ -58,12 +67,15 @@ class Block(Protocol):
     def equations(self) -> Sequence[sympy.Expr]: ...
     @property
     def arguments(self) -> Sequence[str]: ...  # every variable it uses, its unknowns among them
+    @property
+    def pencil(self) -> Pencil | None: ...  # its two circles, where it is a pencil
 
 
 class BlockCertifier:
     """Proves float candidates of one block: ``equations`` in ``names``, given ``parameters``."""
 
-    def __init__(self, names: Sequence[str], equations: Sequence[sympy.Expr], parameters: Sequence[str]) -> None:
+    def __init__(self, names: Sequence[str], equations: Sequence[sympy.Expr], parameters: Sequence[str], *,
+                 pencil: Pencil | None | Unset = UNSET) -> None:
         unknowns = self.unknowns = [symbol(n) for n in names]
         self.equations, self.arguments = list(equations), list(names) + list(parameters)
         self.n = len(names)
@@ -71,7 +83,8 @@ class BlockCertifier:
         self.residual: BallProgram = compile_program(self.equations, self.arguments, ARB)
         self.identity = arb_mat([[int(i == j) for j in range(self.n)] for i in range(self.n)])
         self.explicit = _explicit(equations, unknowns, parameters)
-        self.pencil = Pencil.of(equations, unknowns, list(parameters))
+        # the solver's, where it found it already (the same block and parameters)
+        self.pencil = Pencil.of(equations, unknowns, list(parameters)) if isinstance(pencil, Unset) else pencil
 
     def __call__(self, candidate: Sequence[float], known: Sequence[arb],
                  inverse: NDArray[np.float64] | Callable[[], NDArray[np.float64]] | None = None) -> list[arb] | None:
@@ -185,4 +198,4 @@ def certify_parameters(block: Block) -> list[str]:
 def certifier_of(block: Block) -> BlockCertifier:
     """The ``BlockCertifier`` of a ``solve.Blocks`` block, compiled once and reused by later calls."""
     key = (tuple(block.names), tuple(block.equations), tuple(certify_parameters(block)))
-    return CERTIFIERS.get(key, lambda: BlockCertifier(*map(list, key)))
+    return CERTIFIERS.get(key, lambda: BlockCertifier(*map(list, key), pencil=block.pencil))

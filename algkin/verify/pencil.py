@@ -23,6 +23,7 @@ import operator
 from collections.abc import Mapping, Sequence
 from typing import TypeAlias
 
+import flint
 import numpy as np
 import sympy
 from flint import arb
@@ -30,7 +31,7 @@ from numpy.typing import NDArray
 
 from ..evaluate import ARB, NUMPY
 from ..evaluate.program import ArrayProgram, BallProgram, Floats, columns, compile_program
-from ..system.convert import coefficients
+from ..system.convert import flint_context, from_terms, to_flint
 from ..system.roots import quadratic_roots
 
 __all__ = ["Pencil"]
@@ -57,23 +58,35 @@ class Pencil:
 
     @classmethod
     def of(cls, equations: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol], known: list[str]) -> Pencil | None:
-        """The pencil of a block of ``equations`` in ``unknowns``, or ``None`` where it is not one."""
+        """The pencil of a block of ``equations`` in ``unknowns``, or ``None`` where it is not one.
+
+        Its combination is taken in python-flint: sympy's product of a number and an equation
+        asked the assumptions of every term, most of a cold verification's setup."""
         if len(equations) != 2:
             return None
-        polys = [coefficients(eq, unknowns) for eq in equations]
-        if any(sum(m) > 2 for p in polys for m in p):
+        others = sorted(set().union(*(eq.free_symbols for eq in equations)) - set(unknowns), key=lambda v: v.name)
+        names = [v.name for v in [*unknowns, *others]]
+        if len(set(names)) != len(names):
             return None
-        quadratic = [[p.get(m, sympy.Integer(0)) for m in MONOMIALS[:3]] for p in polys]
+        ring = flint_context(names)
+        try:
+            polys = [to_flint(eq, ring) for eq in equations]
+        except TypeError:  # not polynomials over the rationals
+            return None
+        if any(sum(m[:2]) > 2 for p in polys for m in p.monoms()):
+            return None
+        found = [[_number(p, m) for m in MONOMIALS[:3]] for p in polys]
+        quadratic = [[q for q in row if q is not None] for row in found]
         # the combination q2 * first - q1 * second must cancel every quadratic term, with numbers
-        pivot = next((k for k in range(3) if quadratic[0][k] != 0), None)
-        if pivot is None or any(not sympy.sympify(q).is_number for row in quadratic for q in row):
+        pivot = next((k for k in range(3) if found[0][k] != 0), None)
+        if pivot is None or any(len(row) < 3 for row in quadratic):
             return None
         q1, q2 = quadratic[0][pivot], quadratic[1][pivot]
-        if any(sympy.simplify(q2 * a - q1 * b) != 0 for a, b in zip(*quadratic)):
+        if any(q2 * a - q1 * b != 0 for a, b in zip(*quadratic)):
             return None
-        line = coefficients(q2 * equations[0] - q1 * equations[1], unknowns)
-        return cls([polys[0].get(m, sympy.Integer(0)) for m in MONOMIALS],
-                   [line.get(m, sympy.Integer(0)) for m in MONOMIALS[3:]], known)
+        first, line = _split(polys[0], others), _split(q2 * polys[0] - q1 * polys[1], others)
+        zero = sympy.Integer(0)
+        return cls([first.get(m, zero) for m in MONOMIALS], [line.get(m, zero) for m in MONOMIALS[3:]], known)
 
     def solve(self, values: Mapping[str, Floats], count: int) -> tuple[NDArray[np.intp], Floats, Floats]:
         """``(parent rows, u, v)`` in floats: the real solutions of every row (a double root counts twice)."""
@@ -147,3 +160,20 @@ class Pencil:
             roots.append([t, dependent] if swap else [dependent, t])
         return roots
 
+
+def _number(poly: flint.fmpq_mpoly, monomial: tuple[int, int]) -> flint.fmpq | None:
+    """The coefficient of ``monomial`` of the two unknowns (the ring's first two variables) in
+    ``poly``, where it is a number (0 where there is no such term); None where it holds other variables."""
+    terms = [(m, c) for m, c in zip(poly.monoms(), poly.coeffs()) if tuple(m[:2]) == monomial]
+    if any(any(m[2:]) for m, _ in terms):
+        return None
+    return terms[0][1] if terms else flint.fmpq(0)
+
+
+def _split(poly: flint.fmpq_mpoly, others: Sequence[sympy.Symbol]) -> dict[tuple[int, ...], sympy.Expr]:
+    """``poly``'s coefficients in the two unknowns (the ring's first two variables), each a sympy
+    expression in ``others``: ``convert.coefficients`` of the same polynomial, the same expressions."""
+    split: dict[tuple[int, ...], dict[tuple[int, ...], flint.fmpq]] = {}
+    for exponents, coefficient in zip(poly.monoms(), poly.coeffs()):
+        split.setdefault(tuple(exponents[:2]), {})[tuple(exponents[2:])] = coefficient
+    return {exponents: from_terms(terms, others) for exponents, terms in split.items()}

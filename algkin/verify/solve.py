@@ -18,11 +18,14 @@ out are candidates: ``balls.Certifier`` proves each one (or not) on the original
 
 from __future__ import annotations
 
+import functools
 import itertools
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
+from fractions import Fraction
 from typing import TypeAlias
 
+import flint
 import numpy as np
 import sympy
 from numpy.typing import NDArray
@@ -54,11 +57,12 @@ class Blocks:
         self.system = system
         self.names = list(system.variables)
         unknown = {symbol(u) for u in system.unknowns}
-        pending = [eq for eq in system.equations if eq.free_symbols & unknown]
+        moving = [k for k, eq in enumerate(system.equations) if eq.free_symbols & unknown]
+        pending = [system.equations[k] for k in moving]
         # Coordinates are about as large as the lengths, whose squares are coefficients: Newton's
-        # starts must spread over that size too, not only over the known values (cos, sin).
-        self.size = max((abs(float(c)) ** 0.5 for eq in pending
-                         for c in coefficients(eq, sorted(eq.free_symbols, key=str)).values()), default=0.0)
+        # starts must spread over that size too, not only over the known values (cos, sin). The
+        # coefficients are the system's python-flint polynomials' (converted once, for the elimination)
+        self.size = max((abs(_float(c)) ** 0.5 for k in moving for c in system.polynomials[k].coeffs()), default=0.0)
         solved: set[str] = set()
         self.blocks: list[_Block] = []
         self.equations: list[sympy.Expr] = []
@@ -92,6 +96,8 @@ class _Block:
         # Newton solves a linear block in one step from anywhere: one start is enough
         terms = [coefficients(eq, unknowns) for eq in equations]
         self.linear = all(sum(m) <= 1 for t in terms for m in t)
+        self.unknowns = unknowns
+        self.pencil: Pencil | None = None  # two circles (or a circle and a line): the certifier's too
         if len(names) == 1:
             degree = max(m[0] for m in terms[0])
             highest_first = [terms[0].get((d,), sympy.Integer(0)) for d in range(degree, -1, -1)]
@@ -100,8 +106,18 @@ class _Block:
         else:
             self.coefficients = None
             self.residual: ArrayProgram = compile_program(equations, arguments, NUMPY)
-            self.jacobian: ArrayProgram = compile_program(jacobian(equations, unknowns), arguments, NUMPY)
             self.pencil = Pencil.of(equations, unknowns, [a for a in arguments if a not in names])
+
+    @functools.cached_property
+    def jacobian(self) -> ArrayProgram:
+        """The Jacobian as a program, differentiated when first needed: a block its pencil solves
+        and proves never needs it."""
+        return compile_program(jacobian(self.equations, self.unknowns), self.arguments, NUMPY)
+
+
+def _float(value: flint.fmpq) -> float:
+    """``float(sympy.Rational(value))``: the nearest float (``Fraction``'s division rounds correctly too)."""
+    return float(Fraction(int(value.p), int(value.q)))
 
 
 def _magnitude(coefficient: sympy.Expr) -> sympy.Expr:

@@ -5,7 +5,8 @@ from hypothesis import assume, example, given, strategies as st
 
 from sympy.core.mul import _keep_coeff
 
-from algkin.branches.algebra import primitive_sum, product, times, total, unsplit_root
+from algkin.branches.algebra import (factored_terms, primitive_sum, product, product_root, times, total,
+                                    unsplit_root)
 
 C, S = sympy.symbols("c s", real=True)
 numbers = st.fractions(min_value=0, max_value=10**6, max_denominator=10**6).filter(bool)  # surds and squares
@@ -22,6 +23,42 @@ def test_a_root_of_a_product_of_unknown_sign_is_sympys(number, factors):
     assume(expr.is_extended_nonnegative is None)  # not a square: sqrt(p**2) is sympy's Abs(p)
     written, sympys = unsplit_root(expr), sympy.sqrt(expr)
     assert written == sympys and written.args == sympys.args and str(written) == str(sympys)
+
+
+# sums of monomials of any sign, sympy's known or not (c**2 + s**2 + 1 > 0, -c**2 <= 0), and their squares
+any_sums = st.lists(st.tuples(st.integers(-50, 50).filter(bool), st.integers(0, 4), st.integers(0, 3)),
+                    min_size=1, max_size=5).map(lambda terms: sympy.Add(*[k * C**i * S**j for k, i, j in terms])
+                                                ).filter(lambda p: not p.is_number)
+L = sympy.Symbol("l", positive=True)  # sympy knows l > 0: 5 - 4*l could be taken for either sign
+
+
+@given(numbers, st.lists(st.one_of(any_sums, any_sums.map(lambda p: p**2), st.sampled_from([5 - 4 * L, L + 1])),
+                         min_size=1, max_size=3, unique=True))
+@example(4, [5 - 4 * C, C + 5])  # the Chebyshev lambda's dyad
+@example(4, [C**2 + 1, C + 5])  # a factor sympy proves positive is taken out of the root
+def test_a_root_of_a_product_is_sympys(number, factors):
+    expr = sympy.Mul(sympy.Rational(number.numerator, number.denominator), *factors)
+    written, sympys = product_root(expr), sympy.sqrt(expr)
+    assert written == sympys and written.args == sympys.args and str(written) == str(sympys)
+
+
+A, B = sympy.symbols("a b")  # no assumptions
+monomials = st.tuples(st.sampled_from([1, 2, 3]), st.integers(0, 3), st.integers(0, 2), st.integers(0, 1)).map(
+    lambda p: p[0] * C**p[1] * S**p[2] * A**p[3])
+terms = st.tuples(st.integers(-60, 60).filter(bool) | st.fractions(-5, 5, max_denominator=4).filter(bool).map(
+    lambda q: sympy.Rational(q.numerator, q.denominator)), monomials).map(lambda p: p[0] * p[1])
+
+
+@given(st.lists(terms, min_size=1, max_size=5) | st.lists(terms, min_size=1, max_size=3).map(
+    lambda ts: [sympy.sqrt(2) * B * t for t in ts]))
+@example([5, -4 * C])
+@example([-4 * C, -5])
+@example([C * S, C])
+@example([6, -4 * C])
+def test_factored_terms_is_sympys(summands):
+    expr = sympy.Add(*summands)
+    ours, sympys = factored_terms(expr), sympy.factor_terms(expr)
+    assert ours == sympys and str(ours) == str(sympys)
 
 
 X = sympy.Symbol("x")  # no assumptions: sympy asks nothing of its sign

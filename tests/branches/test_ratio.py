@@ -80,10 +80,11 @@ def _terms_over_polynomials(draw):
         over = draw(st.sampled_from([1, 1, 8 * C - 17, 128 * C - 272, X + 1, C**2 - 2 * X + 3, *ROOTED]))
         terms.append(sympy.Rational(draw(st.integers(-20, 20)), draw(st.integers(1, 4))) * monomial * root / over)
     total = sympy.Add(*terms)
-    return total ** draw(st.sampled_from([1, 1, 2]))
+    # squared only up to three terms: sympy's cancel of a squared four-term sum, expanded, took seconds a draw
+    return total ** draw(st.sampled_from([1, 1, 2] if len(terms) < 4 else [1]))
 
 
-@pytest.mark.slow  # about 30 s: sympy's cancel on each draw
+@pytest.mark.slow  # about 15 s: sympy's cancel on each draw
 @settings(max_examples=150, deadline=None)
 @given(_terms_over_polynomials(), _terms_over_polynomials(), st.booleans(), st.booleans(), st.integers(-3, 3))
 def test_the_very_expression_sympys_cancel_gives_on_closed_forms(top, bottom, expand_top, expand_bottom, shift):

@@ -1,8 +1,15 @@
 """A scene moved away (``Scene.translated``, the accuracy run's far case) is the same mechanism: its
-ground points and the configurations that name its modes move together, its modes stay the ones meant."""
+ground points and the configurations that name its modes move together, its modes stay the ones meant;
+an input's range in radians is the float sympy's pi gives."""
+
+from fractions import Fraction
+
+import sympy
+from hypothesis import example, given, strategies as st
 
 from algkin.derivation.modes import resolve_modes
 from algkin.scene import load_scene
+from algkin.scene.model import Input
 
 FAR = 10**7
 
@@ -15,3 +22,13 @@ def test_a_mode_named_by_a_configuration_moves_with_the_scene():
     assert moved.points["C"].mode.near == (scene.points["C"].mode.near[0] + FAR, scene.points["C"].mode.near[1] + FAR)
     assert (moved.points["O"].x, moved.points["O"].y) == (FAR, FAR)
     assert resolve_modes(moved).points["C"].branch == resolve_modes(scene).points["C"].branch
+
+
+@given(st.fractions(-36000, 36000, max_denominator=10**6))
+@example(Fraction(360))
+@example(Fraction(-90))
+@example(Fraction(1, 3))
+def test_an_angle_in_radians_is_the_float_sympy_rounds_it_to(degrees):
+    value = sympy.Rational(degrees.numerator, degrees.denominator)
+    assert Input("t", value, value + 1).radians(value) == float(value * sympy.pi / 180)
+    assert Input("t", value, value + 1, "rad").radians(value) == float(value)

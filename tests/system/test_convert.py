@@ -7,7 +7,9 @@ import pytest
 from hypothesis import given, strategies as st
 import sympy
 
-from algkin.system.convert import coefficients as coefficients_of, flint_context, from_terms, sympy_text, to_flint, to_sympy
+from algkin.system import convert
+from algkin.system.convert import (coefficients as coefficients_of, expanded, flint_context, from_terms, sympy_text, to_flint,
+                                   to_sympy)
 
 NAMES = ["x", "y", "z"]
 GENS = [sympy.Symbol(n, real=True) for n in NAMES]
@@ -51,9 +53,11 @@ coefficients = st.one_of(st.sampled_from([1, -1, 2, -3]), st.integers(-10**40, 1
                          st.fractions(max_denominator=7).filter(bool))
 
 
-@given(st.lists(st.sampled_from(TEXT_NAMES), min_size=1, max_size=4, unique=True),
+@given(st.lists(st.sampled_from(TEXT_NAMES), min_size=1, max_size=4, unique=True), st.booleans(),
        st.lists(st.tuples(coefficients, st.lists(st.integers(0, 4), min_size=4, max_size=4)), max_size=10))
-def test_sympy_text_is_how_sympy_writes_the_polynomial(names, term_list):
+def test_sympy_text_is_how_sympy_writes_the_polynomial(names, in_sympys_order, term_list):
+    if in_sympys_order:  # as sympy sorts its symbols: FLINT's own text is taken where the coefficients are integers
+        names = sorted(names, key=lambda n: sympy.Symbol(n).sort_key())
     ctx = flint_context(names)
     poly = ctx.from_dict({tuple(exps[:len(names)]): flint.fmpq(c.numerator, c.denominator) for c, exps in term_list})
     assert sympy_text(poly, ctx) == str(to_sympy(poly, ctx))
@@ -91,3 +95,57 @@ def test_coefficients_are_sympys_polys_terms(term_list, power):
 def test_coefficients_refuse_two_symbols_of_one_name():
     with pytest.raises(TypeError, match="two symbols of one name"):
         coefficients_of(GENS[0] + sympy.Symbol("x"), GENS[:1])
+
+
+def test_sympy_text_writes_rational_coefficients_without_sympy(monkeypatch):
+    ctx = flint_context(["y", "x"])
+    y, x = ctx.gens()
+    polys = [x**2 / 3 - 2 * x * y / 5 - flint.fmpq(1, 2), flint.fmpq(1, 2) - x / 3, -x * y**2 / 7 + 4 * y / 3]
+    expected = [str(to_sympy(p, ctx)) for p in polys]
+    assert expected == ["x**2/3 - 2*x*y/5 - 1/2", "1/2 - x/3", "-x*y**2/7 + 4*y/3"]  # as sympy writes them
+    monkeypatch.setattr(convert, "to_sympy", _refuse_sympy)
+    assert [sympy_text(p, ctx) for p in polys] == expected
+
+
+def _refuse_sympy(poly, ctx):
+    raise AssertionError(f"converted to sympy: {poly}")
+
+
+class _WrittenWhole:
+    """A polynomial whose terms refuse to be read one by one in Python: only FLINT writes it."""
+
+    def __init__(self, poly):
+        self.poly = poly
+
+    def __str__(self):
+        return str(self.poly)
+
+    def __len__(self):
+        return len(self.poly)
+
+    def to_dict(self):
+        raise AssertionError("its terms read one by one")
+
+
+def test_sympy_text_of_integer_coefficients_in_sympys_order_is_flints_own_text():
+    ctx = flint_context(["P_x", "P_y", "c_theta"])  # sympy's order: capitals first
+    px, py, c = ctx.gens()
+    poly = 3 * px**2 * c - px * py**3 + 10**30 * c - 1
+    expected = str(to_sympy(poly, ctx))
+    assert expected == "3*P_x**2*c_theta - P_x*P_y**3 + 1000000000000000000000000000000*c_theta - 1"
+    assert sympy_text(_WrittenWhole(poly), ctx) == expected
+
+
+A = sympy.Symbol("a")  # no assumptions, beside GENS' real ones
+LEAVES = st.sampled_from([*GENS, A, sympy.sqrt(2), sympy.Float(0.5)]) | st.fractions(-7, 7, max_denominator=5).map(
+    lambda q: sympy.Rational(q.numerator, q.denominator))
+EXPRESSIONS = st.recursive(LEAVES, lambda children: (
+    st.tuples(children, children).map(lambda p: p[0] + p[1]) | st.tuples(children, children).map(lambda p: p[0] * p[1])
+    | st.tuples(children, st.integers(-2, 4)).filter(lambda p: p[0] != 0 or p[1] > 0).map(lambda p: p[0] ** p[1])
+    | children.map(lambda e: e / 3)), max_leaves=12)
+
+
+@given(EXPRESSIONS)
+def test_expanded_is_sympys_expansion(expr):
+    ours, sympys = expanded(expr), sympy.expand(expr)
+    assert ours == sympys and str(ours) == str(sympys)

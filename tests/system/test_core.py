@@ -2,8 +2,10 @@
 
 import pytest
 import sympy
+from sympy.printing.str import StrPrinter
 
 from algkin.errors import ComputationError
+from algkin.scene import compile_scene, load_scene
 from algkin.system import System, symbol
 
 x, c, s = symbol("x"), symbol("c"), symbol("s")
@@ -26,3 +28,22 @@ def test_a_coefficient_outside_the_rationals_is_named(coefficient):
 def test_a_quotient_by_a_variable_is_no_polynomial():
     with pytest.raises(ComputationError, match="outside the rationals"):
         _system(x - 1 / c)
+
+
+def _refuse_printing(self, expr):
+    raise AssertionError(f"sympy printed {expr}")
+
+
+@pytest.mark.parametrize("name", ["fourbar", "stephenson-iii", "watt-i", "chebyshev-lambda"])
+def test_a_compiled_systems_equations_are_written_as_sympy_writes_them_without_sympys_printer(name, monkeypatch):
+    system = compile_scene(load_scene(name)).system
+    expected = [str(e) for e in system.equations]
+    monkeypatch.setattr(StrPrinter, "doprint", _refuse_printing)
+    assert system.to_json()["equations"] == expected
+
+
+def test_an_equation_not_as_its_polynomial_is_written_by_sympy():
+    # (x - c)**2 unexpanded: written as given, not as its expanded polynomial
+    equation = (x - c) ** 2 - s / 2
+    assert _system(equation).to_json()["equations"] == ["-s/2 + (-c + x)**2", "c**2 + s**2 - 1"] == \
+        [str(equation), str(c**2 + s**2 - 1)]

@@ -4,7 +4,9 @@ character, however many subexpressions the expressions of one document share."""
 import pytest
 import sympy
 from hypothesis import given, settings, strategies as st
+from sympy.core.mul import _keep_coeff
 
+from algkin.system import text as text_module
 from algkin.system.text import ExpressionText
 
 from .closed_forms import CLOSED_FORMS
@@ -71,3 +73,17 @@ def test_a_negative_product_and_its_parts_are_written_as_str_writes_them():
              sympy.Mul(c, sympy.Pow(sympy.Mul(c + 1, s), -1, evaluate=False), evaluate=False)]
     text = ExpressionText()
     assert [text(e) for e in exprs] == [str(e) for e in exprs]
+
+
+def test_a_negative_multiple_of_a_variable_or_its_power_is_written_without_sympys_product(monkeypatch):
+    # sympy's product of the number and the power asks the power's assumptions, each term of a closed form
+    exprs = [-3 * c**2 + s, -sympy.Rational(2, 7) * c * s - c**3 / 5 + 1, -c - sympy.Float(2.5) * s**4]
+    expected = [str(e) for e in exprs]
+
+    def refuse(coefficient, rest, *args, **kwargs):
+        if not rest.is_Mul:  # a product's factors are taken as they are: no question asked
+            raise AssertionError(f"sympy's product of {coefficient} and {rest}")
+        return _keep_coeff(coefficient, rest, *args, **kwargs)
+
+    monkeypatch.setattr(text_module, "_keep_coeff", refuse)
+    assert [ExpressionText()(e) for e in exprs] == expected

@@ -26,14 +26,16 @@ accurate to a few ulps even for needle triangles.
 from collections.abc import Callable, Sequence
 
 import attrs
+import flint
 import numpy as np
 import sympy
 
 from ...evaluate.program import numpy_function
 from ...scene.implicit import DyadSpec
-from ...scene.implicit.algebra import Circles
+from ...scene.implicit.algebra import HALF, Circles, reduce_exact_on_circles
+from ...system.convert import from_terms, to_flint
 from ...scene.implicit.base import FloatArray, Point
-from ..algebra import reducer, tidy_product, tidy_ratio, unsplit_root
+from ..algebra import product, product_root, reducer, tidy_product, tidy_ratio, total, unsplit_root
 from ..tower import Tower, Unsupported, roots_in
 from .base import BranchAlgebra, Fix, HalfAngle, Mode, StableEvaluator, Substitution
 from .floats import heron_area, stable_quadratic
@@ -56,20 +58,28 @@ class DyadAlgebra(BranchAlgebra):
                 return _nested_modes(base, self.spec.lengths, inputs)
             except Unsupported:
                 pass
-        reduce = reducer(substitution, inputs)
-        px, py = (reduce(v) for v in self.spec.base_p)
-        qx, qy = (reduce(v) for v in self.spec.base_q)
-        dx, dy = reduce(qx - px), reduce(qy - py)
-        dist2 = reduce(dx**2 + dy**2)
         l1, l2 = self.spec.lengths
+        reduced = _reduced_in_flint(base, (l1, l2), inputs)
+        if reduced is None:
+            reduce = reducer(substitution, inputs)
+            px, py = (reduce(v) for v in self.spec.base_p)
+            qx, qy = (reduce(v) for v in self.spec.base_q)
+            dx, dy = reduce(qx - px), reduce(qy - py)
+            dist2 = reduce(dx**2 + dy**2)
+            extended, folded = reduce((l1 + l2) ** 2 - dist2), reduce(dist2 - (l1 - l2) ** 2)
+        else:
+            px, py, qx, qy, dx, dy, dist2, extended, folded = reduced
         along = tidy_ratio((l1**2 - l2**2 + dist2) / (2 * dist2))
-        disc = tidy_product(reduce((l1 + l2) ** 2 - dist2), reduce(dist2 - (l1 - l2) ** 2))
+        disc = tidy_product(extended, folded)
         spread = tidy_product(dist2)
-        half_root = sympy.sqrt(disc) / 2  # both modes' (the root of a product: sympy asks each factor's sign)
+        # both modes'; ``product``: sympy's ``/ 2`` asks the root's assumptions again (a millisecond)
+        half_root = product(HALF, product_root(disc))
 
         def mode(sigma: int) -> tuple[Point, sympy.Expr]:
-            across = sigma * half_root / spread
-            return (px + along * dx - across * dy, py + along * dy + across * dx), disc
+            # sympy's products and sums, put together where that is all they do (``product``, ``total``)
+            across = product(sigma, half_root, 1 / spread)
+            return (total(px, product(along, dx), product(-1, across, dy)),
+                    total(py, product(along, dy), product(across, dx))), disc
         return mode
 
     def toggle_conditions(self) -> dict[str, sympy.Expr]:
@@ -81,6 +91,35 @@ class DyadAlgebra(BranchAlgebra):
     def stable_evaluator(self, *, fix: Fix, arguments: Sequence[sympy.Symbol], half_angles: Circles,
                          sigma: float) -> StableEvaluator:
         return _Stable(self.spec, fix=fix, arguments=arguments, half_angles=half_angles, sigma=sigma)
+
+
+def _reduced_in_flint(base: Sequence[sympy.Expr], lengths: tuple[sympy.Expr, sympy.Expr],
+                      inputs: Circles) -> list[sympy.Expr] | None:
+    """``modes``' polynomials, each reduced on the circles (``reduce_on_circles``, the same
+    expressions), computed in one python-flint ring from the base's coordinates ``(px, py, qx,
+    qy)``: ``px, py, qx, qy, dx, dy, |d|**2, (l1 + l2)**2 - |d|**2, |d|**2 - (l1 - l2)**2``. Each
+    went to python-flint and back, a sympy expression of the last built between (most of the rest
+    of a cold dyad's modes). None where they are not polynomials over the rationals (sympy's path)."""
+    circles = [v for circle in inputs for v in circle]
+    every = set().union(*(e.free_symbols for e in (*base, *lengths)), circles)
+    symbols = sorted(every, key=lambda v: v.name)
+    names = [v.name for v in symbols]
+    if len(set(names)) != len(names):
+        return None
+    ring = flint.fmpq_mpoly_ctx.get(tuple(names), "lex")
+    try:
+        px, py, qx, qy, l1, l2 = (to_flint(e, ring) for e in (*base, *lengths))
+    except TypeError:  # a root (a length's), a quotient: sympy's reduction
+        return None
+    def reduce(poly: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
+        reduced = reduce_exact_on_circles(poly, inputs)
+        assert reduced is not None  # every input's cos and sin are in the ring
+        return reduced
+    px, py, qx, qy = (reduce(v) for v in (px, py, qx, qy))
+    dx, dy = reduce(qx - px), reduce(qy - py)
+    dist2 = reduce(dx * dx + dy * dy)
+    polynomials = [px, py, qx, qy, dx, dy, dist2, reduce((l1 + l2) ** 2 - dist2), reduce(dist2 - (l1 - l2) ** 2)]
+    return [from_terms(p.to_dict(), symbols) for p in polynomials]
 
 
 class NestedModes:

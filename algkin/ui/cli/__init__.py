@@ -46,6 +46,10 @@ _ERROR_KINDS = ((UsageError, "usage"), (SceneError, "scene"), (BudgetExceeded, "
 ALGEBRA = ("sympy", "numpy", "numpy.random", "flint", "sympy.calculus.accumulationbounds",
            "sympy.matrices.expressions", "sympy.tensor.tensor")
 NO_ALGEBRA = frozenset({"list"})
+# A command's own heavy modules, loaded with the algebra and frozen with it: loaded by the command,
+# their objects sat in the young generations, walked by the collector while it computed (a
+# millisecond and more of a cold derive's total, the first time the collector reached them).
+OWN_MODULES = {command: ("algkin.derivation.pipeline",) for command in ("derive", "curve", "verify")}
 # Set (to anything), an unexpected exception propagates with its traceback instead of one line
 TRACEBACK = "ALGKIN_TRACEBACK"
 
@@ -142,20 +146,23 @@ def _run(args: argparse.Namespace, *, apart: bool = False) -> Outcome:
                            apart=apart and hasattr(args, "max_seconds")).start()
     args.deadline.note(f"starting {args.command}")  # until the command says more (its imports come first)
     work = functools.partial(COMMANDS[args.command], args)
-    return args.deadline.run(work if args.command in NO_ALGEBRA else functools.partial(_with_algebra, work))
+    return args.deadline.run(work if args.command in NO_ALGEBRA else
+                             functools.partial(_with_algebra, work, OWN_MODULES.get(args.command, ())))
 
 
-def _with_algebra(work: Callable[[], Outcome]) -> Outcome:
-    """``work()`` once the algebra it computes with (``ALGEBRA``) is imported, with the cyclic garbage
-    collector paused meanwhile and what was loaded then frozen out of its later collections
-    (``gc.freeze``): walking sympy's hundreds of thousands of objects again and again took about a
-    tenth of a cold command's wall time. Nothing to do where they are loaded already (in-process)."""
-    if all(name in sys.modules for name in ALGEBRA):
+def _with_algebra(work: Callable[[], Outcome], modules: Sequence[str] = ()) -> Outcome:
+    """``work()`` once the algebra it computes with (``ALGEBRA``) and the command's own ``modules`` are
+    imported, with the cyclic garbage collector paused meanwhile and what was loaded then frozen out
+    of its later collections (``gc.freeze``): walking sympy's hundreds of thousands of objects again
+    and again took about a tenth of a cold command's wall time. Nothing to do where they are loaded
+    already (in-process)."""
+    loaded = (*ALGEBRA, *modules)
+    if all(name in sys.modules for name in loaded):
         return work()
     collecting = gc.isenabled()
     gc.disable()
     try:
-        for name in ALGEBRA:
+        for name in loaded:
             importlib.import_module(name)
         gc.freeze()
     finally:

@@ -117,13 +117,18 @@ def good_json(runs, key):
     return json.loads(result.stdout)  # the whole of stdout is one JSON document
 
 
+def in_fresh_python(code, cwd):
+    """``python -c code`` in a process of its own, this checkout's algkin on its path."""
+    return subprocess.run([sys.executable, "-c", code], cwd=cwd, capture_output=True, text=True, timeout=120,
+                          env=dict(os.environ, PYTHONPATH=str(ROOT)))
+
+
 def test_list_imports_no_algebra(tmp_path):
     # Issue 35: `algkin list` took 4.4 s on a loaded machine, loading every scene through sympy to
     # print names and descriptions; it reads the catalog's files and imports no algebra.
     code = ("import sys; from algkin.ui.cli import main; code = main(['list']);"
             "print(sorted(m for m in ('sympy', 'flint', 'numpy', 'mpmath') if m in sys.modules), code)")
-    done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True, timeout=120,
-                          env=dict(os.environ, PYTHONPATH=str(ROOT)))
+    done = in_fresh_python(code, tmp_path)
     assert "chebyshev-lambda" in done.stdout, done.stderr
     assert done.stdout.splitlines()[-1] == "[] 0", done.stdout[-300:]
 
@@ -135,17 +140,27 @@ def test_a_computing_command_loads_the_algebra_first_and_freezes_it_out_of_the_c
             "with contextlib.redirect_stdout(io.StringIO()):\n"
             "    code = main(['derive', 'chebyshev-lambda', '--outputs', 'B'])\n"
             "print(before, gc.get_freeze_count() > 10**4, gc.isenabled(), code)")
-    done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True, timeout=120,
-                          env=dict(os.environ, PYTHONPATH=str(ROOT)))
+    done = in_fresh_python(code, tmp_path)
     assert done.stdout.splitlines()[-1] == "0 True True 0", done.stderr[-300:]
+
+
+def test_a_derivations_own_modules_are_frozen_with_the_algebra(tmp_path):
+    # loaded by the command after the freeze, the pipeline's objects were walked by the collector as
+    # the derivation ran (a millisecond and more of a cold derive's total)
+    code = ("import gc, io, sys, contextlib; from algkin.ui.cli import main\n"
+            "with contextlib.redirect_stdout(io.StringIO()):\n"
+            "    code = main(['derive', 'chebyshev-lambda', '--outputs', 'B'])\n"
+            "derive = sys.modules['algkin.derivation.pipeline'].derive\n"
+            "print(any(o is derive for o in gc.get_objects()), code)")
+    done = in_fresh_python(code, tmp_path)
+    assert done.stdout.splitlines()[-1] == "False 0", done.stdout[-300:] + done.stderr[-300:]
 
 
 def test_the_random_samples_module_is_loaded_with_the_algebra_not_in_the_verification(tmp_path):
     # numpy loads numpy.random on first use: 9 ms of the first verification's stage, timed as its work
     code = ("import sys; from algkin.ui.cli import _with_algebra;"
             "print(_with_algebra(lambda: 'numpy.random' in sys.modules))")
-    done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True, timeout=120,
-                          env=dict(os.environ, PYTHONPATH=str(ROOT)))
+    done = in_fresh_python(code, tmp_path)
     assert done.stdout.splitlines()[-1] == "True", done.stderr[-300:]
 
 
@@ -159,8 +174,7 @@ def test_sympys_first_sum_loads_nothing_once_the_algebra_is_loaded(tmp_path):
             "    sympy.Add(x * y, x, 3)\n"
             "    return sorted(set(sys.modules) - before)\n"
             "print(_with_algebra(work))")
-    done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True, timeout=120,
-                          env=dict(os.environ, PYTHONPATH=str(ROOT)))
+    done = in_fresh_python(code, tmp_path)
     assert done.stdout.splitlines()[-1] == "[]", done.stdout[-300:] + done.stderr[-300:]
 
 
