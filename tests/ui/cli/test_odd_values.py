@@ -9,6 +9,8 @@ from pathlib import Path
 
 import pytest
 
+from .in_process import first_apart, run_main
+
 ROOT = Path(__file__).resolve().parents[3]
 FIVE_BAR = (ROOT / "algkin" / "catalog" / "five-bar.toml").read_text()
 
@@ -17,6 +19,11 @@ def algkin(*args, cwd, timeout=300):
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     return subprocess.run([sys.executable, "-m", "algkin", *args], cwd=cwd, env=env, capture_output=True,
                           text=True, timeout=timeout)
+
+
+def refusal(*args, apart, cwd):
+    """``algkin args...`` as the program (``apart``: ``algkin``) or in this process (``run_main``)."""
+    return algkin(*args, cwd=cwd) if apart else run_main(args, cwd)
 
 
 def refused(done, *words):
@@ -65,15 +72,15 @@ def test_a_dimension_just_past_reach_written_huge_is_refused_as_its_round_value_
             "points.B", "never assemble")
 
 
-@pytest.mark.parametrize("args, words", [
+@pytest.mark.parametrize("args, words, apart", first_apart([
     (["derive", "fourbar", "--outputs", "B", "--param", "a", "--param", "a"], ["--param='a'", "given twice"]),
     (["derive", "fourbar", "--outputs", "B", "B"], ["--outputs='B'", "given twice"]),
     (["show", "fourbar", "--param", "d", "--param", "d"], ["--param='d'", "given twice"]),
     (["show", "fourbar", "--set", "a=2", "--set", "a=3"], ["--set='a=3'", "a is set twice"]),
     (["show", "fourbar", "--set", "a=2", "--set", "a=2"], ["--set='a=2'", "a is set twice"]),
-], ids=["param", "outputs", "show-param", "set-two-values", "set-same-value"])
-def test_a_name_given_twice_is_refused(tmp_path, args, words):
-    refused(algkin(*args, cwd=tmp_path), *words)
+], ids=["param", "outputs", "show-param", "set-two-values", "set-same-value"]))
+def test_a_name_given_twice_is_refused(tmp_path, args, words, apart):
+    refused(refusal(*args, apart=apart, cwd=tmp_path), *words)
 
 
 def test_ten_thousand_copies_of_a_param_are_refused_at_the_second(tmp_path):
@@ -88,7 +95,7 @@ def test_a_value_of_100000_digits_is_refused_in_a_short_line(tmp_path):
     assert len(line) < 200
 
 
-@pytest.mark.parametrize("args, words", [
+@pytest.mark.parametrize("args, words, apart", first_apart([
     (["show", "fourbar", "--set", "a=\u0661"], ["--set=", "ASCII"]),             # Arabic-Indic one
     (["show", "fourbar", "--set", "a=\uff12"], ["--set=", "ASCII"]),             # fullwidth two
     (["show", "fourbar", "--set", "a=2\u00a0"], ["--set=", "ASCII"]),            # a trailing no-break space
@@ -103,10 +110,10 @@ def test_a_value_of_100000_digits_is_refused_in_a_short_line(tmp_path):
     (["plot", "fourbar", "--out", "f.html", "--range-of", "a=0.5:\uff12"], ["--range-of"]),
     (["plot", "fourbar", "--out", "f.png", "--input", "\uff13\uff10"], ["--input"]),
 ], ids=["set-arabic-indic", "set-fullwidth", "set-no-break-space", "samples", "seed", "max-seconds", "max-terms",
-        "range", "grid-value", "grid-count", "grid-no-break-space", "range-of", "input"])
-def test_numbers_in_other_scripts_are_refused(tmp_path, args, words):
+        "range", "grid-value", "grid-count", "grid-no-break-space", "range-of", "input"]))
+def test_numbers_in_other_scripts_are_refused(tmp_path, args, words, apart):
     """Python's int(), float() and Fraction() read them; the tiny language (docs/scene-format.md) is ASCII."""
-    refused(algkin(*args, cwd=tmp_path), *words)
+    refused(refusal(*args, apart=apart, cwd=tmp_path), *words)
     assert os.listdir(tmp_path) == []
 
 
@@ -161,9 +168,9 @@ def test_a_float_overflow_in_the_verification_says_no_second_line(tmp_path):
     assert done.returncode in (0, 1) and done.stderr == "", done.stderr[-2000:]
 
 
-@pytest.mark.parametrize("flag", ["--seed", "--samples", "--max-terms"])
-def test_a_whole_number_of_5000_digits_is_refused_as_too_long_in_a_short_line(tmp_path, flag):
+@pytest.mark.parametrize("flag, apart", first_apart(["--seed", "--samples", "--max-terms"], ["seed", "samples", "max-terms"]))
+def test_a_whole_number_of_5000_digits_is_refused_as_too_long_in_a_short_line(tmp_path, flag, apart):
     # Python reads at most 4300 digits: the line said "expected a whole number (ASCII digits 0-9)" of
     # one (--max-terms: "invalid _terms value") and repeated the command line whole, 10,000 characters
-    line = refused(algkin("derive", "fourbar", flag, "9" * 5000, cwd=tmp_path), flag, "5000 digits")
+    line = refused(refusal("derive", "fourbar", flag, "9" * 5000, apart=apart, cwd=tmp_path), flag, "5000 digits")
     assert "ASCII" not in line and "_terms" not in line and len(line) < 400, line[:500]
