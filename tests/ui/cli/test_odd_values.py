@@ -68,8 +68,8 @@ def test_a_dimension_just_past_reach_written_huge_is_refused_as_its_round_value_
     """d = 10.000...1 (as d = 10): |AD| >= 9 > l + m = 13/2, so B never assembles; a factor 1/10**357
     of its discriminant was 0.0 in floats, and the check took it for assembling."""
     refused(algkin("curve", "fourbar", "--point", "P", "--set", "d=10", cwd=tmp_path), "points.B", "never assemble")
-    refused(algkin("curve", "fourbar", "--point", "P", "--set", f"d={huge_over_huge(10, 89)}", cwd=tmp_path),
-            "points.B", "never assemble")
+    refused(run_main(["curve", "fourbar", "--point", "P", "--set", f"d={huge_over_huge(10, 89)}"], tmp_path),
+            "points.B", "never assemble")  # the process tested on the line above
 
 
 @pytest.mark.parametrize("args, words, apart", first_apart([
@@ -127,7 +127,7 @@ def test_a_scene_expression_in_other_digits_is_refused(tmp_path):
 def test_an_irrational_value_set_is_refused_saying_what_is_allowed(tmp_path):
     refused(algkin("derive", "fourbar", "--outputs", "B", "--set", "a=sqrt(2)", cwd=tmp_path),
             "--set='a=sqrt(2)'", "not rational", "sqrt(9/4)")
-    done = algkin("show", "fourbar", "--set", "a=sqrt(9/4)", "--json", cwd=tmp_path)  # a rational, written with sqrt
+    done = run_main(["show", "fourbar", "--set", "a=sqrt(9/4)", "--json"], tmp_path)  # a rational, written with sqrt
     assert done.returncode == 0, done.stderr
 
 
@@ -147,18 +147,19 @@ def test_show_says_a_dyad_on_fixed_bases_never_assembles(tmp_path):
     text = algkin("show", "far.toml", cwd=tmp_path)
     assert text.returncode == 0, text.stderr
     assert "never assembles: C: its fixed bases O and D are 10 apart" in text.stdout
-    document = json.loads(algkin("show", "far.toml", "--json", cwd=tmp_path).stdout)
+    document = json.loads(run_main(["show", "far.toml", "--json"], tmp_path).stdout)  # the document: in this process
     assert list(document["never_assembles"]) == ["C"]
     (tmp_path / "near.toml").write_text(FAR.replace("[10, 0]", "[2, 0]"))  # tangent circles: one configuration
-    assert json.loads(algkin("show", "near.toml", "--json", cwd=tmp_path).stdout)["never_assembles"] == {}
+    assert json.loads(run_main(["show", "near.toml", "--json"], tmp_path).stdout)["never_assembles"] == {}
     refused(algkin("derive", "far.toml", cwd=tmp_path), "far.toml", "points.C", "never assemble")
 
 
 def test_a_dyad_on_two_fixed_points_at_one_place_is_bad_input(tmp_path):
     """It was exit 1, "resultant vanished"."""
     (tmp_path / "same.toml").write_text(FAR.replace('D = { fixed = [10, 0] }', 'D = { fixed = ["0.0", "0/7"] }'))
-    for command in ("show", "derive"):
-        refused(algkin(command, "same.toml", cwd=tmp_path), "same.toml", "points.C", "bases coincide", "O and D")
+    for command, apart in (("show", True), ("derive", False)):
+        refused(refusal(command, "same.toml", apart=apart, cwd=tmp_path), "same.toml", "points.C", "bases coincide",
+                "O and D")
 
 
 def test_a_float_overflow_in_the_verification_says_no_second_line(tmp_path):
