@@ -304,11 +304,11 @@ def test_a_read_only_output_is_refused_at_once(tmp_path):
 
 
 @pytest.mark.skipif(not os.path.exists("/dev/full"), reason="needs /dev/full")
-@pytest.mark.parametrize("suffix", [".png", ".html"])
-def test_a_write_that_fails_is_one_line(tmp_path, suffix):
+@pytest.mark.parametrize("suffix, apart", first_apart([".png", ".html"], ["png", "html"]))
+def test_a_write_that_fails_is_one_line(tmp_path, suffix, apart):
     out = tmp_path / f"full{suffix}"
     out.symlink_to("/dev/full")
-    done = plot("chebyshev-lambda", "--out", out)
+    done = refused_plot("chebyshev-lambda", "--out", out, apart=apart, cwd=tmp_path)
     assert one_line(done, 1) and done.stderr.startswith("algkin: failed: "), done.stderr
     assert list(tmp_path.iterdir()) == [out]
 
