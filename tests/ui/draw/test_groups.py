@@ -67,8 +67,8 @@ def test_bad_input_is_one_line_exit_2_nothing_written(tmp_path, args, words, apa
 @pytest.fixture(scope="module")
 def pages(tmp_path_factory):
     folder = tmp_path_factory.mktemp("group-pages")
-    for scene in ("3rpr", "stephenson-iii-triad"):
-        done = run_cli(["plot", scene, "--out", str(folder / f"{scene}.html")], folder)
+    for scene in ("3rpr", "stephenson-iii-triad"):  # the pages written are the question: in this process
+        done = run_main(["plot", scene, "--out", str(folder / f"{scene}.html")], folder)
         assert done.returncode == 0, done.stderr
     return folder
 
