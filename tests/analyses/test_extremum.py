@@ -12,9 +12,17 @@ import pytest
 from algkin.analyses.extremum import extremum
 from algkin.errors import UsageError
 
+from ..ui.cli.in_process import run_main
+
 
 def run(*args):
     out = subprocess.run([sys.executable, "-m", "algkin", *args], capture_output=True, text=True)
+    return out.returncode, out.stdout, out.stderr
+
+
+def written(*args, cwd):
+    """``algkin args...`` in this process (``main``): for what it writes, the process tested by ``run``'s tests."""
+    out = run_main(args, cwd)
     return out.returncode, out.stdout, out.stderr
 
 
@@ -39,19 +47,19 @@ def test_minimum_of_ab_by_hand():
         assert flint.arb(point["enclosure_deg"]).rad() < 1e-15
 
 
-def test_closed_forms_from_the_command_line():
-    code, out, err = run("extremum", "arm-string", "--of", "AB", "--param", "b", "--json")
+def test_closed_forms_from_the_command_line(tmp_path):
+    code, out, err = written("extremum", "arm-string", "--of", "AB", "--param", "b", "--json", cwd=tmp_path)
     assert code == 0, err
     form = json.loads(out)["closed_form"]
     assert form["value"] == "sqrt(b**2 + 160000) - 350"
     assert set(form) >= {"value", "input", "valid_when", "regions"}
-    code, out, err = run("extremum", "arm-string", "--of", "AB", "--param", "a", "--param", "b")
+    code, out, err = written("extremum", "arm-string", "--of", "AB", "--param", "a", "--param", "b", cwd=tmp_path)
     assert code == 0, err
     assert "value = sqrt(a**2 + b**2) - 350" in out
 
 
-def test_minimiser_leaving_the_range_is_said():
-    code, out, err = run("extremum", "arm-string", "--of", "AB", "--param", "b", "--range", "0:90")
+def test_minimiser_leaving_the_range_is_said(tmp_path):
+    code, out, err = written("extremum", "arm-string", "--of", "AB", "--param", "b", "--range", "0:90", cwd=tmp_path)
     assert code == 0, err
     assert "(-oo, 0): the minimiser leaves the range; the minimum is at the end theta = 90 deg" in out
 

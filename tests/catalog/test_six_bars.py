@@ -10,7 +10,7 @@ import pytest
 from algkin.branches import closed_forms
 from algkin.scene import compile_scene, load_scene
 
-from .geometry import at_angle, circles, curve_at, on_circle, rigid, run_process
+from .geometry import at_angle, circles, curve_at, on_circle, rigid, run, run_process
 
 H = mpmath.mpf(1) / 2
 
@@ -54,10 +54,11 @@ def test_configurations_by_hand(name):
                     assert abs(at_angle(values[f"{point}_y"], theta) - y) < 1e-30
 
 
-@pytest.mark.parametrize("name", sorted(CASES))
-def test_coupler_curve_degree_and_circularity(name):
+# the first as a user runs it (its own process), the other's document by main in this process
+@pytest.mark.parametrize("name, apart", [(name, k == 0) for k, name in enumerate(sorted(CASES))], ids=sorted(CASES))
+def test_coupler_curve_degree_and_circularity(name, apart):
     hand, degree, circularity = CASES[name]
-    document = run_process("curve", name, "--point", "P", "--samples", "6")
+    document = (run_process if apart else run)("curve", name, "--point", "P", "--samples", "6")
     assert (document["degree"], document["circularity"]) == (degree, circularity)
     assert document["irreducible"] and document["verification"]["passed"]
     with mpmath.workdps(40):

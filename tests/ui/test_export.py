@@ -13,7 +13,7 @@ from algkin.bench.accuracy import sample_cases, Subject
 from algkin.scene import load_scene
 from algkin.ui.export import export
 
-from .cli.in_process import run_main  # the code written is the question: in this process
+from .cli.in_process import first_apart, run_main  # the code written is the question: in this process
 from .cli.test_usage import run_cli  # exit codes and the one line on stderr: in a process of its own
 
 TOLERANCE = 1e-13  # relative to the point's size
@@ -105,13 +105,18 @@ def test_latex_keeps_a_symbolic_dimension_and_names_each_branch():
     assert "% branch left (the scene's)" in lambda_text and "% branch right" in lambda_text
 
 
-@pytest.mark.parametrize("args, words", [
+def refusal(args, *, apart, cwd):
+    """A refusal's run: in a process of its own (``apart``) or in this one (``first_apart``)."""
+    return run_cli(args, cwd) if apart else run_main(args, cwd)
+
+
+@pytest.mark.parametrize("args, words, apart", first_apart([
     (["--to", "fortran"], ["--to", "fortran"]),
     (["--to", "c", "--param", "a"], ["--param", "'a'", "--to latex"]),
     (["--to", "c", "--outputs", "Z"], ["--outputs", "'Z'"]),
-])
-def test_bad_export_arguments_are_one_line_and_exit_2(args, words, tmp_path):
-    run = run_cli(["export", "chebyshev-lambda", *args], tmp_path)
+]))
+def test_bad_export_arguments_are_one_line_and_exit_2(args, words, apart, tmp_path):
+    run = refusal(["export", "chebyshev-lambda", *args], apart=apart, cwd=tmp_path)
     assert run.returncode == 2 and run.stdout == ""
     assert len(run.stderr.splitlines()) == 1 and all(w in run.stderr for w in words), run.stderr
 
@@ -124,11 +129,11 @@ def test_out_is_written_whole_and_a_bad_path_writes_nothing(tmp_path):
     assert bad.returncode == 2 and sorted(p.name for p in tmp_path.iterdir()) == ["p.js"]
 
 
-@pytest.mark.parametrize("to", ["c", "numpy", "js", "latex"])
-def test_a_mechanism_that_never_assembles_is_refused_and_its_old_file_kept(to, tmp_path):
+@pytest.mark.parametrize("to, apart", first_apart(["c", "numpy", "js", "latex"], ["c", "numpy", "js", "latex"]))
+def test_a_mechanism_that_never_assembles_is_refused_and_its_old_file_kept(to, apart, tmp_path):
     # crank 100 on a ground of 4: |AD| >= 96, past coupler + rocker = 3 + 7/2, at every angle
     (tmp_path / "old.txt").write_text("kept")
-    run = run_cli(["export", "fourbar", "--set", "a=100", "--to", to, "--out", "old.txt"], tmp_path)
+    run = refusal(["export", "fourbar", "--set", "a=100", "--to", to, "--out", "old.txt"], apart=apart, cwd=tmp_path)
     assert run.returncode == 2 and run.stdout == "", run.stderr
     assert len(run.stderr.splitlines()) == 1 and "can never assemble" in run.stderr, run.stderr
     assert (tmp_path / "old.txt").read_text() == "kept"
@@ -179,11 +184,12 @@ int main(void) {
     assert "from no input" in export(scene, None, "js").splitlines()[0]
 
 
-@pytest.mark.parametrize("to", ["c", "latex"])
-def test_a_mechanism_that_assembles_at_one_input_only_is_refused_as_derive_refuses_it(to, tmp_path):
+@pytest.mark.parametrize("to, apart", first_apart(["c", "latex"], ["c", "latex"]))
+def test_a_mechanism_that_assembles_at_one_input_only_is_refused_as_derive_refuses_it(to, apart, tmp_path):
     # ground 22/3 less crank 5/6 is 13/2 = coupler 3 + rocker 7/2: B reaches across at theta = 0 alone
     (tmp_path / "old.txt").write_text("kept")
-    run = run_cli(["export", "fourbar", "--set", "a=5/6", "--set", "d=22/3", "--to", to, "--out", "old.txt"], tmp_path)
+    run = refusal(["export", "fourbar", "--set", "a=5/6", "--set", "d=22/3", "--to", to, "--out", "old.txt"],
+                  apart=apart, cwd=tmp_path)
     assert run.returncode == 2 and run.stdout == "", run.stderr
     assert len(run.stderr.splitlines()) == 1 and "a structure, not a motion" in run.stderr, run.stderr
     assert (tmp_path / "old.txt").read_text() == "kept"

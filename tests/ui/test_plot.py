@@ -38,9 +38,11 @@ def test_each_figure_is_one_command(tmp_path, extra):
 
 
 def test_bad_figure_requests_write_nothing(tmp_path):
-    for args in (["--out", str(tmp_path / "x.gif")], ["--out", str(tmp_path / "no" / "x.png")],
-                 ["--out", str(tmp_path / "x.png"), "--against", "b"]):
-        done = run("plot", "arm-string", "--of", "AB", *args)
+    # the first as the program, the others by main in this process: the same checks, exit code and stderr
+    for apart, args in ((True, ["--out", str(tmp_path / "x.gif")]), (False, ["--out", str(tmp_path / "no" / "x.png")]),
+                        (False, ["--out", str(tmp_path / "x.png"), "--against", "b"])):
+        command = ["plot", "arm-string", "--of", "AB", *args]
+        done = run(*command) if apart else run_main(command, tmp_path)
         assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1
     assert list(tmp_path.iterdir()) == []
 

@@ -9,6 +9,8 @@ from pathlib import Path
 
 import pytest
 
+from .in_process import first_apart, run_main
+
 ROOT = Path(__file__).resolve().parents[3]
 FIVE_BAR = (ROOT / "algkin" / "catalog" / "five-bar.toml").read_text()
 
@@ -17,6 +19,11 @@ def algkin(*args, cwd, timeout=300):
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     return subprocess.run([sys.executable, "-m", "algkin", *args], cwd=cwd, env=env, capture_output=True,
                           text=True, timeout=timeout)
+
+
+def refusal(*args, apart, cwd):
+    """``algkin args...`` as the program (``apart``: ``algkin``) or in this process (``run_main``)."""
+    return algkin(*args, cwd=cwd) if apart else run_main(args, cwd)
 
 
 def refused(done, *words):
@@ -61,19 +68,19 @@ def test_a_dimension_just_past_reach_written_huge_is_refused_as_its_round_value_
     """d = 10.000...1 (as d = 10): |AD| >= 9 > l + m = 13/2, so B never assembles; a factor 1/10**357
     of its discriminant was 0.0 in floats, and the check took it for assembling."""
     refused(algkin("curve", "fourbar", "--point", "P", "--set", "d=10", cwd=tmp_path), "points.B", "never assemble")
-    refused(algkin("curve", "fourbar", "--point", "P", "--set", f"d={huge_over_huge(10, 89)}", cwd=tmp_path),
-            "points.B", "never assemble")
+    refused(run_main(["curve", "fourbar", "--point", "P", "--set", f"d={huge_over_huge(10, 89)}"], tmp_path),
+            "points.B", "never assemble")  # the process tested on the line above
 
 
-@pytest.mark.parametrize("args, words", [
+@pytest.mark.parametrize("args, words, apart", first_apart([
     (["derive", "fourbar", "--outputs", "B", "--param", "a", "--param", "a"], ["--param='a'", "given twice"]),
     (["derive", "fourbar", "--outputs", "B", "B"], ["--outputs='B'", "given twice"]),
     (["show", "fourbar", "--param", "d", "--param", "d"], ["--param='d'", "given twice"]),
     (["show", "fourbar", "--set", "a=2", "--set", "a=3"], ["--set='a=3'", "a is set twice"]),
     (["show", "fourbar", "--set", "a=2", "--set", "a=2"], ["--set='a=2'", "a is set twice"]),
-], ids=["param", "outputs", "show-param", "set-two-values", "set-same-value"])
-def test_a_name_given_twice_is_refused(tmp_path, args, words):
-    refused(algkin(*args, cwd=tmp_path), *words)
+], ids=["param", "outputs", "show-param", "set-two-values", "set-same-value"]))
+def test_a_name_given_twice_is_refused(tmp_path, args, words, apart):
+    refused(refusal(*args, apart=apart, cwd=tmp_path), *words)
 
 
 def test_ten_thousand_copies_of_a_param_are_refused_at_the_second(tmp_path):
@@ -88,7 +95,7 @@ def test_a_value_of_100000_digits_is_refused_in_a_short_line(tmp_path):
     assert len(line) < 200
 
 
-@pytest.mark.parametrize("args, words", [
+@pytest.mark.parametrize("args, words, apart", first_apart([
     (["show", "fourbar", "--set", "a=\u0661"], ["--set=", "ASCII"]),             # Arabic-Indic one
     (["show", "fourbar", "--set", "a=\uff12"], ["--set=", "ASCII"]),             # fullwidth two
     (["show", "fourbar", "--set", "a=2\u00a0"], ["--set=", "ASCII"]),            # a trailing no-break space
@@ -103,10 +110,10 @@ def test_a_value_of_100000_digits_is_refused_in_a_short_line(tmp_path):
     (["plot", "fourbar", "--out", "f.html", "--range-of", "a=0.5:\uff12"], ["--range-of"]),
     (["plot", "fourbar", "--out", "f.png", "--input", "\uff13\uff10"], ["--input"]),
 ], ids=["set-arabic-indic", "set-fullwidth", "set-no-break-space", "samples", "seed", "max-seconds", "max-terms",
-        "range", "grid-value", "grid-count", "grid-no-break-space", "range-of", "input"])
-def test_numbers_in_other_scripts_are_refused(tmp_path, args, words):
+        "range", "grid-value", "grid-count", "grid-no-break-space", "range-of", "input"]))
+def test_numbers_in_other_scripts_are_refused(tmp_path, args, words, apart):
     """Python's int(), float() and Fraction() read them; the tiny language (docs/scene-format.md) is ASCII."""
-    refused(algkin(*args, cwd=tmp_path), *words)
+    refused(refusal(*args, apart=apart, cwd=tmp_path), *words)
     assert os.listdir(tmp_path) == []
 
 
@@ -120,7 +127,7 @@ def test_a_scene_expression_in_other_digits_is_refused(tmp_path):
 def test_an_irrational_value_set_is_refused_saying_what_is_allowed(tmp_path):
     refused(algkin("derive", "fourbar", "--outputs", "B", "--set", "a=sqrt(2)", cwd=tmp_path),
             "--set='a=sqrt(2)'", "not rational", "sqrt(9/4)")
-    done = algkin("show", "fourbar", "--set", "a=sqrt(9/4)", "--json", cwd=tmp_path)  # a rational, written with sqrt
+    done = run_main(["show", "fourbar", "--set", "a=sqrt(9/4)", "--json"], tmp_path)  # a rational, written with sqrt
     assert done.returncode == 0, done.stderr
 
 
@@ -140,18 +147,19 @@ def test_show_says_a_dyad_on_fixed_bases_never_assembles(tmp_path):
     text = algkin("show", "far.toml", cwd=tmp_path)
     assert text.returncode == 0, text.stderr
     assert "never assembles: C: its fixed bases O and D are 10 apart" in text.stdout
-    document = json.loads(algkin("show", "far.toml", "--json", cwd=tmp_path).stdout)
+    document = json.loads(run_main(["show", "far.toml", "--json"], tmp_path).stdout)  # the document: in this process
     assert list(document["never_assembles"]) == ["C"]
     (tmp_path / "near.toml").write_text(FAR.replace("[10, 0]", "[2, 0]"))  # tangent circles: one configuration
-    assert json.loads(algkin("show", "near.toml", "--json", cwd=tmp_path).stdout)["never_assembles"] == {}
+    assert json.loads(run_main(["show", "near.toml", "--json"], tmp_path).stdout)["never_assembles"] == {}
     refused(algkin("derive", "far.toml", cwd=tmp_path), "far.toml", "points.C", "never assemble")
 
 
 def test_a_dyad_on_two_fixed_points_at_one_place_is_bad_input(tmp_path):
     """It was exit 1, "resultant vanished"."""
     (tmp_path / "same.toml").write_text(FAR.replace('D = { fixed = [10, 0] }', 'D = { fixed = ["0.0", "0/7"] }'))
-    for command in ("show", "derive"):
-        refused(algkin(command, "same.toml", cwd=tmp_path), "same.toml", "points.C", "bases coincide", "O and D")
+    for command, apart in (("show", True), ("derive", False)):
+        refused(refusal(command, "same.toml", apart=apart, cwd=tmp_path), "same.toml", "points.C", "bases coincide",
+                "O and D")
 
 
 def test_a_float_overflow_in_the_verification_says_no_second_line(tmp_path):
@@ -161,9 +169,9 @@ def test_a_float_overflow_in_the_verification_says_no_second_line(tmp_path):
     assert done.returncode in (0, 1) and done.stderr == "", done.stderr[-2000:]
 
 
-@pytest.mark.parametrize("flag", ["--seed", "--samples", "--max-terms"])
-def test_a_whole_number_of_5000_digits_is_refused_as_too_long_in_a_short_line(tmp_path, flag):
+@pytest.mark.parametrize("flag, apart", first_apart(["--seed", "--samples", "--max-terms"], ["seed", "samples", "max-terms"]))
+def test_a_whole_number_of_5000_digits_is_refused_as_too_long_in_a_short_line(tmp_path, flag, apart):
     # Python reads at most 4300 digits: the line said "expected a whole number (ASCII digits 0-9)" of
     # one (--max-terms: "invalid _terms value") and repeated the command line whole, 10,000 characters
-    line = refused(algkin("derive", "fourbar", flag, "9" * 5000, cwd=tmp_path), flag, "5000 digits")
+    line = refused(refusal("derive", "fourbar", flag, "9" * 5000, apart=apart, cwd=tmp_path), flag, "5000 digits")
     assert "ASCII" not in line and "_terms" not in line and len(line) < 400, line[:500]

@@ -82,9 +82,10 @@ def test_derive_reduces_its_eliminants_once_without_latex(monkeypatch, capsys):
 
 
 def test_latex_with_json_is_refused(tmp_path):
-    for args in (["derive", "chebyshev-lambda"], ["curve", "chebyshev-lambda", "--point", "P"],
-                 ["extremum", "arm-string", "--of", "AB"]):
-        result = run_cli([*args, "--latex", "--json"], tmp_path)
+    # the first as the program, the others by main in this process: the same parsing, exit code and stderr
+    for run, args in ((run_cli, ["derive", "chebyshev-lambda"]), (run_main, ["curve", "chebyshev-lambda", "--point", "P"]),
+                      (run_main, ["extremum", "arm-string", "--of", "AB"])):
+        result = run([*args, "--latex", "--json"], tmp_path)
         assert result.returncode == 2
         assert "--latex" in result.stderr and len(result.stderr.splitlines()) == 1
         assert json.loads(result.stdout)["error"]["kind"] == "usage"

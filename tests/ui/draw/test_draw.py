@@ -27,7 +27,7 @@ from algkin.scene import load_scene  # noqa: E402
 from algkin.ui.cli import main  # noqa: E402
 
 from ...derivation.test_still_points import STILL  # noqa: E402
-from ..cli.in_process import run_main  # noqa: E402
+from ..cli.in_process import first_apart, run_main  # noqa: E402
 from ...hand_linkages import CHEBYSHEV, fourbar  # noqa: E402
 
 CATALOG = pathlib.Path(__file__).parents[3] / "algkin" / "catalog"
@@ -138,9 +138,14 @@ def plot(*args):
 
 
 def drawn(*args, cwd):
-    """``algkin plot args...`` in this process (``main``), for the tests of what it draws and writes; those of
-    its exit code and its one line on stderr run it in a process of its own (``plot``)."""
+    """``algkin plot args...`` in this process (``main``), for the tests of what it draws and writes, and of
+    most of what it refuses (``first_apart``); those of its exit code and its one line on stderr otherwise run
+    it in a process of its own (``plot``)."""
     return run_main(["plot", *map(str, args)], cwd)
+
+
+def refused_plot(*args, apart, cwd):
+    return plot(*args) if apart else drawn(*args, cwd=cwd)
 
 
 def test_mp4_needs_ffmpeg(tmp_path):
@@ -170,7 +175,7 @@ def test_plot_json_is_one_document_naming_what_was_written(tmp_path):
     assert b"<svg" in out.read_bytes()[:2000]
 
 
-@pytest.mark.parametrize("args", [
+@pytest.mark.parametrize("args, apart", first_apart([
     ["--out", "x.jpeg"],                      # unknown format
     ["--out", "x.png", "--input", "abc"],     # not a number
     ["--out", "x.png", "--input", "361"],     # outside the input's range
@@ -181,10 +186,10 @@ def test_plot_json_is_one_document_naming_what_was_written(tmp_path):
     ["--out", "x.html", "--param", "zz"],
     ["--out", "x.png", "--derivative"],       # goes with --of
     ["--out", "x.png", "--of", "P.x", "--input", "3"],
-])
-def test_bad_requests_exit_2_with_one_line_and_write_nothing(tmp_path, args):
+]))
+def test_bad_requests_exit_2_with_one_line_and_write_nothing(tmp_path, args, apart):
     args = [str(tmp_path / a) if a.startswith("x.") else a for a in args]
-    done = plot("chebyshev-lambda", *args)
+    done = refused_plot("chebyshev-lambda", *args, apart=apart, cwd=tmp_path)
     assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
     assert "Traceback" not in done.stderr and list(tmp_path.iterdir()) == []
 
@@ -206,7 +211,7 @@ def test_range_of_sets_a_slider_of_the_page(tmp_path):
     assert plain["d"] == sliders["d"] and plain["a"] != sliders["a"]  # only the named sliders change
 
 
-@pytest.mark.parametrize("args", [
+@pytest.mark.parametrize("args, apart", first_apart([
     ["--out", "x.html", "--range-of", "a=2:1"],      # lo above hi
     ["--out", "x.html", "--range-of", "a=x:1"],      # not a number
     ["--out", "x.html", "--range-of", "a=0:inf"],    # not finite
@@ -220,9 +225,9 @@ def test_range_of_sets_a_slider_of_the_page(tmp_path):
     ["--out", "x.html", "--range-of", "zz=1:2"],     # not a dimension
     ["--out", "x.png", "--range-of", "a=0.5:2"],     # no sliders in a .png
     ["--out", "x.png", "--of", "P", "--range-of", "a=0.5:2"],  # draws a quantity, no sliders
-])
-def test_a_bad_range_of_exits_2_with_one_line_and_writes_nothing(tmp_path, args):
-    done = plot("fourbar", *[str(tmp_path / a) if a.startswith("x.") else a for a in args])
+]))
+def test_a_bad_range_of_exits_2_with_one_line_and_writes_nothing(tmp_path, args, apart):
+    done = refused_plot("fourbar", *[str(tmp_path / a) if a.startswith("x.") else a for a in args], apart=apart, cwd=tmp_path)
     assert one_line(done, 2) and done.stderr.startswith("algkin: error: --range-of="), done.stderr
     assert list(tmp_path.iterdir()) == []
 
@@ -257,12 +262,12 @@ def one_line(done, code):
     return done.returncode == code and len(lines) == 1 and "Traceback" not in done.stderr
 
 
-@pytest.mark.parametrize("suffix", [".html", ".png", ".gif"])
-def test_a_scene_that_never_assembles_leaves_the_output_alone(tmp_path, suffix):
+@pytest.mark.parametrize("suffix, apart", first_apart([".html", ".png", ".gif"], ["html", "png", "gif"]))
+def test_a_scene_that_never_assembles_leaves_the_output_alone(tmp_path, suffix, apart):
     (tmp_path / "never.toml").write_text(NEVER)
     out = tmp_path / f"never{suffix}"
     out.write_bytes(b"a good file")
-    done = plot(tmp_path / "never.toml", "--out", out)
+    done = refused_plot(tmp_path / "never.toml", "--out", out, apart=apart, cwd=tmp_path)
     assert one_line(done, 2) and "can never assemble" in done.stderr, done.stderr
     assert out.read_bytes() == b"a good file"
 
@@ -299,11 +304,11 @@ def test_a_read_only_output_is_refused_at_once(tmp_path):
 
 
 @pytest.mark.skipif(not os.path.exists("/dev/full"), reason="needs /dev/full")
-@pytest.mark.parametrize("suffix", [".png", ".html"])
-def test_a_write_that_fails_is_one_line(tmp_path, suffix):
+@pytest.mark.parametrize("suffix, apart", first_apart([".png", ".html"], ["png", "html"]))
+def test_a_write_that_fails_is_one_line(tmp_path, suffix, apart):
     out = tmp_path / f"full{suffix}"
     out.symlink_to("/dev/full")
-    done = plot("chebyshev-lambda", "--out", out)
+    done = refused_plot("chebyshev-lambda", "--out", out, apart=apart, cwd=tmp_path)
     assert one_line(done, 1) and done.stderr.startswith("algkin: failed: "), done.stderr
     assert list(tmp_path.iterdir()) == [out]
 

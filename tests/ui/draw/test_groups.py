@@ -12,6 +12,7 @@ from algkin.analyses.solve import solve
 from algkin.ui.groupdraw import modes_figure
 from algkin.ui.groupmotion import GroupMotion
 
+from ..cli.in_process import first_apart, run_main
 from ..cli.test_usage import run_cli
 from .browser import load
 
@@ -49,15 +50,15 @@ def test_no_mode_at_the_input_keeps_the_ground_and_says_so():
     assert any(line.get_marker() == "^" and len(line.get_xdata()) == 3 for line in axes.lines)  # A1, A2, A3
 
 
-@pytest.mark.parametrize("args, words", [
+@pytest.mark.parametrize("args, words, apart", first_apart([
     (["plot", "3rpr", "--out", "x.svg", "--input", "r1=30"], ["--input", "r1=30", "[5, 12]"]),
     (["plot", "3rpr", "--out", "x.svg", "--branch", "+++"], ["--branch"]),
     (["plot", "3rpr", "--out", "x.mp4"], ["--out", ".gif"]),
     (["export", "3rpr", "--to", "c"], ["--to", "numpy"]),
     (["export", "3rpr", "--to", "numpy", "--outputs", "Z"], ["--outputs", "Z"]),
-])
-def test_bad_input_is_one_line_exit_2_nothing_written(tmp_path, args, words):
-    done = run_cli(args, tmp_path)
+]))
+def test_bad_input_is_one_line_exit_2_nothing_written(tmp_path, args, words, apart):
+    done = run_cli(args, tmp_path) if apart else run_main(args, tmp_path)
     assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
     assert all(w in done.stderr for w in words), done.stderr
     assert list(tmp_path.iterdir()) == []
@@ -66,8 +67,8 @@ def test_bad_input_is_one_line_exit_2_nothing_written(tmp_path, args, words):
 @pytest.fixture(scope="module")
 def pages(tmp_path_factory):
     folder = tmp_path_factory.mktemp("group-pages")
-    for scene in ("3rpr", "stephenson-iii-triad"):
-        done = run_cli(["plot", scene, "--out", str(folder / f"{scene}.html")], folder)
+    for scene in ("3rpr", "stephenson-iii-triad"):  # the pages written are the question: in this process
+        done = run_main(["plot", scene, "--out", str(folder / f"{scene}.html")], folder)
         assert done.returncode == 0, done.stderr
     return folder
 
