@@ -39,10 +39,10 @@ from ..runtime import suggest
 from ..branches import Branch, closed_forms
 from ..derivation.modes import Followed, follow_modes, moded_points, on_mode, resolve_modes
 from ..eliminate.group import GroupSolution, Mode, modes_in_sequence, solve_group
-from ..errors import ComputationError, SceneError, UsageError
+from ..errors import ComputationError, SceneError, UsageError, written
 from ..evaluate import ARB, evaluate
 from ..runtime.frozen import FrozenDict, frozen
-from ..runtime.validation import NumberTooLarge, rational
+from ..runtime.validation import MAX_NUMBER_BITS, NumberTooLarge, rational
 from ..scene import Compiled, Input, Scene, compile_scene
 from ..scene.groups import Groups, compile_groups
 from ..scene.constructions import Dyad, Slider, Unknown
@@ -152,17 +152,27 @@ def _inputs(scene: Scene, used: Iterable[str], at: Mapping[str, Any]) -> dict[st
 def input_value(scene: Scene, name: str, value: Any) -> Fraction:
     """An input's value, exactly, within its range (degrees for an angle)."""
     spec = scene.inputs[name]
+    given = f"{name}={written(value, write=str)}"
     try:
-        exact = rational(str(value))
+        exact = rational(_text(value))
     except NumberTooLarge as err:
-        raise UsageError("at", f"{name}={value}", str(err)) from None
+        raise UsageError("at", given, str(err)) from None
     except (ValueError, ZeroDivisionError):
         exact = None
     lo, hi = spec.span
     if exact is None or not _within(exact, spec):
         what = "a number of degrees" if spec.is_angle else "a length"
-        raise UsageError("at", f"{name}={value}", f"expected {what} in [{lo:g}, {hi:g}], exact (e.g. 30, 1/3, 0.5)")
+        raise UsageError("at", given, f"expected {what} in [{lo:g}, {hi:g}], exact (e.g. 30, 1/3, 0.5)")
     return exact
+
+
+def _text(value: Any) -> str:
+    """``value`` as the text ``rational`` reads; NumberTooLarge for a number Python will not write
+    (an integer of more than 4300 digits, or a fraction of one)."""
+    try:
+        return str(value)
+    except ValueError:
+        raise NumberTooLarge(f"number too large or too precise (more than {MAX_NUMBER_BITS} bits)") from None
 
 
 def _within(value: Fraction, spec: Input) -> bool:

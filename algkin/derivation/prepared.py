@@ -87,7 +87,7 @@ def prepare(scene: SceneLike, *, outputs: Sequence[str] | None = None, params: S
     It runs in the caller's process, telling ``deadline`` (if any) what it does; ``derive(scene,
     budget=...)`` bounds the preparation too."""
     outputs, params = validation.names("outputs", outputs), validation.names("params", params) or ()
-    deadline = started(deadline)
+    deadline = started(validation.budget(deadline, "deadline"))
     loaded = load(scene, values=set, params=params, deadline=deadline)
     deadline.note(f"compiling {loaded.name} and finding its branches")
     timings: dict[str, float] = {}

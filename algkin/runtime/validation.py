@@ -84,13 +84,14 @@ def seed(value: object) -> int:
     return count("seed", value, 2**64 - 1)
 
 
-def budget(value: object) -> Budget | Deadline | None:
-    """None, a ``Budget`` or the ``Deadline`` of one started."""
+def budget(value: object, argument: str = "budget") -> Budget | Deadline | None:
+    """None, a ``Budget`` or the ``Deadline`` of one started; UsageError naming ``argument`` otherwise."""
     from .budget import Budget, Deadline
 
     if value is not None and not isinstance(value, (Budget, Deadline)):
-        raise UsageError("budget", value, "expected an algkin.Budget, e.g. Budget(seconds=10)")
+        raise UsageError(argument, value, "expected an algkin.Budget, e.g. Budget(seconds=10)")
     return value
+
 
 
 # Numbers in text (command-line values) are ASCII: Python's float(), int() and Fraction() also

@@ -92,6 +92,10 @@ def test_json_keys():
     ({"theta": 30}, {"digits": 0}, "digits"),
     ({"theta": 30}, {"digits": MAX_DIGITS + 1}, "digits"),
     ({"theta": 30}, {"mode": "up"}, "mode"),
+    # numbers Python will not write (more than 4300 digits): the error's own message was a ValueError
+    ({"theta": 10**5000}, {}, "at"),
+    ({"theta": Fraction(1, 10**5000)}, {}, "at"),
+    ({"theta": 30}, {"digits": 10**5000}, "digits"),
 ])
 def test_bad_arguments_name_the_argument(at, options, argument):
     with pytest.raises(UsageError) as caught:
