@@ -23,6 +23,7 @@ FLAGS = {
     "point": "--point",
     "params": "--param",
     "parameters": "--param",  # the symbolic dimensions a drawing's sliders move
+    "ranges": "--range-of",  # their sliders' bounds
     "set": "--set",
     "method": "--method",
     "backend": "--backend",
