@@ -89,6 +89,7 @@ def derive(scene: SceneLike | Prepared, outputs: Sequence[str] | None = None, *,
     (``{"a": "3/2"}``) in place of their defaults.
     """
     engine = Engine(method=method, backend=backend, samples=samples, seed=seed)
+    certify = validation.flag("certify", certify)
     source = _source(scene, engine, outputs=outputs, params=params, values=set)
     deadline = started(validation.budget(budget))
     return deadline.run(functools.partial(_derive, source, engine, certify=certify, deadline=deadline,

@@ -38,7 +38,7 @@ from ..errors import UsageError
 if TYPE_CHECKING:
     from .budget import Budget, Deadline
 
-__all__ = ["names", "count", "seed", "budget", "real", "whole", "rational", "NumberTooLarge", "MAX_VERIFY_SAMPLES",
+__all__ = ["names", "count", "seed", "flag", "budget", "real", "whole", "rational", "NumberTooLarge", "MAX_VERIFY_SAMPLES",
            "MAX_ACCURACY_SAMPLES", "MAX_NUMBER_BITS", "MAX_DECIMAL_EXPONENT"]
 
 # Each verification sample is solved at 50 digits (milliseconds); each accuracy sample
@@ -82,6 +82,20 @@ def count(argument: str, value: object, limit: int, *, minimum: int = 0) -> int:
 def seed(value: object) -> int:
     """A random seed numpy accepts: a whole number from 0 to 2**64 - 1."""
     return count("seed", value, 2**64 - 1)
+
+
+def flag(argument: str, value: object) -> bool:
+    """True or False (numpy's too); a UsageError for anything else: ``certify="no"`` would be true.
+
+    >>> flag("certify", "no")
+    Traceback (most recent call last):
+    ...
+    algkin.errors.UsageError: certify='no': expected True or False
+    """
+    numpy_bool = getattr(value, "dtype", None) == bool and getattr(value, "shape", None) == ()
+    if not (isinstance(value, bool) or numpy_bool):
+        raise UsageError(argument, value, "expected True or False")
+    return bool(value)
 
 
 def budget(value: object, argument: str = "budget") -> Budget | Deadline | None:

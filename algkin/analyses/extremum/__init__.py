@@ -179,6 +179,7 @@ def extremum(scene: SceneLike | Prepared, output: str, angle_range: tuple[float 
     ``Deadline`` of one running) bounds the time and the eliminants' terms.
     """
     deadline = started(budget)
+    largest = validation.flag("largest", largest)
     given(scene, params=params, set=set)
     with renamed("outputs", to="output"):
         prepared = scene if isinstance(scene, Prepared) else prepare(scene, outputs=[output], params=params, set=set,
