@@ -39,6 +39,7 @@ from ..runtime.budget import Budget, Deadline, started
 from ..runtime.frozen import FrozenDict, frozen
 from ..runtime import validation
 from ..runtime.validation import NumberTooLarge, rational
+from ..runtime.exclusive import one_at_a_time
 from ..scene import Scene, compile_scene
 from ..scene.groups import compile_groups
 from ..scene.load import as_scene
@@ -107,6 +108,7 @@ class _Equations:
     coordinates: Mapping[str, Point]
 
 
+@one_at_a_time
 def follow(scene: Scene | str, *, mode: str, start: Mapping[str, Any], stop: Any, at: Mapping[str, Any] | None = None,
            digits: int = DIGITS, max_step: Any = None, deadline: Budget | Deadline | None = None) -> Followed:
     """The mode ``mode`` of ``scene`` followed from ``start`` (``{input: value}``, one input) to

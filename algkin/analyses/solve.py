@@ -43,6 +43,7 @@ from ..errors import ComputationError, SceneError, UsageError, written
 from ..evaluate import ARB, evaluate
 from ..runtime.frozen import FrozenDict, frozen
 from ..runtime.validation import MAX_NUMBER_BITS, NumberTooLarge, rational
+from ..runtime.exclusive import one_at_a_time
 from ..scene import Compiled, Input, Scene, compile_scene
 from ..scene.groups import Groups, compile_groups
 from ..scene.constructions import Dyad, Slider, Unknown
@@ -100,6 +101,7 @@ class Solution:
         return document
 
 
+@one_at_a_time
 def solve(scene: Scene | str, at: Mapping[str, Any], *, mode: str | None = None,
           digits: int = DIGITS) -> Solution:
     """Every real configuration of ``scene`` (a Scene, a catalog name or a path) at the inputs

@@ -16,6 +16,7 @@ True
 """
 
 import copyreg
+from collections.abc import Callable
 
 import flint
 
@@ -24,7 +25,7 @@ __all__ = ["arb_from"]
 Part = tuple[int, int] | str  # mantissa and exponent (mantissa * 2**exponent), or 'nan', 'inf', '-inf'
 
 
-def _reduced(ball: flint.arb) -> tuple[object, tuple[Part, Part]]:
+def _reduced(ball: flint.arb) -> tuple[Callable[[Part, Part], flint.arb], tuple[Part, Part]]:
     return arb_from, (_part(ball.mid()), _part(ball.rad()))
 
 

@@ -92,7 +92,7 @@ def flag(argument: str, value: object) -> bool:
     ...
     algkin.errors.UsageError: certify='no': expected True or False
     """
-    numpy_bool = getattr(value, "dtype", None) == bool and getattr(value, "shape", None) == ()
+    numpy_bool = type(value).__module__ == "numpy" and type(value).__name__ in ("bool", "bool_")  # no numpy import
     if not (isinstance(value, bool) or numpy_bool):
         raise UsageError(argument, value, "expected True or False")
     return bool(value)

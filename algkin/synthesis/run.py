@@ -21,6 +21,7 @@ import flint
 from ..errors import UsageError
 from ..runtime.budget import Budget, Deadline, started
 from ..runtime.frozen import FrozenDict, frozen
+from ..runtime.exclusive import one_at_a_time
 from .check import MIN_TRANSMISSION, Checked, check_design
 from .data import Angle, Point, Pose
 from .files import Task, read_task
@@ -80,6 +81,7 @@ class Synthesis:
         return document
 
 
+@one_at_a_time
 def synthesize(task: Task | str | os.PathLike[str], *, bits: int = 128, digits: int = DIGITS,
                min_transmission: float = MIN_TRANSMISSION, budget: Budget | Deadline | None = None) -> Synthesis:
     """Solve ``task`` (a Task, or a synthesis file's path or example's name) completely: its real
