@@ -8,6 +8,7 @@ centre-point and circle-point curves (a one-parameter family of dyads), and no f
 
 from __future__ import annotations
 
+import functools
 import itertools
 import numbers
 import os
@@ -19,6 +20,7 @@ import attrs
 import flint
 
 from ..errors import UsageError
+from ..runtime import validation
 from ..runtime.budget import Budget, Deadline, started
 from ..runtime.frozen import FrozenDict, frozen
 from ..runtime.exclusive import one_at_a_time
@@ -96,8 +98,13 @@ def synthesize(task: Task | str | os.PathLike[str], *, bits: int = 128, digits: 
     if isinstance(min_transmission, bool) or not isinstance(min_transmission, numbers.Real) \
             or not 0 <= min_transmission < 90:
         raise UsageError("min_transmission", min_transmission, "expected degrees in [0, 90)")
-    deadline = started(budget)
+    deadline = started(validation.budget(budget))
     task = task if isinstance(task, Task) else read_task(task)
+    return deadline.run(functools.partial(_synthesized, task, bits=bits, digits=digits,
+                                          min_transmission=min_transmission, deadline=deadline))
+
+
+def _synthesized(task: Task, *, bits: int, digits: int, min_transmission: float, deadline: Deadline) -> Synthesis:
     start = time.perf_counter()
     deadline.note(f"solving {task.name}'s {task.kind} synthesis equations")
     result = _solve(task, bits)
