@@ -191,3 +191,14 @@ def test_a_budget_of_seconds_that_is_not_a_number_is_refused_by_name(seconds):
         return
     with pytest.raises(UsageError, match="^max_seconds="):
         algkin.Budget(seconds=seconds)
+
+
+@pytest.mark.parametrize("clock, said", [
+    ("x", "clock='x': expected a function giving seconds"),  # a TypeError when started
+    (None, "clock=None: expected a function giving seconds"),
+    (lambda: "x", "clock='x': a clock's reading must be a number of seconds"),  # a TypeError at its next reading
+], ids=["text", "none", "reading-text"])
+def test_a_budget_clock_that_is_no_clock_is_refused_naming_it(clock, said):
+    with pytest.raises(UsageError) as caught:
+        algkin.derive("chebyshev-lambda", outputs=["B"], samples=0, budget=algkin.Budget(seconds=5, clock=clock))
+    assert str(caught.value).startswith(said)
