@@ -23,6 +23,7 @@ samples are the proven steps' ends, each point's coordinates as decimal strings.
 from __future__ import annotations
 
 import math
+import numbers
 from collections.abc import Mapping, Sequence
 from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal, localcontext
 from fractions import Fraction
@@ -118,8 +119,9 @@ def follow(scene: Scene | str, *, mode: str, start: Mapping[str, Any], stop: Any
     A UsageError names the argument: a ``mode`` that is not one (its message lists the modes), or
     that does not assemble at the start; an input that is not the scene's; a value out of its range.
     """
-    if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= MAX_DIGITS:
+    if isinstance(digits, bool) or not isinstance(digits, numbers.Integral) or not 1 <= digits <= MAX_DIGITS:
         raise UsageError("digits", digits, f"expected a whole number of digits in [1, {MAX_DIGITS}]")
+    digits = int(digits)  # numpy's integers too
     if not isinstance(mode, str):  # None would take solve's meaning, every branch, and follow the first
         raise UsageError("mode", mode, "expected a mode's label, such as 'left'")
     deadline = None if deadline is None else started(validation.budget(deadline, "deadline"))

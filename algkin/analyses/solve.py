@@ -26,6 +26,7 @@ Nothing assembling at the inputs is a valid answer, not a failure: no configurat
 from __future__ import annotations
 
 import math
+import numbers
 from collections.abc import Iterable, Mapping, Sequence
 from decimal import Decimal, localcontext
 from fractions import Fraction
@@ -111,8 +112,9 @@ def solve(scene: Scene | str, at: Mapping[str, Any], *, mode: str | None = None,
     A UsageError names the argument: an input missing, not the scene's or out of its range,
     ``digits`` out of [1, MAX_DIGITS], a ``mode`` that is no branch label.
     """
-    if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= MAX_DIGITS:
+    if isinstance(digits, bool) or not isinstance(digits, numbers.Integral) or not 1 <= digits <= MAX_DIGITS:
         raise UsageError("digits", digits, f"expected a whole number of digits in [1, {MAX_DIGITS}]")
+    digits = int(digits)  # numpy's integers too
     if not isinstance(at, Mapping):
         raise UsageError("at", at, "expected a mapping of each input's name to its value, such as {'theta': 30}")
     scene = as_scene(scene)

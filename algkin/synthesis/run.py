@@ -90,11 +90,13 @@ def synthesize(task: Task | str | os.PathLike[str], *, bits: int = 128, digits: 
     solutions in balls of ``bits`` bits, shown to ``digits`` digits, each four-bar made of them
     checked, defects judged with transmission angles kept within [``min_transmission``, 180 -
     it]. A ``Budget`` (or the ``Deadline`` of one running) bounds the time."""
-    if isinstance(bits, bool) or not isinstance(bits, int) or not 64 <= bits <= 4096:
+    if isinstance(bits, bool) or not isinstance(bits, numbers.Integral) or not 64 <= bits <= 4096:
         raise UsageError("bits", bits, "expected a whole number of bits in [64, 4096]")
-    if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= bits * 3 // 10:
+    bits = int(bits)  # numpy's integers too
+    if isinstance(digits, bool) or not isinstance(digits, numbers.Integral) or not 1 <= digits <= bits * 3 // 10:
         raise UsageError("digits", digits, f"expected a whole number of digits in [1, {bits * 3 // 10}] "
                                            f"(at most what {bits} bits hold)")
+    digits = int(digits)
     if isinstance(min_transmission, bool) or not isinstance(min_transmission, numbers.Real) \
             or not 0 <= min_transmission < 90:
         raise UsageError("min_transmission", min_transmission, "expected degrees in [0, 90)")

@@ -112,6 +112,13 @@ def test_an_input_too_precise_to_read_is_refused_naming_it(value):
     assert caught.value.argument == "at"
 
 
+def test_numpy_integers_give_the_digits():
+    import numpy as np
+
+    # refused before ("expected a whole number of digits") where samples= took them
+    assert solve("fourbar", at={"theta": 30}, digits=np.int64(12)) == solve("fourbar", at={"theta": 30}, digits=12)
+
+
 def test_the_facade_has_it():
     import algkin
 
