@@ -40,7 +40,7 @@ and the timers that keep it (a poll's timeout in milliseconds, a C int) go no fu
 >>> Budget(seconds=1e10)
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: max_seconds=10000000000.0: must be a positive number of seconds, at most a week (604800)
+algkin.errors.UsageError: seconds=10000000000.0: must be a positive number of seconds, at most a week (604800)
 """
 
 import numbers
@@ -81,7 +81,7 @@ def time_budget(seconds: float, argument: str) -> float:
 
 def _seconds(_: Any, __: Any, seconds: float | None) -> None:
     if seconds is not None:
-        time_budget(seconds, "max_seconds")
+        time_budget(seconds, "seconds")
 
 
 def _terms(_: Any, __: Any, terms: int | None) -> None:
@@ -92,7 +92,7 @@ def _terms(_: Any, __: Any, terms: int | None) -> None:
     except (TypeError, ValueError, OverflowError):  # not a number, nan, inf
         whole = False
     if not whole or not terms > 0:
-        raise UsageError("max_terms", terms, "a terms budget must be a positive integer")
+        raise UsageError("terms", terms, "a terms budget must be a positive integer")
 
 
 def _clock(_: Any, __: Any, clock: object) -> None:

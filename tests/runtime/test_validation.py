@@ -189,7 +189,7 @@ def test_a_budget_of_seconds_that_is_not_a_number_is_refused_by_name(seconds):
     if seconds is None:
         assert algkin.Budget(seconds=None).seconds is None
         return
-    with pytest.raises(UsageError, match="^max_seconds="):
+    with pytest.raises(UsageError, match="^seconds="):  # its own name, as the other arguments' (was max_seconds=)
         algkin.Budget(seconds=seconds)
 
 
@@ -202,3 +202,8 @@ def test_a_budget_clock_that_is_no_clock_is_refused_naming_it(clock, said):
     with pytest.raises(UsageError) as caught:
         algkin.derive("chebyshev-lambda", outputs=["B"], samples=0, budget=algkin.Budget(seconds=5, clock=clock))
     assert str(caught.value).startswith(said)
+
+
+def test_a_terms_budget_that_is_not_one_is_refused_by_its_name():
+    with pytest.raises(UsageError, match="^terms=0: a terms budget must be a positive integer"):  # was max_terms=
+        algkin.Budget(terms=0)

@@ -29,8 +29,8 @@ FLAGS = {
     "backend": "--backend",
     "samples": "--samples",
     "seed": "--seed",
-    "max_seconds": "--max-seconds",
-    "max_terms": "--max-terms",
+    "seconds": "--max-seconds",  # a Budget's
+    "terms": "--max-terms",
     "output": "--of",  # extremum's output
     "of": "--of",  # accuracy's
     "angle_range": "--range",
