@@ -36,8 +36,9 @@ def test_an_angle_in_radians_is_the_float_sympy_rounds_it_to(degrees):
 
 @given(st.fractions(-630, 630, max_denominator=10**6) | st.fractions(max_denominator=10**30))
 @example(Fraction(1, 10))  # 5.729577951308232 deg; the float of 1/10 times the float of 180/pi is one ulp above
-@example(Fraction(1, 1))  # 180/pi alone
-@example(Fraction(-1, 180))  # -1/pi
+@example(Fraction(1, 1))  # 180/pi
+@example(Fraction(1, 180))  # 1/pi, a power alone
+@example(Fraction(-1, 180))  # -1/pi, a product
 @example(Fraction(0))
 def test_a_range_in_radians_spans_the_degrees_sympy_rounds_it_to(radians):
     # the float sympy's deg (``r/pi*180``) gives, as users read a range in radians in every document
