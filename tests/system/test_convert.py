@@ -1,6 +1,7 @@
 """sympy <-> flint conversion round-trips exactly."""
 
 import re
+from fractions import Fraction
 
 import flint
 import pytest
@@ -50,7 +51,8 @@ def test_a_root_or_an_absolute_value_is_no_polynomial():
 # names whose sympy order is not their order in the context, nor their order as written
 TEXT_NAMES = ["P_y", "P_x", "x10", "x2", "B_x", "c_theta", "Z"]
 coefficients = st.one_of(st.sampled_from([1, -1, 2, -3]), st.integers(-10**40, 10**40).filter(bool),
-                         st.fractions(max_denominator=7).filter(bool))
+                         st.fractions(max_denominator=7).filter(bool),
+                         st.sampled_from([Fraction(1, 10**400), Fraction(-7 * 10**400, 3), -10**400]))
 
 
 @given(st.lists(st.sampled_from(TEXT_NAMES), min_size=1, max_size=4, unique=True), st.booleans(),
@@ -137,8 +139,11 @@ def test_sympy_text_of_integer_coefficients_in_sympys_order_is_flints_own_text()
 
 
 A = sympy.Symbol("a")  # no assumptions, beside GENS' real ones
-LEAVES = st.sampled_from([*GENS, A, sympy.sqrt(2), sympy.Float(0.5)]) | st.fractions(-7, 7, max_denominator=5).map(
-    lambda q: sympy.Rational(q.numerator, q.denominator))
+# names sympy sorts otherwise than written (capitals first, x10 before x2), numbers of 400 digits
+ODD = [sympy.Symbol("B_x", real=True), sympy.Symbol("x10", real=True), sympy.Symbol("x2"), sympy.Symbol("Z")]
+HUGE = sympy.Integer(10) ** 400
+LEAVES = st.sampled_from([*GENS, A, *ODD, sympy.sqrt(2), sympy.Float(0.5), HUGE, -3 / HUGE]) | st.fractions(
+    -7, 7, max_denominator=5).map(lambda q: sympy.Rational(q.numerator, q.denominator))
 EXPRESSIONS = st.recursive(LEAVES, lambda children: (
     st.tuples(children, children).map(lambda p: p[0] + p[1]) | st.tuples(children, children).map(lambda p: p[0] * p[1])
     | st.tuples(children, st.integers(-2, 4)).filter(lambda p: p[0] != 0 or p[1] > 0).map(lambda p: p[0] ** p[1])
