@@ -154,3 +154,29 @@ EXPRESSIONS = st.recursive(LEAVES, lambda children: (
 def test_expanded_is_sympys_expansion(expr):
     ours, sympys = expanded(expr), sympy.expand(expr)
     assert ours == sympys and str(ours) == str(sympys)
+
+
+INTEGER_RING = flint.fmpz_mpoly_ctx.get(("t", "u"), "lex")
+small_factors = st.lists(st.tuples(st.dictionaries(st.tuples(st.integers(0, 2), st.integers(0, 2)), st.integers(-9, 9),
+                                                   min_size=1, max_size=4), st.integers(1, 3)), min_size=1, max_size=3)
+
+
+@given(small_factors)
+def test_the_factors_over_the_rationals_are_python_flints_own_in_its_order(factors):
+    """Where python-flint's ordering works (coefficients within C ints), the fallback gives its very list."""
+    poly = INTEGER_RING.from_dict({(0, 0): 1})
+    for terms, power in factors:
+        poly *= INTEGER_RING.from_dict(terms) ** power
+    if poly.is_zero():
+        return
+    assert convert.factored_over_rationals(poly) == list(poly.factor()[1])
+
+
+def test_factors_tied_but_for_coefficients_past_a_c_int_are_found():
+    """python-flint 0.9 raises OverflowError ordering (t + 2**40) after (t + 3): built from its factors."""
+    t, u = INTEGER_RING.gens()
+    big = 2**40 + 1
+    poly = -7 * (t * u + big) * (t * u + 3) * (big * t - u) ** 2
+    with pytest.raises(OverflowError):
+        poly.factor()
+    assert convert.integer_factors(poly) == [(t * u + 3, 1), (t * u + big, 1), (big * t - u, 2)]
