@@ -8,13 +8,21 @@
 x^2 - 1/3*y
 >>> to_sympy(p * p, ctx)
 x**4 - 2*x**2*y/3 + y**2/9
+
+A polynomial pickles (python-flint 0.9 pickles none), so that a result holding one does, as it
+must to come back from a budget's child process: its context's names and ordering, and its terms.
+
+>>> import pickle
+>>> pickle.loads(pickle.dumps(p)) == p
+True
 """
 
 from __future__ import annotations
 
+import copyreg
 import math
-from collections.abc import Iterable, Mapping, Sequence
-from typing import NoReturn
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from typing import Any, NoReturn
 
 import flint
 import sympy
@@ -25,12 +33,25 @@ from sympy.core.mul import _mulsort
 from ..evaluate import NumberKind, evaluate
 from .core import symbol
 
-__all__ = ["flint_context", "to_flint", "rational_polynomial", "expanded", "coefficients", "from_terms", "to_sympy", "sympy_text", "to_flint_integer", "integer_factors", "factored_over_rationals", "fmpq_to_rational", "univariate", "content"]
+__all__ = ["flint_context", "to_flint", "rational_polynomial", "expanded", "coefficients", "from_terms", "to_sympy", "sympy_text", "to_flint_integer", "integer_factors", "factored_over_rationals", "fmpq_to_rational", "univariate", "content", "polynomial_from"]
 
 
 def flint_context(names: Iterable[str], ordering: str = "lex") -> flint.fmpq_mpoly_ctx:
     """A python-flint rational polynomial context over ``names`` (order matters for lex)."""
     return flint.fmpq_mpoly_ctx.get(tuple(names), ordering)
+
+
+def polynomial_from(names: tuple[str, ...], ordering: str, terms: dict[tuple[int, ...], Any]) -> flint.fmpq_mpoly:
+    """The polynomial ``_reduced`` wrote: ``terms`` (exponents -> coefficient) over ``names``."""
+    return flint_context(names, ordering).from_dict(terms)
+
+
+def _reduced(poly: flint.fmpq_mpoly) -> tuple[Callable[..., flint.fmpq_mpoly], tuple[Any, ...]]:
+    ctx = poly.context()
+    return polynomial_from, (tuple(ctx.names()), ctx.ordering().name, poly.to_dict())
+
+
+copyreg.pickle(flint.fmpq_mpoly, _reduced)
 
 
 def to_flint(expr: sympy.Expr | sympy.Poly, ctx: flint.fmpq_mpoly_ctx) -> flint.fmpq_mpoly:
