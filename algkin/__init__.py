@@ -12,6 +12,11 @@ A scene asked several questions is prepared once (compiled, its branches and wit
 >>> prepared = algkin.prepare("chebyshev-lambda", outputs=["P"])
 >>> algkin.curve(prepared, "P", samples=0).degree, algkin.derive(prepared, samples=0).branches == prepared.branches
 (6, True)
+
+A scene with points solved together is derived group by group, as ``algkin derive`` does it:
+
+>>> [mode.label for mode in algkin.derive("3rpr", samples=0).groups[0].modes]
+['---', '+++']
 """
 
 from __future__ import annotations
@@ -43,6 +48,8 @@ __all__ = [
     # what the functions above return
     "Derivation",
     "CurveResult",
+    "GroupDerivation",
+    "GroupCurve",
     "Verification",
     "Branch",
     "Extremum",
@@ -68,7 +75,9 @@ if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ 
     from .analyses.solve import Solution, solve
     from .synthesis import Synthesis, synthesize
     from .branches import Branch
-    from .derivation.pipeline import curve, derive
+    from .analyses.dispatch import curve, derive
+    from .analyses.groups.curve import GroupCurve
+    from .analyses.groups.derive import GroupDerivation
     from .derivation.prepared import Prepared, prepare
     from .derivation.results import CurveResult, Derivation
     from .runtime.budget import Budget
@@ -80,12 +89,15 @@ if TYPE_CHECKING:  # the lazy names' own types, for a type checker (__getattr__ 
 
 # Each lazy name -> the module defining it, imported on first use: the scene layer imports sympy
 # (0.4 s), not before the command line has its signal handlers; the pipeline pulls in the
-# elimination and verification layers; interact needs ipywidgets only when called.
+# elimination and verification layers; interact needs ipywidgets only when called. derive and curve
+# are the pipeline's on a scene of constructions, the groups' on points solved together.
 _LAZY = {
     **dict.fromkeys(("SceneBuilder", "catalog_names", "compile_scene", "load_scene"), ".scene"),
-    **dict.fromkeys(("derive", "curve"), ".derivation.pipeline"),
+    **dict.fromkeys(("derive", "curve"), ".analyses.dispatch"),
     **dict.fromkeys(("prepare", "Prepared"), ".derivation.prepared"),  # what derive, curve and the analyses share
     **dict.fromkeys(("Derivation", "CurveResult"), ".derivation.results"),
+    "GroupDerivation": ".analyses.groups.derive",
+    "GroupCurve": ".analyses.groups.curve",
     "Verification": ".verify",
     "Branch": ".branches",
     **dict.fromkeys(("extremum", "Extremum"), ".analyses.extremum"),

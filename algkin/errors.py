@@ -13,6 +13,8 @@ True
 >>> import pickle
 >>> str(pickle.loads(pickle.dumps(UsageError("point", "P", "not a point"))))
 "point='P': not a point"
+>>> str(UsageError("samples", 10**5000, "expected a whole number"))  # Python writes no integer past 4300 digits
+'samples=<an int of 16610 bits>: expected a whole number'
 >>> err = pickle.loads(pickle.dumps(OutputError("/dev/full", "No space left on device")))
 >>> str(err), isinstance(err, OSError)
 ("cannot write '/dev/full': No space left on device", True)
@@ -21,8 +23,9 @@ True
 from __future__ import annotations
 
 import contextlib
+import numbers
 import os
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 
 __all__ = [
     "AlgkinError",
@@ -32,11 +35,26 @@ __all__ = [
     "BudgetExceeded",
     "ComputationError",
     "OutputError",
+    "written",
 ]
 
 
 class AlgkinError(Exception):
     """Root of every error algkin raises on purpose."""
+
+
+def written(value: object, *, write: Callable[[object], str] = repr) -> str:
+    """``write(value)`` for a message, or what the value is where Python refuses to write it (an
+    integer of more than 4300 digits, or a fraction of one, raises ValueError): never an error
+    raised while telling of another."""
+    try:
+        return write(value)
+    except ValueError:
+        kind = type(value).__name__
+        if isinstance(value, numbers.Rational):
+            size = max(abs(int(value.numerator)).bit_length(), int(value.denominator).bit_length())
+            return f"<{'an' if kind[0] in 'aeiou' else 'a'} {kind} of {size} bits>"
+        return f"<a {kind} holding a number too large to write>"
 
 
 class SceneError(AlgkinError, ValueError):
@@ -60,7 +78,7 @@ class UsageError(AlgkinError, ValueError):
         self.argument = argument
         self.value = value
         self.message = message
-        super().__init__(f"{argument}={value!r}: {message}")
+        super().__init__(f"{argument}={written(value)}: {message}")
 
     def __reduce__(self) -> tuple[type[UsageError], tuple[str, object, str]]:
         return type(self), (self.argument, self.value, self.message)

@@ -16,7 +16,7 @@ CONFIG = ROOT / ".importlinter"
 
 PUBLIC = ["load_quantities", "load_scene", "compile_scene", "derive", "curve", "extremum", "rates", "singular",
           "solve", "catalog_names", "interact", "AlgkinError", "SceneBuilder", "prepare", "Prepared",
-          "Derivation", "CurveResult", "Verification", "Branch", "Extremum", "Rates", "Singularities", "Solution",
+          "Derivation", "CurveResult", "GroupDerivation", "GroupCurve", "Verification", "Branch", "Extremum", "Rates", "Singularities", "Solution",
           "Mechanism", "Quantity", "Budget", "follow", "Followed", "synthesize", "Synthesis"]
 
 

@@ -23,6 +23,7 @@ samples are the proven steps' ends, each point's coordinates as decimal strings.
 from __future__ import annotations
 
 import math
+import numbers
 from collections.abc import Mapping, Sequence
 from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal, localcontext
 from fractions import Fraction
@@ -35,9 +36,11 @@ import sympy
 from ..errors import ComputationError, UsageError
 from ..evaluate import ARB, evaluate
 from ..runtime import suggest
-from ..runtime.budget import Deadline
+from ..runtime.budget import Budget, Deadline, started
 from ..runtime.frozen import FrozenDict, frozen
+from ..runtime import validation
 from ..runtime.validation import NumberTooLarge, rational
+from ..runtime.exclusive import one_at_a_time
 from ..scene import Scene, compile_scene
 from ..scene.groups import compile_groups
 from ..scene.load import as_scene
@@ -106,17 +109,24 @@ class _Equations:
     coordinates: Mapping[str, Point]
 
 
+@one_at_a_time
 def follow(scene: Scene | str, *, mode: str, start: Mapping[str, Any], stop: Any, at: Mapping[str, Any] | None = None,
-           digits: int = DIGITS, max_step: Any = None, deadline: Deadline | None = None) -> Followed:
+           digits: int = DIGITS, max_step: Any = None, deadline: Budget | Deadline | None = None) -> Followed:
     """The mode ``mode`` of ``scene`` followed from ``start`` (``{input: value}``, one input) to
     ``stop`` (a value of that input), the scene's other inputs at ``at``; ``max_step`` the largest
-    step (the input's unit), ``deadline`` kept between steps.
+    step (the input's unit), ``deadline`` (a ``Budget``, started here, or one running) kept between steps.
 
     A UsageError names the argument: a ``mode`` that is not one (its message lists the modes), or
     that does not assemble at the start; an input that is not the scene's; a value out of its range.
     """
-    if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= MAX_DIGITS:
+    if isinstance(digits, bool) or not isinstance(digits, numbers.Integral) or not 1 <= digits <= MAX_DIGITS:
         raise UsageError("digits", digits, f"expected a whole number of digits in [1, {MAX_DIGITS}]")
+    digits = int(digits)  # numpy's integers too
+    if not isinstance(mode, str):  # None would take solve's meaning, every branch, and follow the first
+        raise UsageError("mode", mode, "expected a mode's label, such as 'left'")
+    deadline = None if deadline is None else started(validation.budget(deadline, "deadline"))
+    if at is not None and not isinstance(at, Mapping):
+        raise UsageError("at", at, "expected a mapping of each other input's name to its value, such as {'phi': 30}")
     scene = as_scene(scene)
     name, t0, t1 = _span(scene, start, stop)
     others = dict(at or {})

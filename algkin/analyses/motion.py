@@ -25,7 +25,7 @@ import numpy as np
 import sympy
 from numpy.typing import ArrayLike, NDArray
 
-from ..runtime import suggest
+from ..runtime import suggest, validation
 from ..branches import closed_forms
 from ..errors import UsageError
 from ..evaluate import NUMPY, evaluate
@@ -93,6 +93,7 @@ class Motion:
     check that it assembles (a drawing shows where it does not)."""
 
     def __init__(self, scene: SceneLike | Prepared, params: Sequence[str] | None = None) -> None:
+        params = validation.names("params", params)  # a lone string would split into letters
         if isinstance(scene, Prepared):
             given(scene, params=params)
             self.scene, self.compiled, self.branches = scene.scene, _every_point(scene), list(scene.branches)

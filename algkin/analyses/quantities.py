@@ -30,6 +30,7 @@ from ..errors import UsageError
 from ..evaluate import MPMATH, evaluate
 from ..runtime import suggest, validation
 from ..runtime.budget import Budget, Deadline, started
+from ..runtime.exclusive import one_at_a_time
 from ..scene import Scene
 from ..scene.implicit.base import FloatArray
 from ..scene.load import SceneLike, Values, as_scene
@@ -60,9 +61,10 @@ def load_quantities(scene: SceneLike, params: Sequence[str] = (),
 class Mechanism:
     """A scene with some dimensions symbolic: the place to ask for quantities."""
 
-    def __init__(self, scene: Scene, params: Sequence[str] = (), *, deadline: Deadline | None = None) -> None:
-        self.scene = scene
-        self.params = tuple(params)
+    def __init__(self, scene: SceneLike, params: Sequence[str] = (), *, deadline: Deadline | None = None) -> None:
+        self.scene = scene if isinstance(scene, Scene) else as_scene(scene)  # a name or a path too; None refused
+        self.params = validation.names("params", params) or ()
+        validation.budget(deadline, "deadline")
         self.deadline = deadline  # what its quantities' eliminations keep to (None: no bound)
 
     @property
@@ -125,6 +127,10 @@ class Quantity:
     """A scalar on the motion: closed form in the input angle, its relation, its extremum."""
 
     def __init__(self, mechanism: Mechanism, text: str, *, mode: str | None = None) -> None:
+        if not isinstance(mechanism, Mechanism):  # else an AttributeError at its first use
+            raise UsageError("mechanism", mechanism, "expected an algkin.Mechanism, e.g. load_quantities('arm-string')")
+        if not isinstance(text, str):
+            raise UsageError("text", text, "expected an output's text, such as 'dist(A, B)'")
         self.mechanism = mechanism
         self.text = text
         self.mode = mode  # the assembly mode's label; None: the scene's chosen one
@@ -236,6 +242,7 @@ class Quantity:
         """d(quantity)/d(input) in radians, from the closed form (for plots, not for extrema)."""
         return sympy.diff(self.expr, self.input)
 
+    @one_at_a_time  # mpmath's precision and python-flint's are the process's: see algkin.runtime.exclusive
     def at(self, **values: Any) -> float | FloatArray:
         """The quantity at an input in degrees (and dimensions), e.g. ``at(theta=90, b=80)``.
 
@@ -289,6 +296,7 @@ class Quantity:
             found = np.where(uncertified(intervals, given, turning), np.nan, found)
         return found
 
+    @one_at_a_time
     def extremum(self, range: tuple[float | str, float | str] | None = None,  # noqa: A002 (the seed's word)
                  largest: bool = False) -> Extremum:
         """Critical points, minimum and maximum; closed forms in the symbolic dimensions."""

@@ -26,6 +26,7 @@ Nothing assembling at the inputs is a valid answer, not a failure: no configurat
 from __future__ import annotations
 
 import math
+import numbers
 from collections.abc import Iterable, Mapping, Sequence
 from decimal import Decimal, localcontext
 from fractions import Fraction
@@ -39,10 +40,11 @@ from ..runtime import suggest
 from ..branches import Branch, closed_forms
 from ..derivation.modes import Followed, follow_modes, moded_points, on_mode, resolve_modes
 from ..eliminate.group import GroupSolution, Mode, modes_in_sequence, solve_group
-from ..errors import ComputationError, SceneError, UsageError
+from ..errors import ComputationError, SceneError, UsageError, written
 from ..evaluate import ARB, evaluate
 from ..runtime.frozen import FrozenDict, frozen
-from ..runtime.validation import NumberTooLarge, rational
+from ..runtime.validation import MAX_NUMBER_BITS, NumberTooLarge, rational
+from ..runtime.exclusive import one_at_a_time
 from ..scene import Compiled, Input, Scene, compile_scene
 from ..scene.groups import Groups, compile_groups
 from ..scene.constructions import Dyad, Slider, Unknown
@@ -100,6 +102,7 @@ class Solution:
         return document
 
 
+@one_at_a_time
 def solve(scene: Scene | str, at: Mapping[str, Any], *, mode: str | None = None,
           digits: int = DIGITS) -> Solution:
     """Every real configuration of ``scene`` (a Scene, a catalog name or a path) at the inputs
@@ -109,8 +112,9 @@ def solve(scene: Scene | str, at: Mapping[str, Any], *, mode: str | None = None,
     A UsageError names the argument: an input missing, not the scene's or out of its range,
     ``digits`` out of [1, MAX_DIGITS], a ``mode`` that is no branch label.
     """
-    if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= MAX_DIGITS:
+    if isinstance(digits, bool) or not isinstance(digits, numbers.Integral) or not 1 <= digits <= MAX_DIGITS:
         raise UsageError("digits", digits, f"expected a whole number of digits in [1, {MAX_DIGITS}]")
+    digits = int(digits)  # numpy's integers too
     if not isinstance(at, Mapping):
         raise UsageError("at", at, "expected a mapping of each input's name to its value, such as {'theta': 30}")
     scene = as_scene(scene)
@@ -152,17 +156,27 @@ def _inputs(scene: Scene, used: Iterable[str], at: Mapping[str, Any]) -> dict[st
 def input_value(scene: Scene, name: str, value: Any) -> Fraction:
     """An input's value, exactly, within its range (degrees for an angle)."""
     spec = scene.inputs[name]
+    given = f"{name}={written(value, write=str)}"
     try:
-        exact = rational(str(value))
+        exact = rational(_text(value))
     except NumberTooLarge as err:
-        raise UsageError("at", f"{name}={value}", str(err)) from None
+        raise UsageError("at", given, str(err)) from None
     except (ValueError, ZeroDivisionError):
         exact = None
     lo, hi = spec.span
     if exact is None or not _within(exact, spec):
         what = "a number of degrees" if spec.is_angle else "a length"
-        raise UsageError("at", f"{name}={value}", f"expected {what} in [{lo:g}, {hi:g}], exact (e.g. 30, 1/3, 0.5)")
+        raise UsageError("at", given, f"expected {what} in [{lo:g}, {hi:g}], exact (e.g. 30, 1/3, 0.5)")
     return exact
+
+
+def _text(value: Any) -> str:
+    """``value`` as the text ``rational`` reads; NumberTooLarge for a number Python will not write
+    (an integer of more than 4300 digits, or a fraction of one)."""
+    try:
+        return str(value)
+    except ValueError:
+        raise NumberTooLarge(f"number too large or too precise (more than {MAX_NUMBER_BITS} bits)") from None
 
 
 def _within(value: Fraction, spec: Input) -> bool:

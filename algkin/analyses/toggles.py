@@ -45,6 +45,7 @@ from ..system import input_values, symbol
 from ..system.angles import Parametrisation
 from ..system.convert import flint_context, to_flint
 from ..runtime.frozen import FrozenDict
+from ..runtime.exclusive import one_at_a_time
 from .frozen import deep_frozen, frozen_rows, thawed
 
 __all__ = ["toggles", "Toggle", "Toggles", "grashof", "single_input"]
@@ -147,6 +148,7 @@ def single_input(compiled: Compiled, what: str = "toggles") -> tuple[str, Parame
     return name, Parametrisation(tuple(symbol(v) for v in variables), t)
 
 
+@one_at_a_time
 def toggles(scene: SceneLike, artefacts: bool = True,
             set: Values | None = None, *,  # noqa: A002 - the public name (the command line's --set)
             budget: Budget | Deadline | None = None) -> Toggles:

@@ -105,10 +105,7 @@ def _real(compiled: Compiled, branches: Sequence[Branch], variables: tuple[str, 
     rows = []
     for branch in branches:
         program = compile_program([d.xreplace(defaults) for d in branch.discriminants.values()], list(variables), NUMPY)
-        try:
-            rows.append(real_floats(program, floats, list(variables)))
-        except OverflowError:
-            return np.ones((len(branches), len(grid)), dtype=bool)
+        rows.append(real_floats(program, floats, list(variables)))
     return np.array(rows)
 
 

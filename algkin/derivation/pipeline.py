@@ -23,6 +23,7 @@ from ..eliminate import DEFAULT_METHOD
 from ..errors import UsageError
 from ..runtime import validation
 from ..runtime.budget import Budget, Deadline, started
+from ..runtime.exclusive import one_at_a_time
 from ..scene import Compiled, Scene, compile_scene
 from ..scene.load import SceneLike, Values
 from ..verify import Verification
@@ -75,6 +76,7 @@ def _source(scene: SceneLike | Prepared, engine: Engine, *, outputs: Sequence[st
                    params=validation.names("params", params) or (), values=values)
 
 
+@one_at_a_time
 def derive(scene: SceneLike | Prepared, outputs: Sequence[str] | None = None, *, method: str = DEFAULT_METHOD,
            backend: str = "flint", params: Sequence[str] = (), samples: int = 40, seed: int = 0,
            certify: bool = True, budget: Budget | Deadline | None = None,
@@ -89,6 +91,7 @@ def derive(scene: SceneLike | Prepared, outputs: Sequence[str] | None = None, *,
     (``{"a": "3/2"}``) in place of their defaults.
     """
     engine = Engine(method=method, backend=backend, samples=samples, seed=seed)
+    certify = validation.flag("certify", certify)
     source = _source(scene, engine, outputs=outputs, params=params, values=set)
     deadline = started(validation.budget(budget))
     return deadline.run(functools.partial(_derive, source, engine, certify=certify, deadline=deadline,
@@ -125,6 +128,7 @@ def _verify(prepared: Prepared, engine: Engine, eliminations: Mapping[str, Elimi
                            factors={u: e.exact[1] for u, e in eliminations.items()})
 
 
+@one_at_a_time
 def curve(scene: SceneLike | Prepared, point: str, *, method: str = DEFAULT_METHOD, backend: str = "flint",
           params: Sequence[str] = (), samples: int = 40, seed: int = 0, budget: Budget | Deadline | None = None,
           set: Values | None = None) -> CurveResult:  # noqa: A002 - as in derive

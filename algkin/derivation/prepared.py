@@ -34,6 +34,7 @@ from ..errors import UsageError
 from ..runtime import validation
 from ..runtime.budget import Deadline, started
 from ..runtime.frozen import FrozenDict, frozen
+from ..runtime.exclusive import one_at_a_time
 from ..scene import Compiled, Scene, compile_scene
 from ..scene.compile import resolve_outputs
 from ..scene.load import SceneLike, Values, as_scene
@@ -77,6 +78,7 @@ class Prepared:
                 f"branches {' '.join(b.label for b in self.branches)})")
 
 
+@one_at_a_time
 def prepare(scene: SceneLike, *, outputs: Sequence[str] | None = None, params: Sequence[str] = (),
             set: Values | None = None,  # noqa: A002 - ``set=`` is the public name (the command line's --set)
             deadline: Deadline | None = None) -> Prepared:
@@ -87,7 +89,7 @@ def prepare(scene: SceneLike, *, outputs: Sequence[str] | None = None, params: S
     It runs in the caller's process, telling ``deadline`` (if any) what it does; ``derive(scene,
     budget=...)`` bounds the preparation too."""
     outputs, params = validation.names("outputs", outputs), validation.names("params", params) or ()
-    deadline = started(deadline)
+    deadline = started(validation.budget(deadline, "deadline"))
     loaded = load(scene, values=set, params=params, deadline=deadline)
     deadline.note(f"compiling {loaded.name} and finding its branches")
     timings: dict[str, float] = {}

@@ -40,7 +40,7 @@ and the timers that keep it (a poll's timeout in milliseconds, a C int) go no fu
 >>> Budget(seconds=1e10)
 Traceback (most recent call last):
 ...
-algkin.errors.UsageError: max_seconds=10000000000.0: must be a positive number of seconds, at most a week (604800)
+algkin.errors.UsageError: seconds=10000000000.0: must be a positive number of seconds, at most a week (604800)
 """
 
 import numbers
@@ -81,7 +81,7 @@ def time_budget(seconds: float, argument: str) -> float:
 
 def _seconds(_: Any, __: Any, seconds: float | None) -> None:
     if seconds is not None:
-        time_budget(seconds, "max_seconds")
+        time_budget(seconds, "seconds")
 
 
 def _terms(_: Any, __: Any, terms: int | None) -> None:
@@ -92,7 +92,12 @@ def _terms(_: Any, __: Any, terms: int | None) -> None:
     except (TypeError, ValueError, OverflowError):  # not a number, nan, inf
         whole = False
     if not whole or not terms > 0:
-        raise UsageError("max_terms", terms, "a terms budget must be a positive integer")
+        raise UsageError("terms", terms, "a terms budget must be a positive integer")
+
+
+def _clock(_: Any, __: Any, clock: object) -> None:
+    if not callable(clock):
+        raise UsageError("clock", clock, "expected a function giving seconds, such as time.monotonic")
 
 
 @attrs.frozen
@@ -108,14 +113,17 @@ class Budget:
 
     seconds: float | None = attrs.field(default=None, validator=_seconds)
     terms: int | None = attrs.field(default=None, validator=_terms)
-    clock: Callable[[], float] = attrs.field(default=time.monotonic, kw_only=True, repr=False)
+    clock: Callable[[], float] = attrs.field(default=time.monotonic, kw_only=True, repr=False, validator=_clock)
     # the work in a forked child even without ``seconds`` (where the platform forks): the command line's
     # own way of running, not a limit, so not in the repr users read
     apart: bool = attrs.field(default=False, kw_only=True, repr=False)
 
     def start(self) -> "Deadline":
         """This budget running from now: its deadline ``seconds`` on from the clock's reading."""
-        return Deadline(self, self.clock())
+        reading = self.clock()
+        if isinstance(reading, bool) or not isinstance(reading, numbers.Real):  # else a TypeError at its next reading
+            raise UsageError("clock", reading, "a clock's reading must be a number of seconds")
+        return Deadline(self, reading)
 
 
 @attrs.define(eq=False)

@@ -145,8 +145,10 @@ def check_output(option: str, path: _Path) -> None:
     text = str(path)
     if not text:
         raise UsageError(option, text, "is empty; give a file name")
-    if text.endswith(("/", os.sep)) or os.path.basename(text) in (".", ".."):
+    if text.endswith(("/", os.sep)):
         raise UsageError(option, text, "names a directory (it ends with /); give a file name")
+    if os.path.basename(text) in (".", ".."):
+        raise UsageError(option, text, "names a directory; give a file name")
     with _refused(option, text):
         _check_file(option, text, pathlib.Path(os.path.realpath(text)))
 
@@ -155,7 +157,8 @@ def _check_file(option: str, text: str, target: pathlib.Path) -> None:
     if target.is_dir():
         raise UsageError(option, text, "is a directory")
     if not target.parent.is_dir():
-        raise UsageError(option, text, "its directory does not exist")
+        raise UsageError(option, text, "its directory is a file" if target.parent.exists() else
+                         "its directory does not exist")
     if target.exists() and not target.is_file():
         return  # a device or pipe: copied into, nothing to keep
     if target.exists() and not os.access(target, os.W_OK):

@@ -38,7 +38,7 @@ from ..errors import UsageError
 if TYPE_CHECKING:
     from .budget import Budget, Deadline
 
-__all__ = ["names", "count", "seed", "budget", "real", "whole", "rational", "NumberTooLarge", "MAX_VERIFY_SAMPLES",
+__all__ = ["names", "count", "seed", "flag", "budget", "real", "whole", "rational", "NumberTooLarge", "MAX_VERIFY_SAMPLES",
            "MAX_ACCURACY_SAMPLES", "MAX_NUMBER_BITS", "MAX_DECIMAL_EXPONENT"]
 
 # Each verification sample is solved at 50 digits (milliseconds); each accuracy sample
@@ -84,13 +84,28 @@ def seed(value: object) -> int:
     return count("seed", value, 2**64 - 1)
 
 
-def budget(value: object) -> Budget | Deadline | None:
-    """None, a ``Budget`` or the ``Deadline`` of one started."""
+def flag(argument: str, value: object) -> bool:
+    """True or False (numpy's too); a UsageError for anything else: ``certify="no"`` would be true.
+
+    >>> flag("certify", "no")
+    Traceback (most recent call last):
+    ...
+    algkin.errors.UsageError: certify='no': expected True or False
+    """
+    numpy_bool = type(value).__module__ == "numpy" and type(value).__name__ in ("bool", "bool_")  # no numpy import
+    if not (isinstance(value, bool) or numpy_bool):
+        raise UsageError(argument, value, "expected True or False")
+    return bool(value)
+
+
+def budget(value: object, argument: str = "budget") -> Budget | Deadline | None:
+    """None, a ``Budget`` or the ``Deadline`` of one started; UsageError naming ``argument`` otherwise."""
     from .budget import Budget, Deadline
 
     if value is not None and not isinstance(value, (Budget, Deadline)):
-        raise UsageError("budget", value, "expected an algkin.Budget, e.g. Budget(seconds=10)")
+        raise UsageError(argument, value, "expected an algkin.Budget, e.g. Budget(seconds=10)")
     return value
+
 
 
 # Numbers in text (command-line values) are ASCII: Python's float(), int() and Fraction() also

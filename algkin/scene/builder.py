@@ -10,7 +10,8 @@ Each call takes the table's keys by their TOML names; the construction's own key
 first. ``B = { dyad = ["A", "D"], lengths = ["5/2", "5/2"], branch = "left" }`` is
 ``b.dyad("B", ["A", "D"], lengths=["5/2", "5/2"], branch="left")``, or generically
 ``b.point("B", dyad=["A", "D"], lengths=...)``. Expressions are strings or numbers as in a
-file, or exact Python numbers (``Fraction``, sympy); tuples do for arrays.
+file, or exact Python numbers (``Fraction``, ``Decimal``, sympy), numpy's numbers too; tuples
+and numpy arrays do for arrays.
 
 >>> from algkin.scene import load_scene
 >>> b = SceneBuilder("chebyshev-lambda", "Chebyshev lambda linkage: crank 1, ground 2, rocker 5/2, coupler 5.",
@@ -40,6 +41,7 @@ from __future__ import annotations
 import copy
 import numbers
 from collections.abc import Mapping, Sequence
+from decimal import Decimal
 from fractions import Fraction
 from typing import Any, Union
 
@@ -71,8 +73,12 @@ def _data(value: object) -> object:
         return f"{value.numerator}/{value.denominator}"
     if isinstance(value, numbers.Real):  # float, numpy's floats: the decimal repr spells, as in a file
         return float_text(float(value))
+    if isinstance(value, Decimal) and value.is_finite():
+        return str(value)  # exactly the decimal it spells, as the expression language reads it ('1E+3' too)
     if isinstance(value, (list, tuple)):
         return [_data(item) for item in value]
+    if getattr(value, "ndim", 0) == 1 and hasattr(value, "tolist"):  # a numpy array for a pair
+        return _data(value.tolist())
     if isinstance(value, Mapping):
         return {str(key): _data(item) for key, item in value.items()}
     return value

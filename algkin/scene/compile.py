@@ -238,22 +238,25 @@ def checked_length(scene: Scene, element: str, length: sympy.Expr, *, substituti
 
 
 def refuse_solved_together(scene: Scene) -> None:
-    """UsageError for a scene with points solved together, saying the command that takes it (a
-    SceneError first if its groups are bad: bad input whatever the command)."""
+    """UsageError for a scene with points solved together, saying the commands and the Python
+    functions that take it, whichever of the others refused it (a SceneError first if its groups
+    are bad: bad input whatever the command)."""
     if scene.unknown_points:
         from .groups import compile_groups  # below: groups builds on this module
 
         compile_groups(scene)
         raise UsageError("scene", scene.name, f"has points solved together ({', '.join(scene.unknown_points)}): "
-                         "show, solve, follow, derive, curve, verify, toggles, plot, export, sweep and accuracy take it; "
-                         "extremum and singular do not yet")
+                         "show, solve, follow, derive, curve, verify, toggles, plot, export, sweep and accuracy take it, "
+                         "and in Python derive, curve, solve, follow, rates and load_quantities; extremum and singular "
+                         "do not yet, nor prepare and compile_scene")
 
 
 def compile_scene(scene: SceneLike, outputs: Sequence[str] | None = None, params: Iterable[str] = ()) -> Compiled:
     """Compile ``scene`` for ``outputs`` (names, point names, ``dist(P, Q)``, ``P.x``).
 
     Parameters named in ``params`` stay symbolic; the others take their exact defaults. A scene
-    with points solved together (``unknown = true``) is refused: only ``algkin solve`` takes it, for now.
+    with points solved together (``unknown = true``) is refused: ``algkin.derive``, ``curve``,
+    ``solve`` and the others the refusal names take it, compiled by ``algkin.scene.groups``.
     """
     if not isinstance(scene, Scene):  # the public API's: a catalog name or a path, or a refusal naming it
         scene = as_scene(scene)

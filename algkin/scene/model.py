@@ -1,11 +1,10 @@
 """Scene data: parameters, inputs, points built by constructions, named outputs."""
 
 import dataclasses
-import math
 
 import attrs
 import sympy
-from mpmath.libmp import from_rational, mpf_mul, mpf_pi, mpf_pos, round_nearest, to_float
+from mpmath.libmp import from_rational, mpf_mul, mpf_pi, mpf_pos, mpf_pow_int, round_nearest, to_float
 
 from ..runtime.frozen import FrozenDict, frozen
 from .constraints import Constraint
@@ -64,6 +63,26 @@ def _sympys_float_of_pi_times(coefficient: sympy.Rational) -> float:
     return float(to_float(mpf_pos(value, 53, round_nearest)))
 
 
+def _sympys_float_of_over_pi(coefficient: sympy.Rational) -> float:
+    """``float(coefficient / sympy.pi)``, the same float, as ``_sympys_float_of_pi_times`` makes its
+    product: ``1/pi`` is ``evalf_pow``'s (pi at 5 bits more, inverted rounding down), the rest as there.
+    Not the float of ``coefficient`` times that of ``1/pi`` (a third of them an ulp or two off sympy's).
+
+    >>> _sympys_float_of_over_pi(sympy.Integer(18)), float(sympy.Integer(18) / sympy.pi)
+    (5.729577951308232, 5.729577951308232)
+    """
+    if coefficient == 0:
+        return 0.0
+    if coefficient == 1:  # 1/pi alone, a power, not a product
+        value = mpf_pow_int(mpf_pi(_EVALF_BITS + 5), -1, _EVALF_BITS)
+    else:
+        factors = _EVALF_BITS + 2 + 5  # evalf_mul's working precision for two factors
+        inverse_pi = mpf_pow_int(mpf_pi(factors + 5), -1, factors)
+        value = mpf_mul(from_rational(int(coefficient.p), int(coefficient.q), factors), inverse_pi,
+                        _EVALF_BITS, round_nearest)
+    return float(to_float(mpf_pos(value, 53, round_nearest)))
+
+
 @attrs.frozen
 class Input:
     """What drives the mechanism: an angle (``lo``/``hi`` in ``unit``, 'deg' or 'rad') or, with
@@ -111,9 +130,10 @@ class Input:
         """(lo, hi) as floats in the unit users read: degrees for an angle, the length itself."""
         if not self.is_angle:
             return float(self.lo), float(self.hi)
-        # Degrees as they are; radians scaled in floats (sympy's pi would first import its geometry)
-        scale = 1 if self.unit == "deg" else 180 / math.pi
-        return float(self.lo) * scale, float(self.hi) * scale
+        if self.unit == "deg":
+            return float(self.lo), float(self.hi)
+        # sympy's float of deg (r/pi*180), without it (its pi would first import sympy's geometry)
+        return _sympys_float_of_over_pi(sympy.Rational(self.lo) * 180), _sympys_float_of_over_pi(sympy.Rational(self.hi) * 180)
 
     def shown(self, value: float) -> str:
         """A value in users' units as text: ``30°`` for an angle, ``0.25`` for a length."""

@@ -19,14 +19,18 @@ algkin.errors.UsageError: set='b=<an integer of 2001 bits>': number too large or
 """
 
 import math
+import numbers
 from collections.abc import Iterable, Mapping
+from decimal import Decimal
 from fractions import Fraction
 
 import attrs
+import numpy
 import sympy
 
 from ..runtime import suggest
 from ..runtime.terminal import shortened
+from ..runtime.validation import rational
 from ..errors import UsageError
 from .expr import MAX_NUMBER_BITS, irrational, parse
 from .model import Scene
@@ -55,8 +59,8 @@ def with_values(scene: Scene, values: Mapping[str, object] | None, params: Itera
     """A new ``Scene``: ``scene`` with the defaults of the parameters in ``values`` replaced, checked again.
 
     Values are exact: strings in the scene files' expression language (``"3/2"``, ``"0.1"`` is
-    1/10), integers, fractions or sympy rationals (see ``_exact`` for their bounds); a float is
-    read as the decimal its shortest repr spells. A parameter that ``params`` keeps symbolic cannot also be set.
+    1/10), integers, fractions, decimals or sympy rationals, numpy's integers too (see ``_exact``
+    for their bounds); a float (numpy's too) is read as the decimal its shortest repr spells. A parameter that ``params`` keeps symbolic cannot also be set.
     The new scene goes through the loader again, so that a value which breaks it (a length
     that becomes negative...) fails as a scene file would.
     """
@@ -78,7 +82,7 @@ def valued(scene: Scene, values: Mapping[str, object], params: Iterable[str] | N
     >>> valued(scene, {"b": "1/10"}) == with_values(scene, {"b": "1/10"})
     True
     """
-    if not isinstance(values, dict):
+    if not isinstance(values, Mapping):
         raise UsageError("set", values, "expected a mapping of parameter names to values")
     defaults = dict(scene.parameters)
     for name, value in values.items():
@@ -99,16 +103,18 @@ def _exact(name: str, value: object) -> sympy.Expr:
     ``MAX_EXPRESSION_LENGTH`` characters. An integer or fraction is measured before it is
     written out (Python writes no integer of more than 4300 digits).
     """
-    if isinstance(value, (int, Fraction, sympy.Rational)) and not isinstance(value, bool):
-        numerator, denominator = int(value.numerator), int(value.denominator)
+    if isinstance(value, Decimal):
+        value = _decimal(name, value)
+    if isinstance(value, (numbers.Rational, sympy.Rational)) and not isinstance(value, (bool, numpy.bool_)):
+        numerator, denominator = int(value.numerator), int(value.denominator)  # numpy's integers too
         if _bits(numerator, denominator) > MAX_NUMBER_BITS:
             raise UsageError("set", _given(name, value),
                              f"number too large or too precise (more than {MAX_NUMBER_BITS} bits)")
         value = f"{numerator}/{denominator}"
-    elif isinstance(value, float):
+    elif isinstance(value, (float, numpy.floating)):
         if not math.isfinite(value):  # its repr 'nan' or 'inf' would read as a name
             raise UsageError("set", _given(name, value), "not a finite number")
-        value = repr(value)
+        value = repr(float(value))  # a numpy float as the float it equals (its repr is np.float64(1.5))
     try:
         exact = parse(value)
     except ValueError as err:
@@ -117,6 +123,17 @@ def _exact(name: str, value: object) -> sympy.Expr:
     if problem:
         raise UsageError("set", _given(name, value), problem)
     return exact
+
+
+def _decimal(name: str, value: Decimal) -> Fraction:
+    """A ``Decimal`` exactly, as its text says (``Decimal("0.1")`` is 1/10), its exponent bounded
+    before its digits are worked out."""
+    if not value.is_finite():
+        raise UsageError("set", _given(name, value), "not a finite number")
+    try:
+        return rational(str(value))
+    except ValueError as err:
+        raise UsageError("set", _given(name, value), str(err)) from None
 
 
 def _bits(numerator: int, denominator: int) -> int:

@@ -45,6 +45,7 @@ DRAW_SCHEME = 2
 # designs of one sweep at most: each is held in memory while planned (the grid's or the draws'
 # values, about half a gigabyte at this many), and a million four-bars take days already
 MAX_DESIGNS = 10**6
+COUNT_DIGITS = 100  # a COUNT longer is refused by its length: its product would be past what Python writes
 
 
 def _exact(text: str, spec: str) -> Fraction:
@@ -110,9 +111,12 @@ def _axis(spec: str) -> tuple[str, Fraction, Fraction, int]:
     name, fields = _split(spec, 3)
     lo, hi = _bounds(spec, fields)
     count = fields[2].strip()
-    if not (count.isascii() and count.isdigit()) or int(count) < 1:
+    digits = count.lstrip("0")
+    if not (count.isascii() and count.isdigit()) or not digits:
         raise UsageError("grid", spec, f"COUNT must be a whole number from 1, got {count!r}")
-    n = int(count)
+    if len(digits) > COUNT_DIGITS:  # before int(): Python reads no integer of more than 4300 digits
+        raise UsageError("grid", spec, f"COUNT has {len(digits)} digits: more than {MAX_DESIGNS} designs")
+    n = int(digits)
     if n == 1 and lo != hi:
         raise UsageError("grid", spec, "COUNT 1 needs LO = HI (one value)")
     if n > 1 and lo == hi:

@@ -8,6 +8,7 @@ centre-point and circle-point curves (a one-parameter family of dyads), and no f
 
 from __future__ import annotations
 
+import functools
 import itertools
 import numbers
 import os
@@ -19,8 +20,10 @@ import attrs
 import flint
 
 from ..errors import UsageError
+from ..runtime import validation
 from ..runtime.budget import Budget, Deadline, started
 from ..runtime.frozen import FrozenDict, frozen
+from ..runtime.exclusive import one_at_a_time
 from .check import MIN_TRANSMISSION, Checked, check_design
 from .data import Angle, Point, Pose
 from .files import Task, read_task
@@ -80,22 +83,30 @@ class Synthesis:
         return document
 
 
+@one_at_a_time
 def synthesize(task: Task | str | os.PathLike[str], *, bits: int = 128, digits: int = DIGITS,
                min_transmission: float = MIN_TRANSMISSION, budget: Budget | Deadline | None = None) -> Synthesis:
     """Solve ``task`` (a Task, or a synthesis file's path or example's name) completely: its real
     solutions in balls of ``bits`` bits, shown to ``digits`` digits, each four-bar made of them
     checked, defects judged with transmission angles kept within [``min_transmission``, 180 -
     it]. A ``Budget`` (or the ``Deadline`` of one running) bounds the time."""
-    if isinstance(bits, bool) or not isinstance(bits, int) or not 64 <= bits <= 4096:
+    if isinstance(bits, bool) or not isinstance(bits, numbers.Integral) or not 64 <= bits <= 4096:
         raise UsageError("bits", bits, "expected a whole number of bits in [64, 4096]")
-    if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= bits * 3 // 10:
+    bits = int(bits)  # numpy's integers too
+    if isinstance(digits, bool) or not isinstance(digits, numbers.Integral) or not 1 <= digits <= bits * 3 // 10:
         raise UsageError("digits", digits, f"expected a whole number of digits in [1, {bits * 3 // 10}] "
                                            f"(at most what {bits} bits hold)")
+    digits = int(digits)
     if isinstance(min_transmission, bool) or not isinstance(min_transmission, numbers.Real) \
             or not 0 <= min_transmission < 90:
         raise UsageError("min_transmission", min_transmission, "expected degrees in [0, 90)")
-    deadline = started(budget)
+    deadline = started(validation.budget(budget))
     task = task if isinstance(task, Task) else read_task(task)
+    return deadline.run(functools.partial(_synthesized, task, bits=bits, digits=digits,
+                                          min_transmission=min_transmission, deadline=deadline))
+
+
+def _synthesized(task: Task, *, bits: int, digits: int, min_transmission: float, deadline: Deadline) -> Synthesis:
     start = time.perf_counter()
     deadline.note(f"solving {task.name}'s {task.kind} synthesis equations")
     result = _solve(task, bits)

@@ -8,13 +8,21 @@
 x^2 - 1/3*y
 >>> to_sympy(p * p, ctx)
 x**4 - 2*x**2*y/3 + y**2/9
+
+A polynomial pickles (python-flint 0.9 pickles none), so that a result holding one does, as it
+must to come back from a budget's child process: its context's names and ordering, and its terms.
+
+>>> import pickle
+>>> pickle.loads(pickle.dumps(p)) == p
+True
 """
 
 from __future__ import annotations
 
+import copyreg
 import math
-from collections.abc import Iterable, Mapping, Sequence
-from typing import NoReturn
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from typing import Any, NoReturn
 
 import flint
 import sympy
@@ -25,12 +33,25 @@ from sympy.core.mul import _mulsort
 from ..evaluate import NumberKind, evaluate
 from .core import symbol
 
-__all__ = ["flint_context", "to_flint", "rational_polynomial", "expanded", "coefficients", "from_terms", "to_sympy", "sympy_text", "to_flint_integer", "fmpq_to_rational", "univariate", "content"]
+__all__ = ["flint_context", "to_flint", "rational_polynomial", "expanded", "coefficients", "from_terms", "to_sympy", "sympy_text", "to_flint_integer", "integer_factors", "factored_over_rationals", "fmpq_to_rational", "univariate", "content", "polynomial_from"]
 
 
 def flint_context(names: Iterable[str], ordering: str = "lex") -> flint.fmpq_mpoly_ctx:
     """A python-flint rational polynomial context over ``names`` (order matters for lex)."""
     return flint.fmpq_mpoly_ctx.get(tuple(names), ordering)
+
+
+def polynomial_from(names: tuple[str, ...], ordering: str, terms: dict[tuple[int, ...], Any]) -> flint.fmpq_mpoly:
+    """The polynomial ``_reduced`` wrote: ``terms`` (exponents -> coefficient) over ``names``."""
+    return flint_context(names, ordering).from_dict(terms)
+
+
+def _reduced(poly: flint.fmpq_mpoly) -> tuple[Callable[..., flint.fmpq_mpoly], tuple[Any, ...]]:
+    ctx = poly.context()
+    return polynomial_from, (tuple(ctx.names()), ctx.ordering().name, poly.to_dict())
+
+
+copyreg.pickle(flint.fmpq_mpoly, _reduced)
 
 
 def to_flint(expr: sympy.Expr | sympy.Poly, ctx: flint.fmpq_mpoly_ctx) -> flint.fmpq_mpoly:
@@ -157,6 +178,40 @@ def to_flint_integer(poly: flint.fmpq_mpoly, ctx: flint.fmpz_mpoly_ctx) -> flint
         return ctx.from_dict({})
     lcm = math.lcm(*(int(c.q) for c in terms.values()))
     return ctx.from_dict({m: int(c.p) * (lcm // int(c.q)) for m, c in terms.items()})
+
+
+def integer_factors(poly: flint.fmpz_mpoly) -> list[tuple[flint.fmpz_mpoly, int]]:
+    """``poly.factor()[1]``: its irreducible factors, primitive with a positive leading coefficient, and
+    their multiplicities, in python-flint's order. python-flint 0.9 orders two factors whose terms tie
+    up to a coefficient by converting the coefficients to C ints: past 2**31 it raises OverflowError
+    (dimensions of a dozen digits reach that). The factors are then FLINT's over the rationals, made
+    integral again and put in the order python-flint means.
+
+    >>> ctx = flint.fmpz_mpoly_ctx.get(("t",), "lex")
+    >>> t, = ctx.gens()
+    >>> integer_factors((t + 2**40) * (3 - t) ** 2 * (t + 3))
+    [(t + 3, 1), (t + 1099511627776, 1), (t - 3, 2)]
+    """
+    try:
+        return list(poly.factor()[1])
+    except OverflowError:
+        return factored_over_rationals(poly)
+
+
+def factored_over_rationals(poly: flint.fmpz_mpoly) -> list[tuple[flint.fmpz_mpoly, int]]:
+    """``integer_factors`` from FLINT's factoring over the rationals, in python-flint's order: by
+    multiplicity, then term by term by exponents and coefficient, then the shorter first."""
+    ctx = poly.context()
+    rational = flint.fmpq_mpoly_ctx.get(ctx.names(), ctx.ordering()).from_dict(poly.to_dict())
+    factors = [(_primitive(factor, ctx), int(multiplicity)) for factor, multiplicity in rational.factor()[1]]
+    return sorted(factors, key=lambda pair: (pair[1], [(m, int(c)) for m, c in zip(pair[0].monoms(), pair[0].coeffs())]))
+
+
+def _primitive(factor: flint.fmpq_mpoly, ctx: flint.fmpz_mpoly_ctx) -> flint.fmpz_mpoly:
+    """``factor``'s integral primitive multiple in ``ctx`` with a positive leading coefficient."""
+    integral = to_flint_integer(factor, ctx)
+    primitive = integral / math.gcd(*(int(c) for c in integral.coeffs()))
+    return -primitive if primitive.leading_coefficient() < 0 else primitive
 
 
 def content(coefficients: Iterable[flint.fmpq | flint.fmpz | int]) -> flint.fmpq:

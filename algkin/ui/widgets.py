@@ -23,6 +23,8 @@ by ``algkin solve``; 'not assembled here' where none exists).
 from __future__ import annotations
 
 import functools
+import math
+import numbers
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
@@ -40,7 +42,7 @@ if TYPE_CHECKING:
 # What the sliders give: input names (degrees) and dimension names to numbers, ``branch`` to a label
 SliderValues = dict[str, Any]
 
-__all__ = ["interact", "Explorer", "GroupExplorer", "explorer"]
+__all__ = ["interact", "Explorer", "GroupExplorer", "explorer", "slider_ranges"]
 
 
 class Explorer:
@@ -49,7 +51,7 @@ class Explorer:
     def __init__(self, scene: SceneLike | Motion, params: Sequence[str] | None = None,
                  ranges: Mapping[str, tuple[float, float]] | None = None) -> None:
         self.motion = scene if isinstance(scene, Motion) else Motion(scene, params)
-        self.ranges = ranges  # name -> (lo, hi): overrides the scene's declared slider ranges
+        self.ranges = slider_ranges(ranges)  # name -> (lo, hi): overrides the scene's declared slider ranges
 
     @property
     def sliders(self) -> list[Slider]:
@@ -141,6 +143,37 @@ class GroupExplorer:
         from .plot import image
 
         return image(self.figure(**values), ".png")
+
+
+def slider_ranges(ranges: object) -> dict[str, tuple[float, float]] | None:
+    """``ranges`` checked: a mapping of names to finite numbers (lo, hi), lo below hi; a UsageError
+    naming ``ranges`` otherwise (ipywidgets' own error, or sympy's, came out of a slider made of it).
+
+    >>> slider_ranges({"a": (1, 2.5)})
+    {'a': (1.0, 2.5)}
+    >>> slider_ranges({"a": (2, 1)})
+    Traceback (most recent call last):
+    ...
+    algkin.errors.UsageError: ranges={'a': (2, 1)}: expected (lo, hi) of each dimension, finite numbers with lo below hi, such as {'a': (0.5, 2)}
+    """
+    if ranges is None:
+        return None
+    spans = dict(ranges) if isinstance(ranges, Mapping) else {}
+    checked = {name: _span(span) for name, span in spans.items()}
+    if not isinstance(ranges, Mapping) or None in checked.values():
+        raise UsageError("ranges", ranges, "expected (lo, hi) of each dimension, finite numbers with lo below hi, "
+                                           "such as {'a': (0.5, 2)}")
+    return {name: span for name, span in checked.items() if span is not None}
+
+
+def _span(span: object) -> tuple[float, float] | None:
+    """``span`` as (lo, hi), finite numbers with lo below hi; None if it is not one."""
+    if isinstance(span, (str, bytes)) or not isinstance(span, Sequence) or len(span) != 2:
+        return None
+    if not all(isinstance(v, numbers.Real) and not isinstance(v, bool) for v in span):
+        return None
+    lo, hi = float(span[0]), float(span[1])
+    return (lo, hi) if math.isfinite(lo) and math.isfinite(hi) and lo < hi else None
 
 
 def explorer(scene: SceneLike | Motion, params: Sequence[str] | None = None,

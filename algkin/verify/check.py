@@ -256,10 +256,15 @@ class _Branch:
 
 
 def real_floats(discriminants: ArrayProgram, floats: Mapping[str, Floats], known: Sequence[str]) -> NDArray[np.bool_]:
-    """Per sample, whether every discriminant (a numpy program of ``known``) is positive in floats."""
+    """Per sample, whether every discriminant (a numpy program of ``known``) is positive in floats; True
+    where floats cannot say (a coefficient past a float's range: dimensions given as ratios of 60-digit
+    integers), the balls deciding there."""
     count = len(next(iter(floats.values())))
-    with np.errstate(all="ignore"):  # a later discriminant holds an earlier one's sqrt: nan where that is negative
-        values = discriminants(*(floats.get(n, np.zeros(count)) for n in known))
+    try:
+        with np.errstate(all="ignore"):  # a later discriminant holds an earlier one's sqrt: nan where that is negative
+            values = discriminants(*(floats.get(n, np.zeros(count)) for n in known))
+    except OverflowError:  # an integer of the program made a float
+        return np.ones(count, bool)
     return np.all([np.broadcast_to(v, (count,)) > 0 for v in values], axis=0) if values else np.ones(count, bool)
 
 

@@ -125,10 +125,13 @@ def test_the_json_gives_how_it_ended_the_steps_and_each_sample():
     assert Fraction(document["meeting"]["from"]) <= dead_centre.evalf(30) <= Fraction(document["meeting"]["to"])
 
 
-def test_the_deadline_is_kept():
+@pytest.mark.parametrize("started", [True, False], ids=["deadline", "budget"])
+def test_the_deadline_is_kept(started):
+    """A budget not yet started is started by ``follow`` (as ``prepare`` does): it was an AttributeError."""
+    budget = Budget(seconds=5, clock=Clock())
     with pytest.raises(BudgetExceeded, match="max_seconds=5: stopped after"):
         follow("chebyshev-lambda", mode="left", start={"angle": 0}, stop=360,
-               deadline=Budget(seconds=5, clock=Clock()).start())
+               deadline=budget.start() if started else budget)
 
 
 @pytest.mark.parametrize("kwargs, said", [
@@ -147,6 +150,14 @@ def test_the_deadline_is_kept():
     (dict(max_step="1e-1000000000"), "max_step='1e-1000000000': decimal exponent out of range"),
     (dict(at={"angle": 3}), "at='angle': is the input followed: give its value as the start only"),
     (dict(digits=0), "digits=0: expected a whole number of digits"),
+    # these three went on: None followed solve's first branch; a list and a string failed inside (a TypeError,
+    # an AttributeError at the first step)
+    (dict(mode=None), "mode=None: expected a mode's label"),
+    (dict(at=[("angle", 3)]), "at=[('angle', 3)]: expected a mapping"),
+    (dict(deadline="10"), "deadline='10': expected an algkin.Budget"),
+    # Python writes no integer of more than 4300 digits: the message itself was a ValueError
+    (dict(stop=10**5000), "stop='angle=<an int of 16610 bits>': number too large"),
+    (dict(max_step=10**5000), "max_step=<an int of 16610 bits>: "),
 ])
 def test_bad_input_names_the_argument(kwargs, said):
     with pytest.raises(UsageError) as caught:

@@ -118,3 +118,21 @@ def test_a_budget_bounds_the_eliminations_of_its_quantities():
         quantity.extremum()
     with pytest.raises(UsageError, match="budget=10: expected an algkin.Budget"):
         algkin.load_quantities("fourbar", budget=10)
+
+
+@pytest.mark.parametrize("make, said", [
+    (lambda: algkin.Quantity(None, "dist(A, B)"), "mechanism=None: expected an algkin.Mechanism"),  # an AttributeError
+    (lambda: algkin.Quantity(algkin.load_quantities("arm-string"), 5), "text=5: expected an output's text"),
+    (lambda: algkin.Mechanism(None), "scene=None: expected a catalog name"),  # an AttributeError at its first use
+    (lambda: algkin.Mechanism("arm-string", params="b"), "params='b': expected a list of names"),
+    (lambda: algkin.Mechanism("arm-string", deadline=5), "deadline=5: expected an algkin.Budget"),
+], ids=["quantity-mechanism", "quantity-text", "mechanism-scene", "mechanism-params", "mechanism-deadline"])
+def test_a_mechanism_or_quantity_made_of_the_wrong_things_is_refused_naming_them(make, said):
+    with pytest.raises(UsageError) as caught:
+        make()
+    assert str(caught.value).startswith(said)
+
+
+def test_a_mechanism_takes_a_catalog_name_as_load_quantities_does():
+    # its scene was the string itself, and .parameters an AttributeError
+    assert algkin.Mechanism("arm-string").parameters == algkin.load_quantities("arm-string").parameters

@@ -2,8 +2,11 @@
 a nested list or mapping cannot be changed, and a result is hashable (or, where it holds
 python-flint balls, which do not hash, compares equal to the same computation's). Issue 31."""
 
+import pickle
+
 import attrs
 import pytest
+import sympy
 
 from algkin.analyses.extremum import extremum
 from algkin.analyses.limits import limits
@@ -129,6 +132,26 @@ def test_a_result_hashes_and_a_second_call_returns_an_equal_one(results, name):
     else:
         assert again == results[name]
         assert hash(again) == hash(results[name])
+
+
+@pytest.mark.parametrize("name", ANALYSES)
+def test_a_result_pickles_and_comes_back_equal(results, name):
+    """Those holding python-flint balls (prepare, extremum, singular, limits) did not pickle."""
+    result = results[name]
+    back = pickle.loads(pickle.dumps(result))
+    if name in BY_JSON:
+        assert _untimed(back.to_json()) == _untimed(result.to_json())
+    elif name == "extremum":  # sympy builds an expression again from its arguments: the same, maybe spelt otherwise
+        assert sympy.simplify(back.closed_form.input - result.closed_form.input) == 0
+        assert attrs.evolve(back, closed_form=None) == attrs.evolve(result, closed_form=None)
+    else:
+        assert back == result
+
+
+def test_a_pickled_prepared_scene_answers_as_the_scene_itself(results):
+    back = pickle.loads(pickle.dumps(results["prepare"]))
+    assert _untimed(curve(back, "P", samples=4).to_json()) == _untimed(results["curve"].to_json())
+    assert _untimed(derive(back, samples=4).to_json()) == _untimed(results["derive"].to_json())
 
 
 def test_a_loaded_scene_cannot_be_changed():

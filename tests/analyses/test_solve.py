@@ -92,6 +92,10 @@ def test_json_keys():
     ({"theta": 30}, {"digits": 0}, "digits"),
     ({"theta": 30}, {"digits": MAX_DIGITS + 1}, "digits"),
     ({"theta": 30}, {"mode": "up"}, "mode"),
+    # numbers Python will not write (more than 4300 digits): the error's own message was a ValueError
+    ({"theta": 10**5000}, {}, "at"),
+    ({"theta": Fraction(1, 10**5000)}, {}, "at"),
+    ({"theta": 30}, {"digits": 10**5000}, "digits"),
 ])
 def test_bad_arguments_name_the_argument(at, options, argument):
     with pytest.raises(UsageError) as caught:
@@ -106,6 +110,13 @@ def test_an_input_too_precise_to_read_is_refused_naming_it(value):
     with pytest.raises(UsageError, match="exponent out of range|more than 1024 bits") as caught:
         solve("fourbar", at={"theta": value})
     assert caught.value.argument == "at"
+
+
+def test_numpy_integers_give_the_digits():
+    import numpy as np
+
+    # refused before ("expected a whole number of digits") where samples= took them
+    assert solve("fourbar", at={"theta": 30}, digits=np.int64(12)) == solve("fourbar", at={"theta": 30}, digits=12)
 
 
 def test_the_facade_has_it():

@@ -1,5 +1,7 @@
 """``branches.algebra``: a root written without sympy's questions is the root sympy writes."""
 
+from fractions import Fraction
+
 import sympy
 from hypothesis import assume, example, given, strategies as st
 
@@ -9,7 +11,8 @@ from algkin.branches.algebra import (factored_terms, primitive_sum, product, pro
                                     unsplit_root)
 
 C, S = sympy.symbols("c s", real=True)
-numbers = st.fractions(min_value=0, max_value=10**6, max_denominator=10**6).filter(bool)  # surds and squares
+numbers = st.fractions(min_value=0, max_value=10**6, max_denominator=10**6).filter(bool) | st.sampled_from(
+    [Fraction(10**400), Fraction(1, 10**400), Fraction(3, 10**401)])  # surds and squares, of 400 digits too
 # sums of monomials in c and s: real, of a sign sympy does not know (a positive one, c**2 + 1, it splits out)
 sums = st.lists(st.tuples(st.integers(-50, 50).filter(bool), st.integers(0, 4), st.integers(0, 3)),
                 min_size=2, max_size=6).map(

@@ -78,6 +78,12 @@ def test_paths_that_cannot_be_written_are_refused(tmp_path):
     check_directory("--out", tmp_path / "new" / "deeper")
 
 
+def test_a_file_in_place_of_the_directory_is_said_as_such(tmp_path):
+    (tmp_path / "notes").write_text("")  # was "its directory does not exist"
+    with pytest.raises(UsageError, match="its directory is a file"):
+        check_output("--out", tmp_path / "notes" / "x.png")
+
+
 @pytest.mark.skipif(AS_ROOT, reason="root writes read-only files and folders anyway")
 def test_read_only_files_and_folders_are_refused(tmp_path):
     (tmp_path / "kept.png").write_bytes(b"")
@@ -103,7 +109,8 @@ def test_a_name_near_the_systems_limit_is_written_through_a_shorter_temporary(tm
     assert target.read_text() == "{}" and os.listdir(tmp_path) == [target.name]
 
 
-@pytest.mark.parametrize("name,why", [("", "is empty"), ("new.json/", "names a directory"),
+@pytest.mark.parametrize("name,why", [("", "is empty"), ("new.json/", r"names a directory \(it ends with /\)"),
+                                      (".", "names a directory; give a file name"),  # said it ended with /
                                       ("n" * 300 + ".json", "File name too long")])
 def test_names_that_cannot_be_a_file_are_refused(tmp_path, monkeypatch, name, why):
     monkeypatch.chdir(tmp_path)

@@ -35,6 +35,26 @@ def test_bad_numbers_and_budgets_name_the_argument(argument, value):
         algkin.derive("chebyshev-lambda", outputs=["B"], **{argument: value})
 
 
+@pytest.mark.parametrize("call, said", [
+    (lambda: algkin.derive("chebyshev-lambda", outputs=["B"], samples=0, certify="no"),  # was taken as True
+     "certify='no': expected True or False"),
+    (lambda: algkin.extremum("arm-string", "AB", largest="no"), "largest='no': expected True or False"),
+    (lambda: algkin.derive("chebyshev-lambda", outputs=["B"], samples=10**5000),  # past 4300 digits: a ValueError
+     "samples=<an int of 16610 bits>: expected a whole number"),
+    (lambda: algkin.prepare("fourbar", deadline=10), "deadline=10: expected an algkin.Budget"),  # was named budget=
+], ids=["certify", "largest", "huge-samples", "prepare-deadline"])
+def test_a_flag_or_number_that_is_not_one_is_refused_naming_it(call, said):
+    with pytest.raises(UsageError) as caught:
+        call()
+    assert str(caught.value).startswith(said)
+
+
+def test_a_numpy_bool_is_a_flag():
+    import numpy as np
+
+    assert algkin.derive("chebyshev-lambda", outputs=["B"], samples=0, certify=np.bool_(False)).certified == (None, None)
+
+
 def test_curve_of_a_point_that_is_not_a_name():
     with pytest.raises(UsageError, match="^point=3: not a point"):
         algkin.curve("chebyshev-lambda", 3)
@@ -169,5 +189,21 @@ def test_a_budget_of_seconds_that_is_not_a_number_is_refused_by_name(seconds):
     if seconds is None:
         assert algkin.Budget(seconds=None).seconds is None
         return
-    with pytest.raises(UsageError, match="^max_seconds="):
+    with pytest.raises(UsageError, match="^seconds="):  # its own name, as the other arguments' (was max_seconds=)
         algkin.Budget(seconds=seconds)
+
+
+@pytest.mark.parametrize("clock, said", [
+    ("x", "clock='x': expected a function giving seconds"),  # a TypeError when started
+    (None, "clock=None: expected a function giving seconds"),
+    (lambda: "x", "clock='x': a clock's reading must be a number of seconds"),  # a TypeError at its next reading
+], ids=["text", "none", "reading-text"])
+def test_a_budget_clock_that_is_no_clock_is_refused_naming_it(clock, said):
+    with pytest.raises(UsageError) as caught:
+        algkin.derive("chebyshev-lambda", outputs=["B"], samples=0, budget=algkin.Budget(seconds=5, clock=clock))
+    assert str(caught.value).startswith(said)
+
+
+def test_a_terms_budget_that_is_not_one_is_refused_by_its_name():
+    with pytest.raises(UsageError, match="^terms=0: a terms budget must be a positive integer"):  # was max_terms=
+        algkin.Budget(terms=0)

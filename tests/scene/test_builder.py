@@ -358,3 +358,27 @@ def test_the_example_in_the_scene_format_docs_runs():
     section = text.split("## From Python", 1)[1]
     code = re.search(r"```python\n(.*?)```", section, re.S).group(1)
     exec(compile(code, "scene-format.md", "exec"), {})
+
+
+def test_numpy_arrays_and_decimals_build_the_scene_their_numbers_spell():
+    """A numpy array was "expected a list of two", a Decimal "expected a number or expression"."""
+    import numpy as np
+    from decimal import Decimal
+
+    built = SceneBuilder("lambda")
+    built.input("angle", range=np.array([0, 360]))
+    built.fixed("O", np.array([0.0, 0.0]))
+    built.fixed("D", (Decimal("2"), Decimal("0")))
+    built.crank("A", "O", length=np.float64(1), input="angle")
+    built.dyad("B", ("A", "D"), lengths=np.array([2.5, 2.5]), branch="left")
+    built.frame("P", ("A", "B"), at=(Decimal("2.0"), Decimal("0E+3")))
+    built.output("P")
+    by_hand = SceneBuilder("lambda")
+    by_hand.input("angle", range=(0, 360))
+    by_hand.fixed("O", (0, 0))
+    by_hand.fixed("D", (2, 0))
+    by_hand.crank("A", "O", length=1, input="angle")
+    by_hand.dyad("B", ("A", "D"), lengths=("5/2", "5/2"), branch="left")
+    by_hand.frame("P", ("A", "B"), at=(2, 0))
+    by_hand.output("P")
+    assert built.build() == by_hand.build()

@@ -152,7 +152,8 @@ def test_a_group_after_a_dyad_with_too_few_equations_is_named_with_its_counts():
 
 def test_compile_scene_refuses_them_naming_the_command_that_takes_them():
     said = ("has points solved together \\(P1, P2\\): show, solve, follow, derive, curve, verify, toggles, plot, export, "
-            "sweep and accuracy take it; extremum and singular do not yet")
+            "sweep and accuracy take it, and in Python derive, curve, solve, follow, rates and load_quantities; "
+            "extremum and singular do not yet, nor prepare and compile_scene")
     with pytest.raises(UsageError, match=said):
         compile_scene(load_scene_text(SPEC_3RPR, "3rpr.toml"))
 

@@ -1,6 +1,6 @@
 """A scene moved away (``Scene.translated``, the accuracy run's far case) is the same mechanism: its
 ground points and the configurations that name its modes move together, its modes stay the ones meant;
-an input's range in radians is the float sympy's pi gives."""
+an input's range in radians is the float sympy's pi gives, and a range in radians the degrees sympy's ``deg`` gives."""
 
 from fractions import Fraction
 
@@ -32,3 +32,16 @@ def test_an_angle_in_radians_is_the_float_sympy_rounds_it_to(degrees):
     value = sympy.Rational(degrees.numerator, degrees.denominator)
     assert Input("t", value, value + 1).radians(value) == float(value * sympy.pi / 180)
     assert Input("t", value, value + 1, "rad").radians(value) == float(value)
+
+
+@given(st.fractions(-630, 630, max_denominator=10**6) | st.fractions(max_denominator=10**30))
+@example(Fraction(1, 10))  # 5.729577951308232 deg; the float of 1/10 times the float of 180/pi is one ulp above
+@example(Fraction(1, 1))  # 180/pi
+@example(Fraction(1, 180))  # 1/pi, a power alone
+@example(Fraction(-1, 180))  # -1/pi, a product
+@example(Fraction(0))
+def test_a_range_in_radians_spans_the_degrees_sympy_rounds_it_to(radians):
+    # the float sympy's deg (``r/pi*180``) gives, as users read a range in radians in every document
+    value = sympy.Rational(radians.numerator, radians.denominator)
+    assert Input("t", value, value + 1, "rad").span == (float(sympy.deg(value)), float(sympy.deg(value + 1)))
+    assert Input("t", value, value + 1).span == (float(value), float(value + 1))

@@ -1,6 +1,10 @@
 """A loaded scene is an immutable value: changing it raises, and later loads are untouched (issue 31)."""
 
+import types
+from decimal import Decimal
+
 import attrs
+import numpy as np
 import pytest
 import sympy
 from hypothesis import assume, given, settings
@@ -78,3 +82,37 @@ def test_a_float_that_is_no_finite_number_is_refused_as_such(value):
 
     with pytest.raises(UsageError, match=r"^set='a=-?(nan|inf)': not a finite number$"):
         with_values(load_scene("fourbar"), {"a": value})
+
+
+@pytest.mark.parametrize("value, exact", [
+    (np.float64(1.5), sympy.Rational(3, 2)),  # its repr 'np.float64(1.5)' was read: "unexpected character '.'"
+    (np.float32(0.25), sympy.Rational(1, 4)),
+    (np.int64(7), sympy.Integer(7)),  # numpy's integers and decimals were "expected a number or expression"
+    (np.uint8(200), sympy.Integer(200)),
+    (Decimal("0.1"), sympy.Rational(1, 10)),
+    (Decimal("-2.5E+3"), sympy.Integer(-2500)),
+], ids=["float64", "float32", "int64", "uint8", "decimal", "decimal-exponent"])
+def test_numpy_numbers_and_decimals_are_read_exactly(value, exact):
+    assert with_values(load_scene("fourbar"), {"a": value}).parameters["a"] == exact
+
+
+@pytest.mark.parametrize("value, said", [
+    (Decimal("NaN"), "not a finite number"),
+    (Decimal("sNaN"), "not a finite number"),
+    (Decimal("Infinity"), "not a finite number"),
+    (Decimal("1E-1000000000"), "decimal exponent out of range"),  # never worked out: 10**1000000000
+    (np.float64("nan"), "not a finite number"),
+    (np.bool_(True), "expected a number or expression"),
+])
+def test_a_decimal_or_numpy_value_that_is_no_number_is_refused(value, said):
+    from algkin.errors import UsageError
+
+    with pytest.raises(UsageError, match=f"^set='a=[^']*': {said}"):
+        with_values(load_scene("fourbar"), {"a": value})
+
+
+def test_any_mapping_gives_values_not_only_a_dict():
+    # a FrozenDict (a result's parameters) or a MappingProxyType was "expected a mapping of parameter names to values"
+    scene = load_scene("fourbar")
+    for values in (FrozenDict({"a": 2}), types.MappingProxyType({"a": 2})):
+        assert with_values(scene, values).parameters["a"] == 2

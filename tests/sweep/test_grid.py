@@ -33,6 +33,8 @@ def test_the_first_axis_varies_slowest():
     ("a=1:1:3", "LO = HI is one value, not 3: give COUNT 1"),  # three identical designs
     ("a=1e200:1e201:2", "outside 1e-100 to 1e100"),
     ("a=1e-1000000000:1:2", "decimal exponent out of range"),  # Fraction would compute 10**1000000000 first
+    ("a=1:2:" + "9" * 5000, "COUNT has 5000 digits: more than 1000000 designs"),  # int() refused it: an internal error
+    ("a=1:2:" + "0" * 5000, "COUNT must be a whole number from 1"),
 ])
 def test_bad_grids_are_refused(spec, says):
     with pytest.raises(UsageError, match=says) as raised:

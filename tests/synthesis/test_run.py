@@ -107,3 +107,23 @@ def test_arguments_are_checked():
         with pytest.raises(UsageError) as caught:
             synthesize(EXAMPLES / "three-pairs.toml", **kwargs)
         assert caught.value.argument == next(iter(kwargs))
+
+
+def test_the_time_budget_is_kept():
+    """It was only told what the work did: a second's budget let the run take as long as it took."""
+    from algkin.errors import BudgetExceeded
+    from algkin.runtime.budget import Budget
+
+    from ..clocks import Clock
+
+    with pytest.raises(BudgetExceeded, match="max_seconds=1: stopped after"):
+        synthesize(EXAMPLES / "seven-points-path.toml", budget=Budget(seconds=1, clock=Clock()))
+
+
+def test_within_its_budget_it_gives_what_it_gives_without_one():
+    from algkin.runtime.budget import Budget
+
+    from ..clocks import still
+
+    bounded = synthesize(EXAMPLES / "three-pairs.toml", budget=Budget(seconds=1, clock=still))
+    assert bounded.scenes() == synthesize(EXAMPLES / "three-pairs.toml").scenes()

@@ -1,18 +1,22 @@
 """Random expressions of the shapes algkin writes for closed forms: polynomials in an input's cosine and
 sine with rational coefficients, quadratic roots over products (a square root of a product with a
 negative exponent, as sympy evaluates it and as ``unsplit_root`` builds it unevaluated), a root nested in
-another, surds in front (``sqrt(6)*...``), terms equal but for their numbers (``c + sqrt(2)*c``)."""
+another, surds in front (``sqrt(6)*...``), terms equal but for their numbers (``c + sqrt(2)*c``); numbers
+of 400 digits, and a symbol sympy sorts before the input's (a capital) as a dimension would be."""
 
 import sympy
 from hypothesis import strategies as st
 
 c, s = sympy.symbols("c_theta s_theta", real=True)
 l = sympy.Symbol("l", positive=True)
+B = sympy.Symbol("B_x", real=True)
 
-RATIONALS = st.fractions(-60, 60, max_denominator=16).filter(bool).map(sympy.Rational)
+HUGE = sympy.Integer(10) ** 400
+RATIONALS = st.fractions(-60, 60, max_denominator=16).filter(bool).map(sympy.Rational) | st.sampled_from(
+    [HUGE, 1 / HUGE, -7 / HUGE, -3 * HUGE / 7])
 SURDS = st.sampled_from([sympy.Integer(1), sympy.sqrt(2), sympy.sqrt(3), sympy.sqrt(6), sympy.sqrt(15) / 4])
-MONOMIALS = st.tuples(st.integers(0, 3), st.integers(0, 1), st.integers(0, 1)).map(
-    lambda e: c ** e[0] * s ** e[1] * l ** e[2])
+MONOMIALS = st.tuples(st.integers(0, 3), st.integers(0, 1), st.integers(0, 1), st.integers(0, 1)).map(
+    lambda e: c ** e[0] * s ** e[1] * l ** e[2] * B ** e[3])
 
 
 def _polynomial(terms):

@@ -1,6 +1,7 @@
 """sympy <-> flint conversion round-trips exactly."""
 
 import re
+from fractions import Fraction
 
 import flint
 import pytest
@@ -50,7 +51,8 @@ def test_a_root_or_an_absolute_value_is_no_polynomial():
 # names whose sympy order is not their order in the context, nor their order as written
 TEXT_NAMES = ["P_y", "P_x", "x10", "x2", "B_x", "c_theta", "Z"]
 coefficients = st.one_of(st.sampled_from([1, -1, 2, -3]), st.integers(-10**40, 10**40).filter(bool),
-                         st.fractions(max_denominator=7).filter(bool))
+                         st.fractions(max_denominator=7).filter(bool),
+                         st.sampled_from([Fraction(1, 10**400), Fraction(-7 * 10**400, 3), -10**400]))
 
 
 @given(st.lists(st.sampled_from(TEXT_NAMES), min_size=1, max_size=4, unique=True), st.booleans(),
@@ -137,8 +139,11 @@ def test_sympy_text_of_integer_coefficients_in_sympys_order_is_flints_own_text()
 
 
 A = sympy.Symbol("a")  # no assumptions, beside GENS' real ones
-LEAVES = st.sampled_from([*GENS, A, sympy.sqrt(2), sympy.Float(0.5)]) | st.fractions(-7, 7, max_denominator=5).map(
-    lambda q: sympy.Rational(q.numerator, q.denominator))
+# names sympy sorts otherwise than written (capitals first, x10 before x2), numbers of 400 digits
+ODD = [sympy.Symbol("B_x", real=True), sympy.Symbol("x10", real=True), sympy.Symbol("x2"), sympy.Symbol("Z")]
+HUGE = sympy.Integer(10) ** 400
+LEAVES = st.sampled_from([*GENS, A, *ODD, sympy.sqrt(2), sympy.Float(0.5), HUGE, -3 / HUGE]) | st.fractions(
+    -7, 7, max_denominator=5).map(lambda q: sympy.Rational(q.numerator, q.denominator))
 EXPRESSIONS = st.recursive(LEAVES, lambda children: (
     st.tuples(children, children).map(lambda p: p[0] + p[1]) | st.tuples(children, children).map(lambda p: p[0] * p[1])
     | st.tuples(children, st.integers(-2, 4)).filter(lambda p: p[0] != 0 or p[1] > 0).map(lambda p: p[0] ** p[1])
@@ -149,3 +154,29 @@ EXPRESSIONS = st.recursive(LEAVES, lambda children: (
 def test_expanded_is_sympys_expansion(expr):
     ours, sympys = expanded(expr), sympy.expand(expr)
     assert ours == sympys and str(ours) == str(sympys)
+
+
+INTEGER_RING = flint.fmpz_mpoly_ctx.get(("t", "u"), "lex")
+small_factors = st.lists(st.tuples(st.dictionaries(st.tuples(st.integers(0, 2), st.integers(0, 2)), st.integers(-9, 9),
+                                                   min_size=1, max_size=4), st.integers(1, 3)), min_size=1, max_size=3)
+
+
+@given(small_factors)
+def test_the_factors_over_the_rationals_are_python_flints_own_in_its_order(factors):
+    """Where python-flint's ordering works (coefficients within C ints), the fallback gives its very list."""
+    poly = INTEGER_RING.from_dict({(0, 0): 1})
+    for terms, power in factors:
+        poly *= INTEGER_RING.from_dict(terms) ** power
+    if poly.is_zero():
+        return
+    assert convert.factored_over_rationals(poly) == list(poly.factor()[1])
+
+
+def test_factors_tied_but_for_coefficients_past_a_c_int_are_found():
+    """python-flint 0.9 raises OverflowError ordering (t + 2**40) after (t + 3): built from its factors."""
+    t, u = INTEGER_RING.gens()
+    big = 2**40 + 1
+    poly = -7 * (t * u + big) * (t * u + 3) * (big * t - u) ** 2
+    with pytest.raises(OverflowError):
+        poly.factor()
+    assert convert.integer_factors(poly) == [(t * u + 3, 1), (t * u + big, 1), (big * t - u, 2)]

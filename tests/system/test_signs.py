@@ -7,7 +7,9 @@ from algkin.system.signs import signs_unknowable, takes_both_signs
 
 C, S = sympy.symbols("c s", real=True)
 # sums of monomials of any sign, sympy's known or not (c**2 + s**2 + 1 > 0, -c**2 <= 0)
-any_sums = st.lists(st.tuples(st.integers(-50, 50).filter(bool), st.integers(0, 4), st.integers(0, 3)),
+HUGE = sympy.Integer(10) ** 400  # a coefficient of 400 digits, or its inverse
+any_sums = st.lists(st.tuples(st.integers(-50, 50).filter(bool) | st.sampled_from([HUGE, -1 / HUGE]),
+                              st.integers(0, 4), st.integers(0, 3)),
                     min_size=1, max_size=5).map(lambda terms: sympy.Add(*[k * C**i * S**j for k, i, j in terms])
                                                 ).filter(lambda p: not p.is_number)
 

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 import sympy
 
+from algkin.errors import UsageError
 from algkin.ui.widgets import Explorer
 
 from ..hand_linkages import CHEBYSHEV, FOURBAR, fourbar
@@ -103,6 +104,26 @@ def test_a_declared_range_drives_the_sliders_and_an_override_wins(tmp_path):
     overridden = Explorer(motion, ranges={"a": (0.25, 3)}).sliders
     assert [(s["lo"], s["hi"]) for s in overridden if s["name"] == "a"] == [(0.25, 3.0)]
     assert [(p["lo"], p["hi"]) for p in model(motion, ranges={"a": (0.25, 3)})["params"]] == [(0.25, 3.0)]
+
+
+@pytest.mark.parametrize("ranges", [
+    {"a": (2, 1)},  # ipywidgets' TraitError (max below min) once a slider was made of it
+    {"a": (float("nan"), 2)},  # sympy's TypeError
+    {"a": "1:2"},  # a ValueError from the characters taken as numbers
+    {"a": (1, 2, 3)},  # taken: its first two
+    {"a": (True, 2)},
+    [("a", (1, 2))],  # not a mapping
+], ids=["reversed", "nan", "text", "three", "bool", "list"])
+def test_slider_ranges_that_are_no_ranges_are_refused_naming_ranges(ranges):
+    with pytest.raises(UsageError, match=r"^ranges=.*: expected \(lo, hi\) of each dimension"):
+        Explorer("fourbar", params=["a"], ranges=ranges)
+
+
+def test_the_library_names_its_own_arguments_not_the_flags():
+    with pytest.raises(UsageError, match=r"^ranges='zz': not a symbolic dimension of fourbar"):
+        Explorer("fourbar", params=["a"], ranges={"zz": (1, 2)}).sliders
+    with pytest.raises(UsageError, match=r"^params='ad': expected a list of names"):  # was the sliders a and d
+        Explorer("fourbar", params="ad")
 
 
 def drawn(artists):

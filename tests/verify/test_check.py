@@ -242,3 +242,12 @@ def test_the_check_setup_is_a_frozen_hashable_value_and_the_rest_is_keyword_only
         setup.branches[0][1]["B_x"] = 0  # its mappings are read-only too
     with pytest.raises(TypeError):
         verify_branches(setup, 5)  # samples by name only
+
+
+def test_a_derivation_with_dimensions_of_sixty_digits_verifies():
+    """The discriminants' integer coefficients pass a float's range: the samples where a branch is
+    real are then decided in balls (floats' pre-selection raised OverflowError)."""
+    from tests.analyses.extremum.test_long_dimensions import LONG
+
+    result = algkin.derive("fourbar", outputs=["B"], set=LONG)
+    assert result.verification.passed and result.verification.compared >= 40

@@ -26,6 +26,7 @@ from ...errors import UsageError, renamed
 from ...runtime import validation
 from ...runtime.budget import Budget, Deadline, started
 from ...runtime.frozen import FrozenDict, frozen
+from ...runtime.exclusive import one_at_a_time
 from ...scene.load import SceneLike, Values
 from ...scene.compile import Span, lengths_in, spans_lengths_positive
 from ...scene.model import Input, Scene, length_range_problem, range_problem
@@ -166,6 +167,7 @@ def _one_input(compiled: Compiled, output: str) -> str:
     return name
 
 
+@one_at_a_time
 def extremum(scene: SceneLike | Prepared, output: str, angle_range: tuple[float | str, float | str] | None = None,
              params: Sequence[str] = (), largest: bool = False, method: str = "resultant", backend: str = "flint",
              set: Values | None = None,  # noqa: A002 - the public API's name, as in derive
@@ -179,6 +181,7 @@ def extremum(scene: SceneLike | Prepared, output: str, angle_range: tuple[float 
     ``Deadline`` of one running) bounds the time and the eliminants' terms.
     """
     deadline = started(budget)
+    largest = validation.flag("largest", largest)
     given(scene, params=params, set=set)
     with renamed("outputs", to="output"):
         prepared = scene if isinstance(scene, Prepared) else prepare(scene, outputs=[output], params=params, set=set,

@@ -29,7 +29,7 @@ from ...eliminate import eliminate
 from ...errors import ComputationError, UsageError
 from ...evaluate import MPMATH, evaluate
 from ...system.angles import Parametrisation
-from ...system.convert import flint_context, from_terms, to_flint, to_flint_integer, univariate
+from ...system.convert import flint_context, from_terms, integer_factors, to_flint, to_flint_integer, univariate
 from ...system.roots import Polynomial, real_roots
 
 if TYPE_CHECKING:
@@ -238,7 +238,7 @@ def _factors(poly: sympy.Expr) -> list[sympy.Expr]:
         return []
     ctx = flint_context([v.name for v in symbols])
     integer = to_flint_integer(to_flint(poly, ctx), flint.fmpz_mpoly_ctx.get(ctx.names(), "lex"))
-    return [from_terms(f.to_dict(), symbols) for f, _ in integer.factor()[1]]
+    return [from_terms(f.to_dict(), symbols) for f, _ in integer_factors(integer)]
 
 
 def along_input(poly: flint.fmpq_mpoly, t: str, *, angle: bool) -> flint.fmpq_mpoly:

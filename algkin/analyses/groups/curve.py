@@ -83,7 +83,10 @@ def curve_groups(scene: Scene | str, point: str, *, samples: int = 40, seed: int
         raise UsageError("point", point, f"is fixed at ({x}, {y}): its trajectory is a point, not a curve")
     variables = (f"{point}_x", f"{point}_y")
     equations = [e for g in prepared.compiled.groups for e in g.equations]
-    equations += [symbol(variables[0]) - x, symbol(variables[1]) - y]
+    if (x, y) == tuple(symbol(v) for v in variables):  # a point solved for: its unknowns are the curve's variables
+        unknowns = [u for u in unknowns if u not in variables]
+    else:
+        equations += [symbol(variables[0]) - x, symbol(variables[1]) - y]
     if len(prepared.variables) == 2:
         c, s = (symbol(v) for v in prepared.variables)
         equations.append(c**2 + s**2 - 1)

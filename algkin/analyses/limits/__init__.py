@@ -51,6 +51,7 @@ from collections.abc import Mapping
 
 from ...errors import UsageError
 from ...runtime.budget import Budget, Deadline, started
+from ...runtime.exclusive import one_at_a_time
 from ...scene import load_scene
 from ...scene.model import Scene
 from ...scene.settings import with_values
@@ -62,6 +63,7 @@ from .results import Limit, Limits, TimeRatio
 __all__ = ["limits", "stationary_condition", "Limit", "Limits", "TimeRatio"]
 
 
+@one_at_a_time
 def limits(scene: Scene | str, set: Mapping[str, object] | None = None, *,  # noqa: A002 - the public name (the command line's --set)
            budget: Budget | Deadline | None = None) -> Limits:
     """Every limit position of every dyad and slider with a fixed path, certified, and the time

@@ -30,6 +30,7 @@ from ...eliminate import DEFAULT_METHOD
 from ...errors import UsageError
 from ...runtime import validation
 from ...runtime.frozen import FrozenDict, frozen
+from ...runtime.exclusive import one_at_a_time
 from ...scene.load import SceneLike, as_scene
 from ...system import symbol
 from .check import RatesCheck, check_rates
@@ -79,6 +80,7 @@ class Rates:
                 "rates_verification": self.verification.to_json()}
 
 
+@one_at_a_time
 def rates(scene: SceneLike | Prepared, outputs: list[str] | None = None, params: tuple[str, ...] | list[str] = (),
           samples: int = SAMPLES, seed: int = 0, method: str = DEFAULT_METHOD, backend: str = "flint",
           set: dict[str, Any] | None = None) -> Rates | GroupRates:  # noqa: A002 - ``set=`` as in derive

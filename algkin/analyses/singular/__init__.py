@@ -38,6 +38,7 @@ import sympy
 from ...errors import ComputationError, UsageError
 from ...runtime.budget import Budget, Deadline, started
 from ...runtime.frozen import FrozenDict, frozen
+from ...runtime.exclusive import one_at_a_time
 from ...system.convert import flint_context, to_flint, to_flint_integer
 from .exact import ENCLOSURE_BITS, Coordinate, coordinates, polynomial_text
 from .local import describe, multiplicity, shift
@@ -126,6 +127,7 @@ class Singularities:
                 "complex_singular_points": thawed(self.complex), "timings": dict(self.timings)}
 
 
+@one_at_a_time
 def singular(scene: SceneLike, point: str, *, set: Values | None = None,  # noqa: A002 - the public name (--set)
              samples: int = 40, seed: int = 0, budget: Budget | Deadline | None = None) -> Singularities:
     """The singular points of the curve ``point`` traces in ``scene`` (``algkin.curve``, its

@@ -106,9 +106,18 @@ def _main(argv: list[str], *, apart: bool = False) -> int:
     except Exception as err:  # a defect of algkin's: said as every failure is (--json's one document too)
         if os.environ.get(TRACEBACK):
             raise
-        message = "out of memory" if isinstance(err, MemoryError) else \
-            f"internal error, {type(err).__name__}: {err} (a defect of algkin: {TRACEBACK}=1 shows where)"
-        return write_stdout(_failed(argv, args, "internal", message, f"failed: {message}"), 1, failed=True)
+        kind, message = _unforeseen(err)
+        return write_stdout(_failed(argv, args, kind, message, f"failed: {message}"), 1, failed=True)
+
+
+def _unforeseen(err: Exception) -> tuple[str, str]:
+    """The kind and message of a failure no error of algkin's said: the machine's limits, else a defect."""
+    if isinstance(err, MemoryError):
+        return "internal", "out of memory"
+    if isinstance(err, ValueError) and "int_max_str_digits" in str(err):  # CPython's limit on writing an integer
+        return "computation", (f"the result holds an integer of more than {sys.get_int_max_str_digits()} digits, "
+                               "more than Python writes by default: PYTHONINTMAXSTRDIGITS=0 lifts the limit")
+    return "internal", f"internal error, {type(err).__name__}: {err} (a defect of algkin: {TRACEBACK}=1 shows where)"
 
 
 def _command(args: argparse.Namespace, *, apart: bool = False) -> int:

@@ -23,13 +23,14 @@ FLAGS = {
     "point": "--point",
     "params": "--param",
     "parameters": "--param",  # the symbolic dimensions a drawing's sliders move
+    "ranges": "--range-of",  # their sliders' bounds
     "set": "--set",
     "method": "--method",
     "backend": "--backend",
     "samples": "--samples",
     "seed": "--seed",
-    "max_seconds": "--max-seconds",
-    "max_terms": "--max-terms",
+    "seconds": "--max-seconds",  # a Budget's
+    "terms": "--max-terms",
     "output": "--of",  # extremum's output
     "of": "--of",  # accuracy's
     "angle_range": "--range",

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import math
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
@@ -52,7 +53,7 @@ def report_extremum(d: Document) -> str:
     lines += [f"  {p['kind']:10} {p['value']:+.12g} as {d['input']} {_towards(p)} {p['enclosure' + suffix]}{at}"
               if "limit" in p else f"  {p['kind']:10} {p['value']:.12g}{unit} at {p['enclosure' + suffix]}{at}"
               for p in d["critical_points"]]
-    lines += [f"  {'end':10} {p['value']:.12g}{unit} at {p['input' + suffix]:g}{at}" for p in d["endpoints"]]
+    lines += [f"  {'end':10} {_end_value(p['value'], unit)} at {p['input' + suffix]:g}{at}" for p in d["endpoints"]]
     for key in ("minimum", "maximum"):
         p = d[key]
         if "limit" in p:
@@ -65,6 +66,11 @@ def report_extremum(d: Document) -> str:
     if "closed_form" in d:
         lines += _report_closed_form(d["closed_form"], d["input"], at)
     return "\n".join(lines)
+
+
+def _end_value(value: float | None, unit: str) -> str:
+    """A range end's value, or that the mechanism does not assemble there (its value nan, null in JSON)."""
+    return "(does not assemble)" if value is None or math.isnan(value) else f"{value:.12g}{unit}"
 
 
 def _towards(point: Document) -> str:

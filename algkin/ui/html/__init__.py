@@ -86,12 +86,12 @@ def parameter_range(motion: Motion, name: str, ranges: Ranges | None = None) -> 
 
     for given in (ranges or {}):
         if given not in motion.params:
-            raise UsageError("--range-of", given, f"not a symbolic dimension of {motion.scene.name} "
+            raise UsageError("ranges", given, f"not a symbolic dimension of {motion.scene.name} "
                                                   f"(symbolic: {', '.join(motion.params) or 'none'})")
     if ranges and name in ranges:
         from ...scene.compile import refuse_lengths_not_positive
 
-        refuse_lengths_not_positive(motion.scene, name, ranges[name], argument="--range-of")
+        refuse_lengths_not_positive(motion.scene, name, ranges[name], argument="ranges")
         return (float(ranges[name][0]), float(ranges[name][1]))
     declared = motion.scene.parameter_ranges.get(name)
     if declared is None:

@@ -109,3 +109,40 @@ def test_the_3rpr_platform_corner_moves_on_the_circle_of_its_fixed_leg():
     assert _same_up_to_a_constant(sympy.Poly(sympy.sympify(found.curve), x, y),
                                   sympy.Poly((x - 3)**2 + (y - 8)**2 - 64, x, y))  # |A3 P3| = r3 = 8
     assert found.verification["passed"]
+
+
+def test_a_point_solved_for_traces_its_coupler_curve():
+    """P1 of 3rpr is an unknown itself (its curve's variables are its unknowns: the elimination
+    once kept and eliminated P1_x at once, "the system is inconsistent"). With leg 1 driven, the
+    platform is the coupler of the four-bar A2 P2 P3 A3 and P1 a coupler point: a tricircular
+    sextic through the configurations built here by hand, at 40 digits."""
+    found = curve_groups("3rpr", "P1", samples=4)
+    assert (found.degree, found.circularity) == (6, 3) and found.verification["passed"]
+    x, y = sympy.symbols("P1_x P1_y")
+    curve = sympy.lambdify((x, y), sympy.sympify(found.curve), "mpmath")
+    checked = 0
+    with mpmath.workdps(40):
+        for angle in (1.1, 1.6, 3.0, 3.5):  # where P3 reaches its circle
+            p2 = mpmath.matrix([10 + 9 * mpmath.cos(angle), 9 * mpmath.sin(angle)])  # |A2 P2| = 9
+            # P3 = P1 + d/2 + 3/4 rot90(d), d = P2 - P1: |P2 P3| = 5 sqrt(13)/4; |A3 P3| = 8
+            for p3 in _circles_meet(p2, 5 * mpmath.sqrt(13) / 4, mpmath.matrix([3, 8]), 8):
+                # P3 - P2 = M d, M = [[-1/2, -3/4], [3/4, -1/2]]
+                d = mpmath.lu_solve(mpmath.matrix([[-0.5, -0.75], [0.75, -0.5]]), p3 - p2)
+                p1 = p2 - d
+                assert abs(mpmath.norm(p2 - p1) - 5) < mpmath.mpf(10) ** -35
+                assert abs(curve(p1[0], p1[1])) < mpmath.mpf(10) ** -25
+                checked += 1
+    assert checked == 8
+
+
+def _circles_meet(c1, r1, c2, r2):
+    """The real intersections of two circles (mpmath)."""
+    gap = c2 - c1
+    distance = mpmath.norm(gap)
+    along = (distance**2 + r1**2 - r2**2) / (2 * distance)
+    across = mpmath.sqrt(r1**2 - along**2) if r1**2 >= along**2 else None
+    if across is None:
+        return []
+    unit = gap / distance
+    normal = mpmath.matrix([-unit[1], unit[0]])
+    return [c1 + along * unit + sign * across * normal for sign in (1, -1)]

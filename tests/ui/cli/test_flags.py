@@ -37,6 +37,8 @@ NOT_FROM_THE_COMMAND_LINE = {
     **dict.fromkeys(("centre", "circle"), "synthesis.motion's matched points, from Python only"),
     "witnesses": "eliminate.eliminate_each's witness list, from Python only (a batch path no command takes)",
     "values": "extremum.family's design values, from Python only (the sweep passes the grid's, checked as --grid)",
+    **dict.fromkeys(("mechanism", "text"), "a Quantity made by hand, from Python only (commands make their own)"),
+    "clock": "a Budget's clock, from Python only (the command line's is time.monotonic)",
 }
 
 # A name given as the first argument of UsageError, or of the helpers that pass it on to one.

@@ -2,6 +2,8 @@
 stderr, exit 1, with --json the one error document on stdout; ALGKIN_TRACEBACK set, the traceback."""
 
 import json
+import sys
+from fractions import Fraction
 
 import pytest
 
@@ -41,3 +43,27 @@ def test_the_traceback_on_request(defect, monkeypatch):
     monkeypatch.setenv(TRACEBACK, "1")
     with pytest.raises(KeyError, match="a defect"):
         main(["derive", "chebyshev-lambda"])
+
+
+@pytest.fixture
+def int_digits_limit():
+    """Python's limit on the digits of an integer written as text, put back after the test."""
+    limit = sys.get_int_max_str_digits()
+    yield sys.set_int_max_str_digits
+    sys.set_int_max_str_digits(limit)
+
+
+def test_an_integer_past_pythons_digits_limit_is_said_with_the_way_to_lift_it(capsys, int_digits_limit):
+    # Dimensions of 150 digits near the default crank-rocker: the rates' closed forms hold integers of
+    # more than 4300 digits, which CPython refuses to write by default (it was an internal error).
+    near = {"a": Fraction(1) + Fraction(1, 10**149 + 7), "d": Fraction(4) + Fraction(1, 10**149 + 9),
+            "l": Fraction(3) + Fraction(1, 10**149 + 13)}
+    argv = ["derive", "fourbar", "--rates", "--json"] + [a for k, v in near.items() for a in ("--set", f"{k}={v}")]
+    int_digits_limit(4300)
+    assert main(argv) == 1
+    out, err = capsys.readouterr()
+    assert err.count("\n") == 1 and "PYTHONINTMAXSTRDIGITS=0" in err and "internal" not in err
+    assert json.loads(out)["error"]["kind"] == "computation"
+    int_digits_limit(0)  # what PYTHONINTMAXSTRDIGITS=0 sets
+    assert main(argv) == 0
+    assert json.loads(capsys.readouterr().out)["rates_verification"]["passed"]

@@ -49,6 +49,15 @@ def test_toggles_text_puts_each_dropped_factor_on_one_short_line():
     assert lines[-1] == "full factors: --json"
 
 
+def test_extremum_says_a_range_end_where_the_mechanism_does_not_assemble(tmp_path):
+    # fourbar-nongrashof: at theta = +-180 deg, A = (-2, 0) is 7 from D = (5, 0), beyond the coupler
+    # and rocker's reach 3 + 7/2: B does not exist there (the text once said "nan").
+    done = run_main(["extremum", "fourbar-nongrashof", "--of", "B.y"], tmp_path)
+    ends = [line.split() for line in done.stdout.splitlines() if line.lstrip().startswith("end ")]
+    assert done.returncode == 0 and "nan" not in done.stdout
+    assert ends == [["end", "(does", "not", "assemble)", "at", "-180", "deg"], ["end", "(does", "not", "assemble)", "at", "180", "deg"]]
+
+
 def test_latex_of_derive_curve_and_extremum(tmp_path):
     derived = run_main(["derive", "chebyshev-lambda", "--outputs", "B", "--samples", "0", "--latex"], tmp_path)
     assert derived.returncode == 0, derived.stderr

@@ -72,7 +72,8 @@ def test_every_other_command_refuses_them_saying_which_command_works(capsys, pla
     captured = capsys.readouterr()
     assert captured.out == "" and captured.err.count("\n") == 1
     assert ("has points solved together (P1, P2): show, solve, follow, derive, curve, verify, toggles, plot, export, "
-            "sweep and accuracy take it; extremum and singular do not yet") in captured.err
+            "sweep and accuracy take it, and in Python derive, curve, solve, follow, rates and load_quantities; "
+            "extremum and singular do not yet, nor prepare and compile_scene") in captured.err
     assert not (tmp_path / "x.png").exists() and not (tmp_path / "sweep").exists()
 
 
