@@ -116,7 +116,7 @@ def _unforeseen(err: Exception) -> tuple[str, str]:
         return "internal", "out of memory"
     if isinstance(err, ValueError) and "int_max_str_digits" in str(err):  # CPython's limit on writing an integer
         return "computation", (f"the result holds an integer of more than {sys.get_int_max_str_digits()} digits, "
-                               "more than Python writes by default: PYTHONINTMAXSTRDIGITS=0 lifts the limit")
+                               "Python's limit for writing one: PYTHONINTMAXSTRDIGITS=0 lifts it")
     return "internal", f"internal error, {type(err).__name__}: {err} (a defect of algkin: {TRACEBACK}=1 shows where)"
 
 
