@@ -22,6 +22,10 @@ import pytest
 
 from .ui.cli.in_process import run_main
 
+# Every command of the pages, a Dask sweep, a 3 s budget and an animation among them: about 35 s, run
+# by CI (make test-slow), as the README's walk.
+pytestmark = pytest.mark.slow
+
 ROOT = Path(__file__).resolve().parents[1]
 PAGES = sorted((ROOT / "docs" / "cli").glob("*.md")) + sorted((ROOT / "docs" / "tutorials").glob("*.md"))
 _FENCED = re.compile(r"^```([^\n]*)\n(.*?)^```", re.S | re.M)
@@ -43,11 +47,6 @@ SKIPPED = {
 # Run as the program: its default executor starts a Dask LocalCluster of worker processes, the
 # command's own to start and close, not the test process's.
 APART = {"algkin sweep fourbar --grid a=1/2:2:4 --grid d=2:10:3 --analyses curve,grashof,transmission --out fourbars"}
-
-# About 3 s each on the project's machine (the page's 3 s budget, a LocalCluster started, the
-# 3-RPR's 40-digit reference): the rest of the walk, 52 commands in this process, about 20 s.
-SLOW = {"algkin plot stephenson-iii-family --of \"dist(P, O)\" --against u=0:1 --out min-u.png --max-seconds 3",
-        *APART, "algkin atlas fourbars --out atlas.html", "algkin accuracy 3rpr --samples 20"}
 
 # Cells that build a command's arguments (not a literal list), which the cell check cannot read.
 BUILT_IN_CELLS = {"plot.md": "each picture is drawn into a temporary folder (--out a path made there) and shown"}
@@ -105,22 +104,20 @@ def test_the_pages_show_commands_and_the_skipped_are_still_there():
     shown = {c.text for c in COMMANDS}
     assert len(WALKED) > 40 and any(c.exit_code for c in WALKED)
     assert set(SKIPPED) <= shown, set(SKIPPED) - shown
-    assert APART <= shown and SLOW <= shown, ((APART | SLOW) - shown)
+    assert APART <= shown, APART - shown
 
 
 @pytest.fixture(scope="module")
 def walk(tmp_path_factory):
     """``walk(command)``: its result, each page's commands run in order in the page's own directory
-    (the atlas reads the sweep its page ran first), each once; a slow one only before a slow one
-    (what the quick ones read, no slow one writes)."""
+    (the atlas reads the sweep its page ran first), each once."""
     done, folders = {}, {}
 
     def run(command):
         if command.page not in folders:
             folders[command.page] = tmp_path_factory.mktemp(Path(command.page).stem)
         for earlier in WALKED[:WALKED.index(command) + 1]:
-            needed = earlier.text not in SLOW or command.text in SLOW
-            if earlier.page == command.page and earlier not in done and needed:
+            if earlier.page == command.page and earlier not in done:
                 done[earlier] = _run(earlier, folders[command.page])
         return done[command]
 
@@ -136,8 +133,7 @@ def _run(command, folder):
 
 def _params():
     for command in WALKED:
-        marks = [pytest.mark.slow] if command.text in SLOW else []
-        yield pytest.param(command, marks=marks, id=f"{command.page}: {command.text[7:70]}")
+        yield pytest.param(command, id=f"{command.page}: {command.text[7:70]}")
 
 
 @pytest.mark.parametrize("command", list(_params()))
