@@ -1,6 +1,6 @@
 """Numeric evaluation of closed forms (generic over number types)."""
 
-from . import balls  # noqa: F401 - makes python-flint's balls pickle, as the results holding them must
+from . import pickled  # noqa: F401 - makes python-flint's balls and polynomials pickle, as the results holding them must
 from .tree import ARB, FLOAT, MPMATH, NUMPY, NumberKind, evaluate
 
 __all__ = ["evaluate", "NumberKind", "ARB", "MPMATH", "FLOAT", "NUMPY"]

@@ -8,21 +8,13 @@
 x^2 - 1/3*y
 >>> to_sympy(p * p, ctx)
 x**4 - 2*x**2*y/3 + y**2/9
-
-A polynomial pickles (python-flint 0.9 pickles none), so that a result holding one does, as it
-must to come back from a budget's child process: its context's names and ordering, and its terms.
-
->>> import pickle
->>> pickle.loads(pickle.dumps(p)) == p
-True
 """
 
 from __future__ import annotations
 
-import copyreg
 import math
-from collections.abc import Callable, Iterable, Mapping, Sequence
-from typing import Any, NoReturn
+from collections.abc import Iterable, Mapping, Sequence
+from typing import NoReturn
 
 import flint
 import sympy
@@ -33,25 +25,12 @@ from sympy.core.mul import _mulsort
 from ..evaluate import NumberKind, evaluate
 from .core import symbol
 
-__all__ = ["flint_context", "to_flint", "rational_polynomial", "expanded", "coefficients", "from_terms", "to_sympy", "sympy_text", "to_flint_integer", "integer_factors", "factored_over_rationals", "fmpq_to_rational", "univariate", "content", "polynomial_from"]
+__all__ = ["flint_context", "to_flint", "rational_polynomial", "expanded", "coefficients", "from_terms", "to_sympy", "sympy_text", "to_flint_integer", "integer_factors", "factored_over_rationals", "fmpq_to_rational", "univariate", "content"]
 
 
 def flint_context(names: Iterable[str], ordering: str = "lex") -> flint.fmpq_mpoly_ctx:
     """A python-flint rational polynomial context over ``names`` (order matters for lex)."""
     return flint.fmpq_mpoly_ctx.get(tuple(names), ordering)
-
-
-def polynomial_from(names: tuple[str, ...], ordering: str, terms: dict[tuple[int, ...], Any]) -> flint.fmpq_mpoly:
-    """The polynomial ``_reduced`` wrote: ``terms`` (exponents -> coefficient) over ``names``."""
-    return flint_context(names, ordering).from_dict(terms)
-
-
-def _reduced(poly: flint.fmpq_mpoly) -> tuple[Callable[..., flint.fmpq_mpoly], tuple[Any, ...]]:
-    ctx = poly.context()
-    return polynomial_from, (tuple(ctx.names()), ctx.ordering().name, poly.to_dict())
-
-
-copyreg.pickle(flint.fmpq_mpoly, _reduced)
 
 
 def to_flint(expr: sympy.Expr | sympy.Poly, ctx: flint.fmpq_mpoly_ctx) -> flint.fmpq_mpoly:
@@ -202,7 +181,7 @@ def factored_over_rationals(poly: flint.fmpz_mpoly) -> list[tuple[flint.fmpz_mpo
     """``integer_factors`` from FLINT's factoring over the rationals, in python-flint's order: by
     multiplicity, then term by term by exponents and coefficient, then the shorter first."""
     ctx = poly.context()
-    rational = flint.fmpq_mpoly_ctx.get(ctx.names(), ctx.ordering()).from_dict(poly.to_dict())
+    rational = flint_context(ctx.names(), ctx.ordering().name).from_dict(poly.to_dict())
     factors = [(_primitive(factor, ctx), int(multiplicity)) for factor, multiplicity in rational.factor()[1]]
     return sorted(factors, key=lambda pair: (pair[1], [(m, int(c)) for m, c in zip(pair[0].monoms(), pair[0].coeffs())]))
 

@@ -1,4 +1,4 @@
-"""python-flint's balls pickle (``algkin.evaluate.balls``): the midpoint exactly, the radius no smaller."""
+"""python-flint's balls pickle (``algkin.evaluate.pickled``): the midpoint exactly, the radius no smaller."""
 
 import pickle
 
