@@ -107,7 +107,6 @@ def budget(value: object, argument: str = "budget") -> Budget | Deadline | None:
     return value
 
 
-
 # Numbers in text (command-line values) are ASCII: Python's float(), int() and Fraction() also
 # read other scripts' digits ('١', '１') and strip a no-break space, the tiny language does not.
 
